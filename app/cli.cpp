@@ -1,0 +1,126 @@
+#include "app/cli.h"
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <iostream>
+#include <map>
+
+#include "core/project_io.h"
+
+namespace gridifs::cli {
+namespace {
+
+std::map<std::string, Verb>& verbs() {
+  static std::map<std::string, Verb> registry;
+  return registry;
+}
+
+std::string oneSentence(std::string text) {
+  while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
+  for (char& c : text)
+    if (c == '\n') c = ' ';
+  if (!text.empty() && text.back() != '.') text += '.';
+  return text;
+}
+
+void printUsage(std::ostream& out) {
+  out << "GridIFS — nonlinear 3D iterated function systems from distorted grids.\n\n"
+         "Usage:\n  gridifs [FILE]                 open the modeller (default project without FILE)\n";
+  for (const auto& [name, verb] : verbs()) {
+    std::string padded = "  gridifs " + name;
+    padded.resize(33, ' ');
+    out << padded << verb.summary << "\n";
+  }
+  out << "\nRun 'gridifs VERB --help' for a verb's options. Exit codes: 0 success, 1 failure "
+         "while working, 2 bad usage or bad input.\n";
+}
+
+int runVerb(const Verb& verb, int argc, char** argv) {
+  CLI::App app(verb.summary, std::string("gridifs ") + verb.name);
+  std::function<int()> action = verb.setup(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    std::cout << app.help();
+    return kSuccess;
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "gridifs " << verb.name << ": " << oneSentence(e.what()) << " (see 'gridifs " << verb.name
+              << " --help')\n";
+    return kBadInput;
+  }
+  return action();
+}
+
+}  // namespace
+
+VerbRegistration::VerbRegistration(Verb verb) { verbs().emplace(verb.name, std::move(verb)); }
+
+bool stderrIsTerminal() { return ::isatty(STDERR_FILENO) == 1; }
+
+Project loadForVerb(const std::filesystem::path& file) {
+  try {
+    return loadProject(file);
+  } catch (const ModelError& e) {
+    throw CliError(kBadInput, file.string() + ": " + e.what());
+  } catch (const IoError& e) {
+    throw CliError(kBadInput, "cannot read " + file.string() + ": " + e.what());
+  }
+}
+
+std::size_t resolveFunction(const Project& project, const std::string& which, const std::filesystem::path& file) {
+  const std::size_t count = project.functions.size();
+  char* end = nullptr;
+  const long index = std::strtol(which.c_str(), &end, 10);
+  if (!which.empty() && end && *end == '\0') {
+    if (index < 0 || std::size_t(index) >= count)
+      throw CliError(kBadInput, file.string() + " has " + std::to_string(count) + " function" +
+                                    (count == 1 ? "" : "s") + ", so --function must be 0.." +
+                                    std::to_string(count - 1) + ", not " + which);
+    return std::size_t(index);
+  }
+  for (std::size_t i = 0; i < count; ++i)
+    if (project.functions[i].name == which) return i;
+  throw CliError(kBadInput, file.string() + " has no function named \"" + which + "\"");
+}
+
+std::shared_ptr<const Grid> evaluateForVerb(const Document& document, std::size_t index,
+                                            const std::filesystem::path& file) {
+  try {
+    return document.evaluatedGrid(index);
+  } catch (const ModelError& e) {
+    throw CliError(kBadInput, file.string() + ": " + e.what());
+  }
+}
+
+int run(int argc, char** argv) {
+  try {
+    if (argc >= 2) {
+      const std::string first = argv[1];
+      if (first == "--help" || first == "-h" || first == "help") {
+        printUsage(std::cout);
+        return kSuccess;
+      }
+      if (auto it = verbs().find(first); it != verbs().end()) return runVerb(it->second, argc - 1, argv + 1);
+      if (!first.empty() && first[0] == '-' && first != "--screenshot" && first != "--frames" &&
+          first.rfind("--", 0) != 0) {
+        std::cerr << "gridifs: unknown option " << first << " (see 'gridifs --help').\n";
+        return kBadInput;
+      }
+    }
+    std::string file;
+    if (argc >= 2 && argv[1][0] != '-') file = argv[1];
+    return openModeller(file, argc, argv);
+  } catch (const CliError& e) {
+    std::cerr << "gridifs: " << oneSentence(e.what()) << "\n";
+    return e.code();
+  } catch (const std::bad_alloc&) {
+    std::cerr << "gridifs: out of memory.\n";
+    return kFailure;
+  } catch (const std::exception& e) {
+    std::cerr << "gridifs: " << oneSentence(e.what()) << "\n";
+    return kFailure;
+  }
+}
+
+}  // namespace gridifs::cli

@@ -1,0 +1,57 @@
+#pragma once
+// The command line (DESIGN §4): one executable, one verb per file, exit codes
+// 0 success, 1 failure while working, 2 bad usage or bad input file.
+#include <CLI/CLI.hpp>
+#include <filesystem>
+#include <functional>
+#include <stdexcept>
+#include <string>
+
+#include "core/document.h"
+
+namespace gridifs::cli {
+
+enum ExitCode { kSuccess = 0, kFailure = 1, kBadInput = 2 };
+
+/// Thrown by verbs: printed as one sentence to stderr, mapped to its exit code.
+class CliError : public std::runtime_error {
+ public:
+  CliError(int code, const std::string& message) : std::runtime_error(message), code_(code) {}
+  int code() const { return code_; }
+
+ private:
+  int code_;
+};
+
+/// A verb: fills a CLI11 app with its options and returns the action to run after parsing.
+struct Verb {
+  const char* name;
+  const char* summary;
+  std::function<std::function<int()>(CLI::App&)> setup;
+};
+
+/// Registers a verb at static-initialisation time (each verb_*.cpp registers itself).
+struct VerbRegistration {
+  explicit VerbRegistration(Verb verb);
+};
+
+int run(int argc, char** argv);
+
+/// Loads a project for a verb; bad content → CliError(2), unreadable → CliError(2) too
+/// (an unreadable input file is bad input), each naming the file.
+Project loadForVerb(const std::filesystem::path& file);
+
+/// Resolves "--function" (an index 0..n-1 as in JSON paths, or a function name).
+std::size_t resolveFunction(const Project& project, const std::string& which, const std::filesystem::path& file);
+
+/// Evaluates function `index`, reporting model errors as CliError(2) naming the file.
+std::shared_ptr<const Grid> evaluateForVerb(const Document& document, std::size_t index,
+                                            const std::filesystem::path& file);
+
+/// Whether stderr is an interactive terminal (progress bars only then).
+bool stderrIsTerminal();
+
+/// Opens the interactive modeller (or, without a GUI build or display, explains why).
+int openModeller(const std::string& file, int argc, char** argv);
+
+}  // namespace gridifs::cli

@@ -1,0 +1,96 @@
+// gridifs info FILE [--json]: functions, weights and a contractivity bound per function.
+#include <cstdio>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "app/cli.h"
+#include "core/contractivity.h"
+
+namespace gridifs::cli {
+namespace {
+
+struct FunctionReport {
+  const Function* function;
+  double probability;
+  ContractivityEstimate contractivity;
+};
+
+std::vector<FunctionReport> analyse(const Document& document, const std::filesystem::path& file) {
+  const Project& p = document.project();
+  double total = 0.0;
+  for (const Function& f : p.functions)
+    if (!f.muted) total += f.weight;
+  std::vector<FunctionReport> reports;
+  for (std::size_t i = 0; i < p.functions.size(); ++i) {
+    const Function& f = p.functions[i];
+    const auto grid = evaluateForVerb(document, i, file);
+    reports.push_back({&f, f.muted || total <= 0 ? 0.0 : f.weight / total, estimateContractivity(*grid)});
+  }
+  return reports;
+}
+
+int runInfo(const std::string& file, bool asJson) {
+  Document document(loadForVerb(file));
+  const auto reports = analyse(document, file);
+  const Project& p = document.project();
+  bool allContractive = true;
+  for (const auto& r : reports) allContractive &= r.function->muted || r.contractivity.bound < 1.0;
+  if (asJson) {
+    nlohmann::ordered_json out;
+    out["file"] = file;
+    out["function_count"] = reports.size();
+    out["has_final"] = p.final_function.has_value();
+    nlohmann::ordered_json list = nlohmann::ordered_json::array();
+    for (std::size_t i = 0; i < reports.size(); ++i) {
+      const auto& r = reports[i];
+      list.push_back({{"index", i},
+                      {"name", r.function->name},
+                      {"weight", r.function->weight},
+                      {"probability", r.probability},
+                      {"muted", r.function->muted},
+                      {"resolution", r.function->resolution},
+                      {"ops", r.function->ops.size()},
+                      {"contractivity", r.contractivity.bound},
+                      {"contractive", r.contractivity.bound < 1.0}});
+    }
+    out["functions"] = list;
+    out["contractive"] = allContractive;
+    std::cout << out.dump(2) << "\n";
+  } else {
+    std::printf("%s: %zu function%s%s\n", file.c_str(), reports.size(), reports.size() == 1 ? "" : "s",
+                p.final_function ? " and a final function" : "");
+    std::printf("  %-3s %-16s %8s %7s %-11s %4s  %s\n", "#", "name", "weight", "prob", "resolution", "ops",
+                "contractivity (Lipschitz bound)");
+    for (std::size_t i = 0; i < reports.size(); ++i) {
+      const auto& r = reports[i];
+      char res[32];
+      std::snprintf(res, sizeof res, "%dx%dx%d", r.function->resolution[0], r.function->resolution[1],
+                    r.function->resolution[2]);
+      std::printf("  %-3zu %-16.16s %8.4g %7.4f %-11s %4zu  %.4f%s%s\n", i, r.function->name.c_str(),
+                  r.function->weight, r.probability, res, r.function->ops.size(), r.contractivity.bound,
+                  r.contractivity.bound < 1.0 ? "" : "  (not contractive)", r.function->muted ? "  muted" : "");
+    }
+  }
+  for (std::size_t i = 0; i < reports.size(); ++i) {
+    const auto& r = reports[i];
+    if (!r.function->muted && r.contractivity.bound >= 1.0)
+      std::fprintf(stderr,
+                   "warning: function %zu \"%s\" may not be contractive: its Lipschitz bound is %.4g (>= 1) "
+                   "around cell (%d, %d, %d).\n",
+                   i, r.function->name.c_str(), r.contractivity.bound, r.contractivity.worstCell[0],
+                   r.contractivity.worstCell[1], r.contractivity.worstCell[2]);
+  }
+  return kSuccess;
+}
+
+const VerbRegistration kInfo{{"info", "FILE [--json]: functions, weights and contractivity per function",
+                              [](CLI::App& app) {
+                                auto file = std::make_shared<std::string>();
+                                auto asJson = std::make_shared<bool>(false);
+                                app.add_option("FILE", *file, "project file (.gridifs)")->required();
+                                app.add_flag("--json", *asJson, "print JSON instead of a table");
+                                return [=] { return runInfo(*file, *asJson); };
+                              }}};
+
+}  // namespace
+}  // namespace gridifs::cli

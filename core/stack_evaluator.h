@@ -1,0 +1,37 @@
+#pragma once
+// Evaluates a function's op stack: distorted nodes = placement(stack(undistorted)) (DESIGN §2).
+#include "core/function.h"
+#include "core/grid.h"
+
+namespace gridifs {
+
+/// Rotation matrix entries for Euler angles in degrees, R = Rz·Ry·Rx (x first).
+Vec3 rotateEuler(const Vec3& q, const Vec3& anglesDegrees);
+
+/// Triangle wave in [-1, 1] with the period and phase of sin: tri(0) = 0, tri(π/2) = 1
+/// (the 'ping-pong' profile of seed 004 §4.3, figure 13).
+double triangleWave(double x);
+
+/// The centroid used as center of transformation for `op` on the current nodes.
+Vec3 operationCenter(const Operation& op, const std::vector<Vec3>& nodes,
+                     const std::vector<unsigned char>& mask);
+
+/// Applies one operation in place to `nodes` (a grid of `resolution`).
+/// Throws ModelError (path relative to the op, e.g. "pairs" or "x") on a singular
+/// morph, a calculator error or a non-finite result.
+void applyOperation(const Operation& op, std::vector<Vec3>& nodes, const Index3& resolution);
+
+/// Solves the morph's RBF system (seed 004 §2.6) and returns α (one Vec3 per pair) and r_i.
+/// Throws ModelError("pairs", ...) for coincident or (numerically) singular start points.
+void solveMorph(const MorphOp& morph, std::vector<Vec3>& alpha, std::vector<double>& radius);
+
+/// placement(q) = T + R·(S·q).
+Vec3 applyPlacement(const Placement& placement, const Vec3& q);
+
+/// Evaluates the whole stack (muted ops skipped) and the placement.
+/// `upToOp` < ops.size() stops before that op (the UI shows intermediate stages).
+/// Throws ModelError with a path relative to the function ("ops[3].k: ...").
+Grid evaluateFunction(const Function& function, std::size_t upToOp = std::size_t(-1),
+                      bool applyPlacementToo = true);
+
+}  // namespace gridifs
