@@ -381,8 +381,9 @@ ordered_json writeOperation(const Operation& op) {
           o["y"] = p.y;
           o["z"] = p.z;
           ordered_json vars;
+          static const char* kVarNames[3] = {"v1", "v2", "v3"};
           for (int v = 0; v < 3; ++v)
-            vars["v" + std::to_string(v + 1)] = {{"value", p.vars[v].value}, {"min", p.vars[v].min}, {"max", p.vars[v].max}};
+            vars[kVarNames[v]] = {{"value", p.vars[v].value}, {"min", p.vars[v].min}, {"max", p.vars[v].max}};
           o["vars"] = vars;
           o["seed"] = p.seed;
         } else if constexpr (std::is_same_v<T, NodesOp>) {
@@ -442,9 +443,13 @@ Project parseProject(const std::string& text) {
     root = json::parse(text);
   } catch (const json::parse_error& e) {
     std::string what = e.what();
-    const bool truncated = what.find("unexpected end of input") != std::string::npos;
+    const std::size_t lastContent = text.find_last_not_of(" \t\r\n");
+    const bool truncated = what.find("unexpected end of input") != std::string::npos ||
+                           (lastContent != std::string::npos && e.byte >= lastContent + 1);
     fail("", std::string(truncated ? "the JSON ends too early (truncated?)" : "the file is not valid JSON") +
                  " at " + lineColumn(text, e.byte == 0 ? 0 : e.byte - 1));
+  } catch (const json::exception&) {
+    fail("", "the file contains a number too large to represent");
   }
   requireObject(root, "");
   if (auto it = root.find("format"); it == root.end() || !it->is_string() || it->get<std::string>() != "gridifs")

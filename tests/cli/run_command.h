@@ -1,0 +1,64 @@
+#pragma once
+// Runs the real gridifs executable (or any command) and captures its outcome.
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+
+namespace gridifs::test_support {
+
+struct CommandResult {
+  int exitCode = -1;
+  std::string out, err;
+};
+
+inline std::string slurp(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+inline std::string quote(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += (c == '\'') ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+/// Runs `gridifs ARGS` (already quoted as needed) with `input` on stdin. A watchdog
+/// (timeout 60 s) turns a hang into a failure instead of a stuck test run.
+inline CommandResult runGridifs(const std::string& args, const std::string& input = "") {
+  namespace fs = std::filesystem;
+  static int counter = 0;
+  const fs::path base = fs::temp_directory_path() / ("gridifs-cli-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+  { std::ofstream(base.string() + ".in", std::ios::binary) << input; }
+  const std::string cmd = "timeout 60 " + quote(GRIDIFS_EXE) + " " + args + " < " + quote(base.string() + ".in") + " > " +
+                          quote(base.string() + ".out") + " 2> " + quote(base.string() + ".err");
+  const int status = std::system(cmd.c_str());
+  CommandResult r;
+  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = slurp(base.string() + ".out");
+  r.err = slurp(base.string() + ".err");
+  fs::remove(base.string() + ".in");
+  fs::remove(base.string() + ".out");
+  fs::remove(base.string() + ".err");
+  return r;
+}
+
+/// A fresh temporary folder removed at scope exit.
+struct ScratchDir {
+  std::filesystem::path path;
+  explicit ScratchDir(const std::string& name) {
+    path = std::filesystem::temp_directory_path() / ("gridifs-" + name + "-" + std::to_string(::getpid()));
+    std::filesystem::remove_all(path);
+    std::filesystem::create_directories(path);
+  }
+  ~ScratchDir() { std::filesystem::remove_all(path); }
+};
+
+}  // namespace gridifs::test_support
