@@ -134,8 +134,9 @@ class ChaosRenderer {
   bool waitUntilDone(const std::function<bool(const RenderStats&)>& progress = {}, double intervalSeconds = 0.1);
 
   struct Worker;  // internal
+  struct Shared;  // internal
+
  private:
-  struct Shared;
   void startThreads(int count);
   void joinThreads();
 
