@@ -135,7 +135,7 @@ TEST(CliModel, EvalRejectsMalformedInputLines) {
 }
 
 TEST(CliModel, BadUsageExitsTwoWithOneSentence) {
-  for (const std::string args : {"nodes", "nodes " + quote(asset("default.gridifs")),
+  for (const std::string& args : std::vector<std::string>{"nodes", "nodes " + quote(asset("default.gridifs")),
                                  "nodes " + quote(asset("default.gridifs")) + " --function 9",
                                  "nodes " + quote(asset("default.gridifs")) + " --function nope",
                                  "info /definitely/not/here.gridifs", "info " + quote(asset("default.gridifs")) + " --bogus",

@@ -188,7 +188,11 @@ TEST(ProjectIo, FullDiskLeavesTheOldFileIntact) {
   { std::ofstream fill(mountPoint / "filler", std::ios::binary); std::string block(4096, 'x'); for (int i = 0; i < 64; ++i) fill << block; }
   Project big = parseProject(kMinimal);
   big.functions[0].name = std::string(200, 'n');
-  for (int i = 0; i < 200; ++i) big.functions[0].ops.push_back(Operation{TranslateOp{Vec3{0.001 * i, 0, 0}}, {}, {}, false});
+  for (int i = 0; i < 200; ++i) {
+    Operation op;
+    op.params = TranslateOp{Vec3{0.001 * i, 0, 0}};
+    big.functions[0].ops.push_back(op);
+  }
   EXPECT_THROW(saveProject(big, file), IoError);
   EXPECT_EQ(readFile(file), before);
   int leftovers = 0;
