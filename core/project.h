@@ -3,6 +3,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/flame_settings.h"
 #include "core/function.h"
 
 namespace gridifs {
@@ -22,6 +23,8 @@ struct RenderSettings {
   int skip = 20;
   Vec3 background{0.0};
   double depth_cue = 0.6;  // 0: no attenuation, 1: farthest points black
+  DisplayMode mode = DisplayMode::ZBuffer;  // "render.mode": "zbuffer" | "flame" (issue 6)
+  FlameSettings flame;                      // "render.flame": the flame display (seed 002 §4–8)
   bool operator==(const RenderSettings&) const = default;
 };
 

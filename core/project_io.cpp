@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "core/calculator.h"
+#include "core/palette.h"
 #include "core/stack_evaluator.h"
 
 namespace gridifs {
@@ -295,6 +296,34 @@ Operation readOperation(const json& o, const std::string& path) {
   return op;
 }
 
+/// "render.flame" (issue 6): every field optional, defaults from FlameSettings.
+FlameSettings readFlame(const json& o, const std::string& path) {
+  requireObject(o, path);
+  FlameSettings f;
+  f.palette = string(o, "palette", path, f.palette, limits::kMaxNameLength);
+  if (!isPaletteReferenceSyntax(f.palette))
+    fail(join(path, "palette"), "expected a built-in palette name, \"flam3:NUMBER\", \"flam3:NAME\" or \"file:PATH\"");
+  f.brightness = number(o, "brightness", path, f.brightness, 0.0, 1e4);
+  f.gamma = number(o, "gamma", path, f.gamma, 0.05, 100.0);
+  f.gamma_threshold = number(o, "gamma_threshold", path, f.gamma_threshold, 0.0, 1.0);
+  f.vibrancy = number(o, "vibrancy", path, f.vibrancy, 0.0, 1.0);
+  f.highlight_power = number(o, "highlight_power", path, f.highlight_power, -1.0, 100.0);
+  f.supersample = int(integer(o, "supersample", path, f.supersample, 1, 8));
+  f.estimator_radius = number(o, "estimator_radius", path, f.estimator_radius, 0.0, 64.0);
+  f.estimator_minimum = number(o, "estimator_minimum", path, f.estimator_minimum, 0.0, 64.0);
+  f.estimator_curve = number(o, "estimator_curve", path, f.estimator_curve, 0.05, 10.0);
+  f.filter_radius = number(o, "filter_radius", path, f.filter_radius, 0.0, 10.0);
+  if (f.estimator_radius > 0.0) {
+    if (f.estimator_minimum > f.estimator_radius)
+      fail(join(path, "estimator_minimum"), "the estimator minimum is larger than its radius");
+    // The density estimator builds ((radius·ss + 1)/(minimum·ss + 1))^(1/curve) kernels.
+    const double kernels = std::pow((f.estimator_radius * f.supersample + 1.0) /
+                                        (f.estimator_minimum * f.supersample + 1.0), 1.0 / f.estimator_curve);
+    if (!(kernels <= 1e7)) fail(join(path, "estimator_curve"), "the curve is too small for this radius (too many kernels)");
+  }
+  return f;
+}
+
 Function readFunction(const json& f, const std::string& path, std::size_t index) {
   requireObject(f, path);
   Function fn;
@@ -483,6 +512,11 @@ Project parseProject(const std::string& text) {
     r.skip = int(integer(*it, "skip", "render", r.skip, 0, 100000));
     r.background = vec3(*it, "background", "render", r.background, 0.0, 1.0);
     r.depth_cue = number(*it, "depth_cue", "render", r.depth_cue, 0.0, 1.0);
+    if (auto m = it->find("mode"); m != it->end()) {
+      if (!parseDisplayMode(readString(*m, "render.mode", 32), r.mode))
+        fail("render.mode", "expected \"zbuffer\" or \"flame\"");
+    }
+    if (auto fl = it->find("flame"); fl != it->end()) r.flame = readFlame(*fl, "render.flame");
   }
   auto functions = root.find("functions");
   if (functions == root.end()) fail("functions", "the project has no functions");
@@ -552,6 +586,13 @@ std::string serializeProject(const Project& project) {
   const RenderSettings& r = project.render;
   root["render"] = {{"width", r.width}, {"height", r.height}, {"samples", r.samples}, {"seed", r.seed},
                     {"skip", r.skip}, {"background", writeVec3(r.background)}, {"depth_cue", r.depth_cue}};
+  root["render"]["mode"] = displayModeName(r.mode);
+  const FlameSettings& fl = r.flame;
+  root["render"]["flame"] = {{"palette", fl.palette}, {"brightness", fl.brightness}, {"gamma", fl.gamma},
+                             {"gamma_threshold", fl.gamma_threshold}, {"vibrancy", fl.vibrancy},
+                             {"highlight_power", fl.highlight_power}, {"supersample", fl.supersample},
+                             {"estimator_radius", fl.estimator_radius}, {"estimator_minimum", fl.estimator_minimum},
+                             {"estimator_curve", fl.estimator_curve}, {"filter_radius", fl.filter_radius}};
   ordered_json functions = ordered_json::array();
   for (const Function& f : project.functions) functions.push_back(writeFunction(f));
   root["functions"] = functions;
