@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <cstring>
 
+#include "core/camera.h"
 #include "core/compiled_ifs.h"
 
 #if defined(__SSE2__)
@@ -72,7 +73,29 @@ inline HotFunction makeHot(const CompiledFunction& f) {
   return h;
 }
 
-/// p = f(p): the same float operations as CompiledFunction::evaluate (lane 3 is ignored).
+/// Lane I of v in all four lanes.
+template <int I>
+[[gnu::always_inline]] inline v4f splat(v4f v) {
+  return __builtin_shufflevector(v, v, I, I, I, I);
+}
+
+[[gnu::always_inline]] inline v4f load4(const float* p) {
+  v4f v;
+  std::memcpy(&v, p, 16);
+  return v;
+}
+
+/// Bit mask of the lanes of a comparison result (lane 0 → bit 0).
+[[gnu::always_inline]] inline int laneMask(v4i m) {
+#if defined(__SSE2__)
+  return _mm_movemask_ps(_mm_castsi128_ps(__m128i(m)));
+#else
+  return (m[0] ? 1 : 0) | (m[1] ? 2 : 0) | (m[2] ? 4 : 0) | (m[3] ? 8 : 0);
+#endif
+}
+
+/// p = f(p): the same float operations as CompiledFunction::evaluate (lane 3 is ignored). The
+/// node pairs are 32 bytes apart in x, so each corner pair is one 32-byte (two 16-byte) load.
 [[gnu::always_inline]] inline v4f apply(const HotFunction& f, v4f p) {
   const v4f lo = {-1.0f, -1.0f, -1.0f, -1.0f}, hi = {1.0f, 1.0f, 1.0f, 1.0f};
   p = p > lo ? p : lo;  // NaN → -1
@@ -83,45 +106,52 @@ inline HotFunction makeHot(const CompiledFunction& f) {
   const v4f t = s - c;
   const v4i ci = __builtin_convertvector(c, v4i);
   const std::size_t idx = std::uint32_t(ci[0]) + f.strideJ * std::uint32_t(ci[1]) + f.strideK * std::uint32_t(ci[2]);
-  const NodePair* base = f.pairs + idx;
-  v8f p00, p10, p01, p11;
-  std::memcpy(&p00, base, 32);
-  std::memcpy(&p10, base + f.strideJ, 32);
-  std::memcpy(&p01, base + f.strideK, 32);
-  std::memcpy(&p11, base + f.strideJ + f.strideK, 32);
-  const v8f ty = {t[1], t[1], t[1], t[1], t[1], t[1], t[1], t[1]};
-  const v8f tz = {t[2], t[2], t[2], t[2], t[2], t[2], t[2], t[2]};
-  const v8f e0 = p00 + (p10 - p00) * ty;
-  const v8f e1 = p01 + (p11 - p01) * ty;
-  const v8f e = e0 + (e1 - e0) * tz;
-  const v4f a = {e[0], e[1], e[2], e[3]}, b = {e[4], e[5], e[6], e[7]};
-  const v4f tx = {t[0], t[0], t[0], t[0]};
+  const float* n00 = f.pairs[idx].a;
+  const float* n10 = f.pairs[idx + f.strideJ].a;
+  const float* n01 = f.pairs[idx + f.strideK].a;
+  const float* n11 = f.pairs[idx + f.strideJ + f.strideK].a;
+  const v4f ty = splat<1>(t), tz = splat<2>(t), tx = splat<0>(t);
+  const v4f a00 = load4(n00), b00 = load4(n00 + 4), a10 = load4(n10), b10 = load4(n10 + 4);
+  const v4f a01 = load4(n01), b01 = load4(n01 + 4), a11 = load4(n11), b11 = load4(n11 + 4);
+  const v4f a0 = a00 + (a10 - a00) * ty, b0 = b00 + (b10 - b00) * ty;
+  const v4f a1 = a01 + (a11 - a01) * ty, b1 = b01 + (b11 - b01) * ty;
+  const v4f a = a0 + (a1 - a0) * tz, b = b0 + (b1 - b0) * tz;
   return a + (b - a) * tx;
 }
 
 /// Whether every coordinate is finite and within the escape bound (NaN fails).
 [[gnu::always_inline]] inline bool inBounds(v4f p, float bound) {
   const v4f b = {bound, bound, bound, bound};
-  const v4f zero = {0.0f, 0.0f, 0.0f, 0.0f};
-  const v4f a = p < zero ? -p : p;
-  const v4i ok = a <= b;  // false for NaN
-  return (ok[0] & ok[1] & ok[2]) != 0;
+  const v4f a = p < v4f{} ? -p : p;
+  return (laneMask(a <= b) & 7) == 7;  // false for NaN
 }
 
-/// One worker's chain: position, running colour, iterations left to skip.
+/// One worker's chains. A single chain is latency-bound (every step waits for the previous
+/// point: clamp → cell → 4 loads → lerps), so each worker advances kLanes independent chains in
+/// turn and the CPU overlaps them. Sample n of a worker belongs to lane n % kLanes (batches are
+/// multiples of kLanes except the very last), so the sequence does not depend on batch sizes.
+inline constexpr int kLanes = 4;  // runChain unrolls exactly this many
+
 struct ChainState {
   Rng rng;
-  v4f p{0, 0, 0, 0};
-  v4f color{0.5f, 0.5f, 0.5f, 0.0f};
-  int skipLeft = 0;
+  v4f p[kLanes] = {};
+  v4f color[kLanes] = {};
+  int skipLeft[kLanes] = {};
 
-  void restart(int skip) {
+  void restartLane(int lane, int skip) {
     const std::uint64_t a = rng.next(), b = rng.next();
-    p = v4f{Rng::signedUnit(a), Rng::signedUnit(a >> 24), Rng::signedUnit(b), 0.0f};
+    p[lane] = v4f{Rng::signedUnit(a), Rng::signedUnit(a >> 24), Rng::signedUnit(b), 0.0f};
     // seed 002 §5: c starts at a random point of [0, 1]; the RGB blend starts mid-grey (both are
     // forgotten geometrically, by (1 - color_speed)^skip).
-    color = v4f{0.5f, 0.5f, 0.5f, float(std::uint32_t(b >> 40)) * (1.0f / 16777216.0f)};
-    skipLeft = skip;
+    color[lane] = v4f{0.5f, 0.5f, 0.5f, float(std::uint32_t(b >> 40)) * (1.0f / 16777216.0f)};
+    skipLeft[lane] = skip;
+  }
+  /// A fresh chain set for stream (seed, worker).
+  static ChainState start(std::uint64_t seed, std::uint64_t worker, int skip) {
+    ChainState st;
+    st.rng = Rng::forStream(seed, worker);
+    for (int l = 0; l < kLanes; ++l) st.restartLane(l, skip);
+    return st;
   }
 };
 
@@ -144,44 +174,54 @@ struct ChainCounters {
   std::int64_t samples = 0, bad = 0, plotted = 0;
 };
 
-/// Runs `count` iterations of the chain. `plot(q, color)` receives each point past `skip` (after
-/// the final function) and returns whether it was plotted (counted in `plotted`).
+/// One iteration of one lane; returns 1 when a point was plotted.
+template <class Plot>
+[[gnu::always_inline]] inline int stepLane(ChainState& st, int lane, const HotIfs& ifs, Plot& plot,
+                                           std::int64_t& bad) {
+  const HotFunction& f = ifs.functions[ifs.choose(st.rng.next())];
+  const v4f p = apply(f, st.p[lane]);
+  const v4f col = st.color[lane] + (f.color - st.color[lane]) * f.speed;  // seed 002 §5: c = mix(c, c_i, speed)
+  if (!inBounds(p, ifs.escapeBound)) [[unlikely]] {
+    ++bad;
+    st.restartLane(lane, ifs.skip);
+    return 0;
+  }
+  st.p[lane] = p;
+  st.color[lane] = col;
+  if (st.skipLeft[lane] > 0) {
+    --st.skipLeft[lane];
+    return 0;
+  }
+  if (ifs.finalFunction) {
+    const HotFunction& g = *ifs.finalFunction;
+    const v4f q = apply(g, p);
+    if (!inBounds(q, ifs.escapeBound)) [[unlikely]] {
+      ++bad;
+      return 0;
+    }
+    return plot(q, col + (g.color - col) * g.speed);
+  }
+  return plot(p, col);
+}
+
+/// Runs `count` iterations of the worker's chains (lane n % kLanes for the n-th one). `plot(q, color)`
+/// receives each point past `skip` (after the final function) and returns whether it was plotted.
 template <class Plot>
 inline void runChain(ChainState& st, const HotIfs& ifs, std::int64_t count, Plot& plot, ChainCounters& counters) {
-  v4f p = st.p, col = st.color;
-  int skipLeft = st.skipLeft;
   std::int64_t bad = 0, plotted = 0;
-  for (std::int64_t n = 0; n < count; ++n) {
-    const HotFunction& f = ifs.functions[ifs.choose(st.rng.next())];
-    p = apply(f, p);
-    col = col + (f.color - col) * f.speed;  // seed 002 §5: c = mix(c, c_i, speed)
-    if (!inBounds(p, ifs.escapeBound)) [[unlikely]] {
-      ++bad;
-      st.restart(ifs.skip);
-      p = st.p;
-      col = st.color;
-      skipLeft = st.skipLeft;
-      continue;
-    }
-    if (skipLeft > 0) {
-      --skipLeft;
-      continue;
-    }
-    if (ifs.finalFunction) {
-      const HotFunction& g = *ifs.finalFunction;
-      const v4f q = apply(g, p);
-      if (!inBounds(q, ifs.escapeBound)) [[unlikely]] {
-        ++bad;
-        continue;
-      }
-      plotted += plot(q, col + (g.color - col) * g.speed);
-    } else {
-      plotted += plot(p, col);
-    }
+  // A local copy whose address never escapes stays in registers; the plotter's relaxed atomic
+  // stores would otherwise make the compiler reload the state from memory after every plot.
+  ChainState local = st;
+  const std::int64_t rounds = count / kLanes;
+  for (std::int64_t n = 0; n < rounds; ++n) {
+    plotted += stepLane(local, 0, ifs, plot, bad);
+    plotted += stepLane(local, 1, ifs, plot, bad);
+    plotted += stepLane(local, 2, ifs, plot, bad);
+    plotted += stepLane(local, 3, ifs, plot, bad);
   }
-  st.p = p;
-  st.color = col;
-  st.skipLeft = skipLeft;
+  static_assert(kLanes == 4);
+  for (int l = 0; l < int(count % kLanes); ++l) plotted += stepLane(local, l, ifs, plot, bad);
+  st = local;
   counters.samples += count;
   counters.bad += bad;
   counters.plotted += plotted;
@@ -209,9 +249,21 @@ inline void runChain(ChainState& st, const HotIfs& ifs, std::int64_t count, Plot
 /// (pixel x · w, pixel y · w, w, depth).
 struct HotCamera {
   v4f cx, cy, cz, c1;
-  float width, height, nearPlane;
+  v4f size;  // width, height, 1, 1
+  float nearPlane;
   std::uint32_t stride;
 };
+
+inline HotCamera makeHotCamera(const OrbitCamera& camera) {
+  const OrbitCamera::PixelRows rows = camera.pixelRows();
+  HotCamera hot{};
+  v4f* columns[4] = {&hot.cx, &hot.cy, &hot.cz, &hot.c1};
+  for (int c = 0; c < 4; ++c) *columns[c] = v4f{rows.rowX[c], rows.rowY[c], rows.rowW[c], rows.rowD[c]};
+  hot.size = v4f{float(camera.width()), float(camera.height()), 1.0f, 1.0f};
+  hot.nearPlane = float(camera.nearPlane());
+  hot.stride = std::uint32_t(camera.width());
+  return hot;
+}
 
 /// The z-buffer plotter (seed 004 §3.1). Keys are (depth bits << 32 | packed colour): depth is
 /// positive, so unsigned order is depth order and equal depths fall back to the colour, which makes
@@ -226,12 +278,13 @@ struct ZBufferPlot {
   float* colorSums;  // 4 per pixel, only with kAccumulateColor
 
   [[gnu::always_inline]] int operator()(v4f q, v4f col) const {
-    const v4f r = cam.cx * q[0] + cam.cy * q[1] + cam.cz * q[2] + cam.c1;
-    const float w = r[2], depth = r[3];
+    const v4f r = cam.cx * splat<0>(q) + cam.cy * splat<1>(q) + cam.cz * splat<2>(q) + cam.c1;
+    const float depth = r[3];
     if (!(depth > cam.nearPlane)) return 0;
-    const float x = r[0] / w, y = r[1] / w;
-    if (!(x >= 0.0f && x < cam.width && y >= 0.0f && y < cam.height)) return 0;
-    const std::size_t pixel = std::size_t(std::uint32_t(y)) * cam.stride + std::uint32_t(x);
+    const v4f xy = r * (1.0f / r[2]);  // lanes 0, 1: pixel x, y
+    if ((laneMask((xy >= v4f{}) & (xy < cam.size)) & 3) != 3) return 0;  // NaN fails too
+    const v4i ixy = __builtin_convertvector(xy, v4i);
+    const std::size_t pixel = std::size_t(std::uint32_t(ixy[1])) * cam.stride + std::uint32_t(ixy[0]);
     const std::uint64_t key = (std::uint64_t(std::bit_cast<std::uint32_t>(depth)) << 32) | packColor(col);
     std::atomic_ref<std::uint64_t> z(zbuffer[pixel]);
     if (key < z.load(std::memory_order_relaxed)) z.store(key, std::memory_order_relaxed);

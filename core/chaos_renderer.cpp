@@ -21,6 +21,7 @@ std::int64_t nowNs() {
 /// Iterations per batch: a worker checks its generation, pause and quit flags between batches.
 /// ~0.1–0.3 ms at this machine's rates, so a restart stops stale work well within 1 ms.
 constexpr std::int64_t kBatch = 8192;
+static_assert(kBatch % kernel::kLanes == 0);
 
 /// Worker w's share of the budget: samples/T, plus one for the first samples%T workers.
 std::int64_t workerBudget(const RenderJob& job, int worker) {
@@ -29,18 +30,6 @@ std::int64_t workerBudget(const RenderJob& job, int worker) {
   return job.samples / t + (worker < job.samples % t ? 1 : 0);
 }
 
-kernel::HotCamera makeHotCamera(const RenderJob& job) {
-  const OrbitCamera camera(job.camera, job.width, job.height);
-  const OrbitCamera::PixelRows rows = camera.pixelRows();
-  kernel::HotCamera hot{};
-  kernel::v4f* columns[4] = {&hot.cx, &hot.cy, &hot.cz, &hot.c1};
-  for (int c = 0; c < 4; ++c) *columns[c] = kernel::v4f{rows.rowX[c], rows.rowY[c], rows.rowW[c], rows.rowD[c]};
-  hot.width = float(job.width);
-  hot.height = float(job.height);
-  hot.nearPlane = float(camera.nearPlane());
-  hot.stride = std::uint32_t(job.width);
-  return hot;
-}
 
 /// Everything the workers need for one generation; immutable once published.
 struct PreparedJob {
@@ -62,7 +51,7 @@ struct PreparedJob {
     hotIfs.finalFunction = ifs->finalFunction ? &hot.back() : nullptr;
     hotIfs.skip = job.skip;
     hotIfs.escapeBound = limits::kEscapeBound;
-    camera = makeHotCamera(job);
+    camera = kernel::makeHotCamera(OrbitCamera(job.camera, job.width, job.height));
   }
   PreparedJob(const PreparedJob&) = delete;
   PreparedJob& operator=(const PreparedJob&) = delete;
@@ -144,9 +133,7 @@ void workerMain(std::shared_ptr<ChaosRenderer::Shared> shared, ChaosRenderer::Wo
       w->finishedNs.store(0, std::memory_order_relaxed);
       counters = {};
       remaining = workerBudget(job->job, w->index);
-      chain = {};
-      chain.rng = kernel::Rng::forStream(job->job.seed, std::uint64_t(w->index));
-      chain.restart(job->job.skip);
+      chain = kernel::ChainState::start(job->job.seed, std::uint64_t(w->index), job->job.skip);
       w->bufferGeneration.store(myGeneration, std::memory_order_release);
     }
     while (remaining > 0) {
@@ -470,12 +457,11 @@ RenderStats generatePoints(const CompiledIfs& ifs, const RenderJob& job,
   const std::int64_t start = nowNs();
   std::vector<float> xyz, rgb;
   constexpr std::int64_t kPointBatch = 1 << 16;
+  static_assert(kPointBatch % kernel::kLanes == 0);
   xyz.reserve(kPointBatch * 3);
   rgb.reserve(kPointBatch * 3);
   for (int w = 0; w < job.threads; ++w) {
-    kernel::ChainState chain;
-    chain.rng = kernel::Rng::forStream(job.seed, std::uint64_t(w));
-    chain.restart(job.skip);
+    kernel::ChainState chain = kernel::ChainState::start(job.seed, std::uint64_t(w), job.skip);
     kernel::ChainCounters counters;
     PointPlot plot{&xyz, &rgb};
     for (std::int64_t remaining = workerBudget(job, w); remaining > 0;) {

@@ -1,0 +1,186 @@
+// Chaos-game speed (issue 3 "Speed"): the canonical scene — 3 functions, 16×16×16 grids with
+// non-trivial distortions, 1024×1024 z-buffer + density, perspective camera — with 1 and 2 render
+// threads, the plot-only limit (random scattered z-buffer + density writes at 1024²) and the preview
+// latency (first image with points after a restart). scripts/bench-vs-flam3 runs this next to
+// flam3-render and prints the ratios.
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <thread>
+
+#include "core/chaos_kernel.h"
+#include "core/chaos_renderer.h"
+#include "core/compiled_ifs.h"
+
+namespace gridifs {
+namespace {
+
+Operation op(OpParams params) {
+  Operation o;
+  o.params = std::move(params);
+  return o;
+}
+
+/// Three 16³ functions placed like a Sierpinski triangle in 3D, each with a different distortion.
+Project canonicalScene() {
+  Project p;
+  p.camera.yaw = 35;
+  p.camera.pitch = 25;
+  p.camera.distance = 4.0;
+  p.camera.fov = 40;
+  p.render.width = 1024;
+  p.render.height = 1024;
+  p.render.skip = 20;
+  const Vec3 corners[3] = {{0.5, 0.0, -0.3}, {-0.25, 0.43, -0.3}, {-0.25, -0.43, 0.3}};
+  const Vec3 colors[3] = {{1, 0.5, 0.1}, {0.2, 0.7, 1.0}, {0.9, 0.9, 0.3}};
+  for (int i = 0; i < 3; ++i) {
+    Function f;
+    f.name = "f" + std::to_string(i + 1);
+    f.resolution = {16, 16, 16};
+    f.placement.scale = Vec3{0.5};
+    f.placement.translate = corners[i];
+    f.placement.rotate = {10.0 * i, 20.0, 30.0 * i};
+    f.color = colors[i];
+    f.palette_index = i / 2.0;
+    TwistOp twist;
+    twist.axis = Axis::Z;
+    twist.k = 0.8 + 0.3 * i;
+    f.ops.push_back(op(twist));
+    TaperOp taper;
+    taper.axis = Axis::X;
+    taper.profile = Profile::Sine;
+    taper.k = 0.25;
+    taper.omega = 3.0;
+    f.ops.push_back(op(taper));
+    BendOp bend;
+    bend.axis = Axis::Z;
+    bend.toward = Axis::Y;
+    bend.k = 0.4;
+    f.ops.push_back(op(bend));
+    p.functions.push_back(f);
+  }
+  return p;
+}
+
+const std::shared_ptr<const CompiledIfs>& canonicalIfs() {
+  static const auto ifs = compileIfs(canonicalScene());
+  return ifs;
+}
+
+/// The full renderer (worker pool, per-thread buffers) for a fixed budget; items = samples.
+void BM_ChaosRender(benchmark::State& state) {
+  const int threads = int(state.range(0));
+  RenderJob job = RenderJob::fromProject(canonicalScene(), threads);
+  job.samples = 30'000'000 * std::int64_t(threads);
+  ChaosRenderer renderer;
+  std::int64_t samples = 0;
+  double computeSeconds = 0.0;
+  for (auto _ : state) {
+    renderer.restart(canonicalIfs(), job);
+    renderer.waitUntilDone({}, 0.005);
+    const RenderStats s = renderer.stats();
+    samples += s.samples;
+    computeSeconds += s.seconds;
+    state.counters["bad_fraction"] = s.badFraction();
+    state.counters["plotted_fraction"] = double(s.plotted) / double(s.samples);
+  }
+  state.SetItemsProcessed(samples);
+  state.counters["points_per_second"] = samples / computeSeconds;
+  state.counters["points_per_16ms_per_thread"] = samples / computeSeconds * 0.016 / threads;
+}
+BENCHMARK(BM_ChaosRender)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
+
+/// The kernel alone on the calling thread (no pool): points per CPU second, robust to a busy machine.
+void BM_Kernel(benchmark::State& state) {
+  const RenderJob job = RenderJob::fromProject(canonicalScene(), 1);
+  const auto& ifs = *canonicalIfs();
+  std::vector<kernel::HotFunction> hot;
+  for (const auto& f : ifs.functions) hot.push_back(kernel::makeHot(f));
+  kernel::HotIfs hotIfs;
+  hotIfs.functions = hot.data();
+  hotIfs.alias = ifs.alias.data();
+  hotIfs.count = std::uint32_t(hot.size());
+  hotIfs.skip = job.skip;
+  const kernel::HotCamera cam = kernel::makeHotCamera(OrbitCamera(job.camera, job.width, job.height));
+  std::vector<std::uint64_t> zbuffer(std::size_t(job.width) * job.height, kernel::kEmptyKey);
+  std::vector<std::uint32_t> density(std::size_t(job.width) * job.height, 0u);
+  kernel::ZBufferPlot<false> plot{cam, zbuffer.data(), density.data(), nullptr};
+  kernel::ChainState chain = kernel::ChainState::start(1, 0, job.skip);
+  kernel::ChainCounters counters;
+  for (auto _ : state) kernel::runChain(chain, hotIfs, 1 << 22, plot, counters);
+  state.SetItemsProcessed(counters.samples);
+  state.counters["plotted_fraction"] = double(counters.plotted) / double(counters.samples);
+}
+BENCHMARK(BM_Kernel)->Unit(benchmark::kMillisecond)->MinTime(1.0);
+
+/// The plot-only limit: the same RNG, random pixels of a 1024² z-buffer + density, no function
+/// evaluation. One thread; the canonical scene's plotted fraction is close to 1.
+void BM_PlotOnly(benchmark::State& state) {
+  const int width = 1024, height = 1024;
+  std::vector<std::uint64_t> zbuffer(std::size_t(width) * height, kernel::kEmptyKey);
+  std::vector<std::uint32_t> density(std::size_t(width) * height, 0u);
+  kernel::Rng rng = kernel::Rng::forStream(1, 0);
+  std::int64_t items = 0;
+  for (auto _ : state) {
+    constexpr int kCount = 1 << 22;
+    for (int n = 0; n < kCount; ++n) {
+      const std::uint64_t r = rng.next();
+      const std::size_t pixel = std::size_t((std::uint64_t(std::uint32_t(r)) * (std::uint64_t(width) * height)) >> 32);
+      const std::uint64_t key = (r >> 32) | 0x3F80000000000000ull;
+      std::atomic_ref<std::uint64_t> z(zbuffer[pixel]);
+      if (key < z.load(std::memory_order_relaxed)) z.store(key, std::memory_order_relaxed);
+      std::atomic_ref<std::uint32_t> d(density[pixel]);
+      const std::uint32_t c = d.load(std::memory_order_relaxed);
+      d.store(c + (c != 0xFFFFFFFFu), std::memory_order_relaxed);
+    }
+    items += kCount;
+  }
+  benchmark::DoNotOptimize(zbuffer.data());
+  benchmark::DoNotOptimize(density.data());
+  state.SetItemsProcessed(items);
+}
+BENCHMARK(BM_PlotOnly)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(1.0);
+
+/// Preview latency: with the renderer running (unlimited budget), time from restart() with an
+/// edited snapshot until snapshot() first returns an image of the new generation with points.
+void BM_FirstImageAfterRestart(benchmark::State& state) {
+  const int threads = int(state.range(0));
+  RenderJob job = RenderJob::fromProject(canonicalScene(), threads);
+  job.samples = 0;
+  Project edited = canonicalScene();
+  edited.functions[0].placement.rotate.x += 5.0;
+  const auto a = canonicalIfs(), b = compileIfs(edited);
+  ChaosRenderer renderer;
+  renderer.restart(a, job);
+  RenderImage image;
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  double worst = 0.0, total = 0.0, snapshotTotal = 0.0;
+  int count = 0, snapshots = 0;
+  bool flip = false;
+  for (auto _ : state) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const std::uint64_t generation = renderer.restart(flip ? a : b, job);
+    flip = !flip;
+    for (;;) {
+      const auto s0 = std::chrono::steady_clock::now();
+      renderer.snapshot(image, DisplaySettings{});
+      snapshotTotal += std::chrono::duration<double>(std::chrono::steady_clock::now() - s0).count();
+      ++snapshots;
+      if (image.generation == generation && image.hitPixels > 0) break;
+    }
+    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    worst = std::max(worst, ms);
+    total += ms;
+    ++count;
+    std::this_thread::sleep_for(std::chrono::milliseconds(16));  // a frame of rendering
+  }
+  state.counters["first_image_ms_mean"] = total / count;
+  state.counters["first_image_ms_worst"] = worst;
+  state.counters["snapshot_ms_mean"] = 1e3 * snapshotTotal / snapshots;
+}
+BENCHMARK(BM_FirstImageAfterRestart)->Arg(2)->Iterations(40)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+}  // namespace
+}  // namespace gridifs
+
+BENCHMARK_MAIN();
