@@ -1,0 +1,109 @@
+#include "core/flame_render.h"
+
+#include <OpenImageIO/imageio.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <stdexcept>
+
+#include "core/project_io.h"
+
+namespace gridifs {
+
+double flamePixelsPerUnit(const Camera& camera, int outputHeight) {
+  const double halfHeight = camera.distance * std::tan(camera.fov * M_PI / 360.0);
+  return halfHeight > 0.0 ? outputHeight / (2.0 * halfHeight) : 1.0;
+}
+
+RenderJob flameRenderJob(const Project& project, std::shared_ptr<const Palette> palette, int threads) {
+  RenderJob job = RenderJob::fromProject(project, threads);
+  const int ss = std::max(1, project.render.flame.supersample);
+  // seed 002 §8: supersampling = more histogram buckets for the same number of iterations.
+  job.width = project.render.width * ss;
+  job.height = project.render.height * ss;
+  job.accumulateColor = true;
+  (void)palette;  // per-sample palette lookup: see RenderJob (set by the caller when supported)
+  return job;
+}
+
+FlameHistogram flameHistogramFromSnapshot(const RenderImage& snapshot, const Palette* meanCPalette) {
+  const std::size_t n = std::size_t(snapshot.width) * std::size_t(snapshot.height);
+  if (snapshot.colorSums.size() != n * 4 || snapshot.density.size() != n)
+    throw std::invalid_argument("the renderer snapshot has no flame color sums (accumulateColor was off)");
+  FlameHistogram h(snapshot.width, snapshot.height);
+  for (std::size_t i = 0; i < n; ++i) {
+    const float hits = float(snapshot.density[i]);
+    float* b = &h.buckets[i * 4];
+    b[3] = hits;
+    if (hits <= 0.f) continue;
+    const float* s = &snapshot.colorSums[i * 4];
+    if (meanCPalette) {
+      const Rgb c = meanCPalette->lookup(s[3] / hits);
+      b[0] = c.r * hits, b[1] = c.g * hits, b[2] = c.b * hits;
+    } else {
+      b[0] = s[0], b[1] = s[1], b[2] = s[2];
+    }
+  }
+  return h;
+}
+
+FlameImage developFlameSnapshot(const RenderImage& snapshot, const FlameSettings& settings, const Camera& camera,
+                                int outputWidth, int outputHeight, const Vec3& background, bool transparent,
+                                int threads, const Palette* meanCPalette) {
+  const int ss = std::max(1, settings.supersample);
+  if (snapshot.width != outputWidth * ss || snapshot.height != outputHeight * ss)
+    throw std::invalid_argument("the renderer snapshot is not supersample× the output size");
+  const FlameHistogram histogram = flameHistogramFromSnapshot(snapshot, meanCPalette);
+  return developFlame(histogram, settings, background, transparent, double(std::max<std::int64_t>(1, snapshot.stats.samples)),
+                      flamePixelsPerUnit(camera, outputHeight), threads);
+}
+
+void writeFlameImage(const FlameImage& image, const std::filesystem::path& file, int bitDepth, bool withAlpha) {
+  namespace fs = std::filesystem;
+  std::string ext = file.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  const bool exr = ext == ".exr";
+  if (!exr && ext != ".png" && ext != ".tif" && ext != ".tiff")
+    throw IoError("cannot write " + file.string() + ": use a .png, .tif or .exr file name");
+  OIIO::TypeDesc format;
+  if (exr) format = bitDepth == 32 ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::HALF;
+  else if (bitDepth == 16) format = OIIO::TypeDesc::UINT16;
+  else if (bitDepth == 8) format = OIIO::TypeDesc::UINT8;
+  else throw IoError("cannot write " + file.string() + ": PNG and TIFF take 8 or 16 bits per channel");
+  const int channels = withAlpha ? 4 : 3;
+  OIIO::ImageSpec spec(image.width, image.height, channels, format);
+  if (withAlpha) spec.alpha_channel = 3;
+  std::vector<float> pixels;
+  const float* data = image.rgba.data();
+  if (!withAlpha) {
+    pixels.resize(std::size_t(image.width) * std::size_t(image.height) * 3);
+    for (std::size_t i = 0, n = pixels.size() / 3; i < n; ++i)
+      for (int c = 0; c < 3; ++c) pixels[i * 3 + c] = image.rgba[i * 4 + c];
+    data = pixels.data();
+  }
+  const fs::path folder = file.has_parent_path() ? file.parent_path() : fs::path(".");
+  std::random_device rd;
+  std::string name(1, '.');
+  name.append(file.stem().string()).append(".tmp").append(std::to_string(rd() % 1000000)).append(ext);
+  const fs::path temporary = folder / name;
+  auto out = OIIO::ImageOutput::create(temporary.string());
+  if (!out) throw IoError("cannot write " + file.string() + ": " + OIIO::geterror());
+  if (!out->open(temporary.string(), spec)) throw IoError("cannot write " + file.string() + ": " + out->geterror());
+  const bool ok = out->write_image(OIIO::TypeDesc::FLOAT, data) && out->close();
+  if (!ok) {
+    const std::string reason = out->geterror();
+    std::error_code ec;
+    fs::remove(temporary, ec);
+    throw IoError("cannot write " + file.string() + ": " + reason);
+  }
+  std::error_code ec;
+  fs::rename(temporary, file, ec);
+  if (ec) {
+    fs::remove(temporary, ec);
+    throw IoError("cannot write " + file.string() + ": " + ec.message());
+  }
+}
+
+}  // namespace gridifs

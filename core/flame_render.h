@@ -1,0 +1,43 @@
+#pragma once
+// The flame display over the chaos game (issue 6, seed 002 §4–8): how a renderer snapshot
+// (per-pixel color sums and hit counts, at supersample× the output size) becomes a flame image,
+// and how that image is written. Used by `gridifs render --mode flame` and by the GUI preview.
+//
+// Thread-safety: pure functions of their arguments. Throws as documented per function.
+#include <filesystem>
+
+#include "core/chaos_renderer.h"
+#include "core/flame_tonemap.h"
+#include "core/palette.h"
+
+namespace gridifs {
+
+/// Output pixels per unit of the image plane at the camera target (OrbitCamera: the view's half
+/// height there is distance·tan(fov/2), for perspective and orthographic cameras alike). This
+/// is flam3's pixels_per_unit, which fixes the exposure (LogDensityScale::k2).
+double flamePixelsPerUnit(const Camera& camera, int outputHeight);
+
+/// The renderer job of a flame render: the project's job with the image supersample× larger,
+/// color accumulation on, and the palette looked up per sample (when the renderer supports it).
+RenderJob flameRenderJob(const Project& project, std::shared_ptr<const Palette> palette, int threads);
+
+/// The flame histogram held by a renderer snapshot made with accumulateColor. Channels 0..2 of
+/// colorSums are summed palette colors when the job had a palette; when `meanCPalette` is given
+/// instead, each pixel gets hits × palette(mean c), an approximation for snapshots without
+/// per-sample palette colors. Throws std::invalid_argument when the snapshot has no color sums.
+FlameHistogram flameHistogramFromSnapshot(const RenderImage& snapshot, const Palette* meanCPalette = nullptr);
+
+/// Develops a snapshot into the flame image of `outputWidth` × `outputHeight` (the snapshot is
+/// supersample× that size). `samples` = iterations behind the snapshot (snapshot.stats.samples).
+/// Throws std::invalid_argument on inconsistent sizes.
+FlameImage developFlameSnapshot(const RenderImage& snapshot, const FlameSettings& settings, const Camera& camera,
+                                int outputWidth, int outputHeight, const Vec3& background, bool transparent,
+                                int threads = 1, const Palette* meanCPalette = nullptr);
+
+/// Writes a flame image through OpenImageIO: PNG/TIFF with 8 or 16 bits per channel, EXR as
+/// half or float (bitDepth 16 or 32). RGBA (premultiplied in memory; OIIO stores PNG
+/// unassociated) when `withAlpha`, else RGB. Atomic: a temporary file in the same folder is
+/// renamed over `file`. Throws IoError when the format is unknown or the file cannot be written.
+void writeFlameImage(const FlameImage& image, const std::filesystem::path& file, int bitDepth, bool withAlpha);
+
+}  // namespace gridifs
