@@ -40,7 +40,8 @@ void apply(const TranslateOp& op, OpContext& ctx, const Index3&) {
 }
 
 void apply(const RotateOp& op, OpContext& ctx, const Index3&) {
-  forSelected(ctx, [&](const Vec3& p) { return ctx.center + rotateEuler(p - ctx.center, op.angles); });
+  const EulerRotation rotation(op.angles);  // trigonometry once per op, not per node
+  forSelected(ctx, [&](const Vec3& p) { return ctx.center + rotation.apply(p - ctx.center); });
 }
 
 void apply(const ScaleOp& op, OpContext& ctx, const Index3&) {
@@ -148,18 +149,17 @@ double triangleWave(double x) {
   return m - 4.0;
 }
 
-Vec3 rotateEuler(const Vec3& q, const Vec3& anglesDegrees) {
+EulerRotation::EulerRotation(const Vec3& anglesDegrees) {
   const Vec3 r = anglesDegrees * (M_PI / 180.0);
-  Vec3 p = q;
-  // x first, then y, then z: R = Rz·Ry·Rx.
-  double c = std::cos(r.x), s = std::sin(r.x);
-  p = {p.x, c * p.y - s * p.z, s * p.y + c * p.z};
-  c = std::cos(r.y), s = std::sin(r.y);
-  p = {c * p.x + s * p.z, p.y, -s * p.x + c * p.z};
-  c = std::cos(r.z), s = std::sin(r.z);
-  p = {c * p.x - s * p.y, s * p.x + c * p.y, p.z};
-  return p;
+  const double cx = std::cos(r.x), sx = std::sin(r.x), cy = std::cos(r.y), sy = std::sin(r.y);
+  const double cz = std::cos(r.z), sz = std::sin(r.z);
+  // R = Rz·Ry·Rx (x applied first), multiplied out row by row.
+  m[0] = {cz * cy, cz * sy * sx - sz * cx, cz * sy * cx + sz * sx};
+  m[1] = {sz * cy, sz * sy * sx + cz * cx, sz * sy * cx - cz * sx};
+  m[2] = {-sy, cy * sx, cy * cx};
 }
+
+Vec3 rotateEuler(const Vec3& q, const Vec3& anglesDegrees) { return EulerRotation(anglesDegrees).apply(q); }
 
 Vec3 applyPlacement(const Placement& placement, const Vec3& q) {
   return placement.translate + rotateEuler(placement.scale * q, placement.rotate);
@@ -264,8 +264,10 @@ Grid evaluateFunction(const Function& function, std::size_t upToOp, bool applyPl
         throw ModelError(path, std::string(opTypeName(op.params)) +
                                    " moves a node to a non-finite or absurdly distant position");
   }
-  if (applyPlacementToo)
-    for (Vec3& p : grid.nodes()) p = applyPlacement(function.placement, p);
+  if (applyPlacementToo) {
+    const EulerRotation rotation(function.placement.rotate);
+    for (Vec3& p : grid.nodes()) p = function.placement.translate + rotation.apply(function.placement.scale * p);
+  }
   return grid;
 }
 

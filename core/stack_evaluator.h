@@ -5,7 +5,17 @@
 
 namespace gridifs {
 
-/// Rotation matrix entries for Euler angles in degrees, R = Rz·Ry·Rx (x first).
+/// The rotation of Euler angles in degrees, R = Rz·Ry·Rx (x first), as a matrix.
+struct EulerRotation {
+  explicit EulerRotation(const Vec3& anglesDegrees);
+  Vec3 apply(const Vec3& q) const {
+    return {m[0].x * q.x + m[0].y * q.y + m[0].z * q.z, m[1].x * q.x + m[1].y * q.y + m[1].z * q.z,
+            m[2].x * q.x + m[2].y * q.y + m[2].z * q.z};
+  }
+  Vec3 m[3];  // rows
+};
+
+/// R·q for Euler angles in degrees (see EulerRotation).
 Vec3 rotateEuler(const Vec3& q, const Vec3& anglesDegrees);
 
 /// Triangle wave in [-1, 1] with the period and phase of sin: tri(0) = 0, tri(π/2) = 1
