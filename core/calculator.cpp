@@ -62,8 +62,21 @@ struct CompiledCalculator::Impl {
   // expressions to bytecode once, so each node costs one bytecode run per expression
   // (its bulk mode measured no faster here and cannot pass node indices to rand()).
   std::array<double, 12> variables{};
+  // Expressions that are just their own coordinate ("z" for ẑ, as in figure 14) need no
+  // bytecode run: -1 when the parser must run, else the coordinate index to copy.
+  std::array<int, 3> passThrough{-1, -1, -1};
   CalculatorOp op;
 };
+
+namespace {
+int passThroughCoordinate(const std::string& expression) {
+  const auto first = expression.find_first_not_of(" \t");
+  const auto last = expression.find_last_not_of(" \t");
+  if (first == std::string::npos || last != first) return -1;
+  const char c = expression[first];
+  return c == 'x' ? 0 : c == 'y' ? 1 : c == 'z' ? 2 : -1;
+}
+}  // namespace
 
 CompiledCalculator::CompiledCalculator(const CalculatorOp& op) : impl_(std::make_unique<Impl>()) {
   impl_->op = op;
@@ -84,6 +97,7 @@ CompiledCalculator::CompiledCalculator(const CalculatorOp& op) : impl_(std::make
       if (expressions[e]->find_first_not_of(" \t") == std::string::npos)
         throw ModelError(kPaths[e], "the expression is empty");
       p.SetExpr(*expressions[e]);
+      impl_->passThrough[e] = passThroughCoordinate(*expressions[e]);
       p.Eval();  // forces the parse so errors surface now, at edit time
     } catch (const mu::Parser::exception_type& error) {
       throw ModelError(kPaths[e], describeParserError(error));
@@ -110,6 +124,10 @@ void CompiledCalculator::apply(std::vector<Vec3>& nodes, const Index3& resolutio
         var[0] = nodes[n].x, var[1] = nodes[n].y, var[2] = nodes[n].z;
         var[6] = i, var[7] = j, var[8] = k;
         for (int e = 0; e < 3; ++e) {
+          if (s.passThrough[e] >= 0) {
+            out[n][e] = var[s.passThrough[e]];
+            continue;
+          }
           RandomContext& r = s.random[e];
           r.i = i, r.j = j, r.k = k, r.calls = 0;
           double value;
