@@ -276,6 +276,10 @@ struct ZBufferPlot {
   std::uint64_t* zbuffer;
   std::uint32_t* density;
   float* colorSums;  // 4 per pixel, only with kAccumulateColor
+  /// Optional (issue 6): 257 entries r g b 0 (the last repeats entry 255). When set, colorSums
+  /// receive the palette color at c for every sample, as flam3 does (seed 002 §5), instead of
+  /// the blended RGB; lane 3 still sums c.
+  const v4f* palette = nullptr;
 
   [[gnu::always_inline]] int operator()(v4f q, v4f col) const {
     const v4f r = cam.cx * splat<0>(q) + cam.cy * splat<1>(q) + cam.cz * splat<2>(q) + cam.c1;
@@ -292,9 +296,18 @@ struct ZBufferPlot {
     const std::uint32_t n = d.load(std::memory_order_relaxed);
     d.store(n + (n != 0xFFFFFFFFu), std::memory_order_relaxed);  // saturating
     if constexpr (kAccumulateColor) {
+      v4f add = col;
+      if (palette) {  // flam3's linear palette mode: index c·256, blend entries i and i+1
+        float x = col[3] * 256.0f;
+        x = x > 0.0f ? (x < 256.0f ? x : 256.0f) : 0.0f;  // NaN → 0
+        const int i = int(x) < 255 ? int(x) : 255;
+        const float frac = x - float(i);
+        add = palette[i] + (palette[i + 1] - palette[i]) * frac;
+        add[3] = col[3];
+      }
       for (int k = 0; k < 4; ++k) {
         std::atomic_ref<float> s(colorSums[pixel * 4 + k]);
-        s.store(s.load(std::memory_order_relaxed) + col[k], std::memory_order_relaxed);
+        s.store(s.load(std::memory_order_relaxed) + add[k], std::memory_order_relaxed);
       }
     }
     return 1;

@@ -38,6 +38,7 @@ struct PreparedJob {
   kernel::HotIfs hotIfs;
   kernel::HotCamera camera;
   RenderJob job;
+  std::vector<kernel::v4f> palette;  // 257 entries when job.palette is set (issue 6)
 
   PreparedJob(std::shared_ptr<const CompiledIfs> compiled, const RenderJob& renderJob)
       : ifs(std::move(compiled)), job(renderJob) {
@@ -52,6 +53,10 @@ struct PreparedJob {
     hotIfs.skip = job.skip;
     hotIfs.escapeBound = limits::kEscapeBound;
     camera = kernel::makeHotCamera(OrbitCamera(job.camera, job.width, job.height));
+    if (job.palette) {
+      for (const Rgb& c : job.palette->colors) palette.push_back(kernel::v4f{c.r, c.g, c.b, 0.0f});
+      palette.push_back(palette.back());
+    }
   }
   PreparedJob(const PreparedJob&) = delete;
   PreparedJob& operator=(const PreparedJob&) = delete;
@@ -98,7 +103,8 @@ namespace {
 template <bool kColor>
 void runBatch(kernel::ChainState& chain, const PreparedJob& job, ChaosRenderer::Worker& w, std::int64_t count,
               kernel::ChainCounters& counters) {
-  kernel::ZBufferPlot<kColor> plot{job.camera, w.zbuffer.data(), w.density.data(), w.colorSums.data()};
+  kernel::ZBufferPlot<kColor> plot{job.camera, w.zbuffer.data(), w.density.data(), w.colorSums.data(),
+                                   job.palette.empty() ? nullptr : job.palette.data()};
   kernel::runChain(chain, job.hotIfs, count, plot, counters);
 }
 

@@ -20,6 +20,7 @@
 
 #include "core/camera.h"
 #include "core/compiled_ifs.h"
+#include "core/palette.h"
 
 namespace gridifs {
 
@@ -50,6 +51,9 @@ struct RenderJob {
   /// Also accumulate per-pixel colour sums for the flame display (issue 6). Costs a 16-byte
   /// read-modify-write per plotted sample, so it is off for the z-buffer preview.
   bool accumulateColor = false;
+  /// With accumulateColor (issue 6): when set, colorSums hold the sums of this palette's color
+  /// at each sample's c (flam3's structural coloring, seed 002 §5) instead of the blended RGB.
+  std::shared_ptr<const Palette> palette;
 
   /// camera, size, samples, seed and skip from the project; `threads` as given
   /// (≤ 0: std::thread::hardware_concurrency()).
