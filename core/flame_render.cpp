@@ -24,7 +24,7 @@ RenderJob flameRenderJob(const Project& project, std::shared_ptr<const Palette> 
   job.width = project.render.width * ss;
   job.height = project.render.height * ss;
   job.accumulateColor = true;
-  (void)palette;  // per-sample palette lookup: see RenderJob (set by the caller when supported)
+  job.palette = std::move(palette);  // seed 002 §5: the palette color at c, per sample
   return job;
 }
 

@@ -9,6 +9,7 @@
 #include "core/chaos_renderer.h"
 #include "core/flame_tonemap.h"
 #include "core/palette.h"
+#include "core/project_io.h"
 
 namespace gridifs {
 
@@ -18,7 +19,7 @@ namespace gridifs {
 double flamePixelsPerUnit(const Camera& camera, int outputHeight);
 
 /// The renderer job of a flame render: the project's job with the image supersample× larger,
-/// color accumulation on, and the palette looked up per sample (when the renderer supports it).
+/// color accumulation on, and the palette looked up per sample (RenderJob::palette).
 RenderJob flameRenderJob(const Project& project, std::shared_ptr<const Palette> palette, int threads);
 
 /// The flame histogram held by a renderer snapshot made with accumulateColor. Channels 0..2 of
