@@ -1,0 +1,114 @@
+#include "app/render_setup.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+
+#include "app/cli.h"
+#include "core/contractivity.h"
+
+namespace gridifs::cli {
+
+std::int64_t parseSamples(const std::string& text, std::int64_t maximum) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || !end || *end != '\0' || !std::isfinite(value) || value != std::floor(value))
+    throw CliError(kBadInput, "--samples must be a whole number such as 20000000 or 2e7, not \"" + text + "\"");
+  if (value < 1) throw CliError(kBadInput, "--samples must be at least 1, not " + text);
+  if (value > double(maximum))
+    throw CliError(kBadInput, "--samples " + text + " is more than the limit of " + std::to_string(maximum) +
+                                  " samples");
+  return std::int64_t(value);
+}
+
+std::string lowerExtension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  if (!ext.empty() && ext[0] == '.') ext.erase(0, 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+void checkOutputPath(const std::filesystem::path& out, const std::vector<std::string>& allowed,
+                     const std::string& what) {
+  const std::string ext = lowerExtension(out);
+  if (std::find(allowed.begin(), allowed.end(), ext) == allowed.end()) {
+    std::string list;
+    for (std::size_t i = 0; i < allowed.size(); ++i)
+      list += (i ? (i + 1 == allowed.size() ? " or ." : ", .") : ".") + allowed[i];
+    throw CliError(kBadInput, "cannot write " + out.string() + ": " + what + " must end in " + list);
+  }
+  std::filesystem::path folder = out.parent_path();
+  if (folder.empty()) folder = ".";
+  std::error_code ec;
+  if (!std::filesystem::is_directory(folder, ec))
+    throw CliError(kBadInput, "cannot write " + out.string() + ": the folder " + folder.string() + " does not exist");
+  if (::access(folder.c_str(), W_OK) != 0)
+    throw CliError(kBadInput, "cannot write " + out.string() + ": the folder " + folder.string() + " is not writable");
+  if (std::filesystem::is_directory(out, ec))
+    throw CliError(kBadInput, "cannot write " + out.string() + ": it is a folder");
+}
+
+RenderSetup prepareRender(const std::filesystem::path& file, const RenderOverrides& overrides,
+                          std::int64_t maxSamples) {
+  RenderSetup setup;
+  setup.project = loadForVerb(file);
+  RenderJob& job = setup.job;
+  job = RenderJob::fromProject(setup.project, overrides.threads.value_or(0));
+  if (overrides.width) job.width = *overrides.width;
+  if (overrides.height) job.height = *overrides.height;
+  if (overrides.seed) job.seed = *overrides.seed;
+  if (overrides.samples) job.samples = parseSamples(*overrides.samples, maxSamples);
+  if (overrides.threads && (*overrides.threads < 1 || *overrides.threads > limits::kMaxRenderThreads))
+    throw CliError(kBadInput, "--threads must be between 1 and " + std::to_string(limits::kMaxRenderThreads));
+  if (job.samples < 1)
+    throw CliError(kBadInput, file.string() + ": render.samples must be at least 1 (or pass --samples)");
+  if (job.samples > maxSamples)
+    throw CliError(kBadInput, file.string() + ": " + std::to_string(job.samples) +
+                                  " samples is more than the limit of " + std::to_string(maxSamples));
+  try {
+    validateRenderJob(job);
+  } catch (const ModelError& e) {
+    throw CliError(kBadInput, file.string() + ": " + e.message());
+  }
+  Document document(setup.project);
+  try {
+    setup.ifs = compileIfs(document);
+  } catch (const ModelError& e) {
+    throw CliError(kBadInput, file.string() + ": " + e.what());
+  }
+  // The chaos game still draws something for an expanding function (clamping to X keeps the chain
+  // bounded), so this is a warning, as in `gridifs info`.
+  for (const CompiledFunction& f : setup.ifs->functions) {
+    const ContractivityEstimate c = estimateContractivity(*document.evaluatedGrid(f.sourceIndex));
+    if (c.bound >= 1.0)
+      std::fprintf(stderr, "warning: %s: function %zu \"%s\" may not be contractive (Lipschitz bound %.3g).\n",
+                   file.c_str(), f.sourceIndex, setup.project.functions[f.sourceIndex].name.c_str(), c.bound);
+  }
+  return setup;
+}
+
+AtomicOutput::AtomicOutput(std::filesystem::path target) : target_(std::move(target)) {
+  std::filesystem::path folder = target_.parent_path();
+  const std::string name = "." + target_.stem().string() + ".tmp-" + std::to_string(::getpid()) +
+                           target_.extension().string();
+  temp_ = folder.empty() ? std::filesystem::path(name) : folder / name;
+}
+
+AtomicOutput::~AtomicOutput() {
+  if (!committed_) {
+    std::error_code ec;
+    std::filesystem::remove(temp_, ec);
+  }
+}
+
+void AtomicOutput::commit() {
+  std::error_code ec;
+  std::filesystem::rename(temp_, target_, ec);
+  if (ec) throw CliError(kFailure, "cannot write " + target_.string() + ": " + ec.message());
+  committed_ = true;
+}
+
+}  // namespace gridifs::cli

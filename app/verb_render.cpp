@@ -1,0 +1,136 @@
+// gridifs render FILE -o OUT.(png|exr|tif): the stochastic renderer headlessly through OpenImageIO
+// (DESIGN §4, §5; issue 3). PNG/TIFF: 8-bit RGB with the background composited. EXR: float
+// R G B A (linear, premultiplied, A = coverage) plus a Z channel with the view depth, so
+// compositors can use it (issue 5 item 4).
+#include <OpenImageIO/imageio.h>
+
+#include <atomic>
+#include <cmath>
+#include <csignal>
+#include <cstdio>
+
+#include "app/cli.h"
+#include "app/progress_bar.h"
+#include "app/render_setup.h"
+
+namespace gridifs::cli {
+namespace {
+
+std::atomic<bool> gInterrupted{false};
+
+extern "C" void onInterrupt(int) { gInterrupted.store(true); }
+
+/// Ctrl-C stops the render cleanly (the temporary output is removed) instead of killing it.
+struct InterruptGuard {
+  void (*previous)(int);
+  InterruptGuard() : previous(std::signal(SIGINT, onInterrupt)) { gInterrupted.store(false); }
+  ~InterruptGuard() { std::signal(SIGINT, previous); }
+};
+
+/// The Z value of pixels without points (Blender's convention for "background").
+constexpr float kEmptyZ = 1e10f;
+
+float srgbToLinear(float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f); }
+
+void writeImage(const RenderImage& image, const std::filesystem::path& out, const RenderSetup& setup,
+                const std::string& file) {
+  const std::string ext = lowerExtension(out);
+  AtomicOutput output(out);
+  const std::string temp = output.tempPath().string();
+  auto writer = OIIO::ImageOutput::create(temp);
+  if (!writer) throw CliError(kFailure, "cannot write " + out.string() + ": " + OIIO::geterror());
+  const std::size_t n = std::size_t(image.width) * std::size_t(image.height);
+  bool ok = false;
+  const std::string description = "GridIFS render of " + file + ", " + std::to_string(setup.job.samples) +
+                                  " samples, seed " + std::to_string(setup.job.seed) + ", " +
+                                  std::to_string(setup.job.threads) + " threads";
+  if (ext == "exr") {
+    OIIO::ImageSpec spec(image.width, image.height, 5, OIIO::TypeDesc::FLOAT);
+    spec.channelnames = {"R", "G", "B", "A", "Z"};
+    spec.alpha_channel = 3;
+    spec.z_channel = 4;
+    spec.attribute("Software", "GridIFS");
+    spec.attribute("ImageDescription", description);
+    spec.attribute("compression", "zip");
+    std::vector<float> pixels(n * 5);
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::uint8_t* px = &image.rgba[i * 4];
+      const bool hit = px[3] != 0;
+      for (int c = 0; c < 3; ++c) pixels[i * 5 + c] = hit ? srgbToLinear(px[c] / 255.0f) : 0.0f;
+      pixels[i * 5 + 3] = hit ? 1.0f : 0.0f;
+      pixels[i * 5 + 4] = hit ? image.depth[i] : kEmptyZ;
+    }
+    ok = writer->open(temp, spec) && writer->write_image(OIIO::TypeDesc::FLOAT, pixels.data()) && writer->close();
+  } else {
+    OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
+    spec.attribute("Software", "GridIFS");
+    spec.attribute("ImageDescription", description);
+    if (ext == "tif" || ext == "tiff") spec.attribute("compression", "zip");
+    std::vector<std::uint8_t> pixels(n * 3);
+    for (std::size_t i = 0; i < n; ++i)
+      for (int c = 0; c < 3; ++c) pixels[i * 3 + c] = image.rgba[i * 4 + c];
+    ok = writer->open(temp, spec) && writer->write_image(OIIO::TypeDesc::UINT8, pixels.data()) && writer->close();
+  }
+  if (!ok) {
+    std::string message = writer->geterror();
+    if (message.empty()) message = "the image library reported an error";
+    while (!message.empty() && message.back() == '\n') message.pop_back();
+    throw CliError(kFailure, "cannot write " + out.string() + ": " + message);
+  }
+  writer.reset();
+  output.commit();
+}
+
+int runRender(const std::string& file, const std::string& out, const RenderOverrides& overrides, bool quiet) {
+  checkOutputPath(out, {"png", "exr", "tif", "tiff"}, "the output image");
+  const RenderSetup setup = prepareRender(file, overrides, limits::kMaxRenderSamples);
+  ProgressBar bar("render", !quiet && stderrIsTerminal());
+  InterruptGuard interrupt;
+  RenderImage image;
+  try {
+    image = renderToCompletion(setup.ifs, setup.job, DisplaySettings::fromProject(setup.project),
+                               [&](const RenderStats& s) {
+                                 bar.update(s.samples, s.budget, s.pointsPerSecond, s.done);
+                                 return !gInterrupted.load();
+                               });
+  } catch (const RenderCancelled&) {
+    bar.finish();
+    throw CliError(kFailure, "render of " + file + " interrupted; " + out + " was not written");
+  }
+  bar.finish();
+  const RenderStats& s = image.stats;
+  if (s.badFraction() >= 0.5)
+    throw CliError(kBadInput, file + ": " + std::to_string(int(std::lround(100 * s.badFraction()))) +
+                                  "% of the chaos-game points were non-finite or escaped, so the IFS has no usable "
+                                  "attractor; " + out + " was not written");
+  if (s.badSamples > 0)
+    std::fprintf(stderr, "warning: %s: %.3g%% of the samples were non-finite or escaped (chains restarted).\n",
+                 file.c_str(), 100.0 * s.badFraction());
+  if (image.hitPixels == 0)
+    std::fprintf(stderr, "warning: %s: no point landed in the %dx%d frame; check the camera.\n", file.c_str(),
+                 image.width, image.height);
+  writeImage(image, out, setup, file);
+  return kSuccess;
+}
+
+const VerbRegistration kRender{
+    {"render", "FILE -o OUT.(png|exr|tif) [--width W --height H --samples N --seed S --threads T]: render headlessly",
+     [](CLI::App& app) {
+       auto file = std::make_shared<std::string>();
+       auto out = std::make_shared<std::string>();
+       auto o = std::make_shared<RenderOverrides>();
+       auto quiet = std::make_shared<bool>(false);
+       app.add_option("FILE", *file, "project file (.gridifs)")->required();
+       app.add_option("-o,--output", *out, "output image: .png or .tif (8-bit RGB) or .exr (float RGBA + Z)")
+           ->required();
+       app.add_option("--width", o->width, "image width in pixels (default: the project's)");
+       app.add_option("--height", o->height, "image height in pixels (default: the project's)");
+       app.add_option("--samples", o->samples, "chaos-game iterations in total, e.g. 2e7 (default: the project's)");
+       app.add_option("--seed", o->seed, "random seed (default: the project's)");
+       app.add_option("--threads", o->threads, "render threads (default: all cores; the image depends on it)");
+       app.add_flag("-q,--quiet", *quiet, "no progress bar");
+       return [=] { return runRender(*file, *out, *o, *quiet); };
+     }}};
+
+}  // namespace
+}  // namespace gridifs::cli
