@@ -1,0 +1,100 @@
+#pragma once
+// One grid view (seed 004 §4.2): the active function's grid from the top, side, front or an
+// orbiting user view, or the IFS view with every function placed in the common initial grid.
+// build() runs while the UI is built (input → edits); render() draws into the view's target
+// after the edits are applied (DESIGN §6 frame order).
+#include <cstdint>
+#include <glm/vec2.hpp>
+#include <string>
+#include <vector>
+
+#include "core/view_camera.h"
+#include "ui/edit_queue.h"
+#include "ui/gl_resources.h"
+#include "ui/modeller_state.h"
+#include "ui/view_renderer.h"
+
+namespace gridifs::ui {
+
+class GridView {
+ public:
+  enum class Content { FunctionGrid, Ifs };
+  GridView(Content content, ViewAxis axis, std::string id);
+
+  /// Shows the view at the cursor with `size` (logical pixels) and handles its mouse input.
+  void build(ModellerState& state, EditQueue& edits, glm::vec2 size, float framebufferScale);
+  /// Draws the scene for the current document into the view's texture, when anything it
+  /// shows changed since the last frame (idle views cost nothing while the preview fills).
+  void render(ModellerState& state, ViewRenderer& renderer);
+  /// Copies the view's texture to its place in the window's framebuffer (before ImGui draws
+  /// its overlays on top). `framebufferHeight` flips to OpenGL's bottom-up rows.
+  void present(int framebufferHeight) const;
+  /// Fits the content into the view (F).
+  void frame(ModellerState& state, EditQueue& edits);
+
+  bool hovered() const { return hovered_; }
+  ViewAxis axis() const { return camera_.axis; }
+  void setAxis(ViewAxis axis);
+  Content content() const { return content_; }
+  const std::string& id() const { return id_; }
+
+ private:
+  enum class Drag { None, Orbit, Pan, Box, Nodes, Handle, Placement };
+  enum class Handle { None, MagnetPoint, MorphFrom, MorphTo, CenterPoint };
+
+  ViewCamera camera(const ModellerState& state) const;
+  /// The nodes that picking works on (local grid or every placed grid).
+  void pickableNodes(ModellerState& state, std::vector<Vec3>& out, std::vector<int>& owner);
+  Handle hitHandle(ModellerState& state, glm::dvec2 mouse, int& pairIndex, Vec3& position) const;
+  void beginDrag(ModellerState& state, EditQueue& edits, glm::dvec2 mouse);
+  void updateDrag(ModellerState& state, EditQueue& edits, glm::dvec2 mouse);
+  void endDrag(ModellerState& state, EditQueue& edits, glm::dvec2 mouse);
+  void zoom(ModellerState& state, EditQueue& edits, float wheel);
+  void buildFunctionScene(ModellerState& state);
+  void buildIfsScene(ModellerState& state);
+  bool usesProjectCamera() const { return content_ == Content::Ifs && camera_.axis == ViewAxis::User; }
+
+  /// Everything a view's picture depends on; equal keys mean the texture is still valid.
+  struct Key {
+    std::uint64_t revision = 0;
+    int function = -1, op = -1;
+    Selection selection;
+    Camera camera;
+    ViewAxis axis = ViewAxis::User;
+    glm::dvec2 size{0.0};
+    float scale = 0.0f;
+    Vec3 point{0.0};
+    int centerKind = -1;
+    bool operator==(const Key&) const = default;
+  };
+  Key key_;
+  bool visible_ = false;
+  glm::dvec2 screenOrigin_{0.0};  // window coordinates of the view's top-left corner
+
+  Content content_;
+  ViewCamera camera_;
+  std::string id_;
+  RenderTarget target_;
+  ViewScene scene_;
+  glm::dvec2 size_{1.0, 1.0};  // logical pixels
+  float framebufferScale_ = 1.0f;
+  bool hovered_ = false;
+  bool framedOnce_ = false;
+
+  // The drag in progress.
+  Drag drag_ = Drag::None;
+  int dragButton_ = 0;
+  glm::dvec2 dragStart_{0.0}, dragLast_{0.0};
+  bool dragMoved_ = false;
+  Handle handle_ = Handle::None;
+  int handlePair_ = -1;
+  Vec3 handleStart_{0.0}, anchor_{0.0};
+  Function dragFunction_;    // the function as it was when a node/handle/placement drag began
+  Camera dragCamera_;        // the camera when an orbit or pan began
+  int dragFunctionIndex_ = 0;
+  std::size_t pressedNode_ = 0;
+  bool pressedWasSelected_ = false;
+  double wheelGestureUntil_ = -1.0;  // a run of wheel steps on the project camera is one undo step
+};
+
+}  // namespace gridifs::ui

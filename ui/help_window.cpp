@@ -1,0 +1,71 @@
+// The shortcuts window (issue 4 "Edit": a Help window listing them).
+#include <imgui.h>
+
+#include "ui/panels.h"
+
+namespace gridifs::ui {
+
+void drawHelpWindow(ModellerState& state) {
+  if (!state.showHelp) return;
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos(ImVec2(vp->WorkPos.x + vp->WorkSize.x * 0.5f, vp->WorkPos.y + vp->WorkSize.y * 0.5f),
+                          ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowSize(ImVec2(ImGui::GetFontSize() * 36, ImGui::GetFontSize() * 34), ImGuiCond_Appearing);
+  if (!ImGui::Begin("Help: shortcuts", &state.showHelp, ImGuiWindowFlags_NoCollapse)) {
+    ImGui::End();
+    return;
+  }
+  struct Row {
+    const char* keys;
+    const char* what;
+  };
+  static const Row keyboard[] = {
+      {"Ctrl+N", "New project"},
+      {"Ctrl+O", "Open a project"},
+      {"Ctrl+S", "Save"},
+      {"Ctrl+Shift+S", "Save as"},
+      {"Ctrl+Z", "Undo (one step per edit or drag)"},
+      {"Ctrl+Shift+Z, Ctrl+Y", "Redo"},
+      {"Delete", "Delete the active operation"},
+      {"F", "Frame the hovered view (all views when none is hovered)"},
+      {"1 2 3 4", "Top / side / front / user grid view alone; again: all four"},
+      {"Ctrl+A, Esc, Ctrl+I", "Select all nodes / none / invert"},
+      {"Space", "Pause or resume the preview"},
+      {"F1", "This window"},
+      {"Ctrl+Q", "Quit (asks before losing unsaved work)"},
+  };
+  static const Row mouse[] = {
+      {"Click a node", "Select it (Shift: add, Ctrl: remove)"},
+      {"Drag on empty space", "Box-select nodes (Shift: add, Ctrl: remove)"},
+      {"Drag a selected node", "Move the selection (records a 'nodes' operation)"},
+      {"Drag a handle", "Move the magnet, a morph start/end or the center point"},
+      {"Alt+click", "Place the center point of transformation"},
+      {"Right-drag", "Orbit the user views; pan the top/side/front views"},
+      {"Middle-drag, Shift+right-drag", "Pan"},
+      {"Wheel", "Zoom"},
+      {"Drag a grid in the IFS view", "Move the function's placement"},
+      {"Drag in the preview", "Orbit the preview camera (same as the IFS user view)"},
+  };
+  auto table = [](const char* id, const Row* rows, std::size_t n) {
+    if (ImGui::BeginTable(id, 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
+      ImGui::TableSetupColumn("keys", ImGuiTableColumnFlags_WidthFixed, ImGui::GetFontSize() * 13);
+      ImGui::TableSetupColumn("what", ImGuiTableColumnFlags_WidthStretch);
+      for (std::size_t i = 0; i < n; ++i) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(rows[i].keys);
+        ImGui::TableNextColumn();
+        ImGui::TextWrapped("%s", rows[i].what);
+      }
+      ImGui::EndTable();
+    }
+  };
+  ImGui::TextDisabled("Keyboard");
+  table("keys", keyboard, sizeof keyboard / sizeof keyboard[0]);
+  ImGui::Spacing();
+  ImGui::TextDisabled("Mouse in the grid views");
+  table("mouse", mouse, sizeof mouse / sizeof mouse[0]);
+  ImGui::End();
+}
+
+}  // namespace gridifs::ui

@@ -1,0 +1,146 @@
+// The main menu and the keyboard shortcuts (issue 4 "Edit" and "Files"; seed 004 §4.2: "all
+// functions can be activated by a menu").
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include "core/node_picking.h"
+#include "ui/app_commands.h"
+#include "ui/panels.h"
+
+namespace gridifs::ui {
+namespace {
+
+void selectAll(ModellerState& s) {
+  const Index3 r = s.function().resolution;
+  s.selection() = {SelectionBox{{0, r[0] - 1}, {0, r[1] - 1}, {0, r[2] - 1}, SelectionOp::Or}};
+}
+
+void invertSelection(ModellerState& s) {
+  const auto& mask = s.selectionMask();
+  std::vector<unsigned char> inverted(mask.size());
+  for (std::size_t n = 0; n < mask.size(); ++n) inverted[n] = mask[n] ? 0 : 1;
+  Selection result = boxesFromMask(inverted, s.function().resolution);
+  if (int(result.size()) <= limits::kMaxSelectionBoxes) s.selection() = result;
+}
+
+void toggleView(ModellerState& s, int view) { s.maximizedGridView = s.maximizedGridView == view ? -1 : view; }
+
+}  // namespace
+
+float drawMenuBar(AppCommands& app) {
+  ModellerState& s = app.state;
+  Document& d = s.document;
+  float height = 0.0f;
+  if (!ImGui::BeginMainMenuBar()) return height;
+  height = ImGui::GetWindowSize().y;
+  if (ImGui::BeginMenu("File")) {
+    if (ImGui::MenuItem("New", "Ctrl+N")) app.files.requestNew();
+    if (ImGui::MenuItem("Open...", "Ctrl+O")) app.files.requestOpenDialog();
+    if (ImGui::BeginMenu("Open Recent", !app.files.recent().empty())) {
+      for (const auto& file : app.files.recent())
+        if (ImGui::MenuItem(file.filename().string().c_str())) app.files.requestOpen(file);
+      ImGui::EndMenu();
+    }
+    ImGui::Separator();
+    if (ImGui::MenuItem("Save", "Ctrl+S")) app.files.save();
+    if (ImGui::MenuItem("Save As...", "Ctrl+Shift+S")) app.files.saveAsDialog();
+    ImGui::Separator();
+    if (ImGui::MenuItem("Quit", "Ctrl+Q")) app.files.requestQuit();
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("Edit")) {
+    const std::string undo = d.canUndo() ? "Undo " + d.undoLabel() : "Undo";
+    const std::string redo = d.canRedo() ? "Redo " + d.redoLabel() : "Redo";
+    if (ImGui::MenuItem(undo.c_str(), "Ctrl+Z", false, d.canUndo())) app.edits.undo();
+    if (ImGui::MenuItem(redo.c_str(), "Ctrl+Shift+Z", false, d.canRedo())) app.edits.redo();
+    ImGui::Separator();
+    if (ImGui::MenuItem("Delete operation", "Delete", false, s.op() != nullptr)) deleteActiveOperation(s, app.edits);
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("Function")) {
+    if (ImGui::MenuItem("Add 6x6x6 grid")) addFunction(s, app.edits);
+    ImGui::Separator();
+    const auto& functions = d.project().functions;
+    for (int i = 0; i < int(functions.size()); ++i)
+      if (ImGui::MenuItem(functions[std::size_t(i)].name.c_str(), nullptr, i == s.activeFunction)) {
+        s.activeFunction = i;
+        s.activeOp = -1;
+      }
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("Operation")) {
+    for (NewOpKind kind : kNewOpKinds)
+      if (ImGui::MenuItem(newOpLabel(kind))) addOperation(s, app.edits, kind);
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("Select")) {
+    if (ImGui::MenuItem("All nodes", "Ctrl+A")) selectAll(s);
+    if (ImGui::MenuItem("None", "Esc")) s.selection().clear();
+    if (ImGui::MenuItem("Invert", "Ctrl+I")) invertSelection(s);
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("View")) {
+    if (ImGui::MenuItem("Frame", "F")) app.frameViews();
+    ImGui::Separator();
+    static const char* names[] = {"Top", "Side", "Front", "User"};
+    static const char* keys[] = {"1", "2", "3", "4"};
+    if (ImGui::MenuItem("All four grid views", nullptr, s.maximizedGridView < 0)) s.maximizedGridView = -1;
+    for (int v = 0; v < 4; ++v)
+      if (ImGui::MenuItem(names[v], keys[v], s.maximizedGridView == v)) toggleView(s, v);
+    ImGui::Separator();
+    if (ImGui::BeginMenu("Preview mode")) {
+      // Issue 6 adds the flame display here; the deterministic mesh preview (issue 5) too.
+      if (ImGui::MenuItem("Z-buffer (nearest point)", nullptr, s.previewMode == PreviewMode::ZBuffer))
+        s.previewMode = PreviewMode::ZBuffer;
+      ImGui::EndMenu();
+    }
+    if (ImGui::MenuItem(s.previewPaused ? "Resume preview" : "Pause preview", "Space")) s.previewPaused = !s.previewPaused;
+    ImGui::Separator();
+    if (ImGui::MenuItem("Reset layout")) app.resetLayout();
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("Help")) {
+    if (ImGui::MenuItem("Shortcuts", "F1", s.showHelp)) s.showHelp = !s.showHelp;
+    ImGui::EndMenu();
+  }
+  ImGui::EndMainMenuBar();
+  return height;
+}
+
+void handleShortcuts(AppCommands& app) {
+  ImGuiIO& io = ImGui::GetIO();
+  ModellerState& s = app.state;
+  if (app.files.modalOpen()) return;
+  const bool ctrl = io.KeyCtrl, shift = io.KeyShift;
+  auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
+  // Ctrl shortcuts work everywhere except undo/redo while typing (the field has its own).
+  if (ctrl) {
+    if (pressed(GLFW_KEY_N)) app.files.requestNew();
+    if (pressed(GLFW_KEY_O)) app.files.requestOpenDialog();
+    if (pressed(GLFW_KEY_S)) {
+      if (shift) app.files.saveAsDialog();
+      else app.files.save();
+    }
+    if (pressed(GLFW_KEY_Q)) app.files.requestQuit();
+    if (!io.WantTextInput) {
+      if (pressed(GLFW_KEY_Z)) {
+        if (shift) app.edits.redo();
+        else app.edits.undo();
+      }
+      if (pressed(GLFW_KEY_Y)) app.edits.redo();
+      if (pressed(GLFW_KEY_A)) selectAll(s);
+      if (pressed(GLFW_KEY_I)) invertSelection(s);
+    }
+    return;
+  }
+  if (io.WantTextInput) return;
+  if (pressed(GLFW_KEY_DELETE)) deleteActiveOperation(s, app.edits);
+  if (pressed(GLFW_KEY_F)) app.frameViews();
+  if (pressed(GLFW_KEY_ESCAPE)) s.selection().clear();
+  if (pressed(GLFW_KEY_SPACE)) s.previewPaused = !s.previewPaused;
+  if (pressed(GLFW_KEY_F1)) s.showHelp = !s.showHelp;
+  for (int v = 0; v < 4; ++v)
+    if (pressed(GLFW_KEY_1 + v) || pressed(GLFW_KEY_KP_1 + v)) toggleView(s, v);
+}
+
+}  // namespace gridifs::ui

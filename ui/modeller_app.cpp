@@ -1,0 +1,436 @@
+// The modeller's window and frame loop (issue 4; DESIGN §6 "Fixed frame order": poll → build
+// UI (collect edits) → apply edits → publish renderer snapshot → draw views → ImGui render).
+#include "ui/modeller_app.h"
+
+#include <epoxy/gl.h>
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <numeric>
+#include <vector>
+
+#include "ui/app_commands.h"
+#include "ui/grid_view.h"
+#include "ui/modeller_options.h"
+#include "ui/panels.h"
+#include "ui/preview_view.h"
+#include "ui/project_files.h"
+#include "ui/screenshot.h"
+#include "ui/theme.h"
+#include "ui/view_renderer.h"
+
+namespace gridifs::ui {
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Where each window starts (first run, or View > Reset layout): three columns that tile the
+/// work area without overlap, sized for 1600×1000 but proportional to any size.
+struct Layout {
+  ImVec2 pos[7], size[7];
+  enum { Functions, Operations, Parameters, Grids, Selection, Preview, Ifs };
+  static Layout compute(ImVec2 origin, ImVec2 area) {
+    Layout l;
+    const float left = std::round(area.x * 0.215f), center = std::round(area.x * 0.39f);
+    const float right = area.x - left - center;
+    const float f = std::round(area.y * 0.44f), o = std::round(area.y * 0.22f);
+    const float g = std::round(area.y * 0.66f), p = std::round(area.y * 0.58f);
+    auto set = [&](int i, float x, float y, float w, float h) {
+      l.pos[i] = ImVec2(origin.x + x, origin.y + y);
+      l.size[i] = ImVec2(w, h);
+    };
+    set(Functions, 0, 0, left, f);
+    set(Operations, 0, f, left, o);
+    set(Parameters, 0, f + o, left, area.y - f - o);
+    set(Grids, left, 0, center, g);
+    set(Selection, left, g, center, area.y - g);
+    set(Preview, left + center, 0, right, p);
+    set(Ifs, left + center, p, right, area.y - p);
+    return l;
+  }
+};
+
+class ModellerApp {
+ public:
+  ModellerApp(GLFWwindow* window, ModellerOptions options, float scale)
+      : window_(window),
+        options_(std::move(options)),
+        files_(state_, AppFolders::fromEnvironment(), options_.autosaveSeconds),
+        views_{GridView(GridView::Content::FunctionGrid, ViewAxis::Top, "##top"),
+               GridView(GridView::Content::FunctionGrid, ViewAxis::Side, "##side"),
+               GridView(GridView::Content::FunctionGrid, ViewAxis::Front, "##front"),
+               GridView(GridView::Content::FunctionGrid, ViewAxis::User, "##user")},
+        ifsView_(GridView::Content::Ifs, ViewAxis::User, "##ifs") {
+    state_.uiScale = scale;
+    state_.probe.enabled = !options_.probe.empty();
+    if (options_.renderThreads > 0) state_.renderThreads = options_.renderThreads;
+    iniPath_ = (files_.folders().config / "imgui.ini").string();
+    ImGui::GetIO().IniFilename = iniPath_.c_str();
+    commands_ = std::make_unique<AppCommands>(AppCommands{state_, edits_, files_, [this] { frameViews(); },
+                                                          [this] { resetLayout_ = true; }});
+  }
+
+  ~ModellerApp() {
+    // ImGui saves the layout when its context is destroyed, after this object (and the path
+    // string) are gone: save now and tell ImGui not to.
+    ImGui::SaveIniSettingsToDisk(iniPath_.c_str());
+    ImGui::GetIO().IniFilename = nullptr;
+  }
+  ModellerApp(const ModellerApp&) = delete;
+  ModellerApp& operator=(const ModellerApp&) = delete;
+
+  int run();
+
+ private:
+  void buildUi();
+  void drawGridViews(float framebufferScale);
+  void drawIfsView(float framebufferScale);
+  void frameViews();
+  void writeProbe(double frameMs);
+  float framebufferScale() const;
+
+  GLFWwindow* window_;
+  ModellerOptions options_;
+  ModellerState state_;
+  ProjectFiles files_;
+  EditQueue edits_;
+  std::unique_ptr<ViewRenderer> renderer_;
+  std::array<GridView, 4> views_;
+  GridView ifsView_;
+  PreviewView preview_;
+  std::unique_ptr<AppCommands> commands_;
+  std::string iniPath_, title_;
+  bool resetLayout_ = false;
+  int frame_ = 0;
+  std::vector<double> frameMs_;
+  double phaseMs_[5] = {0, 0, 0, 0, 0};  // UI+edits+publish, grid views, IFS view, preview, ImGui
+};
+
+float ModellerApp::framebufferScale() const {
+  const ImGuiIO& io = ImGui::GetIO();
+  return io.DisplayFramebufferScale.x > 0.0f ? io.DisplayFramebufferScale.x : 1.0f;
+}
+
+void ModellerApp::frameViews() {
+  for (GridView& v : views_)
+    if (v.hovered()) return v.frame(state_, edits_);
+  if (ifsView_.hovered()) return ifsView_.frame(state_, edits_);
+  for (GridView& v : views_) v.frame(state_, edits_);
+  if (ifsView_.axis() != ViewAxis::User) ifsView_.frame(state_, edits_);
+}
+
+void ModellerApp::drawGridViews(float fbScale) {
+  const ImVec2 avail = ImGui::GetContentRegionAvail();
+  const float gap = std::round(3.0f * state_.uiScale);
+  if (state_.maximizedGridView >= 0) {
+    views_[std::size_t(state_.maximizedGridView)].build(state_, edits_, {avail.x, avail.y}, fbScale);
+    return;
+  }
+  const float w = std::floor((avail.x - gap) * 0.5f), h = std::floor((avail.y - gap) * 0.5f);
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  for (int v = 0; v < 4; ++v) {
+    ImGui::SetCursorScreenPos(ImVec2(origin.x + float(v % 2) * (w + gap), origin.y + float(v / 2) * (h + gap)));
+    views_[std::size_t(v)].build(state_, edits_, {w, h}, fbScale);
+    state_.probe.item(std::string("view.") + viewAxisName(views_[std::size_t(v)].axis()));
+  }
+}
+
+void ModellerApp::drawIfsView(float fbScale) {
+  static const char* names[] = {"User (preview camera)", "Top", "Side", "Front"};
+  static const ViewAxis axes[] = {ViewAxis::User, ViewAxis::Top, ViewAxis::Side, ViewAxis::Front};
+  int current = 0;
+  for (int i = 0; i < 4; ++i)
+    if (axes[i] == ifsView_.axis()) current = i;
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 12);
+  if (ImGui::Combo("##ifsaxis", &current, names, 4)) ifsView_.setAxis(axes[current]);
+  if (ImGui::IsItemHovered()) state_.contextHelp = "Which way the IFS view looks; the user view is the preview's camera";
+  ImGui::SameLine();
+  ImGui::TextDisabled("%zu function%s in the common initial grid", state_.document.project().functions.size(),
+                      state_.document.project().functions.size() == 1 ? "" : "s");
+  const ImVec2 avail = ImGui::GetContentRegionAvail();
+  ifsView_.build(state_, edits_, {avail.x, avail.y}, fbScale);
+  state_.probe.item("view.ifs");
+}
+
+void ModellerApp::buildUi() {
+  handleShortcuts(*commands_);
+  const float menuHeight = drawMenuBar(*commands_);
+  const float statusHeight = std::round(ImGui::GetFontSize() + 12.0f * state_.uiScale);
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  const ImVec2 origin(vp->Pos.x, vp->Pos.y + menuHeight);
+  const ImVec2 area(vp->Size.x, vp->Size.y - menuHeight - statusHeight);
+  const Layout layout = Layout::compute(origin, area);
+  const ImGuiCond cond = resetLayout_ ? ImGuiCond_Always : ImGuiCond_FirstUseEver;
+  resetLayout_ = false;
+  const float fbScale = framebufferScale();
+  auto place = [&](int i) {
+    ImGui::SetNextWindowPos(layout.pos[i], cond);
+    ImGui::SetNextWindowSize(layout.size[i], cond);
+  };
+  const ImGuiWindowFlags panel = ImGuiWindowFlags_NoCollapse;
+
+  place(Layout::Functions);
+  if (ImGui::Begin("Functions", nullptr, panel)) drawFunctionsPanel(state_, edits_);
+  ImGui::End();
+  place(Layout::Operations);
+  if (ImGui::Begin("Operations", nullptr, panel)) drawOperationStackPanel(state_, edits_);
+  ImGui::End();
+  place(Layout::Parameters);
+  if (ImGui::Begin("Parameters", nullptr, panel)) drawOperationPanel(state_, edits_);
+  ImGui::End();
+  place(Layout::Grids);
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(4 * state_.uiScale, 4 * state_.uiScale));
+  const std::string gridsTitle = "Grid views: " + state_.function().name + "###Grid views";
+  // View windows skip their background: the view image covers it (fill rate matters on llvmpipe).
+  const ImGuiWindowFlags viewWindow =
+      panel | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse | ImGuiWindowFlags_NoBackground;
+  if (ImGui::Begin(gridsTitle.c_str(), nullptr, viewWindow))
+    drawGridViews(fbScale);
+  ImGui::End();
+  ImGui::PopStyleVar();
+  place(Layout::Selection);
+  if (ImGui::Begin("Selection", nullptr, panel)) drawSelectionPanel(state_, edits_);
+  ImGui::End();
+  place(Layout::Preview);
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(6 * state_.uiScale, 6 * state_.uiScale));
+  if (ImGui::Begin("Preview", nullptr, viewWindow))
+    preview_.build(state_, edits_, fbScale);
+  ImGui::End();
+  place(Layout::Ifs);
+  if (ImGui::Begin("IFS view", nullptr, viewWindow))
+    drawIfsView(fbScale);
+  ImGui::End();
+  ImGui::PopStyleVar();
+
+  drawHelpWindow(state_);
+  files_.draw(edits_);
+  if (!state_.gridError.empty() && state_.statusText != state_.gridError) state_.error(state_.gridError);
+  drawStatusBar(state_, statusHeight);
+}
+
+void ModellerApp::writeProbe(double frameMs) {
+  if (options_.probe.empty()) return;
+  nlohmann::json j;
+  int x = 0, y = 0, w = 0, h = 0;
+  glfwGetWindowPos(window_, &x, &y);
+  glfwGetWindowSize(window_, &w, &h);
+  j["window"] = {{"x", x}, {"y", y}, {"width", w}, {"height", h}};
+  j["title"] = title_;
+  j["frame"] = frame_;
+  j["frame_ms"] = frameMs;
+  j["revision"] = state_.document.revision();
+  j["dirty"] = state_.document.dirty();
+  j["path"] = state_.document.path().string();
+  j["undo"] = state_.document.undoLabel();
+  j["functions"] = state_.document.project().functions.size();
+  j["active_function"] = state_.activeFunction;
+  j["active_op"] = state_.activeOp;
+  j["ops"] = state_.function().ops.size();
+  j["status"] = state_.statusText;
+  j["status_error"] = state_.statusIsError;
+  j["modal"] = files_.modalOpen();
+  const RenderStats& s = state_.previewStats;
+  j["preview"] = {{"samples", s.samples}, {"generation", s.generation}, {"done", s.done}, {"paused", s.paused},
+                  {"restarts", preview_.restarts()}, {"hit_pixels", preview_.image().hitPixels},
+                  {"image_generation", preview_.image().generation}};
+  nlohmann::json rects = nlohmann::json::object();
+  for (const auto& [name, r] : state_.probe.rects) rects[name] = {r.x, r.y, r.z, r.w};
+  j["rects"] = rects;
+  const std::string tmp = options_.probe + ".tmp";
+  {
+    std::ofstream out(tmp);
+    out << j.dump(1);
+  }
+  std::error_code ec;
+  fs::rename(tmp, options_.probe, ec);
+}
+
+int ModellerApp::run() {
+  renderer_ = std::make_unique<ViewRenderer>();
+  files_.checkForRecovery();
+  if (!options_.file.empty()) files_.openAtStartup(options_.file);
+  state_.clampIndices();
+  const bool capture = !options_.screenshot.empty();
+  const auto start = std::chrono::steady_clock::now();
+  int quietFrames = 0;
+  int exitCode = 0;
+  for (;;) {
+    // 1. Poll. Idle windows wait for input (redraw on demand); a filling preview, a drag or
+    //    a capture keeps the loop animating.
+    const bool animate = capture || preview_.busy() || quietFrames < 3 || ImGui::IsAnyMouseDown();
+    if (animate) {
+      glfwPollEvents();
+    } else {
+      const double before = glfwGetTime();
+      glfwWaitEventsTimeout(0.5);
+      if (glfwGetTime() - before < 0.49) quietFrames = 0;
+    }
+    ++quietFrames;
+    if (ImGui::GetIO().MouseDelta.x != 0.0f || ImGui::GetIO().MouseDelta.y != 0.0f) quietFrames = 0;
+    if (glfwWindowShouldClose(window_)) {
+      glfwSetWindowShouldClose(window_, GLFW_FALSE);
+      files_.requestQuit();
+      quietFrames = 0;
+    }
+    const auto frameStart = std::chrono::steady_clock::now();
+    state_.now = std::chrono::duration<double>(frameStart - start).count();
+
+    // 2. Build the UI; widgets collect edits.
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    state_.contextHelp.clear();
+    state_.probe.rects.clear();
+    buildUi();
+    ImGui::Render();
+
+    // 3. Apply the edits to the one Document.
+    const bool hadEdits = !edits_.empty();
+    if (const std::string error = edits_.apply(state_.document); !error.empty()) state_.error(error);
+    state_.clampIndices();
+    if (hadEdits) quietFrames = 0;
+
+    // 4. Publish a new renderer snapshot when the document changed.
+    preview_.publish(state_);
+
+    // 5. Draw the views into their textures.
+    const auto t0 = std::chrono::steady_clock::now();
+    for (GridView& v : views_) v.render(state_, *renderer_);
+    if (options_.stats) glFinish();
+    const auto t1 = std::chrono::steady_clock::now();
+    ifsView_.render(state_, *renderer_);
+    if (options_.stats) glFinish();
+    const auto t2 = std::chrono::steady_clock::now();
+    preview_.render(state_, *renderer_);
+    if (options_.stats) glFinish();
+    const auto t3 = std::chrono::steady_clock::now();
+    if (options_.stats) {
+      auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
+      phaseMs_[0] += ms(frameStart, t0);
+      phaseMs_[1] += ms(t0, t1);
+      phaseMs_[2] += ms(t1, t2);
+      phaseMs_[3] += ms(t2, t3);
+    }
+
+    // 6. ImGui on top.
+    int fbw = 0, fbh = 0;
+    glfwGetFramebufferSize(window_, &fbw, &fbh);
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glViewport(0, 0, fbw, fbh);
+    glClearColor(0.08f, 0.085f, 0.095f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    const auto t4 = std::chrono::steady_clock::now();
+    for (const GridView& v : views_) v.present(fbh);
+    ifsView_.present(fbh);
+    preview_.present(fbh);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    if (options_.stats) {
+      glFinish();
+      phaseMs_[4] += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t4).count();
+    }
+
+    const std::string title = files_.windowTitle();
+    if (title != title_) {
+      title_ = title;
+      glfwSetWindowTitle(window_, title_.c_str());
+    }
+    files_.tick();
+    ++frame_;
+    glFinish();
+    const double frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count();
+    if (frame_ > 5) frameMs_.push_back(frameMs);
+    if (frame_ % 5 == 0) writeProbe(frameMs);
+
+    if (capture && frame_ >= options_.frames) {
+      const bool enoughPoints = state_.previewStats.samples >= options_.waitPoints || state_.previewStats.done ||
+                                state_.now > 60.0;
+      if (enoughPoints) {
+        if (const std::string error = writeFramebuffer(options_.screenshot, fbw, fbh); !error.empty()) {
+          std::cerr << "gridifs: " << error << "\n";
+          exitCode = 1;
+        }
+        break;
+      }
+    }
+    glfwSwapBuffers(window_);
+    if (files_.quitConfirmed()) break;
+  }
+  writeProbe(0.0);
+  files_.shutdown();
+  if (options_.stats && !frameMs_.empty()) {
+    std::vector<double> sorted = frameMs_;
+    std::sort(sorted.begin(), sorted.end());
+    const double mean = std::accumulate(sorted.begin(), sorted.end(), 0.0) / double(sorted.size());
+    std::fprintf(stderr, "gridifs: %zu frames, frame time mean %.2f ms, median %.2f ms, p95 %.2f ms, max %.2f ms\n",
+                 sorted.size(), mean, sorted[sorted.size() / 2], sorted[sorted.size() * 95 / 100], sorted.back());
+    const double n = double(frame_);
+    std::fprintf(stderr, "gridifs: per frame: UI %.2f ms, grid views %.2f ms, IFS view %.2f ms, preview %.2f ms, ImGui %.2f ms\n",
+                 phaseMs_[0] / n, phaseMs_[1] / n, phaseMs_[2] / n, phaseMs_[3] / n, phaseMs_[4] / n);
+  }
+  return exitCode;
+}
+
+}  // namespace
+
+int runModeller(const std::string& file, int argc, char** argv) {
+  ModellerOptions options;
+  options.file = file;
+  if (const auto error = parseModellerOptions(argc, argv, options)) {
+    std::cerr << "gridifs: " << *error << ".\n";
+    return 2;
+  }
+  glfwSetErrorCallback([](int, const char* description) { std::cerr << "gridifs: GLFW: " << description << "\n"; });
+  if (!glfwInit()) {
+    std::cerr << "gridifs: cannot open the modeller window (no display?); use a verb such as 'gridifs render'.\n";
+    return 1;
+  }
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);  // HiDPI: window size follows the content scale
+  GLFWwindow* window = glfwCreateWindow(options.width, options.height, "GridIFS", nullptr, nullptr);
+  if (!window) {
+    std::cerr << "gridifs: cannot create an OpenGL 3.3 window.\n";
+    glfwTerminate();
+    return 1;
+  }
+  glfwMakeContextCurrent(window);
+  glfwSwapInterval(options.screenshot.empty() ? 1 : 0);
+  float xscale = 1.0f, yscale = 1.0f;
+  glfwGetWindowContentScale(window, &xscale, &yscale);
+  const float scale = std::clamp(std::max(xscale, yscale), 1.0f, 4.0f);
+
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  applyTheme(scale);
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init("#version 330 core");
+  int code = 0;
+  try {
+    ModellerApp app(window, options, scale);
+    code = app.run();
+  } catch (const std::exception& e) {
+    std::cerr << "gridifs: the modeller stopped: " << e.what() << "\n";
+    code = 1;
+  }
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+  glfwDestroyWindow(window);
+  glfwTerminate();
+  return code;
+}
+
+}  // namespace gridifs::ui

@@ -1,0 +1,100 @@
+#pragma once
+// Everything the modeller window knows besides the Document: which function and op are
+// active, the artist's current node selection (UI state, not saved, as in InterIFS §4.4:
+// "as long as a subset is active, all following operations are applied only to it"),
+// messages, and window toggles. Owned by the UI thread; panels read it and enqueue edits.
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/chaos_renderer.h"
+#include "core/document.h"
+#include "core/grid.h"
+#include "ui/widgets.h"
+
+namespace gridifs::ui {
+
+/// What the preview shows; later modes (flame display, deterministic mesh) join this list.
+enum class PreviewMode { ZBuffer };
+
+class ModellerState {
+ public:
+  ModellerState();
+
+  Document document;
+  int activeFunction = 0;
+  int activeOp = -1;  // index in the active function's stack, -1 when none
+  /// The artist's node selection for each function (empty: nothing selected).
+  std::vector<Selection> selections;
+  /// The center of transformation placed in a view (Alt+click), used by ops whose center is a point.
+  Vec3 pointCenter{0.0};
+  /// Which center new operations get.
+  Center::Kind newOpCenter = Center::Kind::Grid;
+
+  /// Keeps the indices valid after any document change (undo can remove functions or ops).
+  void clampIndices();
+  const Function& function() const { return document.project().functions.at(std::size_t(activeFunction)); }
+  const Operation* op() const;
+  Selection& selection();
+  /// Per-node membership of the current selection (all zero when nothing is selected).
+  const std::vector<unsigned char>& selectionMask();
+  bool hasSelection();
+
+  /// The active function's grid after its stack, before placement (what the grid views
+  /// show and edit). Re-evaluated only when the function changes; on an evaluation error
+  /// the last good grid is kept and gridError says why.
+  const Grid& localGrid();
+  std::string gridError;
+
+  // Messages for the status bar (errors stay until the next message).
+  void info(const std::string& text);
+  void error(const std::string& text);
+  std::string statusText;
+  bool statusIsError = false;
+  double statusTime = 0.0;
+  /// Context help for the status line (§4.2), set each frame by the hovered widget or view.
+  std::string contextHelp;
+
+  // Windows and modes.
+  bool showHelp = false;
+  bool morphAsDirection = false;
+  SelectionBox boxEntry{{0, 2}, {0, 5}, {0, 5}, SelectionOp::Or};  // the index box being typed  // morph vectors entered as start + direction
+  bool showRenderSettings = true;
+  int maximizedGridView = -1;  // -1: the four views; 0..3: one of them fills the window
+  PreviewMode previewMode = PreviewMode::ZBuffer;
+  bool previewPaused = false;
+  int renderThreads = 1;
+  RenderStats previewStats;
+  std::string previewError;
+  /// Keyboard shortcut requests raised by the menu or keys, consumed by the views.
+  bool frameRequested = false;
+
+  UiProbe probe;
+  /// The calculator's expression fields keep what the artist typed, even when it does not
+  /// parse yet (the op itself only ever holds valid expressions).
+  struct {
+    int function = -1, op = -1;
+    std::array<std::string, 3> text, base;
+  } calculatorEdit;
+  /// Display cache of the active function's contractivity bound (seed 004 §1.1).
+  struct {
+    std::uint64_t revision = 0;
+    int function = -1;
+    double bound = 0.0;
+    bool valid = false;
+  } contractivity;
+  double now = 0.0;  // seconds since start, set each frame
+  float uiScale = 1.0f;
+
+ private:
+  Function cachedFunction_;
+  bool haveCache_ = false;
+  Grid localGrid_;
+  Selection maskSelection_;
+  Index3 maskResolution_{0, 0, 0};
+  bool haveMask_ = false;
+  std::vector<unsigned char> mask_;
+};
+
+}  // namespace gridifs::ui

@@ -1,0 +1,219 @@
+// The active function's operation stack (issue 4 "Operations"; seed 004 §2, §4.3): add each
+// op with the current selection, pick, reorder, mute and delete.
+#include <imgui.h>
+
+#include <cstdio>
+
+#include "core/stack_evaluator.h"
+#include "ui/panels.h"
+#include "ui/widgets.h"
+
+namespace gridifs::ui {
+namespace {
+
+OpParams defaultParams(NewOpKind kind, const ModellerState& state, const Vec3& anchor) {
+  (void)state;
+  switch (kind) {
+    case NewOpKind::Translate: return TranslateOp{Vec3(0.0)};
+    case NewOpKind::Rotate: return RotateOp{Vec3(0.0)};
+    case NewOpKind::Scale: return ScaleOp{Vec3(1.0)};
+    case NewOpKind::Taper: return TaperOp{};
+    case NewOpKind::Twist: return TwistOp{};
+    case NewOpKind::Bend: return BendOp{};
+    case NewOpKind::Magnet: return MagnetOp{anchor, 0.5, 0.0, 2.0};
+    case NewOpKind::Morph: return MorphOp{{MorphPair{anchor, anchor}}, 1.0};
+    case NewOpKind::Calculator: {
+      CalculatorOp c;
+      c.vars[0] = CalculatorVar{0.0, -1.0, 1.0};
+      c.vars[1] = CalculatorVar{0.0, -1.0, 1.0};
+      c.vars[2] = CalculatorVar{0.0, -1.0, 1.0};
+      return c;
+    }
+  }
+  return TranslateOp{};
+}
+
+const char* typeLabel(const Operation& op) {
+  static const char* labels[] = {"Translate", "Rotate", "Scale", "Taper", "Twist",
+                                 "Bend",      "Magnet", "Morph", "Calculator", "Nodes"};
+  return labels[op.params.index()];
+}
+
+std::string summary(const Operation& op) {
+  char text[160] = {};
+  std::visit(
+      [&](const auto& p) {
+        using T = std::decay_t<decltype(p)>;
+        if constexpr (std::is_same_v<T, TranslateOp>) std::snprintf(text, sizeof text, "%.2f %.2f %.2f", p.offset.x, p.offset.y, p.offset.z);
+        else if constexpr (std::is_same_v<T, RotateOp>) std::snprintf(text, sizeof text, "%.0f° %.0f° %.0f°", p.angles.x, p.angles.y, p.angles.z);
+        else if constexpr (std::is_same_v<T, ScaleOp>) std::snprintf(text, sizeof text, "%.2f %.2f %.2f", p.factors.x, p.factors.y, p.factors.z);
+        else if constexpr (std::is_same_v<T, TaperOp> || std::is_same_v<T, TwistOp>)
+          std::snprintf(text, sizeof text, "%s %s k=%.2f", axisName(p.axis), profileName(p.profile), p.k);
+        else if constexpr (std::is_same_v<T, BendOp>) std::snprintf(text, sizeof text, "%s→%s k=%.2f", axisName(p.axis), axisName(p.toward), p.k);
+        else if constexpr (std::is_same_v<T, MagnetOp>) std::snprintf(text, sizeof text, "s=%.2f d=%.2f", p.strength, p.dmax);
+        else if constexpr (std::is_same_v<T, MorphOp>) std::snprintf(text, sizeof text, "%zu pair%s", p.pairs.size(), p.pairs.size() == 1 ? "" : "s");
+        else if constexpr (std::is_same_v<T, CalculatorOp>) std::snprintf(text, sizeof text, "%s", p.x.substr(0, 24).c_str());
+        else if constexpr (std::is_same_v<T, NodesOp>) std::snprintf(text, sizeof text, "%zu move%s", p.moves.size(), p.moves.size() == 1 ? "" : "s");
+      },
+      op.params);
+  std::string s = text;
+  if (!op.selection.empty()) s += "  [sel]";
+  return s;
+}
+
+}  // namespace
+
+const char* newOpLabel(NewOpKind kind) {
+  switch (kind) {
+    case NewOpKind::Translate: return "Translate";
+    case NewOpKind::Rotate: return "Rotate";
+    case NewOpKind::Scale: return "Scale";
+    case NewOpKind::Taper: return "Taper";
+    case NewOpKind::Twist: return "Twist";
+    case NewOpKind::Bend: return "Bend";
+    case NewOpKind::Magnet: return "Magnet";
+    case NewOpKind::Morph: return "Morph";
+    case NewOpKind::Calculator: return "Calculator";
+  }
+  return "";
+}
+
+void addOperation(ModellerState& state, EditQueue& edits, NewOpKind kind) {
+  state.clampIndices();
+  const Function& f = state.function();
+  if (int(f.ops.size()) >= limits::kMaxOpsPerFunction) {
+    state.error("A function has at most " + std::to_string(limits::kMaxOpsPerFunction) + " operations.");
+    return;
+  }
+  Operation op;
+  op.selection = state.selection();  // InterIFS §4.4: the active subset applies to new ops
+  op.center.kind = state.newOpCenter;
+  op.center.point = state.pointCenter;
+  // Magnets and morphs start where the artist is working: the selection's or grid's center.
+  Vec3 anchor = state.pointCenter;
+  if (state.newOpCenter != Center::Kind::Point) {
+    const Grid& grid = state.localGrid();
+    const auto& mask = state.selectionMask();
+    Vec3 sum(0.0);
+    std::size_t n = 0;
+    const bool useMask = state.hasSelection();
+    for (std::size_t i = 0; i < grid.nodeCount(); ++i)
+      if (!useMask || mask[i]) {
+        sum += grid.nodes()[i];
+        ++n;
+      }
+    anchor = n ? sum / double(n) : Vec3(0.0);
+  }
+  op.params = defaultParams(kind, state, anchor);
+  if (kind == NewOpKind::Morph) std::get<MorphOp>(op.params).pairs[0].to = anchor + Vec3(0.0, 0.0, 0.25);
+  const int fi = state.activeFunction;
+  const int at = state.activeOp < 0 ? int(f.ops.size()) : state.activeOp + 1;
+  edits.commit(std::string("Add ") + newOpLabel(kind), [fi, at, op](Project& p) {
+    auto& ops = p.functions[std::size_t(fi)].ops;
+    ops.insert(ops.begin() + at, op);
+  });
+  edits.after([&state, at] { state.activeOp = at; });
+}
+
+void deleteActiveOperation(ModellerState& state, EditQueue& edits) {
+  if (!state.op()) return;
+  const int fi = state.activeFunction, oi = state.activeOp;
+  edits.commit("Delete operation", [fi, oi](Project& p) {
+    auto& ops = p.functions[std::size_t(fi)].ops;
+    ops.erase(ops.begin() + oi);
+  });
+  edits.after([&state, oi] {
+    state.activeOp = oi - 1;
+    state.clampIndices();
+    if (state.activeOp < 0 && !state.function().ops.empty()) state.activeOp = 0;
+  });
+}
+
+void drawOperationStackPanel(ModellerState& state, EditQueue& edits) {
+  state.clampIndices();
+  const Function& f = state.function();
+  const int fi = state.activeFunction;
+  const int count = int(f.ops.size());
+
+  // Toolbar: one button per op kind, wrapping to the panel width.
+  ImGui::TextDisabled("Add to %s%s:", f.name.c_str(), state.hasSelection() ? " (selection)" : "");
+  const float available = ImGui::GetContentRegionAvail().x;
+  float x = 0.0f;
+  for (NewOpKind kind : kNewOpKinds) {
+    const char* label = newOpLabel(kind);
+    const float w = ImGui::CalcTextSize(label).x + ImGui::GetStyle().FramePadding.x * 2;
+    if (x > 0.0f && x + ImGui::GetStyle().ItemSpacing.x + w <= available) ImGui::SameLine();
+    else x = 0.0f;
+    if (ImGui::Button(label)) addOperation(state, edits, kind);
+    state.probe.item(std::string("ops.add.") + label);
+    if (ImGui::IsItemHovered())
+      state.contextHelp = std::string("Add a ") + label + " operation after the active one, applied to the current selection";
+    x += (x > 0.0f ? ImGui::GetStyle().ItemSpacing.x : 0.0f) + w;
+  }
+  ImGui::Separator();
+
+  const float buttons = ImGui::GetFrameHeightWithSpacing() + ImGui::GetStyle().ItemSpacing.y;
+  if (ImGui::BeginChild("stack", ImVec2(0, -buttons), false)) {
+    if (count == 0) ImGui::TextDisabled("No operations: the grid is undistorted.");
+    for (int o = 0; o < count; ++o) {
+      const Operation& op = f.ops[std::size_t(o)];
+      ImGui::PushID(o);
+      bool on = !op.muted;
+      if (ImGui::Checkbox("##on", &on))
+        edits.commit(on ? "Unmute operation" : "Mute operation", [fi, o, on](Project& p) {
+          p.functions[std::size_t(fi)].ops[std::size_t(o)].muted = !on;
+        });
+      contextHelp(state, "Mute: skip this operation when evaluating the stack");
+      ImGui::SameLine();
+      char label[64];
+      std::snprintf(label, sizeof label, "%d  %s", o + 1, typeLabel(op));
+      ImGui::PushStyleColor(ImGuiCol_Text, op.muted ? ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]
+                                                    : ImGui::GetStyle().Colors[ImGuiCol_Text]);
+      if (ImGui::Selectable(label, o == state.activeOp, ImGuiSelectableFlags_AllowItemOverlap))
+        state.activeOp = (o == state.activeOp) ? -1 : o;
+      ImGui::PopStyleColor();
+      state.probe.item("ops.row." + std::to_string(o));
+      ImGui::SameLine(ImGui::GetFontSize() * 9.5f);
+      ImGui::TextDisabled("%s", summary(op).c_str());
+      ImGui::PopID();
+    }
+  }
+  ImGui::EndChild();
+
+  const int active = state.activeOp;
+  ImGui::BeginDisabled(active <= 0);
+  if (ImGui::ArrowButton("##up", ImGuiDir_Up)) {
+    edits.commit("Move operation up", [fi, active](Project& p) {
+      auto& ops = p.functions[std::size_t(fi)].ops;
+      std::swap(ops[std::size_t(active)], ops[std::size_t(active - 1)]);
+    });
+    state.activeOp = active - 1;
+  }
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::BeginDisabled(active < 0 || active + 1 >= count);
+  if (ImGui::ArrowButton("##down", ImGuiDir_Down)) {
+    edits.commit("Move operation down", [fi, active](Project& p) {
+      auto& ops = p.functions[std::size_t(fi)].ops;
+      std::swap(ops[std::size_t(active)], ops[std::size_t(active + 1)]);
+    });
+    state.activeOp = active + 1;
+  }
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::BeginDisabled(active < 0);
+  if (ImGui::Button("Duplicate") && count < limits::kMaxOpsPerFunction) {
+    const Operation copy = f.ops[std::size_t(active)];
+    edits.commit("Duplicate operation", [fi, active, copy](Project& p) {
+      auto& ops = p.functions[std::size_t(fi)].ops;
+      ops.insert(ops.begin() + active + 1, copy);
+    });
+    state.activeOp = active + 1;
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Delete")) deleteActiveOperation(state, edits);
+  contextHelp(state, "Delete the active operation (Delete key)");
+  ImGui::EndDisabled();
+}
+
+}  // namespace gridifs::ui

@@ -1,0 +1,36 @@
+#pragma once
+// The modeller's panels, one per file (DESIGN §6): each draws from the Document (through the
+// ModellerState) and emits edits; none holds geometry logic.
+#include "ui/edit_queue.h"
+#include "ui/modeller_state.h"
+
+namespace gridifs::ui {
+
+/// functions_panel.cpp: the IFS's functions — add, duplicate, delete, reorder, mute, rename,
+/// weight, color, palette index, resolution, placement (seed 004 §4.5).
+void drawFunctionsPanel(ModellerState& state, EditQueue& edits);
+/// operation_stack_panel.cpp: add operations (with the current selection) and reorder, mute,
+/// delete and pick them in the active function's stack.
+void drawOperationStackPanel(ModellerState& state, EditQueue& edits);
+/// operation_panel.cpp: every parameter of the active operation, edited live.
+void drawOperationPanel(ModellerState& state, EditQueue& edits);
+/// selection_panel.cpp: index boxes with or/and/xor/minus, all/none/invert, the center for new ops.
+void drawSelectionPanel(ModellerState& state, EditQueue& edits);
+/// help_window.cpp: the keyboard and mouse shortcuts.
+void drawHelpWindow(ModellerState& state);
+
+/// Operation kinds the artist can add, in menu order (variant alternatives of OpParams).
+enum class NewOpKind { Translate, Rotate, Scale, Taper, Twist, Bend, Magnet, Morph, Calculator };
+inline constexpr NewOpKind kNewOpKinds[] = {NewOpKind::Translate, NewOpKind::Rotate, NewOpKind::Scale,
+                                            NewOpKind::Taper,     NewOpKind::Twist,  NewOpKind::Bend,
+                                            NewOpKind::Magnet,    NewOpKind::Morph,  NewOpKind::Calculator};
+const char* newOpLabel(NewOpKind kind);
+/// Adds an op of `kind` after the active op with the current selection and center
+/// (operation_stack_panel.cpp). Shared by the panel's toolbar and the Operation menu.
+void addOperation(ModellerState& state, EditQueue& edits, NewOpKind kind);
+/// Deletes the active op (Delete key, menu, panel).
+void deleteActiveOperation(ModellerState& state, EditQueue& edits);
+/// Adds a new 6×6×6 function (functions_panel.cpp).
+void addFunction(ModellerState& state, EditQueue& edits);
+
+}  // namespace gridifs::ui

@@ -1,0 +1,76 @@
+#include "ui/preview_renderer.h"
+
+#include "core/compiled_ifs.h"
+
+namespace gridifs::ui {
+
+void PreviewRenderer::publish(const Document& document, int width, int height, int threads) {
+  width = std::max(width, 16);
+  height = std::max(height, 16);
+  if (document.revision() == revision_ && width == width_ && height == height_ && threads == threads_) return;
+  revision_ = document.revision();
+  const Project& project = document.project();
+  const DisplaySettings display = DisplaySettings::fromProject(project);
+  if (!(display.background == display_.background) || display.depthCue != display_.depthCue) {
+    display_ = display;
+    displayChanged_ = true;
+  }
+  // Background and depth cue only change how snapshot() colours the buffers: no restart.
+  Project relevant = project;
+  relevant.render.background = Vec3(0.0);
+  relevant.render.depth_cue = 0.0;
+  if (havePublished_ && relevant == published_ && width == width_ && height == height_ && threads == threads_)
+    return;
+  try {
+    auto ifs = compileIfs(document);
+    RenderJob job = RenderJob::fromProject(project, threads);
+    job.width = width;
+    job.height = height;
+    renderer_.restart(std::move(ifs), job);
+    if (paused_) renderer_.pause();
+    ++restarts_;
+    running_ = true;
+    error_.clear();
+  } catch (const ModelError& e) {
+    // Keep showing the last image; the artist sees why in the status bar.
+    published_ = relevant;
+    havePublished_ = true;
+    width_ = width;
+    height_ = height;
+    threads_ = threads;
+    error_ = e.what();
+    return;
+  }
+  published_ = std::move(relevant);
+  havePublished_ = true;
+  width_ = width;
+  height_ = height;
+  threads_ = threads;
+}
+
+bool PreviewRenderer::fetch(RenderImage& image) {
+  if (!running_) return false;
+  const RenderStats s = renderer_.stats();
+  if (!displayChanged_ && s.generation == lastGeneration_ && s.samples == lastSamples_) return false;
+  renderer_.snapshot(image, display_);
+  displayChanged_ = false;
+  lastGeneration_ = s.generation;
+  lastSamples_ = s.samples;
+  return true;
+}
+
+void PreviewRenderer::setPaused(bool paused) {
+  if (paused == paused_) return;
+  paused_ = paused;
+  if (!running_) return;
+  if (paused) renderer_.pause();
+  else renderer_.resume();
+}
+
+bool PreviewRenderer::busy() const {
+  if (!running_ || paused_) return false;
+  const RenderStats s = renderer_.stats();
+  return !s.done || s.generation != lastGeneration_ || s.samples != lastSamples_;
+}
+
+}  // namespace gridifs::ui

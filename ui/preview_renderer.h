@@ -1,0 +1,48 @@
+#pragma once
+// The bridge between the Document and the background ChaosRenderer (DESIGN §1): when the
+// document's revision or the preview size changes, compile a new immutable snapshot and
+// restart the workers (a new generation); each frame, merge what the workers have so far.
+// Never waits on workers: restart() only publishes, snapshot() reads while they run.
+#include <cstdint>
+#include <string>
+
+#include "core/chaos_renderer.h"
+#include "core/document.h"
+
+namespace gridifs::ui {
+
+class PreviewRenderer {
+ public:
+  /// Publishes a new snapshot when the project (or size, or thread count) changed since the
+  /// last call. When the project cannot be compiled the previous image stays and error() says why.
+  void publish(const Document& document, int width, int height, int threads);
+  /// Merges the current buffers into `image` when new points arrived; returns true when
+  /// `image` changed.
+  bool fetch(RenderImage& image);
+  void setPaused(bool paused);
+  /// The next publish() restarts even when nothing changed.
+  void forceRestart() { havePublished_ = false; revision_ = 0; }
+  RenderStats stats() const { return renderer_.stats(); }
+  std::uint64_t restarts() const { return restarts_; }
+  /// Why the current project cannot be rendered (empty when it can).
+  const std::string& error() const { return error_; }
+  /// Whether the workers still have work (the UI keeps animating while they do).
+  bool busy() const;
+
+ private:
+  ChaosRenderer renderer_;
+  std::uint64_t revision_ = 0;
+  Project published_;  // what the workers render, display-only settings excluded
+  bool havePublished_ = false;
+  int width_ = 0, height_ = 0, threads_ = 0;
+  DisplaySettings display_;
+  bool displayChanged_ = true;
+  std::int64_t lastSamples_ = -1;
+  std::uint64_t lastGeneration_ = 0;
+  std::uint64_t restarts_ = 0;
+  bool paused_ = false;
+  bool running_ = false;
+  std::string error_;
+};
+
+}  // namespace gridifs::ui

@@ -1,0 +1,162 @@
+#include "ui/preview_view.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+
+#include "core/view_camera.h"
+#include "ui/widgets.h"
+
+namespace gridifs::ui {
+
+void PreviewView::build(ModellerState& state, EditQueue& edits, float framebufferScale) {
+  framebufferScale_ = framebufferScale;
+  visible_ = false;
+  const Project& project = state.document.project();
+
+  // Toolbar.
+  if (ImGui::Button(state.previewPaused ? "Resume" : "Pause", ImVec2(ImGui::GetFontSize() * 4.5f, 0)))
+    state.previewPaused = !state.previewPaused;
+  state.probe.item("preview.pause");
+  contextHelp(state, "Pause or resume the background renderer (Space)");
+  ImGui::SameLine();
+  if (ImGui::Button("Restart")) renderer_.forceRestart();
+  contextHelp(state, "Start the chaos game again from scratch");
+  ImGui::SameLine();
+  static const std::int64_t budgets[] = {1'000'000, 4'000'000, 20'000'000, 100'000'000, 1'000'000'000};
+  static const char* budgetNames[] = {"1M points", "4M points", "20M points", "100M points", "1G points"};
+  int current = -1;
+  for (int i = 0; i < 5; ++i)
+    if (budgets[i] == project.render.samples) current = i;
+  char preview[32];
+  std::snprintf(preview, sizeof preview, "%.3gM points", double(project.render.samples) / 1e6);
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.5f);
+  if (ImGui::BeginCombo("##budget", current >= 0 ? budgetNames[current] : preview)) {
+    for (int i = 0; i < 5; ++i)
+      if (ImGui::Selectable(budgetNames[i], i == current)) {
+        const std::int64_t n = budgets[i];
+        edits.commit("Sample budget", [n](Project& p) { p.render.samples = n; });
+      }
+    ImGui::EndCombo();
+  }
+  contextHelp(state, "Sample budget: how many chaos-game points the preview renders before it stops");
+  ImGui::SameLine();
+  double cue = project.render.depth_cue;
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.0f);
+  bool changed = sliderDouble("##cue", cue, 0.0, 1.0, "depth cue %.2f");
+  gestureItem(edits, "Depth cue", changed, [cue](Project& p) { p.render.depth_cue = cue; });
+  contextHelp(state, "Depth cueing (seed 004 §3.1): 0 keeps colors, 1 fades the farthest points to black");
+  ImGui::SameLine();
+  float bg[3] = {float(project.render.background.x), float(project.render.background.y), float(project.render.background.z)};
+  changed = ImGui::ColorEdit3("Background", bg, ImGuiColorEditFlags_NoInputs);
+  gestureItem(edits, "Background", changed, [bg](Project& p) { p.render.background = Vec3(bg[0], bg[1], bg[2]); });
+  contextHelp(state, "Background color of the preview and of renders");
+
+  // Progress.
+  const RenderStats& s = state.previewStats;
+  const float progress = s.budget > 0 ? float(std::min(1.0, s.progress())) : 0.0f;
+  ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(0, 0));
+  ImGui::ProgressBar(progress, ImVec2(-1, ImGui::GetFontSize() * 0.3f), "");
+  ImGui::PopStyleVar();
+
+  // Image.
+  const ImVec2 avail = ImGui::GetContentRegionAvail();
+  size_ = glm::dvec2(std::max(avail.x, 16.0f), std::max(avail.y, 16.0f));
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  screenOrigin_ = glm::dvec2(origin.x, origin.y);
+  visible_ = true;
+  ImGui::InvisibleButton("##previewinput", ImVec2(float(size_.x), float(size_.y)),
+                         ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight | ImGuiButtonFlags_MouseButtonMiddle);
+  state.probe.item("preview.image");
+  const bool hovered = ImGui::IsItemHovered();
+  if (!state.previewError.empty())
+    ImGui::GetWindowDrawList()->AddText(ImVec2(origin.x + 8, origin.y + 8), IM_COL32(255, 120, 100, 255),
+                                        state.previewError.c_str());
+
+  ImGuiIO& io = ImGui::GetIO();
+  if (hovered) state.contextHelp = "Drag: orbit the preview camera · middle/Shift+drag: pan · wheel: zoom";
+  if (wheelGestureUntil_ > 0.0 && state.now > wheelGestureUntil_) {
+    edits.end();
+    wheelGestureUntil_ = -1.0;
+  }
+  if (hovered && io.MouseWheel != 0.0f && drag_ == 0) {
+    if (wheelGestureUntil_ < 0.0) edits.begin("Zoom preview camera");
+    const double distance = std::clamp(project.camera.distance * std::pow(0.87, double(io.MouseWheel)), 0.05, 500.0);
+    edits.update([distance](Project& p) { p.camera.distance = distance; });
+    wheelGestureUntil_ = state.now + 0.6;
+  }
+  const glm::dvec2 mouse(io.MousePos.x - origin.x, io.MousePos.y - origin.y);
+  if (drag_ == 0 && hovered) {
+    for (int b = 0; b < 3; ++b)
+      if (ImGui::IsMouseClicked(b)) {
+        if (wheelGestureUntil_ > 0.0) {
+          edits.end();
+          wheelGestureUntil_ = -1.0;
+        }
+        dragButton_ = b;
+        drag_ = (b == 2 || io.KeyShift) ? 2 : 1;
+        dragStart_ = mouse;
+        dragMoved_ = false;
+        dragCamera_ = project.camera;
+        break;
+      }
+  }
+  if (drag_ != 0) {
+    const glm::dvec2 delta = mouse - dragStart_;
+    if (ImGui::IsMouseDown(dragButton_)) {
+      if (!dragMoved_ && glm::length(delta) > 3.0) {
+        dragMoved_ = true;
+        edits.begin(drag_ == 1 ? "Orbit preview camera" : "Pan preview camera");
+      }
+      if (dragMoved_) {
+        Camera cam = dragCamera_;
+        if (drag_ == 1) {
+          cam.yaw = dragCamera_.yaw - delta.x * 0.4;
+          cam.pitch = std::clamp(dragCamera_.pitch + delta.y * 0.4, -89.0, 89.0);
+        } else {
+          const ViewCamera vc{ViewAxis::User, dragCamera_};
+          cam.target = dragCamera_.target - vc.dragDelta(delta.x, delta.y, dragCamera_.target, size_.y);
+        }
+        edits.update([cam](Project& p) { p.camera = cam; });
+      }
+    } else {
+      if (dragMoved_) edits.end();
+      drag_ = 0;
+    }
+  }
+}
+
+void PreviewView::publish(ModellerState& state) {
+  renderer_.setPaused(state.previewPaused);
+  const int w = int(std::lround(size_.x * framebufferScale_)), h = int(std::lround(size_.y * framebufferScale_));
+  renderer_.publish(state.document, w, h, state.renderThreads);
+  state.previewError = renderer_.error().empty() ? std::string() : "Preview stopped: " + renderer_.error();
+  state.previewStats = renderer_.stats();
+}
+
+void PreviewView::render(ModellerState& state, ViewRenderer& renderer) {
+  if (renderer_.fetch(image_) && image_.width > 0) {
+    texture_.upload(image_.width, image_.height, image_.rgba.data());
+    needsDraw_ = true;
+  }
+  const int w = int(std::lround(size_.x * framebufferScale_)), h = int(std::lround(size_.y * framebufferScale_));
+  const Vec3 bg = state.document.project().render.background;
+  if (w != target_.width() || h != target_.height() || !(bg == drawnBackground_)) needsDraw_ = true;
+  if (!needsDraw_ || !visible_) return;
+  target_.resize(w, h);
+  renderer.drawImage(target_, texture_.id(), texture_.width(), texture_.height(), glm::vec3(bg));
+  drawnBackground_ = bg;
+  needsDraw_ = false;
+}
+
+void PreviewView::present(int framebufferHeight) const {
+  if (!visible_) return;
+  const int x = int(std::lround(screenOrigin_.x * framebufferScale_));
+  const int top = int(std::lround(screenOrigin_.y * framebufferScale_));
+  target_.blitTo(x, framebufferHeight - top - target_.height());
+}
+
+}  // namespace gridifs::ui

@@ -1,0 +1,48 @@
+#pragma once
+// The preview window (issue 4 "Preview"; seed 004 §4.2 "the rendered result"): the renderer's
+// z-buffer image, streamed while it fills, orbiting with the IFS user view; pause/resume,
+// sample budget, depth cueing and background.
+#include <glm/vec2.hpp>
+
+#include "ui/edit_queue.h"
+#include "ui/gl_resources.h"
+#include "ui/modeller_state.h"
+#include "ui/preview_renderer.h"
+#include "ui/view_renderer.h"
+
+namespace gridifs::ui {
+
+class PreviewView {
+ public:
+  /// The window's contents: toolbar and image; mouse orbits/pans/zooms the project camera.
+  void build(ModellerState& state, EditQueue& edits, float framebufferScale);
+  /// After the edits: hands a new snapshot to the workers when the project changed.
+  void publish(ModellerState& state);
+  /// Merges the workers' buffers and draws them into the view's texture.
+  void render(ModellerState& state, ViewRenderer& renderer);
+  /// Copies the preview into the window's framebuffer (see GridView::present).
+  void present(int framebufferHeight) const;
+  bool busy() const { return renderer_.busy(); }
+  bool dragging() const { return drag_ != 0; }
+  const RenderImage& image() const { return image_; }
+  std::uint64_t restarts() const { return renderer_.restarts(); }
+
+ private:
+  PreviewRenderer renderer_;
+  RenderImage image_;
+  StreamTexture texture_;
+  RenderTarget target_;
+  glm::dvec2 size_{64.0, 64.0};
+  glm::dvec2 screenOrigin_{0.0};
+  bool visible_ = false, needsDraw_ = true;
+  Vec3 drawnBackground_{-1.0};
+  float framebufferScale_ = 1.0f;
+  int drag_ = 0;  // 0 none, 1 orbit, 2 pan
+  int dragButton_ = 0;
+  bool dragMoved_ = false;
+  glm::dvec2 dragStart_{0.0};
+  Camera dragCamera_;
+  double wheelGestureUntil_ = -1.0;
+};
+
+}  // namespace gridifs::ui

@@ -1,0 +1,62 @@
+// The status line (seed 004 §4.2: "a status line, which contains context dependent
+// information"): points rendered, points/s, function count, the hovered control's help, and
+// the last message.
+#include <imgui.h>
+
+#include <cstdio>
+
+#include "ui/app_commands.h"
+
+namespace gridifs::ui {
+namespace {
+
+std::string humanCount(double n) {
+  char text[32];
+  if (n >= 1e9) std::snprintf(text, sizeof text, "%.2fG", n / 1e9);
+  else if (n >= 1e6) std::snprintf(text, sizeof text, "%.2fM", n / 1e6);
+  else if (n >= 1e3) std::snprintf(text, sizeof text, "%.1fk", n / 1e3);
+  else std::snprintf(text, sizeof text, "%.0f", n);
+  return text;
+}
+
+}  // namespace
+
+void drawStatusBar(ModellerState& state, float height) {
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos(ImVec2(vp->Pos.x, vp->Pos.y + vp->Size.y - height));
+  ImGui::SetNextWindowSize(ImVec2(vp->Size.x, height));
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowRounding, 0.0f);
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(ImGui::GetFontSize() * 0.6f, (height - ImGui::GetFontSize()) * 0.5f));
+  ImGui::PushStyleColor(ImGuiCol_WindowBg, ImVec4(0.075f, 0.08f, 0.09f, 1.0f));
+  ImGui::Begin("##status", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoBringToFrontOnFocus |
+                   ImGuiWindowFlags_NoScrollWithMouse);
+  const RenderStats& s = state.previewStats;
+  const auto& functions = state.document.project().functions;
+  int active = 0;
+  for (const Function& f : functions) active += f.muted ? 0 : 1;
+  const char* phase = s.paused ? "paused" : s.done ? "done" : "rendering";
+  ImGui::TextColored(s.done ? ImVec4(0.55f, 0.8f, 0.55f, 1.0f) : ImVec4(0.95f, 0.75f, 0.35f, 1.0f), "%s", phase);
+  ImGui::SameLine();
+  ImGui::Text("%s points  ·  %s pts/s  ·  %d function%s", humanCount(double(s.samples)).c_str(),
+              humanCount(s.pointsPerSecond).c_str(), active, active == 1 ? "" : "s");
+  ImGui::SameLine();
+  ImGui::TextDisabled("  |  ");
+  ImGui::SameLine();
+  const bool recentMessage = !state.statusText.empty() && (state.statusIsError || state.now - state.statusTime < 6.0);
+  if (recentMessage && (state.contextHelp.empty() || state.statusIsError)) {
+    ImGui::TextColored(state.statusIsError ? ImVec4(1.0f, 0.45f, 0.35f, 1.0f) : ImVec4(0.6f, 0.85f, 1.0f, 1.0f), "%s",
+                       state.statusText.c_str());
+  } else if (!state.contextHelp.empty()) {
+    ImGui::TextDisabled("%s", state.contextHelp.c_str());
+  } else {
+    ImGui::TextDisabled("F1: shortcuts");
+  }
+  ImGui::End();
+  ImGui::PopStyleColor();
+  ImGui::PopStyleVar(3);
+}
+
+}  // namespace gridifs::ui
