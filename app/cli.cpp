@@ -109,7 +109,16 @@ int run(int argc, char** argv) {
       }
     }
     std::string file;
-    if (argc >= 2 && argv[1][0] != '-') file = argv[1];
+    if (argc >= 2 && argv[1][0] != '-') {
+      file = argv[1];
+      // A bare word that is not a file is a mistyped or missing verb, not a project to open.
+      std::error_code ec;
+      if (file.find('.') == std::string::npos && file.find('/') == std::string::npos &&
+          !std::filesystem::exists(file, ec)) {
+        std::cerr << "gridifs: unknown command \"" << file << "\" (see 'gridifs --help').\n";
+        return kBadInput;
+      }
+    }
     return openModeller(file, argc, argv);
   } catch (const CliError& e) {
     std::cerr << "gridifs: " << oneSentence(e.what()) << "\n";
