@@ -41,7 +41,8 @@ class DensityEstimator {
   int kernelIndex(double hits) const;
   /// Radius h of kernel `index` in buckets (taps satisfy |d| ≤ h).
   double kernelWidth(int index) const { return widths_[std::size_t(index)]; }
-  /// Non-zero taps of kernel `index`; their weights sum to 1.
+  /// Non-zero taps of kernel `index` (|dx|, |dy| <= ceil(width) - 1, as flam3 applies them);
+  /// their weights sum to at most 1 (exactly 1 for the wide kernels, ~0.96 for width 1).
   const std::vector<Tap>& taps(int index) const { return taps_[std::size_t(index)]; }
   /// Hits counted for the bucket at (x, y): the (2⌊ss/2⌋+1)² neighbourhood, scaled by
   /// (ss/(ss+1))² for even ss so that the count does not depend on the supersampling.

@@ -2,7 +2,9 @@
 // density estimation whose kernel shrinks as density grows (issue 6).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <numeric>
 
 #include "core/density_filter.h"
@@ -64,15 +66,24 @@ TEST(FlameFilter, DensityEstimatorKernelsShrinkAsDensityGrows) {
       EXPECT_LE(de.kernelWidth(k), previous);
       previous = de.kernelWidth(k);
       double sum = 0;
+      const int reach = int(std::ceil(de.kernelWidth(k))) - 1;
       for (const auto& t : de.taps(k)) {
         sum += t.weight;
         EXPECT_LE(std::hypot(t.dx, t.dy), de.kernelWidth(k) + 1e-9);
+        EXPECT_LE(std::max(std::abs(t.dx), std::abs(t.dy)), reach);
       }
-      EXPECT_NEAR(sum, 1.0, 1e-5);
+      // flam3 normalises over |d| <= h but applies offsets up to ceil(h) - 1 only.
+      EXPECT_LE(sum, 1.0 + 1e-5);
+      EXPECT_GT(sum, 0.95);
+      if (de.kernelWidth(k) >= 3.0) {
+        EXPECT_NEAR(sum, 1.0, 2e-3);
+      }
     }
-    // Very dense buckets get the narrowest kernel (minimum 0 → width 1: the bucket and its 4 neighbours).
+    // Very dense buckets get the narrowest kernel (minimum 0 → width 1): the bucket alone.
     EXPECT_EQ(de.kernelIndex(1e9), de.kernelCount() - 1);
     EXPECT_DOUBLE_EQ(de.kernelWidth(de.kernelCount() - 1), 1.0);
+    ASSERT_EQ(de.taps(de.kernelCount() - 1).size(), 1u);
+    EXPECT_NEAR(de.taps(de.kernelCount() - 1)[0].weight, 1.0 / (1.0 + 4.0 * std::exp(-4.5)), 1e-6);
   }
   const DensityEstimator withMinimum(9.0, 2.0, 0.4, 1);
   EXPECT_DOUBLE_EQ(withMinimum.kernelWidth(withMinimum.kernelIndex(1e9)), 3.0);
@@ -96,15 +107,15 @@ TEST(FlameFilter, DensityEstimationSmoothsSparseBucketsAndKeepsDenseOnesSharp) {
       for (int x = x0; x < x1; ++x) t += b.at(x, y)[3];
     return t;
   };
-  // Energy is conserved by the estimator (kernels sum to 1, far from the edges).
-  EXPECT_NEAR(total(est, 0, 32), total(plain, 0, 32), 1e-4 * total(plain, 0, 32));
-  EXPECT_NEAR(total(est, 32, 64), total(plain, 32, 64), 1e-4 * total(plain, 32, 64));
+  // Energy is conserved by the wide kernels, and kept within flam3's ~4% by the narrowest one.
+  EXPECT_NEAR(total(est, 0, 32), total(plain, 0, 32), 2e-3 * total(plain, 0, 32));
+  EXPECT_NEAR(total(est, 32, 64), total(plain, 32, 64), 0.05 * total(plain, 32, 64));
   // The lonely sample is spread wide: its centre keeps a small fraction, a pixel 6 away gets some.
   EXPECT_LT(est.at(16, 32)[3], 0.05 * plain.at(16, 32)[3]);
   EXPECT_GT(est.at(22, 32)[3], 0.0f);
-  // The dense bucket stays sharp: most of it stays in place, nothing reaches 3 pixels away.
-  EXPECT_GT(est.at(48, 32)[3], 0.5 * plain.at(48, 32)[3]);
-  EXPECT_EQ(est.at(51, 32)[3], 0.0f);
+  // The dense bucket stays sharp: it stays in place, nothing reaches its neighbours.
+  EXPECT_GT(est.at(48, 32)[3], 0.9 * plain.at(48, 32)[3]);
+  EXPECT_EQ(est.at(49, 32)[3], 0.0f);
   // Colors keep their ratio to alpha.
   EXPECT_NEAR(est.at(48, 32)[0], est.at(48, 32)[3], 1e-4);
 }

@@ -17,9 +17,15 @@ import json
 import math
 
 SIZE = 160          # pixels (square)
+# The view centre is offset by a fraction of a pixel: with a dyadic view the attractors' edges
+# (y = 0.6875, ...) fall exactly on pixel boundaries, where float (GridIFS) and double (flam3)
+# rounding put a few samples on different sides, and the density estimator then blurs them.
+CENTER = (0.0123, 0.0071)
 QUALITY = 200       # samples per output pixel -> samples = QUALITY * SIZE^2
 PALETTE = 15        # flam3 palette number (GridIFS "flam3:15")
-SETTINGS = dict(brightness=4.0, gamma=4.0, gamma_threshold=0.01, vibrancy=1.0, highlight_power=1.0,
+# brightness 1 and gamma 2 (instead of flam3's 4 and 4) keep most of the attractor below alpha
+# saturation (alpha = min(1, density^(1/gamma))), so the compared alpha still measures density.
+SETTINGS = dict(brightness=1.0, gamma=2.0, gamma_threshold=0.01, vibrancy=1.0, highlight_power=1.0,
                 supersample=1, estimator_radius=9.0, estimator_minimum=0.0, estimator_curve=0.4,
                 filter_radius=0.5)
 
@@ -64,7 +70,7 @@ def gridifs_project(name, maps):
     flame = dict(SETTINGS)
     flame["palette"] = "flam3:%d" % PALETTE
     return {"format": "gridifs", "version": 1,
-            "camera": {"yaw": -90, "pitch": 90, "distance": 2.0, "target": [0, 0, 0],
+            "camera": {"yaw": -90, "pitch": 90, "distance": 2.0, "target": [CENTER[0], CENTER[1], 0],
                        "fov": 2 * math.degrees(math.atan(0.5)), "ortho": True},
             "render": {"width": SIZE, "height": SIZE, "samples": QUALITY * SIZE * SIZE, "seed": 1, "skip": 20,
                        "background": [0, 0, 0], "depth_cue": 0.0, "mode": "flame", "flame": flame},
@@ -72,11 +78,11 @@ def gridifs_project(name, maps):
 
 def flam3_genome(name, maps):
     s = SETTINGS
-    lines = ['<flame name="%s" size="%d %d" center="0 0" scale="%g" zoom="0" oversample="%d" filter="%g" '
+    lines = ['<flame name="%s" size="%d %d" center="%g %g" scale="%g" zoom="0" oversample="%d" filter="%g" '
              'filter_shape="gaussian" quality="%d" background="0 0 0" brightness="%g" gamma="%g" '
              'gamma_threshold="%g" vibrancy="%g" highlight_power="%g" estimator_radius="%g" '
              'estimator_minimum="%g" estimator_curve="%g" palette="%d" palette_mode="linear" hue="0">'
-             % (name, SIZE, SIZE, SIZE / 2.0, s["supersample"], s["filter_radius"], QUALITY, s["brightness"],
+             % (name, SIZE, SIZE, CENTER[0], -CENTER[1], SIZE / 2.0, s["supersample"], s["filter_radius"], QUALITY, s["brightness"],
                 s["gamma"], s["gamma_threshold"], s["vibrancy"], s["highlight_power"], s["estimator_radius"],
                 s["estimator_minimum"], s["estimator_curve"], PALETTE)]
     for w, col, A, t in maps:
