@@ -91,6 +91,12 @@ glm::vec4 lineColor(const Vec3& functionColor, float alpha) {
   return {c, alpha};
 }
 
+/// Grid views draw lines nearly neutral so that selected (orange) nodes stand out.
+glm::vec4 neutralLineColor(const Vec3& functionColor) {
+  const glm::vec3 c = glm::mix(glm::vec3(functionColor), glm::vec3(0.62f, 0.66f, 0.74f), 0.72f);
+  return {c, 0.9f};
+}
+
 Index3 nodeIndex(std::size_t n, const Index3& r) {
   const int i = int(n % std::size_t(r[0]));
   const int j = int((n / std::size_t(r[0])) % std::size_t(r[1]));
@@ -439,6 +445,21 @@ void GridView::endDrag(ModellerState& state, EditQueue& edits, dvec2 mouse) {
   if (projectGesture && dragMoved_) edits.end();
 }
 
+std::vector<dvec2> GridView::screenNodes(ModellerState& state) {
+  std::vector<dvec2> out;
+  if (!visible_) return out;
+  std::vector<Vec3> nodes;
+  std::vector<int> owner;
+  pickableNodes(state, nodes, owner);
+  const glm::dmat4 vp = camera(state).viewProjection(size_.x, size_.y);
+  for (const Vec3& p : nodes) {
+    dvec2 px(-1.0);
+    if (projectToPixel(vp, size_.x, size_.y, p, px)) px += screenOrigin_;
+    out.push_back(px);
+  }
+  return out;
+}
+
 void GridView::frame(ModellerState& state, EditQueue& edits) {
   Vec3 lo(-1.0), hi(1.0);
   std::vector<Vec3> nodes;
@@ -471,7 +492,7 @@ void GridView::buildFunctionScene(ModellerState& state) {
   const auto& mask = state.selectionMask();
   appendCube(scene_.lines, {0.5f, 0.52f, 0.58f, 0.35f});
   appendAxes(scene_.lines);
-  appendGridLines(grid, lineColor(fn.color, 0.9f), scene_.lines);
+  appendGridLines(grid, neutralLineColor(fn.color), scene_.lines);
   const bool many = grid.nodeCount() > 30000;
   const float nodeSize = grid.nodeCount() > 2000 ? 4.0f : 6.5f;
   for (std::size_t n = 0; n < grid.nodeCount(); ++n) {
@@ -539,7 +560,16 @@ void GridView::render(ModellerState& state, ViewRenderer& renderer) {
   if (!visible_) return;
   target_.resize(int(std::lround(size_.x * framebufferScale_)), int(std::lround(size_.y * framebufferScale_)));
   if (!framedOnce_ && !usesProjectCamera()) {
-    camera_.frame(Vec3(-1.0), Vec3(1.0), size_.x, size_.y);
+    // Start with the common initial grid and everything the view shows in the picture.
+    std::vector<Vec3> nodes;
+    std::vector<int> owner;
+    pickableNodes(state, nodes, owner);
+    Vec3 lo(-1.0), hi(1.0);
+    for (const Vec3& p : nodes) {
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+    }
+    camera_.frame(lo, hi, size_.x, size_.y);
     framedOnce_ = true;
   }
   const ViewCamera cam = camera(state);

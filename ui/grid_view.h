@@ -32,6 +32,9 @@ class GridView {
   /// Fits the content into the view (F).
   void frame(ModellerState& state, EditQueue& edits);
 
+  /// Window coordinates of the pickable nodes (for the test probe); empty when hidden.
+  std::vector<glm::dvec2> screenNodes(ModellerState& state);
+
   bool hovered() const { return hovered_; }
   ViewAxis axis() const { return camera_.axis; }
   void setAxis(ViewAxis axis);

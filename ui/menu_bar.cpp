@@ -107,12 +107,11 @@ float drawMenuBar(AppCommands& app) {
   return height;
 }
 
-void handleShortcuts(AppCommands& app) {
-  ImGuiIO& io = ImGui::GetIO();
+namespace {
+
+template <class Pressed>
+void handleKey(AppCommands& app, const ImGuiIO& io, bool ctrl, bool shift, Pressed pressed) {
   ModellerState& s = app.state;
-  if (app.files.modalOpen()) return;
-  const bool ctrl = io.KeyCtrl, shift = io.KeyShift;
-  auto pressed = [](int key) { return ImGui::IsKeyPressed(key, false); };
   // Ctrl shortcuts work everywhere except undo/redo while typing (the field has its own).
   if (ctrl) {
     if (pressed(GLFW_KEY_N)) app.files.requestNew();
@@ -141,6 +140,20 @@ void handleShortcuts(AppCommands& app) {
   if (pressed(GLFW_KEY_F1)) s.showHelp = !s.showHelp;
   for (int v = 0; v < 4; ++v)
     if (pressed(GLFW_KEY_1 + v) || pressed(GLFW_KEY_KP_1 + v)) toggleView(s, v);
+}
+
+}  // namespace
+
+void handleShortcuts(AppCommands& app) {
+  const ImGuiIO& io = ImGui::GetIO();
+  ModellerState& s = app.state;
+  const auto presses = std::move(s.keyPresses);
+  s.keyPresses.clear();
+  if (app.files.modalOpen()) return;
+  for (const ModellerState::KeyPress& press : presses) {
+    const bool ctrl = press.mods & GLFW_MOD_CONTROL, shift = press.mods & GLFW_MOD_SHIFT;
+    handleKey(app, io, ctrl, shift, [&](int key) { return press.key == key; });
+  }
 }
 
 }  // namespace gridifs::ui

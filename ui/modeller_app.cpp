@@ -44,7 +44,7 @@ struct Layout {
     Layout l;
     const float left = std::round(area.x * 0.215f), center = std::round(area.x * 0.39f);
     const float right = area.x - left - center;
-    const float f = std::round(area.y * 0.44f), o = std::round(area.y * 0.22f);
+    const float f = std::round(area.y * 0.41f), o = std::round(area.y * 0.25f);
     const float g = std::round(area.y * 0.66f), p = std::round(area.y * 0.58f);
     auto set = [&](int i, float x, float y, float w, float h) {
       l.pos[i] = ImVec2(origin.x + x, origin.y + y);
@@ -247,6 +247,10 @@ void ModellerApp::writeProbe(double frameMs) {
   nlohmann::json rects = nlohmann::json::object();
   for (const auto& [name, r] : state_.probe.rects) rects[name] = {r.x, r.y, r.z, r.w};
   j["rects"] = rects;
+  // Node positions in the Top view (window coordinates), so a test can press on a real node.
+  nlohmann::json nodes = nlohmann::json::array();
+  for (const glm::dvec2& p : views_[0].screenNodes(state_)) nodes.push_back({p.x, p.y});
+  j["nodes_top"] = nodes;
   const std::string tmp = options_.probe + ".tmp";
   {
     std::ofstream out(tmp);
@@ -258,6 +262,8 @@ void ModellerApp::writeProbe(double frameMs) {
 
 int ModellerApp::run() {
   renderer_ = std::make_unique<ViewRenderer>();
+  // Installed before ImGui's callbacks are chained to it (see runModeller): record presses.
+  glfwSetWindowUserPointer(window_, &state_);
   files_.checkForRecovery();
   if (!options_.file.empty()) files_.openAtStartup(options_.file);
   state_.clampIndices();
@@ -350,7 +356,7 @@ int ModellerApp::run() {
     glFinish();
     const double frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count();
     if (frame_ > 5) frameMs_.push_back(frameMs);
-    if (frame_ % 5 == 0) writeProbe(frameMs);
+    writeProbe(frameMs);
 
     if (capture && frame_ >= options_.frames) {
       const bool enoughPoints = state_.previewStats.samples >= options_.waitPoints || state_.previewStats.done ||
@@ -412,6 +418,12 @@ int runModeller(const std::string& file, int argc, char** argv) {
   glfwGetWindowContentScale(window, &xscale, &yscale);
   const float scale = std::clamp(std::max(xscale, yscale), 1.0f, 4.0f);
 
+  // Our key callback first; ImGui_ImplGlfw_InitForOpenGL chains it.
+  glfwSetKeyCallback(window, [](GLFWwindow* w, int key, int, int action, int mods) {
+    if (action != GLFW_PRESS) return;
+    if (auto* state = static_cast<ModellerState*>(glfwGetWindowUserPointer(w)))
+      state->keyPresses.push_back({key, mods});
+  });
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   applyTheme(scale);

@@ -67,8 +67,12 @@ class ModellerState {
   int renderThreads = 1;
   RenderStats previewStats;
   std::string previewError;
-  /// Keyboard shortcut requests raised by the menu or keys, consumed by the views.
-  bool frameRequested = false;
+  /// Key presses since the last frame, recorded by a GLFW callback: ImGui 1.86 has no input
+  /// queue, so a press and release within one frame would otherwise be lost.
+  struct KeyPress {
+    int key = 0, mods = 0;
+  };
+  std::vector<KeyPress> keyPresses;
 
   UiProbe probe;
   /// The calculator's expression fields keep what the artist typed, even when it does not

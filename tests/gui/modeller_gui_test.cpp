@@ -1,0 +1,355 @@
+// GUI tier (issue 4 "Tests"): the real modeller window under Xvfb + Mesa, real frames, real input
+// through xdotool, assertions on pixels and on the saved file. Run by scripts/test as
+// `xvfb-run -a -s "-screen 0 1600x1000x24" ctest -L gui`.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "core/project_io.h"
+
+namespace fs = std::filesystem;
+using namespace std::chrono_literals;
+
+namespace {
+
+bool haveDisplay() {
+  const char* d = std::getenv("DISPLAY");
+  return d && *d;
+}
+
+/// A fresh folder per test, also used as XDG config/state home so tests never share settings.
+struct TempFolder {
+  fs::path path;
+  TempFolder() {
+    path = fs::temp_directory_path() / ("gridifs-gui-" + std::to_string(::getpid()) + "-" +
+                                        std::to_string(std::chrono::steady_clock::now().time_since_epoch().count()));
+    fs::create_directories(path);
+  }
+  ~TempFolder() {
+    std::error_code ec;
+    std::system(("chattr -R -i '" + path.string() + "' 2>/dev/null; chmod -R u+w '" + path.string() + "' 2>/dev/null").c_str());
+    fs::remove_all(path, ec);
+  }
+};
+
+int run(const std::string& command) {
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+/// The modeller as a child process with its --probe file.
+class App {
+ public:
+  App(const TempFolder& home, const std::vector<std::string>& args) : probe_(home.path / "probe.json") {
+    pid_ = ::fork();
+    if (pid_ == 0) {
+      ::setenv("XDG_CONFIG_HOME", (home.path / "config").c_str(), 1);
+      ::setenv("XDG_STATE_HOME", (home.path / "state").c_str(), 1);
+      std::vector<std::string> all{GRIDIFS_EXE};
+      all.insert(all.end(), args.begin(), args.end());
+      all.push_back("--probe");
+      all.push_back(probe_.string());
+      std::vector<char*> argv;
+      for (auto& a : all) argv.push_back(a.data());
+      argv.push_back(nullptr);
+      ::execv(GRIDIFS_EXE, argv.data());
+      ::_exit(127);
+    }
+  }
+  ~App() {
+    if (pid_ > 0 && !exited_) {
+      ::kill(pid_, SIGKILL);
+      ::waitpid(pid_, nullptr, 0);
+    }
+  }
+  /// The latest probe, once the window has drawn a frame.
+  nlohmann::json probe() const {
+    for (int attempt = 0; attempt < 200; ++attempt) {
+      std::ifstream in(probe_);
+      if (in) {
+        try {
+          return nlohmann::json::parse(in);
+        } catch (const std::exception&) {
+        }
+      }
+      std::this_thread::sleep_for(50ms);
+    }
+    return {};
+  }
+  /// Waits until `pred(probe)` holds (or the timeout passes); returns the last probe.
+  template <class Pred>
+  nlohmann::json waitFor(Pred pred, std::chrono::seconds timeout = 30s) const {
+    const auto end = std::chrono::steady_clock::now() + timeout;
+    nlohmann::json j;
+    while (std::chrono::steady_clock::now() < end) {
+      j = probe();
+      if (!j.is_null() && pred(j)) return j;
+      std::this_thread::sleep_for(100ms);
+    }
+    return j;
+  }
+  /// Waits for the preview of the current project to finish and reach the screen.
+  nlohmann::json waitForPreview(std::uint64_t afterRestarts = 0) const {
+    return waitFor([&](const nlohmann::json& j) {
+      const auto& p = j["preview"];
+      return p["done"].get<bool>() && p["restarts"].get<std::uint64_t>() > afterRestarts &&
+             p["image_generation"] == p["generation"] && !j["modal"].get<bool>();
+    });
+  }
+  std::optional<int> waitExit(std::chrono::seconds timeout = 20s) {
+    const auto end = std::chrono::steady_clock::now() + timeout;
+    while (std::chrono::steady_clock::now() < end) {
+      int status = 0;
+      if (::waitpid(pid_, &status, WNOHANG) == pid_) {
+        exited_ = true;
+        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+      }
+      std::this_thread::sleep_for(100ms);
+    }
+    return std::nullopt;
+  }
+
+ private:
+  fs::path probe_;
+  pid_t pid_ = -1;
+  bool exited_ = false;
+};
+
+void xdotool(const std::string& args) { ASSERT_EQ(run("xdotool " + args), 0) << args; }
+
+struct Rect {
+  int x = 0, y = 0, w = 0, h = 0;
+};
+
+/// A widget's rectangle in screen coordinates (the window sits at the probe's x, y).
+Rect rectOf(const nlohmann::json& probe, const std::string& name) {
+  const auto& r = probe["rects"][name];
+  const int wx = probe["window"]["x"], wy = probe["window"]["y"];
+  return {wx + int(r[0].get<double>()), wy + int(r[1].get<double>()), int(r[2].get<double>()), int(r[3].get<double>())};
+}
+
+void focusWindow() {
+  run("xdotool search --name GridIFS windowfocus >/dev/null 2>&1");
+  std::this_thread::sleep_for(200ms);
+}
+
+/// Holds keys for a moment, as a person does (a zero-length tap can fall between two frames).
+void pressKeys(const std::string& combo) {
+  focusWindow();
+  xdotool("keydown " + combo + " sleep 0.15 keyup " + combo);
+  std::this_thread::sleep_for(400ms);
+}
+
+void clickAt(int x, int y) {
+  xdotool("mousemove " + std::to_string(x) + " " + std::to_string(y) + " sleep 0.1 click 1");
+  std::this_thread::sleep_for(400ms);
+}
+
+void dragFrom(int x0, int y0, int x1, int y1) {
+  std::string cmd = "mousemove " + std::to_string(x0) + " " + std::to_string(y0) + " sleep 0.15 mousedown 1 sleep 0.15";
+  for (int s = 1; s <= 12; ++s)
+    cmd += " mousemove " + std::to_string(x0 + (x1 - x0) * s / 12) + " " + std::to_string(y0 + (y1 - y0) * s / 12) + " sleep 0.04";
+  cmd += " sleep 0.2 mouseup 1";
+  xdotool(cmd);
+  std::this_thread::sleep_for(400ms);
+}
+
+/// The screen as the X server shows it (ImageMagick's import), cropped to `r`.
+std::vector<float> grabScreen(const TempFolder& home, const Rect& r) {
+  const fs::path file = home.path / "grab.png";
+  EXPECT_EQ(run("import -window root '" + file.string() + "'"), 0);
+  OIIO::ImageBuf buf(file.string());
+  std::vector<float> pixels(std::size_t(r.w) * r.h * 3);
+  buf.get_pixels(OIIO::ROI(r.x, r.x + r.w, r.y, r.y + r.h, 0, 1, 0, 3), OIIO::TypeDesc::FLOAT, pixels.data());
+  return pixels;
+}
+
+double meanAbsDifference(const std::vector<float>& a, const std::vector<float>& b) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) sum += std::abs(double(a[i]) - double(b[i]));
+  return a.empty() ? 0.0 : sum / double(a.size()) * 255.0;
+}
+
+/// A copy of an example with a small sample budget, so previews finish within a second.
+fs::path exampleCopy(const TempFolder& home, const std::string& name, std::int64_t samples = 1'000'000) {
+  gridifs::Project p = gridifs::loadProject(fs::path(GRIDIFS_ASSETS) / name);
+  p.render.samples = samples;
+  const fs::path file = home.path / name;
+  gridifs::saveProject(p, file);
+  return file;
+}
+
+}  // namespace
+
+TEST(ModellerGui, ScreenshotShowsGridViewsAndPreview) {
+  if (!haveDisplay()) GTEST_SKIP() << "no X display (run under xvfb-run)";
+  TempFolder home;
+  const fs::path project = exampleCopy(home, "default.gridifs");
+  const fs::path shot = home.path / "shot.png";
+  App app(home, {project.string(), "--screenshot", shot.string(), "--frames", "10", "--wait-points", "1000000"});
+  ASSERT_EQ(app.waitExit(60s), 0);
+  const nlohmann::json probe = app.probe();
+  EXPECT_NE(probe["title"].get<std::string>().find("GridIFS"), std::string::npos);
+
+  OIIO::ImageBuf image(shot.string());
+  ASSERT_TRUE(image.init_spec(shot.string(), 0, 0)) << image.geterror();
+  EXPECT_EQ(image.spec().width, probe["window"]["width"].get<int>());
+  auto region = [&](const std::string& name) {
+    const auto& r = probe["rects"][name];
+    const int x = int(r[0].get<double>()), y = int(r[1].get<double>()), w = int(r[2].get<double>()), h = int(r[3].get<double>());
+    std::vector<float> px(std::size_t(w) * h * 3);
+    image.get_pixels(OIIO::ROI(x, x + w, y, y + h, 0, 1, 0, 3), OIIO::TypeDesc::FLOAT, px.data());
+    return px;
+  };
+  // The preview shows the attractor: many pixels well away from the dark background.
+  const auto preview = region("preview.image");
+  std::size_t lit = 0;
+  for (std::size_t i = 0; i < preview.size(); i += 3)
+    if (preview[i] + preview[i + 1] + preview[i + 2] > 0.3f) ++lit;
+  EXPECT_GT(double(lit) / double(preview.size() / 3), 0.03) << "the preview looks empty";
+  // Each grid view shows grid lines and light nodes over its dark gradient.
+  for (const char* view : {"view.Top", "view.Side", "view.Front", "view.User", "view.ifs"}) {
+    const auto px = region(view);
+    std::size_t bright = 0;
+    for (std::size_t i = 0; i < px.size(); i += 3)
+      if (px[i] + px[i + 1] + px[i + 2] > 1.5f) ++bright;
+    EXPECT_GT(bright, 200u) << view << " shows no grid";
+  }
+}
+
+TEST(ModellerGui, TwistSliderDragUndoAndSave) {
+  if (!haveDisplay()) GTEST_SKIP() << "no X display (run under xvfb-run)";
+  TempFolder home;
+  const fs::path project = exampleCopy(home, "default.gridifs");
+  const double originalK = std::get<gridifs::TwistOp>(gridifs::loadProject(project).functions[0].ops[0].params).k;
+  App app(home, {project.string()});
+  nlohmann::json probe = app.waitForPreview();
+  ASSERT_TRUE(probe["preview"]["done"].get<bool>());
+  const Rect previewRect = rectOf(probe, "preview.image");
+  const auto before = grabScreen(home, previewRect);
+
+  // Pick the twist in the stack and drag its k slider (one gesture = one undo step).
+  const Rect row = rectOf(probe, "ops.row.0");
+  clickAt(row.x + row.w / 2, row.y + row.h / 2);
+  probe = app.waitFor([](const nlohmann::json& j) { return j["rects"].contains("twist.k"); });
+  ASSERT_TRUE(probe["rects"].contains("twist.k"));
+  const std::uint64_t restarts = probe["preview"]["restarts"];
+  const Rect slider = rectOf(probe, "twist.k");
+  const int grab = slider.x + int(slider.w * (0.5 + originalK / (4.0 * M_PI)));  // the k = original spot
+  dragFrom(grab, slider.y + slider.h / 2, grab + slider.w / 4, slider.y + slider.h / 2);
+  probe = app.waitForPreview(restarts);
+  EXPECT_EQ(probe["undo"], "twist k");
+  EXPECT_TRUE(probe["dirty"].get<bool>());
+  EXPECT_NE(probe["title"].get<std::string>().find('*'), std::string::npos);
+  const auto twisted = grabScreen(home, previewRect);
+  EXPECT_GT(meanAbsDifference(before, twisted), 1.0) << "the preview did not change with the twist";
+
+  // Undo returns the model and the picture.
+  pressKeys("ctrl+z");
+  probe = app.waitForPreview(probe["preview"]["restarts"].get<std::uint64_t>());
+  EXPECT_FALSE(probe["dirty"].get<bool>());
+  const auto undone = grabScreen(home, previewRect);
+  EXPECT_LT(meanAbsDifference(before, undone), 0.05) << "undo did not restore the preview";
+
+  // Redo, save with Ctrl+S, and the file loads back with the edit.
+  pressKeys("ctrl+shift+z");
+  probe = app.waitFor([](const nlohmann::json& j) { return j["dirty"].get<bool>(); });
+  pressKeys("ctrl+s");
+  probe = app.waitFor([](const nlohmann::json& j) { return !j["dirty"].get<bool>(); });
+  EXPECT_FALSE(probe["dirty"].get<bool>());
+  const gridifs::Project saved = gridifs::loadProject(project);
+  const double savedK = std::get<gridifs::TwistOp>(saved.functions[0].ops[0].params).k;
+  EXPECT_GT(savedK, originalK + 0.5);
+  EXPECT_TRUE(fs::exists(project.string() + "~"));
+
+  pressKeys("ctrl+q");  // nothing unsaved: quits without asking
+  EXPECT_EQ(app.waitExit(), 0);
+}
+
+TEST(ModellerGui, DraggingANodeRecordsANodesOperation) {
+  if (!haveDisplay()) GTEST_SKIP() << "no X display (run under xvfb-run)";
+  TempFolder home;
+  const fs::path project = exampleCopy(home, "default.gridifs");
+  const std::size_t opsBefore = gridifs::loadProject(project).functions[0].ops.size();
+  App app(home, {project.string()});
+  nlohmann::json probe = app.waitForPreview();
+  const auto& nodes = probe["nodes_top"];
+  ASSERT_GT(nodes.size(), 10u);
+  const int wx = probe["window"]["x"], wy = probe["window"]["y"];
+  // The outermost node on the left of the top view is not hidden behind others.
+  std::size_t pick = 0;
+  for (std::size_t n = 0; n < nodes.size(); ++n)
+    if (nodes[n][0].get<double>() < nodes[pick][0].get<double>()) pick = n;
+  const int x = wx + int(std::lround(nodes[pick][0].get<double>())), y = wy + int(std::lround(nodes[pick][1].get<double>()));
+  const std::uint64_t restarts = probe["preview"]["restarts"];
+  dragFrom(x, y, x - 30, y + 20);
+  probe = app.waitForPreview(restarts);
+  EXPECT_EQ(probe["undo"], "Move nodes");
+  EXPECT_EQ(probe["ops"].get<std::size_t>(), opsBefore + 1);
+  pressKeys("ctrl+s");
+  probe = app.waitFor([](const nlohmann::json& j) { return !j["dirty"].get<bool>(); });
+  const gridifs::Project saved = gridifs::loadProject(project);
+  ASSERT_EQ(saved.functions[0].ops.size(), opsBefore + 1);
+  const auto* moves = std::get_if<gridifs::NodesOp>(&saved.functions[0].ops.back().params);
+  ASSERT_NE(moves, nullptr);
+  ASSERT_EQ(moves->moves.size(), 1u);
+  EXPECT_GT(glm::length(moves->moves[0].displacement), 0.05);
+}
+
+TEST(ModellerGui, SaveIntoReadOnlyFolderKeepsTheOldFileAndShowsAnError) {
+  if (!haveDisplay()) GTEST_SKIP() << "no X display (run under xvfb-run)";
+  TempFolder home;
+  const fs::path folder = home.path / "locked";
+  fs::create_directories(folder);
+  gridifs::Project p = gridifs::loadProject(fs::path(GRIDIFS_ASSETS) / "default.gridifs");
+  p.render.samples = 500'000;
+  const fs::path project = folder / "plate.gridifs";
+  gridifs::saveProject(p, project);
+  std::string original;
+  {
+    std::ifstream in(project);
+    original.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  App app(home, {project.string()});
+  nlohmann::json probe = app.waitForPreview();
+  // Read-only folder: permissions for a normal user; root ignores them, so also immutable.
+  ::chmod(folder.c_str(), 0555);
+  if (::geteuid() == 0) run("chattr +i '" + folder.string() + "' 2>/dev/null");
+
+  const Rect add = rectOf(probe, "functions.add");
+  clickAt(add.x + add.w / 2, add.y + add.h / 2);
+  probe = app.waitFor([](const nlohmann::json& j) { return j["dirty"].get<bool>(); });
+  ASSERT_TRUE(probe["dirty"].get<bool>());
+  pressKeys("ctrl+s");
+  probe = app.waitFor([](const nlohmann::json& j) { return j["modal"].get<bool>(); }, 10s);
+  EXPECT_TRUE(probe["modal"].get<bool>()) << "no error dialog";
+  EXPECT_TRUE(probe["status_error"].get<bool>());
+  EXPECT_NE(probe["status"].get<std::string>().find("Could not save"), std::string::npos) << probe["status"];
+  EXPECT_TRUE(probe["dirty"].get<bool>()) << "a failed save must not mark the project saved";
+
+  if (::geteuid() == 0) run("chattr -i '" + folder.string() + "' 2>/dev/null");
+  ::chmod(folder.c_str(), 0755);
+  std::string after;
+  {
+    std::ifstream in(project);
+    after.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  EXPECT_EQ(after, original) << "the old file changed";
+  EXPECT_EQ(gridifs::loadProject(project).functions.size(), p.functions.size());
+}
