@@ -296,6 +296,38 @@ Operation readOperation(const json& o, const std::string& path) {
   return op;
 }
 
+/// The ranges of "render.flame" (issue 6) for an in-memory FlameSettings (edits from the GUI), so
+/// that saveProject never writes settings that parseProject would refuse.
+void checkFlame(const FlameSettings& f, const std::string& path) {
+  auto range = [&](double v, const char* key, double lo, double hi) {
+    if (!(v >= lo && v <= hi)) {
+      std::ostringstream s;
+      s << "expected a number between " << lo << " and " << hi << ", found " << v;
+      fail(join(path, key), s.str());
+    }
+  };
+  if (f.palette.size() > limits::kMaxNameLength || !isPaletteReferenceSyntax(f.palette))
+    fail(join(path, "palette"), "expected a built-in palette name, \"flam3:NUMBER\", \"flam3:NAME\" or \"file:PATH\"");
+  range(f.brightness, "brightness", 0.0, 1e4);
+  range(f.gamma, "gamma", 0.05, 100.0);
+  range(f.gamma_threshold, "gamma_threshold", 0.0, 1.0);
+  range(f.vibrancy, "vibrancy", 0.0, 1.0);
+  range(f.highlight_power, "highlight_power", -1.0, 100.0);
+  if (f.supersample < 1 || f.supersample > 8) fail(join(path, "supersample"), "expected an integer between 1 and 8");
+  range(f.estimator_radius, "estimator_radius", 0.0, 64.0);
+  range(f.estimator_minimum, "estimator_minimum", 0.0, 64.0);
+  range(f.estimator_curve, "estimator_curve", 0.05, 10.0);
+  range(f.filter_radius, "filter_radius", 0.0, 10.0);
+  if (f.estimator_radius > 0.0) {
+    if (f.estimator_minimum > f.estimator_radius)
+      fail(join(path, "estimator_minimum"), "the estimator minimum is larger than its radius");
+    // The density estimator builds ((radius·ss + 1)/(minimum·ss + 1))^(1/curve) kernels.
+    const double kernels = std::pow((f.estimator_radius * f.supersample + 1.0) /
+                                        (f.estimator_minimum * f.supersample + 1.0), 1.0 / f.estimator_curve);
+    if (!(kernels <= 1e7)) fail(join(path, "estimator_curve"), "the curve is too small for this radius (too many kernels)");
+  }
+}
+
 /// "render.flame" (issue 6): every field optional, defaults from FlameSettings.
 FlameSettings readFlame(const json& o, const std::string& path) {
   requireObject(o, path);
@@ -313,14 +345,7 @@ FlameSettings readFlame(const json& o, const std::string& path) {
   f.estimator_minimum = number(o, "estimator_minimum", path, f.estimator_minimum, 0.0, 64.0);
   f.estimator_curve = number(o, "estimator_curve", path, f.estimator_curve, 0.05, 10.0);
   f.filter_radius = number(o, "filter_radius", path, f.filter_radius, 0.0, 10.0);
-  if (f.estimator_radius > 0.0) {
-    if (f.estimator_minimum > f.estimator_radius)
-      fail(join(path, "estimator_minimum"), "the estimator minimum is larger than its radius");
-    // The density estimator builds ((radius·ss + 1)/(minimum·ss + 1))^(1/curve) kernels.
-    const double kernels = std::pow((f.estimator_radius * f.supersample + 1.0) /
-                                        (f.estimator_minimum * f.supersample + 1.0), 1.0 / f.estimator_curve);
-    if (!(kernels <= 1e7)) fail(join(path, "estimator_curve"), "the curve is too small for this radius (too many kernels)");
-  }
+  checkFlame(f, path);
   return f;
 }
 
@@ -534,6 +559,7 @@ Project parseProject(const std::string& text) {
 }
 
 void validateProject(const Project& project) {
+  checkFlame(project.render.flame, "render.flame");
   if (project.functions.empty()) fail("functions", "the IFS needs at least one function");
   if (project.functions.size() > std::size_t(limits::kMaxFunctions))
     fail("functions", "more than " + std::to_string(limits::kMaxFunctions) + " functions");

@@ -68,3 +68,22 @@ TEST(FlameProject, ErrorsNameTheJsonPath) {
               "render.flame.estimator_curve");
   expectError(R"({"flame": {"filter_radius": "wide"}})", "render.flame.filter_radius");
 }
+
+TEST(FlameProject, ValidationRefusesFlameSettingsThatCouldNotBeReadBack) {
+  Project p = parseProject(withRender("{}"));
+  p.render.flame.supersample = 0;
+  try {
+    validateProject(p);
+    ADD_FAILURE() << "supersample 0 accepted";
+  } catch (const ModelError& e) {
+    EXPECT_EQ(e.path(), "render.flame.supersample");
+  }
+  p.render.flame.supersample = 2;
+  p.render.flame.palette = "nonsense";
+  EXPECT_THROW(validateProject(p), ModelError);
+  p.render.flame.palette = "ice";
+  p.render.flame.gamma = 0.0;
+  EXPECT_THROW(validateProject(p), ModelError);
+  p.render.flame.gamma = 2.2;
+  EXPECT_NO_THROW(validateProject(p));
+}
