@@ -120,7 +120,9 @@ void drawFunctionsPanel(ModellerState& state, EditQueue& edits) {
       ImGui::ColorButton("##c", ImVec4(float(f.color.x), float(f.color.y), float(f.color.z), 1.0f),
                          ImGuiColorEditFlags_NoTooltip, ImVec2(ImGui::GetFrameHeight(), ImGui::GetFrameHeight()));
       ImGui::TableNextColumn();
-      if (ImGui::Selectable(f.name.c_str(), i == active, ImGuiSelectableFlags_SpanAllColumns)) {
+      const bool picked = ImGui::Selectable(f.name.c_str(), i == active, ImGuiSelectableFlags_SpanAllColumns);
+      state.probe.item("functions.row." + std::to_string(i));
+      if (picked) {
         if (i != active) state.activeOp = -1;
         state.activeFunction = i;
       }
@@ -167,11 +169,13 @@ void drawFunctionsPanel(ModellerState& state, EditQueue& edits) {
   if (ImGui::CollapsingHeader("Placement", ImGuiTreeNodeFlags_DefaultOpen)) {
     Placement pl = f.placement;
     changed = dragVec3("Translate", pl.translate, 0.005);
+    state.probe.frame("function.translate");
     gestureItem(edits, "Move placement", changed, [fi, pl](Project& p) { p.functions[std::size_t(fi)].placement = pl; });
     contextHelp(state, "Where the grid sits in the common initial grid; also: drag it in the IFS view");
     changed = dragVec3("Rotate", pl.rotate, 0.5, -360.0, 360.0, "%.1f°");
     gestureItem(edits, "Rotate placement", changed, [fi, pl](Project& p) { p.functions[std::size_t(fi)].placement = pl; });
     changed = dragVec3("Scale", pl.scale, 0.005, -4.0, 4.0);
+    state.probe.frame("function.scale");
     gestureItem(edits, "Scale placement", changed, [fi, pl](Project& p) { p.functions[std::size_t(fi)].placement = pl; });
   }
   ImGui::PopItemWidth();

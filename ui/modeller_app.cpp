@@ -42,19 +42,22 @@ struct Layout {
   enum { Functions, Operations, Parameters, Grids, Selection, Preview, Ifs };
   static Layout compute(ImVec2 origin, ImVec2 area) {
     Layout l;
+    // Left: what the IFS is made of (functions, their stacks, the node selection); center: the
+    // grid views above the active operation's parameters (wide, for calculator expressions);
+    // right: the rendered result above the IFS view (seed 004 §4.2's three groups).
     const float left = std::round(area.x * 0.215f), center = std::round(area.x * 0.39f);
     const float right = area.x - left - center;
-    const float f = std::round(area.y * 0.41f), o = std::round(area.y * 0.25f);
-    const float g = std::round(area.y * 0.66f), p = std::round(area.y * 0.58f);
+    const float f = std::round(area.y * 0.47f), o = std::round(area.y * 0.25f);
+    const float g = std::round(area.y * 0.63f), p = std::round(area.y * 0.58f);
     auto set = [&](int i, float x, float y, float w, float h) {
       l.pos[i] = ImVec2(origin.x + x, origin.y + y);
       l.size[i] = ImVec2(w, h);
     };
     set(Functions, 0, 0, left, f);
     set(Operations, 0, f, left, o);
-    set(Parameters, 0, f + o, left, area.y - f - o);
+    set(Selection, 0, f + o, left, area.y - f - o);
     set(Grids, left, 0, center, g);
-    set(Selection, left, g, center, area.y - g);
+    set(Parameters, left, g, center, area.y - g);
     set(Preview, left + center, 0, right, p);
     set(Ifs, left + center, p, right, area.y - p);
     return l;
@@ -251,6 +254,9 @@ void ModellerApp::writeProbe(double frameMs) {
   nlohmann::json nodes = nlohmann::json::array();
   for (const glm::dvec2& p : views_[0].screenNodes(state_)) nodes.push_back({p.x, p.y});
   j["nodes_top"] = nodes;
+  nlohmann::json ifsNodes = nlohmann::json::array();
+  for (const glm::dvec2& p : ifsView_.screenNodes(state_)) ifsNodes.push_back({p.x, p.y});
+  j["nodes_ifs"] = ifsNodes;
   const std::string tmp = options_.probe + ".tmp";
   {
     std::ofstream out(tmp);

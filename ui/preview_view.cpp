@@ -138,7 +138,14 @@ void PreviewView::publish(ModellerState& state) {
 }
 
 void PreviewView::render(ModellerState& state, ViewRenderer& renderer) {
-  if (renderer_.fetch(image_) && image_.width > 0) {
+  // While the workers fill the buffers, merge and upload at most ~20 times a second: the
+  // picture still streams, and the UI keeps its frame budget for the artist's input. A new
+  // generation (an edit) is shown at once.
+  const RenderStats s = renderer_.stats();
+  const bool newGeneration = s.generation != image_.generation;
+  const bool due = newGeneration || s.done || state.now - lastFetch_ >= 0.05;
+  if (due && renderer_.fetch(image_) && image_.width > 0) {
+    lastFetch_ = state.now;
     texture_.upload(image_.width, image_.height, image_.rgba.data());
     needsDraw_ = true;
   }

@@ -36,6 +36,7 @@ class PreviewView {
   glm::dvec2 screenOrigin_{0.0};
   bool visible_ = false, needsDraw_ = true;
   Vec3 drawnBackground_{-1.0};
+  double lastFetch_ = -1.0;
   float framebufferScale_ = 1.0f;
   int drag_ = 0;  // 0 none, 1 orbit, 2 pan
   int dragButton_ = 0;

@@ -41,7 +41,7 @@ void drawSelectionPanel(ModellerState& state, EditQueue& edits) {
   sectionTitle("Index box");
   // The box being entered: UI state kept across frames.
   auto& box = state.boxEntry;
-  ImGui::PushItemWidth(ImGui::GetFontSize() * 7.0f);
+  ImGui::PushItemWidth(ImGui::GetFontSize() * 5.0f);
   const char* axes[] = {"i", "j", "k"};
   std::array<int, 2>* ranges[] = {&box.i, &box.j, &box.k};
   for (int a = 0; a < 3; ++a) {

@@ -46,4 +46,10 @@ void UiProbe::item(const std::string& name) {
   rects[name] = ImVec4(a.x, a.y, b.x - a.x, b.y - a.y);
 }
 
+void UiProbe::frame(const std::string& name) {
+  if (!enabled) return;
+  const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+  rects[name] = ImVec4(a.x, a.y, ImGui::CalcItemWidth(), b.y - a.y);
+}
+
 }  // namespace gridifs::ui

@@ -31,6 +31,8 @@ struct UiProbe {
   std::map<std::string, ImVec4> rects;  // x, y, width, height in window coordinates
   /// Records the last submitted item under `name`.
   void item(const std::string& name);
+  /// The same for a labelled widget, keeping only its frame (the current item width), not the label.
+  void frame(const std::string& name);
 };
 
 }  // namespace gridifs::ui
