@@ -21,6 +21,15 @@
 #include <emmintrin.h>
 #endif
 
+// Callers of runChain compile it twice, picked at load time: x86-64-v3 (AVX2: the 32-byte
+// node-pair loads and lerps are single instructions) and the portable baseline. Both perform the
+// same float operations (no FMA contraction in ISO C++ mode), so images do not depend on the CPU.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define GRIDIFS_KERNEL_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
+#else
+#define GRIDIFS_KERNEL_CLONES
+#endif
+
 namespace gridifs::kernel {
 
 typedef float v4f __attribute__((vector_size(16)));
@@ -106,17 +115,19 @@ template <int I>
   const v4f t = s - c;
   const v4i ci = __builtin_convertvector(c, v4i);
   const std::size_t idx = std::uint32_t(ci[0]) + f.strideJ * std::uint32_t(ci[1]) + f.strideK * std::uint32_t(ci[2]);
-  const float* n00 = f.pairs[idx].a;
-  const float* n10 = f.pairs[idx + f.strideJ].a;
-  const float* n01 = f.pairs[idx + f.strideK].a;
-  const float* n11 = f.pairs[idx + f.strideJ + f.strideK].a;
-  const v4f ty = splat<1>(t), tz = splat<2>(t), tx = splat<0>(t);
-  const v4f a00 = load4(n00), b00 = load4(n00 + 4), a10 = load4(n10), b10 = load4(n10 + 4);
-  const v4f a01 = load4(n01), b01 = load4(n01 + 4), a11 = load4(n11), b11 = load4(n11 + 4);
-  const v4f a0 = a00 + (a10 - a00) * ty, b0 = b00 + (b10 - b00) * ty;
-  const v4f a1 = a01 + (a11 - a01) * ty, b1 = b01 + (b11 - b01) * ty;
-  const v4f a = a0 + (a1 - a0) * tz, b = b0 + (b1 - b0) * tz;
-  return a + (b - a) * tx;
+  const NodePair* base = f.pairs + idx;
+  v8f p00, p10, p01, p11;  // one 32-byte load per x-edge: both ends of the edge
+  std::memcpy(&p00, base, 32);
+  std::memcpy(&p10, base + f.strideJ, 32);
+  std::memcpy(&p01, base + f.strideK, 32);
+  std::memcpy(&p11, base + f.strideJ + f.strideK, 32);
+  const v8f ty = __builtin_shufflevector(t, t, 1, 1, 1, 1, 1, 1, 1, 1);
+  const v8f tz = __builtin_shufflevector(t, t, 2, 2, 2, 2, 2, 2, 2, 2);
+  const v8f e0 = p00 + (p10 - p00) * ty;
+  const v8f e1 = p01 + (p11 - p01) * ty;
+  const v8f e = e0 + (e1 - e0) * tz;
+  const v4f a = __builtin_shufflevector(e, e, 0, 1, 2, 3), b = __builtin_shufflevector(e, e, 4, 5, 6, 7);
+  return a + (b - a) * splat<0>(t);
 }
 
 /// Whether every coordinate is finite and within the escape bound (NaN fails).
@@ -207,7 +218,7 @@ template <class Plot>
 /// Runs `count` iterations of the worker's chains (lane n % kLanes for the n-th one). `plot(q, color)`
 /// receives each point past `skip` (after the final function) and returns whether it was plotted.
 template <class Plot>
-inline void runChain(ChainState& st, const HotIfs& ifs, std::int64_t count, Plot& plot, ChainCounters& counters) {
+[[gnu::always_inline]] inline void runChain(ChainState& st, const HotIfs& ifs, std::int64_t count, Plot& plot, ChainCounters& counters) {
   std::int64_t bad = 0, plotted = 0;
   // A local copy whose address never escapes stays in registers; the plotter's relaxed atomic
   // stores would otherwise make the compiler reload the state from memory after every plot.
@@ -254,6 +265,16 @@ struct HotCamera {
   std::uint32_t stride;
 };
 
+inline constexpr std::uint64_t kEmptyKey = ~std::uint64_t(0);
+
+/// One pixel of a worker's buffers: the z-buffer key and the hit count share a 16-byte cell, so a
+/// plotted sample touches one cache line, not two (the buffers are far larger than the caches).
+struct alignas(16) PixelCell {
+  std::uint64_t key = kEmptyKey;  // depth bits << 32 | packed colour; kEmptyKey when no point
+  std::uint32_t density = 0;
+  std::uint32_t unused = 0;
+};
+
 inline HotCamera makeHotCamera(const OrbitCamera& camera) {
   const OrbitCamera::PixelRows rows = camera.pixelRows();
   HotCamera hot{};
@@ -273,8 +294,7 @@ inline HotCamera makeHotCamera(const OrbitCamera& camera) {
 template <bool kAccumulateColor>
 struct ZBufferPlot {
   HotCamera cam;
-  std::uint64_t* zbuffer;
-  std::uint32_t* density;
+  PixelCell* cells;
   float* colorSums;  // 4 per pixel, only with kAccumulateColor
   /// Optional (issue 6): 257 entries r g b 0 (the last repeats entry 255). When set, colorSums
   /// receive the palette color at c for every sample, as flam3 does (seed 002 §5), instead of
@@ -290,9 +310,10 @@ struct ZBufferPlot {
     const v4i ixy = __builtin_convertvector(xy, v4i);
     const std::size_t pixel = std::size_t(std::uint32_t(ixy[1])) * cam.stride + std::uint32_t(ixy[0]);
     const std::uint64_t key = (std::uint64_t(std::bit_cast<std::uint32_t>(depth)) << 32) | packColor(col);
-    std::atomic_ref<std::uint64_t> z(zbuffer[pixel]);
+    PixelCell& cell = cells[pixel];
+    std::atomic_ref<std::uint64_t> z(cell.key);
     if (key < z.load(std::memory_order_relaxed)) z.store(key, std::memory_order_relaxed);
-    std::atomic_ref<std::uint32_t> d(density[pixel]);
+    std::atomic_ref<std::uint32_t> d(cell.density);
     const std::uint32_t n = d.load(std::memory_order_relaxed);
     d.store(n + (n != 0xFFFFFFFFu), std::memory_order_relaxed);  // saturating
     if constexpr (kAccumulateColor) {
@@ -313,7 +334,5 @@ struct ZBufferPlot {
     return 1;
   }
 };
-
-inline constexpr std::uint64_t kEmptyKey = ~std::uint64_t(0);
 
 }  // namespace gridifs::kernel

@@ -78,8 +78,7 @@ struct ChaosRenderer::Shared {
 
 struct ChaosRenderer::Worker {
   int index = 0;
-  std::vector<std::uint64_t> zbuffer;
-  std::vector<std::uint32_t> density;
+  std::vector<kernel::PixelCell> cells;
   std::vector<float> colorSums;
   /// The generation the buffers and counters belong to; 0 while they are being reset.
   std::atomic<std::uint64_t> bufferGeneration{0};
@@ -89,8 +88,7 @@ struct ChaosRenderer::Worker {
 
   void resetBuffers(const RenderJob& job) {
     const std::size_t n = std::size_t(job.width) * std::size_t(job.height);
-    zbuffer.assign(n, kEmptyKey);
-    density.assign(n, 0u);
+    cells.assign(n, kernel::PixelCell{});
     if (job.accumulateColor)
       colorSums.assign(n * 4, 0.0f);
     else
@@ -101,11 +99,22 @@ struct ChaosRenderer::Worker {
 namespace {
 
 template <bool kColor>
-void runBatch(kernel::ChainState& chain, const PreparedJob& job, ChaosRenderer::Worker& w, std::int64_t count,
-              kernel::ChainCounters& counters) {
-  kernel::ZBufferPlot<kColor> plot{job.camera, w.zbuffer.data(), w.density.data(), w.colorSums.data(),
-                                   job.palette.empty() ? nullptr : job.palette.data()};
+[[gnu::always_inline]] inline void runBatchImpl(kernel::ChainState& chain, const PreparedJob& job,
+                                                ChaosRenderer::Worker& w, std::int64_t count,
+                                                kernel::ChainCounters& counters) {
+  kernel::ZBufferPlot<kColor> plot{job.camera, w.cells.data(), w.colorSums.data(),
+                                   job.palette.empty() ? nullptr : job.palette.data()};  // issue 6
   kernel::runChain(chain, job.hotIfs, count, plot, counters);
+}
+
+GRIDIFS_KERNEL_CLONES void runBatchPlain(kernel::ChainState& chain, const PreparedJob& job, ChaosRenderer::Worker& w,
+                                         std::int64_t count, kernel::ChainCounters& counters) {
+  runBatchImpl<false>(chain, job, w, count, counters);
+}
+
+GRIDIFS_KERNEL_CLONES void runBatchColor(kernel::ChainState& chain, const PreparedJob& job, ChaosRenderer::Worker& w,
+                                         std::int64_t count, kernel::ChainCounters& counters) {
+  runBatchImpl<true>(chain, job, w, count, counters);
 }
 
 void workerMain(std::shared_ptr<ChaosRenderer::Shared> shared, ChaosRenderer::Worker* w) {
@@ -148,9 +157,9 @@ void workerMain(std::shared_ptr<ChaosRenderer::Shared> shared, ChaosRenderer::Wo
         break;
       const std::int64_t n = std::min(remaining, kBatch);
       if (job->job.accumulateColor)
-        runBatch<true>(chain, *job, *w, n, counters);
+        runBatchColor(chain, *job, *w, n, counters);
       else
-        runBatch<false>(chain, *job, *w, n, counters);
+        runBatchPlain(chain, *job, *w, n, counters);
       remaining -= n;
       w->samples.store(counters.samples, std::memory_order_relaxed);
       w->bad.store(counters.bad, std::memory_order_relaxed);
@@ -350,9 +359,9 @@ void ChaosRenderer::snapshot(RenderImage& out, const DisplaySettings& display) c
     std::uint64_t count = 0;
     for (const Worker* w : ready) {
       const std::uint64_t k =
-          std::atomic_ref<const std::uint64_t>(w->zbuffer[i]).load(std::memory_order_relaxed);
+          std::atomic_ref<const std::uint64_t>(w->cells[i].key).load(std::memory_order_relaxed);
       key = std::min(key, k);
-      count += std::atomic_ref<const std::uint32_t>(w->density[i]).load(std::memory_order_relaxed);
+      count += std::atomic_ref<const std::uint32_t>(w->cells[i].density).load(std::memory_order_relaxed);
     }
     out.density[i] = std::uint32_t(std::min<std::uint64_t>(count, 0xFFFFFFFFu));
     if (key == kEmptyKey) {
