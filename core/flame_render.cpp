@@ -60,6 +60,12 @@ FlameImage developFlameSnapshot(const RenderImage& snapshot, const FlameSettings
                       flamePixelsPerUnit(camera, outputHeight), threads);
 }
 
+void flameImageToRgba8(const FlameImage& image, std::vector<std::uint8_t>& out) {
+  out.resize(image.rgba.size());
+  for (std::size_t i = 0; i < image.rgba.size(); ++i)
+    out[i] = std::uint8_t(std::lround(std::clamp(image.rgba[i], 0.0f, 1.0f) * 255.0f));
+}
+
 void writeFlameImage(const FlameImage& image, const std::filesystem::path& file, int bitDepth, bool withAlpha) {
   namespace fs = std::filesystem;
   std::string ext = file.extension().string();

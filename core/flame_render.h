@@ -35,6 +35,10 @@ FlameImage developFlameSnapshot(const RenderImage& snapshot, const FlameSettings
                                 int outputWidth, int outputHeight, const Vec3& background, bool transparent,
                                 int threads = 1, const Palette* meanCPalette = nullptr);
 
+/// 8-bit RGBA for a texture upload (GUI preview): channels × 255, rounded; the rgb of a transparent
+/// image stays premultiplied. `out` is resized to width·height·4.
+void flameImageToRgba8(const FlameImage& image, std::vector<std::uint8_t>& out);
+
 /// Writes a flame image through OpenImageIO: PNG/TIFF with 8 or 16 bits per channel, EXR as
 /// half or float (bitDepth 16 or 32). RGBA (premultiplied in memory; OIIO stores PNG
 /// unassociated) when `withAlpha`, else RGB. Atomic: a temporary file in the same folder is

@@ -93,6 +93,10 @@ TEST(FlameRender, DevelopsASupersampledSnapshotAndWritesImages) {
   EXPECT_GT(covered, 200);
   EXPECT_LT(covered, 48 * 48 * 3 / 4);  // the triangle's holes stay empty
   EXPECT_THROW(developFlameSnapshot(snap, p.render.flame, p.camera, 50, 48, Vec3{0.0}, true), std::invalid_argument);
+  std::vector<std::uint8_t> texture;
+  flameImageToRgba8(image, texture);
+  ASSERT_EQ(texture.size(), std::size_t(48 * 48 * 4));
+  EXPECT_EQ(texture[3], std::uint8_t(std::lround(image.rgba[3] * 255.0f)));
 
   const auto folder = std::filesystem::temp_directory_path() / ("gridifs_flame_" + std::to_string(::getpid()));
   std::filesystem::create_directories(folder);
