@@ -21,11 +21,11 @@
 #include <emmintrin.h>
 #endif
 
-// Callers of runChain compile it twice, picked at load time: x86-64-v3 (AVX2: the 32-byte
-// node-pair loads and lerps are single instructions) and the portable baseline. Both perform the
-// same float operations (no FMA contraction in ISO C++ mode), so images do not depend on the CPU.
+// Callers of runChain compile it twice, picked at load time: AVX2 (the 32-byte node-pair loads and
+// lerps are single instructions) and the portable baseline. FMA is deliberately not enabled: GCC
+// would contract a + (b - a)·t into fused multiply-adds, and images would then depend on the CPU.
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-#define GRIDIFS_KERNEL_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
+#define GRIDIFS_KERNEL_CLONES __attribute__((target_clones("avx2", "default")))
 #else
 #define GRIDIFS_KERNEL_CLONES
 #endif
@@ -107,8 +107,13 @@ template <int I>
 /// node pairs are 32 bytes apart in x, so each corner pair is one 32-byte (two 16-byte) load.
 [[gnu::always_inline]] inline v4f apply(const HotFunction& f, v4f p) {
   const v4f lo = {-1.0f, -1.0f, -1.0f, -1.0f}, hi = {1.0f, 1.0f, 1.0f, 1.0f};
+#if defined(__SSE2__)
+  // maxps returns its second operand when the first is NaN: NaN → -1, as Grid::evaluate.
+  p = v4f(_mm_min_ps(_mm_max_ps(__m128(p), __m128(lo)), __m128(hi)));
+#else
   p = p > lo ? p : lo;  // NaN → -1
   p = p < hi ? p : hi;
+#endif
   const v4f s = (p + hi) * f.toLattice;
   v4f c = __builtin_convertvector(__builtin_convertvector(s, v4i), v4f);
   c = f.maxCell < c ? f.maxCell : c;
@@ -133,8 +138,8 @@ template <int I>
 /// Whether every coordinate is finite and within the escape bound (NaN fails).
 [[gnu::always_inline]] inline bool inBounds(v4f p, float bound) {
   const v4f b = {bound, bound, bound, bound};
-  const v4f a = p < v4f{} ? -p : p;
-  return (laneMask(a <= b) & 7) == 7;  // false for NaN
+  const v4i magnitudeBits = v4i(p) & 0x7FFFFFFF;  // |p| without a compare and blend
+  return (laneMask(v4f(magnitudeBits) <= b) & 7) == 7;  // false for NaN
 }
 
 /// One worker's chains. A single chain is latency-bound (every step waits for the previous

@@ -4,9 +4,13 @@
 #include <bit>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "core/chaos_kernel.h"
+
+// snapshot() reinterprets the packed colour bytes (r in the low byte) as r, g, b, a in memory.
+static_assert(std::endian::native == std::endian::little, "the renderer assumes a little-endian CPU");
 
 namespace gridifs {
 namespace {
@@ -350,31 +354,45 @@ void ChaosRenderer::snapshot(RenderImage& out, const DisplaySettings& display) c
     if (w->bufferGeneration.load(std::memory_order_acquire) == generation) ready.push_back(w.get());
 
   // Pass 1: per pixel, the smallest key (nearest depth, then smaller colour) and the summed
-  // density; the order of workers cannot change either, so the merge is deterministic.
-  std::vector<std::uint32_t> packed(n);
+  // density; neither depends on the order of workers, so the merge is deterministic. The packed
+  // colour waits in `rgba` (4 bytes per pixel) for pass 2.
+  std::uint32_t* packed = reinterpret_cast<std::uint32_t*>(out.rgba.data());
   float minDepth = std::numeric_limits<float>::infinity(), maxDepth = -minDepth;
   std::int64_t hits = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    std::uint64_t key = kEmptyKey;
-    std::uint64_t count = 0;
-    for (const Worker* w : ready) {
-      const std::uint64_t k =
-          std::atomic_ref<const std::uint64_t>(w->cells[i].key).load(std::memory_order_relaxed);
-      key = std::min(key, k);
-      count += std::atomic_ref<const std::uint32_t>(w->cells[i].density).load(std::memory_order_relaxed);
-    }
+  auto keep = [&](std::size_t i, std::uint64_t key, std::uint64_t count) {
     out.density[i] = std::uint32_t(std::min<std::uint64_t>(count, 0xFFFFFFFFu));
     if (key == kEmptyKey) {
       out.depth[i] = std::numeric_limits<float>::infinity();
-      packed[i] = 0;
-      continue;
+      return;
     }
     const float depth = std::bit_cast<float>(std::uint32_t(key >> 32));
     out.depth[i] = depth;
-    packed[i] = std::uint32_t(key);
+    std::memcpy(packed + i, &key, 4);  // the low 32 bits (little-endian)
     minDepth = std::min(minDepth, depth);
     maxDepth = std::max(maxDepth, depth);
     ++hits;
+  };
+  auto keyOf = [](const kernel::PixelCell& c) {
+    return std::atomic_ref<const std::uint64_t>(c.key).load(std::memory_order_relaxed);
+  };
+  auto countOf = [](const kernel::PixelCell& c) {
+    return std::uint64_t(std::atomic_ref<const std::uint32_t>(c.density).load(std::memory_order_relaxed));
+  };
+  if (ready.size() == 1) {
+    const kernel::PixelCell* a = ready[0]->cells.data();
+    for (std::size_t i = 0; i < n; ++i) keep(i, keyOf(a[i]), countOf(a[i]));
+  } else if (ready.size() == 2) {
+    const kernel::PixelCell *a = ready[0]->cells.data(), *b = ready[1]->cells.data();
+    for (std::size_t i = 0; i < n; ++i) keep(i, std::min(keyOf(a[i]), keyOf(b[i])), countOf(a[i]) + countOf(b[i]));
+  } else {
+    for (std::size_t i = 0; i < n; ++i) {
+      std::uint64_t key = kEmptyKey, count = 0;
+      for (const Worker* w : ready) {
+        key = std::min(key, keyOf(w->cells[i]));
+        count += countOf(w->cells[i]);
+      }
+      keep(i, key, count);
+    }
   }
   if (job->job.accumulateColor)
     for (const Worker* w : ready)
@@ -388,22 +406,26 @@ void ChaosRenderer::snapshot(RenderImage& out, const DisplaySettings& display) c
   // of this image, and the background where nothing was plotted.
   const float cue = float(std::clamp(display.depthCue, 0.0, 1.0));
   const float range = maxDepth - minDepth;
-  const float invRange = hits && range > 0.0f ? 1.0f / range : 0.0f;
-  std::uint8_t bg[3];
+  const float scale = hits && range > 0.0f ? cue / range : 0.0f;
+  std::uint8_t bg[4] = {0, 0, 0, 0};
   for (int c = 0; c < 3; ++c)
     bg[c] = std::uint8_t(std::lround(std::clamp(display.background[c], 0.0, 1.0) * 255.0));
+  std::uint32_t background;
+  std::memcpy(&background, bg, 4);
   for (std::size_t i = 0; i < n; ++i) {
-    std::uint8_t* px = &out.rgba[i * 4];
-    if (!std::isfinite(out.depth[i])) {
-      px[0] = bg[0], px[1] = bg[1], px[2] = bg[2], px[3] = 0;
+    const float depth = out.depth[i];
+    if (depth == std::numeric_limits<float>::infinity()) {
+      packed[i] = background;
       continue;
     }
-    const float attenuation = 1.0f - cue * (out.depth[i] - minDepth) * invRange;
+    const float attenuation = 1.0f - (depth - minDepth) * scale;
+    const std::uint32_t p = packed[i];
+    std::uint32_t result = 0xFF000000u;  // alpha 255
     for (int c = 0; c < 3; ++c) {
-      const float v = float((packed[i] >> (8 * c)) & 0xFFu) * attenuation + 0.5f;
-      px[c] = std::uint8_t(std::min(255.0f, v));
+      const float v = float((p >> (8 * c)) & 0xFFu) * attenuation + 0.5f;
+      result |= std::uint32_t(std::min(255.0f, v)) << (8 * c);
     }
-    px[3] = 255;
+    packed[i] = result;  // bytes r, g, b, a in memory (little-endian)
   }
 }
 
