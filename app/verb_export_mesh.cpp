@@ -123,10 +123,12 @@ int runExportMesh(const ExportMeshArgs& a) {
     std::fprintf(stderr, "note: %s files carry no vertex colors; write .ply for colors.\n", meshFormatName(format));
 
   ProgressBar bar(stderrIsTerminal());
-  DeterministicMesh result;
   try {
     const IfsMesh base = refineBase(std::move(coarse), spec);
-    result = buildDeterministicMesh(ifs, base, options, [&](double f) { return bar.update(f); });
+    // Initialised in place: OpenMesh meshes copy on assignment (no move), which would double
+    // the peak memory of a large result.
+    const DeterministicMesh result =
+        buildDeterministicMesh(ifs, base, options, [&](double f) { return bar.update(f); });
     bar.message(("writing " + output.string()).c_str());
     writeMeshFile(result.mesh, output, MeshWriteOptions{!a.ascii, true});
   } catch (const ModelError& e) {

@@ -189,13 +189,11 @@ MeshCounts predictBaseCounts(const IfsMesh& coarse, const BaseMeshSpec& spec) {
 
 IfsMesh refineBase(IfsMesh coarse, const BaseMeshSpec& spec) {
   checkSubdivision(spec);
-  IfsMesh mesh;
-  if (spec.shape == BaseShape::Sphere) {
-    // Regenerating keeps every vertex on the sphere; subdividing a polyhedron would not.
-    mesh = spec.subdivision == 0 ? std::move(coarse)
-                                 : makeUvSphere(sphereSegments(spec.subdivision), sphereRings(spec.subdivision));
-  } else {
-    mesh = std::move(coarse);
+  // Regenerating keeps every vertex on the sphere; subdividing a polyhedron would not.
+  IfsMesh mesh = spec.shape == BaseShape::Sphere && spec.subdivision > 0
+                     ? makeUvSphere(sphereSegments(spec.subdivision), sphereRings(spec.subdivision))
+                     : std::move(coarse);
+  if (spec.shape != BaseShape::Sphere) {
     if (spec.subdivision > 0) {
       const bool smooth = spec.scheme == SubdivisionScheme::Smooth;
       // Without smoothing (update_points = false) both subdividers only split: new points sit

@@ -214,6 +214,15 @@ DeterministicMesh buildDeterministicMesh(const DeterministicIfs& ifs, const IfsM
                                          const DeterministicOptions& options, const DeterministicProgress& progress,
                                          const std::atomic<bool>* cancel) {
   DeterministicMesh result;
+  buildDeterministicMesh(ifs, base, options, result, progress, cancel);
+  return result;  // NRVO: no copy of the mesh
+}
+
+void buildDeterministicMesh(const DeterministicIfs& ifs, const IfsMesh& base, const DeterministicOptions& options,
+                            DeterministicMesh& result, const DeterministicProgress& progress,
+                            const std::atomic<bool>* cancel) {
+  result.mesh = IfsMesh();  // cheap: copies an empty mesh (drops any old `address` property)
+  result.functionIndices.clear();
   result.plan = planDeterministic(ifs, countMesh(base), options);
   if (result.plan.overLimit) throw ModelError("depth", result.plan.message);
   if (base.n_faces() == 0) throw ModelError("base", "the base mesh has no faces");
@@ -240,7 +249,7 @@ DeterministicMesh buildDeterministicMesh(const DeterministicIfs& ifs, const IfsM
     return stop.load(std::memory_order_relaxed);
   };
   // Weights of the two passes in the progress bar, from their measured share of the time.
-  constexpr double kPositionsShare = 0.4;
+  constexpr double kPositionsShare = 0.75;
 
   // Pass 1: positions. A task is a block of base vertices × a prefix of the first-applied
   // functions; inside it, an odometer walks the remaining digits, recomputing only the levels
@@ -363,7 +372,6 @@ DeterministicMesh buildDeterministicMesh(const DeterministicIfs& ifs, const IfsM
   }
   if (stop) throw DeterministicCancelled();
   report(1.0);
-  return result;
 }
 
 DeterministicMesh runDeterministic(const DeterministicIfs& ifs, const BaseMeshSpec& spec,
@@ -374,6 +382,15 @@ DeterministicMesh runDeterministic(const DeterministicIfs& ifs, const BaseMeshSp
   if (plan.overLimit) throw ModelError("depth", plan.message);
   const IfsMesh base = refineBase(std::move(coarse), spec);
   return buildDeterministicMesh(ifs, base, options, progress, cancel);
+}
+
+void runDeterministic(const DeterministicIfs& ifs, const BaseMeshSpec& spec, const DeterministicOptions& options,
+                      DeterministicMesh& out, const DeterministicProgress& progress, const std::atomic<bool>* cancel) {
+  IfsMesh coarse = loadCoarseBase(spec);
+  const DeterministicPlan plan = planDeterministic(ifs, predictBaseCounts(coarse, spec), options);
+  if (plan.overLimit) throw ModelError("depth", plan.message);
+  const IfsMesh base = refineBase(std::move(coarse), spec);
+  buildDeterministicMesh(ifs, base, options, out, progress, cancel);
 }
 
 }  // namespace gridifs

@@ -82,7 +82,10 @@ DeterministicPlan planDeterministic(const DeterministicIfs& ifs, const MeshCount
 DeterministicPlan planDeterministic(const DeterministicIfs& ifs, const BaseMeshSpec& spec,
                                     const DeterministicOptions& options);
 
-/// F^n(A). Vertex colors (float RGBA in [0, 1], alpha 1) hold each copy's structural color; the face property
+/// F^n(A). Note: IfsMesh (OpenMesh) has no move constructor — std::move copies it — so build a
+/// large result where it will live (a local initialised from the call, or the overloads below
+/// that fill a caller-owned object, e.g. one made with std::make_shared on a worker thread).
+/// Vertex colors (float RGBA in [0, 1], alpha 1) hold each copy's structural color; the face property
 /// `address` (see ifs_mesh.h) holds its address code. Copy c occupies vertices [c·V, (c+1)·V)
 /// and faces [c·F, (c+1)·F) with the base's topology (copies are not welded together).
 struct DeterministicMesh {
@@ -116,10 +119,19 @@ DeterministicMesh buildDeterministicMesh(const DeterministicIfs& ifs, const IfsM
                                          const DeterministicProgress& progress = {},
                                          const std::atomic<bool>* cancel = nullptr);
 
+/// The same, building into `out` (its previous content is discarded).
+void buildDeterministicMesh(const DeterministicIfs& ifs, const IfsMesh& base, const DeterministicOptions& options,
+                            DeterministicMesh& out, const DeterministicProgress& progress = {},
+                            const std::atomic<bool>* cancel = nullptr);
+
 /// loadCoarseBase → predictBaseCounts → planDeterministic (refuses over the limit before
 /// subdividing) → refineBase → buildDeterministicMesh. Throws as those do.
 DeterministicMesh runDeterministic(const DeterministicIfs& ifs, const BaseMeshSpec& spec,
                                    const DeterministicOptions& options, const DeterministicProgress& progress = {},
                                    const std::atomic<bool>* cancel = nullptr);
+/// The same, building into `out`.
+void runDeterministic(const DeterministicIfs& ifs, const BaseMeshSpec& spec, const DeterministicOptions& options,
+                      DeterministicMesh& out, const DeterministicProgress& progress = {},
+                      const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace gridifs

@@ -9,6 +9,7 @@
 #include <cctype>
 #include <fstream>
 #include <mutex>
+#include <new>
 #include <sstream>
 #include <system_error>
 
@@ -148,6 +149,9 @@ IfsMesh readMeshFile(const fs::path& file) {
     OpenMeshMessages messages;
     try {
       ok = OpenMesh::IO::read_mesh(mesh, file.string(), options);
+    } catch (const std::bad_alloc&) {  // OpenMesh reserves what the header declares
+      ok = false;
+      message = "its header declares more vertices or faces than fit in memory";
     } catch (const std::exception& e) {
       ok = false;
       message = e.what();

@@ -192,6 +192,7 @@ TEST(BaseMesh, BadFilesAreRefusedNamingTheFile) {
             "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
             "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n\x01\x02");
   writeFile(folder / "notes.txt", "hello");
+  writeFile(folder / "hostile.off", "OFF\n900000000 900000000 0\n0 0 0\n");  // declares far more than it holds
   std::filesystem::create_directories(folder / "folder.obj");
 
   struct Case {
@@ -201,7 +202,7 @@ TEST(BaseMesh, BadFilesAreRefusedNamingTheFile) {
   for (const Case c : {Case{"missing.obj", "cannot read"}, Case{"empty.obj", "empty"},
                        Case{"points.ply", "no faces"}, Case{"vertices_only.obj", "no faces"},
                        Case{"fin.obj", "not a manifold"}, Case{"bowtie.obj", "not a manifold"},
-                       Case{"truncated.ply", ""}, Case{"notes.txt", "not a mesh file"}, Case{"folder.obj", "folder"}}) {
+                       Case{"truncated.ply", ""}, Case{"hostile.off", ""}, Case{"notes.txt", "not a mesh file"}, Case{"folder.obj", "folder"}}) {
     const std::string message = errorOf(fileSpec(path(c.name)));
     EXPECT_NE(message.find(path(c.name)), std::string::npos) << c.name << ": " << message;
     EXPECT_NE(message.find(c.expect), std::string::npos) << c.name << ": " << message;

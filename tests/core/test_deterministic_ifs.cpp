@@ -347,3 +347,25 @@ TEST(DeterministicIfs, ProgressIsMonotoneAndCancellationStops) {
   std::atomic<bool> cancel{true};
   EXPECT_THROW(buildDeterministicMesh(ifs, makeCube(), options, {}, &cancel), DeterministicCancelled);
 }
+
+TEST(DeterministicIfs, BuildsIntoACallerOwnedObject) {
+  // The GUI keeps results on the heap (OpenMesh meshes copy instead of moving).
+  const DeterministicIfs ifs = snapshotDeterministicIfs(sierpinskiProject());
+  auto shared = std::make_shared<DeterministicMesh>();
+  DeterministicOptions options;
+  options.depth = 3;
+  runDeterministic(ifs, BaseMeshSpec{}, options, *shared);
+  EXPECT_EQ(shared->mesh.n_faces(), 384u);
+  options.depth = 1;  // reusing the object replaces everything, including the address property
+  buildDeterministicMesh(ifs, makeCube(), options, *shared);
+  EXPECT_EQ(shared->mesh.n_faces(), 24u);
+  EXPECT_EQ(shared->plan.copies, 4u);
+  EXPECT_EQ(shared->functionIndices.size(), 4u);
+  const auto address = addressProperty(shared->mesh);
+  ASSERT_TRUE(address.is_valid());
+  EXPECT_EQ(shared->mesh.property(address, IfsMesh::FaceHandle(23)), 3);
+  std::size_t properties = 0;
+  for (auto it = shared->mesh.fprops_begin(); it != shared->mesh.fprops_end(); ++it)
+    properties += *it && (*it)->name() == kAddressPropertyName;
+  EXPECT_EQ(properties, 1u);
+}
