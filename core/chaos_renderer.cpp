@@ -1,5 +1,11 @@
 #include "core/chaos_renderer.h"
 
+#if defined(__linux__)
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+#endif
+
 #include <algorithm>
 #include <bit>
 #include <chrono>
@@ -121,7 +127,15 @@ GRIDIFS_KERNEL_CLONES void runBatchColor(kernel::ChainState& chain, const Prepar
   runBatchImpl<true>(chain, job, w, count, counters);
 }
 
+/// Lowers the calling thread's priority once (an unprivileged thread cannot raise it again).
+void lowerThreadPriority() {
+#if defined(__linux__)
+  setpriority(PRIO_PROCESS, id_t(syscall(SYS_gettid)), 10);
+#endif
+}
+
 void workerMain(std::shared_ptr<ChaosRenderer::Shared> shared, ChaosRenderer::Worker* w) {
+  bool lowered = false;
   std::shared_ptr<const PreparedJob> job;
   std::uint64_t myGeneration = 0;
   std::int64_t remaining = 0;
@@ -143,6 +157,10 @@ void workerMain(std::shared_ptr<ChaosRenderer::Shared> shared, ChaosRenderer::Wo
       }
     }
     if (fresh) {
+      if (job->job.lowPriority && !lowered) {
+        lowerThreadPriority();
+        lowered = true;
+      }
       // Old-generation points stay in buffers that snapshot() ignores from here on.
       w->bufferGeneration.store(0, std::memory_order_release);
       w->resetBuffers(job->job);

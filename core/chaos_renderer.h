@@ -54,6 +54,9 @@ struct RenderJob {
   /// With accumulateColor (issue 6): when set, colorSums hold the sums of this palette's color
   /// at each sample's c (flam3's structural coloring, seed 002 §5) instead of the blended RGB.
   std::shared_ptr<const Palette> palette;
+  /// Run the workers at a lower OS priority (Linux: nice 10) so that the UI thread always gets a
+  /// core first on a machine with few cores (the GUI's preview). Does not change the image.
+  bool lowPriority = false;
 
   /// camera, size, samples, seed and skip from the project; `threads` as given
   /// (≤ 0: std::thread::hardware_concurrency()).
