@@ -83,10 +83,27 @@ void writeFlameImage(const FlameImage& image, const std::filesystem::path& file,
   if (withAlpha) spec.alpha_channel = 3;
   std::vector<float> pixels;
   const float* data = image.rgba.data();
+  if (exr) {
+    // The tone-mapped colors are display (sRGB-encoded) values; EXR holds scene-linear light,
+    // like the z-buffer EXR of `gridifs render`. Convert the unpremultiplied color, then
+    // premultiply again so that compositing over a linear background matches the PNG.
+    auto toLinear = [](float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f); };
+    pixels.resize(image.rgba.size());
+    for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
+      const float a = withAlpha ? image.rgba[i + 3] : 1.0f;
+      for (int c = 0; c < 3; ++c) {
+        const float straight = a > 0.0f ? std::min(1.0f, image.rgba[i + c] / a) : 0.0f;
+        pixels[i + c] = toLinear(straight) * a;
+      }
+      pixels[i + 3] = a;
+    }
+    data = pixels.data();
+  }
   if (!withAlpha) {
-    pixels.resize(std::size_t(image.width) * std::size_t(image.height) * 3);
-    for (std::size_t i = 0, n = pixels.size() / 3; i < n; ++i)
-      for (int c = 0; c < 3; ++c) pixels[i * 3 + c] = image.rgba[i * 4 + c];
+    std::vector<float> rgb(std::size_t(image.width) * std::size_t(image.height) * 3);
+    for (std::size_t i = 0, n = rgb.size() / 3; i < n; ++i)
+      for (int c = 0; c < 3; ++c) rgb[i * 3 + c] = data[i * 4 + c];
+    pixels = std::move(rgb);
     data = pixels.data();
   }
   const fs::path folder = file.has_parent_path() ? file.parent_path() : fs::path(".");

@@ -40,8 +40,9 @@ FlameImage developFlameSnapshot(const RenderImage& snapshot, const FlameSettings
 void flameImageToRgba8(const FlameImage& image, std::vector<std::uint8_t>& out);
 
 /// Writes a flame image through OpenImageIO: PNG/TIFF with 8 or 16 bits per channel, EXR as
-/// half or float (bitDepth 16 or 32). RGBA (premultiplied in memory; OIIO stores PNG
-/// unassociated) when `withAlpha`, else RGB. Atomic: a temporary file in the same folder is
+/// half or float (bitDepth 16 or 32), converted from the display (sRGB) values to linear light as
+/// EXR expects. RGBA (premultiplied in memory; OIIO stores PNG unassociated) when `withAlpha`,
+/// else RGB. Atomic: a temporary file in the same folder is
 /// renamed over `file`. Throws IoError when the format is unknown or the file cannot be written.
 void writeFlameImage(const FlameImage& image, const std::filesystem::path& file, int bitDepth, bool withAlpha);
 

@@ -119,6 +119,27 @@ TEST(FlameRender, DevelopsASupersampledSnapshotAndWritesImages) {
     EXPECT_EQ(spec.format, c.format) << c.name;
     in->close();
   }
+  // EXR holds linear light: its straight color is the PNG's sRGB-decoded color.
+  auto readFloats = [](const std::filesystem::path& f) {
+    auto in = OIIO::ImageInput::open(f.string());
+    std::vector<float> px(std::size_t(in->spec().width) * in->spec().height * 4);
+    in->read_image(0, 0, 0, 4, OIIO::TypeDesc::FLOAT, px.data());
+    return px;
+  };
+  const auto png = readFloats(folder / "b.png"), exr = readFloats(folder / "c.exr");
+  int compared = 0;
+  for (std::size_t i = 0; i < png.size(); i += 4) {
+    if (png[i + 3] < 0.5f) continue;
+    ++compared;
+    EXPECT_NEAR(exr[i + 3], png[i + 3], 1e-4);
+    for (int c = 0; c < 3; ++c) {
+      const double s = png[i + c];  // OIIO premultiplies the (unassociated) PNG on reading
+      const double straight = s / png[i + 3];
+      const double linear = straight <= 0.04045 ? straight / 12.92 : std::pow((straight + 0.055) / 1.055, 2.4);
+      EXPECT_NEAR(exr[i + c] / exr[i + 3], linear, 2e-3);
+    }
+  }
+  EXPECT_GT(compared, 50);
   EXPECT_THROW(writeFlameImage(image, folder / "x.jpg", 8, false), IoError);
   EXPECT_THROW(writeFlameImage(image, folder / "x.png", 12, false), IoError);
   EXPECT_THROW(writeFlameImage(image, "/nonexistent-folder/x.png", 8, false), IoError);
