@@ -108,12 +108,9 @@ int runFlameRender(const std::string& file, const std::string& out, const Render
   const int bits = options.bitDepth.value_or(exr ? 32 : 8);
   if (exr ? (bits != 16 && bits != 32) : (bits != 8 && bits != 16))
     throw CliError(kBadInput, std::string("--bit-depth must be ") + (exr ? "16 (half) or 32 (float) for EXR" : "8 or 16 for PNG and TIFF"));
-  RenderJob job = setup.job;
+  // Supersampled, with a gutter around the frame, palette colors per sample (core/flame_render.h).
+  const RenderJob job = flameRenderJob(setup.job, settings, palette);
   const int ss = std::max(1, settings.supersample);
-  job.width *= ss;  // seed 002 §8: more histogram buckets for the same iterations
-  job.height *= ss;
-  job.accumulateColor = true;
-  job.palette = palette;
   try {
     validateRenderJob(job);
   } catch (const ModelError& e) {

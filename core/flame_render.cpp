@@ -17,15 +17,42 @@ double flamePixelsPerUnit(const Camera& camera, int outputHeight) {
   return halfHeight > 0.0 ? outputHeight / (2.0 * halfHeight) : 1.0;
 }
 
-RenderJob flameRenderJob(const Project& project, std::shared_ptr<const Palette> palette, int threads) {
-  RenderJob job = RenderJob::fromProject(project, threads);
-  const int ss = std::max(1, project.render.flame.supersample);
+int flameGutter(const FlameSettings& settings) {
+  // flam3: the DE reaches ceil(radius) output pixels, the spatial filter half its width.
+  const int de = settings.estimator_radius > 0.0 ? int(std::ceil(settings.estimator_radius)) : 0;
+  const int filter = int(std::ceil(1.5 * settings.filter_radius)) + 1;
+  return de + filter;
+}
+
+namespace {
+/// The gutter actually used for `camera` (0 when widening the view would exceed 170°).
+int usableGutter(const Camera& camera, int outputHeight, const FlameSettings& settings) {
+  const int g = flameGutter(settings);
+  const double halfTan = std::tan(camera.fov * M_PI / 360.0) * double(outputHeight + 2 * g) / outputHeight;
+  return std::atan(halfTan) * 360.0 / M_PI <= 170.0 ? g : 0;
+}
+}  // namespace
+
+RenderJob flameRenderJob(const RenderJob& outputJob, const FlameSettings& settings,
+                         std::shared_ptr<const Palette> palette) {
+  RenderJob job = outputJob;
+  const int ss = std::max(1, settings.supersample);
+  const int g = usableGutter(outputJob.camera, outputJob.height, settings);
+  // The same pixels per unit on a larger image: widen the (vertical) field of view; OrbitCamera's
+  // orthographic extent follows the same tan(fov/2), and the width follows the aspect ratio.
+  const double halfTan = std::tan(outputJob.camera.fov * M_PI / 360.0) * double(outputJob.height + 2 * g) /
+                         outputJob.height;
+  job.camera.fov = std::atan(halfTan) * 360.0 / M_PI;
   // seed 002 §8: supersampling = more histogram buckets for the same number of iterations.
-  job.width = project.render.width * ss;
-  job.height = project.render.height * ss;
+  job.width = (outputJob.width + 2 * g) * ss;
+  job.height = (outputJob.height + 2 * g) * ss;
   job.accumulateColor = true;
   job.palette = std::move(palette);  // seed 002 §5: the palette color at c, per sample
   return job;
+}
+
+RenderJob flameRenderJob(const Project& project, std::shared_ptr<const Palette> palette, int threads) {
+  return flameRenderJob(RenderJob::fromProject(project, threads), project.render.flame, std::move(palette));
 }
 
 FlameHistogram flameHistogramFromSnapshot(const RenderImage& snapshot, const Palette* meanCPalette) {
@@ -53,11 +80,22 @@ FlameImage developFlameSnapshot(const RenderImage& snapshot, const FlameSettings
                                 int outputWidth, int outputHeight, const Vec3& background, bool transparent,
                                 int threads, const Palette* meanCPalette) {
   const int ss = std::max(1, settings.supersample);
-  if (snapshot.width != outputWidth * ss || snapshot.height != outputHeight * ss)
-    throw std::invalid_argument("the renderer snapshot is not supersample× the output size");
+  const int g = usableGutter(camera, outputHeight, settings);
+  if (snapshot.width != (outputWidth + 2 * g) * ss || snapshot.height != (outputHeight + 2 * g) * ss)
+    throw std::invalid_argument("the renderer snapshot does not have the size of the flame job (output + gutter, "
+                                "times the supersampling)");
   const FlameHistogram histogram = flameHistogramFromSnapshot(snapshot, meanCPalette);
-  return developFlame(histogram, settings, background, transparent, double(std::max<std::int64_t>(1, snapshot.stats.samples)),
-                      flamePixelsPerUnit(camera, outputHeight), threads);
+  const FlameImage full =
+      developFlame(histogram, settings, background, transparent, double(std::max<std::int64_t>(1, snapshot.stats.samples)),
+                   flamePixelsPerUnit(camera, outputHeight), threads);
+  if (g == 0) return full;
+  FlameImage image;
+  image.width = outputWidth;
+  image.height = outputHeight;
+  image.rgba.resize(std::size_t(outputWidth) * std::size_t(outputHeight) * 4);
+  for (int y = 0; y < outputHeight; ++y)
+    std::copy_n(full.pixel(g, y + g), std::size_t(outputWidth) * 4, &image.rgba[std::size_t(y) * outputWidth * 4]);
+  return image;
 }
 
 void flameImageToRgba8(const FlameImage& image, std::vector<std::uint8_t>& out) {

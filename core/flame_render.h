@@ -18,8 +18,19 @@ namespace gridifs {
 /// is flam3's pixels_per_unit, which fixes the exposure (LogDensityScale::k2).
 double flamePixelsPerUnit(const Camera& camera, int outputHeight);
 
-/// The renderer job of a flame render: the project's job with the image supersample× larger,
-/// color accumulation on, and the palette looked up per sample (RenderJob::palette).
+/// The gutter of a flame render in output pixels: the density estimator and the spatial filter
+/// reach this far, so the renderer also fills a band this wide around the frame (as flam3 does)
+/// and the frame's edges get their neighbours' contributions instead of darkening.
+int flameGutter(const FlameSettings& settings);
+
+/// Turns the job of an output image (camera, width × height, samples, ...) into the renderer job
+/// of a flame render: (width + 2·gutter) × (height + 2·gutter), supersample× larger, the field of
+/// view widened to cover the gutter at the same pixels per unit, color accumulation on and the
+/// palette looked up per sample (RenderJob::palette). The gutter is dropped when the widened
+/// field of view would exceed 170°.
+RenderJob flameRenderJob(const RenderJob& outputJob, const FlameSettings& settings,
+                         std::shared_ptr<const Palette> palette);
+/// The same from the project's render settings.
 RenderJob flameRenderJob(const Project& project, std::shared_ptr<const Palette> palette, int threads);
 
 /// The flame histogram held by a renderer snapshot made with accumulateColor. Channels 0..2 of
@@ -28,9 +39,10 @@ RenderJob flameRenderJob(const Project& project, std::shared_ptr<const Palette> 
 /// per-sample palette colors. Throws std::invalid_argument when the snapshot has no color sums.
 FlameHistogram flameHistogramFromSnapshot(const RenderImage& snapshot, const Palette* meanCPalette = nullptr);
 
-/// Develops a snapshot into the flame image of `outputWidth` × `outputHeight` (the snapshot is
-/// supersample× that size). `samples` = iterations behind the snapshot (snapshot.stats.samples).
-/// Throws std::invalid_argument on inconsistent sizes.
+/// Develops a snapshot of flameRenderJob(...) into the flame image of `outputWidth` ×
+/// `outputHeight` (`camera` is the output's camera, not the widened one): develops the whole
+/// supersampled histogram with its gutter and keeps the centre. The exposure uses
+/// snapshot.stats.samples. Throws std::invalid_argument when the snapshot's size does not match.
 FlameImage developFlameSnapshot(const RenderImage& snapshot, const FlameSettings& settings, const Camera& camera,
                                 int outputWidth, int outputHeight, const Vec3& background, bool transparent,
                                 int threads = 1, const Palette* meanCPalette = nullptr);

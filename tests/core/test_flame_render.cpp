@@ -52,10 +52,12 @@ TEST(FlameRender, RendererSumsThePaletteColorOfEverySample) {
   for (int i = 0; i < 256; ++i) palette->colors[i] = {0.2f, 0.4f, i < 128 ? 0.6f : 1.0f};
   const RenderJob job = flameRenderJob(p, palette, 2);
   EXPECT_TRUE(job.accumulateColor);
+  const int g = flameGutter(p.render.flame), side = 64 + 2 * g;  // the job covers a gutter too
+  ASSERT_EQ(job.width, side);
   const RenderImage snap = renderToCompletion(compileIfs(p), job, DisplaySettings::fromProject(p));
-  ASSERT_EQ(snap.colorSums.size(), std::size_t(64 * 64 * 4));
+  ASSERT_EQ(snap.colorSums.size(), std::size_t(side * side * 4));
   std::int64_t hits = 0;
-  for (std::size_t i = 0; i < std::size_t(64 * 64); ++i) {
+  for (std::size_t i = 0; i < std::size_t(side * side); ++i) {
     const double n = snap.density[i];
     hits += snap.density[i];
     EXPECT_NEAR(snap.colorSums[i * 4 + 0], 0.2 * n, 1e-3 * n + 1e-4);
@@ -68,10 +70,10 @@ TEST(FlameRender, RendererSumsThePaletteColorOfEverySample) {
   // half, the top corner (function 2, c → 1) its second half.
   auto meanBlue = [&](int x, int y) {
     double b = 0, n = 0;
-    for (int j = y - 2; j <= y + 2; ++j)
-      for (int i = x - 2; i <= x + 2; ++i) {
-        b += snap.colorSums[(std::size_t(j) * 64 + i) * 4 + 2];
-        n += snap.density[std::size_t(j) * 64 + i];
+    for (int j = y - 2 + g; j <= y + 2 + g; ++j)
+      for (int i = x - 2 + g; i <= x + 2 + g; ++i) {
+        b += snap.colorSums[(std::size_t(j) * side + i) * 4 + 2];
+        n += snap.density[std::size_t(j) * side + i];
       }
     return n > 0 ? b / n : -1.0;
   };
@@ -84,7 +86,9 @@ TEST(FlameRender, DevelopsASupersampledSnapshotAndWritesImages) {
   p.render.flame.supersample = 2;
   const auto palette = std::make_shared<const Palette>(builtinPalette("ember"));
   const RenderJob job = flameRenderJob(p, palette, 1);
-  EXPECT_EQ(job.width, 96);
+  EXPECT_EQ(job.width, (48 + 2 * flameGutter(p.render.flame)) * 2);
+  // The widened view keeps the pixels per unit: the frame is the centre of the job.
+  EXPECT_NEAR(flamePixelsPerUnit(job.camera, job.height / 2), flamePixelsPerUnit(p.camera, 48), 1e-9);
   const RenderImage snap = renderToCompletion(compileIfs(p), job, DisplaySettings::fromProject(p));
   const FlameImage image = developFlameSnapshot(snap, p.render.flame, p.camera, 48, 48, Vec3{0.0}, true, 2);
   ASSERT_EQ(image.width, 48);
