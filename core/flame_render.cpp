@@ -34,10 +34,10 @@ int usableGutter(const Camera& camera, int outputHeight, const FlameSettings& se
 }  // namespace
 
 RenderJob flameRenderJob(const RenderJob& outputJob, const FlameSettings& settings,
-                         std::shared_ptr<const Palette> palette) {
+                         std::shared_ptr<const Palette> palette, bool gutter) {
   RenderJob job = outputJob;
   const int ss = std::max(1, settings.supersample);
-  const int g = usableGutter(outputJob.camera, outputJob.height, settings);
+  const int g = gutter ? usableGutter(outputJob.camera, outputJob.height, settings) : 0;
   // The same pixels per unit on a larger image: widen the (vertical) field of view; OrbitCamera's
   // orthographic extent follows the same tan(fov/2), and the width follows the aspect ratio.
   const double halfTan = std::tan(outputJob.camera.fov * M_PI / 360.0) * double(outputJob.height + 2 * g) /
@@ -80,7 +80,8 @@ FlameImage developFlameSnapshot(const RenderImage& snapshot, const FlameSettings
                                 int outputWidth, int outputHeight, const Vec3& background, bool transparent,
                                 int threads, const Palette* meanCPalette) {
   const int ss = std::max(1, settings.supersample);
-  const int g = usableGutter(camera, outputHeight, settings);
+  int g = usableGutter(camera, outputHeight, settings);
+  if (snapshot.width == outputWidth * ss && snapshot.height == outputHeight * ss) g = 0;  // a job without gutter
   if (snapshot.width != (outputWidth + 2 * g) * ss || snapshot.height != (outputHeight + 2 * g) * ss)
     throw std::invalid_argument("the renderer snapshot does not have the size of the flame job (output + gutter, "
                                 "times the supersampling)");

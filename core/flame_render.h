@@ -27,9 +27,10 @@ int flameGutter(const FlameSettings& settings);
 /// of a flame render: (width + 2·gutter) × (height + 2·gutter), supersample× larger, the field of
 /// view widened to cover the gutter at the same pixels per unit, color accumulation on and the
 /// palette looked up per sample (RenderJob::palette). The gutter is dropped when the widened
-/// field of view would exceed 170°.
+/// field of view would exceed 170°, or when `gutter` is false (the GUI preview, whose z-buffer
+/// image must stay the frame so that switching modes needs no restart).
 RenderJob flameRenderJob(const RenderJob& outputJob, const FlameSettings& settings,
-                         std::shared_ptr<const Palette> palette);
+                         std::shared_ptr<const Palette> palette, bool gutter = true);
 /// The same from the project's render settings.
 RenderJob flameRenderJob(const Project& project, std::shared_ptr<const Palette> palette, int threads);
 
@@ -41,8 +42,9 @@ FlameHistogram flameHistogramFromSnapshot(const RenderImage& snapshot, const Pal
 
 /// Develops a snapshot of flameRenderJob(...) into the flame image of `outputWidth` ×
 /// `outputHeight` (`camera` is the output's camera, not the widened one): develops the whole
-/// supersampled histogram with its gutter and keeps the centre. The exposure uses
-/// snapshot.stats.samples. Throws std::invalid_argument when the snapshot's size does not match.
+/// supersampled histogram with its gutter (if the job had one: told from the snapshot's size) and
+/// keeps the centre. The exposure uses snapshot.stats.samples. Throws std::invalid_argument when
+/// the snapshot's size matches neither.
 FlameImage developFlameSnapshot(const RenderImage& snapshot, const FlameSettings& settings, const Camera& camera,
                                 int outputWidth, int outputHeight, const Vec3& background, bool transparent,
                                 int threads = 1, const Palette* meanCPalette = nullptr);

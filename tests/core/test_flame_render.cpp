@@ -97,6 +97,15 @@ TEST(FlameRender, DevelopsASupersampledSnapshotAndWritesImages) {
   EXPECT_GT(covered, 200);
   EXPECT_LT(covered, 48 * 48 * 3 / 4);  // the triangle's holes stay empty
   EXPECT_THROW(developFlameSnapshot(snap, p.render.flame, p.camera, 50, 48, Vec3{0.0}, true), std::invalid_argument);
+  // The GUI's job without gutter develops to the same frame.
+  const RenderJob noGutter = flameRenderJob(RenderJob::fromProject(p, 1), p.render.flame, palette, false);
+  EXPECT_EQ(noGutter.width, 96);
+  const RenderImage small = renderToCompletion(compileIfs(p), noGutter, DisplaySettings::fromProject(p));
+  const FlameImage framed = developFlameSnapshot(small, p.render.flame, p.camera, 48, 48, Vec3{0.0}, true, 1);
+  EXPECT_EQ(framed.width, 48);
+  double sumGutter = 0, sumFramed = 0;
+  for (std::size_t i = 3; i < image.rgba.size(); i += 4) sumGutter += image.rgba[i], sumFramed += framed.rgba[i];
+  EXPECT_NEAR(sumFramed / sumGutter, 1.0, 0.05);  // the attractor is inside the frame: same picture
   std::vector<std::uint8_t> texture;
   flameImageToRgba8(image, texture);
   ASSERT_EQ(texture.size(), std::size_t(48 * 48 * 4));
