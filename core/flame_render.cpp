@@ -80,9 +80,9 @@ FlameImage developFlameSnapshot(const RenderImage& snapshot, const FlameSettings
                                 int outputWidth, int outputHeight, const Vec3& background, bool transparent,
                                 int threads, const Palette* meanCPalette) {
   const int ss = std::max(1, settings.supersample);
-  int g = usableGutter(camera, outputHeight, settings);
-  if (snapshot.width == outputWidth * ss && snapshot.height == outputHeight * ss) g = 0;  // a job without gutter
-  if (snapshot.width != (outputWidth + 2 * g) * ss || snapshot.height != (outputHeight + 2 * g) * ss)
+  // The gutter is whatever the job had (flameRenderJob with or without one, any settings).
+  const int g = snapshot.width % ss == 0 ? (snapshot.width / ss - outputWidth) / 2 : -1;
+  if (g < 0 || snapshot.width != (outputWidth + 2 * g) * ss || snapshot.height != (outputHeight + 2 * g) * ss)
     throw std::invalid_argument("the renderer snapshot does not have the size of the flame job (output + gutter, "
                                 "times the supersampling)");
   const FlameHistogram histogram = flameHistogramFromSnapshot(snapshot, meanCPalette);

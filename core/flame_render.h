@@ -42,7 +42,7 @@ FlameHistogram flameHistogramFromSnapshot(const RenderImage& snapshot, const Pal
 
 /// Develops a snapshot of flameRenderJob(...) into the flame image of `outputWidth` ×
 /// `outputHeight` (`camera` is the output's camera, not the widened one): develops the whole
-/// supersampled histogram with its gutter (if the job had one: told from the snapshot's size) and
+/// supersampled histogram with its gutter (whatever the job had: told from the snapshot's size) and
 /// keeps the centre. The exposure uses snapshot.stats.samples. Throws std::invalid_argument when
 /// the snapshot's size matches neither.
 FlameImage developFlameSnapshot(const RenderImage& snapshot, const FlameSettings& settings, const Camera& camera,
