@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <climits>
+#include <condition_variable>
 #include <limits>
 #include <cmath>
 #include <cstdio>
@@ -88,12 +89,16 @@ class ParallelTasks {
       }
     };
     const int helpers = int(std::min<std::size_t>(std::size_t(threads_ - 1), tasks_ > 0 ? tasks_ - 1 : 0));
-    std::atomic<int> running{helpers};
+    int running = helpers;  // guarded by doneMutex
+    std::mutex doneMutex;
+    std::condition_variable doneSignal;
     std::vector<std::thread> pool;
     for (int i = 0; i < helpers; ++i)
       pool.emplace_back([&] {
         work();
+        std::lock_guard<std::mutex> lock(doneMutex);
         --running;
+        doneSignal.notify_one();
       });
     // The caller takes tasks too, reporting between them; then it keeps reporting until the
     // helpers are done, so a long last task still moves the progress bar.
@@ -102,9 +107,12 @@ class ParallelTasks {
         task(t);
         report();
       }
-      while (running.load() > 0) {
+      std::unique_lock<std::mutex> lock(doneMutex);
+      while (running > 0) {
+        lock.unlock();
         report();
-        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        lock.lock();
+        doneSignal.wait_for(lock, std::chrono::milliseconds(10), [&] { return running == 0; });
       }
     } catch (...) {
       std::lock_guard<std::mutex> lock(failureMutex);
