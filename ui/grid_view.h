@@ -35,6 +35,13 @@ class GridView {
   /// Window coordinates of the pickable nodes (for the test probe); empty when hidden.
   std::vector<glm::dvec2> screenNodes(ModellerState& state);
 
+  /// Called before the UI is built: a view that build() does not reach this frame (hidden by
+  /// the maximized view, or a collapsed window) is neither drawn nor copied.
+  void hide() {
+    visible_ = false;
+    hovered_ = false;
+  }
+
   bool hovered() const { return hovered_; }
   ViewAxis axis() const { return camera_.axis; }
   void setAxis(ViewAxis axis);

@@ -304,6 +304,9 @@ int ModellerApp::run() {
     ImGui::NewFrame();
     state_.contextHelp.clear();
     state_.probe.rects.clear();
+    for (GridView& v : views_) v.hide();
+    ifsView_.hide();
+    preview_.hide();
     buildUi();
     ImGui::Render();
 

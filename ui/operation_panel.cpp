@@ -4,6 +4,7 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include <algorithm>
 #include <cstdio>
 
 #include "core/calculator.h"
@@ -87,6 +88,7 @@ void calculatorEditor(OpEditor& e, CalculatorOp& calc) {
     const bool bad = diagnostic && diagnostic->expression == i;
     if (bad) ImGui::PushStyleColor(ImGuiCol_FrameBg, ImVec4(0.45f, 0.12f, 0.10f, 1.0f));
     ImGui::SetNextItemWidth(-1);
+    const float fieldX = ImGui::GetCursorPosX();
     const bool typed = ImGui::InputText(ids[i], &buffer.text[std::size_t(i)]);
     if (bad) ImGui::PopStyleColor();
     e.state.probe.item(std::string("calculator.") + kAxes[i]);
@@ -103,10 +105,15 @@ void calculatorEditor(OpEditor& e, CalculatorOp& calc) {
     contextHelp(e.state, "Variables x y z (node), cx cy cz (center), i j k (indices), v1 v2 v3; sin cos tan asin "
                          "acos atan sinh cosh tanh log exp sqrt abs min max pow rand(), pi, e");
     if (bad) {
-      std::string marker;
-      if (diagnostic->position >= 0) marker = std::string(std::size_t(std::min(diagnostic->position, 80)), ' ') + "^ ";
+      // A caret under the offending character, then the message.
+      const std::string& text = buffer.text[std::size_t(i)];
+      const std::size_t at = std::size_t(std::clamp(diagnostic->position, 0, int(text.size())));
+      ImGui::SetCursorPosX(fieldX + ImGui::GetStyle().FramePadding.x + ImGui::CalcTextSize(text.substr(0, at).c_str()).x -
+                           ImGui::CalcTextSize("^").x * 0.5f);
       ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.35f, 1.0f));
-      ImGui::TextWrapped("%s%s", marker.c_str(), diagnostic->message.c_str());
+      ImGui::TextUnformatted(diagnostic->position >= 0 ? "^" : "");
+      ImGui::SameLine();
+      ImGui::TextWrapped("%s", diagnostic->message.c_str());
       ImGui::PopStyleColor();
     }
   }

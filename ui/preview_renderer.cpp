@@ -26,6 +26,7 @@ void PreviewRenderer::publish(const Document& document, int width, int height, i
     RenderJob job = RenderJob::fromProject(project, threads);
     job.width = width;
     job.height = height;
+    job.lowPriority = true;  // the UI thread gets a core first (issue 4: ≥ 30 fps while rendering)
     renderer_.restart(std::move(ifs), job);
     if (paused_) renderer_.pause();
     ++restarts_;

@@ -22,6 +22,7 @@ class PreviewView {
   void render(ModellerState& state, ViewRenderer& renderer);
   /// Copies the preview into the window's framebuffer (see GridView::present).
   void present(int framebufferHeight) const;
+  void hide() { visible_ = false; }
   bool busy() const { return renderer_.busy(); }
   bool dragging() const { return drag_ != 0; }
   const RenderImage& image() const { return image_; }

@@ -1,6 +1,7 @@
 #include "ui/view_renderer.h"
 
 #include <algorithm>
+#include <cstring>
 #include <glm/gtc/type_ptr.hpp>
 
 namespace gridifs::ui {
@@ -11,6 +12,10 @@ ViewRenderer::ViewRenderer()
       background_("fullscreen.vert.glsl", "view_background.frag.glsl"),
       blit_("fullscreen.vert.glsl", "preview_blit.frag.glsl") {
   glGenVertexArrays(1, &emptyVao_);  // core profile: a draw needs a bound VAO even without attributes
+  // Software rasterizers pay for every full-view pass; keep the gradient for real GPUs.
+  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  gradient_ = !(renderer && (std::strstr(renderer, "llvmpipe") || std::strstr(renderer, "softpipe") ||
+                             std::strstr(renderer, "SwiftShader")));
 }
 
 void ViewRenderer::drawScene(const RenderTarget& target, const glm::mat4& viewProjection, const ViewScene& scene,
@@ -20,12 +25,14 @@ void ViewRenderer::drawScene(const RenderTarget& target, const glm::mat4& viewPr
   glDisable(GL_DEPTH_TEST);
   glClearColor(bottom.x, bottom.y, bottom.z, 1.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  glUseProgram(background_.id());
-  glUniform4f(background_.uniform("uRect"), -1.f, -1.f, 1.f, 1.f);
-  glUniform3f(background_.uniform("uTop"), top.x, top.y, top.z);
-  glUniform3f(background_.uniform("uBottom"), bottom.x, bottom.y, bottom.z);
-  glBindVertexArray(emptyVao_);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  if (gradient_) {  // a full-view shader pass: skipped where fill rate is scarce (llvmpipe)
+    glUseProgram(background_.id());
+    glUniform4f(background_.uniform("uRect"), -1.f, -1.f, 1.f, 1.f);
+    glUniform3f(background_.uniform("uTop"), top.x, top.y, top.z);
+    glUniform3f(background_.uniform("uBottom"), bottom.x, bottom.y, bottom.z);
+    glBindVertexArray(emptyVao_);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
 
   glEnable(GL_BLEND);
   glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);

@@ -39,6 +39,7 @@ class ViewRenderer {
   ShaderProgram lines_, nodes_, background_, blit_;
   VertexStream stream_;
   GLuint emptyVao_ = 0;
+  bool gradient_ = true;
 };
 
 }  // namespace gridifs::ui

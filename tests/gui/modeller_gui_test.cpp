@@ -353,3 +353,46 @@ TEST(ModellerGui, SaveIntoReadOnlyFolderKeepsTheOldFileAndShowsAnError) {
   EXPECT_EQ(after, original) << "the old file changed";
   EXPECT_EQ(gridifs::loadProject(project).functions.size(), p.functions.size());
 }
+
+TEST(ModellerGui, AutosaveIsOfferedBackAfterACrash) {
+  if (!haveDisplay()) GTEST_SKIP() << "no X display (run under xvfb-run)";
+  TempFolder home;
+  const fs::path project = exampleCopy(home, "default.gridifs", 300'000);
+  const std::size_t functions = gridifs::loadProject(project).functions.size();
+  {
+    App app(home, {project.string(), "--autosave-seconds", "1"});
+    nlohmann::json probe = app.waitForPreview();
+    const Rect add = rectOf(probe, "functions.add");
+    clickAt(add.x + add.w / 2, add.y + add.h / 2);
+    probe = app.waitFor([](const nlohmann::json& j) { return j["dirty"].get<bool>(); });
+    ASSERT_TRUE(probe["dirty"].get<bool>());
+    // Wait for the autosave, then "crash" (App's destructor kills the process with SIGKILL).
+    const fs::path state = home.path / "state" / "gridifs";
+    const auto end = std::chrono::steady_clock::now() + 20s;
+    bool saved = false;
+    while (!saved && std::chrono::steady_clock::now() < end) {
+      std::error_code ec;
+      for (fs::directory_iterator it(state, ec); !ec && it != fs::directory_iterator(); it.increment(ec))
+        saved = saved || it->path().extension() == ".gridifs";
+      std::this_thread::sleep_for(200ms);
+    }
+    ASSERT_TRUE(saved) << "no recovery file in " << state;
+  }
+  App again(home, {});
+  // Popups settle their size and position over a few frames: wait until the button stays put.
+  nlohmann::json last;
+  nlohmann::json probe = again.waitFor([&](const nlohmann::json& j) {
+    const bool stable = j["rects"].contains("recovery.recover") && !last.is_null() &&
+                        last["rects"].contains("recovery.recover") &&
+                        j["rects"]["recovery.recover"] == last["rects"]["recovery.recover"] && j["frame"] != last["frame"];
+    last = j;
+    return stable;
+  });
+  ASSERT_TRUE(probe["rects"].contains("recovery.recover")) << "no offer to recover";
+  const Rect recover = rectOf(probe, "recovery.recover");
+  clickAt(recover.x + recover.w / 2, recover.y + recover.h / 2);
+  probe = again.waitFor([&](const nlohmann::json& j) { return j["functions"].get<std::size_t>() == functions + 1; });
+  EXPECT_EQ(probe["functions"].get<std::size_t>(), functions + 1);
+  EXPECT_TRUE(probe["dirty"].get<bool>()) << "recovered work must count as unsaved";
+  EXPECT_EQ(fs::path(probe["path"].get<std::string>()), fs::absolute(project));
+}
