@@ -140,8 +140,8 @@ int runExportMesh(const ExportMeshArgs& a) {
   }
   bar.finish();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("%s: F^%d(%s) = %llu copies x %llu faces = %llu faces, %llu vertices (%.2f s)\n", output.c_str(),
-              a.depth, a.base.c_str(), static_cast<unsigned long long>(plan.copies),
+  std::printf("%s: F^%d(%s) = %llu copies x %llu faces = %llu faces, %llu vertices (%.2f s)\n", output.c_str(), a.depth,
+              a.base.c_str(), static_cast<unsigned long long>(plan.copies),
               static_cast<unsigned long long>(plan.base.faces), static_cast<unsigned long long>(plan.total.faces),
               static_cast<unsigned long long>(plan.total.vertices), seconds);
   return kSuccess;
@@ -159,7 +159,8 @@ const VerbRegistration kExportMesh{
        app.add_option("--depth", a->depth, "n in F^n(A): N^n copies of the base mesh")
            ->required()
            ->check(CLI::Range(0, kMaxDeterministicDepth));
-       app.add_option("--base", a->base, "the initial shape A: cube (X = [-1,1]^3), sphere, or a .obj/.ply/.stl/.off file")
+       app.add_option("--base", a->base,
+                      "the initial shape A: cube (X = [-1,1]^3), sphere, or a .obj/.ply/.stl/.off file")
            ->capture_default_str();
        app.add_option("--subdivide", a->subdivide,
                       "subdivision levels of the base (about 4x faces each) so nonlinear functions bend its edges; "
@@ -169,8 +170,9 @@ const VerbRegistration kExportMesh{
        app.add_flag("--smooth", a->smooth, "subdivide with Loop / Catmull-Clark smoothing (rounds the base)");
        app.add_flag("--fit", a->fit, "scale and center a mesh file uniformly into X = [-1,1]^3");
        app.add_flag("--ascii", a->ascii, "write ASCII PLY/STL instead of binary");
-       app.add_option("--threads", a->threads, "worker threads (0: all cores)")->capture_default_str()->check(
-           CLI::NonNegativeNumber);
+       app.add_option("--threads", a->threads, "worker threads (0: all cores)")
+           ->capture_default_str()
+           ->check(CLI::NonNegativeNumber);
        app.add_option("--max-faces", a->maxFaces, "refuse results with more faces than this")
            ->capture_default_str()
            ->check(CLI::PositiveNumber);

@@ -68,12 +68,12 @@ void validateFileMesh(IfsMesh& mesh, const std::string& name) {
   for (auto vh : mesh.vertices())
     if (!mesh.is_isolated(vh) && !mesh.is_manifold(vh)) ++badVertices;
   if (splitFaces > 0 || badVertices > 0)
-    throw ModelError("", name + " is not a manifold mesh (" +
-                             (splitFaces > 0 ? std::to_string(splitFaces) + " face" + (splitFaces == 1 ? "" : "s") +
-                                                   " on edges shared by more than two faces or at pinched vertices"
-                                             : std::to_string(badVertices) + " pinched vertex" +
-                                                   (badVertices == 1 ? "" : "es")) +
-                             "); repair it first, e.g. in MeshLab or Blender");
+    throw ModelError(
+        "", name + " is not a manifold mesh (" +
+                (splitFaces > 0 ? std::to_string(splitFaces) + " face" + (splitFaces == 1 ? "" : "s") +
+                                      " on edges shared by more than two faces or at pinched vertices"
+                                : std::to_string(badVertices) + " pinched vertex" + (badVertices == 1 ? "" : "es")) +
+                "); repair it first, e.g. in MeshLab or Blender");
   for (auto vh : mesh.vertices()) {
     const auto& p = mesh.point(vh);
     if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
@@ -149,9 +149,12 @@ IfsMesh makeUvSphere(int segments, int rings) {
 IfsMesh loadCoarseBase(const BaseMeshSpec& spec) {
   checkSubdivision(spec);
   switch (spec.shape) {
-    case BaseShape::Cube: return makeCube();
-    case BaseShape::Sphere: return makeUvSphere(sphereSegments(0), sphereRings(0));
-    case BaseShape::File: break;
+    case BaseShape::Cube:
+      return makeCube();
+    case BaseShape::Sphere:
+      return makeUvSphere(sphereSegments(0), sphereRings(0));
+    case BaseShape::File:
+      break;
   }
   if (spec.file.empty()) throw ModelError("base", "no base mesh file given");
   IfsMesh mesh = readMeshFile(spec.file);  // throws ModelError naming the file

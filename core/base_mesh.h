@@ -59,12 +59,14 @@ int sphereRings(int subdivision);
 IfsMesh loadCoarseBase(const BaseMeshSpec& spec);
 
 /// The exact counts refineBase(coarse, spec) will have, computed without building it (so an
-/// absurd subdivision level can be refused before it allocates anything).
+/// absurd subdivision level can be refused before it allocates anything). Pure; throws
+/// ModelError for a subdivision level outside 0..kMaxSubdivision.
 MeshCounts predictBaseCounts(const IfsMesh& coarse, const BaseMeshSpec& spec);
 
 /// Subdivides (OpenMesh's Loop or Catmull-Clark subdivider, see SubdivisionScheme) or, for the
 /// sphere, regenerates it at the level's resolution, then triangulates if asked. The result has
-/// contiguous handles (no deleted elements) and no status properties.
+/// contiguous handles (no deleted elements) and no status properties. Thread-safe for distinct
+/// meshes; throws ModelError like predictBaseCounts.
 IfsMesh refineBase(IfsMesh coarse, const BaseMeshSpec& spec);
 
 /// Whether every face of `mesh` is a triangle.

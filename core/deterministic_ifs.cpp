@@ -3,11 +3,11 @@
 #include <algorithm>
 #include <chrono>
 #include <climits>
-#include <condition_variable>
-#include <limits>
 #include <cmath>
+#include <condition_variable>
 #include <cstdio>
 #include <exception>
+#include <limits>
 #include <mutex>
 #include <thread>
 
@@ -179,8 +179,8 @@ DeterministicIfs snapshotDeterministicIfs(const Project& project) {
 DeterministicPlan planDeterministic(const DeterministicIfs& ifs, const MeshCounts& base,
                                     const DeterministicOptions& options) {
   if (options.depth < 0 || options.depth > kMaxDeterministicDepth)
-    throw ModelError("depth", "the depth must be between 0 and " + std::to_string(kMaxDeterministicDepth) +
-                                  ", not " + std::to_string(options.depth));
+    throw ModelError("depth", "the depth must be between 0 and " + std::to_string(kMaxDeterministicDepth) + ", not " +
+                                  std::to_string(options.depth));
   if (ifs.maps.empty())
     throw ModelError("functions", "the IFS has no unmuted function with a positive weight, so F^n(A) is empty");
   DeterministicPlan plan;
@@ -195,8 +195,8 @@ DeterministicPlan planDeterministic(const DeterministicIfs& ifs, const MeshCount
   plan.estimatedBytes = add(add(mul(plan.total.vertices, kBytesPerVertex), mul(plan.total.edges, kBytesPerEdge)),
                             mul(plan.total.faces, kBytesPerFace));
   const std::string what = "F^" + std::to_string(options.depth) + "(A) with " + std::to_string(plan.functionCount) +
-                           " function" + (plan.functionCount == 1 ? "" : "s") + " would have " +
-                           faceCountText(plan) + " faces";
+                           " function" + (plan.functionCount == 1 ? "" : "s") + " would have " + faceCountText(plan) +
+                           " faces";
   // OpenMesh addresses elements with int handles; halfedges are the largest count.
   const std::uint64_t handleLimit = std::uint64_t(INT_MAX);
   if (plan.total.faces > options.limits.maxFaces || plan.total.vertices > handleLimit ||

@@ -73,10 +73,14 @@ std::string lowerExtension(const fs::path& path) {
 
 const char* extensionOf(MeshFormat format) {
   switch (format) {
-    case MeshFormat::Ply: return ".ply";
-    case MeshFormat::Obj: return ".obj";
-    case MeshFormat::Stl: return ".stl";
-    case MeshFormat::Off: return ".off";
+    case MeshFormat::Ply:
+      return ".ply";
+    case MeshFormat::Obj:
+      return ".obj";
+    case MeshFormat::Stl:
+      return ".stl";
+    case MeshFormat::Off:
+      return ".off";
   }
   return ".ply";
 }
@@ -109,10 +113,14 @@ std::optional<MeshFormat> meshFormatFromPath(const fs::path& path) {
 
 const char* meshFormatName(MeshFormat format) {
   switch (format) {
-    case MeshFormat::Ply: return "PLY";
-    case MeshFormat::Obj: return "OBJ";
-    case MeshFormat::Stl: return "STL";
-    case MeshFormat::Off: return "OFF";
+    case MeshFormat::Ply:
+      return "PLY";
+    case MeshFormat::Obj:
+      return "OBJ";
+    case MeshFormat::Stl:
+      return "STL";
+    case MeshFormat::Off:
+      return "OFF";
   }
   return "?";
 }
@@ -123,8 +131,7 @@ bool formatNeedsTriangles(MeshFormat format) { return format == MeshFormat::Stl;
 IfsMesh readMeshFile(const fs::path& file) {
   const std::string name = file.string();
   const auto format = meshFormatFromPath(file);
-  if (!format)
-    throw ModelError("", name + " is not a mesh file OpenMesh can read (use .obj, .ply, .stl or .off)");
+  if (!format) throw ModelError("", name + " is not a mesh file OpenMesh can read (use .obj, .ply, .stl or .off)");
   std::error_code error;
   const fs::file_status status = fs::status(file, error);
   if (error || !fs::exists(status))
@@ -167,10 +174,10 @@ IfsMesh readMeshFile(const fs::path& file) {
 void checkMeshOutputPath(const fs::path& file) {
   const std::string name = file.string();
   if (!meshFormatFromPath(file))
-    throw ModelError("", "cannot write " + name + ": unknown mesh format " +
-                             (file.extension().empty() ? std::string("(no extension)")
-                                                       : "\"" + file.extension().string() + "\"") +
-                             " (use .ply, .obj, .stl or .off)");
+    throw ModelError(
+        "", "cannot write " + name + ": unknown mesh format " +
+                (file.extension().empty() ? std::string("(no extension)") : "\"" + file.extension().string() + "\"") +
+                " (use .ply, .obj, .stl or .off)");
   std::error_code error;
   if (fs::is_directory(file, error)) throw ModelError("", "cannot write " + name + ": it is a folder");
   const fs::path folder = file.has_parent_path() ? file.parent_path() : fs::path(".");
@@ -189,8 +196,7 @@ void checkMeshOutputPath(const fs::path& file) {
 void writeMeshFile(const IfsMesh& mesh, const fs::path& file, const MeshWriteOptions& options) {
   const std::string name = file.string();
   const auto format = meshFormatFromPath(file);
-  if (!format)
-    throw ModelError("", "cannot write " + name + ": unknown mesh format (use .ply, .obj, .stl or .off)");
+  if (!format) throw ModelError("", "cannot write " + name + ": unknown mesh format (use .ply, .obj, .stl or .off)");
   OpenMesh::IO::Options flags;
   if (options.binary && (*format == MeshFormat::Ply || *format == MeshFormat::Stl))
     flags += OpenMesh::IO::Options::Binary;

@@ -42,7 +42,8 @@ void checkMeshOutputPath(const std::filesystem::path& file);
 /// Writes `mesh` to `file` in the format of its extension: a temporary file in the same folder
 /// is written, flushed, synced and renamed over `file`, so `file` is either the old content
 /// or the complete new mesh. Throws IoError (naming the file) on any failure, ModelError for an
-/// unknown extension. The per-face `address` property goes into PLY files only.
+/// unknown extension. The per-face `address` property goes into PLY files only. Thread-safe for
+/// distinct files (OpenMesh's message streams are redirected under the same lock as reading).
 void writeMeshFile(const IfsMesh& mesh, const std::filesystem::path& file, const MeshWriteOptions& options = {});
 
 }  // namespace gridifs

@@ -96,15 +96,16 @@ TEST(CliExportMesh, ColorsAreTheFunctionColorsAtDepthOne) {
 
 TEST(CliExportMesh, BasesAndSubdivision) {
   ScratchDir dir("export-mesh-bases");
-  writeText(dir.path / "tetra.off", "OFF\n4 4 0\n1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n");
+  writeText(dir.path / "tetra.off",
+            "OFF\n4 4 0\n1 1 1\n1 -1 -1\n-1 1 -1\n-1 -1 1\n3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n");
   struct Case {
     std::string args;
     std::size_t faces;
   };
-  for (const Case& c : {Case{"--base sphere", 16 * 128}, Case{"--base sphere --subdivide 1", 16 * 512},
-                        Case{"--subdivide 2", 16 * 96}, Case{"--subdivide 1 --smooth", 16 * 24},
-                        Case{"--base " + quote((dir.path / "tetra.off").string()), 16 * 4},
-                        Case{"--base " + quote((dir.path / "tetra.off").string()) + " --subdivide 2 --fit", 16 * 64}}) {
+  for (const Case& c :
+       {Case{"--base sphere", 16 * 128}, Case{"--base sphere --subdivide 1", 16 * 512}, Case{"--subdivide 2", 16 * 96},
+        Case{"--subdivide 1 --smooth", 16 * 24}, Case{"--base " + quote((dir.path / "tetra.off").string()), 16 * 4},
+        Case{"--base " + quote((dir.path / "tetra.off").string()) + " --subdivide 2 --fit", 16 * 64}}) {
     SCOPED_TRACE(c.args);
     const fs::path out = dir.path / "out.ply";
     const auto r =
@@ -123,7 +124,8 @@ TEST(CliExportMesh, BadInputExitsTwoNamingTheFileAndWritesNothing) {
             "ply\nformat ascii 1.0\nelement vertex 2\nproperty float x\nproperty float y\nproperty float z\n"
             "end_header\n0 0 0\n1 1 1\n");
   writeText(dir.path / "fin.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nf 1 2 3\nf 2 1 4\nf 1 2 5\n");
-  writeText(dir.path / "bad.gridifs", "{\"format\": \"gridifs\", \"version\": 1, \"functions\": [{\"weight\": \"x\"}]}");
+  writeText(dir.path / "bad.gridifs",
+            "{\"format\": \"gridifs\", \"version\": 1, \"functions\": [{\"weight\": \"x\"}]}");
   writeText(dir.path / "old.ply", "previous content");
   fs::create_directories(dir.path / "folder.ply");
   const std::string d = dir.path.string();
@@ -154,14 +156,15 @@ TEST(CliExportMesh, BadInputExitsTwoNamingTheFileAndWritesNothing) {
     EXPECT_EQ(slurp(dir.path / "old.ply"), "previous content");
   }
   // Usage errors are bad input too.
-  for (const std::string& args : std::vector<std::string>{quote(kSierpinski) + " -o " + quote(d + "/x.ply") + " --depth -1",
-                                 quote(kSierpinski) + " -o " + quote(d + "/x.ply"),
-                                 quote(kSierpinski) + " -o " + quote(d + "/x.ply") + " --depth 2 --subdivide 99"}) {
+  for (const std::string& args :
+       std::vector<std::string>{quote(kSierpinski) + " -o " + quote(d + "/x.ply") + " --depth -1",
+                                quote(kSierpinski) + " -o " + quote(d + "/x.ply"),
+                                quote(kSierpinski) + " -o " + quote(d + "/x.ply") + " --depth 2 --subdivide 99"}) {
     const auto r = runGridifs("export-mesh " + args);
     EXPECT_EQ(r.exitCode, 2) << args << ": " << r.err;
   }
-  EXPECT_EQ(entries(dir.path), (std::vector<std::string>{"bad.gridifs", "empty.ply", "fin.obj", "folder.ply",
-                                                         "old.ply", "points.ply"}));
+  EXPECT_EQ(entries(dir.path),
+            (std::vector<std::string>{"bad.gridifs", "empty.ply", "fin.obj", "folder.ply", "old.ply", "points.ply"}));
 }
 
 TEST(CliExportMesh, FaceLimitRefusesBeforeWork) {

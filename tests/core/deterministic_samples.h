@@ -1,14 +1,14 @@
 #pragma once
 // Shared fixtures for the deterministic-algorithm tests (seed 004 §3.2): affine IFSs built from
 // 2×2×2 grids (trilinear interpolation of an affine map is exact), and mesh measurements.
+#include <unistd.h>
+
 #include <array>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <string>
-#include <unistd.h>
-
 #include <glm/geometric.hpp>
+#include <string>
 
 #include "core/ifs_mesh.h"
 #include "core/project.h"

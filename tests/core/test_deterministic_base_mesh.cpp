@@ -133,8 +133,8 @@ TEST(BaseMesh, PredictedCountsMatchEverySchemeAndTriangulation) {
     const IfsMesh coarse = loadCoarseBase(spec);
     const MeshCounts predicted = predictBaseCounts(coarse, spec);
     const IfsMesh refined = refineBase(coarse, spec);
-    EXPECT_EQ(predicted, countMesh(refined)) << "shape " << int(spec.shape) << " S=" << spec.subdivision
-                                             << " triangulate " << spec.triangulate;
+    EXPECT_EQ(predicted, countMesh(refined))
+        << "shape " << int(spec.shape) << " S=" << spec.subdivision << " triangulate " << spec.triangulate;
     if (spec.triangulate) {
       EXPECT_TRUE(allTriangles(refined));
     }
@@ -199,10 +199,10 @@ TEST(BaseMesh, BadFilesAreRefusedNamingTheFile) {
     const char* name;
     const char* expect;
   };
-  for (const Case c : {Case{"missing.obj", "cannot read"}, Case{"empty.obj", "empty"},
-                       Case{"points.ply", "no faces"}, Case{"vertices_only.obj", "no faces"},
-                       Case{"fin.obj", "not a manifold"}, Case{"bowtie.obj", "not a manifold"},
-                       Case{"truncated.ply", ""}, Case{"hostile.off", ""}, Case{"notes.txt", "not a mesh file"}, Case{"folder.obj", "folder"}}) {
+  for (const Case c : {Case{"missing.obj", "cannot read"}, Case{"empty.obj", "empty"}, Case{"points.ply", "no faces"},
+                       Case{"vertices_only.obj", "no faces"}, Case{"fin.obj", "not a manifold"},
+                       Case{"bowtie.obj", "not a manifold"}, Case{"truncated.ply", ""}, Case{"hostile.off", ""},
+                       Case{"notes.txt", "not a mesh file"}, Case{"folder.obj", "folder"}}) {
     const std::string message = errorOf(fileSpec(path(c.name)));
     EXPECT_NE(message.find(path(c.name)), std::string::npos) << c.name << ": " << message;
     EXPECT_NE(message.find(c.expect), std::string::npos) << c.name << ": " << message;
@@ -213,8 +213,9 @@ TEST(BaseMesh, BadFilesAreRefusedNamingTheFile) {
 TEST(BaseMesh, FitScalesIntoTheCubeAndLooseVerticesGo) {
   TempFolder folder("base-fit");
   // A tetrahedron far from X, plus an unused vertex.
-  writeFile(folder / "far.off", "OFF\n5 4 0\n11 11 11\n11 9 9\n9 11 9\n9 9 11\n50 50 50\n"
-                                "3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n");
+  writeFile(folder / "far.off",
+            "OFF\n5 4 0\n11 11 11\n11 9 9\n9 11 9\n9 9 11\n50 50 50\n"
+            "3 0 1 2\n3 0 3 1\n3 0 2 3\n3 1 3 2\n");
   BaseMeshSpec spec = fileSpec(folder / "far.off");
   EXPECT_EQ(loadCoarseBase(spec).n_vertices(), 4u);  // the loose vertex is dropped
   EXPECT_GT(maxAbsCoordinate(loadCoarseBase(spec)), 8.0f);

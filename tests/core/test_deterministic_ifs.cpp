@@ -74,8 +74,8 @@ TEST(DeterministicIfs, CountsAreExactlyCopiesTimesBase) {
     for (int depth = 0; depth <= 3; ++depth) {
       const DeterministicMesh out = run(project, spec, depth);
       const std::uint64_t copies = power(4, depth);
-      SCOPED_TRACE("shape " + std::to_string(int(c.shape)) + " S=" + std::to_string(c.subdivision) +
-                   " depth " + std::to_string(depth));
+      SCOPED_TRACE("shape " + std::to_string(int(c.shape)) + " S=" + std::to_string(c.subdivision) + " depth " +
+                   std::to_string(depth));
       EXPECT_EQ(out.mesh.n_faces(), copies * base.faces);
       EXPECT_EQ(out.mesh.n_vertices(), copies * base.vertices);
       EXPECT_EQ(out.mesh.n_edges(), copies * base.edges);
@@ -242,8 +242,8 @@ TEST(DeterministicIfs, TopologyIsTheBaseReplicated) {
   mesh.request_edge_status();
   mesh.request_face_status();
   std::ostringstream report;
-  EXPECT_TRUE(OpenMesh::Utils::MeshCheckerT<IfsMesh>(mesh).check(OpenMesh::Utils::MeshCheckerT<IfsMesh>::CHECK_ALL,
-                                                                     report))
+  EXPECT_TRUE(
+      OpenMesh::Utils::MeshCheckerT<IfsMesh>(mesh).check(OpenMesh::Utils::MeshCheckerT<IfsMesh>::CHECK_ALL, report))
       << report.str();
   const std::size_t V = base.n_vertices(), F = base.n_faces();
   for (std::size_t f = 0; f < mesh.n_faces(); ++f) {
@@ -342,8 +342,7 @@ TEST(DeterministicIfs, ProgressIsMonotoneAndCancellationStops) {
   EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
   EXPECT_EQ(seen.back(), 1.0);
 
-  EXPECT_THROW(buildDeterministicMesh(ifs, makeCube(), options, [](double) { return false; }),
-               DeterministicCancelled);
+  EXPECT_THROW(buildDeterministicMesh(ifs, makeCube(), options, [](double) { return false; }), DeterministicCancelled);
   std::atomic<bool> cancel{true};
   EXPECT_THROW(buildDeterministicMesh(ifs, makeCube(), options, {}, &cancel), DeterministicCancelled);
 }

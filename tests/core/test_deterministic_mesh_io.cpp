@@ -99,8 +99,8 @@ TEST(MeshIo, EveryFormatLoadsBackWithItsColors) {
     for (auto fh : mesh.faces()) ASSERT_EQ(mesh.valence(fh), written.valence(fh));
   }
   // Only the finished files are left: the temporaries were renamed.
-  EXPECT_EQ(folderEntries(folder.path), (std::vector<fs::path>{"ascii.ply", "ascii.stl", "out.obj", "out.off",
-                                                                "out.ply", "out.stl"}));
+  EXPECT_EQ(folderEntries(folder.path),
+            (std::vector<fs::path>{"ascii.ply", "ascii.stl", "out.obj", "out.off", "out.ply", "out.stl"}));
 }
 
 TEST(MeshIo, PlyCarriesTheFaceAddress) {
