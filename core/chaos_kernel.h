@@ -237,6 +237,7 @@ template <class Plot>
   }
   static_assert(kLanes == 4);
   for (int l = 0; l < int(count % kLanes); ++l) plotted += stepLane(local, l, ifs, plot, bad);
+  if constexpr (requires { plot.flush(); }) plot.flush();
   st = local;
   counters.samples += count;
   counters.bad += bad;
@@ -306,7 +307,35 @@ struct ZBufferPlot {
   /// the blended RGB; lane 3 still sums c.
   const v4f* palette = nullptr;
 
-  [[gnu::always_inline]] int operator()(v4f q, v4f col) const {
+  /// Without colour sums, each plot is deferred by kDefer samples: the cell is prefetched now and
+  /// read-modify-written later, so the cache miss (the buffers are far larger than the caches)
+  /// overlaps the next samples' arithmetic instead of stalling it. The z-test is a minimum and the
+  /// density a sum, so the deferral changes nothing in the result. runChain calls flush().
+  static constexpr unsigned kDefer = 8;
+  struct Pending {
+    PixelCell* cell = nullptr;
+    std::uint64_t key = 0;
+  };
+  Pending pending[kDefer] = {};
+  unsigned next = 0;
+
+  [[gnu::always_inline]] static void commit(PixelCell& cell, std::uint64_t key) {
+    std::atomic_ref<std::uint64_t> z(cell.key);
+    if (key < z.load(std::memory_order_relaxed)) z.store(key, std::memory_order_relaxed);
+    std::atomic_ref<std::uint32_t> d(cell.density);
+    const std::uint32_t n = d.load(std::memory_order_relaxed);
+    d.store(n + (n != 0xFFFFFFFFu), std::memory_order_relaxed);  // saturating
+  }
+
+  void flush() {
+    for (Pending& p : pending)
+      if (p.cell) {
+        commit(*p.cell, p.key);
+        p.cell = nullptr;
+      }
+  }
+
+  [[gnu::always_inline]] int operator()(v4f q, v4f col) {
     const v4f r = cam.cx * splat<0>(q) + cam.cy * splat<1>(q) + cam.cz * splat<2>(q) + cam.c1;
     const float depth = r[3];
     if (!(depth > cam.nearPlane)) return 0;
@@ -316,11 +345,14 @@ struct ZBufferPlot {
     const std::size_t pixel = std::size_t(std::uint32_t(ixy[1])) * cam.stride + std::uint32_t(ixy[0]);
     const std::uint64_t key = (std::uint64_t(std::bit_cast<std::uint32_t>(depth)) << 32) | packColor(col);
     PixelCell& cell = cells[pixel];
-    std::atomic_ref<std::uint64_t> z(cell.key);
-    if (key < z.load(std::memory_order_relaxed)) z.store(key, std::memory_order_relaxed);
-    std::atomic_ref<std::uint32_t> d(cell.density);
-    const std::uint32_t n = d.load(std::memory_order_relaxed);
-    d.store(n + (n != 0xFFFFFFFFu), std::memory_order_relaxed);  // saturating
+    if constexpr (!kAccumulateColor) {
+      __builtin_prefetch(&cell, 1);
+      Pending& slot = pending[next++ % kDefer];
+      if (slot.cell) commit(*slot.cell, slot.key);
+      slot = {&cell, key};
+      return 1;
+    }
+    commit(cell, key);
     if constexpr (kAccumulateColor) {
       v4f add = col;
       if (palette) {  // flam3's linear palette mode: index c·256, blend entries i and i+1
