@@ -425,7 +425,7 @@ int runModeller(const std::string& file, int argc, char** argv) {
   glfwSwapInterval(options.screenshot.empty() ? 1 : 0);
   float xscale = 1.0f, yscale = 1.0f;
   glfwGetWindowContentScale(window, &xscale, &yscale);
-  const float scale = std::clamp(std::max(xscale, yscale), 1.0f, 4.0f);
+  const float scale = options.uiScale > 0.0f ? options.uiScale : std::clamp(std::max(xscale, yscale), 1.0f, 4.0f);
 
   // Our key callback first; ImGui_ImplGlfw_InitForOpenGL chains it.
   glfwSetKeyCallback(window, [](GLFWwindow* w, int key, int, int action, int mods) {

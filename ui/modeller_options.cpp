@@ -42,6 +42,9 @@ std::optional<std::string> parseModellerOptions(int argc, char** argv, ModellerO
     } else if (arg == "--render-threads") {
       if (!next(value) || !number(value, n) || n < 1 || n > 64) return "--render-threads needs 1..64";
       out.renderThreads = int(n);
+    } else if (arg == "--ui-scale") {
+      if (!next(value) || !number(value, n) || n < 0.5 || n > 4) return "--ui-scale needs a scale between 0.5 and 4";
+      out.uiScale = float(n);
     } else if (arg == "--stats") {
       out.stats = true;
     } else if (!arg.empty() && arg[0] == '-') {

@@ -7,6 +7,7 @@
 //   --probe FILE           write widget rectangles and state as JSON every few frames (tests)
 //   --autosave-seconds S   autosave interval (default 60)
 //   --stats                print frame-time statistics on exit
+//   --ui-scale S           override the monitor content scale (HiDPI checks on any display)
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -23,6 +24,7 @@ struct ModellerOptions {
   double autosaveSeconds = 60.0;
   bool stats = false;
   int renderThreads = 0;  // 0: hardware threads minus one (the UI keeps a core)
+  float uiScale = 0.0f;   // 0: the monitor's content scale
 };
 
 /// Parses argv (argv[0] is the program; a leading FILE argument is skipped when it equals

@@ -45,7 +45,8 @@ void drawStatusBar(ModellerState& state, float height) {
   ImGui::SameLine();
   ImGui::TextDisabled("  |  ");
   ImGui::SameLine();
-  const bool recentMessage = !state.statusText.empty() && (state.statusIsError || state.now - state.statusTime < 6.0);
+  // Messages fade after a while (errors stay longer); dialogs keep the full text meanwhile.
+  const bool recentMessage = !state.statusText.empty() && state.now - state.statusTime < (state.statusIsError ? 15.0 : 6.0);
   if (recentMessage && (state.contextHelp.empty() || state.statusIsError)) {
     ImGui::TextColored(state.statusIsError ? ImVec4(1.0f, 0.45f, 0.35f, 1.0f) : ImVec4(0.6f, 0.85f, 1.0f, 1.0f), "%s",
                        state.statusText.c_str());

@@ -396,3 +396,17 @@ TEST(ModellerGui, AutosaveIsOfferedBackAfterACrash) {
   EXPECT_TRUE(probe["dirty"].get<bool>()) << "recovered work must count as unsaved";
   EXPECT_EQ(fs::path(probe["path"].get<std::string>()), fs::absolute(project));
 }
+
+TEST(ModellerGui, AFileThatDoesNotLoadIsReportedNotFatal) {
+  if (!haveDisplay()) GTEST_SKIP() << "no X display (run under xvfb-run)";
+  TempFolder home;
+  const fs::path bad = home.path / "bad.gridifs";
+  std::ofstream(bad) << R"({"format": "gridifs", "version": 1, "functions": [{"name": "f", "resolution": [6, 6, "x"]}]})";
+  App app(home, {bad.string()});
+  const nlohmann::json probe = app.waitFor([](const nlohmann::json& j) { return j["modal"].get<bool>(); }, 15s);
+  EXPECT_TRUE(probe["modal"].get<bool>()) << "no error dialog";
+  const std::string status = probe["status"];
+  EXPECT_NE(status.find("functions[0].resolution[2]"), std::string::npos) << status;
+  EXPECT_EQ(probe["functions"].get<int>(), 1) << "the default project stays open";
+  EXPECT_EQ(probe["path"], "");
+}
