@@ -99,7 +99,7 @@ void drawFunctionsPanel(ModellerState& state, EditQueue& edits) {
 
   // The list: mute, color, name, weight.
   const float rowHeight = ImGui::GetFrameHeightWithSpacing();
-  const float listHeight = std::clamp(rowHeight * float(count) + 8.0f, rowHeight * 2.5f, rowHeight * 4.6f);
+  const float listHeight = std::clamp(rowHeight * float(count) + 8.0f, rowHeight * 2.2f, rowHeight * 4.2f);
   if (ImGui::BeginTable("functions", 4,
                         ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersOuter | ImGuiTableFlags_ScrollY,
                         ImVec2(0, listHeight))) {
