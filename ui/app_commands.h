@@ -8,12 +8,15 @@
 
 namespace gridifs::ui {
 
+class ExportDialog;
+
 struct AppCommands {
   ModellerState& state;
   EditQueue& edits;
   ProjectFiles& files;
   std::function<void()> frameViews;   // F: frame the hovered view, or all of them
   std::function<void()> resetLayout;  // put every window back where it starts
+  ExportDialog* exporter = nullptr;   // File > Export mesh / points (ui/export_dialog.h)
 };
 
 /// menu_bar.cpp: File, Edit, Function, Operation, Select, View, Help (room for Export).

@@ -5,6 +5,7 @@
 
 #include "core/node_picking.h"
 #include "ui/app_commands.h"
+#include "ui/export_dialog.h"
 #include "ui/panels.h"
 
 namespace gridifs::ui {
@@ -45,6 +46,10 @@ float drawMenuBar(AppCommands& app) {
     if (ImGui::MenuItem("Save", "Ctrl+S")) app.files.save();
     if (ImGui::MenuItem("Save As...", "Ctrl+Shift+S")) app.files.saveAsDialog();
     ImGui::Separator();
+    if (app.exporter) {
+      app.exporter->drawMenuItems(s);  // issue 5: Export mesh..., Export points...
+      ImGui::Separator();
+    }
     if (ImGui::MenuItem("Quit", "Ctrl+Q")) app.files.requestQuit();
     ImGui::EndMenu();
   }
@@ -92,6 +97,10 @@ float drawMenuBar(AppCommands& app) {
       // Issue 6 adds the flame display here; the deterministic mesh preview (issue 5) too.
       if (ImGui::MenuItem("Z-buffer (nearest point)", nullptr, s.previewMode == PreviewMode::ZBuffer))
         s.previewMode = PreviewMode::ZBuffer;
+      if (ImGui::MenuItem("Flame (log density)", nullptr, s.previewMode == PreviewMode::Flame))
+        s.previewMode = PreviewMode::Flame;
+      if (ImGui::MenuItem("Mesh F^n(A) (deterministic)", nullptr, s.previewMode == PreviewMode::Mesh))
+        s.previewMode = PreviewMode::Mesh;
       ImGui::EndMenu();
     }
     if (ImGui::MenuItem(s.previewPaused ? "Resume preview" : "Pause preview", "Space")) s.previewPaused = !s.previewPaused;

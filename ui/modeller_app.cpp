@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "ui/app_commands.h"
+#include "ui/export_dialog.h"
 #include "ui/grid_view.h"
 #include "ui/modeller_options.h"
 #include "ui/panels.h"
@@ -81,7 +82,7 @@ class ModellerApp {
     iniPath_ = (files_.folders().config / "imgui.ini").string();
     ImGui::GetIO().IniFilename = iniPath_.c_str();
     commands_ = std::make_unique<AppCommands>(AppCommands{state_, edits_, files_, [this] { frameViews(); },
-                                                          [this] { resetLayout_ = true; }});
+                                                          [this] { resetLayout_ = true; }, &export_});
   }
 
   ~ModellerApp() {
@@ -112,6 +113,7 @@ class ModellerApp {
   std::array<GridView, 4> views_;
   GridView ifsView_;
   PreviewView preview_;
+  ExportDialog export_;  // File > Export (issue 5)
   std::unique_ptr<AppCommands> commands_;
   std::string iniPath_, title_;
   bool resetLayout_ = false;
@@ -218,6 +220,7 @@ void ModellerApp::buildUi() {
 
   drawHelpWindow(state_);
   files_.draw(edits_);
+  export_.draw(state_);
   if (!state_.gridError.empty() && state_.statusText != state_.gridError) state_.error(state_.gridError);
   drawStatusBar(state_, statusHeight);
 }
@@ -250,6 +253,8 @@ void ModellerApp::writeProbe(double frameMs) {
   nlohmann::json rects = nlohmann::json::object();
   for (const auto& [name, r] : state_.probe.rects) rects[name] = {r.x, r.y, r.z, r.w};
   j["rects"] = rects;
+  j["preview_modes"] = preview_.modes().probeJson();
+  j["export"] = export_.probeJson();
   // Node positions in the Top view (window coordinates), so a test can press on a real node.
   nlohmann::json nodes = nlohmann::json::array();
   for (const glm::dvec2& p : views_[0].screenNodes(state_)) nodes.push_back({p.x, p.y});
@@ -280,7 +285,7 @@ int ModellerApp::run() {
   for (;;) {
     // 1. Poll. Idle windows wait for input (redraw on demand); a filling preview, a drag or
     //    a capture keeps the loop animating.
-    const bool animate = capture || preview_.busy() || quietFrames < 3 || ImGui::IsAnyMouseDown();
+    const bool animate = capture || preview_.busy() || export_.running() || quietFrames < 3 || ImGui::IsAnyMouseDown();
     if (animate) {
       glfwPollEvents();
     } else {

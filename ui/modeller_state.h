@@ -16,7 +16,7 @@
 namespace gridifs::ui {
 
 /// What the preview shows; later modes (flame display, deterministic mesh) join this list.
-enum class PreviewMode { ZBuffer };
+enum class PreviewMode { ZBuffer, Flame, Mesh };  // Flame: issue 6; Mesh: F^n(A), issue 5
 
 class ModellerState {
  public:

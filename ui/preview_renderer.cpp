@@ -1,6 +1,7 @@
 #include "ui/preview_renderer.h"
 
 #include "core/compiled_ifs.h"
+#include "ui/flame_display.h"
 
 namespace gridifs::ui {
 
@@ -19,6 +20,11 @@ void PreviewRenderer::publish(const Document& document, int width, int height, i
   Project relevant = project;
   relevant.render.background = Vec3(0.0);
   relevant.render.depth_cue = 0.0;
+  // The flame display (issue 6) is developed from the same buffers (ui/flame_display.cpp): the
+  // mode and the tone mapping need no restart; only the palette is looked up per sample.
+  relevant.render.mode = DisplayMode::ZBuffer;
+  relevant.render.flame = FlameSettings{};
+  relevant.render.flame.palette = project.render.flame.palette;
   if (havePublished_ && relevant == published_ && width == width_ && height == height_ && threads == threads_)
     return;
   try {
@@ -27,6 +33,7 @@ void PreviewRenderer::publish(const Document& document, int width, int height, i
     job.width = width;
     job.height = height;
     job.lowPriority = true;  // the UI thread gets a core first (issue 4: ≥ 30 fps while rendering)
+    job = previewFlameJob(job, document);  // color sums always on: the mode switch is instant
     renderer_.restart(std::move(ifs), job);
     if (paused_) renderer_.pause();
     ++restarts_;

@@ -55,6 +55,9 @@ void PreviewView::build(ModellerState& state, EditQueue& edits, float framebuffe
   gestureItem(edits, "Background", changed, [bg](Project& p) { p.render.background = Vec3(bg[0], bg[1], bg[2]); });
   contextHelp(state, "Background color of the preview and of renders");
 
+  // Display mode and its controls (issues 5, 6: ui/preview_modes.cpp).
+  modes_.buildToolbar(state, edits);
+
   // Progress.
   const RenderStats& s = state.previewStats;
   const float progress = s.budget > 0 ? float(std::min(1.0, s.progress())) : 0.0f;
@@ -130,7 +133,8 @@ void PreviewView::build(ModellerState& state, EditQueue& edits, float framebuffe
 }
 
 void PreviewView::publish(ModellerState& state) {
-  renderer_.setPaused(state.previewPaused);
+  // The mesh mode shows F^n(A) instead: the chaos game waits (same generation) so the mesh builds faster.
+  renderer_.setPaused(state.previewPaused || state.previewMode == PreviewMode::Mesh);
   const int w = int(std::lround(size_.x * framebufferScale_)), h = int(std::lround(size_.y * framebufferScale_));
   renderer_.publish(state.document, w, h, state.renderThreads);
   state.previewError = renderer_.error().empty() ? std::string() : "Preview stopped: " + renderer_.error();
@@ -144,12 +148,15 @@ void PreviewView::render(ModellerState& state, ViewRenderer& renderer) {
   const RenderStats s = renderer_.stats();
   const bool newGeneration = s.generation != image_.generation;
   const bool due = newGeneration || s.done || state.now - lastFetch_ >= 0.05;
-  if (due && renderer_.fetch(image_) && image_.width > 0) {
-    lastFetch_ = state.now;
-    texture_.upload(image_.width, image_.height, image_.rgba.data());
-    needsDraw_ = true;
-  }
+  const bool fetched = due && renderer_.fetch(image_) && image_.width > 0;
+  if (fetched) lastFetch_ = state.now;
+  // The display mode decides what the texture shows: the z-buffer image or the developed flame.
+  if (modes_.updateTexture(state, image_, fetched, texture_)) needsDraw_ = true;
   const int w = int(std::lround(size_.x * framebufferScale_)), h = int(std::lround(size_.y * framebufferScale_));
+  if (modes_.drawMesh(state, target_, w, h, visible_)) {  // F^n(A) drawn into the view's target
+    needsDraw_ = true;  // the image is drawn again when the mode changes back
+    return;
+  }
   const Vec3 bg = state.document.project().render.background;
   if (w != target_.width() || h != target_.height() || !(bg == drawnBackground_)) needsDraw_ = true;
   if (!needsDraw_ || !visible_) return;

@@ -8,6 +8,7 @@
 #include "ui/gl_resources.h"
 #include "ui/modeller_state.h"
 #include "ui/preview_renderer.h"
+#include "ui/preview_modes.h"
 #include "ui/view_renderer.h"
 
 namespace gridifs::ui {
@@ -23,13 +24,16 @@ class PreviewView {
   /// Copies the preview into the window's framebuffer (see GridView::present).
   void present(int framebufferHeight) const;
   void hide() { visible_ = false; }
-  bool busy() const { return renderer_.busy(); }
+  bool busy() const { return renderer_.busy() || modes_.busy(); }
   bool dragging() const { return drag_ != 0; }
   const RenderImage& image() const { return image_; }
   std::uint64_t restarts() const { return renderer_.restarts(); }
+  /// The display modes (z-buffer, flame, mesh: ui/preview_modes.h).
+  const PreviewModes& modes() const { return modes_; }
 
  private:
   PreviewRenderer renderer_;
+  PreviewModes modes_;
   RenderImage image_;
   StreamTexture texture_;
   RenderTarget target_;

@@ -1,0 +1,446 @@
+#include "ui/export_dialog.h"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <bit>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+
+#include "core/compiled_ifs.h"
+#include "core/mesh_io.h"
+#include "core/project_io.h"
+#include "ui/widgets.h"
+
+namespace gridifs::ui {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr std::int64_t kMaxGuiPointSamples = 1'000'000'000;  // as the CLI: 15 GB of PLY
+
+std::string withThousands(std::uint64_t n) {
+  std::string digits = std::to_string(n), out;
+  for (std::size_t i = 0; i < digits.size(); ++i) {
+    if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
+    out += digits[i];
+  }
+  return out;
+}
+
+std::string megabytes(std::uint64_t bytes) {
+  char text[32];
+  if (bytes >= (std::uint64_t(1) << 30)) std::snprintf(text, sizeof text, "%.1f GB", double(bytes) / double(1 << 30));
+  else std::snprintf(text, sizeof text, "%.1f MB", double(bytes) / double(1 << 20));
+  return text;
+}
+
+/// The PLY of `gridifs export-points` (binary little-endian, x y z float, red green blue uchar).
+/// The header is written with a placeholder count and rewritten at the same length at the end.
+std::string pointsHeader(std::uint64_t count, const std::string& description) {
+  const std::string pad = "comment " + std::string(24 - std::to_string(count).size(), '-') + "\n";
+  return "ply\nformat binary_little_endian 1.0\ncomment " + description + "\n" + pad + "element vertex " +
+         std::to_string(count) +
+         "\nproperty float x\nproperty float y\nproperty float z\nproperty uchar red\nproperty uchar green\n"
+         "property uchar blue\nend_header\n";
+}
+
+/// Streams the chaos-game points of `job` into `out` through a temporary file in the same folder
+/// that is renamed over `out` only when everything was written (DESIGN §4: nothing half-written).
+/// Throws IoError naming the file, DeterministicCancelled when cancelled.
+std::uint64_t writePointCloud(const CompiledIfs& ifs, const RenderJob& job, const fs::path& out,
+                              const std::string& description, std::atomic<double>& progress,
+                              const std::atomic<bool>& cancel) {
+  const fs::path temp = out.parent_path() / ("." + out.filename().string() + ".tmp-" + std::to_string(::getpid()));
+  std::FILE* f = std::fopen(temp.c_str(), "wb");
+  if (!f) throw IoError("cannot write " + out.string() + ": " + std::strerror(errno));
+  struct Cleanup {
+    std::FILE*& f;
+    const fs::path& temp;
+    bool keep = false;
+    ~Cleanup() {
+      if (f) std::fclose(f);
+      std::error_code ec;
+      if (!keep) fs::remove(temp, ec);
+    }
+  } cleanup{f, temp};
+  auto write = [&](const void* data, std::size_t bytes) {
+    if (bytes && std::fwrite(data, 1, bytes, f) != bytes)
+      throw IoError("cannot write " + out.string() + ": " + std::strerror(errno));
+  };
+  const std::string header0 = pointsHeader(0, description);
+  write(header0.data(), header0.size());
+  std::vector<unsigned char> record;
+  std::uint64_t written = 0;
+  bool cancelled = false;
+  const RenderStats stats = generatePoints(ifs, job, [&](const PointBatch& batch, const RenderStats& s) {
+    record.resize(batch.count * 15);
+    unsigned char* w = record.data();
+    for (std::size_t i = 0; i < batch.count; ++i, w += 15) {
+      for (int d = 0; d < 3; ++d) {
+        std::uint32_t bits = std::bit_cast<std::uint32_t>(batch.xyz[3 * i + d]);
+        if constexpr (std::endian::native == std::endian::big) bits = __builtin_bswap32(bits);
+        std::memcpy(w + 4 * d, &bits, 4);
+      }
+      for (int c = 0; c < 3; ++c)
+        w[12 + c] = (unsigned char)std::lround(std::clamp(batch.rgb[3 * i + c], 0.0f, 1.0f) * 255.0f);
+    }
+    write(record.data(), record.size());
+    written += batch.count;
+    progress = s.progress();
+    cancelled = cancel.load();
+    return !cancelled;
+  });
+  if (cancelled) throw DeterministicCancelled();
+  if (stats.badFraction() >= 0.5)
+    throw IoError(std::to_string(int(std::lround(100 * stats.badFraction()))) +
+                  "% of the chaos-game points were non-finite or escaped, so the IFS has no usable attractor; " +
+                  out.string() + " was not written");
+  const std::string header = pointsHeader(written, description);
+  if (std::fseek(f, 0, SEEK_SET) != 0) throw IoError("cannot write " + out.string() + ": " + std::strerror(errno));
+  write(header.data(), header.size());
+  if (std::fflush(f) != 0 || ::fsync(::fileno(f)) != 0)
+    throw IoError("cannot write " + out.string() + ": " + std::strerror(errno));
+  const int closed = std::fclose(f);
+  f = nullptr;
+  if (closed != 0) throw IoError("cannot write " + out.string() + ": " + std::strerror(errno));
+  std::error_code ec;
+  fs::rename(temp, out, ec);
+  if (ec) throw IoError("cannot write " + out.string() + ": " + ec.message());
+  cleanup.keep = true;
+  return written;
+}
+
+fs::path defaultFolder(const ModellerState& state) {
+  std::error_code ec;
+  if (!state.document.path().empty()) return state.document.path().parent_path();
+  return fs::current_path(ec);
+}
+
+std::string defaultOutput(const ModellerState& state, const char* suffix) {
+  const std::string stem = state.document.path().empty() ? "untitled" : state.document.path().stem().string();
+  return (defaultFolder(state) / (stem + suffix)).string();
+}
+
+}  // namespace
+
+ExportDialog::~ExportDialog() {
+  cancel_ = true;
+  join();
+}
+
+void ExportDialog::join() {
+  if (worker_.joinable()) worker_.join();
+}
+
+void ExportDialog::drawMenuItems(ModellerState& state) {
+  if (ImGui::MenuItem("Export mesh...", nullptr, false, !running())) open(Kind::Mesh, state);
+  state.probe.item("menu.export_mesh");
+  if (ImGui::MenuItem("Export points...", nullptr, false, !running())) open(Kind::Points, state);
+  state.probe.item("menu.export_points");
+}
+
+void ExportDialog::open(Kind kind, const ModellerState& state) {
+  if (running()) return;
+  kind_ = kind;
+  open_ = true;
+  justOpened_ = true;
+  phase_ = Phase::Options;
+  message_.clear();
+  if (meshOutput_.empty()) meshOutput_ = defaultOutput(state, "-mesh.ply");
+  if (pointsOutput_.empty()) pointsOutput_ = defaultOutput(state, "-points.ply");
+  plan_.valid = false;
+}
+
+void ExportDialog::updatePlan(const ModellerState& state) {
+  if (plan_.valid && plan_.revision == state.document.revision() && plan_.depth == depth_ &&
+      plan_.subdivide == subdivide_ && plan_.base == base_ && plan_.baseFile == baseFile_ &&
+      plan_.smooth == smooth_ && plan_.fit == fit_ && plan_.output == meshOutput_)
+    return;
+  plan_.valid = true;
+  plan_.revision = state.document.revision();
+  plan_.depth = depth_;
+  plan_.subdivide = subdivide_;
+  plan_.base = base_;
+  plan_.baseFile = baseFile_;
+  plan_.smooth = smooth_;
+  plan_.fit = fit_;
+  plan_.output = meshOutput_;
+  plan_.error.clear();
+  try {
+    const auto format = meshFormatFromPath(meshOutput_);
+    BaseMeshSpec spec;
+    spec.shape = base_ == 0 ? BaseShape::Cube : base_ == 1 ? BaseShape::Sphere : BaseShape::File;
+    spec.file = baseFile_;
+    spec.subdivision = subdivide_;
+    spec.scheme = smooth_ ? SubdivisionScheme::Smooth : SubdivisionScheme::Flat;
+    spec.triangulate = format && formatNeedsTriangles(*format);
+    spec.fitToCube = fit_;
+    DeterministicOptions options;
+    options.depth = depth_;
+    if (spec.shape == BaseShape::File && baseFile_.empty()) throw ModelError("", "choose a base mesh file");
+    plan_.plan = planDeterministic(snapshotDeterministicIfs(state.document), spec, options);
+  } catch (const std::exception& e) {
+    plan_.error = e.what();
+  }
+}
+
+void ExportDialog::drawMeshOptions(ModellerState& state) {
+  const float em = ImGui::GetFontSize();
+  ImGui::PushItemWidth(em * 16.0f);
+  ImGui::SliderInt("Depth n", &depth_, 0, 12, "%d", ImGuiSliderFlags_AlwaysClamp);
+  state.probe.frame("export.depth");
+  ImGui::SameLine();
+  helpMarker("n in F^n(A): the mesh is N^n transformed copies of the base (seed 004 §3.2)");
+  static const char* bases[] = {"Cube", "Sphere", "Mesh file"};
+  ImGui::Combo("Base A", &base_, bases, 3);
+  state.probe.frame("export.base");
+  if (base_ == 2) {
+    ImGui::InputText("Base file", &baseFile_);
+    ImGui::SameLine();
+    if (ImGui::Button("Browse...##base")) {
+      browsing_ = Browsing::Base;
+      browser_.open(FileBrowser::Mode::Open, defaultFolder(state));
+    }
+    ImGui::Checkbox("Fit into X = [-1, 1]^3", &fit_);
+  }
+  ImGui::SliderInt("Subdivide", &subdivide_, 0, kMaxSubdivision, "%d", ImGuiSliderFlags_AlwaysClamp);
+  state.probe.frame("export.subdivide");
+  ImGui::SameLine();
+  helpMarker("Subdivision levels of the base (about 4x faces each), so nonlinear functions bend its edges smoothly");
+  ImGui::Checkbox("Smooth subdivision", &smooth_);
+  ImGui::SameLine();
+  ImGui::Checkbox("ASCII", &ascii_);
+  ImGui::PopItemWidth();
+
+  updatePlan(state);
+  ImGui::Spacing();
+  if (!plan_.error.empty()) {
+    ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "%s", plan_.error.c_str());
+  } else {
+    const DeterministicPlan& p = plan_.plan;
+    ImGui::Text("%zu^%d = %s copies x %s faces = %s faces, %s vertices", p.functionCount, p.depth,
+                withThousands(p.copies).c_str(), withThousands(p.base.faces).c_str(),
+                withThousands(p.total.faces).c_str(), withThousands(p.total.vertices).c_str());
+    ImGui::TextDisabled("about %s in memory while building", megabytes(p.estimatedBytes).c_str());
+    if (p.overLimit) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "Refused: %s", p.message.c_str());
+    else if (p.overBudget) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "Warning: %s", p.message.c_str());
+  }
+  if (const auto format = meshFormatFromPath(meshOutput_); format && !formatHasVertexColors(*format))
+    ImGui::TextDisabled("%s files carry no vertex colors; write .ply for colors.", meshFormatName(*format));
+}
+
+void ExportDialog::drawPointsOptions(ModellerState& state) {
+  const float em = ImGui::GetFontSize();
+  ImGui::PushItemWidth(em * 16.0f);
+  const std::int64_t step = 100'000, fast = 1'000'000;
+  ImGui::InputScalar("Samples", ImGuiDataType_S64, &samples_, &step, &fast, "%lld");
+  samples_ = std::clamp<std::int64_t>(samples_, 1, kMaxGuiPointSamples);
+  state.probe.frame("export.samples");
+  ImGui::SameLine();
+  helpMarker("Chaos-game iterations written as points with their colors (the project's seed; the same points as "
+             "`gridifs export-points FILE --samples N`)");
+  ImGui::PopItemWidth();
+  ImGui::TextDisabled("about %s of binary PLY", megabytes(std::uint64_t(samples_) * 15).c_str());
+}
+
+void ExportDialog::start(ModellerState& state) {
+  join();
+  const bool mesh = kind_ == Kind::Mesh;
+  const fs::path output = mesh ? meshOutput_ : pointsOutput_;
+  message_.clear();
+  cancel_ = false;
+  progress_ = 0.0;
+  stage_ = 0;
+  {
+    std::lock_guard lock(mutex_);
+    haveResult_ = false;
+  }
+  // Everything that can fail fast fails here, inline, before the thread starts.
+  try {
+    if (mesh) {
+      checkMeshOutputPath(output);
+      updatePlan(state);
+      if (!plan_.error.empty()) throw ModelError("", plan_.error);
+      if (plan_.plan.overLimit) throw ModelError("", plan_.plan.message);
+      BaseMeshSpec spec;
+      spec.shape = base_ == 0 ? BaseShape::Cube : base_ == 1 ? BaseShape::Sphere : BaseShape::File;
+      spec.file = baseFile_;
+      spec.subdivision = subdivide_;
+      spec.scheme = smooth_ ? SubdivisionScheme::Smooth : SubdivisionScheme::Flat;
+      spec.triangulate = formatNeedsTriangles(*meshFormatFromPath(output));
+      spec.fitToCube = fit_;
+      DeterministicOptions options;
+      options.depth = depth_;
+      const MeshWriteOptions writeOptions{!ascii_, true};
+      auto ifs = std::make_shared<DeterministicIfs>(snapshotDeterministicIfs(state.document));
+      running_ = true;
+      worker_ = std::thread([this, ifs, spec, options, writeOptions, output] {
+        try {
+          // Built where it lives: OpenMesh meshes copy on move (deterministic_ifs.h).
+          auto result = std::make_unique<DeterministicMesh>();
+          runDeterministic(*ifs, spec, options, *result, [this](double f) {
+            progress_ = f;
+            return !cancel_.load();
+          }, &cancel_);
+          stage_ = 1;
+          writeMeshFile(result->mesh, output, writeOptions);  // temporary + rename (mesh_io.h)
+          finish(Phase::Done, "Wrote " + output.string() + ": " + withThousands(result->plan.total.faces) +
+                                  " faces, " + withThousands(result->plan.total.vertices) + " vertices.");
+        } catch (const DeterministicCancelled&) {
+          finish(Phase::Cancelled, "Cancelled; " + output.filename().string() + " was not written.");
+        } catch (const std::exception& e) {
+          finish(Phase::Failed, e.what());
+        }
+      });
+    } else {
+      std::error_code ec;
+      if (output.extension() != ".ply" && output.extension() != ".PLY")
+        throw ModelError("", "the point file must be a .ply file: " + output.string());
+      if (!fs::is_directory(output.parent_path().empty() ? fs::path(".") : output.parent_path(), ec))
+        throw ModelError("", "the folder of " + output.string() + " does not exist");
+      auto ifs = compileIfs(state.document);
+      RenderJob job = RenderJob::fromProject(state.document.project(), 0);  // all cores, as the CLI
+      job.samples = samples_;
+      validateRenderJob(job);
+      const std::string description = "GridIFS export-points of " +
+                                      (state.document.path().empty() ? std::string("untitled")
+                                                                      : state.document.path().filename().string()) +
+                                      ": " + std::to_string(job.samples) + " samples, seed " +
+                                      std::to_string(job.seed) + ", " + std::to_string(job.threads) + " streams";
+      running_ = true;
+      worker_ = std::thread([this, ifs, job, output, description] {
+        try {
+          const std::uint64_t n = writePointCloud(*ifs, job, output, description, progress_, cancel_);
+          finish(Phase::Done, "Wrote " + output.string() + ": " + withThousands(n) + " points.");
+        } catch (const DeterministicCancelled&) {
+          finish(Phase::Cancelled, "Cancelled; " + output.filename().string() + " was not written.");
+        } catch (const std::exception& e) {
+          finish(Phase::Failed, e.what());
+        }
+      });
+    }
+    phase_ = Phase::Running;
+    startedAt_ = state.now;
+  } catch (const std::exception& e) {
+    phase_ = Phase::Failed;
+    message_ = e.what();
+  }
+}
+
+void ExportDialog::finish(Phase phase, std::string message) {
+  std::lock_guard lock(mutex_);
+  result_ = phase;
+  resultMessage_ = std::move(message);
+  haveResult_ = true;
+  running_ = false;
+}
+
+void ExportDialog::draw(ModellerState& state) {
+  {
+    std::lock_guard lock(mutex_);
+    if (haveResult_) {
+      haveResult_ = false;
+      phase_ = result_;
+      message_ = resultMessage_;
+      if (phase_ == Phase::Done) state.info(message_);
+    }
+  }
+  if (!running() && worker_.joinable()) worker_.join();
+  if (!open_) return;
+  const char* title = kind_ == Kind::Mesh ? "Export mesh F^n(A)###export" : "Export points###export";
+  if (justOpened_) {
+    ImGui::OpenPopup(title);
+    justOpened_ = false;
+  }
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  const float em = ImGui::GetFontSize();
+  ImGui::SetNextWindowPos(ImVec2(vp->WorkPos.x + vp->WorkSize.x * 0.5f, vp->WorkPos.y + vp->WorkSize.y * 0.5f),
+                          ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowSize(ImVec2(em * 36.0f, 0), ImGuiCond_Appearing);
+  bool keepOpen = true;
+  if (!ImGui::BeginPopupModal(title, running() ? nullptr : &keepOpen)) {
+    if (!running()) open_ = false;
+    return;
+  }
+  const bool busy = running();
+  std::string& output = kind_ == Kind::Mesh ? meshOutput_ : pointsOutput_;
+  ImGui::BeginDisabled(busy);
+  ImGui::SetNextItemWidth(-em * 9.0f);
+  ImGui::InputText("##output", &output);
+  state.probe.item("export.output");
+  ImGui::SameLine();
+  if (ImGui::Button("Browse...##output")) {
+    browsing_ = Browsing::Output;
+    const fs::path current(output);
+    browser_.open(FileBrowser::Mode::Save, current.has_parent_path() ? current.parent_path() : defaultFolder(state),
+                  current.filename().string());
+  }
+  ImGui::SameLine();
+  ImGui::TextUnformatted("Output");
+  ImGui::TextDisabled(kind_ == Kind::Mesh ? ".ply (binary, vertex colors, per-face address), .off, .obj or .stl"
+                                          : ".ply (binary little-endian, x y z and colors)");
+  ImGui::Separator();
+  if (kind_ == Kind::Mesh) drawMeshOptions(state);
+  else drawPointsOptions(state);
+  ImGui::EndDisabled();
+
+  ImGui::Separator();
+  if (busy) {
+    char overlay[64];
+    const double seconds = state.now - startedAt_;
+    std::snprintf(overlay, sizeof overlay, "%s %.0f%%  (%.1f s)", stage_.load() == 1 ? "writing" : "",
+                  100.0 * progress_.load(), seconds);
+    ImGui::ProgressBar(float(progress_.load()), ImVec2(-em * 7.0f, 0), overlay);
+    state.probe.item("export.progress");
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel", ImVec2(-1, 0))) cancel_ = true;
+    state.probe.item("export.cancel");
+  } else {
+    const bool refused = kind_ == Kind::Mesh && plan_.valid && (!plan_.error.empty() || plan_.plan.overLimit);
+    ImGui::BeginDisabled(refused);
+    if (ImGui::Button("Export", ImVec2(em * 7.0f, 0))) start(state);
+    state.probe.item("export.run");
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    if (ImGui::Button("Close", ImVec2(em * 7.0f, 0))) {
+      open_ = false;
+      ImGui::CloseCurrentPopup();
+    }
+    state.probe.item("export.close");
+  }
+  if (!message_.empty()) {
+    const ImVec4 color = phase_ == Phase::Failed ? ImVec4(1.0f, 0.45f, 0.35f, 1.0f)
+                         : phase_ == Phase::Done ? ImVec4(0.55f, 0.85f, 0.55f, 1.0f)
+                                                 : ImVec4(0.8f, 0.8f, 0.8f, 1.0f);
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextColored(color, "%s", message_.c_str());
+    ImGui::PopTextWrapPos();
+  }
+
+  if (auto chosen = browser_.draw(state.probe)) {
+    if (browsing_ == Browsing::Output) output = chosen->string();
+    else if (browsing_ == Browsing::Base) baseFile_ = chosen->string();
+    browsing_ = Browsing::None;
+  }
+  ImGui::EndPopup();
+  if (!keepOpen) open_ = false;
+}
+
+nlohmann::json ExportDialog::probeJson() const {
+  static const char* phases[] = {"options", "running", "done", "failed", "cancelled"};
+  return {{"open", open_},
+          {"kind", kind_ == Kind::Mesh ? "mesh" : "points"},
+          {"phase", phases[int(phase_)]},
+          {"running", running()},
+          {"progress", progress_.load()},
+          {"message", message_}};
+}
+
+}  // namespace gridifs::ui

@@ -1,0 +1,176 @@
+// The flame display's controls in the preview toolbar (issue 6 §3, §6): the palette picker with
+// swatch strips (flam3's collection and ours) and the tone-mapping settings of seed 002 §4–8 as
+// edits of render.flame, one undo step per slider drag.
+#include <algorithm>
+#include <cstdio>
+
+#include "core/palette.h"
+#include "ui/preview_modes.h"
+#include "ui/widgets.h"
+
+namespace gridifs::ui {
+namespace {
+
+std::vector<ImU32> swatchOf(const Palette& palette) {
+  std::vector<ImU32> colors;
+  for (int i = 0; i < PaletteCatalog::kSwatchSteps; ++i) {
+    const Rgb c = palette.lookup((i + 0.5) / PaletteCatalog::kSwatchSteps);
+    colors.push_back(ImGui::ColorConvertFloat4ToU32(ImVec4(c.r, c.g, c.b, 1.0f)));
+  }
+  return colors;
+}
+
+void drawSwatch(ImDrawList* draw, ImVec2 min, ImVec2 max, const std::vector<ImU32>& colors) {
+  if (colors.empty()) return;
+  const float step = (max.x - min.x) / float(colors.size());
+  for (std::size_t i = 0; i < colors.size(); ++i) {
+    const float x0 = std::floor(min.x + step * float(i)), x1 = std::floor(min.x + step * float(i + 1));
+    draw->AddRectFilled(ImVec2(x0, min.y), ImVec2(x1, max.y), colors[i]);
+  }
+  draw->AddRect(min, max, IM_COL32(0, 0, 0, 160));
+}
+
+/// A double slider that edits one field of render.flame as one gesture.
+void flameSlider(ModellerState& state, EditQueue& edits, const char* label, const char* undoLabel, double value,
+                 double min, double max, const char* format, bool logarithmic, double FlameSettings::*field,
+                 const char* help) {
+  const bool changed = ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &min, &max, format,
+                                           ImGuiSliderFlags_AlwaysClamp |
+                                               (logarithmic ? ImGuiSliderFlags_Logarithmic : 0));
+  state.probe.frame(std::string("flame.") + undoLabel);
+  gestureItem(edits, undoLabel, changed, [field, value](Project& p) { p.render.flame.*field = value; });
+  contextHelp(state, help);
+}
+
+}  // namespace
+
+void PaletteCatalog::load() {
+  loaded = true;
+  for (const std::string& name : builtinPaletteNames())
+    entries.push_back({name, name + "  (GridIFS)", swatchOf(builtinPalette(name))});
+  try {
+    for (const Palette& p : flam3Palettes()) {
+      const std::string number = std::to_string(&p - flam3Palettes().data());
+      // flam3 palettes are addressed by their number; the name is shown when there is one.
+      entries.push_back({"flam3:" + number, "flam3 " + number + (p.name.empty() ? "" : "  " + p.name), swatchOf(p)});
+    }
+  } catch (const PaletteError& e) {
+    flam3Error = e.what();
+  }
+}
+
+const PaletteCatalog::Entry* PaletteCatalog::find(const std::string& reference) const {
+  for (const Entry& e : entries)
+    if (e.reference == reference) return &e;
+  return nullptr;
+}
+
+void PreviewModes::drawFlameControls(ModellerState& state, EditQueue& edits) {
+  if (!palettes_.loaded) palettes_.load();
+  const Project& project = state.document.project();
+  const FlameSettings& f = project.render.flame;
+  const float em = ImGui::GetFontSize();
+  if (f.palette != checkedPalette_) {
+    checkedPalette_ = f.palette;
+    paletteError_.clear();
+    try {
+      (void)resolvePalette(f.palette, state.document.path().parent_path());
+    } catch (const std::exception& e) {
+      paletteError_ = e.what();
+    }
+  }
+
+  // Palette picker: the combo lists every palette with its swatch; the strip beside it shows the
+  // current one (seed 002 §5: the color coordinate c indexes a 256-entry palette).
+  const PaletteCatalog::Entry* current = palettes_.find(f.palette);
+  ImGui::SetNextItemWidth(em * 7.5f);
+  ImGui::SetNextWindowSizeConstraints(ImVec2(em * 22.0f, 0), ImVec2(em * 30.0f, em * 24.0f));
+  if (ImGui::BeginCombo("##palette", current ? current->reference.c_str() : f.palette.c_str(),
+                        ImGuiComboFlags_HeightLargest)) {
+    ImGuiListClipper clipper;
+    clipper.Begin(int(palettes_.entries.size()));
+    while (clipper.Step()) {
+      for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
+        const PaletteCatalog::Entry& e = palettes_.entries[std::size_t(i)];
+        ImGui::PushID(i);
+        const bool selected = e.reference == f.palette;
+        if (ImGui::Selectable("##entry", selected, 0, ImVec2(0, em * 1.1f))) {
+          const std::string ref = e.reference;
+          edits.commit("Palette", [ref](Project& p) { p.render.flame.palette = ref; });
+        }
+        if (selected && ImGui::IsWindowAppearing()) ImGui::SetScrollHereY();
+        const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+        ImDrawList* draw = ImGui::GetWindowDrawList();
+        const float swatchW = em * 9.0f;
+        drawSwatch(draw, ImVec2(min.x + 2, min.y + 2), ImVec2(min.x + 2 + swatchW, max.y - 2), e.swatch);
+        draw->AddText(ImVec2(min.x + swatchW + em * 0.6f, min.y + (max.y - min.y - em) * 0.5f),
+                      ImGui::GetColorU32(ImGuiCol_Text), e.label.c_str());
+        ImGui::PopID();
+      }
+    }
+    if (!palettes_.flam3Error.empty()) ImGui::TextDisabled("flam3 palettes: %s", palettes_.flam3Error.c_str());
+    ImGui::EndCombo();
+  }
+  state.probe.frame("flame.palette");
+  contextHelp(state, "Palette of the flame display: ours and flam3's collection (seed 002 §5); a change restarts the preview");
+  ImGui::SameLine();
+  {
+    const ImVec2 pos = ImGui::GetCursorScreenPos();
+    const ImVec2 size(em * 3.5f, ImGui::GetFrameHeight());
+    ImGui::Dummy(size);
+    if (current) drawSwatch(ImGui::GetWindowDrawList(), ImVec2(pos.x, pos.y + 3), ImVec2(pos.x + size.x, pos.y + size.y - 3), current->swatch);
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Tone...")) ImGui::OpenPopup("##tonemapping");
+  state.probe.item("flame.tone");
+  contextHelp(state, "Brightness, gamma, vibrancy, highlights and density estimation of the flame display");
+  if (!paletteError_.empty()) {
+    ImGui::SameLine();
+    ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "palette: %s", paletteError_.c_str());
+  }
+
+  if (ImGui::BeginPopup("##tonemapping")) {
+    sectionTitle("Tone mapping (seed 002 §4, §6)");
+    ImGui::PushItemWidth(em * 14.0f);
+    flameSlider(state, edits, "Brightness", "Brightness", f.brightness, 0.05, 100.0, "%.2f", true,
+                &FlameSettings::brightness, "flam3 brightness (k1): exposure of the log-density image");
+    flameSlider(state, edits, "Gamma", "Gamma", f.gamma, 0.5, 10.0, "%.2f", false, &FlameSettings::gamma,
+                "Gamma of the log-density image (seed 002 §6)");
+    flameSlider(state, edits, "Gamma threshold", "Gamma threshold", f.gamma_threshold, 0.0, 1.0, "%.4f", false,
+                &FlameSettings::gamma_threshold, "Below this density the gamma curve is linear (less noise in thin areas)");
+    flameSlider(state, edits, "Vibrancy", "Vibrancy", f.vibrancy, 0.0, 1.0, "%.2f", false, &FlameSettings::vibrancy,
+                "0: gamma per channel (washed out); 1: gamma through alpha (saturated colors)");
+    flameSlider(state, edits, "Highlight power", "Highlight power", f.highlight_power, -1.0, 10.0, "%.2f", false,
+                &FlameSettings::highlight_power, "How saturated highlights turn white; negative clips instead");
+    ImGui::Spacing();
+    sectionTitle("Density estimation (seed 002 §8)");
+    bool estimate = f.estimator_radius > 0.0;
+    if (ImGui::Checkbox("Density estimation", &estimate)) {
+      const double radius = estimate ? std::max(FlameSettings{}.estimator_radius, f.estimator_minimum) : 0.0;
+      edits.commit(estimate ? "Density estimation on" : "Density estimation off",
+                   [radius](Project& p) { p.render.flame.estimator_radius = radius; });
+    }
+    state.probe.item("flame.estimation");
+    contextHelp(state, "Blur thin areas with a kernel that shrinks as density grows (off: faster, noisier)");
+    if (estimate)
+      flameSlider(state, edits, "Estimator radius", "Estimator radius", f.estimator_radius,
+                  std::max(0.5, f.estimator_minimum), 20.0, "%.1f px", false, &FlameSettings::estimator_radius,
+                  "Widest kernel radius in pixels, used where the density is lowest");
+    ImGui::PopItemWidth();
+    ImGui::Spacing();
+    if (ImGui::Button("Defaults")) {
+      edits.commit("Flame defaults", [](Project& p) {
+        FlameSettings d;
+        d.palette = p.render.flame.palette;
+        d.supersample = p.render.flame.supersample;
+        p.render.flame = d;
+      });
+    }
+    ImGui::SameLine();
+    const double ms = flame_.developer().lastMs();
+    ImGui::TextDisabled("develop %.0f ms", ms);
+    ImGui::EndPopup();
+  }
+}
+
+}  // namespace gridifs::ui

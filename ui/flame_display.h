@@ -1,0 +1,113 @@
+#pragma once
+// The flame display of the preview (issue 6 §6; seed 002 §4–8): the same chaos game as the
+// z-buffer preview, with color sums always accumulated, developed into a flame image on a worker
+// thread every few hundred milliseconds, so switching modes never restarts the renderer and
+// developing never blocks the UI (docs/FLAME.md "For the GUI").
+#include <condition_variable>
+#include <cstdint>
+#include <mutex>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "core/chaos_renderer.h"
+#include "core/document.h"
+#include "core/flame_settings.h"
+
+namespace gridifs::ui {
+
+/// The preview's renderer job with flame accumulation: flameRenderJob without gutter and at
+/// supersample 1 (the z-buffer image stays the frame), the project's palette per sample (the
+/// default palette when the reference cannot be resolved). UI thread.
+RenderJob previewFlameJob(const RenderJob& job, const Document& document);
+
+/// Develops renderer snapshots into RGBA8 flame images on one worker thread. submit() and
+/// take() are called by the UI thread and never wait for a develop.
+class FlameDeveloper {
+ public:
+  FlameDeveloper();
+  ~FlameDeveloper();  // stops and joins the worker
+  FlameDeveloper(const FlameDeveloper&) = delete;
+  FlameDeveloper& operator=(const FlameDeveloper&) = delete;
+
+  /// Hands a copy of `snapshot` to the worker; false (nothing copied) while it is still busy.
+  bool submit(const RenderImage& snapshot, const FlameSettings& settings, const Camera& camera,
+              const Vec3& background);
+  /// The newest finished image, once: true and `rgba`/size filled when there is one.
+  bool take(std::vector<std::uint8_t>& rgba, int& width, int& height);
+  bool busy() const;
+  /// Why the last develop failed ("" when it did not).
+  std::string error() const;
+  /// Milliseconds the last develop took.
+  double lastMs() const;
+
+ private:
+  void run();
+
+  mutable std::mutex mutex_;
+  std::condition_variable wake_;
+  bool stop_ = false, pending_ = false, working_ = false, ready_ = false;
+  RenderImage input_;
+  FlameSettings settings_;
+  Camera camera_;
+  Vec3 background_{0.0};
+  std::vector<std::uint8_t> output_;
+  int outWidth_ = 0, outHeight_ = 0;
+  std::string error_;
+  double lastMs_ = 0.0;
+  std::thread thread_;
+};
+
+/// What the preview texture shows in flame mode: decides when to develop (at once after an
+/// edit or a settings change, then every ~300 ms while points stream in) and uploads results.
+class FlameDisplay {
+ public:
+  /// Called every frame in flame mode after the renderer fetch (`fetched`: `image` changed).
+  /// Returns true when the texture was re-uploaded.
+  template <class Upload>
+  bool update(const Document& document, double now, const RenderImage& image, bool fetched, Upload upload);
+  /// Forget what was developed (the next update develops at once).
+  void invalidate() { developedSamples_ = -1; }
+  const FlameDeveloper& developer() const { return developer_; }
+  std::uint64_t developed() const { return developed_; }
+
+ private:
+  FlameDeveloper developer_;
+  std::vector<std::uint8_t> rgba_;
+  std::int64_t developedSamples_ = -1;
+  std::uint64_t developedGeneration_ = 0;
+  FlameSettings developedSettings_;
+  Vec3 developedBackground_{-1.0};
+  double lastSubmit_ = -1.0;
+  std::uint64_t developed_ = 0;
+};
+
+template <class Upload>
+bool FlameDisplay::update(const Document& document, double now, const RenderImage& image, bool, Upload upload) {
+  bool uploaded = false;
+  int w = 0, h = 0;
+  if (developer_.take(rgba_, w, h)) {
+    upload(w, h, rgba_.data());
+    ++developed_;
+    uploaded = true;
+  }
+  if (image.width <= 0 || image.colorSums.empty()) return uploaded;
+  const Project& p = document.project();
+  const bool changed = image.generation != developedGeneration_ || !(p.render.flame == developedSettings_) ||
+                       !(p.render.background == developedBackground_) || developedSamples_ < 0;
+  const bool more = image.stats.samples != developedSamples_;
+  // A few hundred ms between develops while the picture streams (docs/FLAME.md: 60–130 ms of CPU
+  // at 1024² with density estimation); a settings change or a new generation develops at once.
+  if ((changed || (more && now - lastSubmit_ >= 0.3)) && !developer_.busy()) {
+    if (developer_.submit(image, p.render.flame, p.camera, p.render.background)) {
+      developedGeneration_ = image.generation;
+      developedSamples_ = image.stats.samples;
+      developedSettings_ = p.render.flame;
+      developedBackground_ = p.render.background;
+      lastSubmit_ = now;
+    }
+  }
+  return uploaded;
+}
+
+}  // namespace gridifs::ui

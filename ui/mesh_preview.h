@@ -1,0 +1,110 @@
+#pragma once
+// The deterministic preview mode (issue 5 §3; seed 004 §3.2 and figure 2): F^n(A) of a cube or a
+// sphere drawn as a lit mesh in the preview window, so the artist sees an initial shape converge
+// to the attractor as n grows. The mesh is built on a worker thread (cancelled and restarted when
+// the functions, the depth or the base change); the UI thread only plans, uploads and draws.
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "core/base_mesh.h"
+#include "core/deterministic_ifs.h"
+#include "ui/gl_resources.h"
+
+namespace gridifs::ui {
+
+/// Above this many faces the preview refuses a depth (the export has its own, larger limits).
+inline constexpr std::uint64_t kMaxPreviewFaces = 1'500'000;
+
+/// Vertex of the preview mesh: position and packed RGBA8 color (normals come from the
+/// fragment's screen-space derivatives: each face is lit flat, as the copies are not welded).
+struct MeshPreviewVertex {
+  float x, y, z;
+  std::uint32_t rgba;
+};
+
+class MeshPreview {
+ public:
+  MeshPreview();
+  ~MeshPreview();  // cancels and joins the worker
+  MeshPreview(const MeshPreview&) = delete;
+  MeshPreview& operator=(const MeshPreview&) = delete;
+
+  // What to build (the toolbar edits these; UI state, not saved in the project).
+  int depth = 3;
+  bool sphere = false;
+
+  /// UI thread, every frame in mesh mode: when the functions, the depth or the base changed,
+  /// plans the new mesh and restarts the worker on it. Never waits.
+  void update(const Document& document);
+  /// UI thread with the GL context: uploads a finished mesh; returns true when there is a new one.
+  bool upload();
+  /// Draws the current mesh into `target` with the project camera; clears to `background`.
+  void draw(const RenderTarget& target, const Camera& camera, const glm::vec3& background);
+
+  bool building() const { return building_.load(); }
+  double progress() const { return progress_.load(); }
+  /// Largest depth whose mesh stays under kMaxPreviewFaces and the memory budget (≥ 0).
+  int maxDepth() const { return maxDepth_; }
+  /// Faces of the mesh on screen (0 when none).
+  std::uint64_t faces() const { return shownFaces_; }
+  int shownDepth() const { return shownDepth_; }
+  double buildMs() const { return buildMs_; }
+  /// Why the current request cannot be shown ("" when it can).
+  const std::string& error() const { return error_; }
+  bool hasMesh() const { return indexCount_ > 0; }
+
+ private:
+  struct Request {
+    DeterministicIfs ifs;
+    BaseMeshSpec spec;
+    int depth = 0;
+    std::shared_ptr<std::atomic<bool>> cancel;
+  };
+  struct Result {
+    std::vector<MeshPreviewVertex> vertices;
+    std::vector<std::uint32_t> indices;
+    std::uint64_t faces = 0;
+    int depth = 0;
+    double ms = 0.0;
+    std::string error;
+  };
+  void run();
+  static Result build(const Request& request, std::atomic<double>& progress);
+
+  // UI-thread state.
+  std::uint64_t revision_ = 0;
+  Project builtFor_;  // functions and final function of the last request
+  bool haveRequest_ = false;
+  int requestedDepth_ = -1;
+  bool requestedSphere_ = false;
+  int maxDepth_ = 0;
+  std::string error_;
+  std::uint64_t shownFaces_ = 0;
+  int shownDepth_ = -1;
+  double buildMs_ = 0.0;
+
+  // GL.
+  std::optional<ShaderProgram> program_;
+  GLuint vao_ = 0, vbo_ = 0, ebo_ = 0;
+  std::size_t indexCount_ = 0;
+
+  // Worker.
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  bool stop_ = false;
+  std::optional<Request> pending_;
+  std::shared_ptr<std::atomic<bool>> currentCancel_;
+  std::optional<Result> result_;
+  std::atomic<bool> building_{false};
+  std::atomic<double> progress_{0.0};
+  std::thread thread_;
+};
+
+}  // namespace gridifs::ui

@@ -1,0 +1,71 @@
+#pragma once
+// The preview's display modes (issue 6 §6: z-buffer | flame over the same chaos game; issue 5 §3:
+// the deterministic mesh F^n(A)), owned by PreviewView: a second toolbar row with the mode switch
+// and the mode's controls, and what the preview texture shows in each mode.
+#include <imgui.h>
+
+#include <glm/vec2.hpp>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "ui/edit_queue.h"
+#include "ui/flame_display.h"
+#include "ui/gl_resources.h"
+#include "ui/mesh_preview.h"
+#include "ui/modeller_state.h"
+
+namespace gridifs::ui {
+
+/// The palettes the picker offers: our built-ins, then flam3's collection when installed, each
+/// with a precomputed swatch strip. Built lazily on the UI thread.
+struct PaletteCatalog {
+  struct Entry {
+    std::string reference, label;
+    std::vector<ImU32> swatch;  // kSwatchSteps colors across c in [0, 1]
+  };
+  static constexpr int kSwatchSteps = 48;
+  std::vector<Entry> entries;
+  std::string flam3Error;  // why flam3's collection is missing ("" when loaded)
+  bool loaded = false;
+  void load();
+  /// The entry of a reference, or null (a "file:" palette or an unknown one).
+  const Entry* find(const std::string& reference) const;
+};
+
+class PreviewModes {
+ public:
+  /// The mode switch and the current mode's controls (a row under the preview toolbar).
+  void buildToolbar(ModellerState& state, EditQueue& edits);
+  /// After the renderer fetch (`fetched`: `image` changed): uploads what the current mode shows
+  /// into `texture`. Returns true when the texture changed (the view must be redrawn).
+  bool updateTexture(ModellerState& state, const RenderImage& image, bool fetched, StreamTexture& texture);
+  /// In mesh mode, builds (on the worker) and draws F^n(A) into `target`; `force` redraws.
+  /// Returns false when the current mode is not the mesh.
+  bool drawMesh(ModellerState& state, RenderTarget& target, int width, int height, bool visible);
+  /// Whether a develop or a mesh build is under way (the window keeps animating).
+  bool busy() const;
+  /// State for the GUI tests' probe file.
+  nlohmann::json probeJson() const;
+
+ private:
+  void syncFromProject(ModellerState& state);
+  void drawFlameControls(ModellerState& state, EditQueue& edits);  // flame_controls.cpp
+  void drawMeshControls(ModellerState& state);
+
+  FlameDisplay flame_;
+  MeshPreview mesh_;
+  PaletteCatalog palettes_;
+  std::string paletteError_;
+  std::string checkedPalette_;
+  PreviewMode shownMode_ = PreviewMode::ZBuffer;
+  DisplayMode projectMode_ = DisplayMode::ZBuffer;
+  bool synced_ = false;
+  // What the mesh target shows, to redraw only on change.
+  Camera drawnCamera_;
+  glm::ivec2 drawnSize_{0, 0};
+  Vec3 drawnBackground_{-1.0};
+  bool meshDirty_ = true;
+};
+
+}  // namespace gridifs::ui
