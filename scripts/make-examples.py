@@ -8,7 +8,7 @@ def fn(name, color, pal, translate=(0,0,0), rotate=(0,0,0), scale=(0.5,0.5,0.5),
     return {"name":name,"resolution":list(res),"weight":weight,"color":list(color),"palette_index":pal,
             "muted":False,"placement":{"translate":list(translate),"rotate":list(rotate),"scale":list(scale)},"ops":list(ops)}
 def project(fns, cam=None, samples=4000000):
-    c={"yaw":30,"pitch":20,"distance":4.0,"target":[0,0,0],"fov":35,"ortho":False}
+    c={"yaw":30,"pitch":20,"distance":4.6,"target":[0,0,0],"fov":35,"ortho":False}
     if cam: c.update(cam)
     return {"format":"gridifs","version":1,"camera":c,
             "render":{"width":1024,"height":768,"samples":samples,"seed":1,"skip":20,"background":[0.02,0.02,0.03],"depth_cue":0.6},
