@@ -221,6 +221,7 @@ void ExportDialog::drawMeshOptions(ModellerState& state) {
 
   updatePlan(state);
   ImGui::Spacing();
+  ImGui::PushTextWrapPos(0.0f);
   if (!plan_.error.empty()) {
     ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "%s", plan_.error.c_str());
   } else {
@@ -234,6 +235,7 @@ void ExportDialog::drawMeshOptions(ModellerState& state) {
   }
   if (const auto format = meshFormatFromPath(meshOutput_); format && !formatHasVertexColors(*format))
     ImGui::TextDisabled("%s files carry no vertex colors; write .ply for colors.", meshFormatName(*format));
+  ImGui::PopTextWrapPos();
 }
 
 void ExportDialog::drawPointsOptions(ModellerState& state) {
@@ -362,10 +364,11 @@ void ExportDialog::draw(ModellerState& state) {
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   const float em = ImGui::GetFontSize();
   ImGui::SetNextWindowPos(ImVec2(vp->WorkPos.x + vp->WorkSize.x * 0.5f, vp->WorkPos.y + vp->WorkSize.y * 0.5f),
-                          ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-  ImGui::SetNextWindowSize(ImVec2(em * 36.0f, 0), ImGuiCond_Appearing);
+                          ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+  // Fixed width, height fitted to the contents (the plan and the messages wrap).
+  ImGui::SetNextWindowSizeConstraints(ImVec2(em * 38.0f, 0), ImVec2(em * 38.0f, vp->WorkSize.y * 0.9f));
   bool keepOpen = true;
-  if (!ImGui::BeginPopupModal(title, running() ? nullptr : &keepOpen)) {
+  if (!ImGui::BeginPopupModal(title, running() ? nullptr : &keepOpen, ImGuiWindowFlags_AlwaysAutoResize)) {
     if (!running()) open_ = false;
     return;
   }
@@ -395,12 +398,16 @@ void ExportDialog::draw(ModellerState& state) {
   if (busy) {
     char overlay[64];
     const double seconds = state.now - startedAt_;
-    std::snprintf(overlay, sizeof overlay, "%s %.0f%%  (%.1f s)", stage_.load() == 1 ? "writing" : "",
-                  100.0 * progress_.load(), seconds);
+    if (stage_.load() == 1) std::snprintf(overlay, sizeof overlay, "writing the file...  (%.1f s)", seconds);
+    else std::snprintf(overlay, sizeof overlay, "%s %.0f%%  (%.1f s)", kind_ == Kind::Mesh ? "building" : "walking",
+                       100.0 * progress_.load(), seconds);
     ImGui::ProgressBar(float(progress_.load()), ImVec2(-em * 7.0f, 0), overlay);
     state.probe.item("export.progress");
     ImGui::SameLine();
+    // The mesh file itself is written in one OpenMesh call, which cannot be interrupted.
+    ImGui::BeginDisabled(stage_.load() == 1 || cancel_.load());
     if (ImGui::Button("Cancel", ImVec2(-1, 0))) cancel_ = true;
+    ImGui::EndDisabled();
     state.probe.item("export.cancel");
   } else {
     const bool refused = kind_ == Kind::Mesh && plan_.valid && (!plan_.error.empty() || plan_.plan.overLimit);

@@ -84,7 +84,7 @@ void PreviewModes::drawFlameControls(ModellerState& state, EditQueue& edits) {
   // current one (seed 002 §5: the color coordinate c indexes a 256-entry palette).
   const PaletteCatalog::Entry* current = palettes_.find(f.palette);
   ImGui::SetNextItemWidth(em * 7.5f);
-  ImGui::SetNextWindowSizeConstraints(ImVec2(em * 22.0f, 0), ImVec2(em * 30.0f, em * 24.0f));
+  ImGui::SetNextWindowSizeConstraints(ImVec2(em * 27.0f, 0), ImVec2(em * 34.0f, em * 24.0f));
   if (ImGui::BeginCombo("##palette", current ? current->reference.c_str() : f.palette.c_str(),
                         ImGuiComboFlags_HeightLargest)) {
     ImGuiListClipper clipper;
@@ -111,7 +111,7 @@ void PreviewModes::drawFlameControls(ModellerState& state, EditQueue& edits) {
     if (!palettes_.flam3Error.empty()) ImGui::TextDisabled("flam3 palettes: %s", palettes_.flam3Error.c_str());
     ImGui::EndCombo();
   }
-  state.probe.frame("flame.palette");
+  state.probe.item("flame.palette");
   contextHelp(state, "Palette of the flame display: ours and flam3's collection (seed 002 §5); a change restarts the preview");
   ImGui::SameLine();
   {

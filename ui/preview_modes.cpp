@@ -73,7 +73,7 @@ void PreviewModes::drawMeshControls(ModellerState& state) {
   if (ImGui::SliderInt("##meshdepth", &depth, 0, std::max(mesh_.maxDepth(), 0), "n = %d",
                        ImGuiSliderFlags_AlwaysClamp))
     mesh_.depth = depth;
-  state.probe.frame("preview.mesh.depth");
+  state.probe.item("preview.mesh.depth");
   char help[160];
   std::snprintf(help, sizeof help,
                 "Depth n of F^n(A): N^n copies of the base (at most %d here, within %.1fM faces and the memory budget)",
@@ -92,7 +92,11 @@ void PreviewModes::drawMeshControls(ModellerState& state) {
   } else if (mesh_.building()) {
     ImGui::ProgressBar(float(mesh_.progress()), ImVec2(em * 6.0f, 0), "building");
   } else if (mesh_.hasMesh()) {
-    ImGui::TextDisabled("%.3gk faces, %.0f ms", double(mesh_.faces()) / 1e3, mesh_.buildMs());
+    ImGui::TextDisabled("%.3gk faces", double(mesh_.faces()) / 1e3);
+    char built[96];
+    std::snprintf(built, sizeof built, "F^%d(A): %llu faces, built in %.0f ms", mesh_.shownDepth(),
+                  static_cast<unsigned long long>(mesh_.faces()), mesh_.buildMs());
+    contextHelp(state, built);
   }
 }
 
