@@ -6,6 +6,7 @@
 #include "core/node_picking.h"
 #include "ui/app_commands.h"
 #include "ui/export_dialog.h"
+#include "ui/symmetry_menu.h"
 #include "ui/panels.h"
 
 namespace gridifs::ui {
@@ -64,6 +65,7 @@ float drawMenuBar(AppCommands& app) {
   }
   if (ImGui::BeginMenu("Function")) {
     if (ImGui::MenuItem("Add 6x6x6 grid")) addFunction(s, app.edits);
+    drawSymmetryMenu(s, app.edits);  // issue 6 §5 (ui/symmetry_menu.cpp)
     ImGui::Separator();
     const auto& functions = d.project().functions;
     for (int i = 0; i < int(functions.size()); ++i)
