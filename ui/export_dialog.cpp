@@ -36,8 +36,10 @@ std::string withThousands(std::uint64_t n) {
 
 std::string megabytes(std::uint64_t bytes) {
   char text[32];
-  if (bytes >= (std::uint64_t(1) << 30)) std::snprintf(text, sizeof text, "%.1f GB", double(bytes) / double(1 << 30));
-  else std::snprintf(text, sizeof text, "%.1f MB", double(bytes) / double(1 << 20));
+  if (bytes >= (std::uint64_t(1) << 30))
+    std::snprintf(text, sizeof text, "%.1f GB", double(bytes) / double(1 << 30));
+  else
+    std::snprintf(text, sizeof text, "%.1f MB", double(bytes) / double(1 << 20));
   return text;
 }
 
@@ -160,8 +162,8 @@ void ExportDialog::open(Kind kind, const ModellerState& state) {
 
 void ExportDialog::updatePlan(const ModellerState& state) {
   if (plan_.valid && plan_.revision == state.document.revision() && plan_.depth == depth_ &&
-      plan_.subdivide == subdivide_ && plan_.base == base_ && plan_.baseFile == baseFile_ &&
-      plan_.smooth == smooth_ && plan_.fit == fit_ && plan_.output == meshOutput_)
+      plan_.subdivide == subdivide_ && plan_.base == base_ && plan_.baseFile == baseFile_ && plan_.smooth == smooth_ &&
+      plan_.fit == fit_ && plan_.output == meshOutput_)
     return;
   plan_.valid = true;
   plan_.revision = state.document.revision();
@@ -230,8 +232,10 @@ void ExportDialog::drawMeshOptions(ModellerState& state) {
                 withThousands(p.copies).c_str(), withThousands(p.base.faces).c_str(),
                 withThousands(p.total.faces).c_str(), withThousands(p.total.vertices).c_str());
     ImGui::TextDisabled("about %s in memory while building", megabytes(p.estimatedBytes).c_str());
-    if (p.overLimit) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "Refused: %s", p.message.c_str());
-    else if (p.overBudget) ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "Warning: %s", p.message.c_str());
+    if (p.overLimit)
+      ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "Refused: %s", p.message.c_str());
+    else if (p.overBudget)
+      ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.3f, 1.0f), "Warning: %s", p.message.c_str());
   }
   if (const auto format = meshFormatFromPath(meshOutput_); format && !formatHasVertexColors(*format))
     ImGui::TextDisabled("%s files carry no vertex colors; write .ply for colors.", meshFormatName(*format));
@@ -246,8 +250,9 @@ void ExportDialog::drawPointsOptions(ModellerState& state) {
   samples_ = std::clamp<std::int64_t>(samples_, 1, kMaxGuiPointSamples);
   state.probe.frame("export.samples");
   ImGui::SameLine();
-  helpMarker("Chaos-game iterations written as points with their colors (the project's seed; the same points as "
-             "`gridifs export-points FILE --samples N`)");
+  helpMarker(
+      "Chaos-game iterations written as points with their colors (the project's seed; the same points as "
+      "`gridifs export-points FILE --samples N`)");
   ImGui::PopItemWidth();
   ImGui::TextDisabled("about %s of binary PLY", megabytes(std::uint64_t(samples_) * 15).c_str());
 }
@@ -287,14 +292,17 @@ void ExportDialog::start(ModellerState& state) {
         try {
           // Built where it lives: OpenMesh meshes copy on move (deterministic_ifs.h).
           auto result = std::make_unique<DeterministicMesh>();
-          runDeterministic(*ifs, spec, options, *result, [this](double f) {
-            progress_ = f;
-            return !cancel_.load();
-          }, &cancel_);
+          runDeterministic(
+              *ifs, spec, options, *result,
+              [this](double f) {
+                progress_ = f;
+                return !cancel_.load();
+              },
+              &cancel_);
           stage_ = 1;
           writeMeshFile(result->mesh, output, writeOptions);  // temporary + rename (mesh_io.h)
-          finish(Phase::Done, "Wrote " + output.string() + ": " + withThousands(result->plan.total.faces) +
-                                  " faces, " + withThousands(result->plan.total.vertices) + " vertices.");
+          finish(Phase::Done, "Wrote " + output.string() + ": " + withThousands(result->plan.total.faces) + " faces, " +
+                                  withThousands(result->plan.total.vertices) + " vertices.");
         } catch (const DeterministicCancelled&) {
           finish(Phase::Cancelled, "Cancelled; " + output.filename().string() + " was not written.");
         } catch (const std::exception& e) {
@@ -311,11 +319,11 @@ void ExportDialog::start(ModellerState& state) {
       RenderJob job = RenderJob::fromProject(state.document.project(), 0);  // all cores, as the CLI
       job.samples = samples_;
       validateRenderJob(job);
-      const std::string description = "GridIFS export-points of " +
-                                      (state.document.path().empty() ? std::string("untitled")
-                                                                      : state.document.path().filename().string()) +
-                                      ": " + std::to_string(job.samples) + " samples, seed " +
-                                      std::to_string(job.seed) + ", " + std::to_string(job.threads) + " streams";
+      const std::string description =
+          "GridIFS export-points of " +
+          (state.document.path().empty() ? std::string("untitled") : state.document.path().filename().string()) + ": " +
+          std::to_string(job.samples) + " samples, seed " + std::to_string(job.seed) + ", " +
+          std::to_string(job.threads) + " streams";
       running_ = true;
       worker_ = std::thread([this, ifs, job, output, description] {
         try {
@@ -390,17 +398,21 @@ void ExportDialog::draw(ModellerState& state) {
   ImGui::TextDisabled(kind_ == Kind::Mesh ? ".ply (binary, vertex colors, per-face address), .off, .obj or .stl"
                                           : ".ply (binary little-endian, x y z and colors)");
   ImGui::Separator();
-  if (kind_ == Kind::Mesh) drawMeshOptions(state);
-  else drawPointsOptions(state);
+  if (kind_ == Kind::Mesh)
+    drawMeshOptions(state);
+  else
+    drawPointsOptions(state);
   ImGui::EndDisabled();
 
   ImGui::Separator();
   if (busy) {
     char overlay[64];
     const double seconds = state.now - startedAt_;
-    if (stage_.load() == 1) std::snprintf(overlay, sizeof overlay, "writing the file...  (%.1f s)", seconds);
-    else std::snprintf(overlay, sizeof overlay, "%s %.0f%%  (%.1f s)", kind_ == Kind::Mesh ? "building" : "walking",
-                       100.0 * progress_.load(), seconds);
+    if (stage_.load() == 1)
+      std::snprintf(overlay, sizeof overlay, "writing the file...  (%.1f s)", seconds);
+    else
+      std::snprintf(overlay, sizeof overlay, "%s %.0f%%  (%.1f s)", kind_ == Kind::Mesh ? "building" : "walking",
+                    100.0 * progress_.load(), seconds);
     ImGui::ProgressBar(float(progress_.load()), ImVec2(-em * 7.0f, 0), overlay);
     state.probe.item("export.progress");
     ImGui::SameLine();
@@ -432,8 +444,10 @@ void ExportDialog::draw(ModellerState& state) {
   }
 
   if (auto chosen = browser_.draw(state.probe)) {
-    if (browsing_ == Browsing::Output) output = chosen->string();
-    else if (browsing_ == Browsing::Base) baseFile_ = chosen->string();
+    if (browsing_ == Browsing::Output)
+      output = chosen->string();
+    else if (browsing_ == Browsing::Base)
+      baseFile_ = chosen->string();
     browsing_ = Browsing::None;
   }
   ImGui::EndPopup();

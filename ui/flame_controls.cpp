@@ -34,9 +34,9 @@ void drawSwatch(ImDrawList* draw, ImVec2 min, ImVec2 max, const std::vector<ImU3
 void flameSlider(ModellerState& state, EditQueue& edits, const char* label, const char* undoLabel, double value,
                  double min, double max, const char* format, bool logarithmic, double FlameSettings::*field,
                  const char* help) {
-  const bool changed = ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &min, &max, format,
-                                           ImGuiSliderFlags_AlwaysClamp |
-                                               (logarithmic ? ImGuiSliderFlags_Logarithmic : 0));
+  const bool changed =
+      ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &min, &max, format,
+                          ImGuiSliderFlags_AlwaysClamp | (logarithmic ? ImGuiSliderFlags_Logarithmic : 0));
   state.probe.frame(std::string("flame.") + undoLabel);
   gestureItem(edits, undoLabel, changed, [field, value](Project& p) { p.render.flame.*field = value; });
   contextHelp(state, help);
@@ -112,13 +112,16 @@ void PreviewModes::drawFlameControls(ModellerState& state, EditQueue& edits) {
     ImGui::EndCombo();
   }
   state.probe.item("flame.palette");
-  contextHelp(state, "Palette of the flame display: ours and flam3's collection (seed 002 §5); a change restarts the preview");
+  contextHelp(state,
+              "Palette of the flame display: ours and flam3's collection (seed 002 §5); a change restarts the preview");
   ImGui::SameLine();
   {
     const ImVec2 pos = ImGui::GetCursorScreenPos();
     const ImVec2 size(em * 3.5f, ImGui::GetFrameHeight());
     ImGui::Dummy(size);
-    if (current) drawSwatch(ImGui::GetWindowDrawList(), ImVec2(pos.x, pos.y + 3), ImVec2(pos.x + size.x, pos.y + size.y - 3), current->swatch);
+    if (current)
+      drawSwatch(ImGui::GetWindowDrawList(), ImVec2(pos.x, pos.y + 3), ImVec2(pos.x + size.x, pos.y + size.y - 3),
+                 current->swatch);
   }
   ImGui::SameLine();
   if (ImGui::Button("Tone...")) ImGui::OpenPopup("##tonemapping");
@@ -137,7 +140,8 @@ void PreviewModes::drawFlameControls(ModellerState& state, EditQueue& edits) {
     flameSlider(state, edits, "Gamma", "Gamma", f.gamma, 0.5, 10.0, "%.2f", false, &FlameSettings::gamma,
                 "Gamma of the log-density image (seed 002 §6)");
     flameSlider(state, edits, "Gamma threshold", "Gamma threshold", f.gamma_threshold, 0.0, 1.0, "%.4f", false,
-                &FlameSettings::gamma_threshold, "Below this density the gamma curve is linear (less noise in thin areas)");
+                &FlameSettings::gamma_threshold,
+                "Below this density the gamma curve is linear (less noise in thin areas)");
     flameSlider(state, edits, "Vibrancy", "Vibrancy", f.vibrancy, 0.0, 1.0, "%.2f", false, &FlameSettings::vibrancy,
                 "0: gamma per channel (washed out); 1: gamma through alpha (saturated colors)");
     flameSlider(state, edits, "Highlight power", "Highlight power", f.highlight_power, -1.0, 10.0, "%.2f", false,

@@ -31,8 +31,7 @@ class FlameDeveloper {
   FlameDeveloper& operator=(const FlameDeveloper&) = delete;
 
   /// Hands a copy of `snapshot` to the worker; false (nothing copied) while it is still busy.
-  bool submit(const RenderImage& snapshot, const FlameSettings& settings, const Camera& camera,
-              const Vec3& background);
+  bool submit(const RenderImage& snapshot, const FlameSettings& settings, const Camera& camera, const Vec3& background);
   /// The newest finished image, once: true and `rgba`/size filled when there is one.
   bool take(std::vector<std::uint8_t>& rgba, int& width, int& height);
   bool busy() const;

@@ -93,10 +93,13 @@ MeshPreview::Result MeshPreview::build(const Request& request, std::atomic<doubl
     options.depth = request.depth;
     options.threads = 1;  // the chaos-game preview is paused, but the UI keeps a core
     DeterministicMesh mesh;
-    runDeterministic(request.ifs, request.spec, options, mesh, [&](double f) {
-      progress = f * 0.9;
-      return !request.cancel->load();
-    }, request.cancel.get());
+    runDeterministic(
+        request.ifs, request.spec, options, mesh,
+        [&](double f) {
+          progress = f * 0.9;
+          return !request.cancel->load();
+        },
+        request.cancel.get());
     const IfsMesh& m = mesh.mesh;
     result.vertices.resize(m.n_vertices());
     for (auto vh : m.vertices()) {
@@ -111,8 +114,10 @@ MeshPreview::Result MeshPreview::build(const Request& request, std::atomic<doubl
       int k = 0;
       for (auto fv : m.fv_range(fh)) {
         const auto idx = std::uint32_t(fv.idx());
-        if (k == 0) first = idx;
-        else if (k >= 2) result.indices.insert(result.indices.end(), {first, prev, idx});
+        if (k == 0)
+          first = idx;
+        else if (k >= 2)
+          result.indices.insert(result.indices.end(), {first, prev, idx});
         prev = idx;
         ++k;
       }

@@ -10,9 +10,12 @@ namespace {
 
 const char* modeName(PreviewMode mode) {
   switch (mode) {
-    case PreviewMode::Flame: return "flame";
-    case PreviewMode::Mesh: return "mesh";
-    default: return "zbuffer";
+    case PreviewMode::Flame:
+      return "flame";
+    case PreviewMode::Mesh:
+      return "mesh";
+    default:
+      return "zbuffer";
   }
 }
 
@@ -70,8 +73,7 @@ void PreviewModes::drawMeshControls(ModellerState& state) {
   const float em = ImGui::GetFontSize();
   int depth = mesh_.depth;
   ImGui::SetNextItemWidth(em * 6.5f);
-  if (ImGui::SliderInt("##meshdepth", &depth, 0, std::max(mesh_.maxDepth(), 0), "n = %d",
-                       ImGuiSliderFlags_AlwaysClamp))
+  if (ImGui::SliderInt("##meshdepth", &depth, 0, std::max(mesh_.maxDepth(), 0), "n = %d", ImGuiSliderFlags_AlwaysClamp))
     mesh_.depth = depth;
   state.probe.item("preview.mesh.depth");
   char help[160];

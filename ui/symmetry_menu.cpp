@@ -17,12 +17,10 @@ void drawSymmetryMenu(ModellerState& state, EditQueue& edits) {
     int n;
     const char* label;
   };
-  static const Choice kChoices[] = {{2, "2-way rotation"},         {3, "3-way rotation"},
-                                    {4, "4-way rotation"},         {5, "5-way rotation"},
-                                    {6, "6-way rotation"},         {8, "8-way rotation"},
-                                    {-1, "Bilateral (mirror)"},    {-2, "2-way dihedral"},
-                                    {-3, "3-way dihedral"},        {-4, "4-way dihedral"},
-                                    {-5, "5-way dihedral"},        {-6, "Snowflake (6-way dihedral)"}};
+  static const Choice kChoices[] = {
+      {2, "2-way rotation"},  {3, "3-way rotation"},  {4, "4-way rotation"},      {5, "5-way rotation"},
+      {6, "6-way rotation"},  {8, "8-way rotation"},  {-1, "Bilateral (mirror)"}, {-2, "2-way dihedral"},
+      {-3, "3-way dihedral"}, {-4, "4-way dihedral"}, {-5, "5-way dihedral"},     {-6, "Snowflake (6-way dihedral)"}};
   for (const Choice& c : kChoices) {
     if (c.n == -1) ImGui::Separator();
     const bool chosen = ImGui::MenuItem(c.label);
@@ -34,8 +32,9 @@ void drawSymmetryMenu(ModellerState& state, EditQueue& edits) {
                    [n](Project& p) { addSymmetry(p, n, symmetryFrameForView(p.camera)); });
     }
     if (ImGui::IsItemHovered())
-      state.contextHelp = "Adds functions (weight = the others' sum, color speed 0) that make the attractor symmetric "
-                          "about the preview's view axis (seed 002 §7)";
+      state.contextHelp =
+          "Adds functions (weight = the others' sum, color speed 0) that make the attractor symmetric "
+          "about the preview's view axis (seed 002 §7)";
   }
   ImGui::EndMenu();
 }

@@ -2,12 +2,12 @@
 // the deterministic mesh preview F^n(A), and File > Export mesh… through the real window with
 // xdotool, the file checked by loading it back with OpenMesh. Same conventions as
 // modeller_gui_test.cpp (probe file for widget rectangles, pixels from the X server).
+#include <OpenImageIO/imagebuf.h>
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <OpenImageIO/imagebuf.h>
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <chrono>
 #include <cmath>
