@@ -10,7 +10,6 @@
 #include <fstream>
 #include <mutex>
 #include <new>
-#include <sstream>
 #include <system_error>
 
 #include "core/model_types.h"
@@ -21,40 +20,26 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// OpenMesh reports problems on its global omerr()/omlog() streams (std::cerr by default). The
-// CLI promises one clear sentence on stderr, so while we read or write, those streams go to a
-// buffer instead; the lock makes the redirection safe if two threads do mesh IO at once.
-class OpenMeshMessages {
+// OpenMesh reports problems on its global omerr()/omlog()/omout() streams (std::cerr by
+// default), e.g. a line per face of a non-manifold file. The CLI promises one clear sentence on
+// stderr, so the streams are muted while we read or write; our own checks say what went wrong.
+// (Muting, not redirecting: OpenMesh 9's mostream::disconnect leaks its target on every call.)
+// The lock keeps two threads doing mesh IO from unmuting each other.
+class QuietOpenMesh {
  public:
-  OpenMeshMessages() : lock_(mutex()) {
-    ::omerr().disconnect(std::cerr);
-    ::omerr().connect(captured_);
+  QuietOpenMesh() : lock_(mutex()) {
+    ::omerr().disable();
     ::omlog().disable();
     ::omout().disable();
   }
-  ~OpenMeshMessages() {
-    ::omerr().flush();
-    ::omerr().disconnect(captured_);
-    ::omerr().connect(std::cerr);
+  ~QuietOpenMesh() {
+    ::omerr().flush();  // drops what was buffered while muted
+    ::omerr().enable();
     ::omlog().enable();
     ::omout().enable();
   }
-  OpenMeshMessages(const OpenMeshMessages&) = delete;
-  OpenMeshMessages& operator=(const OpenMeshMessages&) = delete;
-
-  /// The first line OpenMesh reported, without its "[Reader] :" style prefix, or "".
-  std::string firstMessage() {
-    ::omerr().flush();
-    std::string line;
-    std::istringstream in(captured_.str());
-    while (std::getline(in, line)) {
-      if (const auto colon = line.find(": "); line.rfind('[', 0) == 0 && colon != std::string::npos)
-        line = line.substr(colon + 2);
-      while (!line.empty() && std::isspace(static_cast<unsigned char>(line.back()))) line.pop_back();
-      if (!line.empty()) return line;
-    }
-    return "";
-  }
+  QuietOpenMesh(const QuietOpenMesh&) = delete;
+  QuietOpenMesh& operator=(const QuietOpenMesh&) = delete;
 
  private:
   static std::mutex& mutex() {
@@ -62,7 +47,6 @@ class OpenMeshMessages {
     return m;
   }
   std::lock_guard<std::mutex> lock_;
-  std::ostringstream captured_;
 };
 
 std::string lowerExtension(const fs::path& path) {
@@ -153,7 +137,7 @@ IfsMesh readMeshFile(const fs::path& file) {
   bool ok = false;
   std::string message;
   {
-    OpenMeshMessages messages;
+    QuietOpenMesh quiet;
     try {
       ok = OpenMesh::IO::read_mesh(mesh, file.string(), options);
     } catch (const std::bad_alloc&) {  // OpenMesh reserves what the header declares
@@ -163,7 +147,6 @@ IfsMesh readMeshFile(const fs::path& file) {
       ok = false;
       message = e.what();
     }
-    if (message.empty()) message = messages.firstMessage();
   }
   if (!ok)
     throw ModelError("", "cannot read " + name + " as " + meshFormatName(*format) +
@@ -215,14 +198,13 @@ void writeMeshFile(const IfsMesh& mesh, const fs::path& file, const MeshWriteOpt
     bool ok = false;
     std::string message;
     {
-      OpenMeshMessages messages;
+      QuietOpenMesh quiet;
       try {
         // 9 significant digits round-trip a float exactly in the ASCII formats.
         ok = OpenMesh::IO::write_mesh(mesh, out, extensionOf(*format), flags, 9);
       } catch (const std::exception& e) {
         message = e.what();
       }
-      if (message.empty()) message = messages.firstMessage();
     }
     out.flush();
     if (!ok || !out) fail(!ok ? (message.empty() ? "OpenMesh's writer failed" : message) : "the disk may be full");

@@ -26,7 +26,7 @@ inline constexpr std::uintmax_t kMaxMeshFileBytes = std::uintmax_t(1) << 30;
 /// (non-manifold input) keep face status `fixed_nonmanifold` (the mesh has face status).
 /// Throws ModelError (message names the file) when the file is missing, too large, of an
 /// unknown format or unreadable. Thread-safe with respect to other mesh_io calls (OpenMesh's
-/// message streams are redirected under a lock); OpenMesh's messages are never printed.
+/// message streams are muted under a lock); OpenMesh's messages are never printed.
 IfsMesh readMeshFile(const std::filesystem::path& file);
 
 struct MeshWriteOptions {
@@ -43,7 +43,7 @@ void checkMeshOutputPath(const std::filesystem::path& file);
 /// is written, flushed, synced and renamed over `file`, so `file` is either the old content
 /// or the complete new mesh. Throws IoError (naming the file) on any failure, ModelError for an
 /// unknown extension. The per-face `address` property goes into PLY files only. Thread-safe for
-/// distinct files (OpenMesh's message streams are redirected under the same lock as reading).
+/// distinct files (OpenMesh's message streams are muted under the same lock as reading).
 void writeMeshFile(const IfsMesh& mesh, const std::filesystem::path& file, const MeshWriteOptions& options = {});
 
 }  // namespace gridifs
