@@ -92,16 +92,20 @@ bool FlameDisplay::update(const Document& document, double now, const RenderImag
   }
   if (image.width <= 0 || image.colorSums.empty()) return uploaded;
   const Project& p = document.project();
-  const bool changed = image.generation != developedGeneration_ || !(p.render.flame == developedSettings_) ||
+  // While a slider or the camera is dragged, develop without density estimation (docs/FLAME.md:
+  // about half the cost), so the picture follows the hand; the full develop follows on release.
+  FlameSettings settings = p.render.flame;
+  if (document.inGesture()) settings.estimator_radius = 0.0;
+  const bool changed = image.generation != developedGeneration_ || !(settings == developedSettings_) ||
                        !(p.render.background == developedBackground_) || developedSamples_ < 0;
   const bool more = image.stats.samples != developedSamples_;
   // A few hundred ms between develops while the picture streams (docs/FLAME.md: 60–130 ms of CPU
   // at 1024² with density estimation); a settings change or a new generation develops at once.
   if ((changed || (more && now - lastSubmit_ >= 0.3)) && !developer_.busy()) {
-    if (developer_.submit(image, p.render.flame, p.camera, p.render.background)) {
+    if (developer_.submit(image, settings, p.camera, p.render.background)) {
       developedGeneration_ = image.generation;
       developedSamples_ = image.stats.samples;
-      developedSettings_ = p.render.flame;
+      developedSettings_ = settings;
       developedBackground_ = p.render.background;
       lastSubmit_ = now;
     }

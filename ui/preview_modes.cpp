@@ -35,7 +35,6 @@ void PreviewModes::syncFromProject(ModellerState& state) {
 
 void PreviewModes::buildToolbar(ModellerState& state, EditQueue& edits) {
   syncFromProject(state);
-  const PreviewMode before = state.previewMode;
   auto modeButton = [&](const char* label, PreviewMode mode, const char* probeName, const char* help) {
     if (ImGui::RadioButton(label, state.previewMode == mode)) state.previewMode = mode;
     state.probe.item(probeName);
@@ -59,7 +58,6 @@ void PreviewModes::buildToolbar(ModellerState& state, EditQueue& edits) {
       projectMode_ = want;
     }
   }
-  (void)before;
   if (state.previewMode == PreviewMode::Flame) {
     ImGui::SameLine(0.0f, ImGui::GetFontSize());
     drawFlameControls(state, edits);
