@@ -173,6 +173,8 @@ void PreviewModes::drawFlameControls(ModellerState& state, EditQueue& edits) {
     ImGui::SameLine();
     const double ms = flame_.developer().lastMs();
     ImGui::TextDisabled("develop %.0f ms", ms);
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape)) && !ImGui::IsAnyItemActive())
+      ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
   }
 }

@@ -148,6 +148,7 @@ nlohmann::json PreviewModes::probeJson() const {
   return {{"mode", modeName(shownMode_)},
           {"flame_developed", flame_.developed()},
           {"flame_ms", flame_.developer().lastMs()},
+          {"flame_busy", flame_.developer().busy()},
           {"flame_error", flame_.developer().error()},
           {"palette_error", paletteError_},
           {"mesh_faces", mesh_.faces()},

@@ -191,9 +191,33 @@ TEST(PreviewModesGui, FlameModeShowsADifferentPictureWithoutRestart) {
   EXPECT_GT(litFraction(flame), 0.02) << "the flame picture looks empty";
   EXPECT_GT(meanAbsDifference(zbuffer, flame), 2.0) << "the flame picture is the z-buffer picture";
 
+  // Tone mapping: one brightness drag is one undo step, re-develops the picture, no restart.
+  clickRect(rectOf(probe, "flame.tone"));
+  probe = app.waitFor([](const nlohmann::json& j) { return j["rects"].contains("flame.Brightness"); }, 10s);
+  ASSERT_TRUE(probe["rects"].contains("flame.Brightness"));
+  const Rect slider = rectOf(probe, "flame.Brightness");
+  const int developed = probe["preview_modes"]["flame_developed"];
+  const int y = slider.y + slider.h / 2, x0 = slider.x + slider.w / 2;
+  std::string drag = "mousemove " + std::to_string(x0) + " " + std::to_string(y) + " sleep 0.15 mousedown 1 sleep 0.15";
+  for (int k = 1; k <= 8; ++k)
+    drag += " mousemove " + std::to_string(x0 + k * slider.w / 20) + " " + std::to_string(y) + " sleep 0.05";
+  xdotool(drag + " sleep 0.2 mouseup 1");
+  probe = app.waitFor([&](const nlohmann::json& j) {
+    return j["undo"] == "Brightness" && j["preview_modes"]["flame_developed"].get<int>() > developed &&
+           j["preview_modes"]["flame_busy"] == false;
+  });
+  EXPECT_EQ(probe["undo"], "Brightness");
+  EXPECT_EQ(probe["preview"]["restarts"].get<std::uint64_t>(), restarts) << "tone mapping restarted the chaos game";
+  EXPECT_GT(probe["preview_modes"]["flame_developed"].get<int>(), developed);
+  xdotool("keydown Escape sleep 0.15 keyup Escape");  // close the popup (held: ImGui 1.86 has no input queue)
+  std::this_thread::sleep_for(500ms);
+  const auto brighter = grabScreen(home, image);
+  EXPECT_GT(meanAbsDifference(flame, brighter), 1.0) << "the brightness drag did not change the picture";
+
   // Back to the z-buffer: the same picture as before, still without a restart.
   clickRect(rectOf(probe, "preview.mode.zbuffer"));
-  probe = app.waitFor([](const nlohmann::json& j) { return j["preview_modes"]["mode"] == "zbuffer"; });
+  probe = app.waitFor([](const nlohmann::json& j) { return j["preview_modes"]["mode"] == "zbuffer"; }, 10s);
+  ASSERT_EQ(probe["preview_modes"]["mode"], "zbuffer");
   std::this_thread::sleep_for(400ms);
   EXPECT_LT(meanAbsDifference(zbuffer, grabScreen(home, image)), 0.5);
   EXPECT_EQ(app.probe()["preview"]["restarts"].get<std::uint64_t>(), restarts);
