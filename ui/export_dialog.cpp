@@ -2,19 +2,16 @@
 
 #include <imgui.h>
 #include <imgui_stdlib.h>
-#include <unistd.h>
 
 #include <algorithm>
-#include <bit>
-#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <memory>
 
 #include "core/compiled_ifs.h"
 #include "core/mesh_io.h"
+#include "core/point_cloud_export.h"
 #include "core/project_io.h"
 #include "ui/widgets.h"
 
@@ -41,82 +38,6 @@ std::string megabytes(std::uint64_t bytes) {
   else
     std::snprintf(text, sizeof text, "%.1f MB", double(bytes) / double(1 << 20));
   return text;
-}
-
-/// The PLY of `gridifs export-points` (binary little-endian, x y z float, red green blue uchar).
-/// The header is written with a placeholder count and rewritten at the same length at the end.
-std::string pointsHeader(std::uint64_t count, const std::string& description) {
-  const std::string pad = "comment " + std::string(24 - std::to_string(count).size(), '-') + "\n";
-  return "ply\nformat binary_little_endian 1.0\ncomment " + description + "\n" + pad + "element vertex " +
-         std::to_string(count) +
-         "\nproperty float x\nproperty float y\nproperty float z\nproperty uchar red\nproperty uchar green\n"
-         "property uchar blue\nend_header\n";
-}
-
-/// Streams the chaos-game points of `job` into `out` through a temporary file in the same folder
-/// that is renamed over `out` only when everything was written (DESIGN §4: nothing half-written).
-/// Throws IoError naming the file, DeterministicCancelled when cancelled.
-std::uint64_t writePointCloud(const CompiledIfs& ifs, const RenderJob& job, const fs::path& out,
-                              const std::string& description, std::atomic<double>& progress,
-                              const std::atomic<bool>& cancel) {
-  const fs::path temp = out.parent_path() / ("." + out.filename().string() + ".tmp-" + std::to_string(::getpid()));
-  std::FILE* f = std::fopen(temp.c_str(), "wb");
-  if (!f) throw IoError("cannot write " + out.string() + ": " + std::strerror(errno));
-  struct Cleanup {
-    std::FILE*& f;
-    const fs::path& temp;
-    bool keep = false;
-    ~Cleanup() {
-      if (f) std::fclose(f);
-      std::error_code ec;
-      if (!keep) fs::remove(temp, ec);
-    }
-  } cleanup{f, temp};
-  auto write = [&](const void* data, std::size_t bytes) {
-    if (bytes && std::fwrite(data, 1, bytes, f) != bytes)
-      throw IoError("cannot write " + out.string() + ": " + std::strerror(errno));
-  };
-  const std::string header0 = pointsHeader(0, description);
-  write(header0.data(), header0.size());
-  std::vector<unsigned char> record;
-  std::uint64_t written = 0;
-  bool cancelled = false;
-  const RenderStats stats = generatePoints(ifs, job, [&](const PointBatch& batch, const RenderStats& s) {
-    record.resize(batch.count * 15);
-    unsigned char* w = record.data();
-    for (std::size_t i = 0; i < batch.count; ++i, w += 15) {
-      for (int d = 0; d < 3; ++d) {
-        std::uint32_t bits = std::bit_cast<std::uint32_t>(batch.xyz[3 * i + d]);
-        if constexpr (std::endian::native == std::endian::big) bits = __builtin_bswap32(bits);
-        std::memcpy(w + 4 * d, &bits, 4);
-      }
-      for (int c = 0; c < 3; ++c)
-        w[12 + c] = (unsigned char)std::lround(std::clamp(batch.rgb[3 * i + c], 0.0f, 1.0f) * 255.0f);
-    }
-    write(record.data(), record.size());
-    written += batch.count;
-    progress = s.progress();
-    cancelled = cancel.load();
-    return !cancelled;
-  });
-  if (cancelled) throw DeterministicCancelled();
-  if (stats.badFraction() >= 0.5)
-    throw IoError(std::to_string(int(std::lround(100 * stats.badFraction()))) +
-                  "% of the chaos-game points were non-finite or escaped, so the IFS has no usable attractor; " +
-                  out.string() + " was not written");
-  const std::string header = pointsHeader(written, description);
-  if (std::fseek(f, 0, SEEK_SET) != 0) throw IoError("cannot write " + out.string() + ": " + std::strerror(errno));
-  write(header.data(), header.size());
-  if (std::fflush(f) != 0 || ::fsync(::fileno(f)) != 0)
-    throw IoError("cannot write " + out.string() + ": " + std::strerror(errno));
-  const int closed = std::fclose(f);
-  f = nullptr;
-  if (closed != 0) throw IoError("cannot write " + out.string() + ": " + std::strerror(errno));
-  std::error_code ec;
-  fs::rename(temp, out, ec);
-  if (ec) throw IoError("cannot write " + out.string() + ": " + ec.message());
-  cleanup.keep = true;
-  return written;
 }
 
 fs::path defaultFolder(const ModellerState& state) {
@@ -327,7 +248,12 @@ void ExportDialog::start(ModellerState& state) {
       running_ = true;
       worker_ = std::thread([this, ifs, job, output, description] {
         try {
-          const std::uint64_t n = writePointCloud(*ifs, job, output, description, progress_, cancel_);
+          const PointCloudResult written = writePointCloud(*ifs, job, output, description, [&](const RenderStats& s) {
+            progress_ = s.progress();
+            return !cancel_.load();
+          });
+          if (written.cancelled) throw DeterministicCancelled();
+          const std::uint64_t n = written.written;
           finish(Phase::Done, "Wrote " + output.string() + ": " + withThousands(n) + " points.");
         } catch (const DeterministicCancelled&) {
           finish(Phase::Cancelled, "Cancelled; " + output.filename().string() + " was not written.");
