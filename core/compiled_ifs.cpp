@@ -151,20 +151,8 @@ std::shared_ptr<const CompiledIfs> compileIfs(const Document& document) {
 std::shared_ptr<const CompiledIfs> compileIfs(const Project& project) {
   return compileWith(
       project,
-      [&](std::size_t i) {
-        try {
-          return std::make_shared<const Grid>(evaluateFunction(project.functions[i]));
-        } catch (const ModelError& e) {
-          throw e.under("functions[" + std::to_string(i) + "]");
-        }
-      },
-      [&] {
-        try {
-          return std::make_shared<const Grid>(evaluateFunction(*project.final_function));
-        } catch (const ModelError& e) {
-          throw e.under("final");
-        }
-      });
+      [&](std::size_t i) { return evaluateFunctionAt(project.functions[i], "functions[" + std::to_string(i) + "]"); },
+      [&] { return evaluateFunctionAt(*project.final_function, "final"); });
 }
 
 }  // namespace gridifs

@@ -160,20 +160,8 @@ DeterministicIfs snapshotDeterministicIfs(const Document& document) {
 DeterministicIfs snapshotDeterministicIfs(const Project& project) {
   return snapshotWith(
       project,
-      [&](std::size_t i) {
-        try {
-          return std::make_shared<const Grid>(evaluateFunction(project.functions[i]));
-        } catch (const ModelError& e) {
-          throw e.under("functions[" + std::to_string(i) + "]");
-        }
-      },
-      [&] {
-        try {
-          return std::make_shared<const Grid>(evaluateFunction(*project.final_function));
-        } catch (const ModelError& e) {
-          throw e.under("final");
-        }
-      });
+      [&](std::size_t i) { return evaluateFunctionAt(project.functions[i], "functions[" + std::to_string(i) + "]"); },
+      [&] { return evaluateFunctionAt(*project.final_function, "final"); });
 }
 
 DeterministicPlan planDeterministic(const DeterministicIfs& ifs, const MeshCounts& base,

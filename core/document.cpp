@@ -100,14 +100,10 @@ std::shared_ptr<const Grid> Document::cached(const Function& fn, std::size_t slo
   if (cache_.size() <= slot) cache_.resize(slot + 1);
   auto& entry = cache_[slot];
   if (entry && entry->function == fn) return entry->grid;
-  try {
-    auto grid = std::make_shared<const Grid>(evaluateFunction(fn));
-    entry = CacheEntry{fn, grid};
-    return grid;
-  } catch (const ModelError& e) {
-    entry.reset();
-    throw e.under(path);
-  }
+  entry.reset();  // a failed evaluation leaves no stale grid behind
+  auto grid = evaluateFunctionAt(fn, path);
+  entry = CacheEntry{fn, grid};
+  return grid;
 }
 
 std::shared_ptr<const Grid> Document::evaluatedGrid(std::size_t index) const {

@@ -271,6 +271,14 @@ Grid evaluateFunction(const Function& function, std::size_t upToOp, bool applyPl
   return grid;
 }
 
+std::shared_ptr<const Grid> evaluateFunctionAt(const Function& function, const std::string& path) {
+  try {
+    return std::make_shared<const Grid>(evaluateFunction(function));
+  } catch (const ModelError& e) {
+    throw e.under(path);
+  }
+}
+
 const char* opTypeName(const OpParams& params) {
   static const char* kNames[] = {"translate", "rotate", "scale",      "taper",     "twist",
                                  "bend",      "magnet", "morph",      "calculator", "nodes"};

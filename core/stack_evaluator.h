@@ -1,5 +1,7 @@
 #pragma once
 // Evaluates a function's op stack: distorted nodes = placement(stack(undistorted)) (DESIGN §2).
+#include <memory>
+
 #include "core/function.h"
 #include "core/grid.h"
 
@@ -43,5 +45,9 @@ Vec3 applyPlacement(const Placement& placement, const Vec3& q);
 /// Throws ModelError with a path relative to the function ("ops[3].k: ...").
 Grid evaluateFunction(const Function& function, std::size_t upToOp = std::size_t(-1),
                       bool applyPlacementToo = true);
+
+/// evaluateFunction with errors located under `path` ("functions[2]", "final"), the form
+/// every caller outside the stack reports (Document cache, compiled snapshots, mesh export).
+std::shared_ptr<const Grid> evaluateFunctionAt(const Function& function, const std::string& path);
 
 }  // namespace gridifs
