@@ -1,201 +1,13 @@
-// GUI tier (issue 4 "Tests"): the real modeller window under Xvfb + Mesa, real frames, real input
-// through xdotool, assertions on pixels and on the saved file. Run by scripts/test as
-// `xvfb-run -a -s "-screen 0 1600x1000x24" ctest -L gui`.
-#include <gtest/gtest.h>
-#include <signal.h>
+// GUI tier: the real modeller window under Xvfb + Mesa, real frames, real input through xdotool,
+// assertions on pixels and on the saved file. Run by scripts/test as
+// `xvfb-run -a -s "-screen 0 1600x1000x24" ctest -L gui`. The harness is gui/gui_harness.h.
 #include <sys/stat.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
-#include <OpenImageIO/imagebuf.h>
-#include <OpenImageIO/imagebufalgo.h>
-#include <chrono>
-#include <cmath>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <glm/geometric.hpp>
-#include <nlohmann/json.hpp>
-#include <optional>
-#include <string>
-#include <thread>
-#include <vector>
 
-#include "core/project_io.h"
+#include "gui/gui_harness.h"
 
-namespace fs = std::filesystem;
-using namespace std::chrono_literals;
-
-namespace {
-
-bool haveDisplay() {
-  const char* d = std::getenv("DISPLAY");
-  return d && *d;
-}
-
-/// A fresh folder per test, also used as XDG config/state home so tests never share settings.
-struct TempFolder {
-  fs::path path;
-  TempFolder() {
-    path = fs::temp_directory_path() / ("gridifs-gui-" + std::to_string(::getpid()) + "-" +
-                                        std::to_string(std::chrono::steady_clock::now().time_since_epoch().count()));
-    fs::create_directories(path);
-  }
-  ~TempFolder() {
-    std::error_code ec;
-    std::system(("chattr -R -i '" + path.string() + "' 2>/dev/null; chmod -R u+w '" + path.string() + "' 2>/dev/null").c_str());
-    fs::remove_all(path, ec);
-  }
-};
-
-int run(const std::string& command) {
-  const int status = std::system(command.c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-/// The modeller as a child process with its --probe file.
-class App {
- public:
-  App(const TempFolder& home, const std::vector<std::string>& args) : probe_(home.path / "probe.json") {
-    pid_ = ::fork();
-    if (pid_ == 0) {
-      ::setenv("XDG_CONFIG_HOME", (home.path / "config").c_str(), 1);
-      ::setenv("XDG_STATE_HOME", (home.path / "state").c_str(), 1);
-      std::vector<std::string> all{GRIDIFS_EXE};
-      all.insert(all.end(), args.begin(), args.end());
-      all.push_back("--probe");
-      all.push_back(probe_.string());
-      std::vector<char*> argv;
-      for (auto& a : all) argv.push_back(a.data());
-      argv.push_back(nullptr);
-      ::execv(GRIDIFS_EXE, argv.data());
-      ::_exit(127);
-    }
-  }
-  ~App() {
-    if (pid_ > 0 && !exited_) {
-      ::kill(pid_, SIGKILL);
-      ::waitpid(pid_, nullptr, 0);
-    }
-  }
-  /// The latest probe, once the window has drawn a frame.
-  nlohmann::json probe() const {
-    for (int attempt = 0; attempt < 200; ++attempt) {
-      std::ifstream in(probe_);
-      if (in) {
-        try {
-          return nlohmann::json::parse(in);
-        } catch (const std::exception&) {
-        }
-      }
-      std::this_thread::sleep_for(50ms);
-    }
-    return {};
-  }
-  /// Waits until `pred(probe)` holds (or the timeout passes); returns the last probe.
-  template <class Pred>
-  nlohmann::json waitFor(Pred pred, std::chrono::seconds timeout = 30s) const {
-    const auto end = std::chrono::steady_clock::now() + timeout;
-    nlohmann::json j;
-    while (std::chrono::steady_clock::now() < end) {
-      j = probe();
-      if (!j.is_null() && pred(j)) return j;
-      std::this_thread::sleep_for(100ms);
-    }
-    return j;
-  }
-  /// Waits for the preview of the current project to finish and reach the screen.
-  nlohmann::json waitForPreview(std::uint64_t afterRestarts = 0) const {
-    return waitFor([&](const nlohmann::json& j) {
-      const auto& p = j["preview"];
-      return p["done"].get<bool>() && p["restarts"].get<std::uint64_t>() > afterRestarts &&
-             p["image_generation"] == p["generation"] && !j["modal"].get<bool>();
-    });
-  }
-  std::optional<int> waitExit(std::chrono::seconds timeout = 20s) {
-    const auto end = std::chrono::steady_clock::now() + timeout;
-    while (std::chrono::steady_clock::now() < end) {
-      int status = 0;
-      if (::waitpid(pid_, &status, WNOHANG) == pid_) {
-        exited_ = true;
-        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-      }
-      std::this_thread::sleep_for(100ms);
-    }
-    return std::nullopt;
-  }
-
- private:
-  fs::path probe_;
-  pid_t pid_ = -1;
-  bool exited_ = false;
-};
-
-void xdotool(const std::string& args) { ASSERT_EQ(run("xdotool " + args), 0) << args; }
-
-struct Rect {
-  int x = 0, y = 0, w = 0, h = 0;
-};
-
-/// A widget's rectangle in screen coordinates (the window sits at the probe's x, y).
-Rect rectOf(const nlohmann::json& probe, const std::string& name) {
-  const auto& r = probe["rects"][name];
-  const int wx = probe["window"]["x"], wy = probe["window"]["y"];
-  return {wx + int(r[0].get<double>()), wy + int(r[1].get<double>()), int(r[2].get<double>()), int(r[3].get<double>())};
-}
-
-void focusWindow() {
-  run("xdotool search --name GridIFS windowfocus >/dev/null 2>&1");
-  std::this_thread::sleep_for(200ms);
-}
-
-/// Holds keys for a moment, as a person does (a zero-length tap can fall between two frames).
-void pressKeys(const std::string& combo) {
-  focusWindow();
-  xdotool("keydown " + combo + " sleep 0.15 keyup " + combo);
-  std::this_thread::sleep_for(400ms);
-}
-
-void clickAt(int x, int y) {
-  xdotool("mousemove " + std::to_string(x) + " " + std::to_string(y) + " sleep 0.1 click 1");
-  std::this_thread::sleep_for(400ms);
-}
-
-void dragFrom(int x0, int y0, int x1, int y1) {
-  std::string cmd = "mousemove " + std::to_string(x0) + " " + std::to_string(y0) + " sleep 0.15 mousedown 1 sleep 0.15";
-  for (int s = 1; s <= 12; ++s)
-    cmd += " mousemove " + std::to_string(x0 + (x1 - x0) * s / 12) + " " + std::to_string(y0 + (y1 - y0) * s / 12) + " sleep 0.04";
-  cmd += " sleep 0.2 mouseup 1";
-  xdotool(cmd);
-  std::this_thread::sleep_for(400ms);
-}
-
-/// The screen as the X server shows it (ImageMagick's import), cropped to `r`.
-std::vector<float> grabScreen(const TempFolder& home, const Rect& r) {
-  const fs::path file = home.path / "grab.png";
-  EXPECT_EQ(run("import -window root '" + file.string() + "'"), 0);
-  OIIO::ImageBuf buf(file.string());
-  std::vector<float> pixels(std::size_t(r.w) * r.h * 3);
-  buf.get_pixels(OIIO::ROI(r.x, r.x + r.w, r.y, r.y + r.h, 0, 1, 0, 3), OIIO::TypeDesc::FLOAT, pixels.data());
-  return pixels;
-}
-
-double meanAbsDifference(const std::vector<float>& a, const std::vector<float>& b) {
-  double sum = 0.0;
-  for (std::size_t i = 0; i < a.size(); ++i) sum += std::abs(double(a[i]) - double(b[i]));
-  return a.empty() ? 0.0 : sum / double(a.size()) * 255.0;
-}
-
-/// A copy of an example with a small sample budget, so previews finish within a second.
-fs::path exampleCopy(const TempFolder& home, const std::string& name, std::int64_t samples = 1'000'000) {
-  gridifs::Project p = gridifs::loadProject(fs::path(GRIDIFS_ASSETS) / name);
-  p.render.samples = samples;
-  const fs::path file = home.path / name;
-  gridifs::saveProject(p, file);
-  return file;
-}
-
-}  // namespace
+using namespace gridifs::gui_test;
 
 TEST(ModellerGui, ScreenshotShowsGridViewsAndPreview) {
   if (!haveDisplay()) GTEST_SKIP() << "no X display (run under xvfb-run)";
@@ -247,10 +59,10 @@ TEST(ModellerGui, TwistSliderDragUndoAndSave) {
   // Pick the twist in the stack and drag its k slider (one gesture = one undo step).
   const Rect row = rectOf(probe, "ops.row.0");
   clickAt(row.x + row.w / 2, row.y + row.h / 2);
-  probe = app.waitFor([](const nlohmann::json& j) { return j["rects"].contains("twist.k"); });
-  ASSERT_TRUE(probe["rects"].contains("twist.k"));
-  const std::uint64_t restarts = probe["preview"]["restarts"];
-  const Rect slider = rectOf(probe, "twist.k");
+  const std::optional<Rect> twistK = app.waitForStableRect("twist.k");
+  ASSERT_TRUE(twistK) << "the twist's parameters are not shown";
+  const Rect slider = *twistK;
+  const std::uint64_t restarts = app.probe()["preview"]["restarts"];
   const int grab = slider.x + int(slider.w * (0.5 + originalK / (4.0 * M_PI)));  // the k = original spot
   dragFrom(grab, slider.y + slider.h / 2, grab + slider.w / 4, slider.y + slider.h / 2);
   probe = app.waitForPreview(restarts);
@@ -380,18 +192,10 @@ TEST(ModellerGui, AutosaveIsOfferedBackAfterACrash) {
   }
   App again(home, {});
   // Popups settle their size and position over a few frames: wait until the button stays put.
-  nlohmann::json last;
-  nlohmann::json probe = again.waitFor([&](const nlohmann::json& j) {
-    const bool stable = j["rects"].contains("recovery.recover") && !last.is_null() &&
-                        last["rects"].contains("recovery.recover") &&
-                        j["rects"]["recovery.recover"] == last["rects"]["recovery.recover"] && j["frame"] != last["frame"];
-    last = j;
-    return stable;
-  });
-  ASSERT_TRUE(probe["rects"].contains("recovery.recover")) << "no offer to recover";
-  const Rect recover = rectOf(probe, "recovery.recover");
-  clickAt(recover.x + recover.w / 2, recover.y + recover.h / 2);
-  probe = again.waitFor([&](const nlohmann::json& j) { return j["functions"].get<std::size_t>() == functions + 1; });
+  const std::optional<Rect> recover = again.waitForStableRect("recovery.recover", 30s);
+  ASSERT_TRUE(recover) << "no offer to recover";
+  clickRect(*recover);
+  nlohmann::json probe = again.waitFor([&](const nlohmann::json& j) { return j["functions"].get<std::size_t>() == functions + 1; });
   EXPECT_EQ(probe["functions"].get<std::size_t>(), functions + 1);
   EXPECT_TRUE(probe["dirty"].get<bool>()) << "recovered work must count as unsaved";
   EXPECT_EQ(fs::path(probe["path"].get<std::string>()), fs::absolute(project));

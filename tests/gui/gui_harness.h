@@ -1,0 +1,261 @@
+#pragma once
+// The GUI tier's harness, shared by every GUI test file: the real modeller as a child process in
+// a fresh home (HOME and every XDG folder inside a temporary folder, so no state survives from an
+// earlier run or from the machine's user), its --probe file (widget rectangles and state, written
+// every frame), real input through xdotool and pixels from the X server through ImageMagick.
+//
+// Rectangles are read only once they are stable: a popup or an auto-sized window is placed in
+// its second frame, so a rectangle taken from its first frame can point beside the widget.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <OpenImageIO/imagebuf.h>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "core/project_io.h"
+
+namespace gridifs::gui_test {
+
+namespace fs = std::filesystem;
+using namespace std::chrono_literals;
+
+inline bool haveDisplay() {
+  const char* d = std::getenv("DISPLAY");
+  return d && *d;
+}
+
+inline int run(const std::string& command) {
+  const int status = std::system(command.c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+/// A fresh folder per test; the modeller started from it sees it as its home and XDG folders.
+struct TempFolder {
+  fs::path path;
+  TempFolder() {
+    path = fs::temp_directory_path() / ("gridifs-gui-" + std::to_string(::getpid()) + "-" +
+                                        std::to_string(std::chrono::steady_clock::now().time_since_epoch().count()));
+    fs::create_directories(path);
+  }
+  ~TempFolder() {
+    std::error_code ec;
+    // A test may leave a folder read-only (for root: immutable) when it fails half-way.
+    run("chattr -R -i '" + path.string() + "' 2>/dev/null; chmod -R u+w '" + path.string() + "' 2>/dev/null");
+    fs::remove_all(path, ec);
+  }
+  TempFolder(const TempFolder&) = delete;
+  TempFolder& operator=(const TempFolder&) = delete;
+};
+
+struct Rect {
+  int x = 0, y = 0, w = 0, h = 0;
+  bool operator==(const Rect&) const = default;
+};
+
+/// A widget's rectangle in screen coordinates (the window sits at the probe's x, y).
+inline Rect rectOf(const nlohmann::json& probe, const std::string& name) {
+  const auto& r = probe["rects"][name];
+  const int wx = probe["window"]["x"], wy = probe["window"]["y"];
+  return {wx + int(r[0].get<double>()), wy + int(r[1].get<double>()), int(r[2].get<double>()),
+          int(r[3].get<double>())};
+}
+
+/// The modeller as a child process with its --probe file.
+class App {
+ public:
+  App(const TempFolder& home, const std::vector<std::string>& args) : probe_(home.path / "probe.json") {
+    pid_ = ::fork();
+    if (pid_ == 0) {
+      const fs::path h = home.path / "home";
+      ::setenv("HOME", h.c_str(), 1);
+      ::setenv("XDG_CONFIG_HOME", (home.path / "config").c_str(), 1);
+      ::setenv("XDG_STATE_HOME", (home.path / "state").c_str(), 1);
+      ::setenv("XDG_DATA_HOME", (h / ".local/share").c_str(), 1);
+      ::setenv("XDG_CACHE_HOME", (h / ".cache").c_str(), 1);
+      std::vector<std::string> all{GRIDIFS_EXE};
+      all.insert(all.end(), args.begin(), args.end());
+      all.push_back("--probe");
+      all.push_back(probe_.string());
+      std::vector<char*> argv;
+      for (auto& a : all) argv.push_back(a.data());
+      argv.push_back(nullptr);
+      ::execv(GRIDIFS_EXE, argv.data());
+      ::_exit(127);
+    }
+  }
+  ~App() {
+    if (pid_ > 0 && !exited_) {
+      ::kill(pid_, SIGKILL);
+      ::waitpid(pid_, nullptr, 0);
+    }
+  }
+  App(const App&) = delete;
+  App& operator=(const App&) = delete;
+
+  pid_t pid() const { return pid_; }
+
+  /// The latest probe, once the window has drawn a frame (null if none came within 10 s).
+  nlohmann::json probe() const {
+    for (int attempt = 0; attempt < 200; ++attempt) {
+      std::ifstream in(probe_);
+      if (in) {
+        try {
+          return nlohmann::json::parse(in);
+        } catch (const std::exception&) {
+        }
+      }
+      std::this_thread::sleep_for(50ms);
+    }
+    return {};
+  }
+
+  /// Waits until `pred(probe)` holds (or the timeout passes); returns the last probe.
+  template <class Pred>
+  nlohmann::json waitFor(Pred pred, std::chrono::seconds timeout = 30s) const {
+    const auto end = std::chrono::steady_clock::now() + timeout;
+    nlohmann::json j;
+    while (std::chrono::steady_clock::now() < end) {
+      j = probe();
+      if (!j.is_null() && pred(j)) return j;
+      std::this_thread::sleep_for(100ms);
+    }
+    return j;
+  }
+
+  /// Waits for the preview of the current project to finish and reach the screen.
+  nlohmann::json waitForPreview(std::uint64_t afterRestarts = 0, std::chrono::seconds timeout = 90s) const {
+    return waitFor(
+        [&](const nlohmann::json& j) {
+          const auto& p = j["preview"];
+          return p["done"].get<bool>() && p["restarts"].get<std::uint64_t>() > afterRestarts &&
+                 p["image_generation"] == p["generation"] && !j["modal"].get<bool>();
+        },
+        timeout);
+  }
+
+  /// Waits until widget `name` has the same rectangle in probes of at least two later frames, so
+  /// that a popup's or a new window's placement has settled; returns that rectangle, or nullopt.
+  std::optional<Rect> waitForStableRect(const std::string& name, std::chrono::seconds timeout = 15s) const {
+    const auto end = std::chrono::steady_clock::now() + timeout;
+    Rect last;
+    std::int64_t lastFrame = -1;
+    int agreeing = -1;  // probes of later frames that agree with the first sighting
+    while (std::chrono::steady_clock::now() < end) {
+      const nlohmann::json j = probe();
+      if (!j.is_null() && j["rects"].contains(name)) {
+        const Rect r = rectOf(j, name);
+        const std::int64_t frame = j["frame"].get<std::int64_t>();
+        if (agreeing < 0 || !(r == last))
+          agreeing = 0;
+        else if (frame != lastFrame)
+          ++agreeing;
+        last = r;
+        lastFrame = frame;
+        if (agreeing >= 2) return r;
+      } else {
+        agreeing = -1;
+      }
+      std::this_thread::sleep_for(60ms);
+    }
+    return std::nullopt;
+  }
+
+  std::optional<int> waitExit(std::chrono::seconds timeout = 20s) {
+    const auto end = std::chrono::steady_clock::now() + timeout;
+    while (std::chrono::steady_clock::now() < end) {
+      int status = 0;
+      if (::waitpid(pid_, &status, WNOHANG) == pid_) {
+        exited_ = true;
+        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+      }
+      std::this_thread::sleep_for(100ms);
+    }
+    return std::nullopt;
+  }
+
+ private:
+  fs::path probe_;
+  pid_t pid_ = -1;
+  bool exited_ = false;
+};
+
+inline void xdotool(const std::string& args) { ASSERT_EQ(run("xdotool " + args), 0) << args; }
+
+inline void focusWindow() {
+  run("xdotool search --name GridIFS windowfocus >/dev/null 2>&1");
+  std::this_thread::sleep_for(200ms);
+}
+
+/// Holds keys for a moment, as a person does (ImGui 1.86 has no input queue: a zero-length tap
+/// can fall between two frames).
+inline void pressKeys(const std::string& combo) {
+  focusWindow();
+  xdotool("keydown " + combo + " sleep 0.15 keyup " + combo);
+  std::this_thread::sleep_for(400ms);
+}
+
+inline void clickAt(int x, int y) {
+  xdotool("mousemove " + std::to_string(x) + " " + std::to_string(y) + " sleep 0.1 click 1");
+  std::this_thread::sleep_for(400ms);
+}
+
+inline void clickRect(const Rect& r) { clickAt(r.x + r.w / 2, r.y + r.h / 2); }
+
+/// Presses at (x0, y0), moves to (x1, y1) in `steps` steps, releases.
+inline void dragFrom(int x0, int y0, int x1, int y1, int steps = 12) {
+  std::string cmd =
+      "mousemove " + std::to_string(x0) + " " + std::to_string(y0) + " sleep 0.15 mousedown 1 sleep 0.15";
+  for (int s = 1; s <= steps; ++s)
+    cmd += " mousemove " + std::to_string(x0 + (x1 - x0) * s / steps) + " " +
+           std::to_string(y0 + (y1 - y0) * s / steps) + " sleep 0.05";
+  cmd += " sleep 0.2 mouseup 1";
+  xdotool(cmd);
+  std::this_thread::sleep_for(400ms);
+}
+
+/// The screen as the X server shows it (ImageMagick's import), cropped to `r`, RGB floats.
+inline std::vector<float> grabScreen(const TempFolder& home, const Rect& r) {
+  const fs::path file = home.path / "grab.png";
+  EXPECT_EQ(run("import -window root '" + file.string() + "'"), 0);
+  OIIO::ImageBuf buf(file.string());
+  std::vector<float> pixels(std::size_t(r.w) * r.h * 3);
+  buf.get_pixels(OIIO::ROI(r.x, r.x + r.w, r.y, r.y + r.h, 0, 1, 0, 3), OIIO::TypeDesc::FLOAT, pixels.data());
+  return pixels;
+}
+
+inline double meanAbsDifference(const std::vector<float>& a, const std::vector<float>& b) {
+  double sum = 0.0;
+  for (std::size_t i = 0; i < a.size(); ++i) sum += std::abs(double(a[i]) - double(b[i]));
+  return a.empty() ? 0.0 : sum / double(a.size()) * 255.0;
+}
+
+/// Fraction of pixels brighter than a dark background.
+inline double litFraction(const std::vector<float>& px) {
+  std::size_t lit = 0;
+  for (std::size_t i = 0; i < px.size(); i += 3)
+    if (px[i] + px[i + 1] + px[i + 2] > 0.3f) ++lit;
+  return px.empty() ? 0.0 : double(lit) / double(px.size() / 3);
+}
+
+/// A copy of an example with a small sample budget, so previews finish quickly.
+inline fs::path exampleCopy(const TempFolder& home, const std::string& name, std::int64_t samples = 1'000'000) {
+  Project p = loadProject(fs::path(GRIDIFS_ASSETS) / name);
+  p.render.samples = samples;
+  const fs::path file = home.path / name;
+  saveProject(p, file);
+  return file;
+}
+
+}  // namespace gridifs::gui_test
