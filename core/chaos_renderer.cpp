@@ -135,6 +135,7 @@ void lowerThreadPriority() {
 }
 
 void workerMain(std::shared_ptr<ChaosRenderer::Shared> shared, ChaosRenderer::Worker* w) {
+  const kernel::DenormalsAreZero flushDenormals;
   bool lowered = false;
   std::shared_ptr<const PreparedJob> job;
   std::uint64_t myGeneration = 0;
@@ -510,6 +511,7 @@ RenderStats generatePoints(const CompiledIfs& ifs, const RenderJob& job,
   RenderStats stats;
   stats.budget = job.samples;
   const std::int64_t start = nowNs();
+  const kernel::DenormalsAreZero flushDenormals;  // as the renderer's workers do
   std::vector<float> xyz, rgb;
   constexpr std::int64_t kPointBatch = 1 << 16;
   static_assert(kPointBatch % kernel::kLanes == 0);

@@ -6,6 +6,7 @@
 #include <benchmark/benchmark.h>
 
 #include <chrono>
+#include <optional>
 #include <ctime>
 #include <thread>
 
@@ -106,10 +107,25 @@ GRIDIFS_KERNEL_CLONES void runKernel(kernel::ChainState& chain, const kernel::Ho
   kernel::runChain(chain, ifs, count, plot, counters);
 }
 
-/// The kernel alone on the calling thread (no pool): points per CPU second, robust to a busy machine.
-void BM_Kernel(benchmark::State& state) {
-  const RenderJob job = RenderJob::fromProject(canonicalScene(), 1);
-  const auto& ifs = *canonicalIfs();
+/// The canonical scene recoloured: 0 as is (palette indices 0, 0.5, 1), 1 every palette index 0
+/// (the default of a new function), 2 an all-red IFS (green and blue 0 in every function). In 1
+/// and 2 a colour channel decays towards 0 and, without flushing, sits on a denormal.
+Project colourScene(int variant) {
+  Project p = canonicalScene();
+  for (Function& f : p.functions) {
+    if (variant == 1) f.palette_index = 0.0;
+    if (variant == 2) f.color = Vec3{1.0, 0.0, 0.0};
+  }
+  return p;
+}
+
+/// The kernel alone on the calling thread (no pool) for colour variant `variant` (see
+/// colourScene), with denormals flushed as the renderer's workers do (`flush` 1) or not (0).
+void runKernelBenchmark(benchmark::State& state, int variant, bool flush) {
+  const Project scene = colourScene(variant);
+  const RenderJob job = RenderJob::fromProject(scene, 1);
+  const auto compiled = compileIfs(scene);
+  const auto& ifs = *compiled;
   std::vector<kernel::HotFunction> hot;
   for (const auto& f : ifs.functions) hot.push_back(kernel::makeHot(f));
   kernel::HotIfs hotIfs;
@@ -122,11 +138,32 @@ void BM_Kernel(benchmark::State& state) {
   kernel::ZBufferPlot<false> plot{cam, cells.data(), nullptr};
   kernel::ChainState chain = kernel::ChainState::start(1, 0, job.skip);
   kernel::ChainCounters counters;
+  std::optional<kernel::DenormalsAreZero> flushDenormals;
+  if (flush) flushDenormals.emplace();
+  const double cpu0 = processCpuSeconds();
   for (auto _ : state) runKernel(chain, hotIfs, 1 << 22, plot, counters);
   state.SetItemsProcessed(counters.samples);
+  state.counters["points_per_cpu_second"] = double(counters.samples) / (processCpuSeconds() - cpu0);
   state.counters["plotted_fraction"] = double(counters.plotted) / double(counters.samples);
 }
+
+/// Points per CPU second, robust to a busy machine.
+void BM_Kernel(benchmark::State& state) { runKernelBenchmark(state, 0, true); }
 BENCHMARK(BM_Kernel)->Unit(benchmark::kMillisecond)->MinTime(1.0);
+
+/// The denormal pair: every colour variant at the same rate with flushing (within noise), and the
+/// stall it prevents without (args: variant, flush).
+void BM_KernelColours(benchmark::State& state) { runKernelBenchmark(state, int(state.range(0)), state.range(1) != 0); }
+BENCHMARK(BM_KernelColours)
+    ->ArgNames({"variant", "flush"})
+    ->Args({0, 1})
+    ->Args({1, 1})
+    ->Args({2, 1})
+    ->Args({0, 0})
+    ->Args({1, 0})
+    ->Args({2, 0})
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(1.0);
 
 /// The plot-only limit: the same RNG, random pixels of a 1024² z-buffer + density (the renderer's
 /// 16-byte cells), no function evaluation. One thread; the canonical scene's plotted fraction is close to 1.
