@@ -25,7 +25,7 @@
 // Callers of runChain compile it twice, picked at load time: AVX2 (the 32-byte node-pair loads and
 // lerps are single instructions) and the portable baseline. FMA is deliberately not enabled: GCC
 // would contract a + (b - a)·t into fused multiply-adds, and images would then depend on the CPU.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GRIDIFS_NO_KERNEL_CLONES)
 #define GRIDIFS_KERNEL_CLONES __attribute__((target_clones("avx2", "default")))
 #else
 #define GRIDIFS_KERNEL_CLONES

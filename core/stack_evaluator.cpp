@@ -51,7 +51,8 @@ void apply(const ScaleOp& op, OpContext& ctx, const Index3&) {
 // seed 004 §2.2 taper: (a, b) *= f(t), f = 1 + profile(t).
 void apply(const TaperOp& op, OpContext& ctx, const Index3&) {
   const int along = static_cast<int>(op.axis);
-  const auto [a, b] = perpendicularAxes(op.axis);
+  const std::array<int, 2> ab = perpendicularAxes(op.axis);
+  const int a = ab[0], b = ab[1];  // not a structured binding: clang 14 cannot capture those
   forSelected(ctx, [&](const Vec3& p) {
     Vec3 q = p - ctx.center;
     const double f = 1.0 + profileValue(op.profile, op.k, op.omega, q[along]);
@@ -64,7 +65,8 @@ void apply(const TaperOp& op, OpContext& ctx, const Index3&) {
 // seed 004 §2.3 twist: rotate (a, b) by φ(t).
 void apply(const TwistOp& op, OpContext& ctx, const Index3&) {
   const int along = static_cast<int>(op.axis);
-  const auto [a, b] = perpendicularAxes(op.axis);
+  const std::array<int, 2> ab = perpendicularAxes(op.axis);
+  const int a = ab[0], b = ab[1];  // not a structured binding: clang 14 cannot capture those
   forSelected(ctx, [&](const Vec3& p) {
     Vec3 q = p - ctx.center;
     const double phi = profileValue(op.profile, op.k, op.omega, q[along]);
