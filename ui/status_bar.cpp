@@ -4,6 +4,7 @@
 #include <imgui.h>
 
 #include <cstdio>
+#include <string>
 
 #include "ui/app_commands.h"
 
@@ -17,6 +18,19 @@ std::string humanCount(double n) {
   else if (n >= 1e3) std::snprintf(text, sizeof text, "%.1fk", n / 1e3);
   else std::snprintf(text, sizeof text, "%.0f", n);
   return text;
+}
+
+/// `text` cut to `width` pixels with an ellipsis, on a UTF-8 character boundary: the status line
+/// has no scroll bar, so a long hint on a narrow window ends visibly instead of mid-word at the edge.
+std::string fitText(const std::string& text, float width) {
+  if (ImGui::CalcTextSize(text.c_str()).x <= width) return text;
+  std::string cut = text;
+  while (!cut.empty()) {
+    while (!cut.empty() && (static_cast<unsigned char>(cut.back()) & 0xC0) == 0x80) cut.pop_back();
+    if (!cut.empty()) cut.pop_back();  // the character's lead byte, or one ASCII character
+    if (ImGui::CalcTextSize((cut + "…").c_str()).x <= width) break;
+  }
+  return cut + "…";
 }
 
 }  // namespace
@@ -33,6 +47,7 @@ void drawStatusBar(ModellerState& state, float height) {
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                    ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoBringToFrontOnFocus |
                    ImGuiWindowFlags_NoScrollWithMouse);
+  state.probe.window("panel.status");
   const RenderStats& s = state.previewStats;
   const auto& functions = state.document.project().functions;
   int active = 0;
@@ -49,9 +64,9 @@ void drawStatusBar(ModellerState& state, float height) {
   const bool recentMessage = !state.statusText.empty() && state.now - state.statusTime < (state.statusIsError ? 15.0 : 6.0);
   if (recentMessage && (state.contextHelp.empty() || state.statusIsError)) {
     ImGui::TextColored(state.statusIsError ? ImVec4(1.0f, 0.45f, 0.35f, 1.0f) : ImVec4(0.6f, 0.85f, 1.0f, 1.0f), "%s",
-                       state.statusText.c_str());
+                       fitText(state.statusText, ImGui::GetContentRegionAvail().x).c_str());
   } else if (!state.contextHelp.empty()) {
-    ImGui::TextDisabled("%s", state.contextHelp.c_str());
+    ImGui::TextDisabled("%s", fitText(state.contextHelp, ImGui::GetContentRegionAvail().x).c_str());
   } else {
     ImGui::TextDisabled("F1: shortcuts");
   }
