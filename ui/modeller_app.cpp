@@ -100,9 +100,9 @@ class ModellerApp {
   std::unique_ptr<AppCommands> commands_;
   std::string iniPath_, title_;
   bool resetLayout_ = false;
-  PanelRects panels_;        // where each panel was drawn in the last frame
-  int panelsSeen_ = 0;       // how many of them have been drawn since the last layout change
-  ImVec2 layoutViewport_;    // the window size the panels are arranged for (0: the current one)
+  PanelRects panels_;      // where each panel was drawn in the last frame
+  int panelsSeen_ = 0;     // how many of them were drawn in the last frame
+  ImVec2 layoutViewport_;  // the window size the panels are arranged for (0: the current one)
   int frame_ = 0;
   std::vector<double> frameMs_;
   double phaseMs_[5] = {0, 0, 0, 0, 0};  // UI+edits+publish, grid views, IFS view, preview, ImGui

@@ -58,8 +58,10 @@ class XServer {
       ::kill(pid_, SIGTERM);
       ::waitpid(pid_, nullptr, 0);
     }
-    if (oldDisplay_.empty()) ::unsetenv("DISPLAY");
-    else ::setenv("DISPLAY", oldDisplay_.c_str(), 1);
+    if (oldDisplay_.empty())
+      ::unsetenv("DISPLAY");
+    else
+      ::setenv("DISPLAY", oldDisplay_.c_str(), 1);
   }
   XServer(const XServer&) = delete;
   XServer& operator=(const XServer&) = delete;
@@ -70,7 +72,9 @@ class XServer {
   std::string display_, oldDisplay_;
 };
 
-bool haveXvfb() { return run("command -v Xvfb >/dev/null && command -v xdpyinfo >/dev/null && command -v xprop >/dev/null") == 0; }
+bool haveXvfb() {
+  return run("command -v Xvfb >/dev/null && command -v xdpyinfo >/dev/null && command -v xprop >/dev/null") == 0;
+}
 
 /// A probe rectangle in window coordinates (unlike rectOf, not moved by the window's position).
 Rect local(const nlohmann::json& probe, const std::string& name) {
@@ -104,7 +108,8 @@ nlohmann::json settledProbe(const App& app) {
         if (j["frame"].get<int>() < 8) return false;
         for (const char* name : kPanels)
           if (!j["rects"].contains(name)) return false;
-        return j["rects"].contains("ops.row.0") && j["rects"].contains("preview.image") && j["rects"].contains("view.ifs");
+        return j["rects"].contains("ops.row.0") && j["rects"].contains("preview.image") &&
+               j["rects"].contains("view.ifs");
       },
       30s);
 }
@@ -125,7 +130,8 @@ void expectUsableLayout(const nlohmann::json& probe, int screenW, int screenH, f
     for (std::size_t b = a + 1; b < kPanels.size(); ++b) {
       // Neighbouring panels share an edge; a row or column of pixels is not an overlap.
       const Rect o = local(probe, kPanels[b]);
-      EXPECT_LE(overlapArea(r, o), std::max(r.w, r.h) + 2) << kPanels[a] << " " << str(r) << " overlaps " << kPanels[b] << " " << str(o);
+      EXPECT_LE(overlapArea(r, o), std::max(r.w, r.h) + 2)
+          << kPanels[a] << " " << str(r) << " overlaps " << kPanels[b] << " " << str(o);
     }
   }
   const Rect status = local(probe, "panel.status");
@@ -254,7 +260,7 @@ TEST(ScreenSizesGui, WindowGeometryIsRememberedAndCorrected) {
     xdotool("search --name GridIFS windowmove %@ 230 140 windowsize %@ 1200 760");
     probe = app.waitFor([](const nlohmann::json& j) { return windowOf(j) == Rect{230, 140, 1200, 760}; }, 10s);
     EXPECT_EQ(windowOf(probe), (Rect{230, 140, 1200, 760})) << str(windowOf(probe));
-    std::this_thread::sleep_for(300ms);  // a few frames at the new size
+    std::this_thread::sleep_for(300ms);                       // a few frames at the new size
     expectUsableLayout(settledProbe(app), 1600, 1000, 1.0f);  // the panels followed the new size
     pressKeys("ctrl+q");
     ASSERT_EQ(app.waitExit(), 0);
@@ -276,8 +282,9 @@ TEST(ScreenSizesGui, WindowGeometryIsRememberedAndCorrected) {
     expectUsableLayout(settledProbe(*app), 1600, 1000, 1.0f);
   }
   // Garbage, hostile numbers and a wrong type: the first-start window, no crash.
-  for (const char* text : {"{\"x\": 1e308, \"y\": 0, \"width\": -5, \"height\": 99999999999}", "not json at all \x01\xff",
-                           "[1, 2, 3]", "{\"x\": \"left\", \"y\": 0, \"width\": 800, \"height\": 600}"}) {
+  for (const char* text :
+       {"{\"x\": 1e308, \"y\": 0, \"width\": -5, \"height\": 99999999999}", "not json at all \x01\xff", "[1, 2, 3]",
+        "{\"x\": \"left\", \"y\": 0, \"width\": 800, \"height\": 600}"}) {
     writeGeometry(home, text);
     auto app = start(home, {project});
     const nlohmann::json probe = firstFrame(*app);
