@@ -67,7 +67,13 @@ AppWindow::AppWindow(const ModellerOptions& options, std::filesystem::path geome
   if (options.width > 0 && options.height > 0) {
     // An explicit size is kept even where it exceeds the monitor (captures larger than the screen).
     const ScreenRect fitted = fitToWorkAreas(rect, areas, frame);
-    if (fitted.width == rect.width && fitted.height == rect.height) rect = fitted;
+    if (fitted.width == rect.width && fitted.height == rect.height) {
+      rect = fitted;
+    } else if (!areas.empty()) {  // too large for any monitor: from the top left of the nearest
+      const ScreenRect& area = areas[workAreaFor(rect, areas)];
+      rect.x = area.x + frame.left;
+      rect.y = area.y + frame.top;
+    }
   } else {
     rect = saved_ ? fitToWorkAreas(rect, areas, frame) : firstWindowRect(primary, frame, uiScale);
     glfwSetWindowSize(window_, rect.width, rect.height);

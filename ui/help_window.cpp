@@ -65,6 +65,15 @@ void drawHelpWindow(ModellerState& state) {
   ImGui::Spacing();
   ImGui::TextDisabled("Mouse in the grid views");
   table("mouse", mouse, sizeof mouse / sizeof mouse[0]);
+  static const Row window[] = {
+      {"View > Reset layout", "Every panel back to the default layout for this window size"},
+      {"Resizing the window", "The panels stretch with it; size, place and maximized state are remembered on quit"},
+      {"gridifs --size WxH", "Open at that size instead of the remembered one"},
+      {"gridifs --ui-scale S", "Text and controls at scale S instead of the monitor's (HiDPI) scale"},
+  };
+  ImGui::Spacing();
+  ImGui::TextDisabled("Window");
+  table("window", window, sizeof window / sizeof window[0]);
   ImGui::End();
 }
 
