@@ -3,6 +3,7 @@
 // panels on-screen, apart and large enough; and the window's geometry remembered between runs,
 // corrected when the saved place is off every monitor, ignored when the file is garbage.
 // Set GRIDIFS_GUI_SHOTS to a folder to keep the screenshots. The harness is gui/gui_harness.h.
+#include <sys/prctl.h>
 #include <sys/wait.h>
 
 #include <array>
@@ -28,6 +29,7 @@ class XServer {
       const std::string screen = std::to_string(width) + "x" + std::to_string(height) + "x24";
       const pid_t pid = ::fork();
       if (pid == 0) {
+        ::prctl(PR_SET_PDEATHSIG, SIGTERM);  // a crashed test leaves no server behind
         ::execlp("Xvfb", "Xvfb", name.c_str(), "-screen", "0", screen.c_str(), "-nolisten", "tcp", "-noreset",
                  static_cast<char*>(nullptr));
         ::_exit(127);
