@@ -83,7 +83,10 @@ std::optional<fs::path> FileBrowser::draw(UiProbe& probe) {
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(ImVec2(vp->WorkPos.x + vp->WorkSize.x * 0.5f, vp->WorkPos.y + vp->WorkSize.y * 0.5f),
                           ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-  ImGui::SetNextWindowSize(ImVec2(ImGui::GetFontSize() * 40, ImGui::GetFontSize() * 30), ImGuiCond_Appearing);
+  // Never larger than the window: on a small screen the list scrolls instead.
+  ImGui::SetNextWindowSize(ImVec2(std::min(ImGui::GetFontSize() * 40, vp->WorkSize.x * 0.95f),
+                                  std::min(ImGui::GetFontSize() * 30, vp->WorkSize.y * 0.9f)),
+                           ImGuiCond_Appearing);
   std::optional<fs::path> chosen;
   bool keepOpen = true;
   if (ImGui::BeginPopupModal(title, &keepOpen)) {

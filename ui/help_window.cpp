@@ -1,6 +1,8 @@
 // The shortcuts window (issue 4 "Edit": a Help window listing them).
 #include <imgui.h>
 
+#include <algorithm>
+
 #include "ui/panels.h"
 
 namespace gridifs::ui {
@@ -10,7 +12,10 @@ void drawHelpWindow(ModellerState& state) {
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(ImVec2(vp->WorkPos.x + vp->WorkSize.x * 0.5f, vp->WorkPos.y + vp->WorkSize.y * 0.5f),
                           ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-  ImGui::SetNextWindowSize(ImVec2(ImGui::GetFontSize() * 36, ImGui::GetFontSize() * 34), ImGuiCond_Appearing);
+  // Never taller or wider than the window: on a small screen the table scrolls instead.
+  ImGui::SetNextWindowSize(ImVec2(std::min(ImGui::GetFontSize() * 36, vp->WorkSize.x * 0.95f),
+                                  std::min(ImGui::GetFontSize() * 34, vp->WorkSize.y * 0.9f)),
+                           ImGuiCond_Appearing);
   if (!ImGui::Begin("Help: shortcuts", &state.showHelp, ImGuiWindowFlags_NoCollapse)) {
     ImGui::End();
     return;
@@ -65,6 +70,15 @@ void drawHelpWindow(ModellerState& state) {
   ImGui::Spacing();
   ImGui::TextDisabled("Mouse in the grid views");
   table("mouse", mouse, sizeof mouse / sizeof mouse[0]);
+  static const Row window[] = {
+      {"View > Reset layout", "Every panel back to the default layout for this window size"},
+      {"Resizing the window", "The panels stretch with it; size, place and maximized state are remembered on quit"},
+      {"gridifs --size WxH", "Open at that size instead of the remembered one"},
+      {"gridifs --ui-scale S", "Text and controls at scale S instead of the monitor's (HiDPI) scale"},
+  };
+  ImGui::Spacing();
+  ImGui::TextDisabled("Window");
+  table("window", window, sizeof window / sizeof window[0]);
   ImGui::End();
 }
 

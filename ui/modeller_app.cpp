@@ -21,9 +21,11 @@
 #include <vector>
 
 #include "ui/app_commands.h"
+#include "ui/app_window.h"
 #include "ui/export_dialog.h"
 #include "ui/grid_view.h"
 #include "ui/modeller_options.h"
+#include "ui/panel_layout.h"
 #include "ui/panels.h"
 #include "ui/preview_view.h"
 #include "ui/project_files.h"
@@ -36,39 +38,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// Where each window starts (first run, or View > Reset layout): three columns that tile the
-/// work area without overlap, sized for 1600×1000 but proportional to any size.
-struct Layout {
-  ImVec2 pos[7], size[7];
-  enum { Functions, Operations, Parameters, Grids, Selection, Preview, Ifs };
-  static Layout compute(ImVec2 origin, ImVec2 area) {
-    Layout l;
-    // Left: what the IFS is made of (functions, their stacks, the node selection); center: the
-    // grid views above the active operation's parameters (wide, for calculator expressions);
-    // right: the rendered result above the IFS view (seed 004 §4.2's three groups).
-    const float left = std::round(area.x * 0.215f), center = std::round(area.x * 0.39f);
-    const float right = area.x - left - center;
-    const float f = std::round(area.y * 0.47f), o = std::round(area.y * 0.25f);
-    const float g = std::round(area.y * 0.63f), p = std::round(area.y * 0.58f);
-    auto set = [&](int i, float x, float y, float w, float h) {
-      l.pos[i] = ImVec2(origin.x + x, origin.y + y);
-      l.size[i] = ImVec2(w, h);
-    };
-    set(Functions, 0, 0, left, f);
-    set(Operations, 0, f, left, o);
-    set(Selection, 0, f + o, left, area.y - f - o);
-    set(Grids, left, 0, center, g);
-    set(Parameters, left, g, center, area.y - g);
-    set(Preview, left + center, 0, right, p);
-    set(Ifs, left + center, p, right, area.y - p);
-    return l;
-  }
-};
-
 class ModellerApp {
  public:
-  ModellerApp(GLFWwindow* window, ModellerOptions options, float scale)
-      : window_(window),
+  ModellerApp(AppWindow& appWindow, ModellerOptions options, float scale)
+      : appWindow_(appWindow),
+        window_(appWindow.window()),
         options_(std::move(options)),
         files_(state_, AppFolders::fromEnvironment(), options_.autosaveSeconds),
         views_{GridView(GridView::Content::FunctionGrid, ViewAxis::Top, "##top"),
@@ -80,6 +54,11 @@ class ModellerApp {
     state_.probe.enabled = !options_.probe.empty();
     if (options_.renderThreads > 0) state_.renderThreads = options_.renderThreads;
     iniPath_ = (files_.folders().config / "imgui.ini").string();
+    // The panels saved in imgui.ini were arranged for the window size saved with the geometry;
+    // a window that opens at another size carries them over proportionally.
+    std::error_code ec;
+    if (fs::exists(iniPath_, ec) && appWindow_.savedLayoutWidth() > 0)
+      layoutViewport_ = ImVec2(float(appWindow_.savedLayoutWidth()), float(appWindow_.savedLayoutHeight()));
     ImGui::GetIO().IniFilename = iniPath_.c_str();
     commands_ = std::make_unique<AppCommands>(AppCommands{state_, edits_, files_, [this] { frameViews(); },
                                                           [this] { resetLayout_ = true; }, &export_});
@@ -103,7 +82,11 @@ class ModellerApp {
   void frameViews();
   void writeProbe(double frameMs);
   float framebufferScale() const;
+  void followContentScale();
+  void beginPanel(Panel panel, const PanelRects& layout, ImGuiCond cond);
+  void endPanel(Panel panel);
 
+  AppWindow& appWindow_;
   GLFWwindow* window_;
   ModellerOptions options_;
   ModellerState state_;
@@ -117,6 +100,9 @@ class ModellerApp {
   std::unique_ptr<AppCommands> commands_;
   std::string iniPath_, title_;
   bool resetLayout_ = false;
+  PanelRects panels_;      // where each panel was drawn in the last frame
+  int panelsSeen_ = 0;     // how many of them were drawn in the last frame
+  ImVec2 layoutViewport_;  // the window size the panels are arranged for (0: the current one)
   int frame_ = 0;
   std::vector<double> frameMs_;
   double slowestFrameMs_ = 0.0;  // past the first frames
@@ -169,6 +155,30 @@ void ModellerApp::drawIfsView(float fbScale) {
   state_.probe.item("view.ifs");
 }
 
+void ModellerApp::followContentScale() {
+  if (options_.uiScale > 0.0f) return;  // --ui-scale overrides the monitor
+  const float scale = std::clamp(appWindow_.contentScale(), 1.0f, 4.0f);
+  if (std::abs(scale - state_.uiScale) < 0.01f) return;
+  rescaleTheme(scale);
+  state_.uiScale = scale;
+  resetLayout_ = true;  // the panels' minimum sizes are in font units
+}
+
+void ModellerApp::beginPanel(Panel panel, const PanelRects& layout, ImGuiCond cond) {
+  ImGui::SetNextWindowPos(layout.pos[std::size_t(panel)], cond);
+  ImGui::SetNextWindowSize(layout.size[std::size_t(panel)], cond);
+}
+
+void ModellerApp::endPanel(Panel panel) {
+  // Called between Begin and End: records where the panel is for a later resize of the window.
+  panels_.pos[std::size_t(panel)] = ImGui::GetWindowPos();
+  panels_.size[std::size_t(panel)] = ImGui::GetWindowSize();
+  ++panelsSeen_;
+  static const char* names[] = {"panel.functions", "panel.operations", "panel.parameters", "panel.grids",
+                                "panel.selection", "panel.preview",    "panel.ifs"};
+  state_.probe.window(names[std::size_t(panel)]);
+}
+
 void ModellerApp::buildUi() {
   handleShortcuts(*commands_);
   const float menuHeight = drawMenuBar(*commands_);
@@ -176,26 +186,40 @@ void ModellerApp::buildUi() {
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   const ImVec2 origin(vp->Pos.x, vp->Pos.y + menuHeight);
   const ImVec2 area(vp->Size.x, vp->Size.y - menuHeight - statusHeight);
-  const Layout layout = Layout::compute(origin, area);
-  const ImGuiCond cond = resetLayout_ ? ImGuiCond_Always : ImGuiCond_FirstUseEver;
+  if (layoutViewport_.x <= 0.0f) layoutViewport_ = vp->Size;
+  PanelRects layout;
+  ImGuiCond cond = ImGuiCond_FirstUseEver;
+  const bool resized = layoutViewport_.x != vp->Size.x || layoutViewport_.y != vp->Size.y;
+  if (resetLayout_) {
+    layout = defaultPanelLayout(origin, area, operationStackPanelMinHeight(std::round(area.x * 0.215f)));
+    cond = ImGuiCond_Always;
+  } else if (resized && panelsSeen_ >= kPanelCount) {
+    // The window changed size: the artist's arrangement follows, proportionally.
+    const ImVec2 fromArea(layoutViewport_.x, layoutViewport_.y - menuHeight - statusHeight);
+    layout = rescalePanelLayout(panels_, origin, fromArea, origin, area);
+    cond = ImGuiCond_Always;
+  } else {
+    layout = defaultPanelLayout(origin, area, operationStackPanelMinHeight(std::round(area.x * 0.215f)));
+  }
+  if (cond == ImGuiCond_Always) layoutViewport_ = vp->Size;
   resetLayout_ = false;
+  panelsSeen_ = 0;
   const float fbScale = framebufferScale();
-  auto place = [&](int i) {
-    ImGui::SetNextWindowPos(layout.pos[i], cond);
-    ImGui::SetNextWindowSize(layout.size[i], cond);
-  };
   const ImGuiWindowFlags panel = ImGuiWindowFlags_NoCollapse;
 
-  place(Layout::Functions);
+  beginPanel(Panel::Functions, layout, cond);
   if (ImGui::Begin("Functions", nullptr, panel)) drawFunctionsPanel(state_, edits_);
+  endPanel(Panel::Functions);
   ImGui::End();
-  place(Layout::Operations);
+  beginPanel(Panel::Operations, layout, cond);
   if (ImGui::Begin("Operations", nullptr, panel)) drawOperationStackPanel(state_, edits_);
+  endPanel(Panel::Operations);
   ImGui::End();
-  place(Layout::Parameters);
+  beginPanel(Panel::Parameters, layout, cond);
   if (ImGui::Begin("Parameters", nullptr, panel)) drawOperationPanel(state_, edits_);
+  endPanel(Panel::Parameters);
   ImGui::End();
-  place(Layout::Grids);
+  beginPanel(Panel::Grids, layout, cond);
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(4 * state_.uiScale, 4 * state_.uiScale));
   const std::string gridsTitle = "Grid views: " + state_.function().name + "###Grid views";
   // View windows skip their background: the view image covers it (fill rate matters on llvmpipe).
@@ -203,19 +227,23 @@ void ModellerApp::buildUi() {
       panel | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse | ImGuiWindowFlags_NoBackground;
   if (ImGui::Begin(gridsTitle.c_str(), nullptr, viewWindow))
     drawGridViews(fbScale);
+  endPanel(Panel::Grids);
   ImGui::End();
   ImGui::PopStyleVar();
-  place(Layout::Selection);
+  beginPanel(Panel::Selection, layout, cond);
   if (ImGui::Begin("Selection", nullptr, panel)) drawSelectionPanel(state_, edits_);
+  endPanel(Panel::Selection);
   ImGui::End();
-  place(Layout::Preview);
+  beginPanel(Panel::Preview, layout, cond);
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(6 * state_.uiScale, 6 * state_.uiScale));
   if (ImGui::Begin("Preview", nullptr, viewWindow))
     preview_.build(state_, edits_, fbScale);
+  endPanel(Panel::Preview);
   ImGui::End();
-  place(Layout::Ifs);
+  beginPanel(Panel::Ifs, layout, cond);
   if (ImGui::Begin("IFS view", nullptr, viewWindow))
     drawIfsView(fbScale);
+  endPanel(Panel::Ifs);
   ImGui::End();
   ImGui::PopStyleVar();
 
@@ -232,7 +260,13 @@ void ModellerApp::writeProbe(double frameMs) {
   int x = 0, y = 0, w = 0, h = 0;
   glfwGetWindowPos(window_, &x, &y);
   glfwGetWindowSize(window_, &w, &h);
-  j["window"] = {{"x", x}, {"y", y}, {"width", w}, {"height", h}};
+  j["window"] = {{"x", x}, {"y", y}, {"width", w}, {"height", h},
+                 {"maximized", glfwGetWindowAttrib(window_, GLFW_MAXIMIZED) != 0}};
+  const ScreenRect work = appWindow_.workArea();
+  j["work_area"] = {{"x", work.x}, {"y", work.y}, {"width", work.width}, {"height", work.height}};
+  j["ui_scale"] = state_.uiScale;
+  j["content_scale"] = appWindow_.contentScale();
+  j["font_size"] = ImGui::GetFontSize();
   j["title"] = title_;
   j["frame"] = frame_;
   j["frame_ms"] = frameMs;
@@ -304,6 +338,9 @@ int ModellerApp::run() {
     }
     const auto frameStart = std::chrono::steady_clock::now();
     state_.now = std::chrono::duration<double>(frameStart - start).count();
+
+    appWindow_.track();
+    followContentScale();
 
     // 2. Build the UI; widgets collect edits.
     ImGui_ImplOpenGL3_NewFrame();
@@ -392,6 +429,8 @@ int ModellerApp::run() {
     if (files_.quitConfirmed()) break;
   }
   writeProbe(0.0);
+  // A capture is not a session: it leaves the artist's window where it was.
+  if (!capture) appWindow_.save(int(ImGui::GetMainViewport()->Size.x), int(ImGui::GetMainViewport()->Size.y));
   files_.shutdown();
   if (options_.stats && !frameMs_.empty()) {
     std::vector<double> sorted = frameMs_;
@@ -404,6 +443,40 @@ int ModellerApp::run() {
                  phaseMs_[0] / n, phaseMs_[1] / n, phaseMs_[2] / n, phaseMs_[3] / n, phaseMs_[4] / n);
   }
   return exitCode;
+}
+
+/// The ImGui context and the modeller in an open window; returns the exit code.
+int runInWindow(AppWindow& appWindow, const ModellerOptions& options) {
+  GLFWwindow* window = appWindow.window();
+  glfwMakeContextCurrent(window);
+  glfwSwapInterval(options.screenshot.empty() ? 1 : 0);
+  // HiDPI: the monitor's content scale sizes the fonts and the style (and follows the window to
+  // another monitor, see followContentScale); --ui-scale overrides it.
+  const float scale = options.uiScale > 0.0f ? options.uiScale : std::clamp(appWindow.contentScale(), 1.0f, 4.0f);
+
+  // Our key callback first; ImGui_ImplGlfw_InitForOpenGL chains it.
+  glfwSetKeyCallback(window, [](GLFWwindow* w, int key, int, int action, int mods) {
+    if (action != GLFW_PRESS) return;
+    if (auto* state = static_cast<ModellerState*>(glfwGetWindowUserPointer(w)))
+      state->keyPresses.push_back({key, mods});
+  });
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  applyTheme(scale);
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init("#version 330 core");
+  int code = 0;
+  try {
+    ModellerApp app(appWindow, options, scale);
+    code = app.run();
+  } catch (const std::exception& e) {
+    std::cerr << "gridifs: the modeller stopped: " << e.what() << "\n";
+    code = 1;
+  }
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+  return code;
 }
 
 }  // namespace
@@ -420,46 +493,12 @@ int runModeller(const std::string& file, int argc, char** argv) {
     std::cerr << "gridifs: cannot open the modeller window (no display?); use a verb such as 'gridifs render'.\n";
     return 1;
   }
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
-  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
-  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
-  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
-  glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);  // HiDPI: window size follows the content scale
-  GLFWwindow* window = glfwCreateWindow(options.width, options.height, "GridIFS", nullptr, nullptr);
-  if (!window) {
-    std::cerr << "gridifs: cannot create an OpenGL 3.3 window.\n";
-    glfwTerminate();
-    return 1;
+  int code = 1;
+  {
+    AppWindow appWindow(options, AppFolders::fromEnvironment().config / "window.json");
+    if (appWindow.window()) code = runInWindow(appWindow, options);
+    else std::cerr << "gridifs: cannot create an OpenGL 3.3 window.\n";
   }
-  glfwMakeContextCurrent(window);
-  glfwSwapInterval(options.screenshot.empty() ? 1 : 0);
-  float xscale = 1.0f, yscale = 1.0f;
-  glfwGetWindowContentScale(window, &xscale, &yscale);
-  const float scale = options.uiScale > 0.0f ? options.uiScale : std::clamp(std::max(xscale, yscale), 1.0f, 4.0f);
-
-  // Our key callback first; ImGui_ImplGlfw_InitForOpenGL chains it.
-  glfwSetKeyCallback(window, [](GLFWwindow* w, int key, int, int action, int mods) {
-    if (action != GLFW_PRESS) return;
-    if (auto* state = static_cast<ModellerState*>(glfwGetWindowUserPointer(w)))
-      state->keyPresses.push_back({key, mods});
-  });
-  IMGUI_CHECKVERSION();
-  ImGui::CreateContext();
-  applyTheme(scale);
-  ImGui_ImplGlfw_InitForOpenGL(window, true);
-  ImGui_ImplOpenGL3_Init("#version 330 core");
-  int code = 0;
-  try {
-    ModellerApp app(window, options, scale);
-    code = app.run();
-  } catch (const std::exception& e) {
-    std::cerr << "gridifs: the modeller stopped: " << e.what() << "\n";
-    code = 1;
-  }
-  ImGui_ImplOpenGL3_Shutdown();
-  ImGui_ImplGlfw_Shutdown();
-  ImGui::DestroyContext();
-  glfwDestroyWindow(window);
   glfwTerminate();
   return code;
 }

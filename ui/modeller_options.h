@@ -3,7 +3,8 @@
 //   --screenshot OUT.png   render, read the window back, write OUT.png (OpenImageIO), exit 0
 //   --frames N             frames before the screenshot (default 30)
 //   --wait-points N        also wait (up to 60 s) until the preview has N points
-//   --size WxH             initial window size in screen coordinates (default 1600x1000)
+//   --size WxH             window size in screen coordinates (default: the last session's size,
+//                          the first time the monitor's work area up to 1600x1000)
 //   --probe FILE           write widget rectangles and state as JSON every few frames (tests)
 //   --autosave-seconds S   autosave interval (default 60)
 //   --stats                print frame-time statistics on exit
@@ -19,7 +20,7 @@ struct ModellerOptions {
   std::string screenshot;
   int frames = 30;
   std::int64_t waitPoints = 0;
-  int width = 1600, height = 1000;
+  int width = 0, height = 0;  // 0: remembered, or from the monitor's work area
   std::string probe;
   double autosaveSeconds = 60.0;
   bool stats = false;

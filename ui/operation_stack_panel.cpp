@@ -2,6 +2,7 @@
 // op with the current selection, pick, reorder, mute and delete.
 #include <imgui.h>
 
+#include <cmath>
 #include <cstdio>
 
 #include "core/stack_evaluator.h"
@@ -129,31 +130,83 @@ void deleteActiveOperation(ModellerState& state, EditQueue& edits) {
   });
 }
 
+namespace {
+
+/// Rows of the add toolbar's buttons, wrapped to `available` pixels.
+int toolbarRows(float available) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  int rows = 1;
+  float x = 0.0f;
+  for (NewOpKind kind : kNewOpKinds) {
+    const float w = ImGui::CalcTextSize(newOpLabel(kind)).x + style.FramePadding.x * 2;
+    if (x > 0.0f && x + style.ItemSpacing.x + w <= available) {
+      x += style.ItemSpacing.x + w;
+    } else {
+      if (x > 0.0f) ++rows;
+      x = w;
+    }
+  }
+  return rows;
+}
+
+constexpr float kStackRowsShown = 3.5f;  // the first rows always in sight (and a hint of more)
+
+float stackButtonsHeight() { return ImGui::GetFrameHeightWithSpacing() + ImGui::GetStyle().ItemSpacing.y; }
+
+}  // namespace
+
+float operationStackPanelMinHeight(float panelWidth) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float title = ImGui::GetFontSize() + style.FramePadding.y * 2;
+  const float inner = panelWidth - style.WindowPadding.x * 2 - style.ScrollbarSize;
+  return std::ceil(title + style.WindowPadding.y * 2 + ImGui::GetTextLineHeightWithSpacing() +
+                   float(toolbarRows(inner)) * ImGui::GetFrameHeightWithSpacing() + style.ItemSpacing.y +
+                   kStackRowsShown * ImGui::GetFrameHeightWithSpacing() + stackButtonsHeight());
+}
+
 void drawOperationStackPanel(ModellerState& state, EditQueue& edits) {
   state.clampIndices();
   const Function& f = state.function();
   const int fi = state.activeFunction;
   const int count = int(f.ops.size());
 
-  // Toolbar: one button per op kind, wrapping to the panel width.
+  // Toolbar: one button per op kind, wrapping to the panel width; where the panel is too short
+  // for the buttons and the first rows of the stack, one button opens the same list.
   ImGui::TextDisabled("Add to %s%s:", f.name.c_str(), state.hasSelection() ? " (selection)" : "");
   const float available = ImGui::GetContentRegionAvail().x;
-  float x = 0.0f;
-  for (NewOpKind kind : kNewOpKinds) {
-    const char* label = newOpLabel(kind);
-    const float w = ImGui::CalcTextSize(label).x + ImGui::GetStyle().FramePadding.x * 2;
-    if (x > 0.0f && x + ImGui::GetStyle().ItemSpacing.x + w <= available) ImGui::SameLine();
-    else x = 0.0f;
-    if (ImGui::Button(label)) addOperation(state, edits, kind);
-    state.probe.item(std::string("ops.add.") + label);
-    if (ImGui::IsItemHovered())
-      state.contextHelp = std::string("Add a ") + label + " operation after the active one, applied to the current selection";
-    x += (x > 0.0f ? ImGui::GetStyle().ItemSpacing.x : 0.0f) + w;
+  const float rowsLeft = ImGui::GetContentRegionAvail().y - stackButtonsHeight() - ImGui::GetStyle().ItemSpacing.y -
+                         float(toolbarRows(available)) * ImGui::GetFrameHeightWithSpacing();
+  const bool compact = rowsLeft < 2.0f * ImGui::GetFrameHeightWithSpacing();
+  if (compact) {
+    ImGui::SameLine();
+    if (ImGui::SmallButton("Add operation...")) ImGui::OpenPopup("addop");
+    state.probe.item("ops.add");
+    contextHelp(state, "Add an operation after the active one, applied to the current selection");
+    if (ImGui::BeginPopup("addop")) {
+      for (NewOpKind kind : kNewOpKinds) {
+        if (ImGui::Selectable(newOpLabel(kind))) addOperation(state, edits, kind);
+        state.probe.item(std::string("ops.add.") + newOpLabel(kind));
+      }
+      ImGui::EndPopup();
+    }
+  } else {
+    float x = 0.0f;
+    for (NewOpKind kind : kNewOpKinds) {
+      const char* label = newOpLabel(kind);
+      const float w = ImGui::CalcTextSize(label).x + ImGui::GetStyle().FramePadding.x * 2;
+      if (x > 0.0f && x + ImGui::GetStyle().ItemSpacing.x + w <= available) ImGui::SameLine();
+      else x = 0.0f;
+      if (ImGui::Button(label)) addOperation(state, edits, kind);
+      state.probe.item(std::string("ops.add.") + label);
+      if (ImGui::IsItemHovered())
+        state.contextHelp = std::string("Add a ") + label + " operation after the active one, applied to the current selection";
+      x += (x > 0.0f ? ImGui::GetStyle().ItemSpacing.x : 0.0f) + w;
+    }
   }
   ImGui::Separator();
 
-  const float buttons = ImGui::GetFrameHeightWithSpacing() + ImGui::GetStyle().ItemSpacing.y;
-  if (ImGui::BeginChild("stack", ImVec2(0, -buttons), false)) {
+  if (ImGui::BeginChild("stack", ImVec2(0, -stackButtonsHeight()), false)) {
+    state.probe.window("ops.stack");
     if (count == 0) ImGui::TextDisabled("No operations: the grid is undistorted.");
     for (int o = 0; o < count; ++o) {
       const Operation& op = f.ops[std::size_t(o)];

@@ -12,6 +12,9 @@ void drawFunctionsPanel(ModellerState& state, EditQueue& edits);
 /// operation_stack_panel.cpp: add operations (with the current selection) and reorder, mute,
 /// delete and pick them in the active function's stack.
 void drawOperationStackPanel(ModellerState& state, EditQueue& edits);
+/// The height an Operations panel `panelWidth` wide needs for its add toolbar and the first rows
+/// of the stack (call inside a frame: it measures with the current font and style).
+float operationStackPanelMinHeight(float panelWidth);
 /// operation_panel.cpp: every parameter of the active operation, edited live.
 void drawOperationPanel(ModellerState& state, EditQueue& edits);
 /// selection_panel.cpp: index boxes with or/and/xor/minus, all/none/invert, the center for new ops.

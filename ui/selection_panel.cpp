@@ -3,6 +3,8 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 
 #include "core/node_picking.h"
 #include "ui/panels.h"
@@ -21,8 +23,13 @@ void drawSelectionPanel(ModellerState& state, EditQueue& edits) {
   const std::size_t selected = std::size_t(std::count(mask.begin(), mask.end(), 1));
 
   ImGui::Text("%zu of %zu nodes selected", selected, total);
-  ImGui::SameLine();
-  ImGui::TextDisabled("in %s (%d×%d×%d)", f.name.c_str(), res[0], res[1], res[2]);
+  // The function's name and resolution beside the count where they fit, below it otherwise.
+  char where[96];
+  std::snprintf(where, sizeof where, "in %s (%d×%d×%d)", f.name.c_str(), res[0], res[1], res[2]);
+  if (ImGui::GetContentRegionAvail().x - ImGui::GetItemRectSize().x - ImGui::GetStyle().ItemSpacing.x >=
+      ImGui::CalcTextSize(where).x)
+    ImGui::SameLine();
+  ImGui::TextDisabled("%s", where);
   if (ImGui::Button("All")) selection = {SelectionBox{{0, res[0] - 1}, {0, res[1] - 1}, {0, res[2] - 1}, SelectionOp::Or}};
   contextHelp(state, "Select every node (Ctrl+A)");
   ImGui::SameLine();
@@ -41,11 +48,17 @@ void drawSelectionPanel(ModellerState& state, EditQueue& edits) {
   sectionTitle("Index box");
   // The box being entered: UI state kept across frames.
   auto& box = state.boxEntry;
-  ImGui::PushItemWidth(ImGui::GetFontSize() * 5.0f);
+  // Three ranges on one line where the panel is wide enough, else one per line (a narrow
+  // left column on a laptop screen would clip the third).
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float labels = 3.0f * (style.ItemInnerSpacing.x + ImGui::CalcTextSize("j").x) + 2.0f * style.ItemSpacing.x;
+  const float oneLine = std::floor((ImGui::GetContentRegionAvail().x - labels) / 3.0f);
+  const bool inOneLine = oneLine >= ImGui::GetFontSize() * 4.0f;
+  ImGui::PushItemWidth(inOneLine ? std::min(oneLine, ImGui::GetFontSize() * 6.0f) : ImGui::GetFontSize() * 7.0f);
   const char* axes[] = {"i", "j", "k"};
   std::array<int, 2>* ranges[] = {&box.i, &box.j, &box.k};
   for (int a = 0; a < 3; ++a) {
-    if (a > 0) ImGui::SameLine();
+    if (a > 0 && inOneLine) ImGui::SameLine();
     ImGui::DragInt2(axes[a], ranges[a]->data(), 0.1f, 0, res[std::size_t(a)] - 1);
     contextHelp(state, "Inclusive index range along this grid axis (first..last)");
   }

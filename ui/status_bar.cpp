@@ -4,6 +4,7 @@
 #include <imgui.h>
 
 #include <cstdio>
+#include <string>
 
 #include "ui/app_commands.h"
 
@@ -19,12 +20,26 @@ std::string humanCount(double n) {
   return text;
 }
 
+/// `text` cut to `width` pixels with an ellipsis, on a UTF-8 character boundary: the status line
+/// has no scroll bar, so a long hint on a narrow window ends visibly instead of mid-word at the edge.
+std::string fitText(const std::string& text, float width) {
+  if (ImGui::CalcTextSize(text.c_str()).x <= width) return text;
+  std::string cut = text;
+  while (!cut.empty()) {
+    while (!cut.empty() && (static_cast<unsigned char>(cut.back()) & 0xC0) == 0x80) cut.pop_back();
+    if (!cut.empty()) cut.pop_back();  // the character's lead byte, or one ASCII character
+    if (ImGui::CalcTextSize((cut + "…").c_str()).x <= width) break;
+  }
+  return cut + "…";
+}
+
 }  // namespace
 
 void drawStatusBar(ModellerState& state, float height) {
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(ImVec2(vp->Pos.x, vp->Pos.y + vp->Size.y - height));
   ImGui::SetNextWindowSize(ImVec2(vp->Size.x, height));
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowMinSize, ImVec2(1.0f, 1.0f));  // thinner than a window's 32 px minimum
   ImGui::PushStyleVar(ImGuiStyleVar_WindowRounding, 0.0f);
   ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(ImGui::GetFontSize() * 0.6f, (height - ImGui::GetFontSize()) * 0.5f));
@@ -33,6 +48,7 @@ void drawStatusBar(ModellerState& state, float height) {
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                    ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoBringToFrontOnFocus |
                    ImGuiWindowFlags_NoScrollWithMouse);
+  state.probe.window("panel.status");
   const RenderStats& s = state.previewStats;
   const auto& functions = state.document.project().functions;
   int active = 0;
@@ -49,15 +65,15 @@ void drawStatusBar(ModellerState& state, float height) {
   const bool recentMessage = !state.statusText.empty() && state.now - state.statusTime < (state.statusIsError ? 15.0 : 6.0);
   if (recentMessage && (state.contextHelp.empty() || state.statusIsError)) {
     ImGui::TextColored(state.statusIsError ? ImVec4(1.0f, 0.45f, 0.35f, 1.0f) : ImVec4(0.6f, 0.85f, 1.0f, 1.0f), "%s",
-                       state.statusText.c_str());
+                       fitText(state.statusText, ImGui::GetContentRegionAvail().x).c_str());
   } else if (!state.contextHelp.empty()) {
-    ImGui::TextDisabled("%s", state.contextHelp.c_str());
+    ImGui::TextDisabled("%s", fitText(state.contextHelp, ImGui::GetContentRegionAvail().x).c_str());
   } else {
     ImGui::TextDisabled("F1: shortcuts");
   }
   ImGui::End();
   ImGui::PopStyleColor();
-  ImGui::PopStyleVar(3);
+  ImGui::PopStyleVar(4);
 }
 
 }  // namespace gridifs::ui

@@ -1,14 +1,17 @@
 #include "ui/theme.h"
 
 #include <imgui.h>
+#include <backends/imgui_impl_opengl3.h>
 
 #include <filesystem>
 
 namespace gridifs::ui {
 
 float applyTheme(float scale) {
-  ImGui::StyleColorsDark();
+  // From ImGui's defaults each time: ScaleAllSizes multiplies whatever the style holds.
   ImGuiStyle& style = ImGui::GetStyle();
+  style = ImGuiStyle();
+  ImGui::StyleColorsDark();
   style.WindowPadding = ImVec2(10, 8);
   style.FramePadding = ImVec2(7, 4);
   style.ItemSpacing = ImVec2(8, 6);
@@ -77,6 +80,14 @@ float applyTheme(float scale) {
   config.SizePixels = 13.0f * scale;
   io.Fonts->AddFontDefault(&config);
   return config.SizePixels;
+}
+
+float rescaleTheme(float scale) {
+  ImGui::GetIO().Fonts->Clear();
+  const float size = applyTheme(scale);
+  ImGui_ImplOpenGL3_DestroyFontsTexture();
+  ImGui_ImplOpenGL3_CreateFontsTexture();
+  return size;
 }
 
 }  // namespace gridifs::ui

@@ -58,4 +58,10 @@ void UiProbe::frame(const std::string& name) {
   rects[name] = ImVec4(a.x, a.y, ImGui::CalcItemWidth(), b.y - a.y);
 }
 
+void UiProbe::window(const std::string& name) {
+  if (!enabled || !windowIsPlaced()) return;
+  const ImVec2 a = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+  rects[name] = ImVec4(a.x, a.y, size.x, size.y);
+}
+
 }  // namespace gridifs::ui

@@ -33,6 +33,8 @@ struct UiProbe {
   void item(const std::string& name);
   /// The same for a labelled widget, keeping only its frame (the current item width), not the label.
   void frame(const std::string& name);
+  /// The current window's (or child window's) rectangle under `name`.
+  void window(const std::string& name);
 };
 
 }  // namespace gridifs::ui
