@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/document.h"
+#include "edit/document.h"
 
 namespace gridifs::cli {
 

@@ -8,7 +8,7 @@
 #include <cstdio>
 
 #include "app/cli.h"
-#include "core/contractivity.h"
+#include "model/contractivity.h"
 
 namespace gridifs::cli {
 
@@ -75,7 +75,7 @@ RenderSetup prepareRender(const std::filesystem::path& file, const RenderOverrid
   }
   Document document(setup.project);
   try {
-    setup.ifs = compileIfs(document);
+    setup.ifs = compileIfs(document.project(), document.evaluation());
   } catch (const ModelError& e) {
     throw CliError(kBadInput, file.string() + ": " + e.what());
   }

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "core/chaos_renderer.h"
+#include "render/chaos_renderer.h"
 
 namespace gridifs::cli {
 

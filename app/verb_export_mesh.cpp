@@ -6,9 +6,9 @@
 #include <iostream>
 
 #include "app/cli.h"
-#include "core/deterministic_ifs.h"
-#include "core/mesh_io.h"
-#include "core/project_io.h"
+#include "mesh/deterministic_ifs.h"
+#include "mesh/mesh_io.h"
+#include "io/project_io.h"
 
 namespace gridifs::cli {
 namespace {
@@ -94,7 +94,7 @@ int runExportMesh(const ExportMeshArgs& a) {
   Document document(loadForVerb(a.file));
   DeterministicIfs ifs;
   try {
-    ifs = snapshotDeterministicIfs(document);
+    ifs = snapshotDeterministicIfs(document.project(), document.evaluation());
   } catch (const ModelError& e) {
     throw CliError(kBadInput, a.file + ": " + e.what());
   }

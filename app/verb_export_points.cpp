@@ -4,8 +4,8 @@
 #include "app/cli.h"
 #include "app/progress_bar.h"
 #include "app/render_setup.h"
-#include "core/point_cloud_export.h"
-#include "core/project_io.h"
+#include "io/point_cloud_export.h"
+#include "io/project_io.h"
 
 namespace gridifs::cli {
 namespace {

@@ -13,7 +13,7 @@
 #include "app/cli.h"
 #include "app/progress_bar.h"
 #include "app/render_setup.h"
-#include "core/flame_render.h"
+#include "render/flame_render.h"
 
 namespace gridifs::cli {
 namespace {

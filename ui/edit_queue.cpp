@@ -2,7 +2,7 @@
 
 #include <imgui.h>
 
-#include "core/model_types.h"
+#include "base/types.h"
 
 namespace gridifs::ui {
 

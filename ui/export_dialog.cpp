@@ -9,10 +9,10 @@
 #include <cstdio>
 #include <memory>
 
-#include "core/compiled_ifs.h"
-#include "core/mesh_io.h"
-#include "core/point_cloud_export.h"
-#include "core/project_io.h"
+#include "render/compiled_ifs.h"
+#include "mesh/mesh_io.h"
+#include "io/point_cloud_export.h"
+#include "io/project_io.h"
 #include "ui/widgets.h"
 
 namespace gridifs::ui {
@@ -108,7 +108,7 @@ void ExportDialog::updatePlan(const ModellerState& state) {
     DeterministicOptions options;
     options.depth = depth_;
     if (spec.shape == BaseShape::File && baseFile_.empty()) throw ModelError("", "choose a base mesh file");
-    plan_.plan = planDeterministic(snapshotDeterministicIfs(state.document), spec, options);
+    plan_.plan = planDeterministic(snapshotDeterministicIfs(state.document.project(), state.document.evaluation()), spec, options);
   } catch (const std::exception& e) {
     plan_.error = e.what();
   }
@@ -207,7 +207,7 @@ void ExportDialog::start(ModellerState& state) {
       DeterministicOptions options;
       options.depth = depth_;
       const MeshWriteOptions writeOptions{!ascii_, true};
-      auto ifs = std::make_shared<DeterministicIfs>(snapshotDeterministicIfs(state.document));
+      auto ifs = std::make_shared<DeterministicIfs>(snapshotDeterministicIfs(state.document.project(), state.document.evaluation()));
       running_ = true;
       worker_ = std::thread([this, ifs, spec, options, writeOptions, output] {
         try {
@@ -236,7 +236,7 @@ void ExportDialog::start(ModellerState& state) {
         throw ModelError("", "the point file must be a .ply file: " + output.string());
       if (!fs::is_directory(output.parent_path().empty() ? fs::path(".") : output.parent_path(), ec))
         throw ModelError("", "the folder of " + output.string() + " does not exist");
-      auto ifs = compileIfs(state.document);
+      auto ifs = compileIfs(state.document.project(), state.document.evaluation());
       RenderJob job = RenderJob::fromProject(state.document.project(), 0);  // all cores, as the CLI
       job.samples = samples_;
       validateRenderJob(job);

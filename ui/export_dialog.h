@@ -10,8 +10,8 @@
 #include <string>
 #include <thread>
 
-#include "core/base_mesh.h"
-#include "core/deterministic_ifs.h"
+#include "mesh/base_mesh.h"
+#include "mesh/deterministic_ifs.h"
 #include "ui/file_browser.h"
 #include "ui/modeller_state.h"
 

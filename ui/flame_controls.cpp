@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "core/palette.h"
+#include "flame/palette.h"
 #include "ui/preview_modes.h"
 #include "ui/widgets.h"
 

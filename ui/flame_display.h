@@ -10,9 +10,9 @@
 #include <thread>
 #include <vector>
 
-#include "core/chaos_renderer.h"
-#include "core/document.h"
-#include "core/flame_settings.h"
+#include "render/chaos_renderer.h"
+#include "edit/document.h"
+#include "model/flame_settings.h"
 
 namespace gridifs::ui {
 

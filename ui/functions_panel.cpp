@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "core/contractivity.h"
+#include "model/contractivity.h"
 #include "ui/panels.h"
 #include "ui/widgets.h"
 

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "core/view_camera.h"
+#include "edit/view_camera.h"
 #include "ui/edit_queue.h"
 #include "ui/gl_resources.h"
 #include "ui/modeller_state.h"

@@ -3,7 +3,7 @@
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
-#include "core/node_picking.h"
+#include "edit/node_picking.h"
 #include "ui/app_commands.h"
 #include "ui/export_dialog.h"
 #include "ui/symmetry_menu.h"

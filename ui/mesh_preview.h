@@ -13,8 +13,9 @@
 #include <thread>
 #include <vector>
 
-#include "core/base_mesh.h"
-#include "core/deterministic_ifs.h"
+#include "mesh/base_mesh.h"
+#include "edit/document.h"
+#include "mesh/deterministic_ifs.h"
 #include "ui/gl_resources.h"
 
 namespace gridifs::ui {

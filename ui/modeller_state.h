@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "core/chaos_renderer.h"
-#include "core/document.h"
-#include "core/grid.h"
+#include "render/chaos_renderer.h"
+#include "edit/document.h"
+#include "model/grid.h"
 #include "ui/widgets.h"
 
 namespace gridifs::ui {

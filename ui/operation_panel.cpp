@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "core/calculator.h"
-#include "core/node_picking.h"
+#include "model/calculator.h"
+#include "edit/node_picking.h"
 #include "ui/panels.h"
 #include "ui/widgets.h"
 

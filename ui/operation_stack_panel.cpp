@@ -4,7 +4,7 @@
 
 #include <cstdio>
 
-#include "core/stack_evaluator.h"
+#include "model/stack_evaluator.h"
 #include "ui/panels.h"
 #include "ui/widgets.h"
 

@@ -1,6 +1,6 @@
 #include "ui/preview_renderer.h"
 
-#include "core/compiled_ifs.h"
+#include "render/compiled_ifs.h"
 #include "ui/flame_display.h"
 
 namespace gridifs::ui {
@@ -28,7 +28,7 @@ void PreviewRenderer::publish(const Document& document, int width, int height, i
   if (havePublished_ && relevant == published_ && width == width_ && height == height_ && threads == threads_)
     return;
   try {
-    auto ifs = compileIfs(document);
+    auto ifs = compileIfs(document.project(), document.evaluation());
     RenderJob job = RenderJob::fromProject(project, threads);
     job.width = width;
     job.height = height;

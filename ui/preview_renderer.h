@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <string>
 
-#include "core/chaos_renderer.h"
-#include "core/document.h"
+#include "render/chaos_renderer.h"
+#include "edit/document.h"
 
 namespace gridifs::ui {
 

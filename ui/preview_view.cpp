@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <cstdio>
 
-#include "core/view_camera.h"
+#include "edit/view_camera.h"
 #include "ui/widgets.h"
 
 namespace gridifs::ui {

@@ -10,7 +10,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "core/project_io.h"
+#include "io/project_io.h"
 
 namespace gridifs::ui {
 namespace fs = std::filesystem;

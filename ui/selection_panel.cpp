@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "core/node_picking.h"
+#include "edit/node_picking.h"
 #include "ui/panels.h"
 #include "ui/widgets.h"
 

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "core/flame_symmetry.h"
+#include "flame/flame_symmetry.h"
 
 namespace gridifs::ui {
 

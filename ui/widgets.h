@@ -6,7 +6,7 @@
 #include <map>
 #include <string>
 
-#include "core/model_types.h"
+#include "base/types.h"
 
 namespace gridifs::ui {
 

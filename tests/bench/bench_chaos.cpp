@@ -9,9 +9,9 @@
 #include <ctime>
 #include <thread>
 
-#include "core/chaos_kernel.h"
-#include "core/chaos_renderer.h"
-#include "core/compiled_ifs.h"
+#include "render/chaos_kernel.h"
+#include "render/chaos_renderer.h"
+#include "render/compiled_ifs.h"
 
 namespace gridifs {
 namespace {

@@ -13,9 +13,9 @@
 #include <iterator>
 #include <map>
 
-#include "core/compiled_ifs.h"
-#include "core/flame_render.h"
-#include "core/project_io.h"
+#include "render/compiled_ifs.h"
+#include "render/flame_render.h"
+#include "io/project_io.h"
 
 namespace gridifs {
 namespace {

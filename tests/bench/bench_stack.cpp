@@ -2,8 +2,8 @@
 // calculator included, must fit well inside a frame. Target: < 5 ms on one core.
 #include <benchmark/benchmark.h>
 
-#include "core/contractivity.h"
-#include "core/stack_evaluator.h"
+#include "model/contractivity.h"
+#include "model/stack_evaluator.h"
 
 using namespace gridifs;
 

@@ -6,7 +6,7 @@
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <algorithm>
 
-#include "core/ifs_mesh.h"
+#include "mesh/ifs_mesh.h"
 #include "run_command.h"
 
 using namespace gridifs;

@@ -6,7 +6,7 @@
 #include <cstring>
 #include <set>
 
-#include "core/project_io.h"
+#include "io/project_io.h"
 #include "tests/cli/run_command.h"
 #include "tests/core/renderer_scenes.h"
 

@@ -10,8 +10,8 @@
 #include <glm/geometric.hpp>
 #include <string>
 
-#include "core/ifs_mesh.h"
-#include "core/project.h"
+#include "mesh/ifs_mesh.h"
+#include "model/project.h"
 
 namespace gridifs::test_support {
 

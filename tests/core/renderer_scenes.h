@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "core/project.h"
+#include "model/project.h"
 
 namespace gridifs::test {
 

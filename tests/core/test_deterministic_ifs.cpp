@@ -7,8 +7,9 @@
 #include <limits>
 #include <sstream>
 
-#include "core/deterministic_ifs.h"
-#include "core/stack_evaluator.h"
+#include "edit/document.h"
+#include "mesh/deterministic_ifs.h"
+#include "model/stack_evaluator.h"
 #include "deterministic_samples.h"
 
 using namespace gridifs;
@@ -276,7 +277,7 @@ TEST(DeterministicIfs, ResultDoesNotDependOnThreads) {
 TEST(DeterministicIfs, SnapshotFromDocumentMatchesProject) {
   const Project project = nonlinearProject();
   Document document(project);
-  const DeterministicIfs fromDocument = snapshotDeterministicIfs(document);
+  const DeterministicIfs fromDocument = snapshotDeterministicIfs(document.project(), document.evaluation());
   const DeterministicIfs fromProject = snapshotDeterministicIfs(project);
   ASSERT_EQ(fromDocument.maps.size(), fromProject.maps.size());
   for (std::size_t i = 0; i < fromDocument.maps.size(); ++i)

@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <numeric>
 
-#include "core/density_filter.h"
+#include "flame/density_filter.h"
 
 using namespace gridifs;
 

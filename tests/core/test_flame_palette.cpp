@@ -5,7 +5,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "core/palette.h"
+#include "flame/palette.h"
 
 using namespace gridifs;
 

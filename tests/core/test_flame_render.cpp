@@ -7,8 +7,8 @@
 #include <cmath>
 #include <filesystem>
 
-#include "core/compiled_ifs.h"
-#include "core/flame_render.h"
+#include "render/compiled_ifs.h"
+#include "render/flame_render.h"
 
 using namespace gridifs;
 

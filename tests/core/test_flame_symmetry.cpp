@@ -5,8 +5,8 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
-#include "core/flame_symmetry.h"
-#include "core/stack_evaluator.h"
+#include "flame/flame_symmetry.h"
+#include "model/stack_evaluator.h"
 
 using namespace gridifs;
 

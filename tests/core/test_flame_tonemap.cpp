@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "core/flame_tonemap.h"
+#include "flame/flame_tonemap.h"
 
 using namespace gridifs;
 

@@ -3,8 +3,8 @@
 
 #include <random>
 
-#include "core/grid.h"
-#include "core/stack_evaluator.h"
+#include "model/grid.h"
+#include "model/stack_evaluator.h"
 
 using namespace gridifs;
 

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "core/project_io.h"
+#include "io/project_io.h"
 #include "project_samples.h"
 
 using namespace gridifs;

@@ -6,10 +6,10 @@
 #include <set>
 #include <thread>
 
-#include "core/camera.h"
-#include "core/chaos_renderer.h"
-#include "core/compiled_ifs.h"
-#include "core/stack_evaluator.h"
+#include "render/camera.h"
+#include "render/chaos_renderer.h"
+#include "render/compiled_ifs.h"
+#include "model/stack_evaluator.h"
 #include "tests/core/renderer_scenes.h"
 
 namespace gridifs {

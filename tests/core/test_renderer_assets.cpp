@@ -3,9 +3,9 @@
 
 #include <filesystem>
 
-#include "core/chaos_renderer.h"
-#include "core/compiled_ifs.h"
-#include "core/project_io.h"
+#include "render/chaos_renderer.h"
+#include "render/compiled_ifs.h"
+#include "io/project_io.h"
 
 namespace gridifs {
 namespace {

@@ -5,7 +5,7 @@
 #include <set>
 #include <tuple>
 
-#include "core/selection.h"
+#include "model/selection.h"
 
 using namespace gridifs;
 

@@ -21,7 +21,7 @@
 #include <thread>
 #include <vector>
 
-#include "core/project_io.h"
+#include "io/project_io.h"
 
 namespace fs = std::filesystem;
 using namespace std::chrono_literals;

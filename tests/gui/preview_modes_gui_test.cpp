@@ -21,8 +21,8 @@
 #include <tuple>
 #include <vector>
 
-#include "core/mesh_io.h"
-#include "core/project_io.h"
+#include "mesh/mesh_io.h"
+#include "io/project_io.h"
 
 namespace fs = std::filesystem;
 using namespace std::chrono_literals;

@@ -1,0 +1,104 @@
+#include "edit/document.h"
+
+#include "model/validation.h"
+
+namespace gridifs {
+
+Document::Document(Project project) : project_(std::move(project)), saved_(project_) {
+  if (project_.functions.empty()) project_ = saved_ = defaultNewProject();
+}
+
+void Document::commit(Project before, const std::string& label) {
+  if (before == project_) return;
+  undo_.push_back({std::move(before), label});
+  if (undo_.size() > kMaxUndoSteps) undo_.erase(undo_.begin());
+  redo_.clear();
+}
+
+void Document::edit(const std::string& label, const Change& change) {
+  if (gesture_) endGesture();
+  Project next = project_;
+  change(next);
+  if (next == project_) return;
+  validateProject(next);
+  Project before = std::move(project_);
+  project_ = std::move(next);
+  ++revision_;
+  commit(std::move(before), label);
+}
+
+void Document::beginGesture(const std::string& label) {
+  if (gesture_) endGesture();
+  gesture_ = Step{project_, label};
+}
+
+void Document::updateGesture(const Change& change) {
+  if (!gesture_) beginGesture("Edit");
+  Project next = project_;
+  change(next);
+  if (next == project_) return;
+  validateProject(next);
+  project_ = std::move(next);
+  ++revision_;
+}
+
+void Document::endGesture() {
+  if (!gesture_) return;
+  Step step = std::move(*gesture_);
+  gesture_.reset();
+  commit(std::move(step.project), step.label);
+}
+
+void Document::cancelGesture() {
+  if (!gesture_) return;
+  if (project_ != gesture_->project) {
+    project_ = std::move(gesture_->project);
+    ++revision_;
+  }
+  gesture_.reset();
+}
+
+bool Document::undo() {
+  if (gesture_) endGesture();
+  if (undo_.empty()) return false;
+  Step step = std::move(undo_.back());
+  undo_.pop_back();
+  redo_.push_back({std::move(project_), step.label});
+  project_ = std::move(step.project);
+  ++revision_;
+  return true;
+}
+
+bool Document::redo() {
+  if (gesture_) endGesture();
+  if (redo_.empty()) return false;
+  Step step = std::move(redo_.back());
+  redo_.pop_back();
+  undo_.push_back({std::move(project_), step.label});
+  project_ = std::move(step.project);
+  ++revision_;
+  return true;
+}
+
+void Document::reset(Project project, std::filesystem::path path) {
+  gesture_.reset();
+  project_ = std::move(project);
+  saved_ = project_;
+  path_ = std::move(path);
+  undo_.clear();
+  redo_.clear();
+  ++revision_;
+}
+
+void Document::markSaved(const std::filesystem::path& path) {
+  saved_ = project_;
+  path_ = path;
+}
+
+std::shared_ptr<const Grid> Document::evaluatedGrid(std::size_t index) const {
+  return evaluation_.function(project_, index);
+}
+
+std::shared_ptr<const Grid> Document::evaluatedFinal() const { return evaluation_.finalFunction(project_); }
+
+}  // namespace gridifs
