@@ -13,6 +13,8 @@
 #include "app/cli.h"
 #include "app/progress_bar.h"
 #include "app/render_setup.h"
+#include "base/atomic_file.h"
+#include "base/color_space.h"
 #include "render/flame_render.h"
 
 namespace gridifs::cli {
@@ -32,13 +34,11 @@ struct InterruptGuard {
 /// The Z value of pixels without points (Blender's convention for "background").
 constexpr float kEmptyZ = 1e10f;
 
-float srgbToLinear(float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f); }
-
 void writeImage(const RenderImage& image, const std::filesystem::path& out, const RenderSetup& setup,
                 const std::string& file) {
   const std::string ext = lowerExtension(out);
-  AtomicOutput output(out);
-  const std::string temp = output.tempPath().string();
+  AtomicFile output(out);
+  const std::string temp = output.temporaryPath().string();
   auto writer = OIIO::ImageOutput::create(temp);
   if (!writer) throw CliError(kFailure, "cannot write " + out.string() + ": " + OIIO::geterror());
   const std::size_t n = std::size_t(image.width) * std::size_t(image.height);
@@ -80,7 +80,11 @@ void writeImage(const RenderImage& image, const std::filesystem::path& out, cons
     throw CliError(kFailure, "cannot write " + out.string() + ": " + message);
   }
   writer.reset();
-  output.commit();
+  try {
+    output.commit();
+  } catch (const IoError& e) {
+    throw CliError(kFailure, e.what());
+  }
 }
 
 /// Options of the flame display (issue 6); empty optionals keep the project's settings.

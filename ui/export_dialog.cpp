@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "base/text_format.h"
 #include "render/compiled_ifs.h"
 #include "mesh/mesh_io.h"
 #include "io/point_cloud_export.h"
@@ -21,15 +22,6 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr std::int64_t kMaxGuiPointSamples = 1'000'000'000;  // as the CLI: 15 GB of PLY
-
-std::string withThousands(std::uint64_t n) {
-  std::string digits = std::to_string(n), out;
-  for (std::size_t i = 0; i < digits.size(); ++i) {
-    if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
-    out += digits[i];
-  }
-  return out;
-}
 
 std::string megabytes(std::uint64_t bytes) {
   char text[32];

@@ -20,6 +20,7 @@
 #include <numeric>
 #include <vector>
 
+#include "base/atomic_file.h"
 #include "ui/app_commands.h"
 #include "ui/export_dialog.h"
 #include "ui/grid_view.h"
@@ -262,13 +263,11 @@ void ModellerApp::writeProbe(double frameMs) {
   nlohmann::json ifsNodes = nlohmann::json::array();
   for (const glm::dvec2& p : ifsView_.screenNodes(state_)) ifsNodes.push_back({p.x, p.y});
   j["nodes_ifs"] = ifsNodes;
-  const std::string tmp = options_.probe + ".tmp";
-  {
-    std::ofstream out(tmp);
-    out << j.dump(1);
+  try {
+    writeFileAtomically(options_.probe, j.dump(1));
+  } catch (const IoError&) {
+    // A probe for tests only: a failed write leaves the last probe, which the test then reads.
   }
-  std::error_code ec;
-  fs::rename(tmp, options_.probe, ec);
 }
 
 int ModellerApp::run() {

@@ -1,10 +1,11 @@
 #include "flame/density_filter.h"
 
+#include "base/parallel.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <stdexcept>
-#include <thread>
 
 namespace gridifs {
 namespace {
@@ -19,20 +20,13 @@ double gaussian(double x) { return std::exp(-2.0 * x * x); }
 constexpr double kDeThreshold = 100.0;
 constexpr int kKeepThreshold = 100;
 
+// Rows are independent (each output row reads the input, writes only itself), so any split
+// gives the same image.
 template <class Body>
 void forRows(int rows, int threads, const Body& body) {
-  threads = std::clamp(threads, 1, 64);
-  if (threads == 1 || rows < 64) {
-    body(0, rows);
-    return;
-  }
-  std::vector<std::thread> pool;
-  const int band = (rows + threads - 1) / threads;
-  for (int t = 0; t < threads; ++t) {
-    const int begin = t * band, end = std::min(rows, begin + band);
-    if (begin < end) pool.emplace_back([&body, begin, end] { body(begin, end); });
-  }
-  for (auto& th : pool) th.join();
+  constexpr std::size_t kRowsPerChunk = 8;
+  parallelFor(std::size_t(std::max(rows, 0)), rows < 64 ? 1 : std::clamp(threads, 1, 64), kRowsPerChunk,
+              [&](std::size_t begin, std::size_t end) { body(int(begin), int(end)); });
 }
 
 }  // namespace

@@ -4,8 +4,8 @@
 #include <memory>
 #include <cmath>
 #include <stdexcept>
-#include <thread>
 
+#include "base/parallel.h"
 #include "flame/density_filter.h"
 
 namespace gridifs {
@@ -148,17 +148,10 @@ FlameImage developFlame(const FlameHistogram& histogram, const FlameSettings& se
   image.rgba.assign(std::size_t(width) * std::size_t(height) * 4, 0.f);
   const ToneMapParams params = ToneMapParams::from(settings, background, transparent);
   const std::size_t pixels = std::size_t(width) * std::size_t(height);
-  const int n = std::clamp(threads, 1, 64);
-  std::vector<std::thread> pool;
-  for (int t = 0; t < n; ++t) {
-    const std::size_t begin = pixels * t / n, end = pixels * (t + 1) / n;
-    auto body = [&, begin, end] {
-      for (std::size_t i = begin; i < end; ++i) toneMapPixel(&filtered.data[i * 4], params, &image.rgba[i * 4]);
-    };
-    if (n == 1) body();
-    else pool.emplace_back(body);
-  }
-  for (auto& th : pool) th.join();
+  constexpr std::size_t kPixelsPerChunk = 4096;
+  parallelFor(pixels, std::clamp(threads, 1, 64), kPixelsPerChunk, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) toneMapPixel(&filtered.data[i * 4], params, &image.rgba[i * 4]);
+  });
   return image;
 }
 

@@ -1,7 +1,5 @@
 #include "io/point_cloud_export.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <bit>
 #include <cerrno>
@@ -9,6 +7,7 @@
 #include <cstdio>
 #include <cstring>
 
+#include "base/atomic_file.h"
 #include "io/project_io.h"
 
 namespace gridifs {
@@ -27,20 +26,15 @@ std::string pointCloudHeader(std::uint64_t count, const std::string& description
 PointCloudResult writePointCloud(const CompiledIfs& ifs, const RenderJob& job, const fs::path& out,
                                  const std::string& description,
                                  const std::function<bool(const RenderStats&)>& progress) {
-  const fs::path folder = out.has_parent_path() ? out.parent_path() : fs::path(".");
-  const fs::path temp = folder / ("." + out.filename().string() + ".tmp-" + std::to_string(::getpid()));
-  std::FILE* f = std::fopen(temp.c_str(), "wb");
+  AtomicFile atomic(out);
+  std::FILE* f = std::fopen(atomic.temporaryPath().c_str(), "wb");
   if (!f) throw IoError("cannot write " + out.string() + ": " + std::strerror(errno));
-  struct Cleanup {
+  struct CloseOnExit {
     std::FILE*& f;
-    const fs::path& temp;
-    bool keep = false;
-    ~Cleanup() {
+    ~CloseOnExit() {
       if (f) std::fclose(f);
-      std::error_code ec;
-      if (!keep) fs::remove(temp, ec);
     }
-  } cleanup{f, temp};
+  } closeOnExit{f};
   auto write = [&](const void* data, std::size_t bytes) {
     if (bytes && std::fwrite(data, 1, bytes, f) != bytes)
       throw IoError("cannot write " + out.string() + ": " + std::strerror(errno));
@@ -74,15 +68,11 @@ PointCloudResult writePointCloud(const CompiledIfs& ifs, const RenderJob& job, c
   const std::string header = pointCloudHeader(result.written, description);
   if (std::fseek(f, 0, SEEK_SET) != 0) throw IoError("cannot write " + out.string() + ": " + std::strerror(errno));
   write(header.data(), header.size());
-  if (std::fflush(f) != 0 || ::fsync(::fileno(f)) != 0)
-    throw IoError("cannot write " + out.string() + ": " + std::strerror(errno));
+  if (std::fflush(f) != 0) throw IoError("cannot write " + out.string() + ": " + std::strerror(errno));
   const int closed = std::fclose(f);
   f = nullptr;
   if (closed != 0) throw IoError("cannot write " + out.string() + ": " + std::strerror(errno));
-  std::error_code ec;
-  fs::rename(temp, out, ec);
-  if (ec) throw IoError("cannot write " + out.string() + ": " + ec.message());
-  cleanup.keep = true;
+  atomic.commit();
   return result;
 }
 

@@ -1,21 +1,17 @@
 #include "io/project_io.h"
 
-#include "model/validation.h"
-
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <cerrno>
 #include <cmath>
 #include <cstring>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <random>
 #include <sstream>
 
+#include "base/atomic_file.h"
 #include "model/calculator.h"
 #include "model/palette_reference.h"
 #include "model/stack_evaluator.h"
+#include "model/validation.h"
 
 namespace gridifs {
 namespace {
@@ -569,48 +565,16 @@ Project loadProject(const std::filesystem::path& file) {
 void saveProject(const Project& project, const std::filesystem::path& file) {
   namespace fs = std::filesystem;
   validateProject(project);  // never write a project that could not be read back
-  const std::string text = serializeProject(project);
-  const fs::path folder = file.has_parent_path() ? file.parent_path() : fs::path(".");
-  std::random_device rd;
-  const fs::path temporary = folder / ("." + file.filename().string() + ".tmp" + std::to_string(rd() % 1000000));
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
-  if (fd < 0) throw IoError("cannot write in " + folder.string() + ": " + std::strerror(errno));
-  std::size_t written = 0;
-  while (written < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + written, text.size() - written);
-    if (n < 0) {
-      if (errno == EINTR) continue;
-      const std::string reason = std::strerror(errno);
-      ::close(fd);
-      ::unlink(temporary.c_str());
-      throw IoError("cannot write " + file.string() + ": " + reason);
-    }
-    written += std::size_t(n);
-  }
-  if (::fsync(fd) != 0 || ::close(fd) != 0) {
-    const std::string reason = std::strerror(errno);
-    ::unlink(temporary.c_str());
-    throw IoError("cannot write " + file.string() + ": " + reason);
-  }
+  AtomicFile out(file);
+  out.write(serializeProject(project));
   std::error_code ec;
   if (fs::exists(file, ec)) {
     fs::path backup = file;
     backup += "~";
     fs::copy_file(file, backup, fs::copy_options::overwrite_existing, ec);
-    if (ec) {
-      ::unlink(temporary.c_str());
-      throw IoError("cannot keep a backup of " + file.string() + ": " + ec.message());
-    }
+    if (ec) throw IoError("cannot keep a backup of " + file.string() + ": " + ec.message());
   }
-  if (::rename(temporary.c_str(), file.c_str()) != 0) {
-    const std::string reason = std::strerror(errno);
-    ::unlink(temporary.c_str());
-    throw IoError("cannot replace " + file.string() + ": " + reason);
-  }
-  if (const int dir = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC); dir >= 0) {
-    ::fsync(dir);
-    ::close(dir);
-  }
+  out.commit();
 }
 
 }  // namespace gridifs

@@ -1,15 +1,13 @@
 #include "mesh/deterministic_ifs.h"
 
+#include "base/parallel.h"
+#include "base/text_format.h"
+
 #include <algorithm>
-#include <chrono>
 #include <climits>
 #include <cmath>
-#include <condition_variable>
 #include <cstdio>
-#include <exception>
 #include <limits>
-#include <mutex>
-#include <thread>
 
 #include "model/stack_evaluator.h"
 
@@ -44,15 +42,6 @@ DeterministicIfs snapshotWith(const Project& project, GridOf gridOf, FinalOf fin
   return ifs;
 }
 
-std::string withThousands(std::uint64_t n) {
-  std::string digits = std::to_string(n), out;
-  for (std::size_t i = 0; i < digits.size(); ++i) {
-    if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
-    out += digits[i];
-  }
-  return out;
-}
-
 std::string faceCountText(const DeterministicPlan& plan) {
   if (plan.total.faces != kSaturated) return withThousands(plan.total.faces);
   char buffer[64];
@@ -67,66 +56,6 @@ std::string gibText(std::uint64_t bytes) {
 }
 
 Vec3 toVec3(const IfsMesh::Point& p) { return {p[0], p[1], p[2]}; }
-
-// Runs `tasks` indexed tasks on `threads` threads (the caller is one of them). Only the caller
-// reports progress; any worker stops early when `stop` is set. Rethrows a worker's exception.
-class ParallelTasks {
- public:
-  ParallelTasks(std::size_t tasks, int threads) : tasks_(tasks), threads_(std::max(1, threads)) {}
-
-  template <class Task, class Report>
-  void run(Task task, Report report, std::atomic<bool>& stop) {
-    std::atomic<std::size_t> next{0};
-    std::exception_ptr failure;
-    std::mutex failureMutex;
-    auto work = [&] {
-      try {
-        for (std::size_t t = next++; t < tasks_ && !stop.load(std::memory_order_relaxed); t = next++) task(t);
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(failureMutex);
-        if (!failure) failure = std::current_exception();
-        stop = true;
-      }
-    };
-    const int helpers = int(std::min<std::size_t>(std::size_t(threads_ - 1), tasks_ > 0 ? tasks_ - 1 : 0));
-    int running = helpers;  // guarded by doneMutex
-    std::mutex doneMutex;
-    std::condition_variable doneSignal;
-    std::vector<std::thread> pool;
-    for (int i = 0; i < helpers; ++i)
-      pool.emplace_back([&] {
-        work();
-        std::lock_guard<std::mutex> lock(doneMutex);
-        --running;
-        doneSignal.notify_one();
-      });
-    // The caller takes tasks too, reporting between them; then it keeps reporting until the
-    // helpers are done, so a long last task still moves the progress bar.
-    try {
-      for (std::size_t t = next++; t < tasks_ && !stop.load(std::memory_order_relaxed); t = next++) {
-        task(t);
-        report();
-      }
-      std::unique_lock<std::mutex> lock(doneMutex);
-      while (running > 0) {
-        lock.unlock();
-        report();
-        lock.lock();
-        doneSignal.wait_for(lock, std::chrono::milliseconds(10), [&] { return running == 0; });
-      }
-    } catch (...) {
-      std::lock_guard<std::mutex> lock(failureMutex);
-      if (!failure) failure = std::current_exception();
-      stop = true;
-    }
-    for (auto& thread : pool) thread.join();
-    if (failure) std::rethrow_exception(failure);
-  }
-
- private:
-  std::size_t tasks_;
-  int threads_;
-};
 
 // Reports progress on the caller's thread at most every 1% and polls the cancel flag.
 class ProgressGate {
@@ -228,7 +157,7 @@ void buildDeterministicMesh(const DeterministicIfs& ifs, const IfsMesh& base, co
   const int n = options.depth;
   const std::size_t V = base.n_vertices(), E = base.n_edges(), F = base.n_faces(), H = 2 * E;
   const std::size_t copies = std::size_t(result.plan.copies);
-  const int threads = options.threads > 0 ? options.threads : int(std::max(1u, std::thread::hardware_concurrency()));
+  const int threads = resolveThreadCount(options.threads);
 
   IfsMesh& out = result.mesh;
   OpenMesh::FPropHandleT<int> address;
@@ -262,9 +191,10 @@ void buildDeterministicMesh(const DeterministicIfs& ifs, const IfsMesh& base, co
     std::vector<IfsMesh::Point> basePoints(base.points(), base.points() + V);
     std::atomic<std::uint64_t> done{0};
     const double totalWork = double(copies) * double(V);
-    ParallelTasks tasks(blocks * prefixes, threads);
-    tasks.run(
+    parallelForEach(
+        blocks * prefixes, threads,
         [&](std::size_t t) {
+          if (halted()) return;
           const std::size_t block = t % blocks, prefix = t / blocks;
           const std::size_t v0 = block * kBlock, count = std::min(kBlock, V - v0);
           // levels[j] holds the block after the first j functions (j = 0: the base).
@@ -306,7 +236,7 @@ void buildDeterministicMesh(const DeterministicIfs& ifs, const IfsMesh& base, co
             changed = j;
           }
         },
-        [&] { report(kPositionsShare * double(done.load()) / totalWork); }, stop);
+        [&] { report(kPositionsShare * double(done.load()) / totalWork); });
   }
   if (stop) throw DeterministicCancelled();
 
@@ -328,8 +258,8 @@ void buildDeterministicMesh(const DeterministicIfs& ifs, const IfsMesh& base, co
     const std::size_t copiesPerTask = std::max<std::size_t>(1, (std::size_t(1) << 16) / perCopy);
     const std::size_t taskCount = (copies + copiesPerTask - 1) / copiesPerTask;
     std::atomic<std::uint64_t> done{0};
-    ParallelTasks tasks(taskCount, threads);
-    tasks.run(
+    parallelForEach(
+        taskCount, threads,
         [&](std::size_t t) {
           const std::size_t c0 = t * copiesPerTask, c1 = std::min(copies, c0 + copiesPerTask);
           for (std::size_t c = c0; c < c1; ++c) {
@@ -364,7 +294,7 @@ void buildDeterministicMesh(const DeterministicIfs& ifs, const IfsMesh& base, co
           }
           done.fetch_add(c1 - c0, std::memory_order_relaxed);
         },
-        [&] { report(kPositionsShare + (1.0 - kPositionsShare) * double(done.load()) / double(copies)); }, stop);
+        [&] { report(kPositionsShare + (1.0 - kPositionsShare) * double(done.load()) / double(copies)); });
   }
   if (stop) throw DeterministicCancelled();
   report(1.0);

@@ -13,7 +13,9 @@
 #include <system_error>
 
 #include "base/types.h"
+#include "base/atomic_file.h"
 #include "base/errors.h"
+#include "base/text_format.h"
 
 namespace gridifs {
 namespace fs = std::filesystem;
@@ -49,12 +51,6 @@ class QuietOpenMesh {
   std::lock_guard<std::mutex> lock_;
 };
 
-std::string lowerExtension(const fs::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
-}
-
 const char* extensionOf(MeshFormat format) {
   switch (format) {
     case MeshFormat::Ply:
@@ -88,10 +84,10 @@ std::string describe(const std::error_code& error) {
 
 std::optional<MeshFormat> meshFormatFromPath(const fs::path& path) {
   const std::string ext = lowerExtension(path);
-  if (ext == ".ply") return MeshFormat::Ply;
-  if (ext == ".obj") return MeshFormat::Obj;
-  if (ext == ".stl") return MeshFormat::Stl;
-  if (ext == ".off") return MeshFormat::Off;
+  if (ext == "ply") return MeshFormat::Ply;
+  if (ext == "obj") return MeshFormat::Obj;
+  if (ext == "stl") return MeshFormat::Stl;
+  if (ext == "off") return MeshFormat::Off;
   return std::nullopt;
 }
 
@@ -186,10 +182,9 @@ void writeMeshFile(const IfsMesh& mesh, const fs::path& file, const MeshWriteOpt
   if (options.vertexColors && formatHasVertexColors(*format) && mesh.has_vertex_colors())
     flags += OpenMesh::IO::Options::VertexColor;
 
-  const fs::path temporary = temporarySibling(file, "tmp");
+  AtomicFile atomic(file);
+  const fs::path& temporary = atomic.temporaryPath();
   auto fail = [&](const std::string& why) {
-    std::error_code ignored;
-    fs::remove(temporary, ignored);
     throw IoError("cannot write " + name + (why.empty() ? std::string() : ": " + why));
   };
   {
@@ -211,15 +206,7 @@ void writeMeshFile(const IfsMesh& mesh, const fs::path& file, const MeshWriteOpt
     out.close();
     if (!out) fail("the disk may be full");
   }
-  // Durable before it becomes visible under the final name.
-  if (const int fd = ::open(temporary.c_str(), O_RDONLY); fd >= 0) {
-    const int syncError = ::fsync(fd) == 0 ? 0 : errno;
-    ::close(fd);
-    if (syncError != 0) fail(describe(std::error_code(syncError, std::generic_category())));
-  }
-  std::error_code error;
-  fs::rename(temporary, file, error);
-  if (error) fail(describe(error));
+  atomic.commit();
 }
 
 }  // namespace gridifs

@@ -1,5 +1,7 @@
 #include "model/calculator.h"
 
+#include "base/hash.h"
+
 #include <muParser.h>
 
 #include <array>
@@ -8,13 +10,6 @@
 
 namespace gridifs {
 namespace {
-
-std::uint64_t splitmix64(std::uint64_t x) {
-  x += 0x9E3779B97F4A7C15ull;
-  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-  return x ^ (x >> 31);
-}
 
 double powFunction(double a, double b) { return std::pow(a, b); }
 double atan2Function(double y, double x) { return std::atan2(y, x); }

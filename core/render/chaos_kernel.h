@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <cstring>
 
+#include "base/hash.h"
 #include "render/camera.h"
 #include "render/compiled_ifs.h"
 
@@ -40,14 +41,8 @@ typedef std::int32_t v4i __attribute__((vector_size(16)));
 /// cheaper than mt19937. Stream = (seed, worker) through splitmix64.
 struct Rng {
   std::uint64_t state = 0;
-  static std::uint64_t splitmix(std::uint64_t x) {
-    x += 0x9E3779B97F4A7C15ull;
-    x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-    x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-    return x ^ (x >> 31);
-  }
   static Rng forStream(std::uint64_t seed, std::uint64_t worker) {
-    return Rng{splitmix(splitmix(seed) ^ splitmix(worker + 0x5851F42D4C957F2Dull))};
+    return Rng{splitmix64(splitmix64(seed) ^ splitmix64(worker + 0x5851F42D4C957F2Dull))};
   }
   std::uint64_t next() {
     state += 0xA0761D6478BD642Full;

@@ -5,10 +5,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <random>
 #include <stdexcept>
 
+#include "base/atomic_file.h"
+#include "base/color_space.h"
 #include "base/errors.h"
+#include "base/text_format.h"
 
 namespace gridifs {
 
@@ -107,10 +109,9 @@ void flameImageToRgba8(const FlameImage& image, std::vector<std::uint8_t>& out) 
 
 void writeFlameImage(const FlameImage& image, const std::filesystem::path& file, int bitDepth, bool withAlpha) {
   namespace fs = std::filesystem;
-  std::string ext = file.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  const bool exr = ext == ".exr";
-  if (!exr && ext != ".png" && ext != ".tif" && ext != ".tiff")
+  const std::string ext = lowerExtension(file);
+  const bool exr = ext == "exr";
+  if (!exr && ext != "png" && ext != "tif" && ext != "tiff")
     throw IoError("cannot write " + file.string() + ": use a .png, .tif or .exr file name");
   OIIO::TypeDesc format;
   if (exr) format = bitDepth == 32 ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::HALF;
@@ -126,13 +127,12 @@ void writeFlameImage(const FlameImage& image, const std::filesystem::path& file,
     // The tone-mapped colors are display (sRGB-encoded) values; EXR holds scene-linear light,
     // like the z-buffer EXR of `gridifs render`. Convert the unpremultiplied color, then
     // premultiply again so that compositing over a linear background matches the PNG.
-    auto toLinear = [](float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f); };
     pixels.resize(image.rgba.size());
     for (std::size_t i = 0; i < image.rgba.size(); i += 4) {
       const float a = withAlpha ? image.rgba[i + 3] : 1.0f;
       for (int c = 0; c < 3; ++c) {
         const float straight = a > 0.0f ? std::min(1.0f, image.rgba[i + c] / a) : 0.0f;
-        pixels[i + c] = toLinear(straight) * a;
+        pixels[i + c] = srgbToLinear(straight) * a;
       }
       pixels[i + 3] = a;
     }
@@ -145,27 +145,14 @@ void writeFlameImage(const FlameImage& image, const std::filesystem::path& file,
     pixels = std::move(rgb);
     data = pixels.data();
   }
-  const fs::path folder = file.has_parent_path() ? file.parent_path() : fs::path(".");
-  std::random_device rd;
-  std::string name(1, '.');
-  name.append(file.stem().string()).append(".tmp").append(std::to_string(rd() % 1000000)).append(ext);
-  const fs::path temporary = folder / name;
-  auto out = OIIO::ImageOutput::create(temporary.string());
+  AtomicFile atomic(file);
+  const std::string temporary = atomic.temporaryPath().string();
+  auto out = OIIO::ImageOutput::create(temporary);
   if (!out) throw IoError("cannot write " + file.string() + ": " + OIIO::geterror());
-  if (!out->open(temporary.string(), spec)) throw IoError("cannot write " + file.string() + ": " + out->geterror());
-  const bool ok = out->write_image(OIIO::TypeDesc::FLOAT, data) && out->close();
-  if (!ok) {
-    const std::string reason = out->geterror();
-    std::error_code ec;
-    fs::remove(temporary, ec);
-    throw IoError("cannot write " + file.string() + ": " + reason);
-  }
-  std::error_code ec;
-  fs::rename(temporary, file, ec);
-  if (ec) {
-    fs::remove(temporary, ec);
-    throw IoError("cannot write " + file.string() + ": " + ec.message());
-  }
+  if (!out->open(temporary, spec)) throw IoError("cannot write " + file.string() + ": " + out->geterror());
+  if (!(out->write_image(OIIO::TypeDesc::FLOAT, data) && out->close()))
+    throw IoError("cannot write " + file.string() + ": " + out->geterror());
+  atomic.commit();
 }
 
 }  // namespace gridifs
