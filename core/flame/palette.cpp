@@ -8,6 +8,7 @@
 #include <map>
 #include <mutex>
 #include <nlohmann/json.hpp>
+#include <pugixml.hpp>
 #include <sstream>
 
 namespace gridifs {
@@ -56,22 +57,6 @@ const std::vector<std::pair<std::string, std::vector<Stop>>>& builtinStops() {
   return kStops;
 }
 
-std::string attribute(const std::string& tag, const std::string& name) {
-  const std::string key = name + "=\"";
-  std::size_t pos = 0;
-  while ((pos = tag.find(key, pos)) != std::string::npos) {
-    // Make sure we matched a whole attribute name (" name=", not "filename=").
-    if (pos == 0 || std::isspace(static_cast<unsigned char>(tag[pos - 1]))) {
-      const std::size_t start = pos + key.size();
-      const std::size_t end = tag.find('"', start);
-      if (end == std::string::npos) return {};
-      return tag.substr(start, end - start);
-    }
-    pos += key.size();
-  }
-  return {};
-}
-
 int hexDigit(char ch) {
   if (ch >= '0' && ch <= '9') return ch - '0';
   if (ch >= 'a' && ch <= 'f') return ch - 'a' + 10;
@@ -112,19 +97,21 @@ Rgb Palette::lookup(double c) const {
 }
 
 std::vector<Palette> parseFlam3Palettes(const std::string& xmlText) {
+  pugi::xml_document document;
+  const pugi::xml_parse_result parsed = document.load_buffer(xmlText.data(), xmlText.size());
+  if (!parsed)
+    throw PaletteError(std::string("the flam3 palette XML is not well-formed (") + parsed.description() +
+                       " at byte " + std::to_string(parsed.offset) + ").");
   std::vector<Palette> out;
-  std::size_t pos = 0;
-  while ((pos = xmlText.find("<palette", pos)) != std::string::npos) {
-    const std::size_t end = xmlText.find('>', pos);
-    if (end == std::string::npos) throw PaletteError("the flam3 palette XML is truncated.");
-    const std::string tag = xmlText.substr(pos, end - pos);
-    pos = end;
-    if (tag.size() > 8 && tag[8] == 's') continue;  // <palettes>
+  // flam3-palettes.xml is <palettes><palette number="" name="" data=""/>...</palettes>; a
+  // single <palette> element (a palette file of its own) is read the same way.
+  for (const pugi::xpath_node& node : document.select_nodes("//palette")) {
+    const pugi::xml_node element = node.node();
     Palette p;
-    const std::string number = attribute(tag, "number");
-    p.name = attribute(tag, "name");
+    const std::string number = element.attribute("number").value();
+    p.name = element.attribute("name").value();
     if (p.name.empty()) p.name = number;
-    const std::string data = attribute(tag, "data");
+    const std::string data = element.attribute("data").value();
     std::string hex;
     hex.reserve(data.size());
     for (char ch : data)
