@@ -1,6 +1,6 @@
 #pragma once
 // Shared by `gridifs render` and `gridifs export-points`: loading and compiling a project for
-// the chaos game, option overrides, output-path checks and atomic output files (DESIGN §3, §4).
+// the chaos game, option overrides, output-path checks and atomic output files.
 #include <filesystem>
 #include <memory>
 #include <optional>

@@ -1,5 +1,5 @@
 // gridifs export-mesh FILE -o OUT.(ply|obj|stl|off) --depth D [--base cube|sphere|MESH] [--subdivide S]:
-// the deterministic algorithm F^D(base) (seed 004 §3.2) written through OpenMesh (DESIGN §4).
+// the deterministic algorithm F^D(base) (Gröller & Wegenkittl 1994, §3.2) written through OpenMesh.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -20,7 +20,7 @@ struct ExportMeshArgs {
   std::uint64_t maxFaces = DeterministicLimits{}.maxFaces;
 };
 
-// A one-line bar on stderr, redrawn in place; only on a terminal (DESIGN §4).
+// A one-line bar on stderr, redrawn in place; only on a terminal.
 class ProgressBar {
  public:
   explicit ProgressBar(bool enabled) : enabled_(enabled) {}

@@ -1,6 +1,6 @@
 // gridifs export-points FILE -o OUT.ply --samples N: the chaos-game points the renderer would plot
 // (same worker streams, skip and final function; not culled to the frame) as a binary
-// little-endian PLY with x y z float and red green blue uchar (DESIGN §4; issue 3).
+// little-endian PLY with x y z float and red green blue uchar.
 #include "app/cli.h"
 #include "app/progress_bar.h"
 #include "app/render_setup.h"

@@ -1,7 +1,7 @@
-// gridifs render FILE -o OUT.(png|exr|tif): the stochastic renderer headlessly through OpenImageIO
-// (DESIGN §4, §5; issue 3). PNG/TIFF: 8-bit RGB with the background composited. EXR: float
+// gridifs render FILE -o OUT.(png|exr|tif): the stochastic renderer headlessly through
+// OpenImageIO. PNG/TIFF: 8-bit RGB with the background composited. EXR: float
 // R G B A (linear, premultiplied, A = coverage) plus a Z channel with the view depth, so
-// compositors can use it (issue 5 item 4).
+// compositors can use it.
 #include <OpenImageIO/imageio.h>
 
 #include <atomic>
@@ -87,14 +87,14 @@ void writeImage(const RenderImage& image, const std::filesystem::path& out, cons
   }
 }
 
-/// Options of the flame display (issue 6); empty optionals keep the project's settings.
+/// Options of the flame display; empty optionals keep the project's settings.
 struct FlameOptions {
   std::optional<std::string> mode, palette;
   std::optional<int> bitDepth;
   bool transparent = false;
 };
 
-/// `--mode flame` (issue 6, seed 002 §4–8): the same chaos game at supersample× the size with
+/// `--mode flame` (Draves & Reckase 2003, §4–8): the same chaos game at supersample× the size with
 /// palette colour sums, developed by log-density tone mapping and the filters. PNG/TIFF: RGB over
 /// the background (RGBA with --transparent), 8 or 16 bits; EXR: premultiplied RGBA, float or half.
 int runFlameRender(const std::string& file, const std::string& out, const RenderSetup& setup,

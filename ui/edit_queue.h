@@ -1,6 +1,6 @@
 #pragma once
-// Edits collected while the UI is built and applied to the Document afterwards (DESIGN §6
-// "Fixed frame order": build UI → apply edits). Widgets edit local copies and enqueue one
+// Edits collected while the UI is built and applied to the Document afterwards (the fixed
+// frame order: build UI → apply edits). Widgets edit local copies and enqueue one
 // change; a slider drag is one gesture (begin on IsItemActivated, end on deactivation).
 #include <functional>
 #include <string>

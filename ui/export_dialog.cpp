@@ -112,7 +112,7 @@ void ExportDialog::drawMeshOptions(ModellerState& state) {
   ImGui::SliderInt("Depth n", &depth_, 0, 12, "%d", ImGuiSliderFlags_AlwaysClamp);
   state.probe.frame("export.depth");
   ImGui::SameLine();
-  helpMarker("n in F^n(A): the mesh is N^n transformed copies of the base (seed 004 §3.2)");
+  helpMarker("n in F^n(A): the mesh is N^n transformed copies of the base (Gröller & Wegenkittl 1994, §3.2)");
   static const char* bases[] = {"Cube", "Sphere", "Mesh file"};
   ImGui::Combo("Base A", &base_, bases, 3);
   state.probe.frame("export.base");

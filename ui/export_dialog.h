@@ -1,5 +1,5 @@
 #pragma once
-// File > Export mesh… and Export points… (issue 5 §3): the options of `gridifs export-mesh` and
+// File > Export mesh… and Export points…: the options of `gridifs export-mesh` and
 // `gridifs export-points` in a modal dialog, the face-count/memory plan before starting, the work
 // on a background thread with a progress bar that can be cancelled, errors shown inline, and the
 // output written atomically (a temporary file renamed over the target).

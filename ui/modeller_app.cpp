@@ -1,5 +1,5 @@
-// The modeller's window and frame loop (issue 4; DESIGN §6 "Fixed frame order": poll → build
-// UI (collect edits) → apply edits → publish renderer snapshot → draw views → ImGui render).
+// The modeller's window and its fixed frame order: poll → build
+// UI (collect edits) → apply edits → publish renderer snapshot → draw views → ImGui render.
 #include "ui/modeller_app.h"
 
 #include <epoxy/gl.h>
@@ -46,7 +46,7 @@ struct Layout {
     Layout l;
     // Left: what the IFS is made of (functions, their stacks, the node selection); center: the
     // grid views above the active operation's parameters (wide, for calculator expressions);
-    // right: the rendered result above the IFS view (seed 004 §4.2's three groups).
+    // right: the rendered result above the IFS view (Gröller & Wegenkittl 1994, §4.2's three groups).
     const float left = std::round(area.x * 0.215f), center = std::round(area.x * 0.39f);
     const float right = area.x - left - center;
     const float f = std::round(area.y * 0.47f), o = std::round(area.y * 0.25f);
@@ -114,7 +114,7 @@ class ModellerApp {
   std::array<GridView, 4> views_;
   GridView ifsView_;
   PreviewView preview_;
-  ExportDialog export_;  // File > Export (issue 5)
+  ExportDialog export_;  // File > Export
   std::unique_ptr<AppCommands> commands_;
   std::string iniPath_, title_;
   bool resetLayout_ = false;

@@ -20,7 +20,7 @@ void PreviewRenderer::publish(const Document& document, int width, int height, i
   Project relevant = project;
   relevant.render.background = Vec3(0.0);
   relevant.render.depth_cue = 0.0;
-  // The flame display (issue 6) is developed from the same buffers (ui/flame_display.cpp): the
+  // The flame display is developed from the same buffers (ui/flame_display.cpp): the
   // mode and the tone mapping need no restart; only the palette is looked up per sample.
   relevant.render.mode = DisplayMode::ZBuffer;
   relevant.render.flame = FlameSettings{};
@@ -32,7 +32,7 @@ void PreviewRenderer::publish(const Document& document, int width, int height, i
     RenderJob job = RenderJob::fromProject(project, threads);
     job.width = width;
     job.height = height;
-    job.lowPriority = true;  // the UI thread gets a core first (issue 4: ≥ 30 fps while rendering)
+    job.lowPriority = true;  // the UI thread gets a core first (the modeller stays at ≥ 30 fps while rendering)
     job = previewFlameJob(job, document);  // color sums always on: the mode switch is instant
     renderer_.restart(std::move(ifs), job);
     if (paused_) renderer_.pause();

@@ -1,5 +1,5 @@
 #pragma once
-// The bridge between the Document and the background ChaosRenderer (DESIGN §1): when the
+// The bridge between the Document and the background ChaosRenderer: when the
 // document's revision or the preview size changes, compile a new immutable snapshot and
 // restart the workers (a new generation); each frame, merge what the workers have so far.
 // Never waits on workers: restart() only publishes, snapshot() reads while they run.

@@ -1,5 +1,5 @@
 #pragma once
-// Small shared vocabulary of the model (DESIGN.md §2): vectors, axes, profiles, limits.
+// Small shared vocabulary of the model: vectors, axes, profiles, limits.
 #include <array>
 #include <cstdint>
 #include <glm/vec3.hpp>
@@ -20,14 +20,14 @@ const char* profileName(Profile profile);
 bool parseAxis(const std::string& text, Axis& out);
 bool parseProfile(const std::string& text, Profile& out);
 
-/// The two axes perpendicular to `axis`, in the cyclic order of DESIGN §2:
+/// The two axes perpendicular to `axis`, in cyclic order:
 /// z → (x, y), x → (y, z), y → (z, x).
 inline std::array<int, 2> perpendicularAxes(Axis axis) {
   const int a = static_cast<int>(axis);
   return {(a + 1) % 3, (a + 2) % 3};
 }
 
-/// Hard limits that keep hostile project files from exhausting memory or time (DESIGN §3).
+/// Hard limits that keep hostile project files from exhausting memory or time.
 namespace limits {
 inline constexpr int kMinResolution = 2;
 inline constexpr int kMaxResolution = 128;

@@ -1,5 +1,5 @@
 #pragma once
-// The one Document (DESIGN §1): the project plus undo/redo by whole-project snapshots.
+// The one Document: the project plus undo/redo by whole-project snapshots.
 // The UI edits the project only through edit()/gestures; each committed edit is one undo step.
 #include <cstdint>
 #include <filesystem>

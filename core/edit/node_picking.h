@@ -1,6 +1,6 @@
 #pragma once
 // Picking grid nodes on screen and turning picked node sets into index-box selections
-// (seed 004 §4.4; DESIGN §2 "Selections": what the UI builds by clicking and box-dragging
+// (Gröller & Wegenkittl 1994, §4.4: what the UI builds by clicking and box-dragging
 // is stored in the same form). Headless and pure; thread-safe.
 #include <cstddef>
 #include <optional>

@@ -1,5 +1,5 @@
 #pragma once
-// The cameras of the modeller's grid views (seed 004 §4.2: top, side and front views and a
+// The cameras of the modeller's grid views (Gröller & Wegenkittl 1994, §4.2: top, side and front views and a
 // user view that orbits), headless so that picking and dragging can be tested without a display.
 // Conventions follow core/camera.h: +z up, pixels with y down, OpenGL-style matrices.
 #include <glm/mat4x4.hpp>

@@ -36,7 +36,7 @@ DensityEstimator::DensityEstimator(double radius, double minimum, double curve, 
   if (!(radius > 0.0) || !(minimum >= 0.0) || minimum > radius || !(curve > 0.0) || supersample < 1 ||
       radius > 1000.0)
     throw std::invalid_argument("density estimator: need 0 <= minimum <= radius <= 1000, curve > 0, supersample >= 1");
-  // seed 002 §8: the kernel is scaled by the supersampling; the +1 is flam3's assumed
+  // Draves & Reckase 2003, §8: the kernel is scaled by the supersampling; the +1 is flam3's assumed
   // distance to the first neighbouring bucket.
   const double compMax = radius * supersample + 1.0;
   const double compMin = minimum * supersample + 1.0;
@@ -116,7 +116,7 @@ AccumBuffer logScaleAndEstimate(const FlameHistogram& histogram, const LogDensit
       const float* b = histogram.bucket(x, y);
       const double hits = b[3];
       if (hits <= 0.0) continue;
-      // seed 002 §4: scale all four channels by log(α)/α (flam3's k1·log(1 + α·k2)/α).
+      // Draves & Reckase 2003, §4: scale all four channels by log(α)/α (flam3's k1·log(1 + α·k2)/α).
       const float ls = float(scale.factor(hits));
       const float c[4] = {b[0] * ls, b[1] * ls, b[2] * ls, b[3] * ls};
       if (!estimator) {
@@ -124,7 +124,7 @@ AccumBuffer logScaleAndEstimate(const FlameHistogram& histogram, const LogDensit
         for (int k = 0; k < 4; ++k) o[k] += c[k];
         continue;
       }
-      // seed 002 §8: a kernel whose width is inversely related to the density.
+      // Draves & Reckase 2003, §8: a kernel whose width is inversely related to the density.
       const auto& taps = estimator->taps(estimator->kernelIndex(estimator->neighbourhoodHits(histogram, x, y)));
       for (const auto& t : taps) {
         const int tx = x + t.dx, ty = y + t.dy;

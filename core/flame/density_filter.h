@@ -1,5 +1,5 @@
 #pragma once
-// The filters of the flame display (seed 002 §8):
+// The filters of the flame display (Draves & Reckase 2003, §8):
 //  - the density-estimation filter: each bucket's log-scaled color is spread with a Gaussian
 //    kernel whose radius shrinks as the bucket's density grows (flam3's estimator radius,
 //    minimum and curve: radius ≈ (R·ss + 1)/hits^curve, never below minimum·ss + 1), so sparse
@@ -57,7 +57,7 @@ class DensityEstimator {
   std::vector<std::vector<Tap>> taps_;
 };
 
-/// seed 002 §4 + §8: log-scales every bucket (LogDensityScale::factor) and, when `estimator`
+/// Draves & Reckase 2003, §4 + §8: log-scales every bucket (LogDensityScale::factor) and, when `estimator`
 /// is given, spreads it with the density-estimation kernels. Output has the histogram's size.
 AccumBuffer logScaleAndEstimate(const FlameHistogram& histogram, const LogDensityScale& scale,
                                 const DensityEstimator* estimator);

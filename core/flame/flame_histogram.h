@@ -1,7 +1,7 @@
 #pragma once
-// The flame display's accumulation buffer (seed 002 §5): per bucket the sums of the palette
+// The flame display's accumulation buffer (Draves & Reckase 2003, §5): per bucket the sums of the palette
 // colors of every sample that landed there, and the hit count ("alpha" before log scaling).
-// Buckets sit at supersample× the output resolution (seed 002 §8).
+// Buckets sit at supersample× the output resolution (Draves & Reckase 2003, §8).
 // Not synchronised: give each worker its own histogram and merge() them.
 #include <algorithm>
 #include <cstdint>

@@ -42,7 +42,7 @@ Function affineFunction(const std::string& name, const glm::dmat3& m, const Vec3
   f.name = name;
   f.resolution = {2, 2, 2};
   f.weight = weight;
-  f.color_speed = 0.0;  // seed 002 §7: symmetry functions leave the color coordinate alone
+  f.color_speed = 0.0;  // Draves & Reckase 2003, §7: symmetry functions leave the color coordinate alone
   f.palette_index = 0.0;
   f.color = {1.0, 1.0, 1.0};
   NodesOp nodes;

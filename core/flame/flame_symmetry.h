@@ -1,5 +1,5 @@
 #pragma once
-// Symmetry helpers (seed 002 §7): n-way rotational or dihedral symmetry about the view axis,
+// Symmetry helpers (Draves & Reckase 2003, §7): n-way rotational or dihedral symmetry about the view axis,
 // added as extra functions. Each added function gets weight equal to the sum of the weights of
 // the (unmuted) original functions, so that every branch has the same density, and color speed 0
 // so that it does not change the color coordinate (the colors stay symmetric and do not wash

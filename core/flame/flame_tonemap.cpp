@@ -89,7 +89,7 @@ void toneMapPixel(const float in[4], const ToneMapParams& params, float out[4]) 
   double alpha = 0.0, ls = 0.0;
   if (density > 0.0) {
     alpha = gammaAlpha(density, g, params.gamma_threshold);
-    // seed 002 §6 vibrancy: the alpha channel's gamma ratio applied to all three channels.
+    // Draves & Reckase 2003, §6 vibrancy: the alpha channel's gamma ratio applied to all three channels.
     ls = vib * kWhiteScale * alpha / density;
     alpha = std::clamp(alpha, 0.0, 1.0);
   }
@@ -118,7 +118,7 @@ void toneMapPixel(const float in[4], const ToneMapParams& params, float out[4]) 
   }
   for (int c = 0; c < 3; ++c) {
     double a = rgb[c];
-    // vibrancy 0: classic per-channel gamma (seed 002 §6), which washes colors out.
+    // vibrancy 0: classic per-channel gamma (Draves & Reckase 2003, §6), which washes colors out.
     if (vib < 1.0 && in[c] > 0.0) a += (1.0 - vib) * kWhiteScale * std::pow(double(in[c]), g);
     // (flam3 also scales the background by 256/255; we keep it exact so empty pixels are the background.)
     if (!params.transparent) a += (1.0 - alpha) * params.background[c];

@@ -1,5 +1,5 @@
 #pragma once
-// Tone mapping of the flame display (seed 002 §4 log-density display, §6 gamma and vibrancy),
+// Tone mapping of the flame display (Draves & Reckase 2003, §4 log-density display, §6 gamma and vibrancy),
 // following flam3's normalisation so that exposure depends neither on the sample count nor on
 // the supersampling, only on the attractor's density per unit of image-plane area.
 //
@@ -14,7 +14,7 @@
 
 namespace gridifs {
 
-/// seed 002 §4: every bucket is scaled by log(α)/α. flam3 writes this as
+/// Draves & Reckase 2003, §4: every bucket is scaled by log(α)/α. flam3 writes this as
 /// ls = k1·log(1 + α·k2)/α with k1 = brightness·268/256 and k2 the inverse of the number of
 /// hits a bucket gets when `samples` points spread evenly over one unit² of the image plane:
 /// k2 = (supersample·pixelsPerUnit)² / samples. Doubling the samples doubles α and halves k2,
@@ -32,7 +32,7 @@ struct LogDensityScale {
 LogDensityScale logDensityScale(double brightness, double samples, double pixelsPerUnit, int supersample);
 
 /// flam3_calc_alpha: density^(1/gamma), made linear below `threshold` so that the infinite
-/// slope of the power at 0 does not amplify sparse noise (seed 002 §6).
+/// slope of the power at 0 does not amplify sparse noise (Draves & Reckase 2003, §6).
 double gammaAlpha(double density, double inverseGamma, double threshold);
 
 /// What the final mapping needs (a view of FlameSettings plus background and transparency).
@@ -57,7 +57,7 @@ struct FlameImage {
   const float* pixel(int x, int y) const { return &rgba[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 4]; }
 };
 
-/// Develops a histogram into an image (seed 002 §4–8): log-density scaling with the
+/// Develops a histogram into an image (Draves & Reckase 2003, §4–8): log-density scaling with the
 /// density-estimation filter at bucket resolution, the Gaussian spatial filter down by
 /// `settings.supersample`, then toneMapPixel. The histogram must be
 /// (width·ss) × (height·ss) buckets; the output is width × height. `threads` ≥ 1 splits the

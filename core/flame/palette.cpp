@@ -76,7 +76,7 @@ std::string readText(const std::filesystem::path& file, const char* what) {
 }  // namespace
 
 Rgb Palette::lookup(double c) const {
-  // seed 002 §5 with flam3's linear palette mode: index = c·256, blend entries i and i+1.
+  // Draves & Reckase 2003, §5 with flam3's linear palette mode: index = c·256, blend entries i and i+1.
   const double index = c * kSize;
   int i0;
   double frac;

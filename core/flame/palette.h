@@ -1,5 +1,5 @@
 #pragma once
-// 256-entry palettes for the flame display's structural coloring (seed 002 §5: "a palette is
+// 256-entry palettes for the flame display's structural coloring (Draves & Reckase 2003, §5: "a palette is
 // classically specified with an array of 256 triples of bytes").
 //
 // Sources of palettes:
@@ -36,7 +36,7 @@ struct Palette {
   std::array<Rgb, kSize> colors{};
 
   /// Color at coordinate c in [0, 1] (clamped) with flam3's "linear" palette mode: index c·256
-  /// and linear interpolation between the two neighbouring entries (seed 002 §5).
+  /// and linear interpolation between the two neighbouring entries (Draves & Reckase 2003, §5).
   Rgb lookup(double c) const;
   bool operator==(const Palette&) const = default;
 };

@@ -1,5 +1,5 @@
 #pragma once
-// Chaos-game points as a binary PLY (DESIGN §4 export-points): the points the renderer would
+// Chaos-game points as a binary PLY: the points the renderer would
 // plot, x y z float and red green blue uchar, little-endian. Shared by the CLI verb and the GUI.
 #include <filesystem>
 #include <functional>

@@ -294,7 +294,7 @@ Operation readOperation(const json& o, const std::string& path) {
   return op;
 }
 
-/// "render.flame" (issue 6): every field optional, defaults from FlameSettings.
+/// "render.flame": every field optional, defaults from FlameSettings.
 FlameSettings readFlame(const json& o, const std::string& path) {
   requireObject(o, path);
   FlameSettings f;

@@ -1,5 +1,5 @@
 #pragma once
-// The .gridifs project file (DESIGN §3): validated loading with JSON-path errors and
+// The .gridifs project file: validated loading with JSON-path errors and
 // atomic saving with a `~` backup.
 #include <filesystem>
 #include <string>

@@ -1,5 +1,5 @@
 #pragma once
-// The initial shape A of the deterministic algorithm F^n(A) (seed 004 §3.2): a built-in cube or
+// The initial shape A of the deterministic algorithm F^n(A) (Gröller & Wegenkittl 1994, §3.2): a built-in cube or
 // UV sphere, or a mesh file read with OpenMesh, optionally refined so that the nonlinear
 // functions bend its long edges smoothly.
 #include <cstdint>

@@ -1,5 +1,5 @@
 #pragma once
-// The deterministic algorithm (seed 004 §3.2): Ã ≈ F^n(A), where F(A) = ∪_i f_i(A) is the
+// The deterministic algorithm (Gröller & Wegenkittl 1994, §3.2): Ã ≈ F^n(A), where F(A) = ∪_i f_i(A) is the
 // Hutchinson operator of the IFS. Applied to a base mesh A it gives the union of N^n transformed
 // copies of A — a mesh that ray tracers and DCC tools (Blender, MeshLab) can light and shade.
 //

@@ -1,5 +1,5 @@
 #pragma once
-// The polygon mesh type of the deterministic algorithm (seed 004 §3.2, DESIGN §5): an OpenMesh
+// The polygon mesh type of the deterministic algorithm (Gröller & Wegenkittl 1994, §3.2): an OpenMesh
 // PolyMesh with float points, float RGBA vertex colors in [0, 1] and a per-face `address` property.
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <cstdint>

@@ -1,5 +1,5 @@
 #pragma once
-// Reading and writing meshes through OpenMesh (DESIGN §4 export-mesh, §5 deterministic algorithm):
+// Reading and writing meshes through OpenMesh (base meshes and the deterministic algorithm):
 // OBJ, PLY, STL and OFF, with vertex colors where the format has them, written atomically.
 #include <filesystem>
 #include <optional>

@@ -1,5 +1,5 @@
 #pragma once
-// The "universal calculator" (seed 004 §4.3): three muparser expressions map each
+// The "universal calculator" (Gröller & Wegenkittl 1994, §4.3): three muparser expressions map each
 // selected node to a new absolute position.
 #include <memory>
 #include <optional>

@@ -1,5 +1,5 @@
 #pragma once
-// An upper bound of the Lipschitz constant of a grid's trilinear map (seed 004 §1.1:
+// An upper bound of the Lipschitz constant of a grid's trilinear map (Gröller & Wegenkittl 1994, §1.1:
 // an IFS function must be contractive, s_i < 1).
 #include "model/grid.h"
 

@@ -1,5 +1,5 @@
 #pragma once
-// One function of the IFS: a grid resolution, an op stack and a placement (DESIGN §2).
+// One function of the IFS: a grid resolution, an op stack and a placement.
 #include <string>
 #include <vector>
 
@@ -7,7 +7,7 @@
 
 namespace gridifs {
 
-/// How the function's grid sits in the common initial grid (seed 004 §4.5):
+/// How the function's grid sits in the common initial grid (Gröller & Wegenkittl 1994, §4.5):
 /// placement(q) = T + R·(S·q), R with the rotate op's Euler convention.
 struct Placement {
   Vec3 translate{0.0}, rotate{0.0}, scale{1.0};
@@ -21,8 +21,8 @@ struct Function {
   Placement placement;
   double weight = 1.0;           // selection probability ∝ weight
   Vec3 color{1.0, 1.0, 1.0};     // RGB in [0, 1]
-  double palette_index = 0.0;    // structural color coordinate c_i in [0, 1] (seed 002 §5)
-  double color_speed = 0.5;      // c = mix(c, c_i, color_speed); 0.5 is seed 002's (c + c_i)/2
+  double palette_index = 0.0;    // structural color coordinate c_i in [0, 1] (Draves & Reckase 2003, §5)
+  double color_speed = 0.5;      // c = mix(c, c_i, color_speed); 0.5 is (c + c_i)/2 of Draves & Reckase 2003
   bool muted = false;
   bool operator==(const Function&) const = default;
 };

@@ -24,7 +24,7 @@ Vec3 Grid::evaluate(Vec3 p) const {
   int cell[3];
   double frac[3];
   for (int d = 0; d < 3; ++d) {
-    // Points outside X are clamped to X first (DESIGN §2); NaN maps to -1.
+    // Points outside X are clamped to X first; NaN maps to -1.
     const double c = std::clamp(std::isnan(p[d]) ? -1.0 : p[d], -1.0, 1.0);
     const double s = (c + 1.0) * 0.5 * (resolution_[d] - 1);
     const int cd = std::min(static_cast<int>(s), resolution_[d] - 2);

@@ -1,5 +1,5 @@
 #pragma once
-// A function's distorted lattice and its trilinear evaluation (seed 004 §1.3, DESIGN §2).
+// A function's distorted lattice and its trilinear evaluation (Gröller & Wegenkittl 1994, §1.3).
 #include <vector>
 
 #include "base/types.h"

@@ -1,5 +1,5 @@
 #pragma once
-// The operations of a function's stack (seed 004 §2, DESIGN §2 "Operations").
+// The operations of a function's stack (Gröller & Wegenkittl 1994, §2).
 // Each operation is a plain value: parameters + center + selection + muted flag.
 #include <cstdint>
 #include <string>
@@ -11,7 +11,7 @@
 namespace gridifs {
 
 /// Center of transformation: the centroid of the current nodes, of the selected
-/// nodes, or an explicit point (seed 004 §4.3).
+/// nodes, or an explicit point (Gröller & Wegenkittl 1994, §4.3).
 struct Center {
   enum class Kind { Grid, Selection, Point };
   Kind kind = Kind::Grid;
@@ -23,27 +23,27 @@ struct TranslateOp { Vec3 offset{0.0}; bool operator==(const TranslateOp&) const
 /// Euler angles in degrees, R = Rz·Ry·Rx (x applied first).
 struct RotateOp { Vec3 angles{0.0}; bool operator==(const RotateOp&) const = default; };
 struct ScaleOp { Vec3 factors{1.0}; bool operator==(const ScaleOp&) const = default; };
-/// seed 004 §2.2 taper: (a, b) *= f(t).
+/// Gröller & Wegenkittl 1994, §2.2 taper: (a, b) *= f(t).
 struct TaperOp {
   Axis axis = Axis::Z; Profile profile = Profile::Linear; double k = 0.0, omega = 1.0;
   bool operator==(const TaperOp&) const = default;
 };
-/// seed 004 §2.3 twist: rotate (a, b) by φ(t); k in radians per unit.
+/// Gröller & Wegenkittl 1994, §2.3 twist: rotate (a, b) by φ(t); k in radians per unit.
 struct TwistOp {
   Axis axis = Axis::Z; Profile profile = Profile::Linear; double k = 0.0, omega = 1.0;
   bool operator==(const TwistOp&) const = default;
 };
-/// seed 004 §2.4 bend (Barr), whole grid: bend `axis` toward `toward` with curvature k.
+/// Gröller & Wegenkittl 1994, §2.4 bend (Barr), whole grid: bend `axis` toward `toward` with curvature k.
 struct BendOp {
   Axis axis = Axis::Z; Axis toward = Axis::Y; double k = 0.0;
   bool operator==(const BendOp&) const = default;
 };
-/// seed 004 §2.5 magnet, absolute coordinates.
+/// Gröller & Wegenkittl 1994, §2.5 magnet, absolute coordinates.
 struct MagnetOp {
   Vec3 point{0.0}; double dmax = 0.5, strength = 0.5, falloff = 2.0;
   bool operator==(const MagnetOp&) const = default;
 };
-/// seed 004 §2.6 point morphing with radial basis functions, absolute coordinates.
+/// Gröller & Wegenkittl 1994, §2.6 point morphing with radial basis functions, absolute coordinates.
 struct MorphPair { Vec3 from{0.0}, to{0.0}; bool operator==(const MorphPair&) const = default; };
 struct MorphOp {
   std::vector<MorphPair> pairs; double strength = 1.0;
@@ -54,7 +54,7 @@ struct CalculatorVar {
   double value = 0.0, min = -1.0, max = 1.0;
   bool operator==(const CalculatorVar&) const = default;
 };
-/// seed 004 §4.3 "universal calculator": x̂, ŷ, ẑ as expressions.
+/// Gröller & Wegenkittl 1994, §4.3 "universal calculator": x̂, ŷ, ẑ as expressions.
 struct CalculatorOp {
   std::string x = "x", y = "y", z = "z";
   std::array<CalculatorVar, 3> vars{};

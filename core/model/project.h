@@ -1,5 +1,5 @@
 #pragma once
-// The whole project as saved in a .gridifs file (DESIGN §3).
+// The whole project as saved in a .gridifs file.
 #include <optional>
 #include <vector>
 
@@ -23,8 +23,8 @@ struct RenderSettings {
   int skip = 20;
   Vec3 background{0.0};
   double depth_cue = 0.6;  // 0: no attenuation, 1: farthest points black
-  DisplayMode mode = DisplayMode::ZBuffer;  // "render.mode": "zbuffer" | "flame" (issue 6)
-  FlameSettings flame;                      // "render.flame": the flame display (seed 002 §4–8)
+  DisplayMode mode = DisplayMode::ZBuffer;  // "render.mode": "zbuffer" | "flame"
+  FlameSettings flame;                      // "render.flame": the flame display (Draves & Reckase 2003, §4–8)
   bool operator==(const RenderSettings&) const = default;
 };
 

@@ -1,5 +1,5 @@
 #pragma once
-// Index-box selections (seed 004 §4.4; DESIGN §2 "Selections").
+// Index-box selections (Gröller & Wegenkittl 1994, §4.4).
 #include <vector>
 
 #include "base/types.h"

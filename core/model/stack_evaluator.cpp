@@ -48,7 +48,7 @@ void apply(const ScaleOp& op, OpContext& ctx, const Index3&) {
   forSelected(ctx, [&](const Vec3& p) { return ctx.center + (p - ctx.center) * op.factors; });
 }
 
-// seed 004 §2.2 taper: (a, b) *= f(t), f = 1 + profile(t).
+// Gröller & Wegenkittl 1994, §2.2 taper: (a, b) *= f(t), f = 1 + profile(t).
 void apply(const TaperOp& op, OpContext& ctx, const Index3&) {
   const int along = static_cast<int>(op.axis);
   const auto [a, b] = perpendicularAxes(op.axis);
@@ -61,7 +61,7 @@ void apply(const TaperOp& op, OpContext& ctx, const Index3&) {
   });
 }
 
-// seed 004 §2.3 twist: rotate (a, b) by φ(t).
+// Gröller & Wegenkittl 1994, §2.3 twist: rotate (a, b) by φ(t).
 void apply(const TwistOp& op, OpContext& ctx, const Index3&) {
   const int along = static_cast<int>(op.axis);
   const auto [a, b] = perpendicularAxes(op.axis);
@@ -76,7 +76,7 @@ void apply(const TwistOp& op, OpContext& ctx, const Index3&) {
   });
 }
 
-// seed 004 §2.4 / Barr's bend over the whole grid. With y the toward- and z the
+// Gröller & Wegenkittl 1994, §2.4 / Barr's bend over the whole grid. With y the toward- and z the
 // along-component: θ = k·z, ŷ = 1/k − (1/k − y)·cos θ, ẑ = (1/k − y)·sin θ, written
 // in the algebraically equal form ŷ = y·cos θ + ½·k·z²·sinc²(θ/2), ẑ = z·sinc θ − y·sin θ,
 // which is exact at k = 0 and smooth as k → 0.
@@ -93,7 +93,7 @@ void apply(const BendOp& op, OpContext& ctx, const Index3&) {
   });
 }
 
-// seed 004 §2.5 magnet: f = s·((dmax − d)/dmax)^p, P̂ = P + f·(M − P) for d < dmax.
+// Gröller & Wegenkittl 1994, §2.5 magnet: f = s·((dmax − d)/dmax)^p, P̂ = P + f·(M − P) for d < dmax.
 void apply(const MagnetOp& op, OpContext& ctx, const Index3&) {
   if (!(op.dmax > 0.0)) return;
   forSelected(ctx, [&](const Vec3& p) {
@@ -105,7 +105,7 @@ void apply(const MagnetOp& op, OpContext& ctx, const Index3&) {
   });
 }
 
-// seed 004 §2.6 point morphing: P̂ = P + strength·Σ α_j / (|P − P_j|² + r_j²).
+// Gröller & Wegenkittl 1994, §2.6 point morphing: P̂ = P + strength·Σ α_j / (|P − P_j|² + r_j²).
 void apply(const MorphOp& op, OpContext& ctx, const Index3&) {
   if (op.pairs.empty()) return;
   std::vector<Vec3> alpha;

@@ -1,5 +1,5 @@
 #pragma once
-// Evaluates a function's op stack: distorted nodes = placement(stack(undistorted)) (DESIGN §2).
+// Evaluates a function's op stack: distorted nodes = placement(stack(undistorted)).
 #include <memory>
 
 #include "model/function.h"
@@ -21,7 +21,7 @@ struct EulerRotation {
 Vec3 rotateEuler(const Vec3& q, const Vec3& anglesDegrees);
 
 /// Triangle wave in [-1, 1] with the period and phase of sin: tri(0) = 0, tri(π/2) = 1
-/// (the 'ping-pong' profile of seed 004 §4.3, figure 13).
+/// (the 'ping-pong' profile of Gröller & Wegenkittl 1994, §4.3, figure 13).
 double triangleWave(double x);
 
 /// The centroid used as center of transformation for `op` on the current nodes.
@@ -33,7 +33,7 @@ Vec3 operationCenter(const Operation& op, const std::vector<Vec3>& nodes,
 /// morph, a calculator error or a non-finite result.
 void applyOperation(const Operation& op, std::vector<Vec3>& nodes, const Index3& resolution);
 
-/// Solves the morph's RBF system (seed 004 §2.6) and returns α (one Vec3 per pair) and r_i.
+/// Solves the morph's RBF system (Gröller & Wegenkittl 1994, §2.6) and returns α (one Vec3 per pair) and r_i.
 /// Throws ModelError("pairs", ...) for coincident or (numerically) singular start points.
 void solveMorph(const MorphOp& morph, std::vector<Vec3>& alpha, std::vector<double>& radius);
 

@@ -1,8 +1,8 @@
 #pragma once
-// The orbit camera shared by the chaos-game renderer and the GUI's IFS view (seed 004 §3.1,
+// The orbit camera shared by the chaos-game renderer and the GUI's IFS view (Gröller & Wegenkittl 1994, §3.1,
 // §4.2: the user view orbits with the preview, so both must use the same matrices).
 //
-// Conventions (DESIGN §2 leaves them open; these are the choices):
+// Conventions (the paper leaves them open; these are the choices):
 // - World space is right-handed with **+z up**. X = [-1, 1]^3 is the IFS space.
 // - yaw (degrees) turns the eye about +z, measured from +x towards +y;
 //   pitch (degrees) lifts the eye above the xy plane (positive: looking down), clamped to ±89.9°.

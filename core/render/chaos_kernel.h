@@ -1,6 +1,6 @@
 #pragma once
 // Internal to the renderer (chaos_renderer.cpp, benchmarks, tests): the chaos-game inner loop
-// (seed 004 §3.1, seed 002 §2 and §5). Everything here is inline and templated on the plot
+// (Gröller & Wegenkittl 1994, §3.1; Draves & Reckase 2003, §2 and §5). Everything here is inline and templated on the plot
 // target, so the hot loop has no virtual calls and no atomics with ordering; one worker owns one
 // ChainState and one set of buffers.
 //
@@ -152,7 +152,7 @@ struct ChainState {
   void restartLane(int lane, int skip) {
     const std::uint64_t a = rng.next(), b = rng.next();
     p[lane] = v4f{Rng::signedUnit(a), Rng::signedUnit(a >> 24), Rng::signedUnit(b), 0.0f};
-    // seed 002 §5: c starts at a random point of [0, 1]; the RGB blend starts mid-grey (both are
+    // Draves & Reckase 2003, §5: c starts at a random point of [0, 1]; the RGB blend starts mid-grey (both are
     // forgotten geometrically, by (1 - color_speed)^skip).
     color[lane] = v4f{0.5f, 0.5f, 0.5f, float(std::uint32_t(b >> 40)) * (1.0f / 16777216.0f)};
     skipLeft[lane] = skip;
@@ -191,7 +191,7 @@ template <class Plot>
                                            std::int64_t& bad) {
   const HotFunction& f = ifs.functions[ifs.choose(st.rng.next())];
   const v4f p = apply(f, st.p[lane]);
-  const v4f col = st.color[lane] + (f.color - st.color[lane]) * f.speed;  // seed 002 §5: c = mix(c, c_i, speed)
+  const v4f col = st.color[lane] + (f.color - st.color[lane]) * f.speed;  // Draves & Reckase 2003, §5: c = mix(c, c_i, speed)
   if (!inBounds(p, ifs.escapeBound)) [[unlikely]] {
     ++bad;
     st.restartLane(lane, ifs.skip);
@@ -287,7 +287,7 @@ inline HotCamera makeHotCamera(const OrbitCamera& camera) {
   return hot;
 }
 
-/// The z-buffer plotter (seed 004 §3.1). Keys are (depth bits << 32 | packed colour): depth is
+/// The z-buffer plotter (Gröller & Wegenkittl 1994, §3.1). Keys are (depth bits << 32 | packed colour): depth is
 /// positive, so unsigned order is depth order and equal depths fall back to the colour, which makes
 /// the per-pixel minimum independent of sample and worker order. Buffer accesses go through
 /// std::atomic_ref with relaxed order: plain moves on x86, but snapshot() may read them while
@@ -297,8 +297,8 @@ struct ZBufferPlot {
   HotCamera cam;
   PixelCell* cells;
   float* colorSums;  // 4 per pixel, only with kAccumulateColor
-  /// Optional (issue 6): 257 entries r g b 0 (the last repeats entry 255). When set, colorSums
-  /// receive the palette color at c for every sample, as flam3 does (seed 002 §5), instead of
+  /// Optional: 257 entries r g b 0 (the last repeats entry 255). When set, colorSums
+  /// receive the palette color at c for every sample, as flam3 does (Draves & Reckase 2003, §5), instead of
   /// the blended RGB; lane 3 still sums c.
   const v4f* palette = nullptr;
 

@@ -48,7 +48,7 @@ struct PreparedJob {
   kernel::HotIfs hotIfs;
   kernel::HotCamera camera;
   RenderJob job;
-  std::vector<kernel::v4f> palette;  // 257 entries when job.palette is set (issue 6)
+  std::vector<kernel::v4f> palette;  // 257 entries when job.palette is set
 
   PreparedJob(std::shared_ptr<const CompiledIfs> compiled, const RenderJob& renderJob)
       : ifs(std::move(compiled)), job(renderJob) {
@@ -113,7 +113,7 @@ template <bool kColor>
                                                 ChaosRenderer::Worker& w, std::int64_t count,
                                                 kernel::ChainCounters& counters) {
   kernel::ZBufferPlot<kColor> plot{job.camera, w.cells.data(), w.colorSums.data(),
-                                   job.palette.empty() ? nullptr : job.palette.data()};  // issue 6
+                                   job.palette.empty() ? nullptr : job.palette.data()};
   kernel::runChain(chain, job.hotIfs, count, plot, counters);
 }
 
@@ -420,7 +420,7 @@ void ChaosRenderer::snapshot(RenderImage& out, const DisplaySettings& display) c
   out.minDepth = hits ? minDepth : 0.0f;
   out.maxDepth = hits ? maxDepth : 0.0f;
 
-  // Pass 2: depth cueing (seed 004 §3.1: colours attenuated with distance) over the depth range
+  // Pass 2: depth cueing (Gröller & Wegenkittl 1994, §3.1: colours attenuated with distance) over the depth range
   // of this image, and the background where nothing was plotted.
   const float cue = float(std::clamp(display.depthCue, 0.0, 1.0));
   const float range = maxDepth - minDepth;

@@ -1,5 +1,5 @@
 #pragma once
-// The stochastic renderer (seed 004 §3.1, seed 002 §2 and §5, DESIGN §1 and §5): a pool of worker
+// The stochastic renderer (Gröller & Wegenkittl 1994, §3.1; Draves & Reckase 2003, §2 and §5): a pool of worker
 // threads plays the chaos game on an immutable CompiledIfs and streams the attractor into
 // per-worker z-buffer / density buffers, which snapshot() merges into an image while they run.
 //
@@ -48,11 +48,11 @@ struct RenderJob {
   std::uint64_t seed = 1;
   int skip = 20;
   int threads = 1;
-  /// Also accumulate per-pixel colour sums for the flame display (issue 6). Costs a 16-byte
+  /// Also accumulate per-pixel colour sums for the flame display. Costs a 16-byte
   /// read-modify-write per plotted sample, so it is off for the z-buffer preview.
   bool accumulateColor = false;
-  /// With accumulateColor (issue 6): when set, colorSums hold the sums of this palette's color
-  /// at each sample's c (flam3's structural coloring, seed 002 §5) instead of the blended RGB.
+  /// With accumulateColor: when set, colorSums hold the sums of this palette's color
+  /// at each sample's c (flam3's structural coloring, Draves & Reckase 2003, §5) instead of the blended RGB.
   std::shared_ptr<const Palette> palette;
   /// Run the workers at a lower OS priority (Linux: nice 10) so that the UI thread always gets a
   /// core first on a machine with few cores (the GUI's preview). Does not change the image.
@@ -70,7 +70,7 @@ void validateRenderJob(const RenderJob& job);
 /// How the merged buffers become colours (applied in snapshot(), so changing it needs no re-render).
 struct DisplaySettings {
   Vec3 background{0.0};
-  /// seed 004 §3.1: colours are attenuated with distance. 0: none; 1: the farthest hit point is
+  /// Gröller & Wegenkittl 1994, §3.1: colours are attenuated with distance. 0: none; 1: the farthest hit point is
   /// black. The depth range is that of the points in the image (nearest → farthest).
   double depthCue = 0.6;
   static DisplaySettings fromProject(const Project& project);

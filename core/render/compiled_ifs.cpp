@@ -11,7 +11,7 @@ namespace gridifs {
 namespace {
 
 float clampToX(float v) {
-  // NaN → -1, like Grid::evaluate (DESIGN §2: points outside X are clamped to X first).
+  // NaN → -1, like Grid::evaluate (points outside X are clamped to X first).
   v = v > -1.0f ? v : -1.0f;
   return v < 1.0f ? v : 1.0f;
 }

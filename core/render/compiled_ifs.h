@@ -1,6 +1,6 @@
 #pragma once
-// The renderer's immutable snapshot of an evaluated IFS (DESIGN §1: "compiled grids: flat float
-// arrays"). Built once per edit on the UI thread, then shared read-only by all chaos-game workers.
+// The renderer's immutable snapshot of an evaluated IFS (compiled grids as flat float
+// arrays). Built once per edit on the UI thread, then shared read-only by all chaos-game workers.
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -13,7 +13,7 @@
 namespace gridifs {
 
 /// Two x-neighbouring distorted nodes (i, j, k) and (i+1, j, k), each as x y z 0: one 32-byte
-/// aligned load gives both ends of a cell edge, so a trilinear lookup is 4 loads (seed 004 §1.3).
+/// aligned load gives both ends of a cell edge, so a trilinear lookup is 4 loads (Gröller & Wegenkittl 1994, §1.3).
 struct alignas(32) NodePair {
   float a[4];
   float b[4];
@@ -28,7 +28,7 @@ struct CompiledFunction {
   /// Lattice coordinate s_d = (p_d + 1) · toLattice[d]; the cell is min(floor(s_d), maxCell[d]).
   float toLattice[4] = {0.5f, 0.5f, 0.5f, 0.0f};
   float maxCell[4] = {0.0f, 0.0f, 0.0f, 0.0f};
-  /// r g b and the palette index c_i (seed 002 §5), mixed into the running color with colorSpeed.
+  /// r g b and the palette index c_i (Draves & Reckase 2003, §5), mixed into the running color with colorSpeed.
   float color[4] = {1.0f, 1.0f, 1.0f, 0.0f};
   float colorSpeed = 0.5f;
   double weight = 1.0;

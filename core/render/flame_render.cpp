@@ -45,11 +45,11 @@ RenderJob flameRenderJob(const RenderJob& outputJob, const FlameSettings& settin
   const double halfTan = std::tan(outputJob.camera.fov * M_PI / 360.0) * double(outputJob.height + 2 * g) /
                          outputJob.height;
   job.camera.fov = std::atan(halfTan) * 360.0 / M_PI;
-  // seed 002 §8: supersampling = more histogram buckets for the same number of iterations.
+  // Draves & Reckase 2003, §8: supersampling = more histogram buckets for the same number of iterations.
   job.width = (outputJob.width + 2 * g) * ss;
   job.height = (outputJob.height + 2 * g) * ss;
   job.accumulateColor = true;
-  job.palette = std::move(palette);  // seed 002 §5: the palette color at c, per sample
+  job.palette = std::move(palette);  // Draves & Reckase 2003, §5: the palette color at c, per sample
   return job;
 }
 

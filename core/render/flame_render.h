@@ -1,5 +1,5 @@
 #pragma once
-// The flame display over the chaos game (issue 6, seed 002 §4–8): how a renderer snapshot
+// The flame display over the chaos game (Draves & Reckase 2003, §4–8): how a renderer snapshot
 // (per-pixel color sums and hit counts, at supersample× the output size) becomes a flame image,
 // and how that image is written. Used by `gridifs render --mode flame` and by the GUI preview.
 //
