@@ -1,4 +1,4 @@
-// Editing is live (issue 2): re-evaluating a 32×32×32 grid through a 10-op stack,
+// Editing is live: re-evaluating a 32×32×32 grid through a 10-op stack,
 // calculator included, must fit well inside a frame. Target: < 5 ms on one core.
 #include <benchmark/benchmark.h>
 

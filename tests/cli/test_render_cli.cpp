@@ -1,4 +1,4 @@
-// gridifs render / export-points on real files (issue 3): outputs, determinism, bad input.
+// gridifs render / export-points on real files: outputs, determinism, bad input.
 #include <gtest/gtest.h>
 
 #include <OpenImageIO/imageio.h>

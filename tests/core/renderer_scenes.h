@@ -1,5 +1,5 @@
 #pragma once
-// Scenes with known attractors for the renderer tests (issue 3).
+// Scenes with known attractors for the renderer tests.
 #include <array>
 #include <cmath>
 #include <cstdint>

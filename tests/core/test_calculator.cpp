@@ -1,4 +1,4 @@
-// The universal calculator (seed 004 §4.3): muparser expressions over node variables.
+// The universal calculator (Gröller & Wegenkittl 1994, §4.3): muparser expressions over node variables.
 #include <cmath>
 
 #include "model/calculator.h"

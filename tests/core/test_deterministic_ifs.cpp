@@ -1,4 +1,4 @@
-// The deterministic algorithm F^n(A) (seed 004 §3.2): counts, analytic positions, convergence to
+// The deterministic algorithm F^n(A) (Gröller & Wegenkittl 1994, §3.2): counts, analytic positions, convergence to
 // the Sierpinski tetrahedron, colors and addresses, topology, threads, limits and cancellation.
 #include <gtest/gtest.h>
 
@@ -40,7 +40,7 @@ Project affineProject() {
   return p;
 }
 
-// A nonlinear IFS: twisted, tapered and bent grids (seed 004 §2.2–2.4).
+// A nonlinear IFS: twisted, tapered and bent grids (Gröller & Wegenkittl 1994, §2.2–2.4).
 Project nonlinearProject() {
   Project p;
   Function f = affineFunction("twist", {0.4, 0, 0}, {0, 0, 20}, Vec3(0.5), {1, 0.5, 0});

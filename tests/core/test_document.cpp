@@ -1,4 +1,4 @@
-// Document edits, gestures and undo/redo over random edit sequences (DESIGN §1, §6).
+// Document edits, gestures and undo/redo over random edit sequences.
 #include <gtest/gtest.h>
 
 #include "edit/document.h"

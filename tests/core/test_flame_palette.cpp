@@ -1,4 +1,4 @@
-// Palettes for the flame display (seed 002 §5; issue 6).
+// Palettes for the flame display (Draves & Reckase 2003, §5).
 #include <gtest/gtest.h>
 
 #include <filesystem>

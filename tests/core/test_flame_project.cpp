@@ -1,4 +1,4 @@
-// Flame settings in the project file: "render": {"mode": "flame", "flame": {...}} (issue 6).
+// Flame settings in the project file: "render": {"mode": "flame", "flame": {...}}.
 #include <gtest/gtest.h>
 
 #include "io/project_io.h"

@@ -1,4 +1,4 @@
-// The flame display over the chaos game (issue 6): per-sample palette colors in the renderer's
+// The flame display over the chaos game: per-sample palette colors in the renderer's
 // sums, exposure from the camera, developing a snapshot, writing PNG 8/16-bit and EXR with alpha.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Grid basics and trilinear evaluation (seed 004 §1.3, DESIGN §2 "Space and grids").
+// Grid basics and trilinear evaluation (Gröller & Wegenkittl 1994, §1.3).
 #include <gtest/gtest.h>
 
 #include <random>

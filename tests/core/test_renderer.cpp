@@ -1,4 +1,4 @@
-// The stochastic renderer (issue 3): attractor correctness, determinism, restarts, z-test.
+// The stochastic renderer: attractor correctness, determinism, restarts, z-test.
 #include <gtest/gtest.h>
 
 #include <chrono>

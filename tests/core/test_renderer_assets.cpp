@@ -1,4 +1,4 @@
-// Every example project renders (issue 3): a non-empty image with the attractor inside the frame.
+// Every example project renders: a non-empty image with the attractor inside the frame.
 #include <gtest/gtest.h>
 
 #include <filesystem>

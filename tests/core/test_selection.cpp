@@ -1,4 +1,4 @@
-// Index-box selections combined left to right from the empty set (seed 004 §4.4).
+// Index-box selections combined left to right from the empty set (Gröller & Wegenkittl 1994, §4.4).
 #include <gtest/gtest.h>
 
 #include <random>
