@@ -20,11 +20,19 @@ void Document::edit(const std::string& label, const Change& change) {
   Project next = project_;
   change(next);
   if (next == project_) return;
-  validateProject(next);
+  validate(next);
   Project before = std::move(project_);
   project_ = std::move(next);
   ++revision_;
   commit(std::move(before), label);
+}
+
+void Document::validate(const Project& next) {
+  // After a checked edit only the functions that changed are checked again; a project that came
+  // from outside (constructor, reset, undo history from before) gets the full check once.
+  if (validated_) validateProjectChange(next, project_);
+  else validateProject(next);
+  validated_ = true;
 }
 
 void Document::beginGesture(const std::string& label) {
@@ -37,7 +45,7 @@ void Document::updateGesture(const Change& change) {
   Project next = project_;
   change(next);
   if (next == project_) return;
-  validateProject(next);
+  validate(next);
   project_ = std::move(next);
   ++revision_;
 }
@@ -53,6 +61,7 @@ void Document::cancelGesture() {
   if (!gesture_) return;
   if (project_ != gesture_->project) {
     project_ = std::move(gesture_->project);
+    validated_ = false;
     ++revision_;
   }
   gesture_.reset();
@@ -65,6 +74,7 @@ bool Document::undo() {
   undo_.pop_back();
   redo_.push_back({std::move(project_), step.label});
   project_ = std::move(step.project);
+  validated_ = false;
   ++revision_;
   return true;
 }
@@ -76,6 +86,7 @@ bool Document::redo() {
   redo_.pop_back();
   undo_.push_back({std::move(project_), step.label});
   project_ = std::move(step.project);
+  validated_ = false;
   ++revision_;
   return true;
 }
@@ -84,6 +95,7 @@ void Document::reset(Project project, std::filesystem::path path) {
   gesture_.reset();
   project_ = std::move(project);
   saved_ = project_;
+  validated_ = false;
   path_ = std::move(path);
   undo_.clear();
   redo_.clear();

@@ -70,6 +70,8 @@ class Document {
     std::string label;
   };
   void commit(Project before, const std::string& label);
+  /// Throws ModelError when `next` is invalid.
+  void validate(const Project& next);
 
   Project project_, saved_;
   std::filesystem::path path_;
@@ -77,6 +79,7 @@ class Document {
   std::vector<Step> undo_, redo_;
   std::optional<Step> gesture_;
   EvaluationCache evaluation_;
+  bool validated_ = false;  // project_ passed validation (edits then re-check changed functions only)
 };
 
 }  // namespace gridifs

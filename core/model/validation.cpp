@@ -50,19 +50,24 @@ void validateFlameSettings(const FlameSettings& f, const std::string& path) {
   }
 }
 
-void validateProject(const Project& project) {
+namespace {
+
+// Checks `project`; a function equal to the one at the same place of `trusted` (a project that
+// passed these checks) keeps its verdict, so its operations are not checked again.
+void validate(const Project& project, const Project* trusted) {
   validateFlameSettings(project.render.flame, "render.flame");
   if (project.functions.empty()) fail("functions", "the IFS needs at least one function");
   if (project.functions.size() > std::size_t(limits::kMaxFunctions))
     fail("functions", "more than " + std::to_string(limits::kMaxFunctions) + " functions");
   std::int64_t totalNodes = 0;
   double totalWeight = 0.0;
-  auto checkFunction = [&](const Function& fn, const std::string& path) {
+  auto checkFunction = [&](const Function& fn, const std::string& path, const Function* before) {
     for (int d = 0; d < 3; ++d)
       if (fn.resolution[d] < limits::kMinResolution || fn.resolution[d] > limits::kMaxResolution)
         fail(item(join(path, "resolution"), d), "expected an integer between 2 and 128");
     totalNodes += std::int64_t(fn.resolution[0]) * fn.resolution[1] * fn.resolution[2];
     if (!(fn.weight >= 0.0) || !std::isfinite(fn.weight)) fail(join(path, "weight"), "expected a non-negative weight");
+    if (before && before->ops == fn.ops) return;  // calculator parses and morph solves are the cost
     for (std::size_t o = 0; o < fn.ops.size(); ++o) {
       const std::string op = item(join(path, "ops"), o);
       if (const auto* calc = std::get_if<CalculatorOp>(&fn.ops[o].params)) {
@@ -82,10 +87,13 @@ void validateProject(const Project& project) {
     }
   };
   for (std::size_t f = 0; f < project.functions.size(); ++f) {
-    checkFunction(project.functions[f], item("functions", f));
+    const Function* before = trusted && f < trusted->functions.size() ? &trusted->functions[f] : nullptr;
+    checkFunction(project.functions[f], item("functions", f), before);
     if (!project.functions[f].muted) totalWeight += project.functions[f].weight;
   }
-  if (project.final_function) checkFunction(*project.final_function, "final");
+  if (project.final_function)
+    checkFunction(*project.final_function, "final",
+                  trusted && trusted->final_function ? &*trusted->final_function : nullptr);
   if (totalNodes > limits::kMaxTotalNodes)
     fail("functions", "the grids have " + std::to_string(totalNodes) + " nodes in all, more than the limit of " +
                           std::to_string(limits::kMaxTotalNodes));
@@ -94,5 +102,11 @@ void validateProject(const Project& project) {
   if (anyActive && !(totalWeight > 0.0))
     fail("functions", "every active function has weight 0 (weights must not all be zero)");
 }
+
+}  // namespace
+
+void validateProject(const Project& project) { validate(project, nullptr); }
+
+void validateProjectChange(const Project& project, const Project& previousValid) { validate(project, &previousValid); }
 
 }  // namespace gridifs

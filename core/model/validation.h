@@ -20,4 +20,10 @@ void validateFlameSettings(const FlameSettings& settings, const std::string& pat
 /// (`functions[2].ops[0].k`).
 void validateProject(const Project& project);
 
+/// The same checks for an edit of `previousValid`, a project that passed them: a function whose
+/// operations equal those at the same place in `previousValid` is not parsed or solved again, so
+/// a slider drag on one function re-validates that function only. Same result and errors as
+/// validateProject(project).
+void validateProjectChange(const Project& project, const Project& previousValid);
+
 }  // namespace gridifs
