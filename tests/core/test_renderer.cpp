@@ -41,6 +41,22 @@ void expectSierpinski(const std::vector<Vec3>& points) {
   EXPECT_EQ(addresses.size(), 1024u) << "every level-5 sub-tetrahedron is hit";
 }
 
+namespace {
+
+// Polls `condition` until it holds; false after a generous limit (a hung renderer fails the test
+// instead of hanging it). No timing is asserted: on a loaded machine the wait is simply longer.
+template <class Condition>
+bool waitUntil(Condition condition) {
+  const auto limit = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (!condition()) {
+    if (std::chrono::steady_clock::now() > limit) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));  // poll; the condition decides
+  }
+  return true;
+}
+
+}  // namespace
+
 TEST(CompiledIfs, MatchesGridEvaluation) {
   Project p = test::sierpinskiTetrahedron();
   p.functions[0].resolution = {5, 4, 3};
@@ -229,7 +245,8 @@ TEST(Renderer, RestartNeverShowsOldGenerationPoints) {
   RenderImage image;
   for (int round = 0; round < 20; ++round) {
     renderer.restart(ifsA, job);
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    // Generation A has plotted points before B replaces it, so a leak would show.
+    ASSERT_TRUE(waitUntil([&] { return renderer.stats().samples > 0; })) << "round " << round;
     const std::uint64_t generation = renderer.restart(ifsB, job);
     for (int s = 0; s < 5; ++s) {
       renderer.snapshot(image, DisplaySettings{});
@@ -239,9 +256,10 @@ TEST(Renderer, RestartNeverShowsOldGenerationPoints) {
           ASSERT_EQ(image.density[std::size_t(y) * image.width + x], 0u) << "round " << round << " snapshot " << s;
     }
   }
-  std::this_thread::sleep_for(std::chrono::milliseconds(30));
-  renderer.snapshot(image, DisplaySettings{});
-  EXPECT_GT(image.hitPixels, 20);
+  EXPECT_TRUE(waitUntil([&] {
+    renderer.snapshot(image, DisplaySettings{});
+    return image.hitPixels > 20;
+  }));
   EXPECT_FALSE(image.stats.done);
   renderer.stop();
 }
@@ -254,6 +272,7 @@ TEST(Renderer, PauseResumeAndBudget) {
   renderer.restart(compileIfs(p), job);
   renderer.pause();
   const std::int64_t atPause = renderer.stats().samples;
+  // Asserting that nothing happens needs time to pass: a fixed pause, not a wait on a condition.
   std::this_thread::sleep_for(std::chrono::milliseconds(20));
   const std::int64_t later = renderer.stats().samples;
   EXPECT_LE(later - atPause, 2 * 8192) << "at most one batch per worker after pause()";
