@@ -32,7 +32,7 @@ class PreviewRenderer {
  private:
   ChaosRenderer renderer_;
   std::uint64_t revision_ = 0;
-  Project published_;  // what the workers render, display-only settings excluded
+  Revisions published_{0, 0, 0, 0};  // the document's revisions at the last publish
   bool havePublished_ = false;
   int width_ = 0, height_ = 0, threads_ = 0;
   DisplaySettings display_;

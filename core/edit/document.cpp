@@ -4,6 +4,17 @@
 
 namespace gridifs {
 
+bool sameDisplay(const RenderSettings& a, const RenderSettings& b) {
+  FlameSettings toneA = a.flame, toneB = b.flame;
+  toneA.palette = toneB.palette = "";  // the palette is looked up per sample: a render input
+  return a.background == b.background && a.depth_cue == b.depth_cue && a.mode == b.mode && toneA == toneB;
+}
+
+bool sameRenderInput(const RenderSettings& a, const RenderSettings& b) {
+  return a.width == b.width && a.height == b.height && a.samples == b.samples && a.seed == b.seed &&
+         a.skip == b.skip && a.flame.palette == b.flame.palette;
+}
+
 Document::Document(Project project) : project_(std::move(project)), saved_(project_) {
   if (project_.functions.empty()) project_ = saved_ = defaultNewProject();
 }
@@ -21,10 +32,9 @@ void Document::edit(const std::string& label, const Change& change) {
   change(next);
   if (next == project_) return;
   validate(next);
-  Project before = std::move(project_);
-  project_ = std::move(next);
-  ++revision_;
-  commit(std::move(before), label);
+  std::swap(project_, next);
+  changed(next);
+  commit(std::move(next), label);
 }
 
 void Document::validate(const Project& next) {
@@ -46,8 +56,8 @@ void Document::updateGesture(const Change& change) {
   change(next);
   if (next == project_) return;
   validate(next);
-  project_ = std::move(next);
-  ++revision_;
+  std::swap(project_, next);
+  changed(next);
 }
 
 void Document::endGesture() {
@@ -60,9 +70,9 @@ void Document::endGesture() {
 void Document::cancelGesture() {
   if (!gesture_) return;
   if (project_ != gesture_->project) {
-    project_ = std::move(gesture_->project);
+    std::swap(project_, gesture_->project);
     validated_ = false;
-    ++revision_;
+    changed(gesture_->project);
   }
   gesture_.reset();
 }
@@ -75,7 +85,7 @@ bool Document::undo() {
   redo_.push_back({std::move(project_), step.label});
   project_ = std::move(step.project);
   validated_ = false;
-  ++revision_;
+  changed(redo_.back().project);
   return true;
 }
 
@@ -87,7 +97,7 @@ bool Document::redo() {
   undo_.push_back({std::move(project_), step.label});
   project_ = std::move(step.project);
   validated_ = false;
-  ++revision_;
+  changed(undo_.back().project);
   return true;
 }
 
@@ -100,6 +110,18 @@ void Document::reset(Project project, std::filesystem::path path) {
   undo_.clear();
   redo_.clear();
   ++revision_;
+  revisions_.geometry = revisions_.render = revisions_.display = revisions_.camera = revision_;
+}
+
+void Document::changed(const Project& before) {
+  // Every field of Project belongs to one concern here; a new field must join one.
+  ++revision_;
+  const Project& now = project_;
+  if (now.functions != before.functions || now.final_function != before.final_function)
+    revisions_.geometry = revision_;
+  if (now.camera != before.camera) revisions_.camera = revision_;
+  if (!sameRenderInput(now.render, before.render)) revisions_.render = revision_;
+  if (!sameDisplay(now.render, before.render)) revisions_.display = revision_;
 }
 
 void Document::markSaved(const std::filesystem::path& path) {

@@ -15,6 +15,23 @@
 
 namespace gridifs {
 
+/// What changed in a project, by concern: each field is the Document::revision() at which that
+/// concern last changed, so a consumer keeps the numbers it last saw and compares integers
+/// instead of copying and comparing projects.
+struct Revisions {
+  std::uint64_t geometry = 1;  // functions and the final function (what compileIfs reads)
+  std::uint64_t render = 1;    // render inputs of the chaos game: size, samples, seed, skip, palette
+  std::uint64_t display = 1;   // how buffers become a picture: background, depth cue, mode, tone map
+  std::uint64_t camera = 1;
+  bool operator==(const Revisions&) const = default;
+};
+
+/// Whether two render settings give the same picture from the same buffers (background, depth
+/// cue, display mode and the flame tone mapping; the palette is a render input).
+bool sameDisplay(const RenderSettings& a, const RenderSettings& b);
+/// Whether two render settings drive the chaos game the same way (everything but the display).
+bool sameRenderInput(const RenderSettings& a, const RenderSettings& b);
+
 /// Not thread-safe: owned and used by one thread (the UI thread, or a CLI verb).
 class Document {
  public:
@@ -26,6 +43,8 @@ class Document {
   const std::filesystem::path& path() const { return path_; }
   /// Bumped on every change of the project (edits, gesture updates, undo, redo, open).
   std::uint64_t revision() const { return revision_; }
+  /// The revision at which each concern last changed (all bumped by reset()).
+  const Revisions& revisions() const { return revisions_; }
   /// Whether the project differs from what was last saved or opened.
   bool dirty() const { return project_ != saved_; }
 
@@ -70,12 +89,15 @@ class Document {
     std::string label;
   };
   void commit(Project before, const std::string& label);
+  /// Bumps revision() and the revisions of the concerns that differ from `before`.
+  void changed(const Project& before);
   /// Throws ModelError when `next` is invalid.
   void validate(const Project& next);
 
   Project project_, saved_;
   std::filesystem::path path_;
   std::uint64_t revision_ = 1;
+  Revisions revisions_;
   std::vector<Step> undo_, redo_;
   std::optional<Step> gesture_;
   EvaluationCache evaluation_;
