@@ -87,6 +87,31 @@ void writeImage(const RenderImage& image, const std::filesystem::path& out, cons
   }
 }
 
+/// Runs `job` to completion with a progress bar (interruptible with Ctrl-C). Throws CliError when
+/// interrupted or when at least half of the points were unusable (nothing is written then).
+RenderImage renderWithProgress(const RenderSetup& setup, const RenderJob& job, const std::string& file,
+                               const std::string& out, bool quiet) {
+  ProgressBar bar("render", !quiet && stderrIsTerminal());
+  InterruptGuard interrupt;
+  RenderImage image;
+  try {
+    image = renderToCompletion(setup.ifs, job, DisplaySettings::fromProject(setup.project), [&](const RenderStats& s) {
+      bar.update(s.samples, s.budget, s.pointsPerSecond, s.done);
+      return !gInterrupted.load();
+    });
+  } catch (const RenderCancelled&) {
+    bar.finish();
+    throw CliError(kFailure, "render of " + file + " interrupted; " + out + " was not written");
+  }
+  bar.finish();
+  const RenderStats& s = image.stats;
+  if (s.badFraction() >= 0.5)
+    throw CliError(kBadInput, file + ": " + std::to_string(int(std::lround(100 * s.badFraction()))) +
+                                  "% of the chaos-game points were non-finite or escaped, so the IFS has no usable "
+                                  "attractor; " + out + " was not written");
+  return image;
+}
+
 /// Options of the flame display; empty optionals keep the project's settings.
 struct FlameOptions {
   std::optional<std::string> mode, palette;
@@ -120,24 +145,7 @@ int runFlameRender(const std::string& file, const std::string& out, const Render
   } catch (const ModelError& e) {
     throw CliError(kBadInput, file + ": with supersample " + std::to_string(ss) + ", " + e.message());
   }
-  ProgressBar bar("render", !quiet && stderrIsTerminal());
-  InterruptGuard interrupt;
-  RenderImage image;
-  try {
-    image = renderToCompletion(setup.ifs, job, DisplaySettings::fromProject(setup.project), [&](const RenderStats& s) {
-      bar.update(s.samples, s.budget, s.pointsPerSecond, s.done);
-      return !gInterrupted.load();
-    });
-  } catch (const RenderCancelled&) {
-    bar.finish();
-    throw CliError(kFailure, "render of " + file + " interrupted; " + out + " was not written");
-  }
-  bar.finish();
-  const RenderStats& s = image.stats;
-  if (s.badFraction() >= 0.5)
-    throw CliError(kBadInput, file + ": " + std::to_string(int(std::lround(100 * s.badFraction()))) +
-                                  "% of the chaos-game points were non-finite or escaped, so the IFS has no usable "
-                                  "attractor; " + out + " was not written");
+  const RenderImage image = renderWithProgress(setup, job, file, out, quiet);
   if (image.hitPixels == 0)
     std::fprintf(stderr, "warning: %s: no point landed in the %dx%d frame; check the camera.\n", file.c_str(),
                  setup.job.width, setup.job.height);
@@ -165,25 +173,8 @@ int runRender(const std::string& file, const std::string& out, const RenderOverr
   if (mode == DisplayMode::Flame) return runFlameRender(file, out, setup, flame, quiet);
   if (flame.bitDepth || flame.transparent || flame.palette)
     throw CliError(kBadInput, "--bit-depth, --transparent and --palette apply to --mode flame only");
-  ProgressBar bar("render", !quiet && stderrIsTerminal());
-  InterruptGuard interrupt;
-  RenderImage image;
-  try {
-    image = renderToCompletion(setup.ifs, setup.job, DisplaySettings::fromProject(setup.project),
-                               [&](const RenderStats& s) {
-                                 bar.update(s.samples, s.budget, s.pointsPerSecond, s.done);
-                                 return !gInterrupted.load();
-                               });
-  } catch (const RenderCancelled&) {
-    bar.finish();
-    throw CliError(kFailure, "render of " + file + " interrupted; " + out + " was not written");
-  }
-  bar.finish();
+  const RenderImage image = renderWithProgress(setup, setup.job, file, out, quiet);
   const RenderStats& s = image.stats;
-  if (s.badFraction() >= 0.5)
-    throw CliError(kBadInput, file + ": " + std::to_string(int(std::lround(100 * s.badFraction()))) +
-                                  "% of the chaos-game points were non-finite or escaped, so the IFS has no usable "
-                                  "attractor; " + out + " was not written");
   if (s.badSamples > 0)
     std::fprintf(stderr, "warning: %s: %.3g%% of the samples were non-finite or escaped (chains restarted).\n",
                  file.c_str(), 100.0 * s.badFraction());

@@ -77,29 +77,21 @@ void Document::cancelGesture() {
   gesture_.reset();
 }
 
-bool Document::undo() {
+bool Document::travel(std::vector<Step>& from, std::vector<Step>& to) {
   if (gesture_) endGesture();
-  if (undo_.empty()) return false;
-  Step step = std::move(undo_.back());
-  undo_.pop_back();
-  redo_.push_back({std::move(project_), step.label});
+  if (from.empty()) return false;
+  Step step = std::move(from.back());
+  from.pop_back();
+  to.push_back({std::move(project_), step.label});
   project_ = std::move(step.project);
   validated_ = false;
-  changed(redo_.back().project);
+  changed(to.back().project);
   return true;
 }
 
-bool Document::redo() {
-  if (gesture_) endGesture();
-  if (redo_.empty()) return false;
-  Step step = std::move(redo_.back());
-  redo_.pop_back();
-  undo_.push_back({std::move(project_), step.label});
-  project_ = std::move(step.project);
-  validated_ = false;
-  changed(undo_.back().project);
-  return true;
-}
+bool Document::undo() { return travel(undo_, redo_); }
+
+bool Document::redo() { return travel(redo_, undo_); }
 
 void Document::reset(Project project, std::filesystem::path path) {
   gesture_.reset();

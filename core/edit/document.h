@@ -91,6 +91,8 @@ class Document {
   void commit(Project before, const std::string& label);
   /// Bumps revision() and the revisions of the concerns that differ from `before`.
   void changed(const Project& before);
+  /// Undo (from undo_ to redo_) or redo (the other way): one step through the history.
+  bool travel(std::vector<Step>& from, std::vector<Step>& to);
   /// Throws ModelError when `next` is invalid.
   void validate(const Project& next);
 

@@ -3,9 +3,6 @@
 // from the Document's evaluation cache and restarts the renderer as a new generation.
 #include <gtest/gtest.h>
 
-#include <chrono>
-#include <thread>
-
 #include "edit/document.h"
 #include "edit/edit_queue.h"
 #include "render/chaos_renderer.h"
@@ -15,16 +12,7 @@
 namespace gridifs {
 namespace {
 
-// Polls `condition` until it holds; false after a generous limit instead of hanging.
-template <class Condition>
-bool waitUntil(Condition condition) {
-  const auto limit = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  while (!condition()) {
-    if (std::chrono::steady_clock::now() > limit) return false;
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  }
-  return true;
-}
+using test::waitUntil;
 
 TEST(EditPath, SliderDragIsOneUndoStepAndChangesGeometryOnly) {
   Document document(test::sierpinskiTetrahedron());

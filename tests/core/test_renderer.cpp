@@ -41,21 +41,7 @@ void expectSierpinski(const std::vector<Vec3>& points) {
   EXPECT_EQ(addresses.size(), 1024u) << "every level-5 sub-tetrahedron is hit";
 }
 
-namespace {
-
-// Polls `condition` until it holds; false after a generous limit (a hung renderer fails the test
-// instead of hanging it). No timing is asserted: on a loaded machine the wait is simply longer.
-template <class Condition>
-bool waitUntil(Condition condition) {
-  const auto limit = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  while (!condition()) {
-    if (std::chrono::steady_clock::now() > limit) return false;
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));  // poll; the condition decides
-  }
-  return true;
-}
-
-}  // namespace
+using test::waitUntil;
 
 TEST(CompiledIfs, MatchesGridEvaluation) {
   Project p = test::sierpinskiTetrahedron();
