@@ -54,20 +54,8 @@ class ProgressBar {
 };
 
 BaseMeshSpec baseSpec(const ExportMeshArgs& a, MeshFormat format) {
-  BaseMeshSpec spec;
-  if (a.base == "cube") {
-    spec.shape = BaseShape::Cube;
-  } else if (a.base == "sphere") {
-    spec.shape = BaseShape::Sphere;
-  } else {
-    spec.shape = BaseShape::File;
-    spec.file = a.base;
-  }
-  spec.subdivision = a.subdivide;
-  spec.scheme = a.smooth ? SubdivisionScheme::Smooth : SubdivisionScheme::Flat;
-  spec.triangulate = formatNeedsTriangles(format);
-  spec.fitToCube = a.fit;
-  return spec;
+  const BaseShape shape = a.base == "cube" ? BaseShape::Cube : a.base == "sphere" ? BaseShape::Sphere : BaseShape::File;
+  return baseMeshSpec(shape, a.base, a.subdivide, a.smooth, a.fit, format);
 }
 
 bool outsideCube(const IfsMesh& mesh) {

@@ -89,14 +89,7 @@ void ExportDialog::updatePlan(const ModellerState& state) {
   plan_.output = meshOutput_;
   plan_.error.clear();
   try {
-    const auto format = meshFormatFromPath(meshOutput_);
-    BaseMeshSpec spec;
-    spec.shape = base_ == 0 ? BaseShape::Cube : base_ == 1 ? BaseShape::Sphere : BaseShape::File;
-    spec.file = baseFile_;
-    spec.subdivision = subdivide_;
-    spec.scheme = smooth_ ? SubdivisionScheme::Smooth : SubdivisionScheme::Flat;
-    spec.triangulate = format && formatNeedsTriangles(*format);
-    spec.fitToCube = fit_;
+    const BaseMeshSpec spec = meshSpec(meshFormatFromPath(meshOutput_));
     DeterministicOptions options;
     options.depth = depth_;
     if (spec.shape == BaseShape::File && baseFile_.empty()) throw ModelError("", "choose a base mesh file");
@@ -104,6 +97,11 @@ void ExportDialog::updatePlan(const ModellerState& state) {
   } catch (const std::exception& e) {
     plan_.error = e.what();
   }
+}
+
+BaseMeshSpec ExportDialog::meshSpec(std::optional<MeshFormat> outputFormat) const {
+  const BaseShape shape = base_ == 0 ? BaseShape::Cube : base_ == 1 ? BaseShape::Sphere : BaseShape::File;
+  return baseMeshSpec(shape, baseFile_, subdivide_, smooth_, fit_, outputFormat);
 }
 
 void ExportDialog::drawMeshOptions(ModellerState& state) {
@@ -189,13 +187,7 @@ void ExportDialog::start(ModellerState& state) {
       updatePlan(state);
       if (!plan_.error.empty()) throw ModelError("", plan_.error);
       if (plan_.plan.overLimit) throw ModelError("", plan_.plan.message);
-      BaseMeshSpec spec;
-      spec.shape = base_ == 0 ? BaseShape::Cube : base_ == 1 ? BaseShape::Sphere : BaseShape::File;
-      spec.file = baseFile_;
-      spec.subdivision = subdivide_;
-      spec.scheme = smooth_ ? SubdivisionScheme::Smooth : SubdivisionScheme::Flat;
-      spec.triangulate = formatNeedsTriangles(*meshFormatFromPath(output));
-      spec.fitToCube = fit_;
+      const BaseMeshSpec spec = meshSpec(meshFormatFromPath(output));
       DeterministicOptions options;
       options.depth = depth_;
       const MeshWriteOptions writeOptions{!ascii_, true};

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <mutex>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <thread>
 
@@ -38,6 +39,8 @@ class ExportDialog {
  private:
   enum class Phase { Options, Running, Done, Failed, Cancelled };
   void drawMeshOptions(ModellerState& state);
+  /// The base-mesh spec of the dialog's options for an output of `outputFormat`.
+  BaseMeshSpec meshSpec(std::optional<MeshFormat> outputFormat) const;
   void drawPointsOptions(ModellerState& state);
   void updatePlan(const ModellerState& state);
   void start(ModellerState& state);

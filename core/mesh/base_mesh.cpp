@@ -214,4 +214,16 @@ IfsMesh refineBase(IfsMesh coarse, const BaseMeshSpec& spec) {
   return mesh;
 }
 
+BaseMeshSpec baseMeshSpec(BaseShape shape, const std::filesystem::path& file, int subdivision, bool smooth,
+                          bool fitToCube, std::optional<MeshFormat> outputFormat) {
+  BaseMeshSpec spec;
+  spec.shape = shape;
+  if (shape == BaseShape::File) spec.file = file;
+  spec.subdivision = subdivision;
+  spec.scheme = smooth ? SubdivisionScheme::Smooth : SubdivisionScheme::Flat;
+  spec.triangulate = outputFormat && formatNeedsTriangles(*outputFormat);
+  spec.fitToCube = fitToCube;
+  return spec;
+}
+
 }  // namespace gridifs

@@ -4,9 +4,11 @@
 // functions bend its long edges smoothly.
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "mesh/ifs_mesh.h"
+#include "mesh/mesh_io.h"
 
 namespace gridifs {
 
@@ -33,6 +35,11 @@ struct BaseMeshSpec {
   bool triangulate = false;  // fan-triangulate after subdividing (STL output needs triangles)
   bool fitToCube = false;    // scale and center a file's mesh uniformly into X = [-1, 1]^3
 };
+
+/// The spec the CLI and the export dialog build from their options: `file` is used for
+/// BaseShape::File; the mesh is triangulated when the output format needs triangles (STL).
+BaseMeshSpec baseMeshSpec(BaseShape shape, const std::filesystem::path& file, int subdivision, bool smooth,
+                          bool fitToCube, std::optional<MeshFormat> outputFormat);
 
 /// Element counts; corners = Σ over faces of the face's valence (halfedges inside faces).
 struct MeshCounts {
