@@ -6,7 +6,7 @@
 #include <iostream>
 #include <map>
 
-#include "core/project_io.h"
+#include "io/project_io.h"
 
 namespace gridifs::cli {
 namespace {

@@ -1,5 +1,5 @@
 #pragma once
-// The command line (DESIGN §4): one executable, one verb per file, exit codes
+// The command line: one executable, one verb per file, exit codes
 // 0 success, 1 failure while working, 2 bad usage or bad input file.
 #include <CLI/CLI.hpp>
 #include <filesystem>
@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "core/document.h"
+#include "edit/document.h"
 
 namespace gridifs::cli {
 

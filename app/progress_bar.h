@@ -1,6 +1,6 @@
 #pragma once
 // A one-line progress bar on stderr for long CLI verbs (render, export-points): percent, points/s
-// and ETA, redrawn at most ten times a second. Silent when stderr is not a terminal (DESIGN §4).
+// and ETA, redrawn at most ten times a second. Silent when stderr is not a terminal.
 #include <chrono>
 #include <cstdint>
 #include <string>

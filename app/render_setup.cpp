@@ -8,7 +8,7 @@
 #include <cstdio>
 
 #include "app/cli.h"
-#include "core/contractivity.h"
+#include "model/contractivity.h"
 
 namespace gridifs::cli {
 
@@ -22,13 +22,6 @@ std::int64_t parseSamples(const std::string& text, std::int64_t maximum) {
     throw CliError(kBadInput, "--samples " + text + " is more than the limit of " + std::to_string(maximum) +
                                   " samples");
   return std::int64_t(value);
-}
-
-std::string lowerExtension(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  if (!ext.empty() && ext[0] == '.') ext.erase(0, 1);
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
 }
 
 void checkOutputPath(const std::filesystem::path& out, const std::vector<std::string>& allowed,
@@ -75,7 +68,7 @@ RenderSetup prepareRender(const std::filesystem::path& file, const RenderOverrid
   }
   Document document(setup.project);
   try {
-    setup.ifs = compileIfs(document);
+    setup.ifs = compileIfs(document.project(), document.evaluation());
   } catch (const ModelError& e) {
     throw CliError(kBadInput, file.string() + ": " + e.what());
   }
@@ -88,27 +81,6 @@ RenderSetup prepareRender(const std::filesystem::path& file, const RenderOverrid
                    file.c_str(), f.sourceIndex, setup.project.functions[f.sourceIndex].name.c_str(), c.bound);
   }
   return setup;
-}
-
-AtomicOutput::AtomicOutput(std::filesystem::path target) : target_(std::move(target)) {
-  std::filesystem::path folder = target_.parent_path();
-  const std::string name = "." + target_.stem().string() + ".tmp-" + std::to_string(::getpid()) +
-                           target_.extension().string();
-  temp_ = folder.empty() ? std::filesystem::path(name) : folder / name;
-}
-
-AtomicOutput::~AtomicOutput() {
-  if (!committed_) {
-    std::error_code ec;
-    std::filesystem::remove(temp_, ec);
-  }
-}
-
-void AtomicOutput::commit() {
-  std::error_code ec;
-  std::filesystem::rename(temp_, target_, ec);
-  if (ec) throw CliError(kFailure, "cannot write " + target_.string() + ": " + ec.message());
-  committed_ = true;
 }
 
 }  // namespace gridifs::cli

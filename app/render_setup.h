@@ -1,13 +1,14 @@
 #pragma once
 // Shared by `gridifs render` and `gridifs export-points`: loading and compiling a project for
-// the chaos game, option overrides, output-path checks and atomic output files (DESIGN §3, §4).
+// the chaos game, option overrides, output-path checks and atomic output files.
 #include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include "core/chaos_renderer.h"
+#include "base/text_format.h"
+#include "render/chaos_renderer.h"
 
 namespace gridifs::cli {
 
@@ -32,27 +33,9 @@ std::int64_t parseSamples(const std::string& text, std::int64_t maximum);
 RenderSetup prepareRender(const std::filesystem::path& file, const RenderOverrides& overrides,
                           std::int64_t maxSamples);
 
-/// Lower-case extension without the dot ("png"); "" when none.
-std::string lowerExtension(const std::filesystem::path& path);
-
 /// Refuses an output path whose extension is not in `allowed` or whose folder does not exist or is
 /// not writable (CliError(2), one sentence naming the path).
 void checkOutputPath(const std::filesystem::path& out, const std::vector<std::string>& allowed,
                      const std::string& what);
-
-/// A temporary file next to `target` (same folder, same extension) that is renamed over `target`
-/// by commit() and removed otherwise, so `target` is never half-written.
-class AtomicOutput {
- public:
-  explicit AtomicOutput(std::filesystem::path target);
-  ~AtomicOutput();
-  const std::filesystem::path& tempPath() const { return temp_; }
-  /// Renames the temporary over the target. Throws CliError(1) on failure.
-  void commit();
-
- private:
-  std::filesystem::path target_, temp_;
-  bool committed_ = false;
-};
 
 }  // namespace gridifs::cli

@@ -1,14 +1,14 @@
 // gridifs export-mesh FILE -o OUT.(ply|obj|stl|off) --depth D [--base cube|sphere|MESH] [--subdivide S]:
-// the deterministic algorithm F^D(base) (seed 004 §3.2) written through OpenMesh (DESIGN §4).
+// the deterministic algorithm F^D(base) (Gröller & Wegenkittl 1994, §3.2) written through OpenMesh.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
 
 #include "app/cli.h"
-#include "core/deterministic_ifs.h"
-#include "core/mesh_io.h"
-#include "core/project_io.h"
+#include "mesh/deterministic_ifs.h"
+#include "mesh/mesh_io.h"
+#include "io/project_io.h"
 
 namespace gridifs::cli {
 namespace {
@@ -20,7 +20,7 @@ struct ExportMeshArgs {
   std::uint64_t maxFaces = DeterministicLimits{}.maxFaces;
 };
 
-// A one-line bar on stderr, redrawn in place; only on a terminal (DESIGN §4).
+// A one-line bar on stderr, redrawn in place; only on a terminal.
 class ProgressBar {
  public:
   explicit ProgressBar(bool enabled) : enabled_(enabled) {}
@@ -54,20 +54,8 @@ class ProgressBar {
 };
 
 BaseMeshSpec baseSpec(const ExportMeshArgs& a, MeshFormat format) {
-  BaseMeshSpec spec;
-  if (a.base == "cube") {
-    spec.shape = BaseShape::Cube;
-  } else if (a.base == "sphere") {
-    spec.shape = BaseShape::Sphere;
-  } else {
-    spec.shape = BaseShape::File;
-    spec.file = a.base;
-  }
-  spec.subdivision = a.subdivide;
-  spec.scheme = a.smooth ? SubdivisionScheme::Smooth : SubdivisionScheme::Flat;
-  spec.triangulate = formatNeedsTriangles(format);
-  spec.fitToCube = a.fit;
-  return spec;
+  const BaseShape shape = a.base == "cube" ? BaseShape::Cube : a.base == "sphere" ? BaseShape::Sphere : BaseShape::File;
+  return baseMeshSpec(shape, a.base, a.subdivide, a.smooth, a.fit, format);
 }
 
 bool outsideCube(const IfsMesh& mesh) {
@@ -94,7 +82,7 @@ int runExportMesh(const ExportMeshArgs& a) {
   Document document(loadForVerb(a.file));
   DeterministicIfs ifs;
   try {
-    ifs = snapshotDeterministicIfs(document);
+    ifs = snapshotDeterministicIfs(document.project(), document.evaluation());
   } catch (const ModelError& e) {
     throw CliError(kBadInput, a.file + ": " + e.what());
   }

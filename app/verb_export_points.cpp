@@ -1,11 +1,11 @@
 // gridifs export-points FILE -o OUT.ply --samples N: the chaos-game points the renderer would plot
 // (same worker streams, skip and final function; not culled to the frame) as a binary
-// little-endian PLY with x y z float and red green blue uchar (DESIGN §4; issue 3).
+// little-endian PLY with x y z float and red green blue uchar.
 #include "app/cli.h"
 #include "app/progress_bar.h"
 #include "app/render_setup.h"
-#include "core/point_cloud_export.h"
-#include "core/project_io.h"
+#include "io/point_cloud_export.h"
+#include "io/project_io.h"
 
 namespace gridifs::cli {
 namespace {

@@ -4,7 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli.h"
-#include "core/contractivity.h"
+#include "model/contractivity.h"
 
 namespace gridifs::cli {
 namespace {

@@ -1,7 +1,7 @@
-// gridifs render FILE -o OUT.(png|exr|tif): the stochastic renderer headlessly through OpenImageIO
-// (DESIGN §4, §5; issue 3). PNG/TIFF: 8-bit RGB with the background composited. EXR: float
+// gridifs render FILE -o OUT.(png|exr|tif): the stochastic renderer headlessly through
+// OpenImageIO. PNG/TIFF: 8-bit RGB with the background composited. EXR: float
 // R G B A (linear, premultiplied, A = coverage) plus a Z channel with the view depth, so
-// compositors can use it (issue 5 item 4).
+// compositors can use it.
 #include <OpenImageIO/imageio.h>
 
 #include <atomic>
@@ -13,7 +13,9 @@
 #include "app/cli.h"
 #include "app/progress_bar.h"
 #include "app/render_setup.h"
-#include "core/flame_render.h"
+#include "base/atomic_file.h"
+#include "base/color_space.h"
+#include "render/flame_render.h"
 
 namespace gridifs::cli {
 namespace {
@@ -32,13 +34,11 @@ struct InterruptGuard {
 /// The Z value of pixels without points (Blender's convention for "background").
 constexpr float kEmptyZ = 1e10f;
 
-float srgbToLinear(float v) { return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f); }
-
 void writeImage(const RenderImage& image, const std::filesystem::path& out, const RenderSetup& setup,
                 const std::string& file) {
   const std::string ext = lowerExtension(out);
-  AtomicOutput output(out);
-  const std::string temp = output.tempPath().string();
+  AtomicFile output(out);
+  const std::string temp = output.temporaryPath().string();
   auto writer = OIIO::ImageOutput::create(temp);
   if (!writer) throw CliError(kFailure, "cannot write " + out.string() + ": " + OIIO::geterror());
   const std::size_t n = std::size_t(image.width) * std::size_t(image.height);
@@ -80,17 +80,46 @@ void writeImage(const RenderImage& image, const std::filesystem::path& out, cons
     throw CliError(kFailure, "cannot write " + out.string() + ": " + message);
   }
   writer.reset();
-  output.commit();
+  try {
+    output.commit();
+  } catch (const IoError& e) {
+    throw CliError(kFailure, e.what());
+  }
 }
 
-/// Options of the flame display (issue 6); empty optionals keep the project's settings.
+/// Runs `job` to completion with a progress bar (interruptible with Ctrl-C). Throws CliError when
+/// interrupted or when at least half of the points were unusable (nothing is written then).
+RenderImage renderWithProgress(const RenderSetup& setup, const RenderJob& job, const std::string& file,
+                               const std::string& out, bool quiet) {
+  ProgressBar bar("render", !quiet && stderrIsTerminal());
+  InterruptGuard interrupt;
+  RenderImage image;
+  try {
+    image = renderToCompletion(setup.ifs, job, DisplaySettings::fromProject(setup.project), [&](const RenderStats& s) {
+      bar.update(s.samples, s.budget, s.pointsPerSecond, s.done);
+      return !gInterrupted.load();
+    });
+  } catch (const RenderCancelled&) {
+    bar.finish();
+    throw CliError(kFailure, "render of " + file + " interrupted; " + out + " was not written");
+  }
+  bar.finish();
+  const RenderStats& s = image.stats;
+  if (s.badFraction() >= 0.5)
+    throw CliError(kBadInput, file + ": " + std::to_string(int(std::lround(100 * s.badFraction()))) +
+                                  "% of the chaos-game points were non-finite or escaped, so the IFS has no usable "
+                                  "attractor; " + out + " was not written");
+  return image;
+}
+
+/// Options of the flame display; empty optionals keep the project's settings.
 struct FlameOptions {
   std::optional<std::string> mode, palette;
   std::optional<int> bitDepth;
   bool transparent = false;
 };
 
-/// `--mode flame` (issue 6, seed 002 §4–8): the same chaos game at supersample× the size with
+/// `--mode flame` (Draves & Reckase 2003, §4–8): the same chaos game at supersample× the size with
 /// palette colour sums, developed by log-density tone mapping and the filters. PNG/TIFF: RGB over
 /// the background (RGBA with --transparent), 8 or 16 bits; EXR: premultiplied RGBA, float or half.
 int runFlameRender(const std::string& file, const std::string& out, const RenderSetup& setup,
@@ -116,24 +145,7 @@ int runFlameRender(const std::string& file, const std::string& out, const Render
   } catch (const ModelError& e) {
     throw CliError(kBadInput, file + ": with supersample " + std::to_string(ss) + ", " + e.message());
   }
-  ProgressBar bar("render", !quiet && stderrIsTerminal());
-  InterruptGuard interrupt;
-  RenderImage image;
-  try {
-    image = renderToCompletion(setup.ifs, job, DisplaySettings::fromProject(setup.project), [&](const RenderStats& s) {
-      bar.update(s.samples, s.budget, s.pointsPerSecond, s.done);
-      return !gInterrupted.load();
-    });
-  } catch (const RenderCancelled&) {
-    bar.finish();
-    throw CliError(kFailure, "render of " + file + " interrupted; " + out + " was not written");
-  }
-  bar.finish();
-  const RenderStats& s = image.stats;
-  if (s.badFraction() >= 0.5)
-    throw CliError(kBadInput, file + ": " + std::to_string(int(std::lround(100 * s.badFraction()))) +
-                                  "% of the chaos-game points were non-finite or escaped, so the IFS has no usable "
-                                  "attractor; " + out + " was not written");
+  const RenderImage image = renderWithProgress(setup, job, file, out, quiet);
   if (image.hitPixels == 0)
     std::fprintf(stderr, "warning: %s: no point landed in the %dx%d frame; check the camera.\n", file.c_str(),
                  setup.job.width, setup.job.height);
@@ -161,25 +173,8 @@ int runRender(const std::string& file, const std::string& out, const RenderOverr
   if (mode == DisplayMode::Flame) return runFlameRender(file, out, setup, flame, quiet);
   if (flame.bitDepth || flame.transparent || flame.palette)
     throw CliError(kBadInput, "--bit-depth, --transparent and --palette apply to --mode flame only");
-  ProgressBar bar("render", !quiet && stderrIsTerminal());
-  InterruptGuard interrupt;
-  RenderImage image;
-  try {
-    image = renderToCompletion(setup.ifs, setup.job, DisplaySettings::fromProject(setup.project),
-                               [&](const RenderStats& s) {
-                                 bar.update(s.samples, s.budget, s.pointsPerSecond, s.done);
-                                 return !gInterrupted.load();
-                               });
-  } catch (const RenderCancelled&) {
-    bar.finish();
-    throw CliError(kFailure, "render of " + file + " interrupted; " + out + " was not written");
-  }
-  bar.finish();
+  const RenderImage image = renderWithProgress(setup, setup.job, file, out, quiet);
   const RenderStats& s = image.stats;
-  if (s.badFraction() >= 0.5)
-    throw CliError(kBadInput, file + ": " + std::to_string(int(std::lround(100 * s.badFraction()))) +
-                                  "% of the chaos-game points were non-finite or escaped, so the IFS has no usable "
-                                  "attractor; " + out + " was not written");
   if (s.badSamples > 0)
     std::fprintf(stderr, "warning: %s: %.3g%% of the samples were non-finite or escaped (chains restarted).\n",
                  file.c_str(), 100.0 * s.badFraction());

@@ -7,7 +7,7 @@ GRIDIFS_PACKAGES=(
   libglfw3-dev libglm-dev libopenmesh-dev libopenimageio-dev openimageio-tools libimgui-dev
   libmuparser-dev nlohmann-json3-dev libcli11-dev libgtest-dev libbenchmark-dev libepoxy-dev
   xvfb xauth xdotool x11-utils imagemagick mesa-utils libgl1-mesa-dri fonts-dejavu-core
-  flam3-utils flam3-palette clang libclang-rt-14-dev
+  flam3-utils flam3-palette clang libclang-rt-14-dev libtbb-dev libpugixml-dev
 )
 gridifs_install_deps() {
   local missing=()

@@ -1,5 +1,5 @@
 #version 330 core
-// Grid lines, axes, selection boxes, magnet ranges and morph vectors (issue 4 "Views").
+// Grid lines, axes, selection boxes, magnet ranges and morph vectors.
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec4 aColor;
 uniform mat4 uViewProjection;

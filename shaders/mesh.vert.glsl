@@ -1,5 +1,5 @@
 #version 330 core
-// The deterministic preview (seed 004 §3.2): F^n(A) as a lit mesh. Positions are world space;
+// The deterministic preview (Gröller & Wegenkittl 1994, §3.2): F^n(A) as a lit mesh. Positions are world space;
 // the color is each copy's structural color (the chaos game's blend, see deterministic_ifs.h).
 layout(location = 0) in vec3 aPosition;
 layout(location = 1) in vec4 aColor;

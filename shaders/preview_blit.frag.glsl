@@ -1,5 +1,5 @@
 #version 330 core
-// The renderer's z-buffer image (seed 004 §3.1), already depth-cued and composited over the
+// The renderer's z-buffer image (Gröller & Wegenkittl 1994, §3.1), already depth-cued and composited over the
 // project background by ChaosRenderer::snapshot(); uploaded with row 0 at the top.
 in vec2 vUv;
 uniform sampler2D uImage;

@@ -2,49 +2,7 @@
 
 #include <imgui.h>
 
-#include "core/model_types.h"
-
 namespace gridifs::ui {
-
-void EditQueue::commit(std::string label, Document::Change change) {
-  items_.push_back({Kind::Commit, std::move(label), std::move(change)});
-}
-void EditQueue::begin(std::string label) { items_.push_back({Kind::Begin, std::move(label), {}}); }
-void EditQueue::update(Document::Change change) { items_.push_back({Kind::Update, {}, std::move(change)}); }
-void EditQueue::end() { items_.push_back({Kind::End, {}, {}}); }
-void EditQueue::cancel() { items_.push_back({Kind::Cancel, {}, {}}); }
-void EditQueue::undo() { items_.push_back({Kind::Undo, {}, {}}); }
-void EditQueue::redo() { items_.push_back({Kind::Redo, {}, {}}); }
-void EditQueue::after(std::function<void()> action) { after_.push_back(std::move(action)); }
-
-std::string EditQueue::apply(Document& document) {
-  std::string error;
-  for (Item& item : items_) {
-    try {
-      switch (item.kind) {
-        case Kind::Commit: document.edit(item.label, item.change); break;
-        case Kind::Begin: document.beginGesture(item.label); break;
-        case Kind::Update:
-          if (!document.inGesture()) document.beginGesture("Edit");
-          document.updateGesture(item.change);
-          break;
-        case Kind::End: document.endGesture(); break;
-        case Kind::Cancel: document.cancelGesture(); break;
-        case Kind::Undo: document.undo(); break;
-        case Kind::Redo: document.redo(); break;
-      }
-    } catch (const ModelError& e) {
-      error = e.what();
-    } catch (const std::exception& e) {
-      error = e.what();
-    }
-  }
-  items_.clear();
-  auto actions = std::move(after_);
-  after_.clear();
-  for (auto& action : actions) action();
-  return error;
-}
 
 void gestureItem(EditQueue& edits, const std::string& label, bool changed, Document::Change change) {
   if (ImGui::IsItemActivated()) edits.begin(label);

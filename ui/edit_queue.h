@@ -1,46 +1,12 @@
 #pragma once
-// Edits collected while the UI is built and applied to the Document afterwards (DESIGN §6
-// "Fixed frame order": build UI → apply edits). Widgets edit local copies and enqueue one
-// change; a slider drag is one gesture (begin on IsItemActivated, end on deactivation).
-#include <functional>
+// The modeller's edit queue (edit/edit_queue.h) and the ImGui side of a gesture.
 #include <string>
-#include <vector>
 
-#include "core/document.h"
+#include "edit/edit_queue.h"
 
 namespace gridifs::ui {
 
-class EditQueue {
- public:
-  /// One undo step.
-  void commit(std::string label, Document::Change change);
-  /// A live-previewed gesture: begin, any number of updates, end (one undo step).
-  void begin(std::string label);
-  void update(Document::Change change);
-  void end();
-  void cancel();
-  void undo();
-  void redo();
-  /// Runs after this frame's document edits (file actions, selection changes that must see
-  /// the edited document).
-  void after(std::function<void()> action);
-
-  bool empty() const { return items_.empty() && after_.empty(); }
-
-  /// Applies everything in order. A change the Document rejects (ModelError) is dropped and
-  /// its message returned (the last one); the document keeps its last valid state.
-  std::string apply(Document& document);
-
- private:
-  enum class Kind { Commit, Begin, Update, End, Cancel, Undo, Redo };
-  struct Item {
-    Kind kind;
-    std::string label;
-    Document::Change change;
-  };
-  std::vector<Item> items_;
-  std::vector<std::function<void()>> after_;
-};
+using gridifs::EditQueue;
 
 /// The undo-per-gesture pattern for the ImGui item just submitted: begin on activation,
 /// apply `change` when `changed`, end on deactivation.

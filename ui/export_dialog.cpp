@@ -9,10 +9,11 @@
 #include <cstdio>
 #include <memory>
 
-#include "core/compiled_ifs.h"
-#include "core/mesh_io.h"
-#include "core/point_cloud_export.h"
-#include "core/project_io.h"
+#include "base/text_format.h"
+#include "render/compiled_ifs.h"
+#include "mesh/mesh_io.h"
+#include "io/point_cloud_export.h"
+#include "io/project_io.h"
 #include "ui/widgets.h"
 
 namespace gridifs::ui {
@@ -21,15 +22,6 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr std::int64_t kMaxGuiPointSamples = 1'000'000'000;  // as the CLI: 15 GB of PLY
-
-std::string withThousands(std::uint64_t n) {
-  std::string digits = std::to_string(n), out;
-  for (std::size_t i = 0; i < digits.size(); ++i) {
-    if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
-    out += digits[i];
-  }
-  return out;
-}
 
 std::string megabytes(std::uint64_t bytes) {
   char text[32];
@@ -97,21 +89,19 @@ void ExportDialog::updatePlan(const ModellerState& state) {
   plan_.output = meshOutput_;
   plan_.error.clear();
   try {
-    const auto format = meshFormatFromPath(meshOutput_);
-    BaseMeshSpec spec;
-    spec.shape = base_ == 0 ? BaseShape::Cube : base_ == 1 ? BaseShape::Sphere : BaseShape::File;
-    spec.file = baseFile_;
-    spec.subdivision = subdivide_;
-    spec.scheme = smooth_ ? SubdivisionScheme::Smooth : SubdivisionScheme::Flat;
-    spec.triangulate = format && formatNeedsTriangles(*format);
-    spec.fitToCube = fit_;
+    const BaseMeshSpec spec = meshSpec(meshFormatFromPath(meshOutput_));
     DeterministicOptions options;
     options.depth = depth_;
     if (spec.shape == BaseShape::File && baseFile_.empty()) throw ModelError("", "choose a base mesh file");
-    plan_.plan = planDeterministic(snapshotDeterministicIfs(state.document), spec, options);
+    plan_.plan = planDeterministic(snapshotDeterministicIfs(state.document.project(), state.document.evaluation()), spec, options);
   } catch (const std::exception& e) {
     plan_.error = e.what();
   }
+}
+
+BaseMeshSpec ExportDialog::meshSpec(std::optional<MeshFormat> outputFormat) const {
+  const BaseShape shape = base_ == 0 ? BaseShape::Cube : base_ == 1 ? BaseShape::Sphere : BaseShape::File;
+  return baseMeshSpec(shape, baseFile_, subdivide_, smooth_, fit_, outputFormat);
 }
 
 void ExportDialog::drawMeshOptions(ModellerState& state) {
@@ -120,7 +110,7 @@ void ExportDialog::drawMeshOptions(ModellerState& state) {
   ImGui::SliderInt("Depth n", &depth_, 0, 12, "%d", ImGuiSliderFlags_AlwaysClamp);
   state.probe.frame("export.depth");
   ImGui::SameLine();
-  helpMarker("n in F^n(A): the mesh is N^n transformed copies of the base (seed 004 §3.2)");
+  helpMarker("n in F^n(A): the mesh is N^n transformed copies of the base (Gröller & Wegenkittl 1994, §3.2)");
   static const char* bases[] = {"Cube", "Sphere", "Mesh file"};
   ImGui::Combo("Base A", &base_, bases, 3);
   state.probe.frame("export.base");
@@ -197,17 +187,11 @@ void ExportDialog::start(ModellerState& state) {
       updatePlan(state);
       if (!plan_.error.empty()) throw ModelError("", plan_.error);
       if (plan_.plan.overLimit) throw ModelError("", plan_.plan.message);
-      BaseMeshSpec spec;
-      spec.shape = base_ == 0 ? BaseShape::Cube : base_ == 1 ? BaseShape::Sphere : BaseShape::File;
-      spec.file = baseFile_;
-      spec.subdivision = subdivide_;
-      spec.scheme = smooth_ ? SubdivisionScheme::Smooth : SubdivisionScheme::Flat;
-      spec.triangulate = formatNeedsTriangles(*meshFormatFromPath(output));
-      spec.fitToCube = fit_;
+      const BaseMeshSpec spec = meshSpec(meshFormatFromPath(output));
       DeterministicOptions options;
       options.depth = depth_;
       const MeshWriteOptions writeOptions{!ascii_, true};
-      auto ifs = std::make_shared<DeterministicIfs>(snapshotDeterministicIfs(state.document));
+      auto ifs = std::make_shared<DeterministicIfs>(snapshotDeterministicIfs(state.document.project(), state.document.evaluation()));
       running_ = true;
       worker_ = std::thread([this, ifs, spec, options, writeOptions, output] {
         try {
@@ -236,7 +220,7 @@ void ExportDialog::start(ModellerState& state) {
         throw ModelError("", "the point file must be a .ply file: " + output.string());
       if (!fs::is_directory(output.parent_path().empty() ? fs::path(".") : output.parent_path(), ec))
         throw ModelError("", "the folder of " + output.string() + " does not exist");
-      auto ifs = compileIfs(state.document);
+      auto ifs = compileIfs(state.document.project(), state.document.evaluation());
       RenderJob job = RenderJob::fromProject(state.document.project(), 0);  // all cores, as the CLI
       job.samples = samples_;
       validateRenderJob(job);

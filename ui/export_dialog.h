@@ -1,5 +1,5 @@
 #pragma once
-// File > Export mesh… and Export points… (issue 5 §3): the options of `gridifs export-mesh` and
+// File > Export mesh… and Export points…: the options of `gridifs export-mesh` and
 // `gridifs export-points` in a modal dialog, the face-count/memory plan before starting, the work
 // on a background thread with a progress bar that can be cancelled, errors shown inline, and the
 // output written atomically (a temporary file renamed over the target).
@@ -7,11 +7,12 @@
 #include <filesystem>
 #include <mutex>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <thread>
 
-#include "core/base_mesh.h"
-#include "core/deterministic_ifs.h"
+#include "mesh/base_mesh.h"
+#include "mesh/deterministic_ifs.h"
 #include "ui/file_browser.h"
 #include "ui/modeller_state.h"
 
@@ -38,6 +39,8 @@ class ExportDialog {
  private:
   enum class Phase { Options, Running, Done, Failed, Cancelled };
   void drawMeshOptions(ModellerState& state);
+  /// The base-mesh spec of the dialog's options for an output of `outputFormat`.
+  BaseMeshSpec meshSpec(std::optional<MeshFormat> outputFormat) const;
   void drawPointsOptions(ModellerState& state);
   void updatePlan(const ModellerState& state);
   void start(ModellerState& state);

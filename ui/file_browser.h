@@ -1,5 +1,5 @@
 #pragma once
-// An in-app file browser (issue 4 "Files"): ImGui over std::filesystem, so opening and saving
+// An in-app file browser: ImGui over std::filesystem, so opening and saving
 // work the same on every platform and under Xvfb, without a desktop portal.
 #include <filesystem>
 #include <optional>

@@ -1,10 +1,10 @@
-// The flame display's controls in the preview toolbar (issue 6 §3, §6): the palette picker with
-// swatch strips (flam3's collection and ours) and the tone-mapping settings of seed 002 §4–8 as
+// The flame display's controls in the preview toolbar: the palette picker with
+// swatch strips (flam3's collection and ours) and the tone-mapping settings of Draves & Reckase 2003, §4–8 as
 // edits of render.flame, one undo step per slider drag.
 #include <algorithm>
 #include <cstdio>
 
-#include "core/palette.h"
+#include "flame/palette.h"
 #include "ui/preview_modes.h"
 #include "ui/widgets.h"
 
@@ -81,7 +81,7 @@ void PreviewModes::drawFlameControls(ModellerState& state, EditQueue& edits) {
   }
 
   // Palette picker: the combo lists every palette with its swatch; the strip beside it shows the
-  // current one (seed 002 §5: the color coordinate c indexes a 256-entry palette).
+  // current one (Draves & Reckase 2003, §5: the color coordinate c indexes a 256-entry palette).
   const PaletteCatalog::Entry* current = palettes_.find(f.palette);
   ImGui::SetNextItemWidth(em * 7.5f);
   ImGui::SetNextWindowSizeConstraints(ImVec2(em * 27.0f, 0), ImVec2(em * 34.0f, em * 24.0f));
@@ -113,7 +113,7 @@ void PreviewModes::drawFlameControls(ModellerState& state, EditQueue& edits) {
   }
   state.probe.item("flame.palette");
   contextHelp(state,
-              "Palette of the flame display: ours and flam3's collection (seed 002 §5); a change restarts the preview");
+              "Palette of the flame display: ours and flam3's collection (Draves & Reckase 2003, §5); a change restarts the preview");
   ImGui::SameLine();
   {
     const ImVec2 pos = ImGui::GetCursorScreenPos();
@@ -133,12 +133,12 @@ void PreviewModes::drawFlameControls(ModellerState& state, EditQueue& edits) {
   }
 
   if (ImGui::BeginPopup("##tonemapping")) {
-    sectionTitle("Tone mapping (seed 002 §4, §6)");
+    sectionTitle("Tone mapping (Draves & Reckase 2003, §4, §6)");
     ImGui::PushItemWidth(em * 14.0f);
     flameSlider(state, edits, "Brightness", "Brightness", f.brightness, 0.05, 100.0, "%.2f", true,
                 &FlameSettings::brightness, "flam3 brightness (k1): exposure of the log-density image");
     flameSlider(state, edits, "Gamma", "Gamma", f.gamma, 0.5, 10.0, "%.2f", false, &FlameSettings::gamma,
-                "Gamma of the log-density image (seed 002 §6)");
+                "Gamma of the log-density image (Draves & Reckase 2003, §6)");
     flameSlider(state, edits, "Gamma threshold", "Gamma threshold", f.gamma_threshold, 0.0, 1.0, "%.4f", false,
                 &FlameSettings::gamma_threshold,
                 "Below this density the gamma curve is linear (less noise in thin areas)");
@@ -147,7 +147,7 @@ void PreviewModes::drawFlameControls(ModellerState& state, EditQueue& edits) {
     flameSlider(state, edits, "Highlight power", "Highlight power", f.highlight_power, -1.0, 10.0, "%.2f", false,
                 &FlameSettings::highlight_power, "How saturated highlights turn white; negative clips instead");
     ImGui::Spacing();
-    sectionTitle("Density estimation (seed 002 §8)");
+    sectionTitle("Density estimation (Draves & Reckase 2003, §8)");
     bool estimate = f.estimator_radius > 0.0;
     if (ImGui::Checkbox("Density estimation", &estimate)) {
       const double radius = estimate ? std::max(FlameSettings{}.estimator_radius, f.estimator_minimum) : 0.0;

@@ -3,8 +3,8 @@
 #include <chrono>
 #include <memory>
 
-#include "core/flame_render.h"
-#include "core/palette.h"
+#include "render/flame_render.h"
+#include "flame/palette.h"
 
 namespace gridifs::ui {
 

@@ -1,5 +1,5 @@
 #pragma once
-// The flame display of the preview (issue 6 §6; seed 002 §4–8): the same chaos game as the
+// The flame display of the preview (Draves & Reckase 2003, §4–8): the same chaos game as the
 // z-buffer preview, with color sums always accumulated, developed into a flame image on a worker
 // thread every few hundred milliseconds, so switching modes never restarts the renderer and
 // developing never blocks the UI (docs/FLAME.md "For the GUI").
@@ -10,9 +10,9 @@
 #include <thread>
 #include <vector>
 
-#include "core/chaos_renderer.h"
-#include "core/document.h"
-#include "core/flame_settings.h"
+#include "render/chaos_renderer.h"
+#include "edit/document.h"
+#include "model/flame_settings.h"
 
 namespace gridifs::ui {
 

@@ -1,4 +1,4 @@
-// The functions of the IFS (issue 4 "Functions"; seed 004 §4.5: each grid is positioned in the
+// The functions of the IFS (Gröller & Wegenkittl 1994, §4.5: each grid is positioned in the
 // common initial grid by an affine placement).
 #include <imgui.h>
 #include <imgui_stdlib.h>
@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "core/contractivity.h"
+#include "model/contractivity.h"
 #include "ui/panels.h"
 #include "ui/widgets.h"
 
@@ -156,7 +156,7 @@ void drawFunctionsPanel(ModellerState& state, EditQueue& edits) {
   double paletteIndex = f.palette_index;
   changed = sliderDouble("Palette idx", paletteIndex, 0.0, 1.0);
   gestureItem(edits, "Palette index", changed, [fi, paletteIndex](Project& p) { p.functions[std::size_t(fi)].palette_index = paletteIndex; });
-  contextHelp(state, "Structural color coordinate c_i for flame-style coloring (seed 002 §5)");
+  contextHelp(state, "Structural color coordinate c_i for flame-style coloring (Draves & Reckase 2003, §5)");
 
   int resolution[3] = {f.resolution[0], f.resolution[1], f.resolution[2]};
   changed = ImGui::DragInt3("Resolution", resolution, 0.1f, limits::kMinResolution, limits::kMaxResolution);
@@ -180,7 +180,7 @@ void drawFunctionsPanel(ModellerState& state, EditQueue& edits) {
   }
   ImGui::PopItemWidth();
 
-  // Contractivity (seed 004 §1.1): an IFS function must shrink distances.
+  // Contractivity (Gröller & Wegenkittl 1994, §1.1): an IFS function must shrink distances.
   auto& contractivity = state.contractivity;
   if (contractivity.revision != state.document.revision() || contractivity.function != fi) {
     contractivity.revision = state.document.revision();

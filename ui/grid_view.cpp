@@ -8,8 +8,8 @@
 #include <map>
 #include <utility>
 
-#include "core/node_picking.h"
-#include "core/stack_evaluator.h"
+#include "edit/node_picking.h"
+#include "model/stack_evaluator.h"
 
 namespace gridifs::ui {
 namespace {
@@ -294,7 +294,7 @@ void GridView::beginDrag(ModellerState& state, EditQueue& edits, dvec2 mouse) {
 
   dragFunctionIndex_ = state.activeFunction;
   dragFunction_ = state.function();
-  if (io.KeyAlt) {  // place the point center of transformation (seed 004 §4.3)
+  if (io.KeyAlt) {  // place the point center of transformation (Gröller & Wegenkittl 1994, §4.3)
     const Vec3 p = cam.orbit.target + cam.dragDelta(mouse.x - size_.x * 0.5, mouse.y - size_.y * 0.5,
                                                     cam.orbit.target, size_.y);
     state.pointCenter = p;

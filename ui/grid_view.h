@@ -1,14 +1,14 @@
 #pragma once
-// One grid view (seed 004 §4.2): the active function's grid from the top, side, front or an
+// One grid view (Gröller & Wegenkittl 1994, §4.2): the active function's grid from the top, side, front or an
 // orbiting user view, or the IFS view with every function placed in the common initial grid.
 // build() runs while the UI is built (input → edits); render() draws into the view's target
-// after the edits are applied (DESIGN §6 frame order).
+// after the edits are applied (the fixed frame order of ui/modeller_app.cpp).
 #include <cstdint>
 #include <glm/vec2.hpp>
 #include <string>
 #include <vector>
 
-#include "core/view_camera.h"
+#include "edit/view_camera.h"
 #include "ui/edit_queue.h"
 #include "ui/gl_resources.h"
 #include "ui/modeller_state.h"

@@ -1,4 +1,4 @@
-// The shortcuts window (issue 4 "Edit": a Help window listing them).
+// The shortcuts window: a Help window listing every keyboard shortcut.
 #include <imgui.h>
 
 #include <algorithm>

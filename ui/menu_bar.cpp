@@ -1,9 +1,9 @@
-// The main menu and the keyboard shortcuts (issue 4 "Edit" and "Files"; seed 004 §4.2: "all
+// The main menu and the keyboard shortcuts (Gröller & Wegenkittl 1994, §4.2: "all
 // functions can be activated by a menu").
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
-#include "core/node_picking.h"
+#include "edit/node_picking.h"
 #include "ui/app_commands.h"
 #include "ui/export_dialog.h"
 #include "ui/symmetry_menu.h"
@@ -48,7 +48,7 @@ float drawMenuBar(AppCommands& app) {
     if (ImGui::MenuItem("Save As...", "Ctrl+Shift+S")) app.files.saveAsDialog();
     ImGui::Separator();
     if (app.exporter) {
-      app.exporter->drawMenuItems(s);  // issue 5: Export mesh..., Export points...
+      app.exporter->drawMenuItems(s);  // Export mesh..., Export points...
       ImGui::Separator();
     }
     if (ImGui::MenuItem("Quit", "Ctrl+Q")) app.files.requestQuit();
@@ -65,7 +65,7 @@ float drawMenuBar(AppCommands& app) {
   }
   if (ImGui::BeginMenu("Function")) {
     if (ImGui::MenuItem("Add 6x6x6 grid")) addFunction(s, app.edits);
-    drawSymmetryMenu(s, app.edits);  // issue 6 §5 (ui/symmetry_menu.cpp)
+    drawSymmetryMenu(s, app.edits);  // ui/symmetry_menu.cpp
     ImGui::Separator();
     const auto& functions = d.project().functions;
     for (int i = 0; i < int(functions.size()); ++i)
@@ -96,7 +96,6 @@ float drawMenuBar(AppCommands& app) {
       if (ImGui::MenuItem(names[v], keys[v], s.maximizedGridView == v)) toggleView(s, v);
     ImGui::Separator();
     if (ImGui::BeginMenu("Preview mode")) {
-      // Issue 6 adds the flame display here; the deterministic mesh preview (issue 5) too.
       if (ImGui::MenuItem("Z-buffer (nearest point)", nullptr, s.previewMode == PreviewMode::ZBuffer))
         s.previewMode = PreviewMode::ZBuffer;
       if (ImGui::MenuItem("Flame (log density)", nullptr, s.previewMode == PreviewMode::Flame))

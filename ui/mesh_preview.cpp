@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <glm/gtc/type_ptr.hpp>
 
-#include "core/camera.h"
+#include "render/camera.h"
 
 namespace gridifs::ui {
 namespace {
@@ -54,7 +54,7 @@ void MeshPreview::update(const Document& document) {
   // enough to read; the sphere is already fine at level 0.
   request.spec.subdivision = sphere ? 0 : 1;
   try {
-    request.ifs = snapshotDeterministicIfs(document);
+    request.ifs = snapshotDeterministicIfs(document.project(), document.evaluation());
     // The safe maximum: the deepest n within the preview's face cap and the memory budget.
     DeterministicOptions options;
     const MeshCounts base = predictBaseCounts(loadCoarseBase(request.spec), request.spec);

@@ -1,5 +1,5 @@
 #pragma once
-// The deterministic preview mode (issue 5 §3; seed 004 §3.2 and figure 2): F^n(A) of a cube or a
+// The deterministic preview mode (Gröller & Wegenkittl 1994, §3.2 and figure 2): F^n(A) of a cube or a
 // sphere drawn as a lit mesh in the preview window, so the artist sees an initial shape converge
 // to the attractor as n grows. The mesh is built on a worker thread (cancelled and restarted when
 // the functions, the depth or the base change); the UI thread only plans, uploads and draws.
@@ -13,8 +13,9 @@
 #include <thread>
 #include <vector>
 
-#include "core/base_mesh.h"
-#include "core/deterministic_ifs.h"
+#include "mesh/base_mesh.h"
+#include "edit/document.h"
+#include "mesh/deterministic_ifs.h"
 #include "ui/gl_resources.h"
 
 namespace gridifs::ui {

@@ -1,5 +1,5 @@
-// The modeller's window and frame loop (issue 4; DESIGN §6 "Fixed frame order": poll → build
-// UI (collect edits) → apply edits → publish renderer snapshot → draw views → ImGui render).
+// The modeller's window and its fixed frame order: poll → build
+// UI (collect edits) → apply edits → publish renderer snapshot → draw views → ImGui render.
 #include "ui/modeller_app.h"
 
 #include <epoxy/gl.h>
@@ -20,6 +20,7 @@
 #include <numeric>
 #include <vector>
 
+#include "base/atomic_file.h"
 #include "ui/app_commands.h"
 #include "ui/app_window.h"
 #include "ui/export_dialog.h"
@@ -96,7 +97,7 @@ class ModellerApp {
   std::array<GridView, 4> views_;
   GridView ifsView_;
   PreviewView preview_;
-  ExportDialog export_;  // File > Export (issue 5)
+  ExportDialog export_;  // File > Export
   std::unique_ptr<AppCommands> commands_;
   std::string iniPath_, title_;
   bool resetLayout_ = false;
@@ -298,13 +299,11 @@ void ModellerApp::writeProbe(double frameMs) {
   nlohmann::json ifsNodes = nlohmann::json::array();
   for (const glm::dvec2& p : ifsView_.screenNodes(state_)) ifsNodes.push_back({p.x, p.y});
   j["nodes_ifs"] = ifsNodes;
-  const std::string tmp = options_.probe + ".tmp";
-  {
-    std::ofstream out(tmp);
-    out << j.dump(1);
+  try {
+    writeFileAtomically(options_.probe, j.dump(1));
+  } catch (const IoError&) {
+    // A probe for tests only: a failed write leaves the last probe, which the test then reads.
   }
-  std::error_code ec;
-  fs::rename(tmp, options_.probe, ec);
 }
 
 int ModellerApp::run() {

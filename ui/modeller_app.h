@@ -1,5 +1,5 @@
 #pragma once
-// The interactive modeller (issue 4). app/open_modeller.cpp hands off here.
+// The interactive modeller. app/open_modeller.cpp hands off here.
 #include <string>
 
 namespace gridifs::ui {

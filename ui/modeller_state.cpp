@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "core/node_picking.h"
-#include "core/stack_evaluator.h"
+#include "edit/node_picking.h"
+#include "model/stack_evaluator.h"
 
 namespace gridifs::ui {
 

@@ -1,6 +1,6 @@
 #pragma once
 // Everything the modeller window knows besides the Document: which function and op are
-// active, the artist's current node selection (UI state, not saved, as in InterIFS §4.4:
+// active, the artist's current node selection (UI state, not saved, as in Gröller & Wegenkittl 1994, §4.4:
 // "as long as a subset is active, all following operations are applied only to it"),
 // messages, and window toggles. Owned by the UI thread; panels read it and enqueue edits.
 #include <filesystem>
@@ -8,15 +8,15 @@
 #include <string>
 #include <vector>
 
-#include "core/chaos_renderer.h"
-#include "core/document.h"
-#include "core/grid.h"
+#include "render/chaos_renderer.h"
+#include "edit/document.h"
+#include "model/grid.h"
 #include "ui/widgets.h"
 
 namespace gridifs::ui {
 
 /// What the preview shows; later modes (flame display, deterministic mesh) join this list.
-enum class PreviewMode { ZBuffer, Flame, Mesh };  // Flame: issue 6; Mesh: F^n(A), issue 5
+enum class PreviewMode { ZBuffer, Flame, Mesh };  // Mesh: F^n(A)
 
 class ModellerState {
  public:
@@ -53,7 +53,7 @@ class ModellerState {
   std::string statusText;
   bool statusIsError = false;
   double statusTime = 0.0;
-  /// Context help for the status line (§4.2), set each frame by the hovered widget or view.
+  /// Context help for the status line (Gröller & Wegenkittl 1994, §4.2), set each frame by the hovered widget or view.
   std::string contextHelp;
 
   // Windows and modes.
@@ -81,7 +81,7 @@ class ModellerState {
     int function = -1, op = -1;
     std::array<std::string, 3> text, base;
   } calculatorEdit;
-  /// Display cache of the active function's contractivity bound (seed 004 §1.1).
+  /// Display cache of the active function's contractivity bound (Gröller & Wegenkittl 1994, §1.1).
   struct {
     std::uint64_t revision = 0;
     int function = -1;

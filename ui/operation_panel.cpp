@@ -1,4 +1,4 @@
-// Every parameter of the active operation, edited live (issue 4 "Operations"; seed 004 §2 and
+// Every parameter of the active operation, edited live (Gröller & Wegenkittl 1994, §2 and
 // §4.3). Each slider drag is one undo step: the Document gesture begins on IsItemActivated
 // and commits on deactivation; while dragging, the preview restarts every frame.
 #include <imgui.h>
@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "core/calculator.h"
-#include "core/node_picking.h"
+#include "model/calculator.h"
+#include "edit/node_picking.h"
 #include "ui/panels.h"
 #include "ui/widgets.h"
 
@@ -53,7 +53,7 @@ void profileOp(OpEditor& e, Op& p, const char* name, double kRange, const char* 
   e.item(n + " axis", c);
   c = profileCombo("Profile", p.profile);
   e.item(n + " profile", c);
-  e.state.contextHelp = ImGui::IsItemHovered() ? "linear: k·t · sine: k·sin(ω·t) · ping-pong: k·tri(ω·t) (seed 004 figure 13)"
+  e.state.contextHelp = ImGui::IsItemHovered() ? "linear: k·t · sine: k·sin(ω·t) · ping-pong: k·tri(ω·t) (Gröller & Wegenkittl 1994, figure 13)"
                                                : e.state.contextHelp;
   c = sliderDouble("k", p.k, -kRange, kRange);
   e.state.probe.item(n + ".k");
@@ -135,7 +135,7 @@ void calculatorEditor(OpEditor& e, CalculatorOp& calc) {
     c = sliderDouble(label, var.value, lo, hi == lo ? lo + 1.0 : hi);
     e.state.probe.item("calculator.v" + std::to_string(v + 1));
     e.item("Calculator v" + std::to_string(v + 1), c);
-    contextHelp(e.state, "A user variable of the expressions (seed 004 §4.3); its range is editable on both sides");
+    contextHelp(e.state, "A user variable of the expressions (Gröller & Wegenkittl 1994, §4.3); its range is editable on both sides");
     ImGui::SameLine();
     ImGui::SetNextItemWidth(rangeWidth);
     c = dragDouble("##max", var.max, 0.01, -1e6, 1e6, "%.2f");
@@ -154,7 +154,7 @@ void calculatorEditor(OpEditor& e, CalculatorOp& calc) {
 void morphEditor(OpEditor& e, MorphOp& morph) {
   bool c = sliderDouble("Strength", morph.strength, -2.0, 2.0);
   e.item("Morph strength", c);
-  contextHelp(e.state, "1: every start point lands exactly on its end point (seed 004 §2.6)");
+  contextHelp(e.state, "1: every start point lands exactly on its end point (Gröller & Wegenkittl 1994, §2.6)");
   bool& asDirection = e.state.morphAsDirection;
   ImGui::Checkbox("Enter end as direction", &asDirection);
   int remove = -1;
@@ -211,7 +211,7 @@ void centerAndSelection(OpEditor& e) {
       if (e.op.center.kind == Center::Kind::Point) e.op.center.point = e.state.pointCenter;
     }
     e.item("Operation center", c);
-    contextHelp(e.state, absolute ? "Magnet and morph work in absolute coordinates" : "Center of transformation (seed 004 §4.3)");
+    contextHelp(e.state, absolute ? "Magnet and morph work in absolute coordinates" : "Center of transformation (Gröller & Wegenkittl 1994, §4.3)");
     if (e.op.center.kind == Center::Kind::Point) {
       c = dragVec3("Point", e.op.center.point, 0.005);
       e.item("Center point", c);
@@ -267,13 +267,13 @@ void drawOperationPanel(ModellerState& state, EditQueue& edits) {
           const bool c = dragVec3("Factors", p.factors, 0.005, -10.0, 10.0);
           e.item("Scale", c);
         } else if constexpr (std::is_same_v<T, TaperOp>) {
-          ImGui::TextUnformatted("Taper (seed 004 §2.2)");
+          ImGui::TextUnformatted("Taper (Gröller & Wegenkittl 1994, §2.2)");
           profileOp(e, p, "taper", 3.0, "Taper strength: the cross-section scales by f(t) = 1 + k·profile(t)");
         } else if constexpr (std::is_same_v<T, TwistOp>) {
-          ImGui::TextUnformatted("Twist (seed 004 §2.3)");
+          ImGui::TextUnformatted("Twist (Gröller & Wegenkittl 1994, §2.3)");
           profileOp(e, p, "twist", 2.0 * M_PI, "Twist rate in radians per unit along the axis");
         } else if constexpr (std::is_same_v<T, BendOp>) {
-          ImGui::TextUnformatted("Bend (seed 004 §2.4, Barr)");
+          ImGui::TextUnformatted("Bend (Gröller & Wegenkittl 1994, §2.4, Barr)");
           bool c = axisCombo("Axis", p.axis);
           e.item("Bend axis", c);
           c = axisCombo("Toward", p.toward);
@@ -284,7 +284,7 @@ void drawOperationPanel(ModellerState& state, EditQueue& edits) {
           e.item("Bend k", c);
           contextHelp(state, "Curvature: the bend radius is 1/k; 0 leaves the grid straight");
         } else if constexpr (std::is_same_v<T, MagnetOp>) {
-          ImGui::TextUnformatted("Magnet (seed 004 §2.5)");
+          ImGui::TextUnformatted("Magnet (Gröller & Wegenkittl 1994, §2.5)");
           bool c = sliderDouble("Distance", p.dmax, 0.0, 3.0);
           e.item("Magnet distance", c);
           contextHelp(state, "Range d_max: nodes farther from the magnet do not move");
@@ -306,10 +306,10 @@ void drawOperationPanel(ModellerState& state, EditQueue& edits) {
           }
           contextHelp(state, "Put the magnet at the center point placed with Alt+click");
         } else if constexpr (std::is_same_v<T, MorphOp>) {
-          ImGui::TextUnformatted("Point morph (seed 004 §2.6)");
+          ImGui::TextUnformatted("Point morph (Gröller & Wegenkittl 1994, §2.6)");
           morphEditor(e, p);
         } else if constexpr (std::is_same_v<T, CalculatorOp>) {
-          ImGui::TextUnformatted("Universal calculator (seed 004 §4.3)");
+          ImGui::TextUnformatted("Universal calculator (Gröller & Wegenkittl 1994, §4.3)");
           calculatorEditor(e, p);
         } else if constexpr (std::is_same_v<T, NodesOp>) {
           ImGui::Text("Direct node moves: %zu", p.moves.size());

@@ -1,11 +1,11 @@
-// The active function's operation stack (issue 4 "Operations"; seed 004 §2, §4.3): add each
+// The active function's operation stack (Gröller & Wegenkittl 1994, §2, §4.3): add each
 // op with the current selection, pick, reorder, mute and delete.
 #include <imgui.h>
 
 #include <cmath>
 #include <cstdio>
 
-#include "core/stack_evaluator.h"
+#include "model/stack_evaluator.h"
 #include "ui/panels.h"
 #include "ui/widgets.h"
 
@@ -87,7 +87,7 @@ void addOperation(ModellerState& state, EditQueue& edits, NewOpKind kind) {
     return;
   }
   Operation op;
-  op.selection = state.selection();  // InterIFS §4.4: the active subset applies to new ops
+  op.selection = state.selection();  // Gröller & Wegenkittl 1994, §4.4: the active subset applies to new ops
   op.center.kind = state.newOpCenter;
   op.center.point = state.pointCenter;
   // Magnets and morphs start where the artist is working: the selection's or grid's center.

@@ -1,5 +1,5 @@
 #pragma once
-// The modeller's panels, one per file (DESIGN §6): each draws from the Document (through the
+// The modeller's panels, one per file: each draws from the Document (through the
 // ModellerState) and emits edits; none holds geometry logic.
 #include "ui/edit_queue.h"
 #include "ui/modeller_state.h"
@@ -7,7 +7,7 @@
 namespace gridifs::ui {
 
 /// functions_panel.cpp: the IFS's functions — add, duplicate, delete, reorder, mute, rename,
-/// weight, color, palette index, resolution, placement (seed 004 §4.5).
+/// weight, color, palette index, resolution, placement (Gröller & Wegenkittl 1994, §4.5).
 void drawFunctionsPanel(ModellerState& state, EditQueue& edits);
 /// operation_stack_panel.cpp: add operations (with the current selection) and reorder, mute,
 /// delete and pick them in the active function's stack.

@@ -41,13 +41,13 @@ void PreviewModes::buildToolbar(ModellerState& state, EditQueue& edits) {
     contextHelp(state, help);
   };
   modeButton("Z-buffer", PreviewMode::ZBuffer, "preview.mode.zbuffer",
-             "Nearest surface of the attractor, depth-cued (seed 004 §3.1)");
+             "Nearest surface of the attractor, depth-cued (Gröller & Wegenkittl 1994, §3.1)");
   ImGui::SameLine();
   modeButton("Flame", PreviewMode::Flame, "preview.mode.flame",
-             "Log density colored by structure (seed 002 §4-8); same chaos game, no restart");
+             "Log density colored by structure (Draves & Reckase 2003, §4-8); same chaos game, no restart");
   ImGui::SameLine();
   modeButton("Mesh F^n(A)", PreviewMode::Mesh, "preview.mode.mesh",
-             "The deterministic algorithm (seed 004 §3.2): n levels of the IFS applied to a cube or sphere");
+             "The deterministic algorithm (Gröller & Wegenkittl 1994, §3.2): n levels of the IFS applied to a cube or sphere");
   // Menu (View > Preview mode) and toolbar both land here: z-buffer/flame become one undo step
   // on render.mode.
   if (state.previewMode != PreviewMode::Mesh) {

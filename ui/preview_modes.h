@@ -1,5 +1,5 @@
 #pragma once
-// The preview's display modes (issue 6 §6: z-buffer | flame over the same chaos game; issue 5 §3:
+// The preview's display modes (z-buffer | flame over the same chaos game |
 // the deterministic mesh F^n(A)), owned by PreviewView: a second toolbar row with the mode switch
 // and the mode's controls, and what the preview texture shows in each mode.
 #include <imgui.h>

@@ -1,6 +1,6 @@
 #include "ui/preview_renderer.h"
 
-#include "core/compiled_ifs.h"
+#include "render/compiled_ifs.h"
 #include "ui/flame_display.h"
 
 namespace gridifs::ui {
@@ -11,28 +11,27 @@ void PreviewRenderer::publish(const Document& document, int width, int height, i
   if (document.revision() == revision_ && width == width_ && height == height_ && threads == threads_) return;
   revision_ = document.revision();
   const Project& project = document.project();
-  const DisplaySettings display = DisplaySettings::fromProject(project);
-  if (!(display.background == display_.background) || display.depthCue != display_.depthCue) {
-    display_ = display;
-    displayChanged_ = true;
+  const Revisions& now = document.revisions();
+  if (now.display != published_.display) {
+    const DisplaySettings display = DisplaySettings::fromProject(project);
+    if (!(display.background == display_.background) || display.depthCue != display_.depthCue) {
+      display_ = display;
+      displayChanged_ = true;
+    }
   }
-  // Background and depth cue only change how snapshot() colours the buffers: no restart.
-  Project relevant = project;
-  relevant.render.background = Vec3(0.0);
-  relevant.render.depth_cue = 0.0;
-  // The flame display (issue 6) is developed from the same buffers (ui/flame_display.cpp): the
-  // mode and the tone mapping need no restart; only the palette is looked up per sample.
-  relevant.render.mode = DisplayMode::ZBuffer;
-  relevant.render.flame = FlameSettings{};
-  relevant.render.flame.palette = project.render.flame.palette;
-  if (havePublished_ && relevant == published_ && width == width_ && height == height_ && threads == threads_)
-    return;
+  // Background, depth cue, the display mode and the flame tone mapping only change how the
+  // buffers become a picture (snapshot(), ui/flame_display.cpp): no restart. The palette is
+  // looked up per sample, so it is a render input.
+  const bool sameInput =
+      now.geometry == published_.geometry && now.render == published_.render && now.camera == published_.camera;
+  published_ = now;
+  if (havePublished_ && sameInput && width == width_ && height == height_ && threads == threads_) return;
   try {
-    auto ifs = compileIfs(document);
+    auto ifs = compileIfs(document.project(), document.evaluation());
     RenderJob job = RenderJob::fromProject(project, threads);
     job.width = width;
     job.height = height;
-    job.lowPriority = true;  // the UI thread gets a core first (issue 4: ≥ 30 fps while rendering)
+    job.lowPriority = true;  // the UI thread gets a core first (the modeller stays at ≥ 30 fps while rendering)
     job = previewFlameJob(job, document);  // color sums always on: the mode switch is instant
     renderer_.restart(std::move(ifs), job);
     if (paused_) renderer_.pause();
@@ -41,7 +40,6 @@ void PreviewRenderer::publish(const Document& document, int width, int height, i
     error_.clear();
   } catch (const ModelError& e) {
     // Keep showing the last image; the artist sees why in the status bar.
-    published_ = relevant;
     havePublished_ = true;
     width_ = width;
     height_ = height;
@@ -49,7 +47,6 @@ void PreviewRenderer::publish(const Document& document, int width, int height, i
     error_ = e.what();
     return;
   }
-  published_ = std::move(relevant);
   havePublished_ = true;
   width_ = width;
   height_ = height;

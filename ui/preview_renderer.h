@@ -1,13 +1,13 @@
 #pragma once
-// The bridge between the Document and the background ChaosRenderer (DESIGN §1): when the
+// The bridge between the Document and the background ChaosRenderer: when the
 // document's revision or the preview size changes, compile a new immutable snapshot and
 // restart the workers (a new generation); each frame, merge what the workers have so far.
 // Never waits on workers: restart() only publishes, snapshot() reads while they run.
 #include <cstdint>
 #include <string>
 
-#include "core/chaos_renderer.h"
-#include "core/document.h"
+#include "render/chaos_renderer.h"
+#include "edit/document.h"
 
 namespace gridifs::ui {
 
@@ -32,7 +32,7 @@ class PreviewRenderer {
  private:
   ChaosRenderer renderer_;
   std::uint64_t revision_ = 0;
-  Project published_;  // what the workers render, display-only settings excluded
+  Revisions published_{0, 0, 0, 0};  // the document's revisions at the last publish
   bool havePublished_ = false;
   int width_ = 0, height_ = 0, threads_ = 0;
   DisplaySettings display_;

@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <cstdio>
 
-#include "core/view_camera.h"
+#include "edit/view_camera.h"
 #include "ui/widgets.h"
 
 namespace gridifs::ui {
@@ -48,7 +48,7 @@ void PreviewView::build(ModellerState& state, EditQueue& edits, float framebuffe
   ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.0f);
   bool changed = sliderDouble("##cue", cue, 0.0, 1.0, "depth cue %.2f");
   gestureItem(edits, "Depth cue", changed, [cue](Project& p) { p.render.depth_cue = cue; });
-  contextHelp(state, "Depth cueing (seed 004 §3.1): 0 keeps colors, 1 fades the farthest points to black");
+  contextHelp(state, "Depth cueing (Gröller & Wegenkittl 1994, §3.1): 0 keeps colors, 1 fades the farthest points to black");
   ImGui::SameLine();
   float bg[3] = {float(project.render.background.x), float(project.render.background.y), float(project.render.background.z)};
   changed = ImGui::ColorEdit3("Background", bg, ImGuiColorEditFlags_NoInputs);

@@ -1,5 +1,5 @@
 #pragma once
-// The preview window (issue 4 "Preview"; seed 004 §4.2 "the rendered result"): the renderer's
+// The preview window (Gröller & Wegenkittl 1994, §4.2 "the rendered result"): the renderer's
 // z-buffer image, streamed while it fills, orbiting with the IFS user view; pause/resume,
 // sample budget, depth cueing and background.
 #include <glm/vec2.hpp>

@@ -10,7 +10,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "core/project_io.h"
+#include "base/atomic_file.h"
+#include "io/project_io.h"
 
 namespace gridifs::ui {
 namespace fs = std::filesystem;
@@ -193,7 +194,7 @@ void ProjectFiles::tick() {
     saveProject(d.project(), recoveryFile());
     std::error_code ec;
     fs::remove(fs::path(recoveryFile()).concat("~"), ec);
-    std::ofstream(fs::path(recoveryFile()).replace_extension(".path")) << d.path().string() << "\n";
+    writeFileAtomically(fs::path(recoveryFile()).replace_extension(".path"), d.path().string() + "\n");
     autosavedRevision_ = d.revision();
   } catch (const std::exception& e) {
     state_.error(std::string("Autosave failed: ") + e.what());
@@ -342,8 +343,13 @@ void ProjectFiles::loadRecent() {
 }
 
 void ProjectFiles::saveRecent() const {
-  std::ofstream out(folders_.config / "recent-files.txt");
-  for (const fs::path& p : recent_) out << p.string() << "\n";
+  std::string text;
+  for (const fs::path& p : recent_) text += p.string() + "\n";
+  try {
+    writeFileAtomically(folders_.config / "recent-files.txt", text);
+  } catch (const IoError&) {
+    // The recent-files list is a convenience: a read-only config folder must not stop a save.
+  }
 }
 
 }  // namespace gridifs::ui

@@ -1,5 +1,5 @@
 #pragma once
-// Files for the modeller (issue 4 "Files"): New/Open/Save/Save As, recent files, the prompt
+// Files for the modeller: New/Open/Save/Save As, recent files, the prompt
 // before losing unsaved work, load and save errors shown in the window (never fatal), and
 // autosave to a recovery file with an offer to recover after a crash.
 #include <filesystem>

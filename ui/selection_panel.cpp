@@ -1,4 +1,4 @@
-// Node selections (issue 4 "Selections"; seed 004 §4.4): index boxes combined with
+// Node selections (Gröller & Wegenkittl 1994, §4.4): index boxes combined with
 // or/and/xor/minus, select all/none/invert, and the center of transformation for new ops.
 #include <imgui.h>
 
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "core/node_picking.h"
+#include "edit/node_picking.h"
 #include "ui/panels.h"
 #include "ui/widgets.h"
 
@@ -115,7 +115,7 @@ void drawSelectionPanel(ModellerState& state, EditQueue& edits) {
   state.newOpCenter = Center::Kind(center);
   ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Point").x - ImGui::GetStyle().ItemInnerSpacing.x * 2);
   dragVec3("Point", state.pointCenter, 0.005);
-  contextHelp(state, "Alt+click in a grid view places this point (seed 004 §4.3: interactive center)");
+  contextHelp(state, "Alt+click in a grid view places this point (Gröller & Wegenkittl 1994, §4.3: interactive center)");
 }
 
 }  // namespace gridifs::ui

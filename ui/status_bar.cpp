@@ -1,4 +1,4 @@
-// The status line (seed 004 §4.2: "a status line, which contains context dependent
+// The status line (Gröller & Wegenkittl 1994, §4.2: "a status line, which contains context dependent
 // information"): points rendered, points/s, function count, the hovered control's help, and
 // the last message.
 #include <imgui.h>

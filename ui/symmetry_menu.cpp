@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "core/flame_symmetry.h"
+#include "flame/flame_symmetry.h"
 
 namespace gridifs::ui {
 
@@ -12,7 +12,7 @@ void drawSymmetryMenu(ModellerState& state, EditQueue& edits) {
   const bool open = ImGui::BeginMenu("Add symmetry");
   state.probe.item("menu.symmetry");
   if (!open) return;
-  // flam3's convention (seed 002 §7): n ≥ 2 rotations, n ≤ −1 a mirror plus |n| − 1 rotations.
+  // flam3's convention (Draves & Reckase 2003, §7): n ≥ 2 rotations, n ≤ −1 a mirror plus |n| − 1 rotations.
   struct Choice {
     int n;
     const char* label;
@@ -34,7 +34,7 @@ void drawSymmetryMenu(ModellerState& state, EditQueue& edits) {
     if (ImGui::IsItemHovered())
       state.contextHelp =
           "Adds functions (weight = the others' sum, color speed 0) that make the attractor symmetric "
-          "about the preview's view axis (seed 002 §7)";
+          "about the preview's view axis (Draves & Reckase 2003, §7)";
   }
   ImGui::EndMenu();
 }

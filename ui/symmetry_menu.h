@@ -1,5 +1,5 @@
 #pragma once
-// Function > Add symmetry (issue 6 §5; seed 002 §7): n-way rotational or dihedral symmetry about
+// Function > Add symmetry (Draves & Reckase 2003, §7): n-way rotational or dihedral symmetry about
 // the preview's view axis, added as functions (core/flame_symmetry.h) in one undo step.
 #include "ui/edit_queue.h"
 #include "ui/modeller_state.h"

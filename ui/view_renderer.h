@@ -1,6 +1,6 @@
 #pragma once
 // Draws the views' scenes (grid lines, nodes, handles) and the preview image into render
-// targets with the shaders of shaders/ (DESIGN §6). One instance per GL context.
+// targets with the shaders of shaders/. One instance per GL context.
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 #include <vector>

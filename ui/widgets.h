@@ -6,7 +6,7 @@
 #include <map>
 #include <string>
 
-#include "core/model_types.h"
+#include "base/types.h"
 
 namespace gridifs::ui {
 
@@ -17,7 +17,7 @@ bool dragDouble(const char* label, double& value, double speed, double min = 0.0
                 const char* format = "%.3f");
 bool dragVec3(const char* label, Vec3& value, double speed, double min = 0.0, double max = 0.0,
               const char* format = "%.3f");
-/// Sets the status line's context help while the last item is hovered (seed 004 §4.2).
+/// Sets the status line's context help while the last item is hovered (Gröller & Wegenkittl 1994, §4.2).
 void contextHelp(ModellerState& state, const char* text);
 /// A small section heading followed by a separator line.
 void sectionTitle(const char* text);

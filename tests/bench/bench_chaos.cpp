@@ -1,4 +1,4 @@
-// Chaos-game speed (issue 3 "Speed"): the canonical scene — 3 functions, 16×16×16 grids with
+// Chaos-game speed: the canonical scene — 3 functions, 16×16×16 grids with
 // non-trivial distortions, 1024×1024 z-buffer + density, perspective camera — with 1 and 2 render
 // threads, the plot-only limit (random scattered z-buffer + density writes at 1024²) and the preview
 // latency (first image with points after a restart). scripts/bench-vs-flam3 runs this next to
@@ -10,9 +10,9 @@
 #include <ctime>
 #include <thread>
 
-#include "core/chaos_kernel.h"
-#include "core/chaos_renderer.h"
-#include "core/compiled_ifs.h"
+#include "render/chaos_kernel.h"
+#include "render/chaos_renderer.h"
+#include "render/compiled_ifs.h"
 
 namespace gridifs {
 namespace {

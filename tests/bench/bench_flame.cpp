@@ -1,4 +1,4 @@
-// Flame display speed (issue 6 "Speed"): tone mapping + filters (log density, density estimation,
+// Flame display speed: tone mapping + filters (log density, density estimation,
 // spatial filter, gamma/vibrancy) at 1024² and 4096² against the chaos game that fills the
 // histogram, on assets/twisted_functions.gridifs (3D, perspective) with color accumulation and
 // per-sample palette lookup. The filters must not dominate a final render.
@@ -13,9 +13,9 @@
 #include <iterator>
 #include <map>
 
-#include "core/compiled_ifs.h"
-#include "core/flame_render.h"
-#include "core/project_io.h"
+#include "render/compiled_ifs.h"
+#include "render/flame_render.h"
+#include "io/project_io.h"
 
 namespace gridifs {
 namespace {

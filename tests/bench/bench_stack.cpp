@@ -1,9 +1,9 @@
-// Editing is live (issue 2): re-evaluating a 32×32×32 grid through a 10-op stack,
+// Editing is live: re-evaluating a 32×32×32 grid through a 10-op stack,
 // calculator included, must fit well inside a frame. Target: < 5 ms on one core.
 #include <benchmark/benchmark.h>
 
-#include "core/contractivity.h"
-#include "core/stack_evaluator.h"
+#include "model/contractivity.h"
+#include "model/stack_evaluator.h"
 
 using namespace gridifs;
 

@@ -1,5 +1,5 @@
-// The model verbs through the real executable: info, nodes, eval (DESIGN §4), and the
-// bad-input corpus (issue 2): every hostile file → exit 2, one sentence, nothing written.
+// The model verbs through the real executable: info, nodes, eval, and the
+// bad-input corpus: every hostile file → exit 2, one sentence, nothing written.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -88,7 +88,7 @@ TEST(CliModel, EveryExampleIsContractive) {
 }
 
 TEST(CliModel, NodesAgreeWithTheTwistFormula) {
-  // seed 004 §2.3 twist about the grid center, then placement scale 0.5: node = 0.5·twist(u).
+  // Gröller & Wegenkittl 1994, §2.3 twist about the grid center, then placement scale 0.5: node = 0.5·twist(u).
   ScratchDir dir("nodes");
   const double k = 1.3;
   writeText(dir.path / "t.gridifs",

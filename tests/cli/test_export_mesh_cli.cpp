@@ -1,4 +1,4 @@
-// gridifs export-mesh through the real executable (DESIGN §4, issue 5): every format loads back
+// gridifs export-mesh through the real executable: every format loads back
 // through OpenMesh with the right counts and colors; bad input → exit 2, one sentence naming the
 // file, nothing written.
 #include <gtest/gtest.h>
@@ -6,7 +6,7 @@
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <algorithm>
 
-#include "core/ifs_mesh.h"
+#include "mesh/ifs_mesh.h"
 #include "run_command.h"
 
 using namespace gridifs;

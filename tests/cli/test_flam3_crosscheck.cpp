@@ -1,4 +1,4 @@
-// Cross-check of the flame display against the reference renderer (issue 6): the same 2D linear
+// Cross-check of the flame display against the reference renderer: the same 2D linear
 // IFS rendered by `flam3-render` (Debian flam3-utils) from a flam3 genome and by
 // `gridifs render --mode flame` from a .gridifs project (affine 2×2×2 grids seen straight down z
 // through an orthographic camera) at the same size, quality, palette and tone-mapping settings.

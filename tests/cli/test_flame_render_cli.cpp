@@ -1,4 +1,4 @@
-// `gridifs render --mode flame` (issue 6): PNG 8/16-bit, EXR float/half with alpha, the project's
+// `gridifs render --mode flame`: PNG 8/16-bit, EXR float/half with alpha, the project's
 // render.mode, determinism, and clear errors for bad flame options.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// gridifs render / export-points on real files (issue 3): outputs, determinism, bad input.
+// gridifs render / export-points on real files: outputs, determinism, bad input.
 #include <gtest/gtest.h>
 
 #include <OpenImageIO/imageio.h>
@@ -6,7 +6,7 @@
 #include <cstring>
 #include <set>
 
-#include "core/project_io.h"
+#include "io/project_io.h"
 #include "tests/cli/run_command.h"
 #include "tests/core/renderer_scenes.h"
 

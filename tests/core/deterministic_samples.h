@@ -1,5 +1,5 @@
 #pragma once
-// Shared fixtures for the deterministic-algorithm tests (seed 004 §3.2): affine IFSs built from
+// Shared fixtures for the deterministic-algorithm tests (Gröller & Wegenkittl 1994, §3.2): affine IFSs built from
 // 2×2×2 grids (trilinear interpolation of an affine map is exact), and mesh measurements.
 #include <unistd.h>
 
@@ -10,8 +10,8 @@
 #include <glm/geometric.hpp>
 #include <string>
 
-#include "core/ifs_mesh.h"
-#include "core/project.h"
+#include "mesh/ifs_mesh.h"
+#include "model/project.h"
 
 namespace gridifs::test_support {
 
@@ -45,7 +45,7 @@ inline Project sierpinskiProject() {
   return p;
 }
 
-/// R = Rz·Ry·Rx (x first), angles in degrees (DESIGN §2), written out independently of core.
+/// R = Rz·Ry·Rx (x first), angles in degrees, written out independently of core.
 inline Vec3 rotateXyz(Vec3 q, Vec3 degrees) {
   const Vec3 a = degrees * (M_PI / 180.0);
   q = {q.x, std::cos(a.x) * q.y - std::sin(a.x) * q.z, std::sin(a.x) * q.y + std::cos(a.x) * q.z};

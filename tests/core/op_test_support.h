@@ -6,7 +6,7 @@
 #include <functional>
 #include <random>
 
-#include "core/stack_evaluator.h"
+#include "model/stack_evaluator.h"
 
 namespace gridifs::test_support {
 

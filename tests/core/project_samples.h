@@ -2,7 +2,7 @@
 // Random but valid projects for round-trip and undo tests.
 #include <random>
 
-#include "core/project.h"
+#include "model/project.h"
 
 namespace gridifs::test_support {
 

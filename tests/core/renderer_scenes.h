@@ -1,11 +1,13 @@
 #pragma once
-// Scenes with known attractors for the renderer tests (issue 3).
+// Scenes with known attractors for the renderer tests, and a wait on a condition.
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <thread>
 #include <vector>
 
-#include "core/project.h"
+#include "model/project.h"
 
 namespace gridifs::test {
 
@@ -97,6 +99,18 @@ inline Project twoLayers() {
     }
   }
   return p;
+}
+
+// Polls `condition` until it holds; false after a generous limit (a hung renderer fails the test
+// instead of hanging it). No timing is asserted: on a loaded machine the wait is simply longer.
+template <class Condition>
+inline bool waitUntil(Condition condition) {
+  const auto limit = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (!condition()) {
+    if (std::chrono::steady_clock::now() > limit) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));  // poll; the condition decides
+  }
+  return true;
 }
 
 }  // namespace gridifs::test

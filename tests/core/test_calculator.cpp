@@ -1,7 +1,7 @@
-// The universal calculator (seed 004 §4.3): muparser expressions over node variables.
+// The universal calculator (Gröller & Wegenkittl 1994, §4.3): muparser expressions over node variables.
 #include <cmath>
 
-#include "core/calculator.h"
+#include "model/calculator.h"
 #include "op_test_support.h"
 
 using namespace gridifs;

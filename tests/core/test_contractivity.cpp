@@ -3,8 +3,8 @@
 
 #include <random>
 
-#include "core/contractivity.h"
-#include "core/stack_evaluator.h"
+#include "model/contractivity.h"
+#include "model/stack_evaluator.h"
 
 using namespace gridifs;
 

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <vector>
 
-#include "core/chaos_kernel.h"
-#include "core/compiled_ifs.h"
+#include "render/chaos_kernel.h"
+#include "render/compiled_ifs.h"
 #include "tests/core/renderer_scenes.h"
 
 namespace gridifs {

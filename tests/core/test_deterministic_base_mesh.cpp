@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "core/base_mesh.h"
+#include "mesh/base_mesh.h"
 #include "deterministic_samples.h"
 
 using namespace gridifs;

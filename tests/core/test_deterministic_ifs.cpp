@@ -1,4 +1,4 @@
-// The deterministic algorithm F^n(A) (seed 004 §3.2): counts, analytic positions, convergence to
+// The deterministic algorithm F^n(A) (Gröller & Wegenkittl 1994, §3.2): counts, analytic positions, convergence to
 // the Sierpinski tetrahedron, colors and addresses, topology, threads, limits and cancellation.
 #include <gtest/gtest.h>
 
@@ -7,8 +7,9 @@
 #include <limits>
 #include <sstream>
 
-#include "core/deterministic_ifs.h"
-#include "core/stack_evaluator.h"
+#include "edit/document.h"
+#include "mesh/deterministic_ifs.h"
+#include "model/stack_evaluator.h"
 #include "deterministic_samples.h"
 
 using namespace gridifs;
@@ -39,7 +40,7 @@ Project affineProject() {
   return p;
 }
 
-// A nonlinear IFS: twisted, tapered and bent grids (seed 004 §2.2–2.4).
+// A nonlinear IFS: twisted, tapered and bent grids (Gröller & Wegenkittl 1994, §2.2–2.4).
 Project nonlinearProject() {
   Project p;
   Function f = affineFunction("twist", {0.4, 0, 0}, {0, 0, 20}, Vec3(0.5), {1, 0.5, 0});
@@ -276,7 +277,7 @@ TEST(DeterministicIfs, ResultDoesNotDependOnThreads) {
 TEST(DeterministicIfs, SnapshotFromDocumentMatchesProject) {
   const Project project = nonlinearProject();
   Document document(project);
-  const DeterministicIfs fromDocument = snapshotDeterministicIfs(document);
+  const DeterministicIfs fromDocument = snapshotDeterministicIfs(document.project(), document.evaluation());
   const DeterministicIfs fromProject = snapshotDeterministicIfs(project);
   ASSERT_EQ(fromDocument.maps.size(), fromProject.maps.size());
   for (std::size_t i = 0; i < fromDocument.maps.size(); ++i)

@@ -5,9 +5,9 @@
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <algorithm>
 
-#include "core/deterministic_ifs.h"
-#include "core/mesh_io.h"
-#include "core/project_io.h"
+#include "mesh/deterministic_ifs.h"
+#include "mesh/mesh_io.h"
+#include "io/project_io.h"
 #include "deterministic_samples.h"
 
 using namespace gridifs;

@@ -1,8 +1,8 @@
-// Document edits, gestures and undo/redo over random edit sequences (DESIGN §1, §6).
+// Document edits, gestures and undo/redo over random edit sequences.
 #include <gtest/gtest.h>
 
-#include "core/document.h"
-#include "core/project_io.h"
+#include "edit/document.h"
+#include "io/project_io.h"
 #include "project_samples.h"
 
 using namespace gridifs;

@@ -1,5 +1,5 @@
-// The flame display's filters (seed 002 §8): supersampling with a Gaussian spatial filter, and
-// density estimation whose kernel shrinks as density grows (issue 6).
+// The flame display's filters (Draves & Reckase 2003, §8): supersampling with a Gaussian spatial filter, and
+// density estimation whose kernel shrinks as density grows.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <numeric>
 
-#include "core/density_filter.h"
+#include "flame/density_filter.h"
 
 using namespace gridifs;
 
@@ -55,7 +55,7 @@ TEST(FlameFilter, DensityEstimatorKernelsShrinkAsDensityGrows) {
     // One hit: the widest kernel, R·ss + 1 buckets.
     EXPECT_EQ(de.kernelIndex(1.0), 0);
     EXPECT_DOUBLE_EQ(de.kernelWidth(0), radius * ss + 1.0);
-    // Below flam3's threshold, width = (R·ss + 1)/hits^curve (seed 002 §8: inversely related to density).
+    // Below flam3's threshold, width = (R·ss + 1)/hits^curve (Draves & Reckase 2003, §8: inversely related to density).
     for (int hits : {2, 5, 20, 50}) {
       const int k = de.kernelIndex(hits);
       EXPECT_EQ(k, hits - 1);

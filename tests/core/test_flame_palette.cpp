@@ -1,11 +1,11 @@
-// Palettes for the flame display (seed 002 §5; issue 6).
+// Palettes for the flame display (Draves & Reckase 2003, §5).
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
-#include "core/palette.h"
+#include "flame/palette.h"
 
 using namespace gridifs;
 

@@ -1,7 +1,7 @@
-// Flame settings in the project file: "render": {"mode": "flame", "flame": {...}} (issue 6).
+// Flame settings in the project file: "render": {"mode": "flame", "flame": {...}}.
 #include <gtest/gtest.h>
 
-#include "core/project_io.h"
+#include "io/project_io.h"
 
 using namespace gridifs;
 

@@ -1,4 +1,4 @@
-// The flame display over the chaos game (issue 6): per-sample palette colors in the renderer's
+// The flame display over the chaos game: per-sample palette colors in the renderer's
 // sums, exposure from the camera, developing a snapshot, writing PNG 8/16-bit and EXR with alpha.
 #include <gtest/gtest.h>
 
@@ -7,8 +7,8 @@
 #include <cmath>
 #include <filesystem>
 
-#include "core/compiled_ifs.h"
-#include "core/flame_render.h"
+#include "render/compiled_ifs.h"
+#include "render/flame_render.h"
 
 using namespace gridifs;
 

@@ -1,12 +1,12 @@
-// Symmetry helpers (seed 002 §7, issue 6): added functions with weight = sum of the others and
+// Symmetry helpers (Draves & Reckase 2003, §7): added functions with weight = sum of the others and
 // color speed 0; a symmetry function is an affine 2×2×2 grid.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <glm/geometric.hpp>
 
-#include "core/flame_symmetry.h"
-#include "core/stack_evaluator.h"
+#include "flame/flame_symmetry.h"
+#include "model/stack_evaluator.h"
 
 using namespace gridifs;
 
@@ -28,7 +28,7 @@ TEST(FlameSymmetry, RotationalSymmetryAddsNMinusOneBalancedRotations) {
   const auto added = symmetryFunctions(p, 3, frame);
   ASSERT_EQ(added.size(), 2u);
   for (const Function& f : added) {
-    EXPECT_DOUBLE_EQ(f.weight, 3.0);  // seed 002 §7: the sum of the other weights
+    EXPECT_DOUBLE_EQ(f.weight, 3.0);  // Draves & Reckase 2003, §7: the sum of the other weights
     EXPECT_EQ(f.color_speed, 0.0);    // and the color coordinate is left alone
     EXPECT_EQ(f.resolution, (Index3{2, 2, 2}));
   }

@@ -1,10 +1,10 @@
-// Tone mapping of the flame display against seed 002 §4 (log density) and §6 (gamma, vibrancy),
-// with flam3's normalisation (issue 6).
+// Tone mapping of the flame display against Draves & Reckase 2003, §4 (log density) and §6 (gamma, vibrancy),
+// with flam3's normalisation.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "core/flame_tonemap.h"
+#include "flame/flame_tonemap.h"
 
 using namespace gridifs;
 
@@ -12,7 +12,7 @@ TEST(FlameToneMap, LogDensityScaleIsFlam3sK1K2) {
   const LogDensityScale s = logDensityScale(4.0, 1e6, 100.0, 2);
   EXPECT_DOUBLE_EQ(s.k1, 4.0 * 268.0 / 256.0);
   EXPECT_DOUBLE_EQ(s.k2, (2.0 * 100.0) * (2.0 * 100.0) / 1e6);
-  // seed 002 §4: each channel is scaled by log(α)/α; flam3 writes it k1·log(1 + α·k2)/α.
+  // Draves & Reckase 2003, §4: each channel is scaled by log(α)/α; flam3 writes it k1·log(1 + α·k2)/α.
   EXPECT_DOUBLE_EQ(s.alpha(50.0), s.k1 * std::log(1.0 + 50.0 * s.k2));
   EXPECT_DOUBLE_EQ(s.factor(50.0), s.alpha(50.0) / 50.0);
   EXPECT_EQ(s.factor(0.0), 0.0);
@@ -25,7 +25,7 @@ TEST(FlameToneMap, ExposureDoesNotDependOnSampleCountOrSupersampling) {
   // 2× supersampling spreads the hits over 4 buckets; each bucket's alpha stays the same.
   const LogDensityScale c = logDensityScale(4.0, 1e6, 100.0, 2);
   EXPECT_NEAR(a.alpha(40.0), c.alpha(10.0), 1e-12);
-  // The log compresses the dynamic range (seed 002 §4): 10× the hits is far less than 10× brighter.
+  // The log compresses the dynamic range (Draves & Reckase 2003, §4): 10× the hits is far less than 10× brighter.
   EXPECT_LT(a.alpha(1000.0) / a.alpha(100.0), 4.0);
   EXPECT_LT(a.alpha(1e5) / a.alpha(1e4), 1.5);
 }
@@ -53,7 +53,7 @@ TEST(FlameToneMap, VibrancyOneAppliesTheAlphaGammaToAllChannels) {
   toneMapPixel(in, p, out);
   const double alpha = std::pow(0.25, 1.0 / 2.2);
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(out[c], 256.0 / 255.0 * alpha * in[c] / in[3], 1e-6);
-  EXPECT_NEAR(out[0] / out[2], 4.0, 1e-5);  // hue and saturation kept (seed 002 §6)
+  EXPECT_NEAR(out[0] / out[2], 4.0, 1e-5);  // hue and saturation kept (Draves & Reckase 2003, §6)
   EXPECT_EQ(out[3], 1.f);
 }
 

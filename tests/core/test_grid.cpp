@@ -1,10 +1,10 @@
-// Grid basics and trilinear evaluation (seed 004 §1.3, DESIGN §2 "Space and grids").
+// Grid basics and trilinear evaluation (Gröller & Wegenkittl 1994, §1.3).
 #include <gtest/gtest.h>
 
 #include <random>
 
-#include "core/grid.h"
-#include "core/stack_evaluator.h"
+#include "model/grid.h"
+#include "model/stack_evaluator.h"
 
 using namespace gridifs;
 

@@ -1,4 +1,4 @@
-// Each operation against its formula (seed 004 §2, DESIGN §2) on random parameters.
+// Each operation against its formula (Gröller & Wegenkittl 1994, §2) on random parameters.
 // Expected positions are computed here from the papers' formulas, not from the model code.
 #include <cmath>
 
@@ -9,7 +9,7 @@ using namespace gridifs::test_support;
 
 namespace {
 
-// (a, b, t) components for an axis, cyclic as DESIGN §2: z → (x, y), x → (y, z), y → (z, x).
+// (a, b, t) components for an axis, in cyclic order: z → (x, y), x → (y, z), y → (z, x).
 struct Frame {
   int a, b, t;
 };

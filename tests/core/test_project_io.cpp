@@ -1,11 +1,11 @@
-// The .gridifs file: round trips, validation with JSON paths, atomic saves (DESIGN §3).
+// The .gridifs file: round trips, validation with JSON paths, atomic saves.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
-#include "core/project_io.h"
+#include "io/project_io.h"
 #include "project_samples.h"
 
 using namespace gridifs;
@@ -54,7 +54,7 @@ TEST(ProjectIo, RandomProjectsRoundTripExactly) {
 }
 
 TEST(ProjectIo, DesignExampleLoads) {
-  // The example of DESIGN.md §3, verbatim in its field names.
+  // The example project of the file-format description, verbatim in its field names.
   const std::string text = R"json({
   "format": "gridifs", "version": 1,
   "camera": {"yaw": 30, "pitch": 20, "distance": 4.0, "target": [0,0,0], "fov": 35, "ortho": false},
@@ -221,7 +221,7 @@ TEST(ProjectIo, EveryExampleLoadsAndEvaluates) {
     SCOPED_TRACE(entry.path().string());
     const Project p = loadProject(entry.path());
     EXPECT_GE(p.functions.size(), 1u);
-    EXPECT_LE(p.functions.size(), 5u);  // "an IFS of up to 5 functions" (seed 004 §5)
+    EXPECT_LE(p.functions.size(), 5u);  // "an IFS of up to 5 functions" (Gröller & Wegenkittl 1994, §5)
     EXPECT_EQ(parseProject(serializeProject(p)), p);
   }
   EXPECT_GE(count, 9);

@@ -1,4 +1,4 @@
-// The stochastic renderer (issue 3): attractor correctness, determinism, restarts, z-test.
+// The stochastic renderer: attractor correctness, determinism, restarts, z-test.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -6,10 +6,10 @@
 #include <set>
 #include <thread>
 
-#include "core/camera.h"
-#include "core/chaos_renderer.h"
-#include "core/compiled_ifs.h"
-#include "core/stack_evaluator.h"
+#include "render/camera.h"
+#include "render/chaos_renderer.h"
+#include "render/compiled_ifs.h"
+#include "model/stack_evaluator.h"
 #include "tests/core/renderer_scenes.h"
 
 namespace gridifs {
@@ -40,6 +40,8 @@ void expectSierpinski(const std::vector<Vec3>& points) {
   addresses.erase(-1);
   EXPECT_EQ(addresses.size(), 1024u) << "every level-5 sub-tetrahedron is hit";
 }
+
+using test::waitUntil;
 
 TEST(CompiledIfs, MatchesGridEvaluation) {
   Project p = test::sierpinskiTetrahedron();
@@ -229,7 +231,8 @@ TEST(Renderer, RestartNeverShowsOldGenerationPoints) {
   RenderImage image;
   for (int round = 0; round < 20; ++round) {
     renderer.restart(ifsA, job);
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    // Generation A has plotted points before B replaces it, so a leak would show.
+    ASSERT_TRUE(waitUntil([&] { return renderer.stats().samples > 0; })) << "round " << round;
     const std::uint64_t generation = renderer.restart(ifsB, job);
     for (int s = 0; s < 5; ++s) {
       renderer.snapshot(image, DisplaySettings{});
@@ -239,9 +242,10 @@ TEST(Renderer, RestartNeverShowsOldGenerationPoints) {
           ASSERT_EQ(image.density[std::size_t(y) * image.width + x], 0u) << "round " << round << " snapshot " << s;
     }
   }
-  std::this_thread::sleep_for(std::chrono::milliseconds(30));
-  renderer.snapshot(image, DisplaySettings{});
-  EXPECT_GT(image.hitPixels, 20);
+  EXPECT_TRUE(waitUntil([&] {
+    renderer.snapshot(image, DisplaySettings{});
+    return image.hitPixels > 20;
+  }));
   EXPECT_FALSE(image.stats.done);
   renderer.stop();
 }
@@ -254,6 +258,7 @@ TEST(Renderer, PauseResumeAndBudget) {
   renderer.restart(compileIfs(p), job);
   renderer.pause();
   const std::int64_t atPause = renderer.stats().samples;
+  // Asserting that nothing happens needs time to pass: a fixed pause, not a wait on a condition.
   std::this_thread::sleep_for(std::chrono::milliseconds(20));
   const std::int64_t later = renderer.stats().samples;
   EXPECT_LE(later - atPause, 2 * 8192) << "at most one batch per worker after pause()";

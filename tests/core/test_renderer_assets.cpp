@@ -1,11 +1,11 @@
-// Every example project renders (issue 3): a non-empty image with the attractor inside the frame.
+// Every example project renders: a non-empty image with the attractor inside the frame.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 
-#include "core/chaos_renderer.h"
-#include "core/compiled_ifs.h"
-#include "core/project_io.h"
+#include "render/chaos_renderer.h"
+#include "render/compiled_ifs.h"
+#include "io/project_io.h"
 
 namespace gridifs {
 namespace {

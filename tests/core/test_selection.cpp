@@ -1,11 +1,11 @@
-// Index-box selections combined left to right from the empty set (seed 004 §4.4).
+// Index-box selections combined left to right from the empty set (Gröller & Wegenkittl 1994, §4.4).
 #include <gtest/gtest.h>
 
 #include <random>
 #include <set>
 #include <tuple>
 
-#include "core/selection.h"
+#include "model/selection.h"
 
 using namespace gridifs;
 

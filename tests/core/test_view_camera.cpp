@@ -3,11 +3,11 @@
 
 #include <random>
 
-#include "core/camera.h"
-#include "core/grid.h"
-#include "core/node_picking.h"
-#include "core/project_io.h"
-#include "core/view_camera.h"
+#include "render/camera.h"
+#include "model/grid.h"
+#include "edit/node_picking.h"
+#include "io/project_io.h"
+#include "edit/view_camera.h"
 
 using namespace gridifs;
 

@@ -24,7 +24,7 @@
 #include <thread>
 #include <vector>
 
-#include "core/project_io.h"
+#include "io/project_io.h"
 
 namespace gridifs::gui_test {
 

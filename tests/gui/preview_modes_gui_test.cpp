@@ -5,7 +5,7 @@
 #include <set>
 #include <tuple>
 
-#include "core/mesh_io.h"
+#include "mesh/mesh_io.h"
 
 #include "gui/gui_harness.h"
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes the 2D flam3 cross-check pairs (issue 6): each linear IFS both as a .gridifs project
+"""Writes the 2D flam3 cross-check pairs: each linear IFS both as a .gridifs project
 (affine 2x2x2 grids seen straight down the z axis through an orthographic camera) and as a flam3
 genome with the same size, quality, palette and tone-mapping settings.
 

@@ -1,0 +1,130 @@
+#include "edit/document.h"
+
+#include "model/validation.h"
+
+namespace gridifs {
+
+bool sameDisplay(const RenderSettings& a, const RenderSettings& b) {
+  FlameSettings toneA = a.flame, toneB = b.flame;
+  toneA.palette = toneB.palette = "";  // the palette is looked up per sample: a render input
+  return a.background == b.background && a.depth_cue == b.depth_cue && a.mode == b.mode && toneA == toneB;
+}
+
+bool sameRenderInput(const RenderSettings& a, const RenderSettings& b) {
+  return a.width == b.width && a.height == b.height && a.samples == b.samples && a.seed == b.seed &&
+         a.skip == b.skip && a.flame.palette == b.flame.palette;
+}
+
+Document::Document(Project project) : project_(std::move(project)), saved_(project_) {
+  if (project_.functions.empty()) project_ = saved_ = defaultNewProject();
+}
+
+void Document::commit(Project before, const std::string& label) {
+  if (before == project_) return;
+  undo_.push_back({std::move(before), label});
+  if (undo_.size() > kMaxUndoSteps) undo_.erase(undo_.begin());
+  redo_.clear();
+}
+
+void Document::edit(const std::string& label, const Change& change) {
+  if (gesture_) endGesture();
+  Project next = project_;
+  change(next);
+  if (next == project_) return;
+  validate(next);
+  std::swap(project_, next);
+  changed(next);
+  commit(std::move(next), label);
+}
+
+void Document::validate(const Project& next) {
+  // After a checked edit only the functions that changed are checked again; a project that came
+  // from outside (constructor, reset, undo history from before) gets the full check once.
+  if (validated_) validateProjectChange(next, project_);
+  else validateProject(next);
+  validated_ = true;
+}
+
+void Document::beginGesture(const std::string& label) {
+  if (gesture_) endGesture();
+  gesture_ = Step{project_, label};
+}
+
+void Document::updateGesture(const Change& change) {
+  if (!gesture_) beginGesture("Edit");
+  Project next = project_;
+  change(next);
+  if (next == project_) return;
+  validate(next);
+  std::swap(project_, next);
+  changed(next);
+}
+
+void Document::endGesture() {
+  if (!gesture_) return;
+  Step step = std::move(*gesture_);
+  gesture_.reset();
+  commit(std::move(step.project), step.label);
+}
+
+void Document::cancelGesture() {
+  if (!gesture_) return;
+  if (project_ != gesture_->project) {
+    std::swap(project_, gesture_->project);
+    validated_ = false;
+    changed(gesture_->project);
+  }
+  gesture_.reset();
+}
+
+bool Document::travel(std::vector<Step>& from, std::vector<Step>& to) {
+  if (gesture_) endGesture();
+  if (from.empty()) return false;
+  Step step = std::move(from.back());
+  from.pop_back();
+  to.push_back({std::move(project_), step.label});
+  project_ = std::move(step.project);
+  validated_ = false;
+  changed(to.back().project);
+  return true;
+}
+
+bool Document::undo() { return travel(undo_, redo_); }
+
+bool Document::redo() { return travel(redo_, undo_); }
+
+void Document::reset(Project project, std::filesystem::path path) {
+  gesture_.reset();
+  project_ = std::move(project);
+  saved_ = project_;
+  validated_ = false;
+  path_ = std::move(path);
+  undo_.clear();
+  redo_.clear();
+  ++revision_;
+  revisions_.geometry = revisions_.render = revisions_.display = revisions_.camera = revision_;
+}
+
+void Document::changed(const Project& before) {
+  // Every field of Project belongs to one concern here; a new field must join one.
+  ++revision_;
+  const Project& now = project_;
+  if (now.functions != before.functions || now.final_function != before.final_function)
+    revisions_.geometry = revision_;
+  if (now.camera != before.camera) revisions_.camera = revision_;
+  if (!sameRenderInput(now.render, before.render)) revisions_.render = revision_;
+  if (!sameDisplay(now.render, before.render)) revisions_.display = revision_;
+}
+
+void Document::markSaved(const std::filesystem::path& path) {
+  saved_ = project_;
+  path_ = path;
+}
+
+std::shared_ptr<const Grid> Document::evaluatedGrid(std::size_t index) const {
+  return evaluation_.function(project_, index);
+}
+
+std::shared_ptr<const Grid> Document::evaluatedFinal() const { return evaluation_.finalFunction(project_); }
+
+}  // namespace gridifs

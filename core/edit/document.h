@@ -1,0 +1,109 @@
+#pragma once
+// The one Document: the project plus undo/redo by whole-project snapshots.
+// The UI edits the project only through edit()/gestures; each committed edit is one undo step.
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "model/evaluation_cache.h"
+#include "model/grid.h"
+#include "model/project.h"
+
+namespace gridifs {
+
+/// What changed in a project, by concern: each field is the Document::revision() at which that
+/// concern last changed, so a consumer keeps the numbers it last saw and compares integers
+/// instead of copying and comparing projects.
+struct Revisions {
+  std::uint64_t geometry = 1;  // functions and the final function (what compileIfs reads)
+  std::uint64_t render = 1;    // render inputs of the chaos game: size, samples, seed, skip, palette
+  std::uint64_t display = 1;   // how buffers become a picture: background, depth cue, mode, tone map
+  std::uint64_t camera = 1;
+  bool operator==(const Revisions&) const = default;
+};
+
+/// Whether two render settings give the same picture from the same buffers (background, depth
+/// cue, display mode and the flame tone mapping; the palette is a render input).
+bool sameDisplay(const RenderSettings& a, const RenderSettings& b);
+/// Whether two render settings drive the chaos game the same way (everything but the display).
+bool sameRenderInput(const RenderSettings& a, const RenderSettings& b);
+
+/// Not thread-safe: owned and used by one thread (the UI thread, or a CLI verb).
+class Document {
+ public:
+  using Change = std::function<void(Project&)>;
+
+  explicit Document(Project project = {});
+
+  const Project& project() const { return project_; }
+  const std::filesystem::path& path() const { return path_; }
+  /// Bumped on every change of the project (edits, gesture updates, undo, redo, open).
+  std::uint64_t revision() const { return revision_; }
+  /// The revision at which each concern last changed (all bumped by reset()).
+  const Revisions& revisions() const { return revisions_; }
+  /// Whether the project differs from what was last saved or opened.
+  bool dirty() const { return project_ != saved_; }
+
+  /// Applies `change` as one undo step. The result is validated first: an invalid
+  /// project throws ModelError and leaves the document untouched. No-op changes push nothing.
+  void edit(const std::string& label, const Change& change);
+
+  /// A gesture (slider drag, node drag) previews live and commits one undo step on end.
+  void beginGesture(const std::string& label);
+  /// Throws ModelError and keeps the last valid state when the change is invalid.
+  void updateGesture(const Change& change);
+  void endGesture();
+  void cancelGesture();
+  bool inGesture() const { return gesture_.has_value(); }
+
+  bool canUndo() const { return !undo_.empty(); }
+  bool canRedo() const { return !redo_.empty(); }
+  std::string undoLabel() const { return undo_.empty() ? "" : undo_.back().label; }
+  std::string redoLabel() const { return redo_.empty() ? "" : redo_.back().label; }
+  bool undo();
+  bool redo();
+
+  /// Replaces everything (New/Open): clears history, the result counts as saved.
+  void reset(Project project, std::filesystem::path path = {});
+  /// Records that the current project is what `path` now holds.
+  void markSaved(const std::filesystem::path& path);
+
+  /// The evaluated (distorted and placed) grid of function `index`, cached until the
+  /// function changes. Throws ModelError with a path such as `functions[1].ops[2].x`.
+  std::shared_ptr<const Grid> evaluatedGrid(std::size_t index) const;
+  /// The same for the final function; null when there is none.
+  std::shared_ptr<const Grid> evaluatedFinal() const;
+  /// The cache behind evaluatedGrid: hand it with project() to compileIfs or
+  /// snapshotDeterministicIfs. Valid while the Document lives; same thread only.
+  const EvaluationCache& evaluation() const { return evaluation_; }
+
+  static constexpr std::size_t kMaxUndoSteps = 500;
+
+ private:
+  struct Step {
+    Project project;
+    std::string label;
+  };
+  void commit(Project before, const std::string& label);
+  /// Bumps revision() and the revisions of the concerns that differ from `before`.
+  void changed(const Project& before);
+  /// Undo (from undo_ to redo_) or redo (the other way): one step through the history.
+  bool travel(std::vector<Step>& from, std::vector<Step>& to);
+  /// Throws ModelError when `next` is invalid.
+  void validate(const Project& next);
+
+  Project project_, saved_;
+  std::filesystem::path path_;
+  std::uint64_t revision_ = 1;
+  Revisions revisions_;
+  std::vector<Step> undo_, redo_;
+  std::optional<Step> gesture_;
+  EvaluationCache evaluation_;
+  bool validated_ = false;  // project_ passed validation (edits then re-check changed functions only)
+};
+
+}  // namespace gridifs

@@ -1,0 +1,31 @@
+#pragma once
+// Chaos-game points as a binary PLY: the points the renderer would
+// plot, x y z float and red green blue uchar, little-endian. Shared by the CLI verb and the GUI.
+#include <filesystem>
+#include <functional>
+#include <string>
+
+#include "render/chaos_renderer.h"
+
+namespace gridifs {
+
+struct PointCloudResult {
+  std::uint64_t written = 0;  // points in the file
+  RenderStats stats;
+  bool cancelled = false;     // progress returned false: nothing was written
+};
+
+/// Streams the points of `job` into `out` through a temporary file in the same folder that is
+/// renamed over `out` only when everything was written, so nothing is ever half-written.
+/// `progress` is called after every batch on the calling thread; returning false cancels.
+/// Throws IoError naming `out` when writing fails, and ModelError (no path) when at least half
+/// of the samples were non-finite or escaped (the IFS has no usable attractor; nothing written).
+PointCloudResult writePointCloud(const CompiledIfs& ifs, const RenderJob& job, const std::filesystem::path& out,
+                                 const std::string& description,
+                                 const std::function<bool(const RenderStats&)>& progress = {});
+
+/// The PLY header; `count` is rewritten in place at the end, so the header's length does not
+/// depend on it (a comment line absorbs the digits). Exposed for tests.
+std::string pointCloudHeader(std::uint64_t count, const std::string& description);
+
+}  // namespace gridifs

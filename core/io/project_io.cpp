@@ -1,0 +1,580 @@
+#include "io/project_io.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "base/atomic_file.h"
+#include "model/calculator.h"
+#include "model/palette_reference.h"
+#include "model/stack_evaluator.h"
+#include "model/validation.h"
+
+namespace gridifs {
+namespace {
+
+using json = nlohmann::json;
+using ordered_json = nlohmann::ordered_json;
+
+[[noreturn]] void fail(const std::string& path, const std::string& message) { throw ModelError(path, message); }
+
+std::string join(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
+std::string item(const std::string& path, std::size_t index) { return path + "[" + std::to_string(index) + "]"; }
+
+const char* typeName(const json& j) {
+  switch (j.type()) {
+    case json::value_t::null: return "null";
+    case json::value_t::object: return "an object";
+    case json::value_t::array: return "an array";
+    case json::value_t::string: return "a string";
+    case json::value_t::boolean: return "a boolean";
+    case json::value_t::number_integer:
+    case json::value_t::number_unsigned:
+    case json::value_t::number_float: return "a number";
+    default: return "an unsupported value";
+  }
+}
+
+void requireObject(const json& j, const std::string& path) {
+  if (!j.is_object()) fail(path.empty() ? "(root)" : path, std::string("expected an object, found ") + typeName(j));
+}
+
+double readNumber(const json& j, const std::string& path, double lo, double hi) {
+  if (!j.is_number()) fail(path, std::string("expected a number, found ") + typeName(j));
+  const double v = j.get<double>();
+  if (!std::isfinite(v)) fail(path, "expected a finite number");
+  if (v < lo || v > hi) {
+    std::ostringstream s;
+    s << "expected a number between " << lo << " and " << hi << ", found " << v;
+    fail(path, s.str());
+  }
+  return v;
+}
+
+double number(const json& obj, const char* key, const std::string& path, double fallback,
+              double lo = -limits::kMaxCoordinate, double hi = limits::kMaxCoordinate) {
+  auto it = obj.find(key);
+  if (it == obj.end()) return fallback;
+  return readNumber(*it, join(path, key), lo, hi);
+}
+
+std::int64_t readInteger(const json& j, const std::string& path, std::int64_t lo, std::int64_t hi) {
+  if (!j.is_number()) fail(path, std::string("expected an integer, found ") + typeName(j));
+  if (j.is_number_float()) {
+    const double v = j.get<double>();
+    if (!std::isfinite(v) || v != std::floor(v)) fail(path, "expected an integer");
+    if (v < double(lo) || v > double(hi))
+      fail(path, "expected an integer between " + std::to_string(lo) + " and " + std::to_string(hi));
+    return std::int64_t(v);
+  }
+  if (j.is_number_unsigned() && j.get<std::uint64_t>() > std::uint64_t(INT64_MAX))
+    fail(path, "expected an integer between " + std::to_string(lo) + " and " + std::to_string(hi));
+  const std::int64_t v = j.get<std::int64_t>();
+  if (v < lo || v > hi) fail(path, "expected an integer between " + std::to_string(lo) + " and " + std::to_string(hi));
+  return v;
+}
+
+std::int64_t integer(const json& obj, const char* key, const std::string& path, std::int64_t fallback,
+                     std::int64_t lo, std::int64_t hi) {
+  auto it = obj.find(key);
+  if (it == obj.end()) return fallback;
+  return readInteger(*it, join(path, key), lo, hi);
+}
+
+std::uint64_t unsignedInteger(const json& obj, const char* key, const std::string& path, std::uint64_t fallback) {
+  auto it = obj.find(key);
+  if (it == obj.end()) return fallback;
+  const std::string p = join(path, key);
+  if (it->is_number_unsigned()) return it->get<std::uint64_t>();
+  if (it->is_number_integer() && it->get<std::int64_t>() >= 0) return std::uint64_t(it->get<std::int64_t>());
+  if (it->is_number_float()) {
+    const double v = it->get<double>();
+    if (std::isfinite(v) && v >= 0 && v == std::floor(v) && v < 1.8e19) return std::uint64_t(v);
+  }
+  fail(p, std::string("expected a non-negative integer, found ") + typeName(*it));
+}
+
+bool boolean(const json& obj, const char* key, const std::string& path, bool fallback) {
+  auto it = obj.find(key);
+  if (it == obj.end()) return fallback;
+  if (!it->is_boolean()) fail(join(path, key), std::string("expected true or false, found ") + typeName(*it));
+  return it->get<bool>();
+}
+
+std::string readString(const json& j, const std::string& path, std::size_t maxLength) {
+  if (!j.is_string()) fail(path, std::string("expected a string, found ") + typeName(j));
+  const std::string& s = j.get_ref<const std::string&>();
+  if (s.size() > maxLength) fail(path, "the string is longer than " + std::to_string(maxLength) + " characters");
+  return s;
+}
+
+std::string string(const json& obj, const char* key, const std::string& path, const std::string& fallback,
+                   std::size_t maxLength) {
+  auto it = obj.find(key);
+  if (it == obj.end()) return fallback;
+  return readString(*it, join(path, key), maxLength);
+}
+
+Vec3 readVec3(const json& j, const std::string& path, double lo, double hi) {
+  if (!j.is_array() || j.size() != 3) fail(path, "expected an array of 3 numbers");
+  return {readNumber(j[0], item(path, 0), lo, hi), readNumber(j[1], item(path, 1), lo, hi),
+          readNumber(j[2], item(path, 2), lo, hi)};
+}
+
+Vec3 vec3(const json& obj, const char* key, const std::string& path, Vec3 fallback,
+          double lo = -limits::kMaxCoordinate, double hi = limits::kMaxCoordinate) {
+  auto it = obj.find(key);
+  if (it == obj.end()) return fallback;
+  return readVec3(*it, join(path, key), lo, hi);
+}
+
+Axis axis(const json& obj, const char* key, const std::string& path, Axis fallback) {
+  auto it = obj.find(key);
+  if (it == obj.end()) return fallback;
+  Axis a;
+  if (!parseAxis(readString(*it, join(path, key), 16), a)) fail(join(path, key), "expected \"x\", \"y\" or \"z\"");
+  return a;
+}
+
+Profile profile(const json& obj, const std::string& path) {
+  auto it = obj.find("profile");
+  if (it == obj.end()) return Profile::Linear;
+  Profile p;
+  if (!parseProfile(readString(*it, join(path, "profile"), 16), p))
+    fail(join(path, "profile"), "expected \"linear\", \"sine\" or \"pingpong\"");
+  return p;
+}
+
+Center readCenter(const json& obj, const std::string& path) {
+  Center c;
+  auto it = obj.find("center");
+  if (it == obj.end()) return c;
+  const std::string p = join(path, "center");
+  if (it->is_string()) {
+    const std::string s = it->get<std::string>();
+    if (s == "grid") c.kind = Center::Kind::Grid;
+    else if (s == "selection") c.kind = Center::Kind::Selection;
+    else fail(p, "expected \"grid\", \"selection\" or a point [x, y, z]");
+  } else {
+    c.kind = Center::Kind::Point;
+    c.point = readVec3(*it, p, -limits::kMaxCoordinate, limits::kMaxCoordinate);
+  }
+  return c;
+}
+
+std::array<int, 2> readRange(const json& box, const char* key, const std::string& path) {
+  auto it = box.find(key);
+  if (it == box.end()) return {0, limits::kMaxResolution - 1};
+  const std::string p = join(path, key);
+  if (!it->is_array() || it->size() != 2) fail(p, "expected an index range [first, last]");
+  return {int(readInteger((*it)[0], item(p, 0), 0, limits::kMaxResolution - 1)),
+          int(readInteger((*it)[1], item(p, 1), 0, limits::kMaxResolution - 1))};
+}
+
+Selection readSelection(const json& obj, const std::string& path) {
+  Selection selection;
+  auto it = obj.find("selection");
+  if (it == obj.end()) return selection;
+  const std::string p = join(path, "selection");
+  if (!it->is_array()) fail(p, std::string("expected an array of index boxes, found ") + typeName(*it));
+  if (it->size() > std::size_t(limits::kMaxSelectionBoxes))
+    fail(p, "more than " + std::to_string(limits::kMaxSelectionBoxes) + " selection boxes");
+  for (std::size_t b = 0; b < it->size(); ++b) {
+    const json& box = (*it)[b];
+    const std::string bp = item(p, b);
+    requireObject(box, bp);
+    SelectionBox s;
+    s.i = readRange(box, "i", bp);
+    s.j = readRange(box, "j", bp);
+    s.k = readRange(box, "k", bp);
+    const std::string op = string(box, "op", bp, "or", 16);
+    if (!parseSelectionOp(op, s.op)) fail(join(bp, "op"), "expected \"or\", \"and\", \"xor\" or \"minus\"");
+    selection.push_back(s);
+  }
+  return selection;
+}
+
+OpParams readParams(const std::string& type, const json& o, const std::string& path) {
+  if (type == "translate") return TranslateOp{vec3(o, "offset", path, Vec3{0.0})};
+  if (type == "rotate") return RotateOp{vec3(o, "angles", path, Vec3{0.0})};
+  if (type == "scale") return ScaleOp{vec3(o, "factors", path, Vec3{1.0})};
+  if (type == "taper" || type == "twist") {
+    const Axis a = axis(o, "axis", path, Axis::Z);
+    const Profile pr = profile(o, path);
+    const double k = number(o, "k", path, 0.0), omega = number(o, "omega", path, 1.0);
+    if (type == "taper") return TaperOp{a, pr, k, omega};
+    return TwistOp{a, pr, k, omega};
+  }
+  if (type == "bend") {
+    BendOp b{axis(o, "axis", path, Axis::Z), axis(o, "toward", path, Axis::Y), number(o, "k", path, 0.0)};
+    if (b.axis == b.toward) fail(join(path, "toward"), "the bend must go toward an axis other than its own");
+    return b;
+  }
+  if (type == "magnet")
+    return MagnetOp{vec3(o, "point", path, Vec3{0.0}), number(o, "dmax", path, 0.5, 0.0, limits::kMaxCoordinate),
+                    number(o, "strength", path, 0.5), number(o, "falloff", path, 2.0, 0.0, 1000.0)};
+  if (type == "morph") {
+    MorphOp m;
+    m.strength = number(o, "strength", path, 1.0);
+    if (auto it = o.find("pairs"); it != o.end()) {
+      const std::string p = join(path, "pairs");
+      if (!it->is_array()) fail(p, std::string("expected an array of [start, end] pairs, found ") + typeName(*it));
+      if (it->size() > std::size_t(limits::kMaxMorphPairs))
+        fail(p, "more than " + std::to_string(limits::kMaxMorphPairs) + " morph pairs");
+      for (std::size_t i = 0; i < it->size(); ++i) {
+        const json& pair = (*it)[i];
+        if (!pair.is_array() || pair.size() != 2) fail(item(p, i), "expected a pair [[x, y, z], [x, y, z]]");
+        m.pairs.push_back({readVec3(pair[0], item(item(p, i), 0), -limits::kMaxCoordinate, limits::kMaxCoordinate),
+                           readVec3(pair[1], item(item(p, i), 1), -limits::kMaxCoordinate, limits::kMaxCoordinate)});
+      }
+    }
+    return m;
+  }
+  if (type == "calculator") {
+    CalculatorOp c;
+    c.x = string(o, "x", path, "x", limits::kMaxExpressionLength);
+    c.y = string(o, "y", path, "y", limits::kMaxExpressionLength);
+    c.z = string(o, "z", path, "z", limits::kMaxExpressionLength);
+    c.seed = unsignedInteger(o, "seed", path, 1);
+    if (auto it = o.find("vars"); it != o.end()) {
+      const std::string p = join(path, "vars");
+      requireObject(*it, p);
+      for (auto v = it->begin(); v != it->end(); ++v) {
+        const std::string& name = v.key();
+        if (name != "v1" && name != "v2" && name != "v3")
+          fail(join(p, name.substr(0, 32)), "unknown calculator variable (use v1, v2 or v3)");
+        const std::string vp = join(p, name);
+        requireObject(v.value(), vp);
+        CalculatorVar var;
+        var.min = number(v.value(), "min", vp, -1.0);
+        var.max = number(v.value(), "max", vp, 1.0);
+        var.value = number(v.value(), "value", vp, 0.0);
+        if (var.min > var.max) fail(join(vp, "min"), "the slider minimum is larger than its maximum");
+        c.vars[name[1] - '1'] = var;
+      }
+    }
+    return c;
+  }
+  if (type == "nodes") {
+    NodesOp n;
+    if (auto it = o.find("moves"); it != o.end()) {
+      const std::string p = join(path, "moves");
+      if (!it->is_array()) fail(p, std::string("expected an array of [i, j, k, [dx, dy, dz]], found ") + typeName(*it));
+      if (it->size() > std::size_t(limits::kMaxNodeMoves)) fail(p, "too many node moves");
+      for (std::size_t m = 0; m < it->size(); ++m) {
+        const json& mv = (*it)[m];
+        const std::string mp = item(p, m);
+        if (!mv.is_array() || mv.size() != 4) fail(mp, "expected [i, j, k, [dx, dy, dz]]");
+        NodeMove move;
+        for (int d = 0; d < 3; ++d) move.index[d] = int(readInteger(mv[d], item(mp, d), 0, limits::kMaxResolution - 1));
+        move.displacement = readVec3(mv[3], item(mp, 3), -limits::kMaxCoordinate, limits::kMaxCoordinate);
+        n.moves.push_back(move);
+      }
+    }
+    return n;
+  }
+  fail(join(path, "type"), "unknown operation \"" + type.substr(0, 40) +
+                               "\" (expected translate, rotate, scale, taper, twist, bend, magnet, morph, "
+                               "calculator or nodes)");
+}
+
+Operation readOperation(const json& o, const std::string& path) {
+  requireObject(o, path);
+  auto typeIt = o.find("type");
+  if (typeIt == o.end()) fail(path, "the operation has no \"type\"");
+  const std::string type = readString(*typeIt, join(path, "type"), 64);
+  Operation op;
+  op.params = readParams(type, o, path);
+  op.center = readCenter(o, path);
+  op.selection = readSelection(o, path);
+  op.muted = boolean(o, "muted", path, false);
+  return op;
+}
+
+/// "render.flame": every field optional, defaults from FlameSettings.
+FlameSettings readFlame(const json& o, const std::string& path) {
+  requireObject(o, path);
+  FlameSettings f;
+  f.palette = string(o, "palette", path, f.palette, limits::kMaxNameLength);
+  if (!isPaletteReferenceSyntax(f.palette))
+    fail(join(path, "palette"), "expected a built-in palette name, \"flam3:NUMBER\", \"flam3:NAME\" or \"file:PATH\"");
+  f.brightness = number(o, "brightness", path, f.brightness, 0.0, 1e4);
+  f.gamma = number(o, "gamma", path, f.gamma, 0.05, 100.0);
+  f.gamma_threshold = number(o, "gamma_threshold", path, f.gamma_threshold, 0.0, 1.0);
+  f.vibrancy = number(o, "vibrancy", path, f.vibrancy, 0.0, 1.0);
+  f.highlight_power = number(o, "highlight_power", path, f.highlight_power, -1.0, 100.0);
+  f.supersample = int(integer(o, "supersample", path, f.supersample, 1, 8));
+  f.estimator_radius = number(o, "estimator_radius", path, f.estimator_radius, 0.0, 64.0);
+  f.estimator_minimum = number(o, "estimator_minimum", path, f.estimator_minimum, 0.0, 64.0);
+  f.estimator_curve = number(o, "estimator_curve", path, f.estimator_curve, 0.05, 10.0);
+  f.filter_radius = number(o, "filter_radius", path, f.filter_radius, 0.0, 10.0);
+  validateFlameSettings(f, path);
+  return f;
+}
+
+Function readFunction(const json& f, const std::string& path, std::size_t index) {
+  requireObject(f, path);
+  Function fn;
+  fn.name = string(f, "name", path, "f" + std::to_string(index + 1), limits::kMaxNameLength);
+  if (auto it = f.find("resolution"); it != f.end()) {
+    const std::string p = join(path, "resolution");
+    if (!it->is_array() || it->size() != 3) fail(p, "expected an array of 3 integers");
+    for (int d = 0; d < 3; ++d)
+      fn.resolution[d] = int(readInteger((*it)[d], item(p, d), limits::kMinResolution, limits::kMaxResolution));
+  }
+  fn.weight = number(f, "weight", path, 1.0, 0.0, 1e9);
+  fn.color = vec3(f, "color", path, Vec3{1.0}, 0.0, 1.0);
+  fn.palette_index = number(f, "palette_index", path, 0.0, 0.0, 1.0);
+  fn.color_speed = number(f, "color_speed", path, 0.5, 0.0, 1.0);
+  fn.muted = boolean(f, "muted", path, false);
+  if (auto it = f.find("placement"); it != f.end()) {
+    const std::string p = join(path, "placement");
+    requireObject(*it, p);
+    fn.placement.translate = vec3(*it, "translate", p, Vec3{0.0});
+    fn.placement.rotate = vec3(*it, "rotate", p, Vec3{0.0});
+    fn.placement.scale = vec3(*it, "scale", p, Vec3{1.0});
+  }
+  if (auto it = f.find("ops"); it != f.end()) {
+    const std::string p = join(path, "ops");
+    if (!it->is_array()) fail(p, std::string("expected an array of operations, found ") + typeName(*it));
+    if (it->size() > std::size_t(limits::kMaxOpsPerFunction))
+      fail(p, "more than " + std::to_string(limits::kMaxOpsPerFunction) + " operations");
+    for (std::size_t o = 0; o < it->size(); ++o) fn.ops.push_back(readOperation((*it)[o], item(p, o)));
+  }
+  return fn;
+}
+
+/// Rejects nesting deeper than the format needs before handing text to the parser.
+void checkDepth(const std::string& text) {
+  int depth = 0;
+  bool inString = false, escaped = false;
+  for (char ch : text) {
+    if (inString) {
+      if (escaped) escaped = false;
+      else if (ch == '\\') escaped = true;
+      else if (ch == '"') inString = false;
+      continue;
+    }
+    if (ch == '"') inString = true;
+    else if (ch == '[' || ch == '{') {
+      if (++depth > limits::kMaxJsonDepth)
+        fail("", "the JSON is nested more than " + std::to_string(limits::kMaxJsonDepth) + " levels deep");
+    } else if (ch == ']' || ch == '}') --depth;
+  }
+}
+
+ordered_json writeVec3(const Vec3& v) { return ordered_json::array({v.x, v.y, v.z}); }
+
+ordered_json writeOperation(const Operation& op) {
+  ordered_json o;
+  o["type"] = opTypeName(op.params);
+  std::visit(
+      [&](const auto& p) {
+        using T = std::decay_t<decltype(p)>;
+        if constexpr (std::is_same_v<T, TranslateOp>) o["offset"] = writeVec3(p.offset);
+        else if constexpr (std::is_same_v<T, RotateOp>) o["angles"] = writeVec3(p.angles);
+        else if constexpr (std::is_same_v<T, ScaleOp>) o["factors"] = writeVec3(p.factors);
+        else if constexpr (std::is_same_v<T, TaperOp> || std::is_same_v<T, TwistOp>) {
+          o["axis"] = axisName(p.axis);
+          o["profile"] = profileName(p.profile);
+          o["k"] = p.k;
+          o["omega"] = p.omega;
+        } else if constexpr (std::is_same_v<T, BendOp>) {
+          o["axis"] = axisName(p.axis);
+          o["toward"] = axisName(p.toward);
+          o["k"] = p.k;
+        } else if constexpr (std::is_same_v<T, MagnetOp>) {
+          o["point"] = writeVec3(p.point);
+          o["dmax"] = p.dmax;
+          o["strength"] = p.strength;
+          o["falloff"] = p.falloff;
+        } else if constexpr (std::is_same_v<T, MorphOp>) {
+          ordered_json pairs = ordered_json::array();
+          for (const MorphPair& pair : p.pairs) pairs.push_back({writeVec3(pair.from), writeVec3(pair.to)});
+          o["pairs"] = pairs;
+          o["strength"] = p.strength;
+        } else if constexpr (std::is_same_v<T, CalculatorOp>) {
+          o["x"] = p.x;
+          o["y"] = p.y;
+          o["z"] = p.z;
+          ordered_json vars;
+          static const char* kVarNames[3] = {"v1", "v2", "v3"};
+          for (int v = 0; v < 3; ++v)
+            vars[kVarNames[v]] = {{"value", p.vars[v].value}, {"min", p.vars[v].min}, {"max", p.vars[v].max}};
+          o["vars"] = vars;
+          o["seed"] = p.seed;
+        } else if constexpr (std::is_same_v<T, NodesOp>) {
+          ordered_json moves = ordered_json::array();
+          for (const NodeMove& m : p.moves)
+            moves.push_back({m.index[0], m.index[1], m.index[2], writeVec3(m.displacement)});
+          o["moves"] = moves;
+        }
+      },
+      op.params);
+  if (op.center.kind == Center::Kind::Grid) o["center"] = "grid";
+  else if (op.center.kind == Center::Kind::Selection) o["center"] = "selection";
+  else o["center"] = writeVec3(op.center.point);
+  ordered_json selection = ordered_json::array();
+  for (const SelectionBox& b : op.selection)
+    selection.push_back({{"i", {b.i[0], b.i[1]}}, {"j", {b.j[0], b.j[1]}}, {"k", {b.k[0], b.k[1]}}, {"op", selectionOpName(b.op)}});
+  o["selection"] = selection;
+  if (op.muted) o["muted"] = true;
+  return o;
+}
+
+ordered_json writeFunction(const Function& f) {
+  ordered_json o;
+  o["name"] = f.name;
+  o["resolution"] = {f.resolution[0], f.resolution[1], f.resolution[2]};
+  o["weight"] = f.weight;
+  o["color"] = writeVec3(f.color);
+  o["palette_index"] = f.palette_index;
+  o["color_speed"] = f.color_speed;
+  o["muted"] = f.muted;
+  o["placement"] = {{"translate", writeVec3(f.placement.translate)},
+                    {"rotate", writeVec3(f.placement.rotate)},
+                    {"scale", writeVec3(f.placement.scale)}};
+  ordered_json ops = ordered_json::array();
+  for (const Operation& op : f.ops) ops.push_back(writeOperation(op));
+  o["ops"] = ops;
+  return o;
+}
+
+std::string lineColumn(const std::string& text, std::size_t byte) {
+  std::size_t line = 1, column = 1;
+  for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
+    if (text[i] == '\n') ++line, column = 1;
+    else ++column;
+  }
+  return "line " + std::to_string(line) + ", column " + std::to_string(column);
+}
+
+}  // namespace
+
+Project parseProject(const std::string& text) {
+  if (text.size() > limits::kMaxFileBytes) fail("", "the file is larger than 64 MiB");
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos) fail("", "the file is empty");
+  checkDepth(text);
+  json root;
+  try {
+    root = json::parse(text);
+  } catch (const json::parse_error& e) {
+    std::string what = e.what();
+    const std::size_t lastContent = text.find_last_not_of(" \t\r\n");
+    const bool truncated = what.find("unexpected end of input") != std::string::npos ||
+                           (lastContent != std::string::npos && e.byte >= lastContent + 1);
+    fail("", std::string(truncated ? "the JSON ends too early (truncated?)" : "the file is not valid JSON") +
+                 " at " + lineColumn(text, e.byte == 0 ? 0 : e.byte - 1));
+  } catch (const json::exception&) {
+    fail("", "the file contains a number too large to represent");
+  }
+  requireObject(root, "");
+  if (auto it = root.find("format"); it == root.end() || !it->is_string() || it->get<std::string>() != "gridifs")
+    fail("format", "expected \"gridifs\" (this is not a GridIFS project)");
+  auto version = root.find("version");
+  if (version == root.end()) fail("version", "the project has no version");
+  if (!version->is_number_integer() || version->get<std::int64_t>() != kProjectFormatVersion) {
+    std::string found = version->dump();
+    if (found.size() > 20) found = found.substr(0, 20) + "…";
+    fail("version", "unsupported version " + found + " (this GridIFS reads version " +
+                        std::to_string(kProjectFormatVersion) + ")");
+  }
+  Project project;
+  if (auto it = root.find("camera"); it != root.end()) {
+    requireObject(*it, "camera");
+    Camera& c = project.camera;
+    c.yaw = number(*it, "yaw", "camera", c.yaw, -1e6, 1e6);
+    c.pitch = number(*it, "pitch", "camera", c.pitch, -90.0, 90.0);
+    c.distance = number(*it, "distance", "camera", c.distance, 1e-3, 1e4);
+    c.target = vec3(*it, "target", "camera", c.target, -1e4, 1e4);
+    c.fov = number(*it, "fov", "camera", c.fov, 1.0, 170.0);
+    c.ortho = boolean(*it, "ortho", "camera", c.ortho);
+  }
+  if (auto it = root.find("render"); it != root.end()) {
+    requireObject(*it, "render");
+    RenderSettings& r = project.render;
+    r.width = int(integer(*it, "width", "render", r.width, 1, 16384));
+    r.height = int(integer(*it, "height", "render", r.height, 1, 16384));
+    r.samples = integer(*it, "samples", "render", r.samples, 1, 100'000'000'000LL);
+    r.seed = unsignedInteger(*it, "seed", "render", r.seed);
+    r.skip = int(integer(*it, "skip", "render", r.skip, 0, 100000));
+    r.background = vec3(*it, "background", "render", r.background, 0.0, 1.0);
+    r.depth_cue = number(*it, "depth_cue", "render", r.depth_cue, 0.0, 1.0);
+    if (auto m = it->find("mode"); m != it->end()) {
+      if (!parseDisplayMode(readString(*m, "render.mode", 32), r.mode))
+        fail("render.mode", "expected \"zbuffer\" or \"flame\"");
+    }
+    if (auto fl = it->find("flame"); fl != it->end()) r.flame = readFlame(*fl, "render.flame");
+  }
+  auto functions = root.find("functions");
+  if (functions == root.end()) fail("functions", "the project has no functions");
+  if (!functions->is_array()) fail("functions", std::string("expected an array, found ") + typeName(*functions));
+  if (functions->empty()) fail("functions", "the IFS needs at least one function");
+  if (functions->size() > std::size_t(limits::kMaxFunctions))
+    fail("functions", "more than " + std::to_string(limits::kMaxFunctions) + " functions (found " +
+                          std::to_string(functions->size()) + ")");
+  for (std::size_t f = 0; f < functions->size(); ++f)
+    project.functions.push_back(readFunction((*functions)[f], item("functions", f), f));
+  if (auto it = root.find("final"); it != root.end() && !it->is_null())
+    project.final_function = readFunction(*it, "final", 0);
+  validateProject(project);
+  return project;
+}
+
+std::string serializeProject(const Project& project) {
+  ordered_json root;
+  root["format"] = "gridifs";
+  root["version"] = kProjectFormatVersion;
+  const Camera& c = project.camera;
+  root["camera"] = {{"yaw", c.yaw}, {"pitch", c.pitch}, {"distance", c.distance},
+                    {"target", writeVec3(c.target)}, {"fov", c.fov}, {"ortho", c.ortho}};
+  const RenderSettings& r = project.render;
+  root["render"] = {{"width", r.width}, {"height", r.height}, {"samples", r.samples}, {"seed", r.seed},
+                    {"skip", r.skip}, {"background", writeVec3(r.background)}, {"depth_cue", r.depth_cue}};
+  root["render"]["mode"] = displayModeName(r.mode);
+  const FlameSettings& fl = r.flame;
+  root["render"]["flame"] = {{"palette", fl.palette}, {"brightness", fl.brightness}, {"gamma", fl.gamma},
+                             {"gamma_threshold", fl.gamma_threshold}, {"vibrancy", fl.vibrancy},
+                             {"highlight_power", fl.highlight_power}, {"supersample", fl.supersample},
+                             {"estimator_radius", fl.estimator_radius}, {"estimator_minimum", fl.estimator_minimum},
+                             {"estimator_curve", fl.estimator_curve}, {"filter_radius", fl.filter_radius}};
+  ordered_json functions = ordered_json::array();
+  for (const Function& f : project.functions) functions.push_back(writeFunction(f));
+  root["functions"] = functions;
+  if (project.final_function) root["final"] = writeFunction(*project.final_function);
+  return root.dump(2) + "\n";
+}
+
+Project loadProject(const std::filesystem::path& file) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(file, ec)) throw IoError("it is a folder, not a project file");
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw IoError(std::string("cannot open it: ") + std::strerror(errno));
+  std::string text;
+  char buffer[1 << 16];
+  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+    text.append(buffer, std::size_t(in.gcount()));
+    if (text.size() > limits::kMaxFileBytes) fail("", "the file is larger than 64 MiB");
+  }
+  return parseProject(text);
+}
+
+void saveProject(const Project& project, const std::filesystem::path& file) {
+  namespace fs = std::filesystem;
+  validateProject(project);  // never write a project that could not be read back
+  AtomicFile out(file);
+  out.write(serializeProject(project));
+  std::error_code ec;
+  if (fs::exists(file, ec)) {
+    fs::path backup = file;
+    backup += "~";
+    fs::copy_file(file, backup, fs::copy_options::overwrite_existing, ec);
+    if (ec) throw IoError("cannot keep a backup of " + file.string() + ": " + ec.message());
+  }
+  out.commit();
+}
+
+}  // namespace gridifs

@@ -1,0 +1,31 @@
+#pragma once
+// The .gridifs project file: validated loading with JSON-path errors and
+// atomic saving with a `~` backup.
+#include <filesystem>
+#include <string>
+
+#include "base/errors.h"
+#include "model/project.h"
+#include "model/validation.h"
+
+namespace gridifs {
+
+inline constexpr int kProjectFormatVersion = 1;
+
+/// Parses and validates project JSON text. Throws ModelError whose path is a JSON path
+/// (`functions[2].ops[0].k`) and whose message says what was expected.
+Project parseProject(const std::string& text);
+
+/// Reads and parses a project file. Throws ModelError (bad content; the message names
+/// no file) or IoError (unreadable). Never modifies the file.
+Project loadProject(const std::filesystem::path& file);
+
+/// Serialises to pretty JSON; parseProject(serializeProject(p)) == p.
+std::string serializeProject(const Project& project);
+
+/// Writes atomically: a temporary file in the same folder, flushed and renamed over
+/// `file`; an existing `file` is first copied to `file~`. On any failure the old file
+/// is intact and IoError is thrown.
+void saveProject(const Project& project, const std::filesystem::path& file);
+
+}  // namespace gridifs

@@ -1,0 +1,322 @@
+#include "mesh/deterministic_ifs.h"
+
+#include "base/parallel.h"
+#include "base/text_format.h"
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "model/stack_evaluator.h"
+
+namespace gridifs {
+namespace {
+
+constexpr std::uint64_t kSaturated = std::numeric_limits<std::uint64_t>::max();
+std::uint64_t mul(std::uint64_t a, std::uint64_t b) { return a != 0 && b > kSaturated / a ? kSaturated : a * b; }
+std::uint64_t add(std::uint64_t a, std::uint64_t b) { return a > kSaturated - b ? kSaturated : a + b; }
+
+// Memory of one element of the output IfsMesh (ArrayKernel): a vertex holds its point, color
+// and outgoing halfedge; an edge two halfedges of (face, to-vertex, next, prev); a face its
+// halfedge and its address.
+constexpr std::uint64_t kBytesPerVertex = sizeof(IfsMesh::Point) + sizeof(IfsMesh::Color) + sizeof(int);
+constexpr std::uint64_t kBytesPerEdge = 2 * 4 * sizeof(int);
+constexpr std::uint64_t kBytesPerFace = 2 * sizeof(int);
+
+template <class GridOf, class FinalOf>
+DeterministicIfs snapshotWith(const Project& project, GridOf gridOf, FinalOf finalOf) {
+  DeterministicIfs ifs;
+  for (std::size_t i = 0; i < project.functions.size(); ++i) {
+    const Function& f = project.functions[i];
+    if (f.muted || !(f.weight > 0.0)) continue;
+    auto grid = gridOf(i);
+    if (!allFinite(*grid)) throw ModelError("functions[" + std::to_string(i) + "]", "a grid node is not finite");
+    ifs.maps.push_back({std::move(grid), f.color, f.color_speed, i});
+  }
+  if (project.final_function && !project.final_function->muted) {
+    ifs.finalGrid = finalOf();
+    if (!allFinite(*ifs.finalGrid)) throw ModelError("final", "a grid node is not finite");
+  }
+  return ifs;
+}
+
+std::string faceCountText(const DeterministicPlan& plan) {
+  if (plan.total.faces != kSaturated) return withThousands(plan.total.faces);
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "about %.3g", plan.approximateFaces);
+  return buffer;
+}
+
+std::string gibText(std::uint64_t bytes) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "%.1f GiB", double(bytes) / double(std::uint64_t(1) << 30));
+  return buffer;
+}
+
+Vec3 toVec3(const IfsMesh::Point& p) { return {p[0], p[1], p[2]}; }
+
+// Reports progress on the caller's thread at most every 1% and polls the cancel flag.
+class ProgressGate {
+ public:
+  ProgressGate(const DeterministicProgress& progress, const std::atomic<bool>* cancel, std::atomic<bool>& stop)
+      : progress_(progress), cancel_(cancel), stop_(stop) {}
+  void operator()(double fraction) {
+    if (cancel_ && cancel_->load(std::memory_order_relaxed)) stop_ = true;
+    if (!progress_ || stop_) return;
+    fraction = std::clamp(fraction, 0.0, 1.0);
+    if (fraction < last_ + 0.01 && fraction < 1.0) return;
+    last_ = fraction;
+    if (!progress_(fraction)) stop_ = true;
+  }
+
+ private:
+  const DeterministicProgress& progress_;
+  const std::atomic<bool>* cancel_;
+  std::atomic<bool>& stop_;
+  double last_ = -1.0;
+};
+
+}  // namespace
+
+DeterministicIfs snapshotDeterministicIfs(const Project& project, const EvaluationCache& evaluation) {
+  return snapshotWith(
+      project, [&](std::size_t i) { return evaluation.function(project, i); },
+      [&] { return evaluation.finalFunction(project); });
+}
+
+DeterministicIfs snapshotDeterministicIfs(const Project& project) {
+  return snapshotWith(
+      project,
+      [&](std::size_t i) { return evaluateFunctionAt(project.functions[i], "functions[" + std::to_string(i) + "]"); },
+      [&] { return evaluateFunctionAt(*project.final_function, "final"); });
+}
+
+DeterministicPlan planDeterministic(const DeterministicIfs& ifs, const MeshCounts& base,
+                                    const DeterministicOptions& options) {
+  if (options.depth < 0 || options.depth > kMaxDeterministicDepth)
+    throw ModelError("depth", "the depth must be between 0 and " + std::to_string(kMaxDeterministicDepth) + ", not " +
+                                  std::to_string(options.depth));
+  if (ifs.maps.empty())
+    throw ModelError("functions", "the IFS has no unmuted function with a positive weight, so F^n(A) is empty");
+  DeterministicPlan plan;
+  plan.functionCount = ifs.maps.size();
+  plan.depth = options.depth;
+  plan.base = base;
+  plan.copies = 1;
+  for (int k = 0; k < options.depth; ++k) plan.copies = mul(plan.copies, plan.functionCount);
+  plan.total = {mul(plan.copies, base.vertices), mul(plan.copies, base.edges), mul(plan.copies, base.faces),
+                mul(plan.copies, base.corners)};
+  plan.approximateFaces = std::pow(double(plan.functionCount), double(options.depth)) * double(base.faces);
+  plan.estimatedBytes = add(add(mul(plan.total.vertices, kBytesPerVertex), mul(plan.total.edges, kBytesPerEdge)),
+                            mul(plan.total.faces, kBytesPerFace));
+  const std::string what = "F^" + std::to_string(options.depth) + "(A) with " + std::to_string(plan.functionCount) +
+                           " function" + (plan.functionCount == 1 ? "" : "s") + " would have " + faceCountText(plan) +
+                           " faces";
+  // OpenMesh addresses elements with int handles; halfedges are the largest count.
+  const std::uint64_t handleLimit = std::uint64_t(INT_MAX);
+  if (plan.total.faces > options.limits.maxFaces || plan.total.vertices > handleLimit ||
+      mul(2, plan.total.edges) > handleLimit) {
+    plan.overLimit = true;
+    plan.message = what + ", more than the limit of " + withThousands(options.limits.maxFaces) +
+                   "; lower the depth or the subdivision";
+  } else if (plan.estimatedBytes > options.limits.memoryBudgetBytes) {
+    plan.overBudget = true;
+    plan.message = what + " and need about " + gibText(plan.estimatedBytes) + " of memory (budget " +
+                   gibText(options.limits.memoryBudgetBytes) + ")";
+  }
+  return plan;
+}
+
+DeterministicPlan planDeterministic(const DeterministicIfs& ifs, const BaseMeshSpec& spec,
+                                    const DeterministicOptions& options) {
+  const IfsMesh coarse = loadCoarseBase(spec);
+  return planDeterministic(ifs, predictBaseCounts(coarse, spec), options);
+}
+
+DeterministicMesh buildDeterministicMesh(const DeterministicIfs& ifs, const IfsMesh& base,
+                                         const DeterministicOptions& options, const DeterministicProgress& progress,
+                                         const std::atomic<bool>* cancel) {
+  DeterministicMesh result;
+  buildDeterministicMesh(ifs, base, options, result, progress, cancel);
+  return result;  // NRVO: no copy of the mesh
+}
+
+void buildDeterministicMesh(const DeterministicIfs& ifs, const IfsMesh& base, const DeterministicOptions& options,
+                            DeterministicMesh& result, const DeterministicProgress& progress,
+                            const std::atomic<bool>* cancel) {
+  result.mesh = IfsMesh();  // cheap: copies an empty mesh (drops any old `address` property)
+  result.functionIndices.clear();
+  result.plan = planDeterministic(ifs, countMesh(base), options);
+  if (result.plan.overLimit) throw ModelError("depth", result.plan.message);
+  if (base.n_faces() == 0) throw ModelError("base", "the base mesh has no faces");
+  for (const auto& map : ifs.maps) result.functionIndices.push_back(map.functionIndex);
+
+  const std::size_t N = ifs.maps.size();
+  const int n = options.depth;
+  const std::size_t V = base.n_vertices(), E = base.n_edges(), F = base.n_faces(), H = 2 * E;
+  const std::size_t copies = std::size_t(result.plan.copies);
+  const int threads = resolveThreadCount(options.threads);
+
+  IfsMesh& out = result.mesh;
+  OpenMesh::FPropHandleT<int> address;
+  out.add_property(address, kAddressPropertyName);
+  out.property(address).set_persistent(true);
+  // One allocation per array: every element (and property) of all copies exists from here on.
+  out.resize(copies * V, copies * E, copies * F);
+
+  std::atomic<bool> stop{false};
+  ProgressGate report(progress, cancel, stop);
+  // Workers poll both the internal stop (progress said no, or a worker failed) and the cancel flag.
+  auto halted = [&] {
+    if (cancel && cancel->load(std::memory_order_relaxed)) stop.store(true, std::memory_order_relaxed);
+    return stop.load(std::memory_order_relaxed);
+  };
+  // Weights of the two passes in the progress bar, from their measured share of the time.
+  constexpr double kPositionsShare = 0.75;
+
+  // Pass 1: positions. A task is a block of base vertices × a prefix of the first-applied
+  // functions; inside it, an odometer walks the remaining digits, recomputing only the levels
+  // whose digit changed (shared prefixes: about N/(N−1) evaluations per output vertex).
+  {
+    constexpr std::size_t kBlock = 2048;
+    const std::size_t blocks = (V + kBlock - 1) / kBlock;
+    int fixedLevels = 0;  // digits fixed per task (the first-applied ones)
+    std::size_t prefixes = 1;
+    while (fixedLevels < n && blocks * prefixes < 64) {
+      ++fixedLevels;
+      prefixes *= N;
+    }
+    std::vector<IfsMesh::Point> basePoints(base.points(), base.points() + V);
+    std::atomic<std::uint64_t> done{0};
+    const double totalWork = double(copies) * double(V);
+    parallelForEach(
+        blocks * prefixes, threads,
+        [&](std::size_t t) {
+          if (halted()) return;
+          const std::size_t block = t % blocks, prefix = t / blocks;
+          const std::size_t v0 = block * kBlock, count = std::min(kBlock, V - v0);
+          // levels[j] holds the block after the first j functions (j = 0: the base).
+          std::vector<std::vector<Vec3>> levels(std::size_t(std::max(n, 1)), std::vector<Vec3>(count));
+          for (std::size_t v = 0; v < count; ++v) levels[0][v] = toVec3(basePoints[v0 + v]);
+          std::vector<std::size_t> digit(std::size_t(n) + 1, 0);  // digit[j]: function applied at step j (1-based)
+          std::size_t rest = prefix;
+          for (int j = 1; j <= fixedLevels; ++j) {
+            digit[std::size_t(j)] = rest % N;
+            rest /= N;
+          }
+          auto applyLevel = [&](int j) {  // levels[j] = f_digit[j](levels[j-1]), 1 ≤ j < n
+            const Grid& g = *ifs.maps[digit[std::size_t(j)]].grid;
+            const auto& in = levels[std::size_t(j - 1)];
+            auto& o = levels[std::size_t(j)];
+            for (std::size_t v = 0; v < count; ++v) o[v] = g.evaluate(in[v]);
+          };
+          for (int j = 1; j < std::min(fixedLevels + 1, n); ++j) applyLevel(j);
+          int changed = fixedLevels + 1;
+          while (true) {
+            if (halted()) return;
+            for (int j = changed; j < n; ++j) applyLevel(j);
+            std::size_t code = 0;
+            for (int j = n; j >= 1; --j) code = code * N + digit[std::size_t(j)];
+            IfsMesh::Point* dst = &out.point(IfsMesh::VertexHandle(int(code * V + v0)));  // contiguous
+            const auto& in = levels[std::size_t(std::max(n - 1, 0))];
+            const Grid* last = n > 0 ? ifs.maps[digit[std::size_t(n)]].grid.get() : nullptr;
+            const Grid* final = ifs.finalGrid.get();
+            for (std::size_t v = 0; v < count; ++v) {
+              Vec3 p = last ? last->evaluate(in[v]) : in[v];
+              if (final) p = final->evaluate(p);
+              dst[v] = IfsMesh::Point(float(p.x), float(p.y), float(p.z));
+            }
+            done.fetch_add(count, std::memory_order_relaxed);
+            // Odometer over the free digits fixedLevels+1 … n, the last-applied one fastest.
+            int j = n;
+            while (j > fixedLevels && ++digit[std::size_t(j)] == N) digit[std::size_t(j--)] = 0;
+            if (j <= fixedLevels) return;
+            changed = j;
+          }
+        },
+        [&] { report(kPositionsShare * double(done.load()) / totalWork); });
+  }
+  if (stop) throw DeterministicCancelled();
+
+  // Pass 2: connectivity, colors and addresses. Copy c is the base with handles offset by
+  // (c·V, c·H, c·F); colors depend on the address only.
+  {
+    std::vector<int> toVertex(H), nextHalfedge(H), faceOf(H), vertexHalfedge(V), faceHalfedge(F);
+    for (std::size_t h = 0; h < H; ++h) {
+      const IfsMesh::HalfedgeHandle hh{int(h)};
+      toVertex[h] = base.to_vertex_handle(hh).idx();
+      nextHalfedge[h] = base.next_halfedge_handle(hh).idx();
+      faceOf[h] = base.face_handle(hh).idx();
+    }
+    for (std::size_t v = 0; v < V; ++v) vertexHalfedge[v] = base.halfedge_handle(IfsMesh::VertexHandle{int(v)}).idx();
+    for (std::size_t f = 0; f < F; ++f) faceHalfedge[f] = base.halfedge_handle(IfsMesh::FaceHandle{int(f)}).idx();
+    auto shifted = [](int handle, std::size_t offset) { return handle < 0 ? -1 : int(std::size_t(handle) + offset); };
+
+    const std::size_t perCopy = V + H + F;
+    const std::size_t copiesPerTask = std::max<std::size_t>(1, (std::size_t(1) << 16) / perCopy);
+    const std::size_t taskCount = (copies + copiesPerTask - 1) / copiesPerTask;
+    std::atomic<std::uint64_t> done{0};
+    parallelForEach(
+        taskCount, threads,
+        [&](std::size_t t) {
+          const std::size_t c0 = t * copiesPerTask, c1 = std::min(copies, c0 + copiesPerTask);
+          for (std::size_t c = c0; c < c1; ++c) {
+            if (halted()) return;
+            const std::size_t vOff = c * V, hOff = c * H, fOff = c * F;
+            for (std::size_t h = 0; h < H; ++h) {
+              const IfsMesh::HalfedgeHandle hh{int(hOff + h)};
+              out.set_vertex_handle(hh, IfsMesh::VertexHandle(shifted(toVertex[h], vOff)));
+              out.set_next_halfedge_handle(hh, IfsMesh::HalfedgeHandle(shifted(nextHalfedge[h], hOff)));
+              out.set_face_handle(hh, IfsMesh::FaceHandle(shifted(faceOf[h], fOff)));
+            }
+            // The chaos game's structural color: blend in the order the functions are applied.
+            Vec3 color(1.0);
+            std::size_t rest = c;
+            for (int j = 1; j <= n; ++j) {
+              const DeterministicMap& map = ifs.maps[rest % N];
+              rest /= N;
+              color = j == 1 ? map.color : color + (map.color - color) * map.colorSpeed;
+            }
+            const IfsMesh::Color rgb(float(std::clamp(color.x, 0.0, 1.0)), float(std::clamp(color.y, 0.0, 1.0)),
+                                     float(std::clamp(color.z, 0.0, 1.0)), 1.0f);
+            for (std::size_t v = 0; v < V; ++v) {
+              const IfsMesh::VertexHandle vh{int(vOff + v)};
+              out.set_halfedge_handle(vh, IfsMesh::HalfedgeHandle(shifted(vertexHalfedge[v], hOff)));
+              out.set_color(vh, rgb);
+            }
+            for (std::size_t f = 0; f < F; ++f) {
+              const IfsMesh::FaceHandle fh{int(fOff + f)};
+              out.set_halfedge_handle(fh, IfsMesh::HalfedgeHandle(shifted(faceHalfedge[f], hOff)));
+              out.property(address, fh) = int(c);
+            }
+          }
+          done.fetch_add(c1 - c0, std::memory_order_relaxed);
+        },
+        [&] { report(kPositionsShare + (1.0 - kPositionsShare) * double(done.load()) / double(copies)); });
+  }
+  if (stop) throw DeterministicCancelled();
+  report(1.0);
+}
+
+DeterministicMesh runDeterministic(const DeterministicIfs& ifs, const BaseMeshSpec& spec,
+                                   const DeterministicOptions& options, const DeterministicProgress& progress,
+                                   const std::atomic<bool>* cancel) {
+  IfsMesh coarse = loadCoarseBase(spec);
+  const DeterministicPlan plan = planDeterministic(ifs, predictBaseCounts(coarse, spec), options);
+  if (plan.overLimit) throw ModelError("depth", plan.message);
+  const IfsMesh base = refineBase(std::move(coarse), spec);
+  return buildDeterministicMesh(ifs, base, options, progress, cancel);
+}
+
+void runDeterministic(const DeterministicIfs& ifs, const BaseMeshSpec& spec, const DeterministicOptions& options,
+                      DeterministicMesh& out, const DeterministicProgress& progress, const std::atomic<bool>* cancel) {
+  IfsMesh coarse = loadCoarseBase(spec);
+  const DeterministicPlan plan = planDeterministic(ifs, predictBaseCounts(coarse, spec), options);
+  if (plan.overLimit) throw ModelError("depth", plan.message);
+  const IfsMesh base = refineBase(std::move(coarse), spec);
+  buildDeterministicMesh(ifs, base, options, out, progress, cancel);
+}
+
+}  // namespace gridifs

@@ -1,0 +1,30 @@
+#pragma once
+// One function of the IFS: a grid resolution, an op stack and a placement.
+#include <string>
+#include <vector>
+
+#include "model/operation.h"
+
+namespace gridifs {
+
+/// How the function's grid sits in the common initial grid (Gröller & Wegenkittl 1994, §4.5):
+/// placement(q) = T + R·(S·q), R with the rotate op's Euler convention.
+struct Placement {
+  Vec3 translate{0.0}, rotate{0.0}, scale{1.0};
+  bool operator==(const Placement&) const = default;
+};
+
+struct Function {
+  std::string name = "f1";
+  Index3 resolution{6, 6, 6};
+  std::vector<Operation> ops;
+  Placement placement;
+  double weight = 1.0;           // selection probability ∝ weight
+  Vec3 color{1.0, 1.0, 1.0};     // RGB in [0, 1]
+  double palette_index = 0.0;    // structural color coordinate c_i in [0, 1] (Draves & Reckase 2003, §5)
+  double color_speed = 0.5;      // c = mix(c, c_i, color_speed); 0.5 is (c + c_i)/2 of Draves & Reckase 2003
+  bool muted = false;
+  bool operator==(const Function&) const = default;
+};
+
+}  // namespace gridifs

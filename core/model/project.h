@@ -1,0 +1,42 @@
+#pragma once
+// The whole project as saved in a .gridifs file.
+#include <optional>
+#include <vector>
+
+#include "model/flame_settings.h"
+#include "model/function.h"
+
+namespace gridifs {
+
+struct Camera {
+  double yaw = 30.0, pitch = 20.0, distance = 4.0;  // degrees, degrees, units
+  Vec3 target{0.0};
+  double fov = 35.0;  // vertical, degrees
+  bool ortho = false;
+  bool operator==(const Camera&) const = default;
+};
+
+struct RenderSettings {
+  int width = 1024, height = 768;
+  std::int64_t samples = 20'000'000;
+  std::uint64_t seed = 1;
+  int skip = 20;
+  Vec3 background{0.0};
+  double depth_cue = 0.6;  // 0: no attenuation, 1: farthest points black
+  DisplayMode mode = DisplayMode::ZBuffer;  // "render.mode": "zbuffer" | "flame"
+  FlameSettings flame;                      // "render.flame": the flame display (Draves & Reckase 2003, §4–8)
+  bool operator==(const RenderSettings&) const = default;
+};
+
+struct Project {
+  Camera camera;
+  RenderSettings render;
+  std::vector<Function> functions;
+  std::optional<Function> final_function;  // not in the loop: applied before plotting
+  bool operator==(const Project&) const = default;
+};
+
+/// The project a new document starts from: one 6×6×6 grid scaled by one half.
+Project defaultNewProject();
+
+}  // namespace gridifs

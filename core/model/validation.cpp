@@ -1,0 +1,112 @@
+#include "model/validation.h"
+
+#include <cmath>
+#include <sstream>
+#include <variant>
+
+#include "model/calculator.h"
+#include "model/palette_reference.h"
+#include "model/stack_evaluator.h"
+
+namespace gridifs {
+namespace {
+
+[[noreturn]] void fail(const std::string& path, const std::string& message) { throw ModelError(path, message); }
+
+std::string join(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
+std::string item(const std::string& path, std::size_t index) { return path + "[" + std::to_string(index) + "]"; }
+
+}  // namespace
+
+void validateFlameSettings(const FlameSettings& f, const std::string& path) {
+  auto range = [&](double v, const char* key, double lo, double hi) {
+    if (!(v >= lo && v <= hi)) {
+      std::ostringstream s;
+      s << "expected a number between " << lo << " and " << hi << ", found " << v;
+      fail(join(path, key), s.str());
+    }
+  };
+  if (f.palette.size() > limits::kMaxNameLength || !isPaletteReferenceSyntax(f.palette))
+    fail(join(path, "palette"), "expected a built-in palette name, \"flam3:NUMBER\", \"flam3:NAME\" or \"file:PATH\"");
+  range(f.brightness, "brightness", 0.0, 1e4);
+  range(f.gamma, "gamma", 0.05, 100.0);
+  range(f.gamma_threshold, "gamma_threshold", 0.0, 1.0);
+  range(f.vibrancy, "vibrancy", 0.0, 1.0);
+  range(f.highlight_power, "highlight_power", -1.0, 100.0);
+  if (f.supersample < 1 || f.supersample > 8) fail(join(path, "supersample"), "expected an integer between 1 and 8");
+  range(f.estimator_radius, "estimator_radius", 0.0, 64.0);
+  range(f.estimator_minimum, "estimator_minimum", 0.0, 64.0);
+  range(f.estimator_curve, "estimator_curve", 0.05, 10.0);
+  range(f.filter_radius, "filter_radius", 0.0, 10.0);
+  if (f.estimator_radius > 0.0) {
+    if (f.estimator_minimum > f.estimator_radius)
+      fail(join(path, "estimator_minimum"), "the estimator minimum is larger than its radius");
+    // The density estimator builds ((radius·ss + 1)/(minimum·ss + 1))^(1/curve) kernels.
+    const double kernels =
+        std::pow((f.estimator_radius * f.supersample + 1.0) / (f.estimator_minimum * f.supersample + 1.0),
+                 1.0 / f.estimator_curve);
+    if (!(kernels <= 1e7))
+      fail(join(path, "estimator_curve"), "the curve is too small for this radius (too many kernels)");
+  }
+}
+
+namespace {
+
+// Checks `project`; a function equal to the one at the same place of `trusted` (a project that
+// passed these checks) keeps its verdict, so its operations are not checked again.
+void validate(const Project& project, const Project* trusted) {
+  validateFlameSettings(project.render.flame, "render.flame");
+  if (project.functions.empty()) fail("functions", "the IFS needs at least one function");
+  if (project.functions.size() > std::size_t(limits::kMaxFunctions))
+    fail("functions", "more than " + std::to_string(limits::kMaxFunctions) + " functions");
+  std::int64_t totalNodes = 0;
+  double totalWeight = 0.0;
+  auto checkFunction = [&](const Function& fn, const std::string& path, const Function* before) {
+    for (int d = 0; d < 3; ++d)
+      if (fn.resolution[d] < limits::kMinResolution || fn.resolution[d] > limits::kMaxResolution)
+        fail(item(join(path, "resolution"), d), "expected an integer between 2 and 128");
+    totalNodes += std::int64_t(fn.resolution[0]) * fn.resolution[1] * fn.resolution[2];
+    if (!(fn.weight >= 0.0) || !std::isfinite(fn.weight)) fail(join(path, "weight"), "expected a non-negative weight");
+    if (before && before->ops == fn.ops) return;  // calculator parses and morph solves are the cost
+    for (std::size_t o = 0; o < fn.ops.size(); ++o) {
+      const std::string op = item(join(path, "ops"), o);
+      if (const auto* calc = std::get_if<CalculatorOp>(&fn.ops[o].params)) {
+        if (auto diagnostic = checkCalculator(*calc))
+          fail(join(op, std::string(1, "xyz"[diagnostic->expression])), diagnostic->message);
+      } else if (const auto* morph = std::get_if<MorphOp>(&fn.ops[o].params)) {
+        std::vector<Vec3> alpha;
+        std::vector<double> radius;
+        try {
+          solveMorph(*morph, alpha, radius);
+        } catch (const ModelError& e) {
+          throw e.under(op);
+        }
+      } else if (const auto* bend = std::get_if<BendOp>(&fn.ops[o].params)) {
+        if (bend->axis == bend->toward) fail(join(op, "toward"), "the bend must go toward an axis other than its own");
+      }
+    }
+  };
+  for (std::size_t f = 0; f < project.functions.size(); ++f) {
+    const Function* before = trusted && f < trusted->functions.size() ? &trusted->functions[f] : nullptr;
+    checkFunction(project.functions[f], item("functions", f), before);
+    if (!project.functions[f].muted) totalWeight += project.functions[f].weight;
+  }
+  if (project.final_function)
+    checkFunction(*project.final_function, "final",
+                  trusted && trusted->final_function ? &*trusted->final_function : nullptr);
+  if (totalNodes > limits::kMaxTotalNodes)
+    fail("functions", "the grids have " + std::to_string(totalNodes) + " nodes in all, more than the limit of " +
+                          std::to_string(limits::kMaxTotalNodes));
+  bool anyActive = false;
+  for (const Function& fn : project.functions) anyActive |= !fn.muted;
+  if (anyActive && !(totalWeight > 0.0))
+    fail("functions", "every active function has weight 0 (weights must not all be zero)");
+}
+
+}  // namespace
+
+void validateProject(const Project& project) { validate(project, nullptr); }
+
+void validateProjectChange(const Project& project, const Project& previousValid) { validate(project, &previousValid); }
+
+}  // namespace gridifs

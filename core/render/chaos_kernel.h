@@ -1,0 +1,395 @@
+#pragma once
+// Internal to the renderer (chaos_renderer.cpp, benchmarks, tests): the chaos-game inner loop
+// (Gröller & Wegenkittl 1994, §3.1; Draves & Reckase 2003, §2 and §5). Everything here is inline and templated on the plot
+// target, so the hot loop has no virtual calls and no atomics with ordering; one worker owns one
+// ChainState and one set of buffers.
+//
+// Per iteration: pick a function by weight (alias table, one 64-bit random number); p = f(p)
+// (clamp to X, 4 × 32-byte node-pair loads, trilinear lerps in float); mix the running colour
+// (r, g, b, c) towards the function's (color, palette_index) with its color_speed; a non-finite or
+// escaped point restarts the chain; past `skip`, apply the final function (not in the loop) and
+// hand the point to the plotter.
+#include <atomic>
+#include <bit>
+#include <cstdint>
+#include <cstring>
+
+#include "base/hash.h"
+#include "render/camera.h"
+#include "render/compiled_ifs.h"
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#include <xmmintrin.h>
+#endif
+
+// Callers of runChain compile it twice, picked at load time: AVX2 (the 32-byte node-pair loads and
+// lerps are single instructions) and the portable baseline. FMA is deliberately not enabled: GCC
+// would contract a + (b - a)·t into fused multiply-adds, and images would then depend on the CPU.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GRIDIFS_NO_KERNEL_CLONES)
+#define GRIDIFS_KERNEL_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define GRIDIFS_KERNEL_CLONES
+#endif
+
+namespace gridifs::kernel {
+
+typedef float v4f __attribute__((vector_size(16)));
+typedef float v8f __attribute__((vector_size(32)));
+typedef std::int32_t v4i __attribute__((vector_size(16)));
+
+/// Flushes denormal floats to zero (FTZ) and reads denormal inputs as zero (DAZ) on the calling
+/// thread while it lives, then restores the previous mode. Why: the running colour
+/// c <- c + (c_i - c)·speed decays geometrically wherever a function's channel is 0 (palette index 0,
+/// the default, or an all-red IFS) and settles on the smallest denormal, where the step rounds back
+/// to c; from then on every colour operation takes a microcode assist (about 3× slower). Flushing
+/// is as deterministic as IEEE arithmetic: the same inputs give the same bits on every x86 CPU.
+class DenormalsAreZero {
+ public:
+#if defined(__SSE2__)
+  DenormalsAreZero() : saved_(_mm_getcsr()) { _mm_setcsr(saved_ | kFlushToZero | kDenormalsAreZero); }
+  ~DenormalsAreZero() { _mm_setcsr(saved_); }
+#else
+  DenormalsAreZero() = default;
+#endif
+  DenormalsAreZero(const DenormalsAreZero&) = delete;
+  DenormalsAreZero& operator=(const DenormalsAreZero&) = delete;
+
+ private:
+#if defined(__SSE2__)
+  static constexpr unsigned kFlushToZero = 0x8000u, kDenormalsAreZero = 0x0040u;
+  unsigned saved_;
+#endif
+};
+
+/// wyrand (Wang Yi): one 64×64→128 multiply per number; passes BigCrush/PractRand and is much
+/// cheaper than mt19937. Stream = (seed, worker) through splitmix64.
+struct Rng {
+  std::uint64_t state = 0;
+  static Rng forStream(std::uint64_t seed, std::uint64_t worker) {
+    return Rng{splitmix64(splitmix64(seed) ^ splitmix64(worker + 0x5851F42D4C957F2Dull))};
+  }
+  std::uint64_t next() {
+    state += 0xA0761D6478BD642Full;
+    const unsigned __int128 m = (unsigned __int128)state * (state ^ 0xE7037ED1A0B428DBull);
+    return std::uint64_t(m >> 64) ^ std::uint64_t(m);
+  }
+  /// Uniform in [-1, 1) from 24 random bits.
+  static float signedUnit(std::uint64_t bits) { return float(std::uint32_t(bits & 0xFFFFFF)) * (2.0f / 16777216.0f) - 1.0f; }
+};
+
+/// A compiled function laid out for the loop (64 bytes + the pair pointer).
+struct alignas(64) HotFunction {
+  v4f toLattice;
+  v4f maxCell;
+  v4f color;  // r g b c
+  v4f speed;  // color_speed in all lanes
+  const NodePair* pairs;
+  std::uint32_t strideJ, strideK;
+};
+
+inline HotFunction makeHot(const CompiledFunction& f) {
+  HotFunction h{};
+  for (int d = 0; d < 4; ++d) {
+    h.toLattice[d] = f.toLattice[d];
+    h.maxCell[d] = f.maxCell[d];
+    h.color[d] = f.color[d];
+    h.speed[d] = f.colorSpeed;
+  }
+  h.pairs = f.pairs.data();
+  h.strideJ = f.pairStrideJ;
+  h.strideK = f.pairStrideK;
+  return h;
+}
+
+/// Lane I of v in all four lanes.
+template <int I>
+[[gnu::always_inline]] inline v4f splat(v4f v) {
+  return __builtin_shufflevector(v, v, I, I, I, I);
+}
+
+[[gnu::always_inline]] inline v4f load4(const float* p) {
+  v4f v;
+  std::memcpy(&v, p, 16);
+  return v;
+}
+
+/// Bit mask of the lanes of a comparison result (lane 0 → bit 0).
+[[gnu::always_inline]] inline int laneMask(v4i m) {
+#if defined(__SSE2__)
+  return _mm_movemask_ps(_mm_castsi128_ps(__m128i(m)));
+#else
+  return (m[0] ? 1 : 0) | (m[1] ? 2 : 0) | (m[2] ? 4 : 0) | (m[3] ? 8 : 0);
+#endif
+}
+
+/// p = f(p): the same float operations as CompiledFunction::evaluate (lane 3 is ignored). The
+/// node pairs are 32 bytes apart in x, so each corner pair is one 32-byte (two 16-byte) load.
+[[gnu::always_inline]] inline v4f apply(const HotFunction& f, v4f p) {
+  const v4f lo = {-1.0f, -1.0f, -1.0f, -1.0f}, hi = {1.0f, 1.0f, 1.0f, 1.0f};
+#if defined(__SSE2__)
+  // maxps returns its second operand when the first is NaN: NaN → -1, as Grid::evaluate.
+  p = v4f(_mm_min_ps(_mm_max_ps(__m128(p), __m128(lo)), __m128(hi)));
+#else
+  p = p > lo ? p : lo;  // NaN → -1
+  p = p < hi ? p : hi;
+#endif
+  const v4f s = (p + hi) * f.toLattice;
+  v4f c = __builtin_convertvector(__builtin_convertvector(s, v4i), v4f);
+  c = f.maxCell < c ? f.maxCell : c;
+  const v4f t = s - c;
+  const v4i ci = __builtin_convertvector(c, v4i);
+  const std::size_t idx = std::uint32_t(ci[0]) + f.strideJ * std::uint32_t(ci[1]) + f.strideK * std::uint32_t(ci[2]);
+  const NodePair* base = f.pairs + idx;
+  v8f p00, p10, p01, p11;  // one 32-byte load per x-edge: both ends of the edge
+  std::memcpy(&p00, base, 32);
+  std::memcpy(&p10, base + f.strideJ, 32);
+  std::memcpy(&p01, base + f.strideK, 32);
+  std::memcpy(&p11, base + f.strideJ + f.strideK, 32);
+  const v8f ty = __builtin_shufflevector(t, t, 1, 1, 1, 1, 1, 1, 1, 1);
+  const v8f tz = __builtin_shufflevector(t, t, 2, 2, 2, 2, 2, 2, 2, 2);
+  const v8f e0 = p00 + (p10 - p00) * ty;
+  const v8f e1 = p01 + (p11 - p01) * ty;
+  const v8f e = e0 + (e1 - e0) * tz;
+  const v4f a = __builtin_shufflevector(e, e, 0, 1, 2, 3), b = __builtin_shufflevector(e, e, 4, 5, 6, 7);
+  return a + (b - a) * splat<0>(t);
+}
+
+/// Whether every coordinate is finite and within the escape bound (NaN fails).
+[[gnu::always_inline]] inline bool inBounds(v4f p, float bound) {
+  const v4f b = {bound, bound, bound, bound};
+  const v4i magnitudeBits = v4i(p) & 0x7FFFFFFF;  // |p| without a compare and blend
+  return (laneMask(v4f(magnitudeBits) <= b) & 7) == 7;  // false for NaN
+}
+
+/// One worker's chains. A single chain is latency-bound (every step waits for the previous
+/// point: clamp → cell → 4 loads → lerps), so each worker advances kLanes independent chains in
+/// turn and the CPU overlaps them. Sample n of a worker belongs to lane n % kLanes (batches are
+/// multiples of kLanes except the very last), so the sequence does not depend on batch sizes.
+inline constexpr int kLanes = 4;  // runChain unrolls exactly this many
+
+struct ChainState {
+  Rng rng;
+  v4f p[kLanes] = {};
+  v4f color[kLanes] = {};
+  int skipLeft[kLanes] = {};
+
+  void restartLane(int lane, int skip) {
+    const std::uint64_t a = rng.next(), b = rng.next();
+    p[lane] = v4f{Rng::signedUnit(a), Rng::signedUnit(a >> 24), Rng::signedUnit(b), 0.0f};
+    // Draves & Reckase 2003, §5: c starts at a random point of [0, 1]; the RGB blend starts mid-grey (both are
+    // forgotten geometrically, by (1 - color_speed)^skip).
+    color[lane] = v4f{0.5f, 0.5f, 0.5f, float(std::uint32_t(b >> 40)) * (1.0f / 16777216.0f)};
+    skipLeft[lane] = skip;
+  }
+  /// A fresh chain set for stream (seed, worker).
+  static ChainState start(std::uint64_t seed, std::uint64_t worker, int skip) {
+    ChainState st;
+    st.rng = Rng::forStream(seed, worker);
+    for (int l = 0; l < kLanes; ++l) st.restartLane(l, skip);
+    return st;
+  }
+};
+
+struct HotIfs {
+  const HotFunction* functions = nullptr;
+  const AliasEntry* alias = nullptr;
+  std::uint32_t count = 0;
+  const HotFunction* finalFunction = nullptr;  // null when none
+  int skip = 20;
+  float escapeBound = 1e5f;
+
+  [[gnu::always_inline]] std::uint32_t choose(std::uint64_t r) const {
+    const std::uint32_t column = std::uint32_t((std::uint64_t(std::uint32_t(r >> 32)) * count) >> 32);
+    const AliasEntry e = alias[column];
+    return std::uint32_t(r) < e.threshold ? column : e.alias;
+  }
+};
+
+struct ChainCounters {
+  std::int64_t samples = 0, bad = 0, plotted = 0;
+};
+
+/// One iteration of one lane; returns 1 when a point was plotted.
+template <class Plot>
+[[gnu::always_inline]] inline int stepLane(ChainState& st, int lane, const HotIfs& ifs, Plot& plot,
+                                           std::int64_t& bad) {
+  const HotFunction& f = ifs.functions[ifs.choose(st.rng.next())];
+  const v4f p = apply(f, st.p[lane]);
+  const v4f col = st.color[lane] + (f.color - st.color[lane]) * f.speed;  // Draves & Reckase 2003, §5: c = mix(c, c_i, speed)
+  if (!inBounds(p, ifs.escapeBound)) [[unlikely]] {
+    ++bad;
+    st.restartLane(lane, ifs.skip);
+    return 0;
+  }
+  st.p[lane] = p;
+  st.color[lane] = col;
+  if (st.skipLeft[lane] > 0) {
+    --st.skipLeft[lane];
+    return 0;
+  }
+  if (ifs.finalFunction) {
+    const HotFunction& g = *ifs.finalFunction;
+    const v4f q = apply(g, p);
+    if (!inBounds(q, ifs.escapeBound)) [[unlikely]] {
+      ++bad;
+      return 0;
+    }
+    return plot(q, col + (g.color - col) * g.speed);
+  }
+  return plot(p, col);
+}
+
+/// Runs `count` iterations of the worker's chains (lane n % kLanes for the n-th one). `plot(q, color)`
+/// receives each point past `skip` (after the final function) and returns whether it was plotted.
+template <class Plot>
+[[gnu::always_inline]] inline void runChain(ChainState& st, const HotIfs& ifs, std::int64_t count, Plot& plot, ChainCounters& counters) {
+  std::int64_t bad = 0, plotted = 0;
+  // A local copy whose address never escapes stays in registers; the plotter's relaxed atomic
+  // stores would otherwise make the compiler reload the state from memory after every plot.
+  ChainState local = st;
+  const std::int64_t rounds = count / kLanes;
+  for (std::int64_t n = 0; n < rounds; ++n) {
+    plotted += stepLane(local, 0, ifs, plot, bad);
+    plotted += stepLane(local, 1, ifs, plot, bad);
+    plotted += stepLane(local, 2, ifs, plot, bad);
+    plotted += stepLane(local, 3, ifs, plot, bad);
+  }
+  static_assert(kLanes == 4);
+  for (int l = 0; l < int(count % kLanes); ++l) plotted += stepLane(local, l, ifs, plot, bad);
+  if constexpr (requires { plot.flush(); }) plot.flush();
+  st = local;
+  counters.samples += count;
+  counters.bad += bad;
+  counters.plotted += plotted;
+}
+
+/// Packs r g b c in [0, 1] into 4 bytes (r in the low byte).
+[[gnu::always_inline]] inline std::uint32_t packColor(v4f c) {
+#if defined(__SSE2__)
+  const __m128 scaled = _mm_add_ps(_mm_mul_ps(__m128(c), _mm_set1_ps(255.0f)), _mm_set1_ps(0.5f));
+  const __m128i i32 = _mm_cvttps_epi32(_mm_max_ps(scaled, _mm_setzero_ps()));
+  const __m128i i16 = _mm_packs_epi32(i32, i32);
+  return std::uint32_t(_mm_cvtsi128_si32(_mm_packus_epi16(i16, i16)));
+#else
+  std::uint32_t out = 0;
+  for (int d = 0; d < 4; ++d) {
+    float v = c[d] * 255.0f + 0.5f;
+    v = v < 0.0f ? 0.0f : (v > 255.0f ? 255.0f : v);
+    out |= std::uint32_t(v) << (8 * d);
+  }
+  return out;
+#endif
+}
+
+/// Projection rows as columns for a 4×4 matrix–vector product: r = cx·x + cy·y + cz·z + c1, giving
+/// (pixel x · w, pixel y · w, w, depth).
+struct HotCamera {
+  v4f cx, cy, cz, c1;
+  v4f size;  // width, height, 1, 1
+  float nearPlane;
+  std::uint32_t stride;
+};
+
+inline constexpr std::uint64_t kEmptyKey = ~std::uint64_t(0);
+
+/// One pixel of a worker's buffers: the z-buffer key and the hit count share a 16-byte cell, so a
+/// plotted sample touches one cache line, not two (the buffers are far larger than the caches).
+struct alignas(16) PixelCell {
+  std::uint64_t key = kEmptyKey;  // depth bits << 32 | packed colour; kEmptyKey when no point
+  std::uint32_t density = 0;
+  std::uint32_t unused = 0;
+};
+
+inline HotCamera makeHotCamera(const OrbitCamera& camera) {
+  const OrbitCamera::PixelRows rows = camera.pixelRows();
+  HotCamera hot{};
+  v4f* columns[4] = {&hot.cx, &hot.cy, &hot.cz, &hot.c1};
+  for (int c = 0; c < 4; ++c) *columns[c] = v4f{rows.rowX[c], rows.rowY[c], rows.rowW[c], rows.rowD[c]};
+  hot.size = v4f{float(camera.width()), float(camera.height()), 1.0f, 1.0f};
+  hot.nearPlane = float(camera.nearPlane());
+  hot.stride = std::uint32_t(camera.width());
+  return hot;
+}
+
+/// The z-buffer plotter (Gröller & Wegenkittl 1994, §3.1). Keys are (depth bits << 32 | packed colour): depth is
+/// positive, so unsigned order is depth order and equal depths fall back to the colour, which makes
+/// the per-pixel minimum independent of sample and worker order. Buffer accesses go through
+/// std::atomic_ref with relaxed order: plain moves on x86, but snapshot() may read them while
+/// the worker writes.
+template <bool kAccumulateColor>
+struct ZBufferPlot {
+  HotCamera cam;
+  PixelCell* cells;
+  float* colorSums;  // 4 per pixel, only with kAccumulateColor
+  /// Optional: 257 entries r g b 0 (the last repeats entry 255). When set, colorSums
+  /// receive the palette color at c for every sample, as flam3 does (Draves & Reckase 2003, §5), instead of
+  /// the blended RGB; lane 3 still sums c.
+  const v4f* palette = nullptr;
+
+  /// Without colour sums, each plot is deferred by kDefer samples: the cell is prefetched now and
+  /// read-modify-written later, so the cache miss (the buffers are far larger than the caches)
+  /// overlaps the next samples' arithmetic instead of stalling it. The z-test is a minimum and the
+  /// density a sum, so the deferral changes nothing in the result. runChain calls flush().
+  static constexpr unsigned kDefer = 8;
+  struct Pending {
+    PixelCell* cell = nullptr;
+    std::uint64_t key = 0;
+  };
+  Pending pending[kDefer] = {};
+  unsigned next = 0;
+
+  [[gnu::always_inline]] static void commit(PixelCell& cell, std::uint64_t key) {
+    std::atomic_ref<std::uint64_t> z(cell.key);
+    if (key < z.load(std::memory_order_relaxed)) z.store(key, std::memory_order_relaxed);
+    std::atomic_ref<std::uint32_t> d(cell.density);
+    const std::uint32_t n = d.load(std::memory_order_relaxed);
+    d.store(n + (n != 0xFFFFFFFFu), std::memory_order_relaxed);  // saturating
+  }
+
+  void flush() {
+    for (Pending& p : pending)
+      if (p.cell) {
+        commit(*p.cell, p.key);
+        p.cell = nullptr;
+      }
+  }
+
+  [[gnu::always_inline]] int operator()(v4f q, v4f col) {
+    const v4f r = cam.cx * splat<0>(q) + cam.cy * splat<1>(q) + cam.cz * splat<2>(q) + cam.c1;
+    const float depth = r[3];
+    if (!(depth > cam.nearPlane)) return 0;
+    const v4f xy = r * (1.0f / r[2]);  // lanes 0, 1: pixel x, y
+    if ((laneMask((xy >= v4f{}) & (xy < cam.size)) & 3) != 3) return 0;  // NaN fails too
+    const v4i ixy = __builtin_convertvector(xy, v4i);
+    const std::size_t pixel = std::size_t(std::uint32_t(ixy[1])) * cam.stride + std::uint32_t(ixy[0]);
+    const std::uint64_t key = (std::uint64_t(std::bit_cast<std::uint32_t>(depth)) << 32) | packColor(col);
+    PixelCell& cell = cells[pixel];
+    if constexpr (!kAccumulateColor) {
+      __builtin_prefetch(&cell, 1);
+      Pending& slot = pending[next++ % kDefer];
+      if (slot.cell) commit(*slot.cell, slot.key);
+      slot = {&cell, key};
+      return 1;
+    }
+    commit(cell, key);
+    if constexpr (kAccumulateColor) {
+      v4f add = col;
+      if (palette) {  // flam3's linear palette mode: index c·256, blend entries i and i+1
+        float x = col[3] * 256.0f;
+        x = x > 0.0f ? (x < 256.0f ? x : 256.0f) : 0.0f;  // NaN → 0
+        const int i = int(x) < 255 ? int(x) : 255;
+        const float frac = x - float(i);
+        add = palette[i] + (palette[i + 1] - palette[i]) * frac;
+        add[3] = col[3];
+      }
+      for (int k = 0; k < 4; ++k) {
+        std::atomic_ref<float> s(colorSums[pixel * 4 + k]);
+        s.store(s.load(std::memory_order_relaxed) + add[k], std::memory_order_relaxed);
+      }
+    }
+    return 1;
+  }
+};
+
+}  // namespace gridifs::kernel

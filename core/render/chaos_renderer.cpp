@@ -1,0 +1,543 @@
+#include "render/chaos_renderer.h"
+
+#if defined(__linux__)
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+#endif
+
+#include <algorithm>
+#include <bit>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+#include "render/chaos_kernel.h"
+
+// snapshot() reinterprets the packed colour bytes (r in the low byte) as r, g, b, a in memory.
+static_assert(std::endian::native == std::endian::little, "the renderer assumes a little-endian CPU");
+
+namespace gridifs {
+namespace {
+
+using kernel::kEmptyKey;
+
+std::int64_t nowNs() {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch())
+      .count();
+}
+
+/// Iterations per batch: a worker checks its generation, pause and quit flags between batches.
+/// ~0.1–0.3 ms at this machine's rates, so a restart stops stale work well within 1 ms.
+constexpr std::int64_t kBatch = 8192;
+static_assert(kBatch % kernel::kLanes == 0);
+
+/// Worker w's share of the budget: samples/T, plus one for the first samples%T workers.
+std::int64_t workerBudget(const RenderJob& job, int worker) {
+  if (job.samples <= 0) return std::numeric_limits<std::int64_t>::max();
+  const std::int64_t t = job.threads;
+  return job.samples / t + (worker < job.samples % t ? 1 : 0);
+}
+
+
+/// Everything the workers need for one generation; immutable once published.
+struct PreparedJob {
+  std::shared_ptr<const CompiledIfs> ifs;
+  std::vector<kernel::HotFunction> hot;  // functions, then the final function if any
+  kernel::HotIfs hotIfs;
+  kernel::HotCamera camera;
+  RenderJob job;
+  std::vector<kernel::v4f> palette;  // 257 entries when job.palette is set
+
+  PreparedJob(std::shared_ptr<const CompiledIfs> compiled, const RenderJob& renderJob)
+      : ifs(std::move(compiled)), job(renderJob) {
+    if (ifs->functions.empty() || ifs->alias.size() != ifs->functions.size())
+      throw ModelError("functions", "no unmuted function has a positive weight");
+    for (const CompiledFunction& f : ifs->functions) hot.push_back(kernel::makeHot(f));
+    if (ifs->finalFunction) hot.push_back(kernel::makeHot(*ifs->finalFunction));
+    hotIfs.functions = hot.data();
+    hotIfs.alias = ifs->alias.data();
+    hotIfs.count = std::uint32_t(ifs->functions.size());
+    hotIfs.finalFunction = ifs->finalFunction ? &hot.back() : nullptr;
+    hotIfs.skip = job.skip;
+    hotIfs.escapeBound = limits::kEscapeBound;
+    camera = kernel::makeHotCamera(OrbitCamera(job.camera, job.width, job.height));
+    if (job.palette) {
+      for (const Rgb& c : job.palette->colors) palette.push_back(kernel::v4f{c.r, c.g, c.b, 0.0f});
+      palette.push_back(palette.back());
+    }
+  }
+  PreparedJob(const PreparedJob&) = delete;
+  PreparedJob& operator=(const PreparedJob&) = delete;
+};
+
+}  // namespace
+
+struct ChaosRenderer::Shared {
+  std::mutex mutex;
+  std::condition_variable wake;      // workers wait here for work
+  std::condition_variable finished;  // the controller waits here in waitUntilDone
+  std::atomic<std::uint64_t> generation{0};
+  std::atomic<bool> paused{false}, quit{false};
+  std::shared_ptr<const PreparedJob> job;  // written by the controller under `mutex`
+  // Controller-thread-only bookkeeping.
+  std::uint64_t nextGeneration = 0;
+  std::int64_t startNs = 0, pausedAtNs = 0, pausedTotalNs = 0;
+};
+
+struct ChaosRenderer::Worker {
+  int index = 0;
+  std::vector<kernel::PixelCell> cells;
+  std::vector<float> colorSums;
+  /// The generation the buffers and counters belong to; 0 while they are being reset.
+  std::atomic<std::uint64_t> bufferGeneration{0};
+  alignas(64) std::atomic<std::int64_t> samples{0};
+  std::atomic<std::int64_t> bad{0}, plotted{0};
+  std::atomic<std::int64_t> finishedNs{0};  // when the budget ran out; 0 while running
+
+  void resetBuffers(const RenderJob& job) {
+    const std::size_t n = std::size_t(job.width) * std::size_t(job.height);
+    cells.assign(n, kernel::PixelCell{});
+    if (job.accumulateColor)
+      colorSums.assign(n * 4, 0.0f);
+    else
+      std::vector<float>().swap(colorSums);
+  }
+};
+
+namespace {
+
+template <bool kColor>
+[[gnu::always_inline]] inline void runBatchImpl(kernel::ChainState& chain, const PreparedJob& job,
+                                                ChaosRenderer::Worker& w, std::int64_t count,
+                                                kernel::ChainCounters& counters) {
+  kernel::ZBufferPlot<kColor> plot{job.camera, w.cells.data(), w.colorSums.data(),
+                                   job.palette.empty() ? nullptr : job.palette.data()};
+  kernel::runChain(chain, job.hotIfs, count, plot, counters);
+}
+
+GRIDIFS_KERNEL_CLONES void runBatchPlain(kernel::ChainState& chain, const PreparedJob& job, ChaosRenderer::Worker& w,
+                                         std::int64_t count, kernel::ChainCounters& counters) {
+  runBatchImpl<false>(chain, job, w, count, counters);
+}
+
+GRIDIFS_KERNEL_CLONES void runBatchColor(kernel::ChainState& chain, const PreparedJob& job, ChaosRenderer::Worker& w,
+                                         std::int64_t count, kernel::ChainCounters& counters) {
+  runBatchImpl<true>(chain, job, w, count, counters);
+}
+
+/// Lowers the calling thread's priority once (an unprivileged thread cannot raise it again).
+void lowerThreadPriority() {
+#if defined(__linux__)
+  setpriority(PRIO_PROCESS, id_t(syscall(SYS_gettid)), 10);
+#endif
+}
+
+void workerMain(std::shared_ptr<ChaosRenderer::Shared> shared, ChaosRenderer::Worker* w) {
+  const kernel::DenormalsAreZero flushDenormals;
+  bool lowered = false;
+  std::shared_ptr<const PreparedJob> job;
+  std::uint64_t myGeneration = 0;
+  std::int64_t remaining = 0;
+  kernel::ChainState chain;
+  kernel::ChainCounters counters;
+  for (;;) {
+    bool fresh = false;
+    {
+      std::unique_lock lock(shared->mutex);
+      shared->wake.wait(lock, [&] {
+        return shared->quit.load() || shared->generation.load() != myGeneration ||
+               (remaining > 0 && !shared->paused.load());
+      });
+      if (shared->quit.load()) return;
+      if (shared->generation.load() != myGeneration) {
+        job = shared->job;
+        myGeneration = shared->generation.load();
+        fresh = true;
+      }
+    }
+    if (fresh) {
+      if (job->job.lowPriority && !lowered) {
+        lowerThreadPriority();
+        lowered = true;
+      }
+      // Old-generation points stay in buffers that snapshot() ignores from here on.
+      w->bufferGeneration.store(0, std::memory_order_release);
+      w->resetBuffers(job->job);
+      w->samples.store(0, std::memory_order_relaxed);
+      w->bad.store(0, std::memory_order_relaxed);
+      w->plotted.store(0, std::memory_order_relaxed);
+      w->finishedNs.store(0, std::memory_order_relaxed);
+      counters = {};
+      remaining = workerBudget(job->job, w->index);
+      chain = kernel::ChainState::start(job->job.seed, std::uint64_t(w->index), job->job.skip);
+      w->bufferGeneration.store(myGeneration, std::memory_order_release);
+    }
+    while (remaining > 0) {
+      if (shared->generation.load(std::memory_order_relaxed) != myGeneration ||
+          shared->paused.load(std::memory_order_relaxed) || shared->quit.load(std::memory_order_relaxed))
+        break;
+      const std::int64_t n = std::min(remaining, kBatch);
+      if (job->job.accumulateColor)
+        runBatchColor(chain, *job, *w, n, counters);
+      else
+        runBatchPlain(chain, *job, *w, n, counters);
+      remaining -= n;
+      w->samples.store(counters.samples, std::memory_order_relaxed);
+      w->bad.store(counters.bad, std::memory_order_relaxed);
+      w->plotted.store(counters.plotted, std::memory_order_relaxed);
+    }
+    if (remaining == 0 && w->finishedNs.load(std::memory_order_relaxed) == 0) {
+      w->finishedNs.store(nowNs(), std::memory_order_release);
+      { std::lock_guard lock(shared->mutex); }
+      shared->finished.notify_all();
+    }
+  }
+}
+
+}  // namespace
+
+RenderJob RenderJob::fromProject(const Project& project, int threads) {
+  RenderJob job;
+  job.camera = project.camera;
+  job.width = project.render.width;
+  job.height = project.render.height;
+  job.samples = project.render.samples;
+  job.seed = project.render.seed;
+  job.skip = project.render.skip;
+  job.threads = threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));
+  job.threads = std::min(job.threads, limits::kMaxRenderThreads);
+  return job;
+}
+
+DisplaySettings DisplaySettings::fromProject(const Project& project) {
+  return DisplaySettings{project.render.background, project.render.depth_cue};
+}
+
+void validateRenderJob(const RenderJob& job) {
+  if (job.width < 1 || job.height < 1)
+    throw ModelError("render", "the image must be at least 1×1 pixel, not " + std::to_string(job.width) + "×" +
+                                   std::to_string(job.height));
+  const std::int64_t pixels = std::int64_t(job.width) * job.height;
+  if (job.width > limits::kMaxRenderSide || job.height > limits::kMaxRenderSide ||
+      pixels > limits::kMaxRenderPixels) {
+    const double gb = double(pixels) * (12.0 * std::max(1, job.threads) + 12.0) / 1e9;
+    throw ModelError("render", std::to_string(job.width) + "×" + std::to_string(job.height) +
+                                   " is too large: GridIFS renders at most 67 megapixels (e.g. 8192×8192), "
+                                   "because every render thread keeps its own z-buffer (this image would need "
+                                   "about " + std::to_string(int(std::ceil(gb))) + " GB)");
+  }
+  if (job.samples > limits::kMaxRenderSamples)
+    throw ModelError("render.samples", std::to_string(job.samples) + " samples is more than the limit of " +
+                                           std::to_string(limits::kMaxRenderSamples));
+  if (job.skip < 0 || job.skip > 1'000'000) throw ModelError("render.skip", "must be between 0 and 1000000");
+  if (job.threads < 1 || job.threads > limits::kMaxRenderThreads)
+    throw ModelError("render", "the thread count must be between 1 and " + std::to_string(limits::kMaxRenderThreads));
+  OrbitCamera(job.camera, job.width, job.height);  // throws for an unusable camera
+}
+
+ChaosRenderer::ChaosRenderer() : shared_(std::make_shared<Shared>()) {}
+
+ChaosRenderer::~ChaosRenderer() { joinThreads(); }
+
+void ChaosRenderer::joinThreads() {
+  {
+    std::lock_guard lock(shared_->mutex);
+    shared_->quit.store(true);
+  }
+  shared_->wake.notify_all();
+  for (std::thread& t : threads_) t.join();
+  threads_.clear();
+  shared_->quit.store(false);
+}
+
+void ChaosRenderer::startThreads(int count) {
+  while (int(workers_.size()) < count) {
+    workers_.push_back(std::make_unique<Worker>());
+    workers_.back()->index = int(workers_.size()) - 1;
+  }
+  workers_.resize(std::size_t(count));
+  for (int i = 0; i < count; ++i) threads_.emplace_back(workerMain, shared_, workers_[std::size_t(i)].get());
+}
+
+std::uint64_t ChaosRenderer::restart(std::shared_ptr<const CompiledIfs> ifs, const RenderJob& job) {
+  validateRenderJob(job);
+  if (!ifs) throw ModelError("", "there is no compiled IFS to render");
+  auto prepared = std::make_shared<const PreparedJob>(std::move(ifs), job);
+  std::uint64_t generation;
+  {
+    std::lock_guard lock(shared_->mutex);
+    shared_->job = prepared;
+    generation = ++shared_->nextGeneration;
+    shared_->generation.store(generation);
+  }
+  if (int(threads_.size()) != job.threads) {
+    joinThreads();
+    startThreads(job.threads);
+  }
+  shared_->wake.notify_all();
+  shared_->startNs = nowNs();
+  shared_->pausedTotalNs = 0;
+  shared_->pausedAtNs = shared_->startNs;
+  return generation;
+}
+
+void ChaosRenderer::stop() {
+  joinThreads();
+  std::lock_guard lock(shared_->mutex);
+  shared_->job.reset();
+  shared_->generation.store(++shared_->nextGeneration);
+}
+
+void ChaosRenderer::pause() {
+  if (shared_->paused.load()) return;
+  {
+    std::lock_guard lock(shared_->mutex);
+    shared_->paused.store(true);
+  }
+  shared_->pausedAtNs = nowNs();
+}
+
+void ChaosRenderer::resume() {
+  if (!shared_->paused.load()) return;
+  {
+    std::lock_guard lock(shared_->mutex);
+    shared_->paused.store(false);
+  }
+  shared_->pausedTotalNs += nowNs() - shared_->pausedAtNs;
+  shared_->wake.notify_all();
+}
+
+bool ChaosRenderer::paused() const { return shared_->paused.load(); }
+
+std::uint64_t ChaosRenderer::generation() const { return shared_->generation.load(); }
+
+RenderStats ChaosRenderer::stats() const {
+  RenderStats s;
+  s.generation = shared_->generation.load();
+  s.paused = shared_->paused.load();
+  const PreparedJob* job = shared_->job.get();
+  if (!job) return s;
+  s.budget = job->job.samples > 0 ? job->job.samples : 0;
+  bool allFinished = s.budget > 0;
+  std::int64_t lastFinish = 0;
+  for (const auto& w : workers_) {
+    if (w->bufferGeneration.load(std::memory_order_acquire) != s.generation) {
+      allFinished = false;
+      continue;
+    }
+    s.samples += w->samples.load(std::memory_order_relaxed);
+    s.badSamples += w->bad.load(std::memory_order_relaxed);
+    s.plotted += w->plotted.load(std::memory_order_relaxed);
+    const std::int64_t f = w->finishedNs.load(std::memory_order_acquire);
+    if (f == 0) allFinished = false;
+    lastFinish = std::max(lastFinish, f);
+  }
+  s.done = allFinished;
+  std::int64_t end = s.done ? lastFinish : (s.paused ? shared_->pausedAtNs : nowNs());
+  if (s.paused && !s.done) end = shared_->pausedAtNs;
+  s.seconds = std::max(0.0, double(end - shared_->startNs - shared_->pausedTotalNs) * 1e-9);
+  s.pointsPerSecond = s.seconds > 0.0 ? double(s.samples) / s.seconds : 0.0;
+  return s;
+}
+
+void ChaosRenderer::snapshot(RenderImage& out, const DisplaySettings& display) const {
+  const std::uint64_t generation = shared_->generation.load();
+  const PreparedJob* job = shared_->job.get();
+  out.generation = generation;
+  out.stats = stats();
+  if (!job) {
+    out.width = out.height = 0;
+    out.rgba.clear();
+    out.depth.clear();
+    out.density.clear();
+    out.colorSums.clear();
+    out.hitPixels = 0;
+    return;
+  }
+  const int width = job->job.width, height = job->job.height;
+  const std::size_t n = std::size_t(width) * std::size_t(height);
+  out.width = width;
+  out.height = height;
+  out.rgba.resize(n * 4);
+  out.depth.resize(n);
+  out.density.resize(n);
+  if (job->job.accumulateColor)
+    out.colorSums.assign(n * 4, 0.0f);
+  else
+    out.colorSums.clear();
+
+  std::vector<const Worker*> ready;
+  for (const auto& w : workers_)
+    if (w->bufferGeneration.load(std::memory_order_acquire) == generation) ready.push_back(w.get());
+
+  // Pass 1: per pixel, the smallest key (nearest depth, then smaller colour) and the summed
+  // density; neither depends on the order of workers, so the merge is deterministic. The packed
+  // colour waits in `rgba` (4 bytes per pixel) for pass 2.
+  std::uint32_t* packed = reinterpret_cast<std::uint32_t*>(out.rgba.data());
+  float minDepth = std::numeric_limits<float>::infinity(), maxDepth = -minDepth;
+  std::int64_t hits = 0;
+  auto keep = [&](std::size_t i, std::uint64_t key, std::uint64_t count) {
+    out.density[i] = std::uint32_t(std::min<std::uint64_t>(count, 0xFFFFFFFFu));
+    if (key == kEmptyKey) {
+      out.depth[i] = std::numeric_limits<float>::infinity();
+      return;
+    }
+    const float depth = std::bit_cast<float>(std::uint32_t(key >> 32));
+    out.depth[i] = depth;
+    std::memcpy(packed + i, &key, 4);  // the low 32 bits (little-endian)
+    minDepth = std::min(minDepth, depth);
+    maxDepth = std::max(maxDepth, depth);
+    ++hits;
+  };
+  auto keyOf = [](const kernel::PixelCell& c) {
+    return std::atomic_ref<const std::uint64_t>(c.key).load(std::memory_order_relaxed);
+  };
+  auto countOf = [](const kernel::PixelCell& c) {
+    return std::uint64_t(std::atomic_ref<const std::uint32_t>(c.density).load(std::memory_order_relaxed));
+  };
+  if (ready.size() == 1) {
+    const kernel::PixelCell* a = ready[0]->cells.data();
+    for (std::size_t i = 0; i < n; ++i) keep(i, keyOf(a[i]), countOf(a[i]));
+  } else if (ready.size() == 2) {
+    const kernel::PixelCell *a = ready[0]->cells.data(), *b = ready[1]->cells.data();
+    for (std::size_t i = 0; i < n; ++i) keep(i, std::min(keyOf(a[i]), keyOf(b[i])), countOf(a[i]) + countOf(b[i]));
+  } else {
+    for (std::size_t i = 0; i < n; ++i) {
+      std::uint64_t key = kEmptyKey, count = 0;
+      for (const Worker* w : ready) {
+        key = std::min(key, keyOf(w->cells[i]));
+        count += countOf(w->cells[i]);
+      }
+      keep(i, key, count);
+    }
+  }
+  if (job->job.accumulateColor)
+    for (const Worker* w : ready)
+      for (std::size_t i = 0; i < n * 4; ++i)
+        out.colorSums[i] += std::atomic_ref<const float>(w->colorSums[i]).load(std::memory_order_relaxed);
+  out.hitPixels = hits;
+  out.minDepth = hits ? minDepth : 0.0f;
+  out.maxDepth = hits ? maxDepth : 0.0f;
+
+  // Pass 2: depth cueing (Gröller & Wegenkittl 1994, §3.1: colours attenuated with distance) over the depth range
+  // of this image, and the background where nothing was plotted.
+  const float cue = float(std::clamp(display.depthCue, 0.0, 1.0));
+  const float range = maxDepth - minDepth;
+  const float scale = hits && range > 0.0f ? cue / range : 0.0f;
+  std::uint8_t bg[4] = {0, 0, 0, 0};
+  for (int c = 0; c < 3; ++c)
+    bg[c] = std::uint8_t(std::lround(std::clamp(display.background[c], 0.0, 1.0) * 255.0));
+  std::uint32_t background;
+  std::memcpy(&background, bg, 4);
+  for (std::size_t i = 0; i < n; ++i) {
+    const float depth = out.depth[i];
+    if (depth == std::numeric_limits<float>::infinity()) {
+      packed[i] = background;
+      continue;
+    }
+    const float attenuation = 1.0f - (depth - minDepth) * scale;
+    const std::uint32_t p = packed[i];
+    std::uint32_t result = 0xFF000000u;  // alpha 255
+    for (int c = 0; c < 3; ++c) {
+      const float v = float((p >> (8 * c)) & 0xFFu) * attenuation + 0.5f;
+      result |= std::uint32_t(std::min(255.0f, v)) << (8 * c);
+    }
+    packed[i] = result;  // bytes r, g, b, a in memory (little-endian)
+  }
+}
+
+RenderImage ChaosRenderer::snapshot(const DisplaySettings& display) const {
+  RenderImage image;
+  snapshot(image, display);
+  return image;
+}
+
+bool ChaosRenderer::waitUntilDone(const std::function<bool(const RenderStats&)>& progress, double intervalSeconds) {
+  const auto interval = std::chrono::duration<double>(std::max(0.001, intervalSeconds));
+  for (;;) {
+    RenderStats s = stats();
+    if (s.done) {
+      if (progress) progress(s);
+      return true;
+    }
+    if (s.budget <= 0 || s.paused || !shared_->job) return false;
+    if (progress && !progress(s)) {
+      pause();
+      return false;
+    }
+    std::unique_lock lock(shared_->mutex);
+    shared_->finished.wait_for(lock, interval, [&] { return stats().done; });
+  }
+}
+
+RenderImage renderToCompletion(std::shared_ptr<const CompiledIfs> ifs, const RenderJob& job,
+                               const DisplaySettings& display,
+                               const std::function<bool(const RenderStats&)>& progress) {
+  if (job.samples <= 0) throw ModelError("render.samples", "must be at least 1");
+  ChaosRenderer renderer;
+  renderer.restart(std::move(ifs), job);
+  if (!renderer.waitUntilDone(progress)) throw RenderCancelled();
+  return renderer.snapshot(display);
+}
+
+namespace {
+
+/// Collects points instead of plotting them (export-points).
+struct PointPlot {
+  std::vector<float>* xyz;
+  std::vector<float>* rgb;
+  [[gnu::always_inline]] int operator()(kernel::v4f q, kernel::v4f col) const {
+    xyz->insert(xyz->end(), {q[0], q[1], q[2]});
+    rgb->insert(rgb->end(), {std::clamp(col[0], 0.0f, 1.0f), std::clamp(col[1], 0.0f, 1.0f),
+                             std::clamp(col[2], 0.0f, 1.0f)});
+    return 1;
+  }
+};
+
+}  // namespace
+
+RenderStats generatePoints(const CompiledIfs& ifs, const RenderJob& job,
+                           const std::function<bool(const PointBatch&, const RenderStats&)>& sink) {
+  if (job.samples <= 0) throw ModelError("render.samples", "must be at least 1");
+  if (job.samples > limits::kMaxRenderSamples)
+    throw ModelError("render.samples", "more than the limit of " + std::to_string(limits::kMaxRenderSamples));
+  if (job.threads < 1 || job.threads > limits::kMaxRenderThreads)
+    throw ModelError("render", "the thread count must be between 1 and " + std::to_string(limits::kMaxRenderThreads));
+  RenderJob pointJob = job;
+  pointJob.width = pointJob.height = 1;  // no image; the camera is not used
+  const PreparedJob prepared(std::shared_ptr<const CompiledIfs>(&ifs, [](const CompiledIfs*) {}), pointJob);
+  RenderStats stats;
+  stats.budget = job.samples;
+  const std::int64_t start = nowNs();
+  const kernel::DenormalsAreZero flushDenormals;  // as the renderer's workers do
+  std::vector<float> xyz, rgb;
+  constexpr std::int64_t kPointBatch = 1 << 16;
+  static_assert(kPointBatch % kernel::kLanes == 0);
+  xyz.reserve(kPointBatch * 3);
+  rgb.reserve(kPointBatch * 3);
+  for (int w = 0; w < job.threads; ++w) {
+    kernel::ChainState chain = kernel::ChainState::start(job.seed, std::uint64_t(w), job.skip);
+    kernel::ChainCounters counters;
+    PointPlot plot{&xyz, &rgb};
+    for (std::int64_t remaining = workerBudget(job, w); remaining > 0;) {
+      const std::int64_t n = std::min(remaining, kPointBatch);
+      xyz.clear();
+      rgb.clear();
+      const kernel::ChainCounters before = counters;
+      kernel::runChain(chain, prepared.hotIfs, n, plot, counters);
+      remaining -= n;
+      stats.samples += counters.samples - before.samples;
+      stats.badSamples += counters.bad - before.bad;
+      stats.plotted += counters.plotted - before.plotted;
+      stats.seconds = double(nowNs() - start) * 1e-9;
+      stats.pointsPerSecond = stats.seconds > 0 ? double(stats.samples) / stats.seconds : 0.0;
+      stats.done = w + 1 == job.threads && remaining == 0;
+      if (!sink(PointBatch{xyz.data(), rgb.data(), xyz.size() / 3}, stats)) return stats;
+    }
+  }
+  return stats;
+}
+
+}  // namespace gridifs

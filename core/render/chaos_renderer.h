@@ -1,0 +1,180 @@
+#pragma once
+// The stochastic renderer (Gröller & Wegenkittl 1994, §3.1; Draves & Reckase 2003, §2 and §5): a pool of worker
+// threads plays the chaos game on an immutable CompiledIfs and streams the attractor into
+// per-worker z-buffer / density buffers, which snapshot() merges into an image while they run.
+//
+// Threading model: one controlling thread (the UI thread, or a CLI verb) calls every public
+// method; the workers are internal. No public method waits for a worker to finish a batch:
+// restart() only publishes a new generation (workers notice it within one batch, ~0.1 ms, and
+// drop their old buffers), snapshot() reads the workers' buffers with relaxed atomic loads while
+// they keep writing. Only a change of thread count, stop() and the destructor join threads
+// (which have stopped within one batch).
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include "render/camera.h"
+#include "render/compiled_ifs.h"
+#include "flame/palette.h"
+
+namespace gridifs {
+
+namespace limits {
+/// Images larger than this are refused: every render thread keeps a z-buffer and a density
+/// buffer (12 bytes per pixel, 28 with flame colour sums), so 8192×8192 already needs ~1.6 GB
+/// with two threads.
+inline constexpr std::int64_t kMaxRenderPixels = std::int64_t(8192) * 8192;
+inline constexpr int kMaxRenderSide = 16384;
+/// Larger sample budgets are refused (10^11 is about half an hour on two cores).
+inline constexpr std::int64_t kMaxRenderSamples = 100'000'000'000;
+inline constexpr int kMaxRenderThreads = 64;
+/// A point farther than this from the origin (in any coordinate) counts as escaped.
+inline constexpr float kEscapeBound = 1e5f;
+}  // namespace limits
+
+/// What to render. `samples` is the total number of chaos-game iterations over all workers
+/// (split evenly, worker w gets samples/T plus one if w < samples%T); ≤ 0 means "until stopped"
+/// (the GUI's progressive preview). The image depends on (snapshot, camera, size, samples, seed,
+/// skip, threads) only, bit for bit.
+struct RenderJob {
+  Camera camera;
+  int width = 1024, height = 768;
+  std::int64_t samples = 20'000'000;
+  std::uint64_t seed = 1;
+  int skip = 20;
+  int threads = 1;
+  /// Also accumulate per-pixel colour sums for the flame display. Costs a 16-byte
+  /// read-modify-write per plotted sample, so it is off for the z-buffer preview.
+  bool accumulateColor = false;
+  /// With accumulateColor: when set, colorSums hold the sums of this palette's color
+  /// at each sample's c (flam3's structural coloring, Draves & Reckase 2003, §5) instead of the blended RGB.
+  std::shared_ptr<const Palette> palette;
+  /// Run the workers at a lower OS priority (Linux: nice 10) so that the UI thread always gets a
+  /// core first on a machine with few cores (the GUI's preview). Does not change the image.
+  bool lowPriority = false;
+
+  /// camera, size, samples, seed and skip from the project; `threads` as given
+  /// (≤ 0: std::thread::hardware_concurrency()).
+  static RenderJob fromProject(const Project& project, int threads = 0);
+};
+
+/// Checks a job against the limits above. Throws ModelError naming the field
+/// ("render.width", "render.samples", ...) with one clear sentence.
+void validateRenderJob(const RenderJob& job);
+
+/// How the merged buffers become colours (applied in snapshot(), so changing it needs no re-render).
+struct DisplaySettings {
+  Vec3 background{0.0};
+  /// Gröller & Wegenkittl 1994, §3.1: colours are attenuated with distance. 0: none; 1: the farthest hit point is
+  /// black. The depth range is that of the points in the image (nearest → farthest).
+  double depthCue = 0.6;
+  static DisplaySettings fromProject(const Project& project);
+};
+
+struct RenderStats {
+  std::uint64_t generation = 0;
+  std::int64_t samples = 0;      // iterations done in this generation (all workers)
+  std::int64_t budget = 0;       // the job's sample budget (≤ 0: unlimited)
+  std::int64_t badSamples = 0;   // non-finite or escaped points; each restarted its chain
+  std::int64_t plotted = 0;      // samples past `skip` that landed in the frame, in front of the camera
+  double seconds = 0.0;          // wall time since the generation started (excluding pauses)
+  double pointsPerSecond = 0.0;  // samples / seconds
+  bool paused = false;
+  bool done = false;             // the budget is exhausted (never for an unlimited job)
+  double badFraction() const { return samples > 0 ? double(badSamples) / double(samples) : 0.0; }
+  double progress() const { return budget > 0 ? double(samples) / double(budget) : 0.0; }
+};
+
+/// A merged image. Row 0 is the top row. Reuse one instance across snapshot() calls to avoid
+/// reallocating.
+struct RenderImage {
+  int width = 0, height = 0;
+  std::vector<std::uint8_t> rgba;        // 4 per pixel: depth-cued colour over the background;
+                                         // alpha 255 where a point was plotted, else 0
+  std::vector<float> depth;              // view depth of the nearest point; +inf where none
+  std::vector<std::uint32_t> density;    // hits per pixel (saturating)
+  std::vector<float> colorSums;          // 4 per pixel (Σr, Σg, Σb, Σc) when job.accumulateColor, else empty
+  std::int64_t hitPixels = 0;            // pixels with at least one point
+  float minDepth = 0.0f, maxDepth = 0.0f;  // depth range of the hit pixels
+  std::uint64_t generation = 0;
+  RenderStats stats;
+};
+
+/// The progressive renderer. See the threading model at the top of this file.
+class ChaosRenderer {
+ public:
+  ChaosRenderer();
+  ~ChaosRenderer();  // stops and joins the workers
+  ChaosRenderer(const ChaosRenderer&) = delete;
+  ChaosRenderer& operator=(const ChaosRenderer&) = delete;
+
+  /// Starts rendering `ifs` with `job` as a new generation and returns its number. Points of older
+  /// generations never reach an image of this one. Throws ModelError when the job is invalid
+  /// (validateRenderJob) or `ifs` is null; the previous generation keeps running in that case.
+  std::uint64_t restart(std::shared_ptr<const CompiledIfs> ifs, const RenderJob& job);
+  /// Stops the workers (joins them) and forgets the current generation's buffers' validity.
+  void stop();
+  /// Workers idle after their current batch; resume() continues the same generation.
+  void pause();
+  void resume();
+  bool paused() const;
+
+  std::uint64_t generation() const;
+  RenderStats stats() const;
+  bool done() const { return stats().done; }
+
+  /// Merges the buffers of all workers that are already on the current generation into `out`
+  /// (deterministic merge: the nearest depth wins, equal depths by the smaller packed colour, so the
+  /// result does not depend on worker order). Does not stop or wait for workers. Cost: one pass
+  /// over every worker's buffers (a few ms at 1024² with two workers).
+  void snapshot(RenderImage& out, const DisplaySettings& display) const;
+  RenderImage snapshot(const DisplaySettings& display) const;
+
+  /// Blocks until the current generation's budget is done (returns at once for unlimited jobs).
+  /// `progress` is called about every `intervalSeconds` on this thread; returning false stops the
+  /// render early (the result then holds what was done). Returns false when stopped early.
+  bool waitUntilDone(const std::function<bool(const RenderStats&)>& progress = {}, double intervalSeconds = 0.1);
+
+  struct Worker;  // internal
+  struct Shared;  // internal
+
+ private:
+  void startThreads(int count);
+  void joinThreads();
+
+  std::shared_ptr<Shared> shared_;
+  std::vector<std::unique_ptr<Worker>> workers_;
+  std::vector<std::thread> threads_;
+};
+
+/// Thrown by renderToCompletion when its progress callback asks to stop.
+struct RenderCancelled : std::runtime_error {
+  RenderCancelled() : std::runtime_error("render cancelled") {}
+};
+
+/// Renders `job` to completion on `job.threads` workers and returns the merged image (the CLI's
+/// `render`). `progress` as in waitUntilDone; returning false cancels and throws RenderCancelled.
+/// Throws ModelError for an invalid job.
+RenderImage renderToCompletion(std::shared_ptr<const CompiledIfs> ifs, const RenderJob& job,
+                               const DisplaySettings& display,
+                               const std::function<bool(const RenderStats&)>& progress = {});
+
+/// The samples the renderer would plot, without projecting them (export-points): the same worker
+/// streams (seed, worker) for job.threads workers, the same skip and restart rule, the final
+/// function applied. Emits worker 0's samples first, then worker 1's, ... in batches; `sink`
+/// receives xyz (3 floats per point) and rgb (3 floats in [0, 1] per point) and returns false to
+/// cancel. Runs on the calling thread. Returns the RenderStats of the walk (plotted = points emitted).
+struct PointBatch {
+  const float* xyz;
+  const float* rgb;
+  std::size_t count;
+};
+RenderStats generatePoints(const CompiledIfs& ifs, const RenderJob& job,
+                           const std::function<bool(const PointBatch&, const RenderStats&)>& sink);
+
+}  // namespace gridifs

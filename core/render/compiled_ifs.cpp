@@ -1,0 +1,158 @@
+#include "render/compiled_ifs.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <string>
+
+#include "model/stack_evaluator.h"
+
+namespace gridifs {
+namespace {
+
+float clampToX(float v) {
+  // NaN → -1, like Grid::evaluate (points outside X are clamped to X first).
+  v = v > -1.0f ? v : -1.0f;
+  return v < 1.0f ? v : 1.0f;
+}
+
+}  // namespace
+
+CompiledFunction compileFunction(const Function& function, const Grid& evaluated, std::size_t sourceIndex) {
+  if (!allFinite(evaluated)) throw ModelError("", "the evaluated grid has non-finite nodes");
+  const Index3 n = evaluated.resolution();
+  CompiledFunction out;
+  out.resolution = n;
+  out.pairStrideJ = std::uint32_t(n[0] - 1);
+  out.pairStrideK = std::uint32_t(n[0] - 1) * std::uint32_t(n[1]);
+  out.pairs.resize(std::size_t(n[0] - 1) * n[1] * n[2]);
+  for (int k = 0; k < n[2]; ++k)
+    for (int j = 0; j < n[1]; ++j)
+      for (int i = 0; i + 1 < n[0]; ++i) {
+        NodePair& pair = out.pairs[std::size_t(i) + out.pairStrideJ * std::size_t(j) + out.pairStrideK * std::size_t(k)];
+        const Vec3 a = evaluated.node(i, j, k), b = evaluated.node(i + 1, j, k);
+        for (int d = 0; d < 3; ++d) {
+          pair.a[d] = float(a[d]);
+          pair.b[d] = float(b[d]);
+        }
+        pair.a[3] = pair.b[3] = 0.0f;
+      }
+  for (int d = 0; d < 3; ++d) {
+    out.toLattice[d] = 0.5f * float(n[d] - 1);
+    out.maxCell[d] = float(n[d] - 2);
+  }
+  for (int d = 0; d < 3; ++d) out.color[d] = float(std::clamp(function.color[d], 0.0, 1.0));
+  out.color[3] = float(std::clamp(function.palette_index, 0.0, 1.0));
+  out.colorSpeed = float(std::clamp(function.color_speed, 0.0, 1.0));
+  out.weight = function.weight;
+  out.sourceIndex = sourceIndex;
+  return out;
+}
+
+std::array<float, 3> CompiledFunction::evaluate(std::array<float, 3> p) const {
+  // Must perform exactly the float operations of the renderer's kernel (chaos_kernel.h).
+  float s[3], f[3];
+  int cell[3];
+  for (int d = 0; d < 3; ++d) {
+    s[d] = (clampToX(p[d]) + 1.0f) * toLattice[d];
+    const float c = std::min(float(int(s[d])), maxCell[d]);
+    cell[d] = int(c);
+    f[d] = s[d] - c;
+  }
+  const std::size_t idx = std::size_t(cell[0]) + pairStrideJ * std::size_t(cell[1]) + pairStrideK * std::size_t(cell[2]);
+  const NodePair& p00 = pairs[idx];
+  const NodePair& p10 = pairs[idx + pairStrideJ];
+  const NodePair& p01 = pairs[idx + pairStrideK];
+  const NodePair& p11 = pairs[idx + pairStrideJ + pairStrideK];
+  std::array<float, 3> out{};
+  for (int d = 0; d < 3; ++d) {
+    const float a0 = p00.a[d] + (p10.a[d] - p00.a[d]) * f[1];
+    const float b0 = p00.b[d] + (p10.b[d] - p00.b[d]) * f[1];
+    const float a1 = p01.a[d] + (p11.a[d] - p01.a[d]) * f[1];
+    const float b1 = p01.b[d] + (p11.b[d] - p01.b[d]) * f[1];
+    const float a = a0 + (a1 - a0) * f[2];
+    const float b = b0 + (b1 - b0) * f[2];
+    out[d] = a + (b - a) * f[0];
+  }
+  return out;
+}
+
+std::vector<AliasEntry> buildAliasTable(const std::vector<double>& weights) {
+  // Vose's stable variant of Walker's alias method; thresholds in units of 2^-32.
+  const std::size_t n = weights.size();
+  std::vector<AliasEntry> table(n);
+  double total = 0.0;
+  for (double w : weights) total += std::max(0.0, w);
+  if (n == 0 || !(total > 0.0)) throw ModelError("functions", "no unmuted function has a positive weight");
+  std::vector<double> scaled(n);
+  std::vector<std::uint32_t> small, large;
+  for (std::size_t i = 0; i < n; ++i) {
+    scaled[i] = std::max(0.0, weights[i]) * double(n) / total;
+    (scaled[i] < 1.0 ? small : large).push_back(std::uint32_t(i));
+  }
+  while (!small.empty() && !large.empty()) {
+    const std::uint32_t s = small.back(), l = large.back();
+    small.pop_back();
+    table[s] = {std::uint32_t(std::min(4294967295.0, std::floor(scaled[s] * 4294967296.0))), l};
+    scaled[l] = (scaled[l] + scaled[s]) - 1.0;
+    if (scaled[l] < 1.0) {
+      large.pop_back();
+      small.push_back(l);
+    }
+  }
+  // Leftovers are 1 up to rounding: always keep their own column.
+  for (std::uint32_t i : large) table[i] = {0xFFFFFFFFu, i};
+  for (std::uint32_t i : small) table[i] = {0xFFFFFFFFu, i};
+  return table;
+}
+
+namespace {
+
+std::shared_ptr<const CompiledIfs> compileWith(
+    const Project& project, const std::function<std::shared_ptr<const Grid>(std::size_t)>& gridOf,
+    const std::function<std::shared_ptr<const Grid>()>& finalGrid) {
+  auto ifs = std::make_shared<CompiledIfs>();
+  std::vector<double> weights;
+  for (std::size_t i = 0; i < project.functions.size(); ++i) {
+    const Function& f = project.functions[i];
+    if (f.muted || !(f.weight > 0.0)) continue;
+    const std::string path = "functions[" + std::to_string(i) + "]";
+    const auto grid = gridOf(i);
+    try {
+      ifs->functions.push_back(compileFunction(f, *grid, i));
+    } catch (const ModelError& e) {
+      throw e.under(path);
+    }
+    weights.push_back(f.weight);
+  }
+  ifs->alias = buildAliasTable(weights);
+  double total = 0.0;
+  for (double w : weights) total += w;
+  for (double w : weights) ifs->probabilities.push_back(w / total);
+  if (project.final_function && !project.final_function->muted) {
+    const auto grid = finalGrid();
+    try {
+      ifs->finalFunction = compileFunction(*project.final_function, *grid, std::size_t(-1));
+    } catch (const ModelError& e) {
+      throw e.under("final");
+    }
+  }
+  return ifs;
+}
+
+}  // namespace
+
+std::shared_ptr<const CompiledIfs> compileIfs(const Project& project, const EvaluationCache& evaluation) {
+  return compileWith(
+      project, [&](std::size_t i) { return evaluation.function(project, i); },
+      [&] { return evaluation.finalFunction(project); });
+}
+
+std::shared_ptr<const CompiledIfs> compileIfs(const Project& project) {
+  return compileWith(
+      project,
+      [&](std::size_t i) { return evaluateFunctionAt(project.functions[i], "functions[" + std::to_string(i) + "]"); },
+      [&] { return evaluateFunctionAt(*project.final_function, "final"); });
+}
+
+}  // namespace gridifs

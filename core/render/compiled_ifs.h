@@ -1,0 +1,82 @@
+#pragma once
+// The renderer's immutable snapshot of an evaluated IFS (compiled grids as flat float
+// arrays). Built once per edit on the UI thread, then shared read-only by all chaos-game workers.
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+#include "model/evaluation_cache.h"
+#include "model/project.h"
+
+namespace gridifs {
+
+/// Two x-neighbouring distorted nodes (i, j, k) and (i+1, j, k), each as x y z 0: one 32-byte
+/// aligned load gives both ends of a cell edge, so a trilinear lookup is 4 loads (Gröller & Wegenkittl 1994, §1.3).
+struct alignas(32) NodePair {
+  float a[4];
+  float b[4];
+};
+
+/// One function of the snapshot. Immutable after compileIfs; thread-safe to read.
+struct CompiledFunction {
+  Index3 resolution{2, 2, 2};
+  /// pairs[(i) + pairStrideJ·j + pairStrideK·k] for i in [0, Ni-2], j in [0, Nj-1], k in [0, Nk-1].
+  std::vector<NodePair> pairs;
+  std::uint32_t pairStrideJ = 1, pairStrideK = 1;
+  /// Lattice coordinate s_d = (p_d + 1) · toLattice[d]; the cell is min(floor(s_d), maxCell[d]).
+  float toLattice[4] = {0.5f, 0.5f, 0.5f, 0.0f};
+  float maxCell[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  /// r g b and the palette index c_i (Draves & Reckase 2003, §5), mixed into the running color with colorSpeed.
+  float color[4] = {1.0f, 1.0f, 1.0f, 0.0f};
+  float colorSpeed = 0.5f;
+  double weight = 1.0;
+  /// Index in Project::functions (or SIZE_MAX for the final function).
+  std::size_t sourceIndex = 0;
+
+  /// Reference (scalar) evaluation, identical in result to the renderer's inner loop:
+  /// clamp p to X (NaN → -1), locate the cell, interpolate trilinearly in float.
+  std::array<float, 3> evaluate(std::array<float, 3> p) const;
+};
+
+/// Walker's alias method: one 64-bit random number picks a function by weight in O(1).
+struct AliasEntry {
+  std::uint32_t threshold;  // keep the column when the low 32 random bits are < threshold
+  std::uint32_t alias;      // otherwise take this function
+};
+
+/// The whole snapshot. Immutable; share it as shared_ptr<const CompiledIfs> across threads.
+struct CompiledIfs {
+  std::vector<CompiledFunction> functions;  // unmuted functions with weight > 0, in project order
+  std::optional<CompiledFunction> finalFunction;
+  std::vector<AliasEntry> alias;  // one entry per function
+  std::vector<double> probabilities;  // normalised weights (for tests and the UI)
+
+  /// Maps a 64-bit random number to a function index by weight: the high 32 bits pick the
+  /// column, the low 32 bits decide between it and its alias.
+  std::uint32_t choose(std::uint64_t random) const {
+    const std::uint32_t column =
+        std::uint32_t((std::uint64_t(std::uint32_t(random >> 32)) * std::uint64_t(alias.size())) >> 32);
+    const AliasEntry& e = alias[column];
+    return std::uint32_t(random) < e.threshold ? column : e.alias;
+  }
+};
+
+/// Packs an evaluated grid (distorted and placed) for the renderer. Throws ModelError when a
+/// node is not finite.
+CompiledFunction compileFunction(const Function& function, const Grid& evaluated, std::size_t sourceIndex);
+
+/// Builds the alias table for `weights` (all ≥ 0, at least one > 0). Exposed for tests.
+std::vector<AliasEntry> buildAliasTable(const std::vector<double>& weights);
+
+/// Compiles `project` reading evaluated grids through `evaluation` (the Document's cache). Call on
+/// the thread that owns the cache. Throws ModelError (with a JSON path) when a stack fails to evaluate or when no
+/// unmuted function has a positive weight.
+std::shared_ptr<const CompiledIfs> compileIfs(const Project& project, const EvaluationCache& evaluation);
+
+/// The same from a bare project (evaluates every stack; no cache). Thread-safe for distinct
+/// projects. Throws ModelError as above.
+std::shared_ptr<const CompiledIfs> compileIfs(const Project& project);
+
+}  // namespace gridifs
