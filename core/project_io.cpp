@@ -14,6 +14,7 @@
 #include "core/calculator.h"
 #include "core/palette.h"
 #include "core/stack_evaluator.h"
+#include "core/transition_matrix.h"
 
 namespace gridifs {
 namespace {
@@ -364,6 +365,8 @@ Function readFunction(const json& f, const std::string& path, std::size_t index)
   fn.palette_index = number(f, "palette_index", path, 0.0, 0.0, 1.0);
   fn.color_speed = number(f, "color_speed", path, 0.5, 0.0, 1.0);
   fn.muted = boolean(f, "muted", path, false);
+  if (auto it = f.find("sampling_error"); it != f.end() && !it->is_null())
+    fn.sampling_error = readNumber(*it, join(path, "sampling_error"), 0.0, limits::kMaxCoordinate);
   if (auto it = f.find("placement"); it != f.end()) {
     const std::string p = join(path, "placement");
     requireObject(*it, p);
@@ -468,6 +471,7 @@ ordered_json writeFunction(const Function& f) {
   o["palette_index"] = f.palette_index;
   o["color_speed"] = f.color_speed;
   o["muted"] = f.muted;
+  if (f.sampling_error) o["sampling_error"] = *f.sampling_error;
   o["placement"] = {{"translate", writeVec3(f.placement.translate)},
                     {"rotate", writeVec3(f.placement.rotate)},
                     {"scale", writeVec3(f.placement.scale)}};
@@ -554,6 +558,22 @@ Project parseProject(const std::string& text) {
     project.functions.push_back(readFunction((*functions)[f], item("functions", f), f));
   if (auto it = root.find("final"); it != root.end() && !it->is_null())
     project.final_function = readFunction(*it, "final", 0);
+  if (auto it = root.find("transitions"); it != root.end() && !it->is_null()) {
+    // Sizes are checked against the functions by checkTransitions; here only the JSON shape.
+    if (!it->is_array()) fail("transitions", std::string("expected an array of rows, found ") + typeName(*it));
+    if (it->size() > std::size_t(limits::kMaxFunctions))
+      fail("transitions", "more than " + std::to_string(limits::kMaxFunctions) + " rows");
+    for (std::size_t i = 0; i < it->size(); ++i) {
+      const json& row = (*it)[i];
+      const std::string p = item("transitions", i);
+      if (!row.is_array()) fail(p, std::string("expected an array of weights, found ") + typeName(row));
+      if (row.size() > std::size_t(limits::kMaxFunctions))
+        fail(p, "more than " + std::to_string(limits::kMaxFunctions) + " entries");
+      std::vector<double> weights;
+      for (std::size_t j = 0; j < row.size(); ++j) weights.push_back(readNumber(row[j], item(p, j), 0.0, 1e9));
+      project.transitions.push_back(std::move(weights));
+    }
+  }
   validateProject(project);
   return project;
 }
@@ -600,6 +620,7 @@ void validateProject(const Project& project) {
   bool anyActive = false;
   for (const Function& fn : project.functions) anyActive |= !fn.muted;
   if (anyActive && !(totalWeight > 0.0)) fail("functions", "every active function has weight 0 (weights must not all be zero)");
+  checkTransitions(project);
 }
 
 std::string serializeProject(const Project& project) {
@@ -623,6 +644,7 @@ std::string serializeProject(const Project& project) {
   for (const Function& f : project.functions) functions.push_back(writeFunction(f));
   root["functions"] = functions;
   if (project.final_function) root["final"] = writeFunction(*project.final_function);
+  if (!project.transitions.empty()) root["transitions"] = project.transitions;
   return root.dump(2) + "\n";
 }
 

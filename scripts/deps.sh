@@ -6,6 +6,7 @@ GRIDIFS_PACKAGES=(
   build-essential cmake pkg-config
   libglfw3-dev libglm-dev libopenmesh-dev libopenimageio-dev openimageio-tools libimgui-dev
   libmuparser-dev nlohmann-json3-dev libcli11-dev libgtest-dev libbenchmark-dev libepoxy-dev
+  libpugixml-dev
   xvfb xauth xdotool imagemagick mesa-utils libgl1-mesa-dri fonts-dejavu-core
   flam3-utils flam3-palette
 )
