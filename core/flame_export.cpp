@@ -105,12 +105,13 @@ FlameExport exportFlame(const Project& project, const std::filesystem::path& pro
   // The flame plane is X's z = 0 plane with y flipped (image rows go down with y); the frame
   // is recorded so that importing the file again restores the same grids.
   FlameFrame frame;
+  frame.scale = project.render.flame.density_unit;  // flam3's exposure counts density per flame unit
   const Camera& cam = project.camera;
   const RenderSettings& r = project.render;
   if (!(cam.ortho && cam.pitch == 90.0))
     out.warnings.push_back("the camera is not an orthographic view from above; the flame frames its target and extent seen from above");
   const double halfH = cam.distance * std::tan(cam.fov * 3.14159265358979323846 / 360.0);
-  const double ppu = r.height / (2.0 * halfH);
+  const double ppu = r.height / (2.0 * halfH) * frame.scale;
   const FlamePoint center = frame.fromX({cam.target.x, cam.target.y});
   const FlameSettings& fl = r.flame;
   std::ostringstream x;

@@ -1,7 +1,9 @@
 #include "core/flame_import.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <fstream>
 #include <random>
 
 #include "core/project_io.h"
@@ -144,6 +146,37 @@ FlamePoint FlameFrame::fromX(FlamePoint x) const {
   return {centerX + c * rx - s * ry, centerY + s * rx + c * ry};
 }
 
+FlameFileImport importFlameFile(const std::filesystem::path& file, const std::string& genome,
+                                const std::filesystem::path& paletteFolder) {
+  namespace fs = std::filesystem;
+  const std::vector<FlameGenome> genomes = loadFlameFile(file);
+  const FlameGenome& chosen = selectGenome(genomes, genome);
+  const std::size_t index = std::size_t(&chosen - genomes.data());
+  std::string stem;
+  for (char c : chosen.name.empty() ? file.stem().string() + "-" + std::to_string(index) : chosen.name)
+    stem += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' ? c : '_';
+  const fs::path paletteFile = fs::absolute(paletteFolder / (stem + ".palette.json"));
+  FlameImportOptions options;
+  options.inlinePaletteReference = "file:" + paletteFile.string();
+  FlameImport imported = importFlameGenome(chosen, options);
+  if (imported.palette) {
+    std::error_code ec;
+    fs::create_directories(paletteFolder, ec);
+    const fs::path temporary = fs::path(paletteFile).concat(".tmp");
+    {
+      std::ofstream out(temporary, std::ios::binary);
+      out << serializePaletteJson(*imported.palette);
+      if (!out.flush()) throw IoError("cannot write the palette " + paletteFile.string());
+    }
+    fs::rename(temporary, paletteFile, ec);
+    if (ec) throw IoError("cannot write the palette " + paletteFile.string() + ": " + ec.message());
+  }
+  FlameFileImport out{std::move(imported.project), std::move(imported.warnings), {}};
+  out.description = (chosen.name.empty() ? file.filename().string() : chosen.name) + " (genome " +
+                    std::to_string(index + 1) + " of " + std::to_string(genomes.size()) + ")";
+  return out;
+}
+
 double flameSamplingError(const Function& function, const FlameXform& map, const FlameFrame& frame) {
   const auto grid = evaluateFunctionAt(function, "");
   const Index3 n = function.resolution;
@@ -262,6 +295,7 @@ FlameImport importFlameGenome(const FlameGenome& genome, const FlameImportOption
   fl.estimator_minimum = clamped(genome.estimator_minimum, 0.0, fl.estimator_radius, "estimator_minimum");
   fl.estimator_curve = clamped(genome.estimator_curve, 0.05, 10.0, "estimator_curve");
   fl.filter_radius = clamped(genome.filter, 0.0, 10.0, "filter");
+  fl.density_unit = out.frame.scale;  // keeps flam3's exposure (hits per pixel of its plane)
   try {
     validateProject(p);
   } catch (const ModelError& e) {

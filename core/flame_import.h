@@ -3,6 +3,7 @@
 // nodes sample the xform's whole map (pre-affine, weighted variations, post; Draves & Reckase
 // §3, §3.1) over a square domain of the flame plane that holds the genome's view and (most of)
 // its attractor, mapped onto X. Pure functions: thread-safe.
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -44,6 +45,19 @@ inline constexpr const char* kFlameFrameAttribute = "gridifs_frame";
 /// Converts `genome`. Throws FlameError when a map cannot be sampled (no finite node) or the
 /// options are out of range.
 FlameImport importFlameGenome(const FlameGenome& genome, const FlameImportOptions& options);
+
+/// What the modeller's File › Import flame… needs: the project of genome `genome` (index or
+/// name; empty: the first) of `file`, its warnings and a short description ("NAME (genome 1 of
+/// 3)"). A genome with its own palette gets it written to `paletteFolder` (created when missing)
+/// as NAME.palette.json and referenced by absolute path. Throws FlameError (bad file),
+/// IoError (unreadable file, unwritable palette).
+struct FlameFileImport {
+  Project project;
+  std::vector<std::string> warnings;
+  std::string description;
+};
+FlameFileImport importFlameFile(const std::filesystem::path& file, const std::string& genome,
+                                const std::filesystem::path& paletteFolder);
 
 /// The largest distance (X units) between `function`'s grid and `map` at the centres of the
 /// grid's cells in the z = 0 plane... exposed for tests: evaluates the grid trilinearly.

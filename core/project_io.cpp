@@ -319,6 +319,7 @@ void checkFlame(const FlameSettings& f, const std::string& path) {
   range(f.estimator_minimum, "estimator_minimum", 0.0, 64.0);
   range(f.estimator_curve, "estimator_curve", 0.05, 10.0);
   range(f.filter_radius, "filter_radius", 0.0, 10.0);
+  range(f.density_unit, "density_unit", 1e-6, 1e6);
   if (f.estimator_radius > 0.0) {
     if (f.estimator_minimum > f.estimator_radius)
       fail(join(path, "estimator_minimum"), "the estimator minimum is larger than its radius");
@@ -346,6 +347,7 @@ FlameSettings readFlame(const json& o, const std::string& path) {
   f.estimator_minimum = number(o, "estimator_minimum", path, f.estimator_minimum, 0.0, 64.0);
   f.estimator_curve = number(o, "estimator_curve", path, f.estimator_curve, 0.05, 10.0);
   f.filter_radius = number(o, "filter_radius", path, f.filter_radius, 0.0, 10.0);
+  f.density_unit = number(o, "density_unit", path, f.density_unit, 1e-6, 1e6);
   checkFlame(f, path);
   return f;
 }
@@ -640,6 +642,7 @@ std::string serializeProject(const Project& project) {
                              {"highlight_power", fl.highlight_power}, {"supersample", fl.supersample},
                              {"estimator_radius", fl.estimator_radius}, {"estimator_minimum", fl.estimator_minimum},
                              {"estimator_curve", fl.estimator_curve}, {"filter_radius", fl.filter_radius}};
+  if (fl.density_unit != 1.0) root["render"]["flame"]["density_unit"] = fl.density_unit;
   ordered_json functions = ordered_json::array();
   for (const Function& f : project.functions) functions.push_back(writeFunction(f));
   root["functions"] = functions;

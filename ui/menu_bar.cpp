@@ -43,6 +43,7 @@ float drawMenuBar(AppCommands& app) {
         if (ImGui::MenuItem(file.filename().string().c_str())) app.files.requestOpen(file);
       ImGui::EndMenu();
     }
+    if (ImGui::MenuItem("Import flame...")) app.files.requestImportFlameDialog();
     ImGui::Separator();
     if (ImGui::MenuItem("Save", "Ctrl+S")) app.files.save();
     if (ImGui::MenuItem("Save As...", "Ctrl+Shift+S")) app.files.saveAsDialog();
