@@ -107,14 +107,23 @@ GRIDIFS_KERNEL_CLONES void runKernel(kernel::ChainState& chain, const kernel::Ho
 }
 
 /// The kernel alone on the calling thread (no pool): points per CPU second, robust to a busy machine.
+/// Arg 1: with a transition matrix (no function follows itself), the Markov-chain walk.
 void BM_Kernel(benchmark::State& state) {
-  const RenderJob job = RenderJob::fromProject(canonicalScene(), 1);
-  const auto& ifs = *canonicalIfs();
+  Project scene = canonicalScene();
+  if (state.range(0) == 1) {
+    const std::size_t n = scene.functions.size();
+    scene.transitions.assign(n, std::vector<double>(n, 1.0));
+    for (std::size_t i = 0; i < n; ++i) scene.transitions[i][i] = 0.0;
+  }
+  const RenderJob job = RenderJob::fromProject(scene, 1);
+  const auto compiled = compileIfs(scene);
+  const auto& ifs = *compiled;
   std::vector<kernel::HotFunction> hot;
   for (const auto& f : ifs.functions) hot.push_back(kernel::makeHot(f));
   kernel::HotIfs hotIfs;
   hotIfs.functions = hot.data();
   hotIfs.alias = ifs.alias.data();
+  hotIfs.transitionRows = ifs.transitionAlias.empty() ? nullptr : ifs.transitionAlias.data();
   hotIfs.count = std::uint32_t(hot.size());
   hotIfs.skip = job.skip;
   const kernel::HotCamera cam = kernel::makeHotCamera(OrbitCamera(job.camera, job.width, job.height));
@@ -126,7 +135,7 @@ void BM_Kernel(benchmark::State& state) {
   state.SetItemsProcessed(counters.samples);
   state.counters["plotted_fraction"] = double(counters.plotted) / double(counters.samples);
 }
-BENCHMARK(BM_Kernel)->Unit(benchmark::kMillisecond)->MinTime(1.0);
+BENCHMARK(BM_Kernel)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->MinTime(1.0);
 
 /// The plot-only limit: the same RNG, random pixels of a 1024² z-buffer + density (the renderer's
 /// 16-byte cells), no function evaluation. One thread; the canonical scene's plotted fraction is close to 1.
