@@ -32,14 +32,14 @@ int runExportFlame(const std::string& file, const std::string& out) {
   return kSuccess;
 }
 
-const VerbRegistration kExportFlame{{"export-flame", "FILE -o OUT.flame: the project as a flame genome (affine xforms)",
-                                     [](CLI::App& app) {
-                                       auto file = std::make_shared<std::string>();
-                                       auto out = std::make_shared<std::string>();
-                                       app.add_option("FILE", *file, "project file (.gridifs)")->required();
-                                       app.add_option("-o,--output", *out, "output flame (.flame)")->required();
-                                       return [=] { return runExportFlame(*file, *out); };
-                                     }}};
+const VerbRegistration kExportFlame{
+    {"export-flame", "FILE -o OUT.flame: the project as a flame genome (affine xforms)", [](CLI::App& app) {
+       auto file = std::make_shared<std::string>();
+       auto out = std::make_shared<std::string>();
+       app.add_option("FILE", *file, "project file (.gridifs)")->required();
+       app.add_option("-o,--output", *out, "output flame (.flame)")->required();
+       return [=] { return runExportFlame(*file, *out); };
+     }}};
 
 }  // namespace
 }  // namespace gridifs::cli

@@ -32,13 +32,14 @@ int listGenomes(const std::string& file) {
   return kSuccess;
 }
 
-int runImportFlame(const std::string& file, const std::string& out, const std::string& genome, int resolution, bool list) {
+int runImportFlame(const std::string& file, const std::string& out, const std::string& genome, int resolution,
+                   bool list) {
   if (list) return listGenomes(file);
   if (out.empty()) throw CliError(kBadInput, "import-flame needs -o OUT.gridifs (or --list)");
   checkOutputPath(out, {"gridifs"}, "the project");
   if (resolution < 2 || resolution > limits::kMaxResolution)
-    throw CliError(kBadInput, "--resolution must be between 2 and " + std::to_string(limits::kMaxResolution) + ", not " +
-                                  std::to_string(resolution));
+    throw CliError(kBadInput, "--resolution must be between 2 and " + std::to_string(limits::kMaxResolution) +
+                                  ", not " + std::to_string(resolution));
   const auto genomes = readGenomes(file);
   FlameImportOptions options;
   options.resolution = resolution;

@@ -21,11 +21,20 @@ std::string xmlEscape(const std::string& text) {
   std::string out;
   for (char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
     }
   }
   return out;
@@ -109,7 +118,8 @@ FlameExport exportFlame(const Project& project, const std::filesystem::path& pro
   const Camera& cam = project.camera;
   const RenderSettings& r = project.render;
   if (!(cam.ortho && cam.pitch == 90.0))
-    out.warnings.push_back("the camera is not an orthographic view from above; the flame frames its target and extent seen from above");
+    out.warnings.push_back(
+        "the camera is not an orthographic view from above; the flame frames its target and extent seen from above");
   const double halfH = cam.distance * std::tan(cam.fov * 3.14159265358979323846 / 360.0);
   const double ppu = r.height / (2.0 * halfH) * frame.scale;
   const FlamePoint center = frame.fromX({cam.target.x, cam.target.y});
@@ -120,11 +130,11 @@ FlameExport exportFlame(const Project& project, const std::filesystem::path& pro
     << "\" zoom=\"0\" rotate=\"0\" oversample=\"" << fl.supersample << "\" supersample=\"" << fl.supersample
     << "\" filter=\"" << num(fl.filter_radius) << "\" filter_shape=\"gaussian\" quality=\""
     << num(double(r.samples) / (double(r.width) * r.height)) << "\" background=\"" << num(r.background.x) << " "
-    << num(r.background.y) << " " << num(r.background.z) << "\" brightness=\"" << num(fl.brightness)
-    << "\" gamma=\"" << num(fl.gamma) << "\" gamma_threshold=\"" << num(fl.gamma_threshold) << "\" vibrancy=\""
-    << num(fl.vibrancy) << "\" highlight_power=\"" << num(fl.highlight_power) << "\" estimator_radius=\""
-    << num(fl.estimator_radius) << "\" estimator_minimum=\"" << num(fl.estimator_minimum)
-    << "\" estimator_curve=\"" << num(fl.estimator_curve) << "\" palette_mode=\"linear\" interpolation_type=\"linear\"";
+    << num(r.background.y) << " " << num(r.background.z) << "\" brightness=\"" << num(fl.brightness) << "\" gamma=\""
+    << num(fl.gamma) << "\" gamma_threshold=\"" << num(fl.gamma_threshold) << "\" vibrancy=\"" << num(fl.vibrancy)
+    << "\" highlight_power=\"" << num(fl.highlight_power) << "\" estimator_radius=\"" << num(fl.estimator_radius)
+    << "\" estimator_minimum=\"" << num(fl.estimator_minimum) << "\" estimator_curve=\"" << num(fl.estimator_curve)
+    << "\" palette_mode=\"linear\" interpolation_type=\"linear\"";
   if (fl.palette.rfind("flam3:", 0) == 0 && fl.palette.find_first_not_of("0123456789", 6) == std::string::npos)
     x << " palette=\"" << fl.palette.substr(6) << "\"";
   x << " " << kFlameFrameAttribute << "=\"" << num(frame.centerX) << " " << num(frame.centerY) << " "
@@ -140,16 +150,19 @@ FlameExport exportFlame(const Project& project, const std::filesystem::path& pro
     if (error > 1e-9) {
       char buffer[64];
       std::snprintf(buffer, sizeof buffer, "%.3g", error);
-      out.warnings.push_back(label + " is not affine in the z = 0 plane: exported as its least-squares affine fit "
-                                     "(largest node error " + buffer + ")");
+      out.warnings.push_back(label +
+                             " is not affine in the z = 0 plane: exported as its least-squares affine fit "
+                             "(largest node error " +
+                             buffer + ")");
     }
-    return "color=\"" + num(fn.palette_index) + "\" color_speed=\"" + num(fn.color_speed) +
-           "\" linear=\"1\" coefs=\"" + coefsText(toFlame(fit, frame)) + "\" name=\"" + xmlEscape(fn.name) + "\"";
+    return "color=\"" + num(fn.palette_index) + "\" color_speed=\"" + num(fn.color_speed) + "\" linear=\"1\" coefs=\"" +
+           coefsText(toFlame(fit, frame)) + "\" name=\"" + xmlEscape(fn.name) + "\"";
   };
   for (std::size_t i : kept) {
     const Function& fn = project.functions[i];
     x << "  <xform weight=\"" << num(fn.weight) << "\" "
-      << xformAttributes(fn, "functions[" + std::to_string(i) + "]", "function " + std::to_string(i) + " \"" + fn.name + "\"");
+      << xformAttributes(fn, "functions[" + std::to_string(i) + "]",
+                         "function " + std::to_string(i) + " \"" + fn.name + "\"");
     if (!project.transitions.empty()) {
       x << " chaos=\"";
       for (std::size_t k = 0; k < kept.size(); ++k) x << (k ? " " : "") << num(project.transitions[i][kept[k]]);

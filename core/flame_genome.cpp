@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
-#include <cstdlib>
 #include <pugixml.hpp>
 #include <set>
 #include <sstream>
@@ -24,7 +24,8 @@ std::vector<double> numbers(const std::string& text, const std::string& what) {
   while (in >> token) {
     char* end = nullptr;
     const double v = std::strtod(token.c_str(), &end);
-    if (end == token.c_str() || *end != '\0') fail(what + " has \"" + token.substr(0, 32) + "\", which is not a number");
+    if (end == token.c_str() || *end != '\0')
+      fail(what + " has \"" + token.substr(0, 32) + "\", which is not a number");
     if (!std::isfinite(v)) fail(what + " has a value that is not finite");
     if (std::fabs(v) > 1e12) fail(what + " has an absurdly large value");
     out.push_back(v);
@@ -49,9 +50,9 @@ FlameAffine affine(const std::string& text, const std::string& what) {
 }
 
 const std::set<std::string>& structuralAttributes() {
-  static const std::set<std::string> names = {"weight", "color", "color_speed", "symmetry", "coefs", "post",
-                                              "chaos", "opacity", "name", "animate", "var_color",
-                                              "motion_frequency", "motion_function", "plotmode", "visible"};
+  static const std::set<std::string> names = {
+      "weight", "color",   "color_speed", "symmetry",         "coefs",           "post",     "chaos",  "opacity",
+      "name",   "animate", "var_color",   "motion_frequency", "motion_function", "plotmode", "visible"};
   return names;
 }
 
@@ -68,9 +69,12 @@ FlameXform parseXform(const pugi::xml_node& node, const std::string& where, bool
   x.weight = number(node, "weight", isFinal ? 0.0 : 0.5, where);
   if (!isFinal && x.weight < 0.0) fail(where + " has a negative weight");
   x.color = std::clamp(number(node, "color", 0.0, where), 0.0, 1.0);
-  if (node.attribute("color_speed")) x.color_speed = number(node, "color_speed", 0.5, where);
-  else if (node.attribute("symmetry")) x.color_speed = (1.0 - number(node, "symmetry", 0.0, where)) / 2.0;
-  else x.color_speed = isFinal ? 0.0 : 0.5;
+  if (node.attribute("color_speed"))
+    x.color_speed = number(node, "color_speed", 0.5, where);
+  else if (node.attribute("symmetry"))
+    x.color_speed = (1.0 - number(node, "symmetry", 0.0, where)) / 2.0;
+  else
+    x.color_speed = isFinal ? 0.0 : 0.5;
   x.color_speed = std::clamp(x.color_speed, 0.0, 1.0);
   const pugi::xml_attribute coefs = node.attribute("coefs");
   if (!coefs) fail(where + " has no coefs");
@@ -112,7 +116,8 @@ std::array<Rgb, Palette::kSize> hexPalette(const std::string& raw, const std::st
     if (!std::isxdigit(static_cast<unsigned char>(c))) fail(where + " has a character that is not hexadecimal");
   // 6 hex digits per entry (RRGGBB, Apophysis) or 8 (00RRGGBB, flam3's `colors data`).
   const std::size_t digits = hex.size() == 256 * 8 ? 8 : 6;
-  if (hex.size() != 256 * digits) fail(where + " needs 256 colors (" + std::to_string(hex.size()) + " hex digits found)");
+  if (hex.size() != 256 * digits)
+    fail(where + " needs 256 colors (" + std::to_string(hex.size()) + " hex digits found)");
   std::array<Rgb, Palette::kSize> colors{};
   for (int i = 0; i < 256; ++i) {
     const std::size_t at = std::size_t(i) * digits + (digits - 6);
@@ -183,8 +188,8 @@ FlameGenome parseGenome(const pugi::xml_node& flame, std::size_t index) {
     if (tag == "xform") {
       if (g.xforms.size() >= std::size_t(flame_limits::kMaxXforms))
         fail(where + " has more than " + std::to_string(flame_limits::kMaxXforms) + " xforms");
-      g.xforms.push_back(parseXform(child, where + " xform " + std::to_string(g.xforms.size()), false, randomLeftOut,
-                                    unknownLeftOut));
+      g.xforms.push_back(
+          parseXform(child, where + " xform " + std::to_string(g.xforms.size()), false, randomLeftOut, unknownLeftOut));
     } else if (tag == "finalxform") {
       if (g.finalXform) fail(where + " has more than one finalxform");
       g.finalXform = parseXform(child, where + " finalxform", true, randomLeftOut, unknownLeftOut);
@@ -193,7 +198,8 @@ FlameGenome parseGenome(const pugi::xml_node& flame, std::size_t index) {
       if (i < 0 || i > 255) fail(where + " has a color entry whose index is not in 0..255");
       const auto rgb = numbers(child.attribute("rgb").value(), where + " color rgb");
       if (rgb.size() != 3) fail(where + " has a color entry without three rgb values");
-      colors[std::size_t(i)] = {float(std::clamp(rgb[0], 0.0, 255.0) / 255.0), float(std::clamp(rgb[1], 0.0, 255.0) / 255.0),
+      colors[std::size_t(i)] = {float(std::clamp(rgb[0], 0.0, 255.0) / 255.0),
+                                float(std::clamp(rgb[1], 0.0, 255.0) / 255.0),
                                 float(std::clamp(rgb[2], 0.0, 255.0) / 255.0)};
       ++colorEntries;
     } else if (tag == "palette") {
@@ -263,7 +269,8 @@ std::vector<FlameGenome> parseFlameFile(const std::string& xmlText) {
   const pugi::xml_parse_result result = doc.load_buffer(xmlText.data(), xmlText.size());
   if (!result) {
     std::size_t line = 1;
-    for (std::ptrdiff_t i = 0; i < result.offset && std::size_t(i) < xmlText.size(); ++i) line += xmlText[std::size_t(i)] == '\n';
+    for (std::ptrdiff_t i = 0; i < result.offset && std::size_t(i) < xmlText.size(); ++i)
+      line += xmlText[std::size_t(i)] == '\n';
     fail(std::string("the XML is malformed (") + result.description() + " at line " + std::to_string(line) + ")");
   }
   // Walk iteratively with a depth limit: no recursion a hostile file could exhaust.
@@ -272,7 +279,8 @@ std::vector<FlameGenome> parseFlameFile(const std::string& xmlText) {
   while (!stack.empty()) {
     const auto [node, depth] = stack.back();
     stack.pop_back();
-    if (depth > flame_limits::kMaxDepth) fail("the XML is nested more than " + std::to_string(flame_limits::kMaxDepth) + " levels deep");
+    if (depth > flame_limits::kMaxDepth)
+      fail("the XML is nested more than " + std::to_string(flame_limits::kMaxDepth) + " levels deep");
     if (std::string(node.name()) == "flame") {
       flames.push_back(node);
       continue;

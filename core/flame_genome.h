@@ -52,7 +52,7 @@ struct FlameGenome {
   double brightness = 4.0, gamma = 4.0, gamma_threshold = 0.01, vibrancy = 1.0, highlight_power = -1.0;
   std::array<double, 3> background{0.0, 0.0, 0.0};
   double estimator_radius = 9.0, estimator_minimum = 0.0, estimator_curve = 0.4;
-  int paletteNumber = -1;         // `palette` attribute: flam3's collection (−1: none)
+  int paletteNumber = -1;          // `palette` attribute: flam3's collection (−1: none)
   std::optional<Palette> palette;  // inline `<palette>` hex or `<color>` entries
   double hue = 0.0;
   /// `gridifs_frame` ("centerX centerY scale"), written by GridIFS's exporter so that importing

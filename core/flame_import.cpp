@@ -38,7 +38,8 @@ std::array<double, 4> attractorExtent(const FlameGenome& g) {
   for (int it = 0; it < kIterations; ++it) {
     const std::vector<double>* weights = nullptr;
     std::vector<double> base;
-    if (last < n) weights = &rows[last];
+    if (last < n)
+      weights = &rows[last];
     else {
       for (const auto& x : g.xforms) base.push_back(x.weight);
       weights = &base;
@@ -185,7 +186,8 @@ double flameSamplingError(const Function& function, const FlameXform& map, const
     for (int i = 0; i + 1 < n[0]; ++i) {
       const Vec3 u(-1.0 + (2.0 * i + 1.0) / (n[0] - 1), -1.0 + (2.0 * j + 1.0) / (n[1] - 1), 0.0);
       const FlamePoint q = frame.toX(map.apply(frame.fromX({u.x, u.y})));
-      if (!std::isfinite(q.x) || !std::isfinite(q.y) || std::fabs(q.x) > kNodeClamp || std::fabs(q.y) > kNodeClamp) continue;
+      if (!std::isfinite(q.x) || !std::isfinite(q.y) || std::fabs(q.x) > kNodeClamp || std::fabs(q.y) > kNodeClamp)
+        continue;
       const Vec3 g = grid->evaluate(u);
       worst = std::max(worst, std::hypot(g.x - q.x, g.y - q.y, g.z));
     }
@@ -249,7 +251,8 @@ FlameImport importFlameGenome(const FlameGenome& genome, const FlameImportOption
     const std::size_t n = genome.xforms.size();
     p.transitions.assign(n, std::vector<double>(n, 1.0));
     for (std::size_t i = 0; i < n; ++i)
-      for (std::size_t j = 0; j < n && j < genome.xforms[i].chaos.size(); ++j) p.transitions[i][j] = genome.xforms[i].chaos[j];
+      for (std::size_t j = 0; j < n && j < genome.xforms[i].chaos.size(); ++j)
+        p.transitions[i][j] = genome.xforms[i].chaos[j];
     for (std::size_t i = 0; i < n; ++i) {
       bool any = false;
       for (std::size_t j = 0; j < n; ++j) any |= p.transitions[i][j] > 0.0 && genome.xforms[j].weight > 0.0;
@@ -266,7 +269,8 @@ FlameImport importFlameGenome(const FlameGenome& genome, const FlameImportOption
   const double halfH = 0.5 * genome.height / genome.pixelsPerUnit() * out.frame.scale;
   cam.fov = 2.0 * std::atan(0.5) * 180.0 / kPi;  // 53.13°: halfH = distance / 2
   cam.distance = 2.0 * halfH;
-  if (cam.distance < 1e-3 || cam.distance > 1e4) throw FlameError("the genome's view is too small or too large to frame");
+  if (cam.distance < 1e-3 || cam.distance > 1e4)
+    throw FlameError("the genome's view is too small or too large to frame");
   cam.target = Vec3(0.0, 0.0, 0.0);
 
   RenderSettings& r = p.render;

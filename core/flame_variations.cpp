@@ -83,7 +83,8 @@ FlamePoint fisheye(const VariationInput& in, double w) {
   return {r * in.y, r * in.x};  // the appendix notes the reversed order
 }
 FlamePoint popcorn(const VariationInput& in, double w) {
-  return scaled(w, in.x + in.coefs.c * std::sin(std::tan(3.0 * in.y)), in.y + in.coefs.f * std::sin(std::tan(3.0 * in.x)));
+  return scaled(w, in.x + in.coefs.c * std::sin(std::tan(3.0 * in.y)),
+                in.y + in.coefs.f * std::sin(std::tan(3.0 * in.x)));
 }
 FlamePoint exponential(const VariationInput& in, double w) {
   const double dx = w * std::exp(in.x - 1.0), dy = kPi * in.y;
@@ -203,8 +204,10 @@ FlamePoint bent2(const VariationInput& in, double w) {
 FlamePoint bipolar(const VariationInput& in, double w) {
   const double x2y2 = sumsq(in), t = x2y2 + 1.0, x2 = 2.0 * in.x;
   double y = 0.5 * std::atan2(2.0 * in.y, x2y2 - 1.0) - kPi / 2.0 * param(in, "bipolar_shift", 0.0);
-  if (y > kPi / 2.0) y = -kPi / 2.0 + std::fmod(y + kPi / 2.0, kPi);
-  else if (y < -kPi / 2.0) y = kPi / 2.0 - std::fmod(kPi / 2.0 - y, kPi);
+  if (y > kPi / 2.0)
+    y = -kPi / 2.0 + std::fmod(y + kPi / 2.0, kPi);
+  else if (y < -kPi / 2.0)
+    y = kPi / 2.0 - std::fmod(kPi / 2.0 - y, kPi);
   return {w * 0.25 * (2.0 / kPi) * std::log((t + x2) / (t - x2)), w * (2.0 / kPi) * y};
 }
 FlamePoint butterfly(const VariationInput& in, double w) {
@@ -289,7 +292,8 @@ FlamePoint separation(const VariationInput& in, double w) {
 }
 FlamePoint split(const VariationInput& in, double w) {
   const double xs = param(in, "split_xsize", 0.0), ys = param(in, "split_ysize", 0.0);
-  return {std::cos(in.y * ys * kPi) >= 0.0 ? w * in.x : -w * in.x, std::cos(in.x * xs * kPi) >= 0.0 ? w * in.y : -w * in.y};
+  return {std::cos(in.y * ys * kPi) >= 0.0 ? w * in.x : -w * in.x,
+          std::cos(in.x * xs * kPi) >= 0.0 ? w * in.y : -w * in.y};
 }
 FlamePoint splits(const VariationInput& in, double w) {
   const double sx = param(in, "splits_x", 0.0), sy = param(in, "splits_y", 0.0);
@@ -314,7 +318,8 @@ FlamePoint wedge(const VariationInput& in, double w) {
 }
 FlamePoint wedgeSph(const VariationInput& in, double w) {
   return wedgeWith(1.0 / (radius(in) + kEps), angleYx(in), w, param(in, "wedge_sph_angle", 0.0),
-                   param(in, "wedge_sph_hole", 0.0), param(in, "wedge_sph_count", 1.0), param(in, "wedge_sph_swirl", 0.0));
+                   param(in, "wedge_sph_hole", 0.0), param(in, "wedge_sph_count", 1.0),
+                   param(in, "wedge_sph_swirl", 0.0));
 }
 FlamePoint whorl(const VariationInput& in, double w) {
   const double r = radius(in);
@@ -408,16 +413,15 @@ FlamePoint escher(const VariationInput& in, double w) {
 
 const std::vector<const char*>& randomNames() {
   static const std::vector<const char*> names = {
-      "julia",    "noise",     "julian", "juliascope", "blur",    "gaussian_blur", "radial_blur", "pie",
-      "arch",     "square",    "rays",   "blade",      "twintrian", "super_shape", "flower",      "conic",
-      "parabola", "boarders",  "cpow",   "pre_blur",   "wedge_julia", "lazysusan", "edisc"};
+      "julia",    "noise",    "julian", "juliascope", "blur",        "gaussian_blur", "radial_blur", "pie",
+      "arch",     "square",   "rays",   "blade",      "twintrian",   "super_shape",   "flower",      "conic",
+      "parabola", "boarders", "cpow",   "pre_blur",   "wedge_julia", "lazysusan",     "edisc"};
   return names;
 }
 
 const std::vector<const char*>& randomParameterPrefixes() {
-  static const std::vector<const char*> prefixes = {
-      "julian_", "juliascope_", "radial_blur_", "pie_", "super_shape_", "flower_", "conic_", "parabola_",
-      "cpow_", "wedge_julia_"};
+  static const std::vector<const char*> prefixes = {"julian_", "juliascope_", "radial_blur_", "pie_",  "super_shape_",
+                                                    "flower_", "conic_",      "parabola_",    "cpow_", "wedge_julia_"};
   return prefixes;
 }
 
@@ -479,7 +483,9 @@ const std::vector<FlameVariation>& flameVariations() {
       {"loonie", {}, loonie},
       {"modulus", {{"modulus_x", 1.0}, {"modulus_y", 1.0}}, modulus},
       {"oscilloscope",
-       {{"oscilloscope_separation", 1.0}, {"oscilloscope_frequency", kPi}, {"oscilloscope_amplitude", 1.0},
+       {{"oscilloscope_separation", 1.0},
+        {"oscilloscope_frequency", kPi},
+        {"oscilloscope_amplitude", 1.0},
         {"oscilloscope_damping", 0.0}},
        oscilloscope},
       {"polar2", {}, polar2},
@@ -496,7 +502,9 @@ const std::vector<FlameVariation>& flameVariations() {
        {{"wedge_sph_angle", 0.0}, {"wedge_sph_hole", 0.0}, {"wedge_sph_count", 1.0}, {"wedge_sph_swirl", 0.0}},
        wedgeSph},
       {"whorl", {{"whorl_inside", 1.0}, {"whorl_outside", 1.0}}, whorl},
-      {"waves2", {{"waves2_freqx", 0.0}, {"waves2_scalex", 0.0}, {"waves2_freqy", 0.0}, {"waves2_scaley", 0.0}}, waves2},
+      {"waves2",
+       {{"waves2_freqx", 0.0}, {"waves2_scalex", 0.0}, {"waves2_freqy", 0.0}, {"waves2_scaley", 0.0}},
+       waves2},
       {"exp", {}, cexp},
       {"log", {}, clog},
       {"sin", {}, csin},
@@ -514,8 +522,14 @@ const std::vector<FlameVariation>& flameVariations() {
       {"auger", {{"auger_freq", 1.0}, {"auger_weight", 0.5}, {"auger_sym", 0.0}, {"auger_scale", 1.0}}, auger},
       {"flux", {{"flux_spread", 0.0}}, flux},
       {"mobius",
-       {{"mobius_re_a", 1.0}, {"mobius_im_a", 0.0}, {"mobius_re_b", 0.0}, {"mobius_im_b", 0.0},
-        {"mobius_re_c", 0.0}, {"mobius_im_c", 0.0}, {"mobius_re_d", 1.0}, {"mobius_im_d", 0.0}},
+       {{"mobius_re_a", 1.0},
+        {"mobius_im_a", 0.0},
+        {"mobius_re_b", 0.0},
+        {"mobius_im_b", 0.0},
+        {"mobius_re_c", 0.0},
+        {"mobius_im_c", 0.0},
+        {"mobius_re_d", 1.0},
+        {"mobius_im_d", 0.0}},
        mobius},
   };
   return table;

@@ -18,8 +18,8 @@ void checkTransitions(const Project& project) {
   if (t.empty()) return;
   const std::size_t n = project.functions.size();
   if (t.size() != n)
-    throw ModelError("transitions", "expected " + std::to_string(n) + " rows (one per function), found " +
-                                        std::to_string(t.size()));
+    throw ModelError("transitions",
+                     "expected " + std::to_string(n) + " rows (one per function), found " + std::to_string(t.size()));
   for (std::size_t i = 0; i < n; ++i) {
     if (t[i].size() != n)
       throw ModelError(rowPath(i), "expected " + std::to_string(n) + " entries (one per function), found " +
@@ -45,7 +45,8 @@ std::vector<std::size_t> activeFunctionIndices(const Project& project) {
   return active;
 }
 
-std::vector<std::vector<double>> activeTransitionWeights(const Project& project, const std::vector<std::size_t>& active) {
+std::vector<std::vector<double>> activeTransitionWeights(const Project& project,
+                                                         const std::vector<std::size_t>& active) {
   const auto& t = project.transitions;
   if (t.empty() || active.empty()) return {};
   bool uniform = true;

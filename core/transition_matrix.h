@@ -26,7 +26,8 @@ std::vector<std::size_t> activeFunctionIndices(const Project& project);
 /// function after active[r]. Empty when the project has no matrix, or when every allowed row
 /// is the same multiple of the weights (the chaos game is then unrestricted). Throws
 /// ModelError (`transitions[i]`) when a row allows no active function.
-std::vector<std::vector<double>> activeTransitionWeights(const Project& project, const std::vector<std::size_t>& active);
+std::vector<std::vector<double>> activeTransitionWeights(const Project& project,
+                                                         const std::vector<std::size_t>& active);
 
 /// Strongly connected components of the transition graph over the active functions
 /// (edge i → j when transitions[i][j] > 0; every edge when there is no matrix). One vector of

@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <string>
 #include <cstdlib>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "run_command.h"
@@ -67,7 +67,8 @@ struct AlphaComparison {
     std::snprintf(b, sizeof b,
                   "%dx%d: corr(alpha) = %.4f, corr(luminance) = %.4f, coverage flam3 %d / gridifs %d / both %d; "
                   "log-density ratio over %zu pixels: median %+.4f, 5%% %+.4f, 95%% %+.4f, 90%% of |r| <= %.4f",
-                  width, height, corrAlpha, corrLuma, coveredF, coveredG, coveredBoth, ratioPixels, median, p05, p95, abs90);
+                  width, height, corrAlpha, corrLuma, coveredF, coveredG, coveredBoth, ratioPixels, median, p05, p95,
+                  abs90);
     return b;
   }
 };

@@ -129,7 +129,8 @@ TEST(FlameCli, ListAndSelectGenomes) {
 TEST(FlameCli, PalettesRandomVariationsAndWarnings) {
   const ScratchDir dir("flame-palettes");
   const auto out = dir.path / "inline.gridifs";
-  const CommandResult r = runGridifs("import-flame " + quote((kData / "inline_palette.flame").string()) + " -o " + quote(out.string()));
+  const CommandResult r =
+      runGridifs("import-flame " + quote((kData / "inline_palette.flame").string()) + " -o " + quote(out.string()));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_TRUE(std::filesystem::exists(dir.path / "inline.palette.json"));
   const Project p = loadProject(out);
@@ -139,10 +140,12 @@ TEST(FlameCli, PalettesRandomVariationsAndWarnings) {
   EXPECT_EQ(p.transitions[1], (std::vector<double>{2, 0.5}));
   EXPECT_DOUBLE_EQ(p.functions[0].color_speed, 0.0);  // symmetry 1
   // The project renders with its palette file.
-  const CommandResult render = runGridifs("render " + quote(out.string()) + " -o " + quote((dir.path / "i.png").string()) + " --samples 20000");
+  const CommandResult render =
+      runGridifs("render " + quote(out.string()) + " -o " + quote((dir.path / "i.png").string()) + " --samples 20000");
   EXPECT_EQ(render.exitCode, 0) << render.err;
   const auto out2 = dir.path / "entries.gridifs";
-  const CommandResult w = runGridifs("import-flame " + quote((kData / "color_entries.flame").string()) + " -o " + quote(out2.string()));
+  const CommandResult w =
+      runGridifs("import-flame " + quote((kData / "color_entries.flame").string()) + " -o " + quote(out2.string()));
   ASSERT_EQ(w.exitCode, 0) << w.err;
   EXPECT_NE(w.err.find("random variations blur, julia"), std::string::npos) << w.err;
   EXPECT_NE(w.err.find("hemisphere"), std::string::npos) << w.err;
@@ -211,7 +214,9 @@ TEST(FlameCli, BadInputExitsTwoAndWritesNothing) {
     EXPECT_EQ(r.exitCode, 2) << args;
     EXPECT_EQ(slurp(out), "keep") << args;
   }
-  EXPECT_EQ(runGridifs("import-flame " + quote((dir.path / "missing.flame").string()) + " -o " + quote(out.string())).exitCode, 2);
+  EXPECT_EQ(runGridifs("import-flame " + quote((dir.path / "missing.flame").string()) + " -o " + quote(out.string()))
+                .exitCode,
+            2);
   EXPECT_EQ(runGridifs("export-flame " + quote((kData / "bad" / "malformed.flame").string()) + " -o " +
                        quote((dir.path / "x.flame").string()))
                 .exitCode,

@@ -46,15 +46,18 @@ TEST(FlameVariations, SpotValuesMatchTheClosedForms) {
     expectNear(vary("linear", x, y, w), w * x, w * y, "linear");
     expectNear(vary("sinusoidal", x, y, w), w * std::sin(x), w * std::sin(y), "sinusoidal");
     expectNear(vary("spherical", x, y, w), w * x / r2, w * y / r2, "spherical");
-    expectNear(vary("swirl", x, y, w), w * (x * std::sin(r2) - y * std::cos(r2)), w * (x * std::cos(r2) + y * std::sin(r2)), "swirl");
+    expectNear(vary("swirl", x, y, w), w * (x * std::sin(r2) - y * std::cos(r2)),
+               w * (x * std::cos(r2) + y * std::sin(r2)), "swirl");
     expectNear(vary("horseshoe", x, y, w), w * (x - y) * (x + y) / r, w * 2 * x * y / r, "horseshoe");
     expectNear(vary("polar", x, y, w), w * theta / kPi, w * (r - 1), "polar");
     expectNear(vary("handkerchief", x, y, w), w * r * std::sin(theta + r), w * r * std::cos(theta - r), "handkerchief");
     expectNear(vary("heart", x, y, w), w * r * std::sin(theta * r), -w * r * std::cos(theta * r), "heart");
     expectNear(vary("disc", x, y, w), w * theta / kPi * std::sin(kPi * r), w * theta / kPi * std::cos(kPi * r), "disc");
-    expectNear(vary("spiral", x, y, w), w / r * (std::cos(theta) + std::sin(r)), w / r * (std::sin(theta) - std::cos(r)), "spiral");
+    expectNear(vary("spiral", x, y, w), w / r * (std::cos(theta) + std::sin(r)),
+               w / r * (std::sin(theta) - std::cos(r)), "spiral");
     expectNear(vary("hyperbolic", x, y, w), w * std::sin(theta) / r, w * r * std::cos(theta), "hyperbolic");
-    expectNear(vary("diamond", x, y, w), w * std::sin(theta) * std::cos(r), w * std::cos(theta) * std::sin(r), "diamond");
+    expectNear(vary("diamond", x, y, w), w * std::sin(theta) * std::cos(r), w * std::cos(theta) * std::sin(r),
+               "diamond");
     const double p0 = std::sin(theta + r), p1 = std::cos(theta - r);
     expectNear(vary("ex", x, y, w), w * r * (p0 * p0 * p0 + p1 * p1 * p1), w * r * (p0 * p0 * p0 - p1 * p1 * p1), "ex");
     expectNear(vary("bent", x, y, w), w * (x < 0 ? 2 * x : x), w * (y < 0 ? y / 2 : y), "bent");
@@ -65,11 +68,12 @@ TEST(FlameVariations, SpotValuesMatchTheClosedForms) {
     expectNear(vary("fisheye", x, y, w), w * 2 / (r + 1) * y, w * 2 / (r + 1) * x, "fisheye");
     expectNear(vary("popcorn", x, y, w, {}, coefs), w * (x + 0.25 * std::sin(std::tan(3 * y))),
                w * (y + 0.35 * std::sin(std::tan(3 * x))), "popcorn");
-    expectNear(vary("exponential", x, y, w), w * std::exp(x - 1) * std::cos(kPi * y), w * std::exp(x - 1) * std::sin(kPi * y),
-               "exponential");
+    expectNear(vary("exponential", x, y, w), w * std::exp(x - 1) * std::cos(kPi * y),
+               w * std::exp(x - 1) * std::sin(kPi * y), "exponential");
     expectNear(vary("power", x, y, w), w * std::pow(r, std::sin(theta)) * std::cos(theta),
                w * std::pow(r, std::sin(theta)) * std::sin(theta), "power");
-    expectNear(vary("cosine", x, y, w), w * std::cos(kPi * x) * std::cosh(y), -w * std::sin(kPi * x) * std::sinh(y), "cosine");
+    expectNear(vary("cosine", x, y, w), w * std::cos(kPi * x) * std::cosh(y), -w * std::sin(kPi * x) * std::sinh(y),
+               "cosine");
     const double c2 = 0.25 * 0.25;
     const double ringR = std::fmod(r + c2, 2 * c2) - c2 + r * (1 - c2);
     expectNear(vary("rings", x, y, w, {}, coefs), w * ringR * std::cos(theta), w * ringR * std::sin(theta), "rings");
@@ -96,7 +100,8 @@ TEST(FlameVariations, SpotValuesMatchTheClosedForms) {
     {
       const double rx = 0.3, ry = 0.7;
       expectNear(vary("rectangles", x, y, w, {{"rectangles_x", rx}, {"rectangles_y", ry}}),
-                 w * ((2 * std::floor(x / rx) + 1) * rx - x), w * ((2 * std::floor(y / ry) + 1) * ry - y), "rectangles");
+                 w * ((2 * std::floor(x / rx) + 1) * rx - x), w * ((2 * std::floor(y / ry) + 1) * ry - y),
+                 "rectangles");
     }
     expectNear(vary("tangent", x, y, w), w * std::sin(x) / std::cos(y), w * std::tan(y), "tangent");
     {
@@ -124,8 +129,14 @@ TEST(FlameVariations, SpotValuesMatchTheClosedForms) {
       const std::complex<double> a(0.8, 0.1), b(0.2, -0.3), cc(0.1, 0.4), d(1.0, 0.2);
       const auto m = (a * z + b) / (cc * z + d);
       expectNear(vary("mobius", x, y, w,
-                      {{"mobius_re_a", 0.8}, {"mobius_im_a", 0.1}, {"mobius_re_b", 0.2}, {"mobius_im_b", -0.3},
-                       {"mobius_re_c", 0.1}, {"mobius_im_c", 0.4}, {"mobius_re_d", 1.0}, {"mobius_im_d", 0.2}}),
+                      {{"mobius_re_a", 0.8},
+                       {"mobius_im_a", 0.1},
+                       {"mobius_re_b", 0.2},
+                       {"mobius_im_b", -0.3},
+                       {"mobius_re_c", 0.1},
+                       {"mobius_im_c", 0.4},
+                       {"mobius_re_d", 1.0},
+                       {"mobius_im_d", 0.2}}),
                  w * m.real(), w * m.imag(), "mobius");
     }
     expectNear(vary("polar2", x, y, w), w / kPi * theta, w / (2 * kPi) * std::log(r2), "polar2");
@@ -194,10 +205,12 @@ TEST(FlameGenome, BadFilesAreRefused) {
   EXPECT_THROW(parseFlameFile(""), FlameError);
   EXPECT_THROW(parseFlameFile("<flame size=\"10 10\">"), FlameError);
   EXPECT_THROW(parseFlameFile("<flame size=\"10 10\"></flame>"), FlameError);
-  EXPECT_THROW(parseFlameFile("<flame size=\"10 10\"><xform weight=\"1\" coefs=\"1 0 0 1 0 inf\"/></flame>"), FlameError);
+  EXPECT_THROW(parseFlameFile("<flame size=\"10 10\"><xform weight=\"1\" coefs=\"1 0 0 1 0 inf\"/></flame>"),
+               FlameError);
   EXPECT_THROW(parseFlameFile("<flame size=\"10 10\"><xform weight=\"1\" coefs=\"1 0 0 1 0\"/></flame>"), FlameError);
   EXPECT_THROW(parseFlameFile("<flame size=\"0 10\"><xform weight=\"1\" coefs=\"1 0 0 1 0 0\"/></flame>"), FlameError);
-  EXPECT_THROW(parseFlameFile("<flame size=\"10 10\"><xform weight=\"-1\" coefs=\"1 0 0 1 0 0\"/></flame>"), FlameError);
+  EXPECT_THROW(parseFlameFile("<flame size=\"10 10\"><xform weight=\"-1\" coefs=\"1 0 0 1 0 0\"/></flame>"),
+               FlameError);
   std::string deep;
   for (int i = 0; i < 100; ++i) deep += "<a>";
   EXPECT_THROW(parseFlameFile(deep + "<flame size=\"10 10\"/>"), FlameError);

@@ -71,7 +71,8 @@ TEST(Transitions, BadMatricesAreRefusedWithAJsonPath) {
     return expectError(text);
   };
   EXPECT_NE(with("[[1,1,1,1],[1,1,1,1],[1,1,1,1]]").find("transitions: expected 4 rows"), std::string::npos);
-  EXPECT_NE(with("[[1,1,1,1],[1,1,1],[1,1,1,1],[1,1,1,1]]").find("transitions[1]: expected 4 entries"), std::string::npos);
+  EXPECT_NE(with("[[1,1,1,1],[1,1,1],[1,1,1,1],[1,1,1,1]]").find("transitions[1]: expected 4 entries"),
+            std::string::npos);
   EXPECT_NE(with("[[1,1,1,1],[1,1,-1,1],[1,1,1,1],[1,1,1,1]]").find("transitions[1][2]"), std::string::npos);
   EXPECT_NE(with("[[1,1,1,1],[1,1,1,1],[0,0,0,0],[1,1,1,1]]").find("transitions[2]: function 2 can be followed by no"),
             std::string::npos);
@@ -169,7 +170,8 @@ TEST(Transitions, DeterministicBuildsOnlyAllowedWords) {
   const auto address = addressProperty(out.mesh);
   const IfsMesh base2 = refineBase(loadCoarseBase(spec), spec);
   for (std::size_t c = 0; c < 12; ++c) {
-    const auto digits = decodeAddress(std::uint64_t(out.mesh.property(address, IfsMesh::FaceHandle(int(c * base.faces)))), 4, 2);
+    const auto digits =
+        decodeAddress(std::uint64_t(out.mesh.property(address, IfsMesh::FaceHandle(int(c * base.faces)))), 4, 2);
     const auto& v = tetrahedronCorners();
     const auto p0 = base2.point(IfsMesh::VertexHandle(0));
     const Vec3 inner = 0.5 * (Vec3(p0[0], p0[1], p0[2]) + v[std::size_t(digits[1])]);
