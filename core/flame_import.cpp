@@ -136,15 +136,16 @@ Function sampleXform(const FlameXform& x, const FlameFrame& frame, int resolutio
 FlamePoint FlameFrame::toX(FlamePoint p) const {
   const double t = rotate * kPi / 180.0, c = std::cos(t), s = std::sin(t);
   const double dx = p.x - centerX, dy = p.y - centerY;
-  // flam3 rotates the view by −rotate about the centre (image rows go down with y).
-  const double rx = c * dx + s * dy, ry = -s * dx + c * dy;
+  // flam3 turns the picture by `rotate` degrees about the centre; in its plane (rows going
+  // down with y) the view axes are the plane's axes turned by +rotate (checked against flam3-render).
+  const double rx = c * dx - s * dy, ry = s * dx + c * dy;
   return {scale * rx, -scale * ry};
 }
 
 FlamePoint FlameFrame::fromX(FlamePoint x) const {
   const double t = rotate * kPi / 180.0, c = std::cos(t), s = std::sin(t);
   const double rx = x.x / scale, ry = -x.y / scale;
-  return {centerX + c * rx - s * ry, centerY + s * rx + c * ry};
+  return {centerX + c * rx + s * ry, centerY - s * rx + c * ry};
 }
 
 FlameFileImport importFlameFile(const std::filesystem::path& file, const std::string& genome,

@@ -13,7 +13,7 @@
 
 namespace gridifs {
 
-/// How the flame plane sits in X: X = scale · R(−rotate) · (p − center), with y negated because
+/// How the flame plane sits in X: X = scale · R(rotate) · (p − center), with y negated because
 /// flame image rows go down with y while GridIFS's camera looks down −z with +y up. z is 0.
 struct FlameFrame {
   double centerX = 0.0, centerY = 0.0;

@@ -69,6 +69,17 @@ TEST(FlameCli, ImportedFernMatchesFlam3) {
   EXPECT_LE(c.abs90, 0.25);
 }
 
+TEST(FlameCli, ImportedRotatedViewMatchesFlam3) {
+  // The genome's `rotate` turns the frame: the same picture as flam3's, not its mirror.
+  if (!haveFlam3()) GTEST_SKIP() << "flam3-render (flam3-utils) is not installed";
+  const ScratchDir dir("flame-import-rotated");
+  const AlphaComparison c = crossCheckImported("fern_rotated.flam3", "0", dir);
+  ASSERT_TRUE(c.valid);
+  std::printf("[import crosscheck fern rotated 30°] %s\n", c.summary().c_str());
+  EXPECT_GE(c.corrAlpha, 0.99);
+  EXPECT_LE(std::fabs(c.median), 0.03);
+}
+
 TEST(FlameCli, ChaosRowsMatchFlam3sXaos) {
   // Sierpinski with xform 0 never following itself: flam3 walks its chaos rows, GridIFS its
   // transition matrix.
