@@ -5,6 +5,7 @@
 
 #include "app/cli.h"
 #include "model/contractivity.h"
+#include "model/transition_matrix.h"
 
 namespace gridifs::cli {
 namespace {
@@ -35,6 +36,7 @@ int runInfo(const std::string& file, bool asJson) {
   const Project& p = document.project();
   bool allContractive = true;
   for (const auto& r : reports) allContractive &= r.function->muted || r.contractivity.bound < 1.0;
+  const auto components = transitionComponents(p);
   if (asJson) {
     nlohmann::ordered_json out;
     out["file"] = file;
@@ -52,8 +54,11 @@ int runInfo(const std::string& file, bool asJson) {
                       {"ops", r.function->ops.size()},
                       {"contractivity", r.contractivity.bound},
                       {"contractive", r.contractivity.bound < 1.0}});
+      if (r.function->sampling_error) list.back()["sampling_error"] = *r.function->sampling_error;
     }
     out["functions"] = list;
+    out["transitions"] = !p.transitions.empty();
+    out["strongly_connected"] = components.size() <= 1;
     out["contractive"] = allContractive;
     std::cout << out.dump(2) << "\n";
   } else {
@@ -69,7 +74,22 @@ int runInfo(const std::string& file, bool asJson) {
       std::printf("  %-3zu %-16.16s %8.4g %7.4f %-11s %4zu  %.4f%s%s\n", i, r.function->name.c_str(),
                   r.function->weight, r.probability, res, r.function->ops.size(), r.contractivity.bound,
                   r.contractivity.bound < 1.0 ? "" : "  (not contractive)", r.function->muted ? "  muted" : "");
+      if (r.function->sampling_error)
+        std::printf("      sampled from a closed-form map: largest grid error %.3g\n", *r.function->sampling_error);
     }
+    if (!p.transitions.empty()) std::printf("  transition matrix: %zu x %zu\n", p.transitions.size(), p.transitions.size());
+  }
+  if (components.size() > 1) {
+    std::string list;
+    for (const auto& component : components) {
+      list += list.empty() ? "{" : ", {";
+      for (std::size_t k = 0; k < component.size(); ++k) list += (k ? " " : "") + std::to_string(component[k]);
+      list += "}";
+    }
+    std::fprintf(stderr,
+                 "warning: the transition graph is not strongly connected (components %s): parts of the "
+                 "attractor are only reached transiently.\n",
+                 list.c_str());
   }
   for (std::size_t i = 0; i < reports.size(); ++i) {
     const auto& r = reports[i];

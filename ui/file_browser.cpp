@@ -11,8 +11,11 @@
 namespace gridifs::ui {
 namespace fs = std::filesystem;
 
-void FileBrowser::open(Mode mode, const fs::path& folder, const std::string& fileName) {
+void FileBrowser::open(Mode mode, const fs::path& folder, const std::string& fileName,
+                       std::vector<std::string> extensions, std::string title) {
   mode_ = mode;
+  extensions_ = std::move(extensions);
+  title_ = std::move(title);
   open_ = justOpened_ = true;
   fileName_ = fileName;
   error_.clear();
@@ -39,7 +42,9 @@ void FileBrowser::enter(const fs::path& folder) {
     if (name.empty() || name[0] == '.') continue;
     std::error_code typeError;
     const bool folderEntry = it->is_directory(typeError);
-    if (!folderEntry && !showAll_ && it->path().extension() != ".gridifs") continue;
+    if (!folderEntry && !showAll_ &&
+        std::find(extensions_.begin(), extensions_.end(), it->path().extension().string()) == extensions_.end())
+      continue;
     entries.push_back({name, folderEntry});
   }
   std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
@@ -75,7 +80,9 @@ std::optional<fs::path> FileBrowser::confirm() {
 
 std::optional<fs::path> FileBrowser::draw(UiProbe& probe) {
   if (!open_) return std::nullopt;
-  const char* title = mode_ == Mode::Open ? "Open project###browser" : "Save project as###browser";
+  const std::string titleText =
+      (title_.empty() ? (mode_ == Mode::Open ? "Open project" : "Save project as") : title_) + "###browser";
+  const char* title = titleText.c_str();
   if (justOpened_) {
     ImGui::OpenPopup(title);
     justOpened_ = false;
@@ -112,7 +119,8 @@ std::optional<fs::path> FileBrowser::draw(UiProbe& probe) {
           }
         }
       }
-      if (entries_.empty()) ImGui::TextDisabled(showAll_ ? "(empty folder)" : "(no .gridifs files here)");
+      if (entries_.empty())
+        ImGui::TextDisabled("%s", showAll_ ? "(empty folder)" : ("(no " + extensions_.front() + " files here)").c_str());
       if (enterFolder) enter(*enterFolder);
     }
     ImGui::EndChild();

@@ -13,8 +13,10 @@ struct UiProbe;
 class FileBrowser {
  public:
   enum class Mode { Open, Save };
-  /// Shows the browser (as a modal) from the next draw() on.
-  void open(Mode mode, const std::filesystem::path& folder, const std::string& fileName = {});
+  /// Shows the browser (as a modal) from the next draw() on, listing files with one of
+  /// `extensions` (and folders); `title` names the action ("Import flame").
+  void open(Mode mode, const std::filesystem::path& folder, const std::string& fileName = {},
+            std::vector<std::string> extensions = {".gridifs"}, std::string title = {});
   bool isOpen() const { return open_; }
   /// Draws the browser while open; returns the chosen file once, when the artist confirms.
   std::optional<std::filesystem::path> draw(UiProbe& probe);
@@ -32,6 +34,8 @@ class FileBrowser {
   std::filesystem::path folder_;
   std::string folderText_, fileName_, error_;
   std::vector<Entry> entries_;
+  std::vector<std::string> extensions_{".gridifs"};
+  std::string title_;
 };
 
 }  // namespace gridifs::ui

@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "model/contractivity.h"
+#include "model/transition_matrix.h"
 #include "ui/panels.h"
 #include "ui/widgets.h"
 
@@ -42,7 +43,7 @@ void addFunction(ModellerState& state, EditQueue& edits) {
   f.color = newFunctionColor(p.functions.size());
   f.palette_index = p.functions.empty() ? 0.0 : std::min(1.0, double(p.functions.size()) / 4.0);
   const int index = int(p.functions.size());
-  edits.commit("Add function", [f](Project& pr) { pr.functions.push_back(f); });
+  edits.commit("Add function", [f](Project& pr) { insertFunction(pr, pr.functions.size(), f); });
   edits.after([&state, index] {
     state.activeFunction = index;
     state.activeOp = -1;
@@ -64,7 +65,7 @@ void drawFunctionsPanel(ModellerState& state, EditQueue& edits) {
     Function copy = project.functions[std::size_t(active)];
     copy.name = uniqueName(project, copy.name + "_");
     edits.commit("Duplicate function", [copy, active](Project& p) {
-      p.functions.insert(p.functions.begin() + active + 1, copy);
+      insertFunction(p, std::size_t(active + 1), copy);
     });
     edits.after([&state, active] { state.activeFunction = active + 1; });
   }
@@ -72,7 +73,7 @@ void drawFunctionsPanel(ModellerState& state, EditQueue& edits) {
   ImGui::SameLine();
   ImGui::BeginDisabled(count <= 1);
   if (ImGui::Button("Delete")) {
-    edits.commit("Delete function", [active](Project& p) { p.functions.erase(p.functions.begin() + active); });
+    edits.commit("Delete function", [active](Project& p) { eraseFunction(p, std::size_t(active)); });
     edits.after([&state] {
       state.activeOp = -1;
       state.clampIndices();
@@ -83,7 +84,7 @@ void drawFunctionsPanel(ModellerState& state, EditQueue& edits) {
   ImGui::SameLine();
   ImGui::BeginDisabled(active == 0);
   if (ImGui::ArrowButton("##fup", ImGuiDir_Up)) {
-    edits.commit("Move function up", [active](Project& p) { std::swap(p.functions[std::size_t(active)], p.functions[std::size_t(active - 1)]); });
+    edits.commit("Move function up", [active](Project& p) { swapFunctions(p, std::size_t(active), std::size_t(active - 1)); });
     state.activeFunction = active - 1;
     std::swap(state.selections[std::size_t(active)], state.selections[std::size_t(active - 1)]);
   }
@@ -91,7 +92,7 @@ void drawFunctionsPanel(ModellerState& state, EditQueue& edits) {
   ImGui::SameLine();
   ImGui::BeginDisabled(active + 1 >= count);
   if (ImGui::ArrowButton("##fdown", ImGuiDir_Down)) {
-    edits.commit("Move function down", [active](Project& p) { std::swap(p.functions[std::size_t(active)], p.functions[std::size_t(active + 1)]); });
+    edits.commit("Move function down", [active](Project& p) { swapFunctions(p, std::size_t(active), std::size_t(active + 1)); });
     state.activeFunction = active + 1;
     std::swap(state.selections[std::size_t(active)], state.selections[std::size_t(active + 1)]);
   }

@@ -43,6 +43,10 @@ float drawMenuBar(AppCommands& app) {
         if (ImGui::MenuItem(file.filename().string().c_str())) app.files.requestOpen(file);
       ImGui::EndMenu();
     }
+    if (ImGui::MenuItem("Import flame...")) app.files.requestImportFlameDialog();
+    s.probe.item("menu.import_flame");
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("Open a flame genome (.flame from flam3, Apophysis, JWildfire, Fractorium) as a new project");
     ImGui::Separator();
     if (ImGui::MenuItem("Save", "Ctrl+S")) app.files.save();
     if (ImGui::MenuItem("Save As...", "Ctrl+Shift+S")) app.files.saveAsDialog();

@@ -12,6 +12,7 @@
 
 #include "base/atomic_file.h"
 #include "io/project_io.h"
+#include "io/flame_import.h"
 
 namespace gridifs::ui {
 namespace fs = std::filesystem;
@@ -132,12 +133,40 @@ void ProjectFiles::perform(const Action& action) {
     if (open->file) load(*open->file);
     else {
       browserForSave_ = false;
+      browserForFlame_ = false;
       const fs::path folder = state_.document.path().empty() ? fs::path() : state_.document.path().parent_path();
       browser_.open(FileBrowser::Mode::Open, folder);
     }
+  } else if (std::holds_alternative<ImportFlame>(action)) {
+    browserForSave_ = false;
+    browserForFlame_ = true;
+    const fs::path folder = state_.document.path().empty() ? fs::path() : state_.document.path().parent_path();
+    browser_.open(FileBrowser::Mode::Open, folder, {}, {".flame", ".flam3", ".xml"}, "Import flame");
   } else {
     quitConfirmed_ = true;
   }
+}
+
+void ProjectFiles::requestImportFlameDialog() { request(ImportFlame{}); }
+
+bool ProjectFiles::importFlame(const fs::path& file, const std::string& genome) {
+  try {
+    // Inline palettes are kept with the application's state: the document has no folder yet.
+    FlameFileImport imported = importFlameFile(file, genome, folders_.state / "palettes");
+    state_.document.reset(defaultNewProject());
+    state_.document.edit("Import flame", [&](Project& p) { p = std::move(imported.project); });
+    state_.activeFunction = 0;
+    state_.activeOp = -1;
+    state_.selections.clear();
+    state_.clampIndices();
+    std::string message = "Imported " + imported.description;
+    for (const std::string& w : imported.warnings) message += "; " + w;
+    state_.info(message);
+    return true;
+  } catch (const std::exception& e) {
+    showError("Could not import " + file.filename().string(), e.what());
+  }
+  return false;
 }
 
 void ProjectFiles::requestNew() { request(New{}); }
@@ -216,6 +245,9 @@ void ProjectFiles::draw(EditQueue& edits) {
         afterSave_.reset();
         perform(next);
       }
+    } else if (browserForFlame_) {
+      browserForFlame_ = false;
+      importFlame(*chosen);
     } else {
       load(*chosen);
     }

@@ -32,6 +32,11 @@ class ProjectFiles {
 
   void requestNew();
   void requestOpenDialog();
+  /// File › Import flame…: asks for a .flame file and opens its first genome as a new,
+  /// unsaved document (one undo step); errors are shown in the window.
+  void requestImportFlameDialog();
+  /// Imports `file`'s genome `genome` (index or name; empty: the first) as a new document.
+  bool importFlame(const std::filesystem::path& file, const std::string& genome = {});
   void requestOpen(const std::filesystem::path& file);
   void requestQuit();
   /// Saves to the document's file, or asks for one. Returns false when nothing was saved.
@@ -59,7 +64,8 @@ class ProjectFiles {
     std::optional<std::filesystem::path> file;  // none: ask with the browser
   };
   struct Quit {};
-  using Action = std::variant<New, Open, Quit>;
+  struct ImportFlame {};
+  using Action = std::variant<New, Open, Quit, ImportFlame>;
 
   void request(Action action);
   void perform(const Action& action);
@@ -77,6 +83,7 @@ class ProjectFiles {
   std::uint64_t autosavedRevision_ = 0;
   FileBrowser browser_;
   bool browserForSave_ = false;
+  bool browserForFlame_ = false;
   std::optional<Action> pending_;  // waits for the unsaved-work prompt
   bool promptUnsaved_ = false;
   std::optional<Action> afterSave_;  // runs once a Save As from the prompt succeeded

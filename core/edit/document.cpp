@@ -109,7 +109,8 @@ void Document::changed(const Project& before) {
   // Every field of Project belongs to one concern here; a new field must join one.
   ++revision_;
   const Project& now = project_;
-  if (now.functions != before.functions || now.final_function != before.final_function)
+  if (now.functions != before.functions || now.final_function != before.final_function ||
+      now.transitions != before.transitions)
     revisions_.geometry = revision_;
   if (now.camera != before.camera) revisions_.camera = revision_;
   if (!sameRenderInput(now.render, before.render)) revisions_.render = revision_;

@@ -12,6 +12,7 @@
 #include "model/palette_reference.h"
 #include "model/stack_evaluator.h"
 #include "model/validation.h"
+#include "model/transition_matrix.h"
 
 namespace gridifs {
 namespace {
@@ -311,6 +312,7 @@ FlameSettings readFlame(const json& o, const std::string& path) {
   f.estimator_minimum = number(o, "estimator_minimum", path, f.estimator_minimum, 0.0, 64.0);
   f.estimator_curve = number(o, "estimator_curve", path, f.estimator_curve, 0.05, 10.0);
   f.filter_radius = number(o, "filter_radius", path, f.filter_radius, 0.0, 10.0);
+  f.density_unit = number(o, "density_unit", path, f.density_unit, 1e-6, 1e6);
   validateFlameSettings(f, path);
   return f;
 }
@@ -330,6 +332,8 @@ Function readFunction(const json& f, const std::string& path, std::size_t index)
   fn.palette_index = number(f, "palette_index", path, 0.0, 0.0, 1.0);
   fn.color_speed = number(f, "color_speed", path, 0.5, 0.0, 1.0);
   fn.muted = boolean(f, "muted", path, false);
+  if (auto it = f.find("sampling_error"); it != f.end() && !it->is_null())
+    fn.sampling_error = readNumber(*it, join(path, "sampling_error"), 0.0, limits::kMaxCoordinate);
   if (auto it = f.find("placement"); it != f.end()) {
     const std::string p = join(path, "placement");
     requireObject(*it, p);
@@ -434,6 +438,7 @@ ordered_json writeFunction(const Function& f) {
   o["palette_index"] = f.palette_index;
   o["color_speed"] = f.color_speed;
   o["muted"] = f.muted;
+  if (f.sampling_error) o["sampling_error"] = *f.sampling_error;
   o["placement"] = {{"translate", writeVec3(f.placement.translate)},
                     {"rotate", writeVec3(f.placement.rotate)},
                     {"scale", writeVec3(f.placement.scale)}};
@@ -520,6 +525,22 @@ Project parseProject(const std::string& text) {
     project.functions.push_back(readFunction((*functions)[f], item("functions", f), f));
   if (auto it = root.find("final"); it != root.end() && !it->is_null())
     project.final_function = readFunction(*it, "final", 0);
+  if (auto it = root.find("transitions"); it != root.end() && !it->is_null()) {
+    // Sizes are checked against the functions by checkTransitions; here only the JSON shape.
+    if (!it->is_array()) fail("transitions", std::string("expected an array of rows, found ") + typeName(*it));
+    if (it->size() > std::size_t(limits::kMaxFunctions))
+      fail("transitions", "more than " + std::to_string(limits::kMaxFunctions) + " rows");
+    for (std::size_t i = 0; i < it->size(); ++i) {
+      const json& row = (*it)[i];
+      const std::string p = item("transitions", i);
+      if (!row.is_array()) fail(p, std::string("expected an array of weights, found ") + typeName(row));
+      if (row.size() > std::size_t(limits::kMaxFunctions))
+        fail(p, "more than " + std::to_string(limits::kMaxFunctions) + " entries");
+      std::vector<double> weights;
+      for (std::size_t j = 0; j < row.size(); ++j) weights.push_back(readNumber(row[j], item(p, j), 0.0, 1e9));
+      project.transitions.push_back(std::move(weights));
+    }
+  }
   validateProject(project);
   return project;
 }
@@ -541,10 +562,12 @@ std::string serializeProject(const Project& project) {
                              {"highlight_power", fl.highlight_power}, {"supersample", fl.supersample},
                              {"estimator_radius", fl.estimator_radius}, {"estimator_minimum", fl.estimator_minimum},
                              {"estimator_curve", fl.estimator_curve}, {"filter_radius", fl.filter_radius}};
+  if (fl.density_unit != 1.0) root["render"]["flame"]["density_unit"] = fl.density_unit;
   ordered_json functions = ordered_json::array();
   for (const Function& f : project.functions) functions.push_back(writeFunction(f));
   root["functions"] = functions;
   if (project.final_function) root["final"] = writeFunction(*project.final_function);
+  if (!project.transitions.empty()) root["transitions"] = project.transitions;
   return root.dump(2) + "\n";
 }
 

@@ -7,9 +7,12 @@
 #include <climits>
 #include <cmath>
 #include <cstdio>
+#include <exception>
+#include <functional>
 #include <limits>
 
 #include "model/stack_evaluator.h"
+#include "model/transition_matrix.h"
 
 namespace gridifs {
 namespace {
@@ -34,6 +37,13 @@ DeterministicIfs snapshotWith(const Project& project, GridOf gridOf, FinalOf fin
     auto grid = gridOf(i);
     if (!allFinite(*grid)) throw ModelError("functions[" + std::to_string(i) + "]", "a grid node is not finite");
     ifs.maps.push_back({std::move(grid), f.color, f.color_speed, i});
+  }
+  std::vector<std::size_t> active;
+  for (const auto& map : ifs.maps) active.push_back(map.functionIndex);
+  const auto rows = activeTransitionWeights(project, active);
+  for (const auto& row : rows) {
+    ifs.follows.emplace_back();
+    for (double w : row) ifs.follows.back().push_back(w > 0.0 ? 1 : 0);
   }
   if (project.final_function && !project.final_function->muted) {
     ifs.finalGrid = finalOf();
@@ -105,10 +115,29 @@ DeterministicPlan planDeterministic(const DeterministicIfs& ifs, const MeshCount
   plan.depth = options.depth;
   plan.base = base;
   plan.copies = 1;
-  for (int k = 0; k < options.depth; ++k) plan.copies = mul(plan.copies, plan.functionCount);
+  if (ifs.follows.empty()) {
+    for (int k = 0; k < options.depth; ++k) plan.copies = mul(plan.copies, plan.functionCount);
+  } else if (options.depth > 0) {
+    // words[b]: allowed words of the current length ending with map b.
+    std::vector<std::uint64_t> words(plan.functionCount, 1), next(plan.functionCount);
+    for (int k = 1; k < options.depth; ++k) {
+      for (std::size_t b = 0; b < plan.functionCount; ++b) {
+        next[b] = 0;
+        for (std::size_t a = 0; a < plan.functionCount; ++a)
+          if (ifs.follows[a][b]) next[b] = add(next[b], words[a]);
+      }
+      words.swap(next);
+    }
+    plan.copies = 0;
+    for (std::uint64_t w : words) plan.copies = add(plan.copies, w);
+  }
   plan.total = {mul(plan.copies, base.vertices), mul(plan.copies, base.edges), mul(plan.copies, base.faces),
                 mul(plan.copies, base.corners)};
-  plan.approximateFaces = std::pow(double(plan.functionCount), double(options.depth)) * double(base.faces);
+  plan.approximateFaces = ifs.follows.empty() || plan.copies != kSaturated
+                              ? (ifs.follows.empty() ? std::pow(double(plan.functionCount), double(options.depth))
+                                                     : double(plan.copies)) *
+                                    double(base.faces)
+                              : std::pow(double(plan.functionCount), double(options.depth)) * double(base.faces);
   plan.estimatedBytes = add(add(mul(plan.total.vertices, kBytesPerVertex), mul(plan.total.edges, kBytesPerEdge)),
                             mul(plan.total.faces, kBytesPerFace));
   const std::string what = "F^" + std::to_string(options.depth) + "(A) with " + std::to_string(plan.functionCount) +
@@ -157,6 +186,31 @@ void buildDeterministicMesh(const DeterministicIfs& ifs, const IfsMesh& base, co
   const int n = options.depth;
   const std::size_t V = base.n_vertices(), E = base.n_edges(), F = base.n_faces(), H = 2 * E;
   const std::size_t copies = std::size_t(result.plan.copies);
+  // With a transition matrix only the allowed words are built; codes[c] is copy c's address code
+  // (ascending), so copies stay sorted by address as in the unrestricted case.
+  std::vector<std::uint64_t> codes;
+  if (!ifs.follows.empty()) {
+    std::uint64_t span = 1;
+    for (int k = 0; k < n; ++k) span = mul(span, N);
+    if (span >= (std::uint64_t(1) << 62))
+      throw ModelError("depth", "the depth is too large for address codes with a transition matrix");
+    codes.reserve(copies);
+    std::function<void(int, std::size_t, std::uint64_t, std::uint64_t)> walk =
+        [&](int j, std::size_t previous, std::uint64_t code, std::uint64_t scale) {
+          if (j > n) {
+            codes.push_back(code);
+            return;
+          }
+          for (std::size_t d = 0; d < N; ++d)
+            if (j == 1 || ifs.allows(previous, d)) walk(j + 1, d, code + d * scale, scale * N);
+        };
+    walk(1, 0, 0, 1);
+    std::sort(codes.begin(), codes.end());
+  }
+  auto slotOf = [&](std::uint64_t code) {
+    return codes.empty() ? std::size_t(code)
+                         : std::size_t(std::lower_bound(codes.begin(), codes.end(), code) - codes.begin());
+  };
   const int threads = resolveThreadCount(options.threads);
 
   IfsMesh& out = result.mesh;
@@ -205,7 +259,15 @@ void buildDeterministicMesh(const DeterministicIfs& ifs, const IfsMesh& base, co
           for (int j = 1; j <= fixedLevels; ++j) {
             digit[std::size_t(j)] = rest % N;
             rest /= N;
+            if (j > 1 && !ifs.allows(digit[std::size_t(j - 1)], digit[std::size_t(j)])) return;  // forbidden prefix
           }
+          // The smallest digit ≥ from that may be applied at step j after step j − 1 (N: none).
+          auto firstAllowed = [&](int j, std::size_t from) {
+            for (std::size_t d = from; d < N; ++d)
+              if (j == 1 || ifs.allows(digit[std::size_t(j - 1)], d)) return d;
+            return N;
+          };
+          for (int j = fixedLevels + 1; j <= n; ++j) digit[std::size_t(j)] = firstAllowed(j, 0);
           auto applyLevel = [&](int j) {  // levels[j] = f_digit[j](levels[j-1]), 1 ≤ j < n
             const Grid& g = *ifs.maps[digit[std::size_t(j)]].grid;
             const auto& in = levels[std::size_t(j - 1)];
@@ -219,7 +281,7 @@ void buildDeterministicMesh(const DeterministicIfs& ifs, const IfsMesh& base, co
             for (int j = changed; j < n; ++j) applyLevel(j);
             std::size_t code = 0;
             for (int j = n; j >= 1; --j) code = code * N + digit[std::size_t(j)];
-            IfsMesh::Point* dst = &out.point(IfsMesh::VertexHandle(int(code * V + v0)));  // contiguous
+            IfsMesh::Point* dst = &out.point(IfsMesh::VertexHandle(int(slotOf(code) * V + v0)));  // contiguous
             const auto& in = levels[std::size_t(std::max(n - 1, 0))];
             const Grid* last = n > 0 ? ifs.maps[digit[std::size_t(n)]].grid.get() : nullptr;
             const Grid* final = ifs.finalGrid.get();
@@ -229,10 +291,19 @@ void buildDeterministicMesh(const DeterministicIfs& ifs, const IfsMesh& base, co
               dst[v] = IfsMesh::Point(float(p.x), float(p.y), float(p.z));
             }
             done.fetch_add(count, std::memory_order_relaxed);
-            // Odometer over the free digits fixedLevels+1 … n, the last-applied one fastest.
+            // Odometer over the free digits fixedLevels+1 … n, the last-applied one fastest,
+            // stepping only through allowed words (every row of the matrix allows some digit).
             int j = n;
-            while (j > fixedLevels && ++digit[std::size_t(j)] == N) digit[std::size_t(j--)] = 0;
+            while (j > fixedLevels) {
+              const std::size_t d = firstAllowed(j, digit[std::size_t(j)] + 1);
+              if (d < N) {
+                digit[std::size_t(j)] = d;
+                break;
+              }
+              --j;
+            }
             if (j <= fixedLevels) return;
+            for (int k = j + 1; k <= n; ++k) digit[std::size_t(k)] = firstAllowed(k, 0);
             changed = j;
           }
         },
@@ -273,7 +344,8 @@ void buildDeterministicMesh(const DeterministicIfs& ifs, const IfsMesh& base, co
             }
             // The chaos game's structural color: blend in the order the functions are applied.
             Vec3 color(1.0);
-            std::size_t rest = c;
+            const std::uint64_t code = codes.empty() ? c : codes[c];
+            std::uint64_t rest = code;
             for (int j = 1; j <= n; ++j) {
               const DeterministicMap& map = ifs.maps[rest % N];
               rest /= N;
@@ -289,7 +361,7 @@ void buildDeterministicMesh(const DeterministicIfs& ifs, const IfsMesh& base, co
             for (std::size_t f = 0; f < F; ++f) {
               const IfsMesh::FaceHandle fh{int(fOff + f)};
               out.set_halfedge_handle(fh, IfsMesh::HalfedgeHandle(shifted(faceHalfedge[f], hOff)));
-              out.property(address, fh) = int(c);
+              out.property(address, fh) = code <= std::uint64_t(INT_MAX) ? int(code) : -1;
             }
           }
           done.fetch_add(c1 - c0, std::memory_order_relaxed);

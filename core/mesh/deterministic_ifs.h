@@ -36,6 +36,11 @@ struct DeterministicMap {
 struct DeterministicIfs {
   std::vector<DeterministicMap> maps;
   std::shared_ptr<const Grid> finalGrid;  // applied once to every vertex at the end; may be null
+  /// The transition matrix over `maps`: follows[a][b] when map b may be applied right after map a
+  /// (Thollot et al. §3.2: only the allowed words are built). Empty: every word.
+  std::vector<std::vector<char>> follows;
+  /// Whether the word applying maps digit[0], digit[1], … in that order is allowed.
+  bool allows(std::size_t previous, std::size_t next) const { return follows.empty() || follows[previous][next]; }
 };
 
 /// Reads evaluated grids through `evaluation` (the Document's cache): call on the thread that
@@ -63,7 +68,7 @@ struct DeterministicOptions {
 struct DeterministicPlan {
   std::size_t functionCount = 0;  // N
   int depth = 0;
-  std::uint64_t copies = 0;       // N^depth, saturated at UINT64_MAX
+  std::uint64_t copies = 0;       // allowed words of length depth (N^depth unrestricted), saturated
   MeshCounts base;                // one copy of the (refined) base mesh
   MeshCounts total;               // copies × base, saturated
   double approximateFaces = 0.0;  // the same in floating point, for messages about absurd depths

@@ -27,6 +27,10 @@ struct FlameSettings {
   double estimator_minimum = 0.0;  // narrowest kernel radius
   double estimator_curve = 0.4;    // how fast the kernel shrinks as density grows (radius ∝ hits^-curve)
   double filter_radius = 0.5;      // Gaussian spatial filter radius in output pixels
+  /// X units per unit of the plane the exposure counts density in (flam3 normalises hits by
+  /// pixels per unit of its flame plane). 1 for GridIFS projects; an imported genome stores the
+  /// scale of its frame here so that it keeps flam3's exposure.
+  double density_unit = 1.0;
   bool operator==(const FlameSettings&) const = default;
 };
 

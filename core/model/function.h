@@ -1,5 +1,6 @@
 #pragma once
 // One function of the IFS: a grid resolution, an op stack and a placement.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,9 @@ struct Function {
   double palette_index = 0.0;    // structural color coordinate c_i in [0, 1] (Draves & Reckase 2003, §5)
   double color_speed = 0.5;      // c = mix(c, c_i, color_speed); 0.5 is (c + c_i)/2 of Draves & Reckase 2003
   bool muted = false;
+  /// "sampling_error": set when the grid samples a map given in closed form (a flame xform on
+  /// import): the largest distance, in X units, between the grid and that map at cell centres.
+  std::optional<double> sampling_error;
   bool operator==(const Function&) const = default;
 };
 

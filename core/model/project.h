@@ -33,6 +33,9 @@ struct Project {
   RenderSettings render;
   std::vector<Function> functions;
   std::optional<Function> final_function;  // not in the loop: applied before plotting
+  /// "transitions": N×N weights, after function i the next is j with probability
+  /// ∝ weight_j · transitions[i][j] (core/transition_matrix.h). Empty: unrestricted.
+  std::vector<std::vector<double>> transitions;
   bool operator==(const Project&) const = default;
 };
 

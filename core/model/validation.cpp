@@ -7,6 +7,7 @@
 #include "model/calculator.h"
 #include "model/palette_reference.h"
 #include "model/stack_evaluator.h"
+#include "model/transition_matrix.h"
 
 namespace gridifs {
 namespace {
@@ -38,6 +39,7 @@ void validateFlameSettings(const FlameSettings& f, const std::string& path) {
   range(f.estimator_minimum, "estimator_minimum", 0.0, 64.0);
   range(f.estimator_curve, "estimator_curve", 0.05, 10.0);
   range(f.filter_radius, "filter_radius", 0.0, 10.0);
+  range(f.density_unit, "density_unit", 1e-6, 1e6);
   if (f.estimator_radius > 0.0) {
     if (f.estimator_minimum > f.estimator_radius)
       fail(join(path, "estimator_minimum"), "the estimator minimum is larger than its radius");
@@ -101,6 +103,7 @@ void validate(const Project& project, const Project* trusted) {
   for (const Function& fn : project.functions) anyActive |= !fn.muted;
   if (anyActive && !(totalWeight > 0.0))
     fail("functions", "every active function has weight 0 (weights must not all be zero)");
+  checkTransitions(project);
 }
 
 }  // namespace

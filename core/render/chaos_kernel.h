@@ -173,6 +173,9 @@ struct ChainState {
   v4f p[kLanes] = {};
   v4f color[kLanes] = {};
   int skipLeft[kLanes] = {};
+  /// The function each lane applied last (transition matrix); kNoFunction after a restart.
+  std::uint32_t last[kLanes] = {};
+  static constexpr std::uint32_t kNoFunction = 0xFFFFFFFFu;
 
   void restartLane(int lane, int skip) {
     const std::uint64_t a = rng.next(), b = rng.next();
@@ -181,6 +184,7 @@ struct ChainState {
     // forgotten geometrically, by (1 - color_speed)^skip).
     color[lane] = v4f{0.5f, 0.5f, 0.5f, float(std::uint32_t(b >> 40)) * (1.0f / 16777216.0f)};
     skipLeft[lane] = skip;
+    last[lane] = kNoFunction;
   }
   /// A fresh chain set for stream (seed, worker).
   static ChainState start(std::uint64_t seed, std::uint64_t worker, int skip) {
@@ -194,6 +198,8 @@ struct ChainState {
 struct HotIfs {
   const HotFunction* functions = nullptr;
   const AliasEntry* alias = nullptr;
+  /// CompiledIfs::transitionAlias ((count + 1) rows of count entries), null when unrestricted.
+  const AliasEntry* transitionRows = nullptr;
   std::uint32_t count = 0;
   const HotFunction* finalFunction = nullptr;  // null when none
   int skip = 20;
@@ -204,17 +210,28 @@ struct HotIfs {
     const AliasEntry e = alias[column];
     return std::uint32_t(r) < e.threshold ? column : e.alias;
   }
+  /// The next function after `last` (kNoFunction: the first of a chain) by the transition rows.
+  [[gnu::always_inline]] std::uint32_t chooseAfter(std::uint32_t last, std::uint64_t r) const {
+    const std::uint32_t row = last < count ? last : count;
+    const std::uint32_t column = std::uint32_t((std::uint64_t(std::uint32_t(r >> 32)) * count) >> 32);
+    const AliasEntry e = transitionRows[std::size_t(row) * count + column];
+    return std::uint32_t(r) < e.threshold ? column : e.alias;
+  }
 };
 
 struct ChainCounters {
   std::int64_t samples = 0, bad = 0, plotted = 0;
 };
 
-/// One iteration of one lane; returns 1 when a point was plotted.
-template <class Plot>
+/// One iteration of one lane; returns 1 when a point was plotted. kRestricted: walk the
+/// transition matrix's Markov chain (Thollot et al. §3.2) instead of independent choices.
+template <bool kRestricted, class Plot>
 [[gnu::always_inline]] inline int stepLane(ChainState& st, int lane, const HotIfs& ifs, Plot& plot,
                                            std::int64_t& bad) {
-  const HotFunction& f = ifs.functions[ifs.choose(st.rng.next())];
+  std::uint32_t index;
+  if constexpr (kRestricted) index = ifs.chooseAfter(st.last[lane], st.rng.next());
+  else index = ifs.choose(st.rng.next());
+  const HotFunction& f = ifs.functions[index];
   const v4f p = apply(f, st.p[lane]);
   const v4f col = st.color[lane] + (f.color - st.color[lane]) * f.speed;  // Draves & Reckase 2003, §5: c = mix(c, c_i, speed)
   if (!inBounds(p, ifs.escapeBound)) [[unlikely]] {
@@ -224,6 +241,7 @@ template <class Plot>
   }
   st.p[lane] = p;
   st.color[lane] = col;
+  if constexpr (kRestricted) st.last[lane] = index;
   if (st.skipLeft[lane] > 0) {
     --st.skipLeft[lane];
     return 0;
@@ -249,14 +267,25 @@ template <class Plot>
   // stores would otherwise make the compiler reload the state from memory after every plot.
   ChainState local = st;
   const std::int64_t rounds = count / kLanes;
-  for (std::int64_t n = 0; n < rounds; ++n) {
-    plotted += stepLane(local, 0, ifs, plot, bad);
-    plotted += stepLane(local, 1, ifs, plot, bad);
-    plotted += stepLane(local, 2, ifs, plot, bad);
-    plotted += stepLane(local, 3, ifs, plot, bad);
-  }
   static_assert(kLanes == 4);
-  for (int l = 0; l < int(count % kLanes); ++l) plotted += stepLane(local, l, ifs, plot, bad);
+  // The restricted loop is a separate instantiation, so the unrestricted one is unchanged.
+  if (ifs.transitionRows) {
+    for (std::int64_t n = 0; n < rounds; ++n) {
+      plotted += stepLane<true>(local, 0, ifs, plot, bad);
+      plotted += stepLane<true>(local, 1, ifs, plot, bad);
+      plotted += stepLane<true>(local, 2, ifs, plot, bad);
+      plotted += stepLane<true>(local, 3, ifs, plot, bad);
+    }
+    for (int l = 0; l < int(count % kLanes); ++l) plotted += stepLane<true>(local, l, ifs, plot, bad);
+  } else {
+    for (std::int64_t n = 0; n < rounds; ++n) {
+      plotted += stepLane<false>(local, 0, ifs, plot, bad);
+      plotted += stepLane<false>(local, 1, ifs, plot, bad);
+      plotted += stepLane<false>(local, 2, ifs, plot, bad);
+      plotted += stepLane<false>(local, 3, ifs, plot, bad);
+    }
+    for (int l = 0; l < int(count % kLanes); ++l) plotted += stepLane<false>(local, l, ifs, plot, bad);
+  }
   if constexpr (requires { plot.flush(); }) plot.flush();
   st = local;
   counters.samples += count;

@@ -58,6 +58,11 @@ struct PreparedJob {
     if (ifs->finalFunction) hot.push_back(kernel::makeHot(*ifs->finalFunction));
     hotIfs.functions = hot.data();
     hotIfs.alias = ifs->alias.data();
+    if (!ifs->transitionAlias.empty()) {
+      if (ifs->transitionAlias.size() != (ifs->functions.size() + 1) * ifs->functions.size())
+        throw ModelError("transitions", "the compiled transition rows do not match the functions");
+      hotIfs.transitionRows = ifs->transitionAlias.data();
+    }
     hotIfs.count = std::uint32_t(ifs->functions.size());
     hotIfs.finalFunction = ifs->finalFunction ? &hot.back() : nullptr;
     hotIfs.skip = job.skip;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "model/stack_evaluator.h"
+#include "model/transition_matrix.h"
 
 namespace gridifs {
 namespace {
@@ -129,6 +130,16 @@ std::shared_ptr<const CompiledIfs> compileWith(
   double total = 0.0;
   for (double w : weights) total += w;
   for (double w : weights) ifs->probabilities.push_back(w / total);
+  std::vector<std::size_t> active;
+  for (const CompiledFunction& f : ifs->functions) active.push_back(f.sourceIndex);
+  const auto rows = activeTransitionWeights(project, active);
+  if (!rows.empty()) {
+    for (const auto& row : rows) {
+      const auto table = buildAliasTable(row);
+      ifs->transitionAlias.insert(ifs->transitionAlias.end(), table.begin(), table.end());
+    }
+    ifs->transitionAlias.insert(ifs->transitionAlias.end(), ifs->alias.begin(), ifs->alias.end());
+  }
   if (project.final_function && !project.final_function->muted) {
     const auto grid = finalGrid();
     try {

@@ -52,6 +52,10 @@ struct CompiledIfs {
   std::optional<CompiledFunction> finalFunction;
   std::vector<AliasEntry> alias;  // one entry per function
   std::vector<double> probabilities;  // normalised weights (for tests and the UI)
+  /// The transition matrix as (n + 1) alias tables of n entries each (n = functions.size()):
+  /// row r < n picks the function after function r, row n the first function of a chain (the
+  /// usual weights). Empty when the project has no matrix (the unrestricted chaos game).
+  std::vector<AliasEntry> transitionAlias;
 
   /// Maps a 64-bit random number to a function index by weight: the high 32 bits pick the
   /// column, the low 32 bits decide between it and its alias.

@@ -90,7 +90,7 @@ FlameImage developFlameSnapshot(const RenderImage& snapshot, const FlameSettings
   const FlameHistogram histogram = flameHistogramFromSnapshot(snapshot, meanCPalette);
   const FlameImage full =
       developFlame(histogram, settings, background, transparent, double(std::max<std::int64_t>(1, snapshot.stats.samples)),
-                   flamePixelsPerUnit(camera, outputHeight), threads);
+                   flamePixelsPerUnit(camera, outputHeight) * settings.density_unit, threads);
   if (g == 0) return full;
   FlameImage image;
   image.width = outputWidth;

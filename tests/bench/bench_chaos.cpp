@@ -107,22 +107,28 @@ GRIDIFS_KERNEL_CLONES void runKernel(kernel::ChainState& chain, const kernel::Ho
   kernel::runChain(chain, ifs, count, plot, counters);
 }
 
-/// The canonical scene recoloured: 0 as is (palette indices 0, 0.5, 1), 1 every palette index 0
-/// (the default of a new function), 2 an all-red IFS (green and blue 0 in every function). In 1
-/// and 2 a colour channel decays towards 0 and, without flushing, sits on a denormal.
-Project colourScene(int variant) {
+/// The canonical scene varied: 0 as is (palette indices 0, 0.5, 1), 1 every palette index 0
+/// (the default of a new function), 2 an all-red IFS (green and blue 0 in every function), 3 with
+/// a transition matrix in which no function follows itself (the Markov-chain walk). In 1 and 2 a
+/// colour channel decays towards 0 and, without flushing, sits on a denormal.
+Project kernelScene(int variant) {
   Project p = canonicalScene();
   for (Function& f : p.functions) {
     if (variant == 1) f.palette_index = 0.0;
     if (variant == 2) f.color = Vec3{1.0, 0.0, 0.0};
   }
+  if (variant == 3) {
+    const std::size_t n = p.functions.size();
+    p.transitions.assign(n, std::vector<double>(n, 1.0));
+    for (std::size_t i = 0; i < n; ++i) p.transitions[i][i] = 0.0;
+  }
   return p;
 }
 
-/// The kernel alone on the calling thread (no pool) for colour variant `variant` (see
-/// colourScene), with denormals flushed as the renderer's workers do (`flush` 1) or not (0).
+/// The kernel alone on the calling thread (no pool) for scene `variant` (see kernelScene), with
+/// denormals flushed as the renderer's workers do (`flush` 1) or not (0).
 void runKernelBenchmark(benchmark::State& state, int variant, bool flush) {
-  const Project scene = colourScene(variant);
+  const Project scene = kernelScene(variant);
   const RenderJob job = RenderJob::fromProject(scene, 1);
   const auto compiled = compileIfs(scene);
   const auto& ifs = *compiled;
@@ -131,6 +137,7 @@ void runKernelBenchmark(benchmark::State& state, int variant, bool flush) {
   kernel::HotIfs hotIfs;
   hotIfs.functions = hot.data();
   hotIfs.alias = ifs.alias.data();
+  hotIfs.transitionRows = ifs.transitionAlias.empty() ? nullptr : ifs.transitionAlias.data();
   hotIfs.count = std::uint32_t(hot.size());
   hotIfs.skip = job.skip;
   const kernel::HotCamera cam = kernel::makeHotCamera(OrbitCamera(job.camera, job.width, job.height));
@@ -147,9 +154,9 @@ void runKernelBenchmark(benchmark::State& state, int variant, bool flush) {
   state.counters["plotted_fraction"] = double(counters.plotted) / double(counters.samples);
 }
 
-/// Points per CPU second, robust to a busy machine.
-void BM_Kernel(benchmark::State& state) { runKernelBenchmark(state, 0, true); }
-BENCHMARK(BM_Kernel)->Unit(benchmark::kMillisecond)->MinTime(1.0);
+/// Points per CPU second, robust to a busy machine. Arg 1: with a transition matrix.
+void BM_Kernel(benchmark::State& state) { runKernelBenchmark(state, state.range(0) == 1 ? 3 : 0, true); }
+BENCHMARK(BM_Kernel)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->MinTime(1.0);
 
 /// The denormal pair: every colour variant at the same rate with flushing (within noise), and the
 /// stall it prevents without (args: variant, flush).

@@ -214,3 +214,48 @@ TEST(ModellerGui, AFileThatDoesNotLoadIsReportedNotFatal) {
   EXPECT_EQ(probe["functions"].get<int>(), 1) << "the default project stays open";
   EXPECT_EQ(probe["path"], "");
 }
+
+TEST(ModellerGui, ImportFlameFromTheFileMenu) {
+  if (!haveDisplay()) GTEST_SKIP() << "no X display (run under xvfb-run)";
+  TempFolder home;
+  App app(home, {exampleCopy(home, "default.gridifs").string()});
+  nlohmann::json probe = app.waitForPreview();
+  auto importFile = [&](const fs::path& file) {
+    // The browser opens in the document's folder: the artist types a short name there.
+    fs::copy_file(file, home.path / file.filename(), fs::copy_options::overwrite_existing);
+    focusWindow();
+    clickAt(probe["window"]["x"].get<int>() + 20, probe["window"]["y"].get<int>() + 10);  // File
+    probe = app.waitFor([](const nlohmann::json& j) { return j["rects"].contains("menu.import_flame"); }, 10s);
+    ASSERT_TRUE(probe["rects"].contains("menu.import_flame")) << "the File menu did not open";
+    const Rect item = rectOf(probe, "menu.import_flame");
+    clickAt(item.x + item.w / 2, item.y + item.h / 2);
+    probe = app.waitFor([](const nlohmann::json& j) { return j["modal"].get<bool>() && j["rects"].contains("browser.fileName"); }, 10s);
+    ASSERT_TRUE(probe["rects"].contains("browser.fileName")) << "the file browser did not open";
+    std::this_thread::sleep_for(500ms);  // the dialog places itself in its first frames
+    const Rect name = rectOf(app.probe(), "browser.fileName");
+    clickAt(name.x + name.w / 2, name.y + name.h / 2);
+    focusWindow();
+    xdotool("type --delay 15 '" + file.filename().string() + "'");
+    std::this_thread::sleep_for(300ms);
+    pressKeys("Return");
+  };
+  // A broken file: an error in the window, the document unchanged.
+  importFile(fs::path(GRIDIFS_TEST_DATA) / "flame" / "bad" / "missing_coefs.flame");
+  probe = app.waitFor([](const nlohmann::json& j) {
+    return j["modal"].get<bool>() && j["status"].get<std::string>().find("Could not import") != std::string::npos;
+  }, 15s);
+  EXPECT_NE(probe["status"].get<std::string>().find("has no coefs"), std::string::npos) << probe["status"];
+  EXPECT_EQ(probe["functions"].get<int>(), 4);
+  EXPECT_FALSE(probe["dirty"].get<bool>());
+  pressKeys("Escape");
+  probe = app.waitFor([](const nlohmann::json& j) { return !j["modal"].get<bool>(); }, 10s);
+  ASSERT_FALSE(probe["modal"].get<bool>());
+  // A good one: a new, unsaved document with its functions, one undo step.
+  importFile(fs::path(GRIDIFS_TEST_DATA) / "flame" / "sierpinski_chaos.flam3");
+  probe = app.waitFor([](const nlohmann::json& j) { return j["functions"].get<int>() == 3 && !j["modal"].get<bool>(); }, 20s);
+  EXPECT_EQ(probe["functions"].get<int>(), 3);
+  EXPECT_EQ(probe["undo"], "Import flame");
+  EXPECT_TRUE(probe["dirty"].get<bool>());
+  EXPECT_EQ(probe["path"], "");
+  EXPECT_NE(probe["status"].get<std::string>().find("Imported sierpinski-no-repeat"), std::string::npos) << probe["status"];
+}

@@ -1,0 +1,190 @@
+#include "io/flame_export.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "io/flame_import.h"
+#include "flame/palette.h"
+#include "model/stack_evaluator.h"
+
+namespace gridifs {
+namespace {
+
+std::string num(double v) {
+  char buffer[40];
+  std::snprintf(buffer, sizeof buffer, "%.17g", v == 0.0 ? 0.0 : v);  // no "-0"
+  return buffer;
+}
+
+std::string xmlEscape(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
+    }
+  }
+  return out;
+}
+
+/// Solves the 3×3 normal equations M·s = r by Cramer's rule (M symmetric positive definite for
+/// any grid with non-collinear nodes).
+std::array<double, 3> solve3(const double m[3][3], const double r[3]) {
+  auto det = [](const double a[3][3]) {
+    return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+           a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+  };
+  const double d = det(m);
+  std::array<double, 3> s{};
+  for (int c = 0; c < 3; ++c) {
+    double t[3][3];
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j) t[i][j] = j == c ? r[i] : m[i][j];
+    s[std::size_t(c)] = det(t) / d;
+  }
+  return s;
+}
+
+/// The flame xform attributes of a function: its fit conjugated into flame coordinates by the
+/// frame (X = scale · flip(p − centre), no rotation).
+FlameAffine toFlame(const FlameAffine& g, const FlameFrame& frame) {
+  // p = fromX(X); F(p) = fromX(G(toX(p))). With toX(p) = s·S·(p − c), S = diag(1, −1):
+  // F(p) = S·A·S·(p − c) + c + S·t / s.
+  FlameAffine f;
+  f.a = g.a;
+  f.b = -g.b;
+  f.d = -g.d;
+  f.e = g.e;
+  const double tx = g.c / frame.scale, ty = -g.f / frame.scale;
+  f.c = -(f.a * frame.centerX + f.b * frame.centerY) + frame.centerX + tx;
+  f.f = -(f.d * frame.centerX + f.e * frame.centerY) + frame.centerY + ty;
+  return f;
+}
+
+std::string coefsText(const FlameAffine& f) {
+  // The file's order is a d b e c f.
+  return num(f.a) + " " + num(f.d) + " " + num(f.b) + " " + num(f.e) + " " + num(f.c) + " " + num(f.f);
+}
+
+}  // namespace
+
+FlameAffine fitAffine(const Grid& g, double& maxError) {
+  const Index3 n = g.resolution();
+  const Index3 n3 = n;
+  double m[3][3] = {}, rx[3] = {}, ry[3] = {};
+  for (int k = 0; k < n3[2]; ++k)
+    for (int j = 0; j < n3[1]; ++j)
+      for (int i = 0; i < n3[0]; ++i) {
+        const double u[3] = {-1.0 + 2.0 * i / (n[0] - 1), -1.0 + 2.0 * j / (n[1] - 1), 1.0};
+        const Vec3 q = g.node(i, j, k);
+        for (int a = 0; a < 3; ++a) {
+          for (int b = 0; b < 3; ++b) m[a][b] += u[a] * u[b];
+          rx[a] += u[a] * q.x;
+          ry[a] += u[a] * q.y;
+        }
+      }
+  const auto sx = solve3(m, rx), sy = solve3(m, ry);
+  FlameAffine f{sx[0], sx[1], sx[2], sy[0], sy[1], sy[2]};
+  maxError = 0.0;
+  for (int k = 0; k < n3[2]; ++k)
+    for (int j = 0; j < n3[1]; ++j)
+      for (int i = 0; i < n3[0]; ++i) {
+        const FlamePoint p = f.apply({-1.0 + 2.0 * i / (n[0] - 1), -1.0 + 2.0 * j / (n[1] - 1)});
+        const Vec3 q = g.node(i, j, k);
+        maxError = std::max(maxError, std::sqrt((q.x - p.x) * (q.x - p.x) + (q.y - p.y) * (q.y - p.y) + q.z * q.z));
+      }
+  return f;
+}
+
+FlameExport exportFlame(const Project& project, const std::filesystem::path& projectFolder, const std::string& name) {
+  FlameExport out;
+  // The flame plane is X's z = 0 plane with y flipped (image rows go down with y); the frame
+  // is recorded so that importing the file again restores the same grids.
+  FlameFrame frame;
+  frame.scale = project.render.flame.density_unit;  // flam3's exposure counts density per flame unit
+  const Camera& cam = project.camera;
+  const RenderSettings& r = project.render;
+  if (!(cam.ortho && cam.pitch == 90.0))
+    out.warnings.push_back(
+        "the camera is not an orthographic view from above; the flame frames its target and extent seen from above");
+  const double halfH = cam.distance * std::tan(cam.fov * 3.14159265358979323846 / 360.0);
+  const double ppu = r.height / (2.0 * halfH) * frame.scale;
+  const FlamePoint center = frame.fromX({cam.target.x, cam.target.y});
+  const FlameSettings& fl = r.flame;
+  std::ostringstream x;
+  x << "<flame name=\"" << xmlEscape(name) << "\" version=\"GridIFS\" size=\"" << r.width << " " << r.height
+    << "\" center=\"" << num(center.x) << " " << num(center.y) << "\" scale=\"" << num(ppu)
+    << "\" zoom=\"0\" rotate=\"0\" oversample=\"" << fl.supersample << "\" supersample=\"" << fl.supersample
+    << "\" filter=\"" << num(fl.filter_radius) << "\" filter_shape=\"gaussian\" quality=\""
+    << num(double(r.samples) / (double(r.width) * r.height)) << "\" background=\"" << num(r.background.x) << " "
+    << num(r.background.y) << " " << num(r.background.z) << "\" brightness=\"" << num(fl.brightness) << "\" gamma=\""
+    << num(fl.gamma) << "\" gamma_threshold=\"" << num(fl.gamma_threshold) << "\" vibrancy=\"" << num(fl.vibrancy)
+    << "\" highlight_power=\"" << num(fl.highlight_power) << "\" estimator_radius=\"" << num(fl.estimator_radius)
+    << "\" estimator_minimum=\"" << num(fl.estimator_minimum) << "\" estimator_curve=\"" << num(fl.estimator_curve)
+    << "\" palette_mode=\"linear\" interpolation_type=\"linear\"";
+  if (fl.palette.rfind("flam3:", 0) == 0 && fl.palette.find_first_not_of("0123456789", 6) == std::string::npos)
+    x << " palette=\"" << fl.palette.substr(6) << "\"";
+  x << " " << kFlameFrameAttribute << "=\"" << num(frame.centerX) << " " << num(frame.centerY) << " "
+    << num(frame.scale) << "\">\n";
+
+  std::vector<std::size_t> kept;
+  for (std::size_t i = 0; i < project.functions.size(); ++i)
+    if (!project.functions[i].muted) kept.push_back(i);
+  auto xformAttributes = [&](const Function& fn, const std::string& path, const std::string& label) {
+    const auto grid = evaluateFunctionAt(fn, path);
+    double error = 0.0;
+    const FlameAffine fit = fitAffine(*grid, error);
+    if (error > 1e-9) {
+      char buffer[64];
+      std::snprintf(buffer, sizeof buffer, "%.3g", error);
+      out.warnings.push_back(label +
+                             " is not affine in the z = 0 plane: exported as its least-squares affine fit "
+                             "(largest node error " +
+                             buffer + ")");
+    }
+    return "color=\"" + num(fn.palette_index) + "\" color_speed=\"" + num(fn.color_speed) + "\" linear=\"1\" coefs=\"" +
+           coefsText(toFlame(fit, frame)) + "\" name=\"" + xmlEscape(fn.name) + "\"";
+  };
+  for (std::size_t i : kept) {
+    const Function& fn = project.functions[i];
+    x << "  <xform weight=\"" << num(fn.weight) << "\" "
+      << xformAttributes(fn, "functions[" + std::to_string(i) + "]",
+                         "function " + std::to_string(i) + " \"" + fn.name + "\"");
+    if (!project.transitions.empty()) {
+      x << " chaos=\"";
+      for (std::size_t k = 0; k < kept.size(); ++k) x << (k ? " " : "") << num(project.transitions[i][kept[k]]);
+      x << "\"";
+    }
+    x << "/>\n";
+  }
+  if (project.final_function && !project.final_function->muted)
+    x << "  <finalxform " << xformAttributes(*project.final_function, "final", "the final function") << "/>\n";
+  try {
+    const Palette palette = resolvePalette(fl.palette, projectFolder);
+    for (int i = 0; i < Palette::kSize; ++i) {
+      const Rgb& c = palette.colors[std::size_t(i)];
+      x << "  <color index=\"" << i << "\" rgb=\"" << int(std::lround(c.r * 255.0f)) << " "
+        << int(std::lround(c.g * 255.0f)) << " " << int(std::lround(c.b * 255.0f)) << "\"/>\n";
+    }
+  } catch (const PaletteError& e) {
+    out.warnings.push_back(std::string("the palette was not exported: ") + e.what());
+  }
+  x << "</flame>\n";
+  out.xml = x.str();
+  return out;
+}
+
+}  // namespace gridifs

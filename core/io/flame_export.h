@@ -1,0 +1,32 @@
+#pragma once
+// A GridIFS project as a flame genome (the .flame XML of flam3 and Apophysis; Draves & Reckase):
+// each function becomes an xform holding its least-squares affine fit in the z = 0 plane (exact
+// for affine grids), with weight, palette index, color speed, transitions as `chaos`, the final
+// function as `finalxform`, the palette as <color> entries and the flame display settings.
+// Pure functions apart from reading palette files: thread-safe.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "io/flame_variations.h"
+#include "model/grid.h"
+#include "model/project.h"
+
+namespace gridifs {
+
+/// The least-squares affine map (x, y) → (x', y') through every node of `evaluated`, in X
+/// coordinates (x' = a·x + b·y + c, y' = d·x + e·y + f). `maxError` receives the largest
+/// distance between a node and the fit (including the node's z), 0 up to rounding for an affine
+/// grid that keeps z at 0.
+FlameAffine fitAffine(const Grid& evaluated, double& maxError);
+
+struct FlameExport {
+  std::string xml;
+  std::vector<std::string> warnings;  // non-affine functions, dropped 3D content, palette problems
+};
+
+/// Builds the .flame text. `projectFolder` anchors relative palette files. Throws ModelError
+/// (with a JSON path) when a stack fails to evaluate.
+FlameExport exportFlame(const Project& project, const std::filesystem::path& projectFolder, const std::string& name);
+
+}  // namespace gridifs

@@ -1,0 +1,325 @@
+#include "io/flame_genome.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <pugixml.hpp>
+#include <set>
+#include <sstream>
+
+#include "io/project_io.h"
+
+namespace gridifs {
+namespace {
+
+[[noreturn]] void fail(const std::string& message) { throw FlameError(message); }
+
+std::vector<double> numbers(const std::string& text, const std::string& what) {
+  std::vector<double> out;
+  std::istringstream in(text);
+  std::string token;
+  while (in >> token) {
+    char* end = nullptr;
+    const double v = std::strtod(token.c_str(), &end);
+    if (end == token.c_str() || *end != '\0')
+      fail(what + " has \"" + token.substr(0, 32) + "\", which is not a number");
+    if (!std::isfinite(v)) fail(what + " has a value that is not finite");
+    if (std::fabs(v) > 1e12) fail(what + " has an absurdly large value");
+    out.push_back(v);
+    if (out.size() > 4096) fail(what + " has too many values");
+  }
+  return out;
+}
+
+double number(const pugi::xml_node& node, const char* name, double fallback, const std::string& where) {
+  const pugi::xml_attribute a = node.attribute(name);
+  if (!a) return fallback;
+  const auto v = numbers(a.value(), where + " attribute " + name);
+  if (v.empty()) fail(where + " attribute " + name + " is empty");
+  return v[0];
+}
+
+FlameAffine affine(const std::string& text, const std::string& what) {
+  const auto v = numbers(text, what);
+  if (v.size() != 6) fail(what + " needs 6 numbers (a d b e c f), found " + std::to_string(v.size()));
+  // The file's order is a d b e c f.
+  return FlameAffine{v[0], v[2], v[4], v[1], v[3], v[5]};
+}
+
+const std::set<std::string>& structuralAttributes() {
+  static const std::set<std::string> names = {
+      "weight", "color",   "color_speed", "symmetry",         "coefs",           "post",     "chaos",  "opacity",
+      "name",   "animate", "var_color",   "motion_frequency", "motion_function", "plotmode", "visible"};
+  return names;
+}
+
+bool isVariationParameter(const std::string& name) {
+  for (const FlameVariation& v : flameVariations())
+    for (const auto& p : v.params)
+      if (name == p.first) return true;
+  return false;
+}
+
+FlameXform parseXform(const pugi::xml_node& node, const std::string& where, bool isFinal,
+                      std::set<std::string>& randomLeftOut, std::set<std::string>& unknownLeftOut) {
+  FlameXform x;
+  x.weight = number(node, "weight", isFinal ? 0.0 : 0.5, where);
+  if (!isFinal && x.weight < 0.0) fail(where + " has a negative weight");
+  x.color = std::clamp(number(node, "color", 0.0, where), 0.0, 1.0);
+  if (node.attribute("color_speed"))
+    x.color_speed = number(node, "color_speed", 0.5, where);
+  else if (node.attribute("symmetry"))
+    x.color_speed = (1.0 - number(node, "symmetry", 0.0, where)) / 2.0;
+  else
+    x.color_speed = isFinal ? 0.0 : 0.5;
+  x.color_speed = std::clamp(x.color_speed, 0.0, 1.0);
+  const pugi::xml_attribute coefs = node.attribute("coefs");
+  if (!coefs) fail(where + " has no coefs");
+  x.coefs = affine(coefs.value(), where + " coefs");
+  if (const pugi::xml_attribute post = node.attribute("post")) x.post = affine(post.value(), where + " post");
+  if (const pugi::xml_attribute chaos = node.attribute("chaos")) {
+    x.chaos = numbers(chaos.value(), where + " chaos");
+    for (double c : x.chaos)
+      if (c < 0.0) fail(where + " chaos has a negative weight");
+  }
+  x.name = node.attribute("name").value();
+  for (const pugi::xml_attribute a : node.attributes()) {
+    const std::string name = a.name();
+    if (structuralAttributes().count(name)) continue;
+    if (findFlameVariation(name)) {
+      const auto v = numbers(a.value(), where + " variation " + name);
+      if (v.size() != 1) fail(where + " variation " + name + " needs one weight");
+      if (v[0] != 0.0) x.variations.emplace_back(name, v[0]);
+    } else if (isVariationParameter(name)) {
+      const auto v = numbers(a.value(), where + " parameter " + name);
+      if (v.size() != 1) fail(where + " parameter " + name + " needs one number");
+      x.params[name] = v[0];
+    } else if (isRandomFlameVariation(name)) {
+      if (numbers(a.value(), where + " variation " + name) != std::vector<double>{0.0}) randomLeftOut.insert(name);
+    } else if (isRandomFlameVariationParameter(name)) {
+      continue;  // belongs to a random variation already reported
+    } else {
+      unknownLeftOut.insert(name);
+    }
+  }
+  return x;
+}
+
+std::array<Rgb, Palette::kSize> hexPalette(const std::string& raw, const std::string& where) {
+  std::string hex;
+  for (char c : raw)
+    if (!std::isspace(static_cast<unsigned char>(c))) hex += c;
+  for (char c : hex)
+    if (!std::isxdigit(static_cast<unsigned char>(c))) fail(where + " has a character that is not hexadecimal");
+  // 6 hex digits per entry (RRGGBB, Apophysis) or 8 (00RRGGBB, flam3's `colors data`).
+  const std::size_t digits = hex.size() == 256 * 8 ? 8 : 6;
+  if (hex.size() != 256 * digits)
+    fail(where + " needs 256 colors (" + std::to_string(hex.size()) + " hex digits found)");
+  std::array<Rgb, Palette::kSize> colors{};
+  for (int i = 0; i < 256; ++i) {
+    const std::size_t at = std::size_t(i) * digits + (digits - 6);
+    auto channel = [&](std::size_t k) { return float(std::stoi(hex.substr(at + 2 * k, 2), nullptr, 16)) / 255.0f; };
+    colors[std::size_t(i)] = {channel(0), channel(1), channel(2)};
+  }
+  return colors;
+}
+
+FlameGenome parseGenome(const pugi::xml_node& flame, std::size_t index) {
+  FlameGenome g;
+  g.name = flame.attribute("name").value();
+  const std::string where = "genome " + std::to_string(index) + (g.name.empty() ? "" : " \"" + g.name + "\"");
+  if (const pugi::xml_attribute size = flame.attribute("size")) {
+    const auto v = numbers(size.value(), where + " size");
+    if (v.size() != 2) fail(where + " size needs a width and a height");
+    if (!(v[0] >= 1 && v[0] <= flame_limits::kMaxImageSize && v[1] >= 1 && v[1] <= flame_limits::kMaxImageSize))
+      fail(where + " size must be between 1 and " + std::to_string(flame_limits::kMaxImageSize) + " pixels");
+    g.width = int(v[0]);
+    g.height = int(v[1]);
+  } else {
+    fail(where + " has no size");
+  }
+  if (const pugi::xml_attribute center = flame.attribute("center")) {
+    const auto v = numbers(center.value(), where + " center");
+    if (v.size() != 2) fail(where + " center needs two numbers");
+    g.centerX = v[0];
+    g.centerY = v[1];
+  }
+  g.scale = number(flame, "scale", 0.0, where);
+  if (!(g.scale > 0.0)) g.scale = g.width / 4.0;  // flam3's default: the width spans 4 units
+  g.zoom = number(flame, "zoom", 0.0, where);
+  if (std::fabs(g.zoom) > 40.0) fail(where + " zoom is out of range");
+  g.rotate = number(flame, "rotate", 0.0, where);
+  g.quality = number(flame, "quality", g.quality, where);
+  if (!(g.quality > 0.0 && g.quality <= flame_limits::kMaxQuality))
+    fail(where + " quality must be positive and at most " + std::to_string(int(flame_limits::kMaxQuality)));
+  g.supersample = int(number(flame, "supersample", number(flame, "oversample", 1.0, where), where));
+  if (g.supersample < 1 || g.supersample > 16) fail(where + " supersample must be between 1 and 16");
+  g.filter = number(flame, "filter", g.filter, where);
+  g.brightness = number(flame, "brightness", g.brightness, where);
+  g.gamma = number(flame, "gamma", g.gamma, where);
+  g.gamma_threshold = number(flame, "gamma_threshold", g.gamma_threshold, where);
+  g.vibrancy = number(flame, "vibrancy", g.vibrancy, where);
+  g.highlight_power = number(flame, "highlight_power", g.highlight_power, where);
+  if (const pugi::xml_attribute bg = flame.attribute("background")) {
+    const auto v = numbers(bg.value(), where + " background");
+    if (v.size() != 3) fail(where + " background needs three numbers");
+    for (int c = 0; c < 3; ++c) g.background[std::size_t(c)] = std::clamp(v[std::size_t(c)], 0.0, 1.0);
+  }
+  g.estimator_radius = number(flame, "estimator_radius", g.estimator_radius, where);
+  g.estimator_minimum = number(flame, "estimator_minimum", g.estimator_minimum, where);
+  g.estimator_curve = number(flame, "estimator_curve", g.estimator_curve, where);
+  if (flame.attribute("palette")) g.paletteNumber = int(number(flame, "palette", -1.0, where));
+  g.hue = number(flame, "hue", 0.0, where);
+  if (const pugi::xml_attribute hint = flame.attribute("gridifs_frame")) {
+    const auto v = numbers(hint.value(), where + " gridifs_frame");
+    if (v.size() != 3 || !(v[2] > 0.0)) fail(where + " gridifs_frame needs a centre and a positive scale");
+    g.frameHint = std::array<double, 3>{v[0], v[1], v[2]};
+  }
+
+  std::set<std::string> randomLeftOut, unknownLeftOut;
+  bool threeD = false;
+  std::array<Rgb, Palette::kSize> colors{};
+  int colorEntries = 0;
+  for (const pugi::xml_node child : flame.children()) {
+    const std::string tag = child.name();
+    if (tag == "xform") {
+      if (g.xforms.size() >= std::size_t(flame_limits::kMaxXforms))
+        fail(where + " has more than " + std::to_string(flame_limits::kMaxXforms) + " xforms");
+      g.xforms.push_back(
+          parseXform(child, where + " xform " + std::to_string(g.xforms.size()), false, randomLeftOut, unknownLeftOut));
+    } else if (tag == "finalxform") {
+      if (g.finalXform) fail(where + " has more than one finalxform");
+      g.finalXform = parseXform(child, where + " finalxform", true, randomLeftOut, unknownLeftOut);
+    } else if (tag == "color") {
+      const int i = int(number(child, "index", -1.0, where + " color"));
+      if (i < 0 || i > 255) fail(where + " has a color entry whose index is not in 0..255");
+      const auto rgb = numbers(child.attribute("rgb").value(), where + " color rgb");
+      if (rgb.size() != 3) fail(where + " has a color entry without three rgb values");
+      colors[std::size_t(i)] = {float(std::clamp(rgb[0], 0.0, 255.0) / 255.0),
+                                float(std::clamp(rgb[1], 0.0, 255.0) / 255.0),
+                                float(std::clamp(rgb[2], 0.0, 255.0) / 255.0)};
+      ++colorEntries;
+    } else if (tag == "palette") {
+      Palette p;
+      p.name = g.name.empty() ? "imported" : g.name;
+      p.colors = hexPalette(child.text().get(), where + " palette");
+      g.palette = p;
+    } else if (tag == "colors") {
+      Palette p;
+      p.name = g.name.empty() ? "imported" : g.name;
+      p.colors = hexPalette(child.attribute("data").value(), where + " colors");
+      g.palette = p;
+    }
+  }
+  if (!g.palette && colorEntries > 0) {
+    Palette p;
+    p.name = g.name.empty() ? "imported" : g.name;
+    p.colors = colors;
+    g.palette = p;
+  }
+  if (g.xforms.empty()) fail(where + " has no xforms");
+  for (const auto& attr : flame.attributes()) {
+    const std::string n = attr.name();
+    threeD |= n == "cam_pitch" || n == "cam_yaw" || n == "cam_perspective" || n == "cam_zpos";
+  }
+  for (const std::string& u : unknownLeftOut) threeD |= u.find("3D") != std::string::npos || u.rfind("z", 0) == 0;
+  if (!randomLeftOut.empty()) {
+    std::string list;
+    for (const auto& n : randomLeftOut) list += (list.empty() ? "" : ", ") + n;
+    g.warnings.push_back("the random variations " + list + " have no closed form and were left out");
+  }
+  if (!unknownLeftOut.empty()) {
+    std::string list;
+    for (const auto& n : unknownLeftOut) list += (list.empty() ? "" : ", ") + n;
+    g.warnings.push_back("unknown or unsupported attributes were left out: " + list);
+  }
+  if (threeD) g.warnings.push_back("3D camera and z attributes are not imported: the genome is read as 2D");
+  if (g.hue != 0.0) g.warnings.push_back("the palette hue rotation was ignored");
+  return g;
+}
+
+}  // namespace
+
+double FlameGenome::pixelsPerUnit() const { return scale * std::pow(2.0, zoom); }
+
+FlamePoint FlameXform::apply(FlamePoint p) const {
+  const FlamePoint t = coefs.apply(p);
+  VariationInput in{t.x, t.y, coefs, &params};
+  FlamePoint sum;
+  for (const auto& [name, weight] : variations) {
+    const FlameVariation* v = findFlameVariation(name);
+    const FlamePoint q = v->apply(in, weight);
+    sum.x += q.x;
+    sum.y += q.y;
+  }
+  return post.apply(sum);
+}
+
+bool FlameXform::isAffine() const {
+  return std::all_of(variations.begin(), variations.end(), [](const auto& v) { return v.first == "linear"; });
+}
+
+std::vector<FlameGenome> parseFlameFile(const std::string& xmlText) {
+  if (xmlText.size() > flame_limits::kMaxFileBytes) fail("the file is larger than 64 MiB");
+  if (xmlText.find_first_not_of(" \t\r\n") == std::string::npos) fail("the file is empty");
+  pugi::xml_document doc;
+  const pugi::xml_parse_result result = doc.load_buffer(xmlText.data(), xmlText.size());
+  if (!result) {
+    std::size_t line = 1;
+    for (std::ptrdiff_t i = 0; i < result.offset && std::size_t(i) < xmlText.size(); ++i)
+      line += xmlText[std::size_t(i)] == '\n';
+    fail(std::string("the XML is malformed (") + result.description() + " at line " + std::to_string(line) + ")");
+  }
+  // Walk iteratively with a depth limit: no recursion a hostile file could exhaust.
+  std::vector<pugi::xml_node> flames;
+  std::vector<std::pair<pugi::xml_node, int>> stack{{doc, 0}};
+  while (!stack.empty()) {
+    const auto [node, depth] = stack.back();
+    stack.pop_back();
+    if (depth > flame_limits::kMaxDepth)
+      fail("the XML is nested more than " + std::to_string(flame_limits::kMaxDepth) + " levels deep");
+    if (std::string(node.name()) == "flame") {
+      flames.push_back(node);
+      continue;
+    }
+    std::vector<pugi::xml_node> children;
+    for (const pugi::xml_node c : node.children())
+      if (c.type() == pugi::node_element) children.push_back(c);
+    for (auto it = children.rbegin(); it != children.rend(); ++it) stack.emplace_back(*it, depth + 1);
+  }
+  if (flames.empty()) fail("the file has no <flame> genome");
+  std::vector<FlameGenome> genomes;
+  for (std::size_t i = 0; i < flames.size(); ++i) genomes.push_back(parseGenome(flames[i], i));
+  return genomes;
+}
+
+std::vector<FlameGenome> loadFlameFile(const std::filesystem::path& file) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(file, ec)) throw IoError("it is a folder, not a flame file");
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw IoError(std::string("cannot open it: ") + std::strerror(errno));
+  std::string text;
+  char buffer[1 << 16];
+  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
+    text.append(buffer, std::size_t(in.gcount()));
+    if (text.size() > flame_limits::kMaxFileBytes) fail("the file is larger than 64 MiB");
+  }
+  return parseFlameFile(text);
+}
+
+const FlameGenome& selectGenome(const std::vector<FlameGenome>& genomes, const std::string& indexOrName) {
+  if (indexOrName.empty()) return genomes.front();
+  for (const FlameGenome& g : genomes)
+    if (g.name == indexOrName) return g;
+  if (indexOrName.find_first_not_of("0123456789") == std::string::npos && indexOrName.size() < 9) {
+    const std::size_t i = std::stoul(indexOrName);
+    if (i < genomes.size()) return genomes[i];
+    fail("there is no genome " + indexOrName + " (the file has " + std::to_string(genomes.size()) + ")");
+  }
+  fail("there is no genome named \"" + indexOrName + "\"");
+}
+
+}  // namespace gridifs

@@ -1,0 +1,312 @@
+#include "io/flame_import.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <random>
+
+#include "io/project_io.h"
+#include "model/stack_evaluator.h"
+#include "model/transition_matrix.h"
+
+namespace gridifs {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+/// Node targets beyond this are clamped: still far outside X (the chain restarts there, as
+/// flam3 drops bad points) but finite, which grids require.
+constexpr double kNodeClamp = 1e4;
+
+double clampCoordinate(double v) { return std::isfinite(v) ? std::clamp(v, -kNodeClamp, kNodeClamp) : kNodeClamp; }
+
+/// A robust extent of the attractor: a short chaos game in double precision with the genome's
+/// weights and chaos rows; returns the 0.5 % and 99.5 % quantiles of x and y (flame units).
+std::array<double, 4> attractorExtent(const FlameGenome& g) {
+  const std::size_t n = g.xforms.size();
+  std::vector<std::vector<double>> rows(n, std::vector<double>(n, 0.0));
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = 0; j < n; ++j)
+      rows[i][j] = g.xforms[j].weight * (j < g.xforms[i].chaos.size() ? g.xforms[i].chaos[j] : 1.0);
+  std::mt19937_64 rng(1);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  std::vector<double> xs, ys;
+  constexpr int kIterations = 120000, kSkip = 20;
+  FlamePoint p{unit(rng), unit(rng)};
+  std::size_t last = n;  // none
+  int skip = kSkip;
+  for (int it = 0; it < kIterations; ++it) {
+    const std::vector<double>* weights = nullptr;
+    std::vector<double> base;
+    if (last < n)
+      weights = &rows[last];
+    else {
+      for (const auto& x : g.xforms) base.push_back(x.weight);
+      weights = &base;
+    }
+    double total = 0.0;
+    for (double w : *weights) total += w;
+    if (!(total > 0.0)) {
+      last = n;
+      continue;
+    }
+    double r = (unit(rng) + 1.0) * 0.5 * total;
+    std::size_t k = 0;
+    while (k + 1 < n && r >= (*weights)[k]) r -= (*weights)[k++];
+    const FlamePoint q = g.xforms[k].apply(p);
+    if (!std::isfinite(q.x) || !std::isfinite(q.y) || std::fabs(q.x) > 1e10 || std::fabs(q.y) > 1e10) {
+      p = {unit(rng), unit(rng)};
+      last = n;
+      skip = kSkip;
+      continue;
+    }
+    p = q;
+    last = k;
+    if (skip > 0) {
+      --skip;
+      continue;
+    }
+    xs.push_back(p.x);
+    ys.push_back(p.y);
+  }
+  if (xs.size() < 100) return {g.centerX, g.centerX, g.centerY, g.centerY};
+  auto quantile = [](std::vector<double>& v, double q) {
+    const std::size_t k = std::size_t(q * double(v.size() - 1));
+    std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(k), v.end());
+    return v[k];
+  };
+  return {quantile(xs, 0.005), quantile(xs, 0.995), quantile(ys, 0.005), quantile(ys, 0.995)};
+}
+
+FlameFrame chooseFrame(const FlameGenome& g, std::vector<std::string>& warnings) {
+  FlameFrame frame;
+  frame.rotate = g.rotate;
+  if (g.frameHint) {
+    frame.centerX = (*g.frameHint)[0];
+    frame.centerY = (*g.frameHint)[1];
+    frame.scale = (*g.frameHint)[2];
+    return frame;
+  }
+  frame.centerX = g.centerX;
+  frame.centerY = g.centerY;
+  const double ppu = g.pixelsPerUnit();
+  const double viewHalf = 0.5 * double(std::max(g.width, g.height)) / ppu;
+  // The attractor's extent around the centre, in the view's (rotated) axes.
+  const auto e = attractorExtent(g);
+  double half = viewHalf;
+  frame.scale = 1.0;
+  for (double x : {e[0], e[1]})
+    for (double y : {e[2], e[3]}) {
+      const FlamePoint r = frame.toX({x, y});  // scale 1: rotated offsets from the centre
+      half = std::max({half, std::fabs(r.x), std::fabs(r.y)});
+    }
+  half *= 1.05;  // a margin: the quantiles leave the outermost points out
+  const double cap = 4.0 * viewHalf;
+  if (half > cap) {
+    warnings.push_back("the attractor reaches far beyond the view; points more than four view sizes away are clamped");
+    half = cap;
+  }
+  frame.scale = 1.0 / half;
+  return frame;
+}
+
+Function sampleXform(const FlameXform& x, const FlameFrame& frame, int resolution, const std::string& name) {
+  Function fn;
+  fn.name = name;
+  const int r = x.isAffine() ? 2 : resolution;
+  fn.resolution = {r, r, 2};
+  fn.weight = x.weight;
+  fn.palette_index = x.color;
+  fn.color_speed = x.color_speed;
+  NodesOp nodes;
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < r; ++j)
+      for (int i = 0; i < r; ++i) {
+        const Vec3 u(-1.0 + 2.0 * i / (r - 1), -1.0 + 2.0 * j / (r - 1), -1.0 + 2.0 * k);
+        const FlamePoint q = frame.toX(x.apply(frame.fromX({u.x, u.y})));
+        const Vec3 target(clampCoordinate(q.x), clampCoordinate(q.y), 0.0);
+        nodes.moves.push_back({{i, j, k}, target - u});
+      }
+  fn.ops.push_back(Operation{nodes, Center{}, Selection{}, false});
+  return fn;
+}
+
+}  // namespace
+
+FlamePoint FlameFrame::toX(FlamePoint p) const {
+  const double t = rotate * kPi / 180.0, c = std::cos(t), s = std::sin(t);
+  const double dx = p.x - centerX, dy = p.y - centerY;
+  // flam3 turns the picture by `rotate` degrees about the centre; in its plane (rows going
+  // down with y) the view axes are the plane's axes turned by +rotate (checked against flam3-render).
+  const double rx = c * dx - s * dy, ry = s * dx + c * dy;
+  return {scale * rx, -scale * ry};
+}
+
+FlamePoint FlameFrame::fromX(FlamePoint x) const {
+  const double t = rotate * kPi / 180.0, c = std::cos(t), s = std::sin(t);
+  const double rx = x.x / scale, ry = -x.y / scale;
+  return {centerX + c * rx + s * ry, centerY - s * rx + c * ry};
+}
+
+FlameFileImport importFlameFile(const std::filesystem::path& file, const std::string& genome,
+                                const std::filesystem::path& paletteFolder) {
+  namespace fs = std::filesystem;
+  const std::vector<FlameGenome> genomes = loadFlameFile(file);
+  const FlameGenome& chosen = selectGenome(genomes, genome);
+  const std::size_t index = std::size_t(&chosen - genomes.data());
+  std::string stem;
+  for (char c : chosen.name.empty() ? file.stem().string() + "-" + std::to_string(index) : chosen.name)
+    stem += std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' ? c : '_';
+  const fs::path paletteFile = fs::absolute(paletteFolder / (stem + ".palette.json"));
+  FlameImportOptions options;
+  options.inlinePaletteReference = "file:" + paletteFile.string();
+  FlameImport imported = importFlameGenome(chosen, options);
+  if (imported.palette) {
+    std::error_code ec;
+    fs::create_directories(paletteFolder, ec);
+    const fs::path temporary = fs::path(paletteFile).concat(".tmp");
+    {
+      std::ofstream out(temporary, std::ios::binary);
+      out << serializePaletteJson(*imported.palette);
+      if (!out.flush()) throw IoError("cannot write the palette " + paletteFile.string());
+    }
+    fs::rename(temporary, paletteFile, ec);
+    if (ec) throw IoError("cannot write the palette " + paletteFile.string() + ": " + ec.message());
+  }
+  FlameFileImport out{std::move(imported.project), std::move(imported.warnings), {}};
+  out.description = (chosen.name.empty() ? file.filename().string() : chosen.name) + " (genome " +
+                    std::to_string(index + 1) + " of " + std::to_string(genomes.size()) + ")";
+  return out;
+}
+
+double flameSamplingError(const Function& function, const FlameXform& map, const FlameFrame& frame) {
+  const auto grid = evaluateFunctionAt(function, "");
+  const Index3 n = function.resolution;
+  double worst = 0.0;
+  for (int j = 0; j + 1 < n[1]; ++j)
+    for (int i = 0; i + 1 < n[0]; ++i) {
+      const Vec3 u(-1.0 + (2.0 * i + 1.0) / (n[0] - 1), -1.0 + (2.0 * j + 1.0) / (n[1] - 1), 0.0);
+      const FlamePoint q = frame.toX(map.apply(frame.fromX({u.x, u.y})));
+      if (!std::isfinite(q.x) || !std::isfinite(q.y) || std::fabs(q.x) > kNodeClamp || std::fabs(q.y) > kNodeClamp)
+        continue;
+      const Vec3 g = grid->evaluate(u);
+      worst = std::max(worst, std::hypot(g.x - q.x, g.y - q.y, g.z));
+    }
+  return worst;
+}
+
+FlameImport importFlameGenome(const FlameGenome& genome, const FlameImportOptions& options) {
+  if (options.resolution < 2 || options.resolution > limits::kMaxResolution)
+    throw FlameError("the resolution must be between 2 and " + std::to_string(limits::kMaxResolution));
+  FlameImport out;
+  out.warnings = genome.warnings;
+  out.frame = chooseFrame(genome, out.warnings);
+  Project& p = out.project;
+
+  // Palette: the genome's own colors, else flam3's collection by number.
+  FlameSettings& fl = p.render.flame;
+  if (genome.palette) {
+    if (options.inlinePaletteReference.empty())
+      throw FlameError("the genome has its own palette but there is no place to save it");
+    fl.palette = options.inlinePaletteReference;
+    out.palette = genome.palette;
+  } else if (genome.paletteNumber >= 0) {
+    fl.palette = "flam3:" + std::to_string(genome.paletteNumber);
+  } else {
+    out.warnings.push_back("the genome names no palette; using the default palette");
+  }
+  std::optional<Palette> palette = genome.palette;
+  if (!palette) {
+    try {
+      palette = resolvePalette(fl.palette);
+    } catch (const PaletteError&) {
+      out.warnings.push_back("palette " + fl.palette + " is not installed here; function colors are white");
+    }
+  }
+
+  for (std::size_t i = 0; i < genome.xforms.size(); ++i) {
+    const FlameXform& x = genome.xforms[i];
+    Function fn = sampleXform(x, out.frame, options.resolution, x.name.empty() ? "x" + std::to_string(i + 1) : x.name);
+    if (palette) {
+      const Rgb c = palette->lookup(x.color);
+      fn.color = Vec3(c.r, c.g, c.b);
+    }
+    fn.sampling_error = flameSamplingError(fn, x, out.frame);
+    p.functions.push_back(std::move(fn));
+  }
+  if (genome.finalXform) {
+    Function fn = sampleXform(*genome.finalXform, out.frame, options.resolution, "final");
+    fn.weight = 1.0;
+    if (palette) {
+      const Rgb c = palette->lookup(genome.finalXform->color);
+      fn.color = Vec3(c.r, c.g, c.b);
+    }
+    fn.sampling_error = flameSamplingError(fn, *genome.finalXform, out.frame);
+    p.final_function = std::move(fn);
+  }
+  // chaos → transitions (flam3's xaos: row i weights the xform that follows xform i).
+  bool restricted = false;
+  for (const FlameXform& x : genome.xforms)
+    for (double c : x.chaos) restricted |= c != 1.0;
+  if (restricted) {
+    const std::size_t n = genome.xforms.size();
+    p.transitions.assign(n, std::vector<double>(n, 1.0));
+    for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t j = 0; j < n && j < genome.xforms[i].chaos.size(); ++j)
+        p.transitions[i][j] = genome.xforms[i].chaos[j];
+    for (std::size_t i = 0; i < n; ++i) {
+      bool any = false;
+      for (std::size_t j = 0; j < n; ++j) any |= p.transitions[i][j] > 0.0 && genome.xforms[j].weight > 0.0;
+      if (!any) throw FlameError("xform " + std::to_string(i) + "'s chaos row allows no xform with a positive weight");
+    }
+  }
+
+  // The view: an orthographic camera looking down −z (image x = X's x, image up = X's +y).
+  Camera& cam = p.camera;
+  cam.ortho = true;
+  cam.yaw = -90.0;
+  cam.pitch = 90.0;
+  cam.target = Vec3(0.0);
+  const double halfH = 0.5 * genome.height / genome.pixelsPerUnit() * out.frame.scale;
+  cam.fov = 2.0 * std::atan(0.5) * 180.0 / kPi;  // 53.13°: halfH = distance / 2
+  cam.distance = 2.0 * halfH;
+  if (cam.distance < 1e-3 || cam.distance > 1e4)
+    throw FlameError("the genome's view is too small or too large to frame");
+  cam.target = Vec3(0.0, 0.0, 0.0);
+
+  RenderSettings& r = p.render;
+  r.width = genome.width;
+  r.height = genome.height;
+  r.samples = std::int64_t(std::min(1e11, std::max(1.0, genome.quality * genome.width * genome.height)));
+  r.seed = 1;
+  r.skip = 20;
+  r.background = Vec3(genome.background[0], genome.background[1], genome.background[2]);
+  r.depth_cue = 0.0;
+  r.mode = DisplayMode::Flame;
+  auto clamped = [&](double v, double lo, double hi, const char* what) {
+    if (v < lo || v > hi) {
+      out.warnings.push_back(std::string("the genome's ") + what + " was clamped into the supported range");
+      return std::clamp(v, lo, hi);
+    }
+    return v;
+  };
+  fl.brightness = clamped(genome.brightness, 0.0, 1e4, "brightness");
+  fl.gamma = clamped(genome.gamma, 0.05, 100.0, "gamma");
+  fl.gamma_threshold = clamped(genome.gamma_threshold, 0.0, 1.0, "gamma_threshold");
+  fl.vibrancy = clamped(genome.vibrancy, 0.0, 1.0, "vibrancy");
+  fl.highlight_power = clamped(genome.highlight_power, -1.0, 100.0, "highlight_power");
+  fl.supersample = int(clamped(genome.supersample, 1, 8, "supersample"));
+  fl.estimator_radius = clamped(genome.estimator_radius, 0.0, 64.0, "estimator_radius");
+  fl.estimator_minimum = clamped(genome.estimator_minimum, 0.0, fl.estimator_radius, "estimator_minimum");
+  fl.estimator_curve = clamped(genome.estimator_curve, 0.05, 10.0, "estimator_curve");
+  fl.filter_radius = clamped(genome.filter, 0.0, 10.0, "filter");
+  fl.density_unit = out.frame.scale;  // keeps flam3's exposure (hits per pixel of its plane)
+  try {
+    validateProject(p);
+  } catch (const ModelError& e) {
+    throw FlameError(std::string("the converted project is not valid (") + e.what() + ")");
+  }
+  return out;
+}
+
+}  // namespace gridifs
