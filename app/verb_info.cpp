@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli.h"
+#include "app/render_device_option.h"
 #include "core/contractivity.h"
 
 namespace gridifs::cli {
@@ -29,8 +30,11 @@ std::vector<FunctionReport> analyse(const Document& document, const std::filesys
   return reports;
 }
 
-int runInfo(const std::string& file, bool asJson) {
+int runInfo(const std::string& file, bool asJson, const std::optional<std::string>& deviceOption) {
+  const std::string device = checkedDevice(deviceOption);
   Document document(loadForVerb(file));
+  bool gpu = false;
+  const std::string deviceLine = deviceReport(device, gpu);
   const auto reports = analyse(document, file);
   const Project& p = document.project();
   bool allContractive = true;
@@ -55,6 +59,8 @@ int runInfo(const std::string& file, bool asJson) {
     }
     out["functions"] = list;
     out["contractive"] = allContractive;
+    out["render_device"] = gpu ? "gpu" : "cpu";
+    out["render_device_detail"] = deviceLine;
     std::cout << out.dump(2) << "\n";
   } else {
     std::printf("%s: %zu function%s%s\n", file.c_str(), reports.size(), reports.size() == 1 ? "" : "s",
@@ -70,6 +76,7 @@ int runInfo(const std::string& file, bool asJson) {
                   r.function->weight, r.probability, res, r.function->ops.size(), r.contractivity.bound,
                   r.contractivity.bound < 1.0 ? "" : "  (not contractive)", r.function->muted ? "  muted" : "");
     }
+    std::printf("  render device (--device %s): %s\n", device.c_str(), deviceLine.c_str());
   }
   for (std::size_t i = 0; i < reports.size(); ++i) {
     const auto& r = reports[i];
@@ -83,13 +90,15 @@ int runInfo(const std::string& file, bool asJson) {
   return kSuccess;
 }
 
-const VerbRegistration kInfo{{"info", "FILE [--json]: functions, weights and contractivity per function",
+const VerbRegistration kInfo{{"info", "FILE [--json --device D]: functions, weights, contractivity and the render device",
                               [](CLI::App& app) {
                                 auto file = std::make_shared<std::string>();
                                 auto asJson = std::make_shared<bool>(false);
+                                auto device = std::make_shared<std::optional<std::string>>();
                                 app.add_option("FILE", *file, "project file (.gridifs)")->required();
                                 app.add_flag("--json", *asJson, "print JSON instead of a table");
-                                return [=] { return runInfo(*file, *asJson); };
+                                app.add_option("--device", *device, "which render device to report: auto (default), gpu or cpu");
+                                return [=] { return runInfo(*file, *asJson, *device); };
                               }}};
 
 }  // namespace

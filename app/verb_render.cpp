@@ -12,6 +12,7 @@
 
 #include "app/cli.h"
 #include "app/progress_bar.h"
+#include "app/render_device_option.h"
 #include "app/render_setup.h"
 #include "core/flame_render.h"
 
@@ -94,7 +95,7 @@ struct FlameOptions {
 /// palette colour sums, developed by log-density tone mapping and the filters. PNG/TIFF: RGB over
 /// the background (RGBA with --transparent), 8 or 16 bits; EXR: premultiplied RGBA, float or half.
 int runFlameRender(const std::string& file, const std::string& out, const RenderSetup& setup,
-                   const FlameOptions& options, bool quiet) {
+                   const FlameOptions& options, bool quiet, const std::string& device) {
   FlameSettings settings = setup.project.render.flame;
   if (options.palette) settings.palette = *options.palette;
   std::shared_ptr<const Palette> palette;
@@ -120,10 +121,13 @@ int runFlameRender(const std::string& file, const std::string& out, const Render
   InterruptGuard interrupt;
   RenderImage image;
   try {
-    image = renderToCompletion(setup.ifs, job, DisplaySettings::fromProject(setup.project), [&](const RenderStats& s) {
-      bar.update(s.samples, s.budget, s.pointsPerSecond, s.done);
-      return !gInterrupted.load();
-    });
+    std::string used;
+    image = renderOnDevice(device, setup.ifs, job, DisplaySettings::fromProject(setup.project),
+                           [&](const RenderStats& s) {
+                             bar.update(s.samples, s.budget, s.pointsPerSecond, s.done);
+                             return !gInterrupted.load();
+                           },
+                           used);
   } catch (const RenderCancelled&) {
     bar.finish();
     throw CliError(kFailure, "render of " + file + " interrupted; " + out + " was not written");
@@ -153,23 +157,26 @@ int runFlameRender(const std::string& file, const std::string& out, const Render
 int runRender(const std::string& file, const std::string& out, const RenderOverrides& overrides, bool quiet,
               const FlameOptions& flame = {}) {
   checkOutputPath(out, {"png", "exr", "tif", "tiff"}, "the output image");
+  const std::string device = checkedDevice(overrides.device);
   DisplayMode mode = DisplayMode::ZBuffer;
   if (flame.mode && !parseDisplayMode(*flame.mode, mode))
     throw CliError(kBadInput, "--mode must be zbuffer or flame, not \"" + *flame.mode + "\"");
   const RenderSetup setup = prepareRender(file, overrides, limits::kMaxRenderSamples);
   if (!flame.mode) mode = setup.project.render.mode;
-  if (mode == DisplayMode::Flame) return runFlameRender(file, out, setup, flame, quiet);
+  if (mode == DisplayMode::Flame) return runFlameRender(file, out, setup, flame, quiet, device);
   if (flame.bitDepth || flame.transparent || flame.palette)
     throw CliError(kBadInput, "--bit-depth, --transparent and --palette apply to --mode flame only");
   ProgressBar bar("render", !quiet && stderrIsTerminal());
   InterruptGuard interrupt;
   RenderImage image;
   try {
-    image = renderToCompletion(setup.ifs, setup.job, DisplaySettings::fromProject(setup.project),
-                               [&](const RenderStats& s) {
-                                 bar.update(s.samples, s.budget, s.pointsPerSecond, s.done);
-                                 return !gInterrupted.load();
-                               });
+    std::string used;
+    image = renderOnDevice(device, setup.ifs, setup.job, DisplaySettings::fromProject(setup.project),
+                           [&](const RenderStats& s) {
+                             bar.update(s.samples, s.budget, s.pointsPerSecond, s.done);
+                             return !gInterrupted.load();
+                           },
+                           used);
   } catch (const RenderCancelled&) {
     bar.finish();
     throw CliError(kFailure, "render of " + file + " interrupted; " + out + " was not written");
@@ -191,7 +198,8 @@ int runRender(const std::string& file, const std::string& out, const RenderOverr
 }
 
 const VerbRegistration kRender{
-    {"render", "FILE -o OUT.(png|exr|tif) [--width W --height H --samples N --seed S --threads T] "
+    {"render", "FILE -o OUT.(png|exr|tif) [--width W --height H --samples N --seed S --threads T "
+               "--device auto|gpu|cpu] "
                "[--mode zbuffer|flame --palette P --bit-depth B --transparent]: render headlessly",
      [](CLI::App& app) {
        auto file = std::make_shared<std::string>();
@@ -206,6 +214,7 @@ const VerbRegistration kRender{
        app.add_option("--samples", o->samples, "chaos-game iterations in total, e.g. 2e7 (default: the project's)");
        app.add_option("--seed", o->seed, "random seed (default: the project's)");
        app.add_option("--threads", o->threads, "render threads (default: all cores; the image depends on it)");
+       addDeviceOption(app, o->device);
        app.add_flag("-q,--quiet", *quiet, "no progress bar");
        auto flame = std::make_shared<FlameOptions>();
        app.add_option("--mode", flame->mode, "zbuffer (nearest surface) or flame (log density, palette colors); "

@@ -26,7 +26,8 @@ std::string pointCloudHeader(std::uint64_t count, const std::string& description
 
 PointCloudResult writePointCloud(const CompiledIfs& ifs, const RenderJob& job, const fs::path& out,
                                  const std::string& description,
-                                 const std::function<bool(const RenderStats&)>& progress) {
+                                 const std::function<bool(const RenderStats&)>& progress,
+                                 const PointGenerator& generator) {
   const fs::path folder = out.has_parent_path() ? out.parent_path() : fs::path(".");
   const fs::path temp = folder / ("." + out.filename().string() + ".tmp-" + std::to_string(::getpid()));
   std::FILE* f = std::fopen(temp.c_str(), "wb");
@@ -49,7 +50,8 @@ PointCloudResult writePointCloud(const CompiledIfs& ifs, const RenderJob& job, c
   write(header0.data(), header0.size());
   PointCloudResult result;
   std::vector<unsigned char> record;
-  result.stats = generatePoints(ifs, job, [&](const PointBatch& batch, const RenderStats& s) {
+  const PointGenerator walk = generator ? generator : PointGenerator(generatePoints);
+  result.stats = walk(ifs, job, [&](const PointBatch& batch, const RenderStats& s) {
     record.resize(batch.count * 15);
     unsigned char* w = record.data();
     for (std::size_t i = 0; i < batch.count; ++i, w += 15) {
