@@ -10,11 +10,10 @@
 namespace gridifs::cli {
 namespace {
 
+std::string gFallbackReason;  // the first reason auto fell back to the CPU in this process
+
 void noteFallback(const std::string& reason) {
-  static bool said = false;  // once per process
-  if (said) return;
-  said = true;
-  std::fprintf(stderr, "note: rendering on the CPU: %s.\n", reason.c_str());
+  if (gFallbackReason.empty()) gFallbackReason = reason;
 }
 
 [[noreturn]] void gpuFailed(const std::string& reason) {
@@ -22,6 +21,13 @@ void noteFallback(const std::string& reason) {
 }
 
 }  // namespace
+
+void printDeviceNote() {
+  static bool said = false;  // once per process
+  if (said || gFallbackReason.empty()) return;
+  said = true;
+  std::fprintf(stderr, "note: rendered on the CPU: %s.\n", gFallbackReason.c_str());
+}
 
 void addDeviceOption(CLI::App& app, std::optional<std::string>& device) {
   app.add_option("--device", device,

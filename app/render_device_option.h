@@ -19,7 +19,7 @@ void addDeviceOption(CLI::App& app, std::optional<std::string>& device);
 std::string checkedDevice(const std::optional<std::string>& device);
 
 /// Renders `job` to completion on `device`: gpu fails with CliError(1) and one sentence when there
-/// is no usable GPU; auto falls back to the CPU and says so once on stderr. `progress` as in
+/// is no usable GPU; auto falls back to the CPU (printDeviceNote says so). `progress` as in
 /// renderToCompletion (false cancels: RenderCancelled). `used` receives the device's name.
 RenderImage renderOnDevice(const std::string& device, std::shared_ptr<const CompiledIfs> ifs, const RenderJob& job,
                            const DisplaySettings& display, const std::function<bool(const RenderStats&)>& progress,
@@ -28,6 +28,10 @@ RenderImage renderOnDevice(const std::string& device, std::shared_ptr<const Comp
 /// The point walk for export-points on `device` (empty: the CPU's generatePoints), with the same
 /// failure and fallback rules.
 PointGenerator pointGeneratorOn(const std::string& device, std::string& used);
+
+/// Prints, once, why `auto` rendered on the CPU (after the output was written, so that a failing
+/// verb still prints one sentence only).
+void printDeviceNote();
 
 /// What `--device auto` would use here, in one line (`gridifs info`).
 std::string deviceReport(const std::string& device, bool& gpu);

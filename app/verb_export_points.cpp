@@ -38,6 +38,7 @@ int runExportPoints(const std::string& file, const std::string& out, RenderOverr
     throw CliError(kFailure, e.what());
   }
   bar.finish();
+  printDeviceNote();
   return kSuccess;
 }
 

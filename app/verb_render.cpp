@@ -146,6 +146,7 @@ int runFlameRender(const std::string& file, const std::string& out, const Render
                                                   setup.job.height, setup.project.render.background,
                                                   exr || options.transparent, job.threads);
     writeFlameImage(flame, out, bits, exr || options.transparent);
+    printDeviceNote();
   } catch (const IoError& e) {
     throw CliError(kFailure, e.what());
   } catch (const std::invalid_argument& e) {
@@ -194,6 +195,7 @@ int runRender(const std::string& file, const std::string& out, const RenderOverr
     std::fprintf(stderr, "warning: %s: no point landed in the %dx%d frame; check the camera.\n", file.c_str(),
                  image.width, image.height);
   writeImage(image, out, setup, file);
+  printDeviceNote();
   return kSuccess;
 }
 
