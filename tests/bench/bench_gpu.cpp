@@ -4,10 +4,13 @@
 // printed in the context). docs/RENDERER.md has the figures.
 #include <benchmark/benchmark.h>
 
+#include <string>
+
 #include "bench/canonical_scene.h"
 #include "core/chaos_renderer.h"
 #include "core/compiled_ifs.h"
 #include "core/gpu/gpu_chaos_renderer.h"
+#include "core/project_io.h"
 
 namespace gridifs {
 namespace {
@@ -72,4 +75,15 @@ BENCHMARK(BM_CpuOneThread)->Args({50'000'000, 0})->Args({50'000'000, 1})->Unit(b
 }  // namespace
 }  // namespace gridifs
 
-BENCHMARK_MAIN();
+// `bench_gpu --write-scene FILE.gridifs` saves the canonical scene for whole-process timings
+// (gridifs render against flam3-render, docs/RENDERER.md).
+int main(int argc, char** argv) {
+  if (argc == 3 && std::string(argv[1]) == "--write-scene") {
+    gridifs::saveProject(gridifs::canonicalScene(), argv[2]);
+    return 0;
+  }
+  benchmark::Initialize(&argc, argv);
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
