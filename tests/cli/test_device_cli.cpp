@@ -101,9 +101,9 @@ TEST(DeviceCli, NoComputeShadersFailsOnGpu) {
   EXPECT_FALSE(fs::exists(dir.path / "a.png"));
 }
 
-TEST(DeviceCli, ImageTooLargeForTheGpuFallsBackOnAuto) {
-  // 8000×8000 with flame colour sums (and the flame gutter) needs 2 GB in one storage buffer;
-  // llvmpipe allows 128 MB.
+TEST(DeviceCli, ImageTooLargeForTheGpuFailsOnGpu) {
+  // 8000×8000 with the flame gutter: 246 MB of z-buffer and 2 GB of colour sums, each in one
+  // storage buffer; llvmpipe allows 128 MB. (Auto's fallback for this case: tests/gpu.)
   ScratchDir dir("device-large");
   const std::string args = " -o " + quote((dir.path / "a.png").string()) +
                            " --width 8000 --height 8000 --samples 1000 --mode flame";
