@@ -48,10 +48,13 @@ std::uint32_t chainCount(const RenderJob& job, bool software) {
 }
 
 ChaosCompute::ChaosCompute(const GpuInfo& info, bool accumulateColor, bool emitPoints, bool allowAtomic64)
-    : info_(info), color_(accumulateColor && !emitPoints), points_(emitPoints),
+    : info_(info),
+      color_(accumulateColor && !emitPoints),
+      points_(emitPoints),
       atomic64_(allowAtomic64 && info.atomic64 && !emitPoints) {
   std::string source = "#version 430 core\n";
-  if (atomic64_) source += "#extension GL_ARB_gpu_shader_int64 : require\n#extension GL_NV_shader_atomic_int64 : require\n";
+  if (atomic64_)
+    source += "#extension GL_ARB_gpu_shader_int64 : require\n#extension GL_NV_shader_atomic_int64 : require\n";
   source += std::string("#define ATOMIC64 ") + (atomic64_ ? "1" : "0") + "\n#define ACCUMULATE_COLOR " +
             (color_ ? "1" : "0") + "\n#define EMIT_POINTS " + (points_ ? "1" : "0") + "\n#line 1\n";
   source += shaderSource("chaos_game.comp.glsl");
@@ -147,7 +150,8 @@ void ChaosCompute::setup(const CompiledIfs& ifs, const RenderJob& job, std::uint
         hi = std::max(hi, d);
       }
   };
-  if (ifs.finalFunction) range(*ifs.finalFunction);
+  if (ifs.finalFunction)
+    range(*ifs.finalFunction);
   else
     for (const CompiledFunction& f : ifs.functions) range(f);
   lo = std::max(lo, float(camera.nearPlane()));
@@ -235,9 +239,7 @@ std::int64_t ChaosCompute::samplesDone() const {
                       (chains_ - budgetExtra_) * std::min(budgetBase_, issued_));
 }
 
-bool ChaosCompute::finished() const {
-  return job_.samples > 0 && issued_ >= budgetBase_ + (budgetExtra_ ? 1 : 0);
-}
+bool ChaosCompute::finished() const { return job_.samples > 0 && issued_ >= budgetBase_ + (budgetExtra_ ? 1 : 0); }
 
 void ChaosCompute::readback(ChaosReadback& out) const {
   out.width = job_.width;

@@ -58,8 +58,9 @@ std::vector<Candidate> candidates() {
 
 std::unique_ptr<HeadlessGlContext> HeadlessGlContext::create() {
   if (!hasClientExtension("EGL_EXT_platform_base"))
-    throw GpuUnavailable("no usable EGL was found (the GPU renderer needs EGL with the device or surfaceless "
-                         "platform)");
+    throw GpuUnavailable(
+        "no usable EGL was found (the GPU renderer needs EGL with the device or surfaceless "
+        "platform)");
   const std::vector<Candidate> list = candidates();
   if (list.empty()) throw GpuUnavailable("EGL offers no GPU device and no surfaceless platform");
   std::string why = "no EGL device could be initialised";
@@ -71,8 +72,9 @@ std::unique_ptr<HeadlessGlContext> HeadlessGlContext::create() {
       why = "the EGL device offers no desktop OpenGL";
       continue;
     }
-    const EGLint attributes[] = {EGL_CONTEXT_MAJOR_VERSION, 4, EGL_CONTEXT_MINOR_VERSION, 3,
-                                 EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
+    const EGLint attributes[] = {
+        EGL_CONTEXT_MAJOR_VERSION,           4,       EGL_CONTEXT_MINOR_VERSION, 3, EGL_CONTEXT_OPENGL_PROFILE_MASK,
+        EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
     EGLContext context = eglCreateContext(c.display, EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, attributes);
     if (context == EGL_NO_CONTEXT) {
       eglTerminate(c.display);

@@ -8,10 +8,14 @@
 namespace gridifs::gpu {
 
 bool parseRenderDevice(const std::string& text, RenderDevice& device) {
-  if (text == "auto") device = RenderDevice::Auto;
-  else if (text == "gpu") device = RenderDevice::Gpu;
-  else if (text == "cpu") device = RenderDevice::Cpu;
-  else return false;
+  if (text == "auto")
+    device = RenderDevice::Auto;
+  else if (text == "gpu")
+    device = RenderDevice::Gpu;
+  else if (text == "cpu")
+    device = RenderDevice::Cpu;
+  else
+    return false;
   return true;
 }
 

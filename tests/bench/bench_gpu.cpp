@@ -68,9 +68,19 @@ void BM_CpuOneThread(benchmark::State& state) {
 
 // Sample counts: the GPU needs enough chains to fill itself (chainCount: 2^18 chains from
 // 2^18·64·21 ≈ 3.5·10^8 samples); on llvmpipe 5·10^7 is a few seconds.
-BENCHMARK(BM_GpuZBuffer)->Arg(50'000'000)->Arg(400'000'000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK(BM_GpuZBuffer)
+    ->Arg(50'000'000)
+    ->Arg(400'000'000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1);
 BENCHMARK(BM_GpuFlameColourSums)->Arg(50'000'000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
-BENCHMARK(BM_CpuOneThread)->Args({50'000'000, 0})->Args({50'000'000, 1})->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK(BM_CpuOneThread)
+    ->Args({50'000'000, 0})
+    ->Args({50'000'000, 1})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1);
 
 }  // namespace
 }  // namespace gridifs

@@ -21,7 +21,8 @@ namespace fs = std::filesystem;
 /// runGridifs with environment variables set for the child only.
 CommandResult runWithEnv(const std::string& env, const std::string& args) {
   static int counter = 0;
-  const fs::path base = fs::temp_directory_path() / ("gridifs-dev-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+  const fs::path base =
+      fs::temp_directory_path() / ("gridifs-dev-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
   const std::string cmd = "env " + env + " timeout 60 " + quote(GRIDIFS_EXE) + " " + args + " < /dev/null > " +
                           quote(base.string() + ".out") + " 2> " + quote(base.string() + ".err");
   const int status = std::system(cmd.c_str());
@@ -105,8 +106,8 @@ TEST(DeviceCli, ImageTooLargeForTheGpuFailsOnGpu) {
   // 8000×8000 with the flame gutter: 246 MB of z-buffer and 2 GB of colour sums, each in one
   // storage buffer; llvmpipe allows 128 MB. (Auto's fallback for this case: tests/gpu.)
   ScratchDir dir("device-large");
-  const std::string args = " -o " + quote((dir.path / "a.png").string()) +
-                           " --width 8000 --height 8000 --samples 1000 --mode flame";
+  const std::string args =
+      " -o " + quote((dir.path / "a.png").string()) + " --width 8000 --height 8000 --samples 1000 --mode flame";
   const CommandResult gpu = runGridifs("render " + example() + args + " --device gpu");
   if (gpu.exitCode == 0) GTEST_SKIP() << "this GPU holds a 2 GB image";
   EXPECT_EQ(gpu.exitCode, 1) << gpu.err;

@@ -59,7 +59,8 @@ std::vector<double> blockAlpha(const RenderImage& image) {
     for (int x = 0; x + 1 < image.width; x += 2) {
       double s = 0;
       for (int dy = 0; dy < 2; ++dy)
-        for (int dx = 0; dx < 2; ++dx) s += image.rgba[(std::size_t(y + dy) * image.width + std::size_t(x + dx)) * 4 + 3];
+        for (int dx = 0; dx < 2; ++dx)
+          s += image.rgba[(std::size_t(y + dy) * image.width + std::size_t(x + dx)) * 4 + 3];
       out.push_back(s);
     }
   return out;
@@ -126,13 +127,14 @@ TEST(GpuRenderer, SameSeedSameBytesOtherSeedOtherImage) {
 TEST(GpuRenderer, ZBufferKeepsTheNearestLayer) {
   const Project p = test::twoLayers();
   GpuChaosRenderer gpu;
-  const RenderImage image = renderGpu(gpu, compileIfs(p), RenderJob::fromProject(p, 1), DisplaySettings::fromProject(p));
+  const RenderImage image =
+      renderGpu(gpu, compileIfs(p), RenderJob::fromProject(p, 1), DisplaySettings::fromProject(p));
   const OrbitCamera cam(p.camera, image.width, image.height);
   int front = 0, back = 0;
   for (double y = -0.95; y <= 0.95; y += 0.05)
     for (double z = -0.95; z <= 0.95; z += 0.05) {
       const double m = std::max(std::abs(y), std::abs(z));
-      const bool isFront = m < 0.45, isBack = m > 0.55 && m < 0.95;
+      const bool isFront = m<0.45, isBack = m> 0.55 && m < 0.95;
       if (!isFront && !isBack) continue;
       const ProjectedPoint q = cam.project({isFront ? 0.5 : -0.5, y, z});
       const std::size_t i = std::size_t(q.y) * image.width + std::size_t(q.x);

@@ -12,8 +12,8 @@ TEST(PreviewDeviceGui, GpuPreviewStreamsTheAttractor) {
   TempFolder home;
   const fs::path project = exampleCopy(home, "twisted_functions.gridifs");
   const fs::path shot = home.path / "shot.png";
-  App app(home, {project.string(), "--device", "gpu", "--screenshot", shot.string(), "--frames", "10",
-                 "--wait-points", "1000000"});
+  App app(home, {project.string(), "--device", "gpu", "--screenshot", shot.string(), "--frames", "10", "--wait-points",
+                 "1000000"});
   ASSERT_EQ(app.waitExit(60s), 0);
   const nlohmann::json probe = app.probe();
   const nlohmann::json& preview = probe["preview"];
@@ -26,8 +26,8 @@ TEST(PreviewDeviceGui, CpuPreviewWhenAsked) {
   if (!haveDisplay()) GTEST_SKIP() << "no X display (run under xvfb-run)";
   TempFolder home;
   const fs::path project = exampleCopy(home, "twisted_functions.gridifs");
-  App app(home, {project.string(), "--device", "cpu", "--screenshot", (home.path / "s.png").string(), "--frames",
-                 "5", "--wait-points", "100000"});
+  App app(home, {project.string(), "--device", "cpu", "--screenshot", (home.path / "s.png").string(), "--frames", "5",
+                 "--wait-points", "100000"});
   ASSERT_EQ(app.waitExit(60s), 0);
   EXPECT_EQ(app.probe()["preview"]["device"].get<std::string>(), "cpu");
 }
