@@ -28,10 +28,13 @@ int runExportPoints(const std::string& file, const std::string& out, RenderOverr
   const PointGenerator generator = pointGeneratorOn(device, used);
   ProgressBar bar("export-points", !quiet && stderrIsTerminal());
   try {
-    writePointCloud(*setup.ifs, setup.job, out, description, [&](const RenderStats& s) {
-      bar.update(s.samples, s.budget, s.pointsPerSecond, s.done);
-      return true;
-    }, generator);
+    writePointCloud(
+        *setup.ifs, setup.job, out, description,
+        [&](const RenderStats& s) {
+          bar.update(s.samples, s.budget, s.pointsPerSecond, s.done);
+          return true;
+        },
+        generator);
   } catch (const ModelError& e) {
     throw CliError(kBadInput, file + ": " + e.message());
   } catch (const IoError& e) {
@@ -43,7 +46,8 @@ int runExportPoints(const std::string& file, const std::string& out, RenderOverr
 }
 
 const VerbRegistration kExportPoints{
-    {"export-points", "FILE -o OUT.ply [--samples N --seed S --threads T --device auto|gpu|cpu]: chaos-game points with colours",
+    {"export-points",
+     "FILE -o OUT.ply [--samples N --seed S --threads T --device auto|gpu|cpu]: chaos-game points with colours",
      [](CLI::App& app) {
        auto file = std::make_shared<std::string>();
        auto out = std::make_shared<std::string>();

@@ -90,16 +90,16 @@ int runInfo(const std::string& file, bool asJson, const std::optional<std::strin
   return kSuccess;
 }
 
-const VerbRegistration kInfo{{"info", "FILE [--json --device D]: functions, weights, contractivity and the render device",
-                              [](CLI::App& app) {
-                                auto file = std::make_shared<std::string>();
-                                auto asJson = std::make_shared<bool>(false);
-                                auto device = std::make_shared<std::optional<std::string>>();
-                                app.add_option("FILE", *file, "project file (.gridifs)")->required();
-                                app.add_flag("--json", *asJson, "print JSON instead of a table");
-                                app.add_option("--device", *device, "which render device to report: auto (default), gpu or cpu");
-                                return [=] { return runInfo(*file, *asJson, *device); };
-                              }}};
+const VerbRegistration kInfo{
+    {"info", "FILE [--json --device D]: functions, weights, contractivity and the render device", [](CLI::App& app) {
+       auto file = std::make_shared<std::string>();
+       auto asJson = std::make_shared<bool>(false);
+       auto device = std::make_shared<std::optional<std::string>>();
+       app.add_option("FILE", *file, "project file (.gridifs)")->required();
+       app.add_flag("--json", *asJson, "print JSON instead of a table");
+       app.add_option("--device", *device, "which render device to report: auto (default), gpu or cpu");
+       return [=] { return runInfo(*file, *asJson, *device); };
+     }}};
 
 }  // namespace
 }  // namespace gridifs::cli

@@ -7,8 +7,8 @@
 #include <atomic>
 #include <cmath>
 #include <csignal>
-#include <optional>
 #include <cstdio>
+#include <optional>
 
 #include "app/cli.h"
 #include "app/progress_bar.h"
@@ -122,12 +122,13 @@ int runFlameRender(const std::string& file, const std::string& out, const Render
   RenderImage image;
   try {
     std::string used;
-    image = renderOnDevice(device, setup.ifs, job, DisplaySettings::fromProject(setup.project),
-                           [&](const RenderStats& s) {
-                             bar.update(s.samples, s.budget, s.pointsPerSecond, s.done);
-                             return !gInterrupted.load();
-                           },
-                           used);
+    image = renderOnDevice(
+        device, setup.ifs, job, DisplaySettings::fromProject(setup.project),
+        [&](const RenderStats& s) {
+          bar.update(s.samples, s.budget, s.pointsPerSecond, s.done);
+          return !gInterrupted.load();
+        },
+        used);
   } catch (const RenderCancelled&) {
     bar.finish();
     throw CliError(kFailure, "render of " + file + " interrupted; " + out + " was not written");
@@ -172,12 +173,13 @@ int runRender(const std::string& file, const std::string& out, const RenderOverr
   RenderImage image;
   try {
     std::string used;
-    image = renderOnDevice(device, setup.ifs, setup.job, DisplaySettings::fromProject(setup.project),
-                           [&](const RenderStats& s) {
-                             bar.update(s.samples, s.budget, s.pointsPerSecond, s.done);
-                             return !gInterrupted.load();
-                           },
-                           used);
+    image = renderOnDevice(
+        device, setup.ifs, setup.job, DisplaySettings::fromProject(setup.project),
+        [&](const RenderStats& s) {
+          bar.update(s.samples, s.budget, s.pointsPerSecond, s.done);
+          return !gInterrupted.load();
+        },
+        used);
   } catch (const RenderCancelled&) {
     bar.finish();
     throw CliError(kFailure, "render of " + file + " interrupted; " + out + " was not written");
@@ -200,9 +202,10 @@ int runRender(const std::string& file, const std::string& out, const RenderOverr
 }
 
 const VerbRegistration kRender{
-    {"render", "FILE -o OUT.(png|exr|tif) [--width W --height H --samples N --seed S --threads T "
-               "--device auto|gpu|cpu] "
-               "[--mode zbuffer|flame --palette P --bit-depth B --transparent]: render headlessly",
+    {"render",
+     "FILE -o OUT.(png|exr|tif) [--width W --height H --samples N --seed S --threads T "
+     "--device auto|gpu|cpu] "
+     "[--mode zbuffer|flame --palette P --bit-depth B --transparent]: render headlessly",
      [](CLI::App& app) {
        auto file = std::make_shared<std::string>();
        auto out = std::make_shared<std::string>();

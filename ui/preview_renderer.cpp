@@ -107,8 +107,10 @@ void PreviewRenderer::setPaused(bool paused) {
   if (paused == paused_) return;
   paused_ = paused;
   if (!running_) return;
-  if (paused) renderer_->pause();
-  else renderer_->resume();
+  if (paused)
+    renderer_->pause();
+  else
+    renderer_->resume();
 }
 
 bool PreviewRenderer::busy() const {

@@ -6,14 +6,14 @@
 #include <benchmark/benchmark.h>
 
 #include <chrono>
-#include <optional>
 #include <ctime>
+#include <optional>
 #include <thread>
 
+#include "bench/canonical_scene.h"
 #include "core/chaos_kernel.h"
 #include "core/chaos_renderer.h"
 #include "core/compiled_ifs.h"
-#include "bench/canonical_scene.h"
 
 namespace gridifs {
 namespace {

@@ -94,8 +94,13 @@ TEST(GpuRenderer, EveryExampleMatchesTheCpuImage) {
     EXPECT_EQ(g.stats.samples, job.samples);
     EXPECT_TRUE(g.stats.done);
     EXPECT_NEAR(double(g.stats.plotted) / double(job.samples), double(cpu.stats.plotted) / double(job.samples), 0.02);
-    EXPECT_GE(correlation(blockDensity(cpu), blockDensity(g)), 0.99);
-    EXPECT_GE(correlation(blockAlpha(cpu), blockAlpha(g)), 0.99);
+    const double density = correlation(blockDensity(cpu), blockDensity(g));
+    const double alpha = correlation(blockAlpha(cpu), blockAlpha(g));
+    EXPECT_GE(density, 0.99);
+    EXPECT_GE(alpha, 0.99);
+    // In the XML report (--gtest_output=xml): the figures behind docs/RENDERER.md.
+    RecordProperty(file.stem().string() + ".density_correlation", std::to_string(density));
+    RecordProperty(file.stem().string() + ".alpha_correlation", std::to_string(alpha));
     EXPECT_NEAR(double(g.hitPixels), double(cpu.hitPixels), 0.03 * double(cpu.hitPixels) + 8);
   }
 }
