@@ -17,6 +17,7 @@ struct RenderOverrides {
   std::optional<int> width, height, threads;
   std::optional<std::string> samples;  // parsed by parseSamples (accepts 2e7)
   std::optional<std::uint64_t> seed;
+  std::optional<std::string> device;  // --device auto|gpu|cpu (app/render_device_option.h)
 };
 
 struct RenderSetup {

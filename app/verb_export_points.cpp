@@ -3,6 +3,7 @@
 // little-endian PLY with x y z float and red green blue uchar.
 #include "app/cli.h"
 #include "app/progress_bar.h"
+#include "app/render_device_option.h"
 #include "app/render_setup.h"
 #include "io/point_cloud_export.h"
 #include "io/project_io.h"
@@ -16,29 +17,37 @@ constexpr std::int64_t kDefaultExportSamples = 1'000'000;
 
 int runExportPoints(const std::string& file, const std::string& out, RenderOverrides overrides, bool quiet) {
   checkOutputPath(out, {"ply"}, "the point file");
+  const std::string device = checkedDevice(overrides.device);
   if (!overrides.samples) overrides.samples = std::to_string(kDefaultExportSamples);
   const RenderSetup setup = prepareRender(file, overrides, kMaxExportSamples);
   const std::string description = "GridIFS export-points of " + std::filesystem::path(file).filename().string() +
                                   ": " + std::to_string(setup.job.samples) + " samples, seed " +
                                   std::to_string(setup.job.seed) + ", " + std::to_string(setup.job.threads) +
                                   " streams";
+  std::string used;
+  const PointGenerator generator = pointGeneratorOn(device, used);
   ProgressBar bar("export-points", !quiet && stderrIsTerminal());
   try {
-    writePointCloud(*setup.ifs, setup.job, out, description, [&](const RenderStats& s) {
-      bar.update(s.samples, s.budget, s.pointsPerSecond, s.done);
-      return true;
-    });
+    writePointCloud(
+        *setup.ifs, setup.job, out, description,
+        [&](const RenderStats& s) {
+          bar.update(s.samples, s.budget, s.pointsPerSecond, s.done);
+          return true;
+        },
+        generator);
   } catch (const ModelError& e) {
     throw CliError(kBadInput, file + ": " + e.message());
   } catch (const IoError& e) {
     throw CliError(kFailure, e.what());
   }
   bar.finish();
+  printDeviceNote();
   return kSuccess;
 }
 
 const VerbRegistration kExportPoints{
-    {"export-points", "FILE -o OUT.ply [--samples N --seed S --threads T]: chaos-game points with colours",
+    {"export-points",
+     "FILE -o OUT.ply [--samples N --seed S --threads T --device auto|gpu|cpu]: chaos-game points with colours",
      [](CLI::App& app) {
        auto file = std::make_shared<std::string>();
        auto out = std::make_shared<std::string>();
@@ -50,6 +59,7 @@ const VerbRegistration kExportPoints{
        app.add_option("--seed", o->seed, "random seed (default: the project's)");
        app.add_option("--threads", o->threads,
                       "number of worker streams to reproduce (default: all cores, like render)");
+       addDeviceOption(app, o->device);
        app.add_flag("-q,--quiet", *quiet, "no progress bar");
        return [=] { return runExportPoints(*file, *out, *o, *quiet); };
      }}};

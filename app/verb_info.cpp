@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli.h"
+#include "app/render_device_option.h"
 #include "model/contractivity.h"
 #include "model/transition_matrix.h"
 
@@ -30,8 +31,11 @@ std::vector<FunctionReport> analyse(const Document& document, const std::filesys
   return reports;
 }
 
-int runInfo(const std::string& file, bool asJson) {
+int runInfo(const std::string& file, bool asJson, const std::optional<std::string>& deviceOption) {
+  const std::string device = checkedDevice(deviceOption);
   Document document(loadForVerb(file));
+  bool gpu = false;
+  const std::string deviceLine = deviceReport(device, gpu);
   const auto reports = analyse(document, file);
   const Project& p = document.project();
   bool allContractive = true;
@@ -60,6 +64,8 @@ int runInfo(const std::string& file, bool asJson) {
     out["transitions"] = !p.transitions.empty();
     out["strongly_connected"] = components.size() <= 1;
     out["contractive"] = allContractive;
+    out["render_device"] = gpu ? "gpu" : "cpu";
+    out["render_device_detail"] = deviceLine;
     std::cout << out.dump(2) << "\n";
   } else {
     std::printf("%s: %zu function%s%s\n", file.c_str(), reports.size(), reports.size() == 1 ? "" : "s",
@@ -77,6 +83,7 @@ int runInfo(const std::string& file, bool asJson) {
       if (r.function->sampling_error)
         std::printf("      sampled from a closed-form map: largest grid error %.3g\n", *r.function->sampling_error);
     }
+    std::printf("  render device (--device %s): %s\n", device.c_str(), deviceLine.c_str());
     if (!p.transitions.empty()) std::printf("  transition matrix: %zu x %zu\n", p.transitions.size(), p.transitions.size());
   }
   if (components.size() > 1) {
@@ -103,14 +110,16 @@ int runInfo(const std::string& file, bool asJson) {
   return kSuccess;
 }
 
-const VerbRegistration kInfo{{"info", "FILE [--json]: functions, weights and contractivity per function",
-                              [](CLI::App& app) {
-                                auto file = std::make_shared<std::string>();
-                                auto asJson = std::make_shared<bool>(false);
-                                app.add_option("FILE", *file, "project file (.gridifs)")->required();
-                                app.add_flag("--json", *asJson, "print JSON instead of a table");
-                                return [=] { return runInfo(*file, *asJson); };
-                              }}};
+const VerbRegistration kInfo{
+    {"info", "FILE [--json --device D]: functions, weights, contractivity and the render device", [](CLI::App& app) {
+       auto file = std::make_shared<std::string>();
+       auto asJson = std::make_shared<bool>(false);
+       auto device = std::make_shared<std::optional<std::string>>();
+       app.add_option("FILE", *file, "project file (.gridifs)")->required();
+       app.add_flag("--json", *asJson, "print JSON instead of a table");
+       app.add_option("--device", *device, "which render device to report: auto (default), gpu or cpu");
+       return [=] { return runInfo(*file, *asJson, *device); };
+     }}};
 
 }  // namespace
 }  // namespace gridifs::cli

@@ -7,11 +7,12 @@
 #include <atomic>
 #include <cmath>
 #include <csignal>
-#include <optional>
 #include <cstdio>
+#include <optional>
 
 #include "app/cli.h"
 #include "app/progress_bar.h"
+#include "app/render_device_option.h"
 #include "app/render_setup.h"
 #include "base/atomic_file.h"
 #include "base/color_space.h"
@@ -87,18 +88,22 @@ void writeImage(const RenderImage& image, const std::filesystem::path& out, cons
   }
 }
 
-/// Runs `job` to completion with a progress bar (interruptible with Ctrl-C). Throws CliError when
-/// interrupted or when at least half of the points were unusable (nothing is written then).
+/// Runs `job` to completion on `device` (app/render_device_option.h) with a progress bar (interruptible with Ctrl-C).
+/// Throws CliError when interrupted or when at least half of the points were unusable (nothing is written then).
 RenderImage renderWithProgress(const RenderSetup& setup, const RenderJob& job, const std::string& file,
-                               const std::string& out, bool quiet) {
+                               const std::string& out, bool quiet, const std::string& device) {
   ProgressBar bar("render", !quiet && stderrIsTerminal());
   InterruptGuard interrupt;
   RenderImage image;
   try {
-    image = renderToCompletion(setup.ifs, job, DisplaySettings::fromProject(setup.project), [&](const RenderStats& s) {
-      bar.update(s.samples, s.budget, s.pointsPerSecond, s.done);
-      return !gInterrupted.load();
-    });
+    std::string used;
+    image = renderOnDevice(
+        device, setup.ifs, job, DisplaySettings::fromProject(setup.project),
+        [&](const RenderStats& s) {
+          bar.update(s.samples, s.budget, s.pointsPerSecond, s.done);
+          return !gInterrupted.load();
+        },
+        used);
   } catch (const RenderCancelled&) {
     bar.finish();
     throw CliError(kFailure, "render of " + file + " interrupted; " + out + " was not written");
@@ -108,7 +113,8 @@ RenderImage renderWithProgress(const RenderSetup& setup, const RenderJob& job, c
   if (s.badFraction() >= 0.5)
     throw CliError(kBadInput, file + ": " + std::to_string(int(std::lround(100 * s.badFraction()))) +
                                   "% of the chaos-game points were non-finite or escaped, so the IFS has no usable "
-                                  "attractor; " + out + " was not written");
+                                  "attractor; " +
+                                  out + " was not written");
   return image;
 }
 
@@ -123,20 +129,21 @@ struct FlameOptions {
 /// palette colour sums, developed by log-density tone mapping and the filters. PNG/TIFF: RGB over
 /// the background (RGBA with --transparent), 8 or 16 bits; EXR: premultiplied RGBA, float or half.
 int runFlameRender(const std::string& file, const std::string& out, const RenderSetup& setup,
-                   const FlameOptions& options, bool quiet) {
+                   const FlameOptions& options, bool quiet, const std::string& device) {
   FlameSettings settings = setup.project.render.flame;
   if (options.palette) settings.palette = *options.palette;
   std::shared_ptr<const Palette> palette;
   try {
-    palette = std::make_shared<const Palette>(
-        resolvePalette(settings.palette, std::filesystem::path(file).parent_path()));
+    palette =
+        std::make_shared<const Palette>(resolvePalette(settings.palette, std::filesystem::path(file).parent_path()));
   } catch (const PaletteError& e) {
     throw CliError(kBadInput, file + ": " + e.what());
   }
   const bool exr = lowerExtension(out) == "exr";
   const int bits = options.bitDepth.value_or(exr ? 32 : 8);
   if (exr ? (bits != 16 && bits != 32) : (bits != 8 && bits != 16))
-    throw CliError(kBadInput, std::string("--bit-depth must be ") + (exr ? "16 (half) or 32 (float) for EXR" : "8 or 16 for PNG and TIFF"));
+    throw CliError(kBadInput, std::string("--bit-depth must be ") +
+                                  (exr ? "16 (half) or 32 (float) for EXR" : "8 or 16 for PNG and TIFF"));
   // Supersampled, with a gutter around the frame, palette colors per sample (core/flame_render.h).
   const RenderJob job = flameRenderJob(setup.job, settings, palette);
   const int ss = std::max(1, settings.supersample);
@@ -145,15 +152,16 @@ int runFlameRender(const std::string& file, const std::string& out, const Render
   } catch (const ModelError& e) {
     throw CliError(kBadInput, file + ": with supersample " + std::to_string(ss) + ", " + e.message());
   }
-  const RenderImage image = renderWithProgress(setup, job, file, out, quiet);
+  const RenderImage image = renderWithProgress(setup, job, file, out, quiet, device);
   if (image.hitPixels == 0)
     std::fprintf(stderr, "warning: %s: no point landed in the %dx%d frame; check the camera.\n", file.c_str(),
                  setup.job.width, setup.job.height);
   try {
-    const FlameImage flame = developFlameSnapshot(image, settings, setup.project.camera, setup.job.width,
-                                                  setup.job.height, setup.project.render.background,
-                                                  exr || options.transparent, job.threads);
+    const FlameImage flame =
+        developFlameSnapshot(image, settings, setup.project.camera, setup.job.width, setup.job.height,
+                             setup.project.render.background, exr || options.transparent, job.threads);
     writeFlameImage(flame, out, bits, exr || options.transparent);
+    printDeviceNote();
   } catch (const IoError& e) {
     throw CliError(kFailure, e.what());
   } catch (const std::invalid_argument& e) {
@@ -165,15 +173,16 @@ int runFlameRender(const std::string& file, const std::string& out, const Render
 int runRender(const std::string& file, const std::string& out, const RenderOverrides& overrides, bool quiet,
               const FlameOptions& flame = {}) {
   checkOutputPath(out, {"png", "exr", "tif", "tiff"}, "the output image");
+  const std::string device = checkedDevice(overrides.device);
   DisplayMode mode = DisplayMode::ZBuffer;
   if (flame.mode && !parseDisplayMode(*flame.mode, mode))
     throw CliError(kBadInput, "--mode must be zbuffer or flame, not \"" + *flame.mode + "\"");
   const RenderSetup setup = prepareRender(file, overrides, limits::kMaxRenderSamples);
   if (!flame.mode) mode = setup.project.render.mode;
-  if (mode == DisplayMode::Flame) return runFlameRender(file, out, setup, flame, quiet);
+  if (mode == DisplayMode::Flame) return runFlameRender(file, out, setup, flame, quiet, device);
   if (flame.bitDepth || flame.transparent || flame.palette)
     throw CliError(kBadInput, "--bit-depth, --transparent and --palette apply to --mode flame only");
-  const RenderImage image = renderWithProgress(setup, setup.job, file, out, quiet);
+  const RenderImage image = renderWithProgress(setup, setup.job, file, out, quiet, device);
   const RenderStats& s = image.stats;
   if (s.badSamples > 0)
     std::fprintf(stderr, "warning: %s: %.3g%% of the samples were non-finite or escaped (chains restarted).\n",
@@ -182,12 +191,15 @@ int runRender(const std::string& file, const std::string& out, const RenderOverr
     std::fprintf(stderr, "warning: %s: no point landed in the %dx%d frame; check the camera.\n", file.c_str(),
                  image.width, image.height);
   writeImage(image, out, setup, file);
+  printDeviceNote();
   return kSuccess;
 }
 
 const VerbRegistration kRender{
-    {"render", "FILE -o OUT.(png|exr|tif) [--width W --height H --samples N --seed S --threads T] "
-               "[--mode zbuffer|flame --palette P --bit-depth B --transparent]: render headlessly",
+    {"render",
+     "FILE -o OUT.(png|exr|tif) [--width W --height H --samples N --seed S --threads T "
+     "--device auto|gpu|cpu] "
+     "[--mode zbuffer|flame --palette P --bit-depth B --transparent]: render headlessly",
      [](CLI::App& app) {
        auto file = std::make_shared<std::string>();
        auto out = std::make_shared<std::string>();
@@ -201,14 +213,18 @@ const VerbRegistration kRender{
        app.add_option("--samples", o->samples, "chaos-game iterations in total, e.g. 2e7 (default: the project's)");
        app.add_option("--seed", o->seed, "random seed (default: the project's)");
        app.add_option("--threads", o->threads, "render threads (default: all cores; the image depends on it)");
+       addDeviceOption(app, o->device);
        app.add_flag("-q,--quiet", *quiet, "no progress bar");
        auto flame = std::make_shared<FlameOptions>();
-       app.add_option("--mode", flame->mode, "zbuffer (nearest surface) or flame (log density, palette colors); "
-                                             "default: the project's render.mode");
-       app.add_option("--palette", flame->palette, "flame palette: a built-in name (ember, ice, ...), flam3:N, "
-                                                   "flam3:NAME or file:PATH.json (default: the project's)");
-       app.add_option("--bit-depth", flame->bitDepth, "flame mode: 8 or 16 bits for PNG/TIFF, 16 (half) or 32 "
-                                                      "(float) for EXR");
+       app.add_option("--mode", flame->mode,
+                      "zbuffer (nearest surface) or flame (log density, palette colors); "
+                      "default: the project's render.mode");
+       app.add_option("--palette", flame->palette,
+                      "flame palette: a built-in name (ember, ice, ...), flam3:N, "
+                      "flam3:NAME or file:PATH.json (default: the project's)");
+       app.add_option("--bit-depth", flame->bitDepth,
+                      "flame mode: 8 or 16 bits for PNG/TIFF, 16 (half) or 32 "
+                      "(float) for EXR");
        app.add_flag("--transparent", flame->transparent, "flame mode: PNG/TIFF with alpha instead of the background");
        return [=] { return runRender(*file, *out, *o, *quiet, *flame); };
      }}};

@@ -286,7 +286,7 @@ void ModellerApp::writeProbe(double frameMs) {
   const RenderStats& s = state_.previewStats;
   j["preview"] = {{"samples", s.samples}, {"generation", s.generation}, {"done", s.done}, {"paused", s.paused},
                   {"restarts", preview_.restarts()}, {"hit_pixels", preview_.image().hitPixels},
-                  {"image_generation", preview_.image().generation}};
+                  {"image_generation", preview_.image().generation}, {"device", state_.previewDevice}};
   nlohmann::json rects = nlohmann::json::object();
   for (const auto& [name, r] : state_.probe.rects) rects[name] = {r.x, r.y, r.z, r.w};
   j["rects"] = rects;
@@ -307,6 +307,10 @@ void ModellerApp::writeProbe(double frameMs) {
 }
 
 int ModellerApp::run() {
+  if (const std::string error = preview_.useDevice(options_.device); !error.empty()) {
+    std::fprintf(stderr, "gridifs: %s\n", error.c_str());
+    return 1;
+  }
   renderer_ = std::make_unique<ViewRenderer>();
   // Installed before ImGui's callbacks are chained to it (see runModeller): record presses.
   glfwSetWindowUserPointer(window_, &state_);

@@ -45,6 +45,9 @@ std::optional<std::string> parseModellerOptions(int argc, char** argv, ModellerO
     } else if (arg == "--ui-scale") {
       if (!next(value) || !number(value, n) || n < 0.5 || n > 4) return "--ui-scale needs a scale between 0.5 and 4";
       out.uiScale = float(n);
+    } else if (arg == "--device") {
+      if (!next(out.device) || (out.device != "auto" && out.device != "gpu" && out.device != "cpu"))
+        return "--device needs auto, gpu or cpu";
     } else if (arg == "--stats") {
       out.stats = true;
     } else if (!arg.empty() && arg[0] == '-') {

@@ -9,6 +9,7 @@
 //   --autosave-seconds S   autosave interval (default 60)
 //   --stats                print frame-time statistics on exit
 //   --ui-scale S           override the monitor content scale (HiDPI checks on any display)
+//   --device D             preview renderer: auto (a hardware GPU when there is one), gpu or cpu
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -26,6 +27,7 @@ struct ModellerOptions {
   bool stats = false;
   int renderThreads = 0;  // 0: hardware threads minus one (the UI keeps a core)
   float uiScale = 0.0f;   // 0: the monitor's content scale
+  std::string device = "auto";  // auto | gpu | cpu
 };
 
 /// Parses argv (argv[0] is the program; a leading FILE argument is skipped when it equals

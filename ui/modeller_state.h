@@ -66,6 +66,7 @@ class ModellerState {
   bool previewPaused = false;
   int renderThreads = 1;
   RenderStats previewStats;
+  std::string previewDevice = "cpu";  // which renderer fills the preview ("cpu", "gpu (...)")
   std::string previewError;
   /// Key presses since the last frame, recorded by a GLFW callback: ImGui 1.86 has no input
   /// queue, so a press and release within one frame would otherwise be lost.

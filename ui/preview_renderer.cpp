@@ -1,9 +1,34 @@
 #include "ui/preview_renderer.h"
 
 #include "render/compiled_ifs.h"
+#if GRIDIFS_HAVE_GPU
+#include "gpu/render_device.h"
+#endif
 #include "ui/flame_display.h"
 
 namespace gridifs::ui {
+
+PreviewRenderer::PreviewRenderer() : renderer_(std::make_unique<ChaosRenderer>()) {}
+
+std::string PreviewRenderer::useDevice(const std::string& device) {
+#if !GRIDIFS_HAVE_GPU
+  if (device == "gpu") return "cannot render on the GPU: this build of gridifs has no GPU renderer";
+  return "";
+#else
+  gpu::RenderDevice d = gpu::RenderDevice::Auto;
+  if (!gpu::parseRenderDevice(device, d)) return "unknown render device " + device;
+  try {
+    gpu::RendererChoice choice = gpu::openRenderer(d);
+    renderer_ = std::move(choice.renderer);
+  } catch (const gpu::GpuUnavailable& e) {
+    return std::string("cannot render on the GPU: ") + e.what();
+  }
+  device_ = device;
+  forceRestart();
+  running_ = false;
+  return "";
+#endif
+}
 
 void PreviewRenderer::publish(const Document& document, int width, int height, int threads) {
   width = std::max(width, 16);
@@ -33,8 +58,19 @@ void PreviewRenderer::publish(const Document& document, int width, int height, i
     job.height = height;
     job.lowPriority = true;  // the UI thread gets a core first (the modeller stays at ≥ 30 fps while rendering)
     job = previewFlameJob(job, document);  // color sums always on: the mode switch is instant
-    renderer_.restart(std::move(ifs), job);
-    if (paused_) renderer_.pause();
+#if GRIDIFS_HAVE_GPU
+    try {
+      renderer_->restart(ifs, job);
+    } catch (const gpu::GpuUnavailable& e) {
+      // The GPU cannot hold this preview (e.g. its memory): auto goes on on the CPU.
+      if (device_ != "auto") throw ModelError("", std::string("the GPU cannot render the preview: ") + e.what());
+      renderer_ = std::make_unique<ChaosRenderer>();
+      renderer_->restart(ifs, job);
+    }
+#else
+    renderer_->restart(ifs, job);
+#endif
+    if (paused_) renderer_->pause();
     ++restarts_;
     running_ = true;
     error_.clear();
@@ -55,9 +91,9 @@ void PreviewRenderer::publish(const Document& document, int width, int height, i
 
 bool PreviewRenderer::fetch(RenderImage& image) {
   if (!running_) return false;
-  const RenderStats s = renderer_.stats();
+  const RenderStats s = renderer_->stats();
   if (!displayChanged_ && s.generation == lastGeneration_ && s.samples == lastSamples_) return false;
-  renderer_.snapshot(image, display_);
+  renderer_->snapshot(image, display_);
   displayChanged_ = false;
   lastGeneration_ = s.generation;
   lastSamples_ = s.samples;
@@ -68,13 +104,15 @@ void PreviewRenderer::setPaused(bool paused) {
   if (paused == paused_) return;
   paused_ = paused;
   if (!running_) return;
-  if (paused) renderer_.pause();
-  else renderer_.resume();
+  if (paused)
+    renderer_->pause();
+  else
+    renderer_->resume();
 }
 
 bool PreviewRenderer::busy() const {
   if (!running_ || paused_) return false;
-  const RenderStats s = renderer_.stats();
+  const RenderStats s = renderer_->stats();
   return !s.done || s.generation != lastGeneration_ || s.samples != lastSamples_;
 }
 

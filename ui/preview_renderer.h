@@ -4,6 +4,7 @@
 // restart the workers (a new generation); each frame, merge what the workers have so far.
 // Never waits on workers: restart() only publishes, snapshot() reads while they run.
 #include <cstdint>
+#include <memory>
 #include <string>
 
 #include "render/chaos_renderer.h"
@@ -13,6 +14,14 @@ namespace gridifs::ui {
 
 class PreviewRenderer {
  public:
+  /// Renders on the CPU worker pool until useDevice() picks another renderer.
+  PreviewRenderer();
+  /// Picks the preview's renderer (auto | gpu | cpu): the GPU compute renderer on its own headless
+  /// context when asked for or, for auto, when a hardware GPU offers OpenGL 4.3 compute; else the
+  /// CPU. Returns an error sentence when `gpu` was asked for and cannot be had ("" otherwise).
+  std::string useDevice(const std::string& device);
+  /// "cpu" or "gpu (renderer name)".
+  const char* deviceName() const { return renderer_->deviceName(); }
   /// Publishes a new snapshot when the project (or size, or thread count) changed since the
   /// last call. When the project cannot be compiled the previous image stays and error() says why.
   void publish(const Document& document, int width, int height, int threads);
@@ -22,7 +31,7 @@ class PreviewRenderer {
   void setPaused(bool paused);
   /// The next publish() restarts even when nothing changed.
   void forceRestart() { havePublished_ = false; revision_ = 0; }
-  RenderStats stats() const { return renderer_.stats(); }
+  RenderStats stats() const { return renderer_->stats(); }
   std::uint64_t restarts() const { return restarts_; }
   /// Why the current project cannot be rendered (empty when it can).
   const std::string& error() const { return error_; }
@@ -30,7 +39,8 @@ class PreviewRenderer {
   bool busy() const;
 
  private:
-  ChaosRenderer renderer_;
+  std::unique_ptr<Renderer> renderer_;
+  std::string device_ = "cpu";
   std::uint64_t revision_ = 0;
   Revisions published_{0, 0, 0, 0};  // the document's revisions at the last publish
   bool havePublished_ = false;

@@ -139,6 +139,7 @@ void PreviewView::publish(ModellerState& state) {
   renderer_.publish(state.document, w, h, state.renderThreads);
   state.previewError = renderer_.error().empty() ? std::string() : "Preview stopped: " + renderer_.error();
   state.previewStats = renderer_.stats();
+  state.previewDevice = renderer_.deviceName();
 }
 
 void PreviewView::render(ModellerState& state, ViewRenderer& renderer) {

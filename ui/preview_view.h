@@ -28,6 +28,8 @@ class PreviewView {
   bool dragging() const { return drag_ != 0; }
   const RenderImage& image() const { return image_; }
   std::uint64_t restarts() const { return renderer_.restarts(); }
+  /// Picks the preview's renderer (auto | gpu | cpu); an error sentence when gpu cannot be had.
+  std::string useDevice(const std::string& device) { return renderer_.useDevice(device); }
   /// The display modes (z-buffer, flame, mesh: ui/preview_modes.h).
   const PreviewModes& modes() const { return modes_; }
 

@@ -56,8 +56,10 @@ void drawStatusBar(ModellerState& state, float height) {
   const char* phase = s.paused ? "paused" : s.done ? "done" : "rendering";
   ImGui::TextColored(s.done ? ImVec4(0.55f, 0.8f, 0.55f, 1.0f) : ImVec4(0.95f, 0.75f, 0.35f, 1.0f), "%s", phase);
   ImGui::SameLine();
-  ImGui::Text("%s points  ·  %s pts/s  ·  %d function%s", humanCount(double(s.samples)).c_str(),
-              humanCount(s.pointsPerSecond).c_str(), active, active == 1 ? "" : "s");
+  ImGui::Text("%s points  ·  %s pts/s  ·  %s  ·  %d function%s", humanCount(double(s.samples)).c_str(),
+              humanCount(s.pointsPerSecond).c_str(), state.previewDevice.compare(0, 3, "gpu") == 0 ? "GPU" : "CPU",
+              active, active == 1 ? "" : "s");
+  if (ImGui::IsItemHovered()) state.contextHelp = "Preview renderer: " + state.previewDevice;
   ImGui::SameLine();
   ImGui::TextDisabled("  |  ");
   ImGui::SameLine();

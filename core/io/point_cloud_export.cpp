@@ -25,7 +25,8 @@ std::string pointCloudHeader(std::uint64_t count, const std::string& description
 
 PointCloudResult writePointCloud(const CompiledIfs& ifs, const RenderJob& job, const fs::path& out,
                                  const std::string& description,
-                                 const std::function<bool(const RenderStats&)>& progress) {
+                                 const std::function<bool(const RenderStats&)>& progress,
+                                 const PointGenerator& generator) {
   AtomicFile atomic(out);
   std::FILE* f = std::fopen(atomic.temporaryPath().c_str(), "wb");
   if (!f) throw IoError("cannot write " + out.string() + ": " + std::strerror(errno));
@@ -43,7 +44,8 @@ PointCloudResult writePointCloud(const CompiledIfs& ifs, const RenderJob& job, c
   write(header0.data(), header0.size());
   PointCloudResult result;
   std::vector<unsigned char> record;
-  result.stats = generatePoints(ifs, job, [&](const PointBatch& batch, const RenderStats& s) {
+  const PointGenerator walk = generator ? generator : PointGenerator(generatePoints);
+  result.stats = walk(ifs, job, [&](const PointBatch& batch, const RenderStats& s) {
     record.resize(batch.count * 15);
     unsigned char* w = record.data();
     for (std::size_t i = 0; i < batch.count; ++i, w += 15) {

@@ -20,9 +20,14 @@ struct PointCloudResult {
 /// `progress` is called after every batch on the calling thread; returning false cancels.
 /// Throws IoError naming `out` when writing fails, and ModelError (no path) when at least half
 /// of the samples were non-finite or escaped (the IFS has no usable attractor; nothing written).
+/// `generator` walks the chaos game (default: generatePoints on the CPU; the GPU's
+/// generatePointsGpu has the same signature).
+using PointGenerator = std::function<RenderStats(const CompiledIfs&, const RenderJob&,
+                                                 const std::function<bool(const PointBatch&, const RenderStats&)>&)>;
 PointCloudResult writePointCloud(const CompiledIfs& ifs, const RenderJob& job, const std::filesystem::path& out,
                                  const std::string& description,
-                                 const std::function<bool(const RenderStats&)>& progress = {});
+                                 const std::function<bool(const RenderStats&)>& progress = {},
+                                 const PointGenerator& generator = {});
 
 /// The PLY header; `count` is rewritten in place at the end, so the header's length does not
 /// depend on it (a comment line absorbs the digits). Exposed for tests.

@@ -426,6 +426,14 @@ void ChaosRenderer::snapshot(RenderImage& out, const DisplaySettings& display) c
   out.minDepth = hits ? minDepth : 0.0f;
   out.maxDepth = hits ? maxDepth : 0.0f;
 
+  shadeRenderImage(out, display);
+}
+
+void shadeRenderImage(RenderImage& out, const DisplaySettings& display) {
+  const std::size_t n = std::size_t(out.width) * std::size_t(out.height);
+  std::uint32_t* packed = reinterpret_cast<std::uint32_t*>(out.rgba.data());
+  const std::int64_t hits = out.hitPixels;
+  const float minDepth = out.minDepth, maxDepth = out.maxDepth;
   // Pass 2: depth cueing (Gröller & Wegenkittl 1994, §3.1: colours attenuated with distance) over the depth range
   // of this image, and the background where nothing was plotted.
   const float cue = float(std::clamp(display.depthCue, 0.0, 1.0));

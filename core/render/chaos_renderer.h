@@ -21,6 +21,7 @@
 #include "render/camera.h"
 #include "render/compiled_ifs.h"
 #include "flame/palette.h"
+#include "render/renderer.h"
 
 namespace gridifs {
 
@@ -106,39 +107,41 @@ struct RenderImage {
 };
 
 /// The progressive renderer. See the threading model at the top of this file.
-class ChaosRenderer {
+class ChaosRenderer : public Renderer {
  public:
   ChaosRenderer();
-  ~ChaosRenderer();  // stops and joins the workers
+  ~ChaosRenderer() override;  // stops and joins the workers
   ChaosRenderer(const ChaosRenderer&) = delete;
   ChaosRenderer& operator=(const ChaosRenderer&) = delete;
 
   /// Starts rendering `ifs` with `job` as a new generation and returns its number. Points of older
   /// generations never reach an image of this one. Throws ModelError when the job is invalid
   /// (validateRenderJob) or `ifs` is null; the previous generation keeps running in that case.
-  std::uint64_t restart(std::shared_ptr<const CompiledIfs> ifs, const RenderJob& job);
+  std::uint64_t restart(std::shared_ptr<const CompiledIfs> ifs, const RenderJob& job) override;
   /// Stops the workers (joins them) and forgets the current generation's buffers' validity.
-  void stop();
+  void stop() override;
   /// Workers idle after their current batch; resume() continues the same generation.
-  void pause();
-  void resume();
-  bool paused() const;
+  void pause() override;
+  void resume() override;
+  bool paused() const override;
 
-  std::uint64_t generation() const;
-  RenderStats stats() const;
+  std::uint64_t generation() const override;
+  RenderStats stats() const override;
   bool done() const { return stats().done; }
 
   /// Merges the buffers of all workers that are already on the current generation into `out`
   /// (deterministic merge: the nearest depth wins, equal depths by the smaller packed colour, so the
   /// result does not depend on worker order). Does not stop or wait for workers. Cost: one pass
   /// over every worker's buffers (a few ms at 1024² with two workers).
-  void snapshot(RenderImage& out, const DisplaySettings& display) const;
+  void snapshot(RenderImage& out, const DisplaySettings& display) const override;
   RenderImage snapshot(const DisplaySettings& display) const;
 
   /// Blocks until the current generation's budget is done (returns at once for unlimited jobs).
   /// `progress` is called about every `intervalSeconds` on this thread; returning false stops the
   /// render early (the result then holds what was done). Returns false when stopped early.
-  bool waitUntilDone(const std::function<bool(const RenderStats&)>& progress = {}, double intervalSeconds = 0.1);
+  bool waitUntilDone(const std::function<bool(const RenderStats&)>& progress = {},
+                     double intervalSeconds = 0.1) override;
+  const char* deviceName() const override { return "cpu"; }
 
   struct Worker;  // internal
   struct Shared;  // internal
@@ -151,6 +154,11 @@ class ChaosRenderer {
   std::vector<std::unique_ptr<Worker>> workers_;
   std::vector<std::thread> threads_;
 };
+
+/// Pass 2 of snapshot(), shared with the GPU renderer: `image` holds depth (+inf where empty),
+/// hitPixels, the depth range and, in the 4 bytes of each rgba pixel, the nearest point's packed
+/// colour (r in the low byte); this turns rgba into depth-cued colour over the background.
+void shadeRenderImage(RenderImage& image, const DisplaySettings& display);
 
 /// Thrown by renderToCompletion when its progress callback asks to stop.
 struct RenderCancelled : std::runtime_error {

@@ -80,7 +80,7 @@ TEST(RenderCli, WritesPngTiffAndExrWithDepth) {
     SCOPED_TRACE(ext);
     const fs::path out = dir.path / (std::string("out.") + ext);
     const auto r = runGridifs("render " + quote(project.string()) + " -o " + quote(out.string()) +
-                              " --width 96 --height 72 --samples 100000 --threads 2");
+                              " --width 96 --height 72 --samples 100000 --threads 2 --device cpu");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(r.err, "") << "no progress bar when stderr is not a terminal";
     const Image image = readImage(out);

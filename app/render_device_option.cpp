@@ -1,0 +1,135 @@
+#include "app/render_device_option.h"
+
+#include <cstdio>
+
+#include "app/cli.h"
+#if GRIDIFS_HAVE_GPU
+#include "gpu/render_device.h"
+#endif
+
+namespace gridifs::cli {
+namespace {
+
+std::string gFallbackReason;  // the first reason auto fell back to the CPU in this process
+
+void noteFallback(const std::string& reason) {
+  if (gFallbackReason.empty()) gFallbackReason = reason;
+}
+
+[[noreturn]] void gpuFailed(const std::string& reason) {
+  throw CliError(kFailure, "cannot render on the GPU: " + reason);
+}
+
+}  // namespace
+
+void printDeviceNote() {
+  static bool said = false;  // once per process
+  if (said || gFallbackReason.empty()) return;
+  said = true;
+  std::fprintf(stderr, "note: rendered on the CPU: %s.\n", gFallbackReason.c_str());
+}
+
+void addDeviceOption(CLI::App& app, std::optional<std::string>& device) {
+  app.add_option("--device", device,
+                 "auto (default: a GPU with OpenGL 4.3 compute when there is one, else the CPU), gpu or cpu");
+}
+
+std::string checkedDevice(const std::optional<std::string>& device) {
+  const std::string d = device.value_or("auto");
+  if (d != "auto" && d != "gpu" && d != "cpu")
+    throw CliError(kBadInput, "--device must be auto, gpu or cpu, not \"" + d + "\"");
+  return d;
+}
+
+#if GRIDIFS_HAVE_GPU
+
+RenderImage renderOnDevice(const std::string& device, std::shared_ptr<const CompiledIfs> ifs, const RenderJob& job,
+                           const DisplaySettings& display, const std::function<bool(const RenderStats&)>& progress,
+                           std::string& used) {
+  gpu::RenderDevice d = gpu::RenderDevice::Auto;
+  gpu::parseRenderDevice(device, d);
+  if (d == gpu::RenderDevice::Cpu) {
+    used = "cpu";
+    return renderToCompletion(std::move(ifs), job, display, progress);
+  }
+  gpu::RendererChoice choice;
+  try {
+    choice = gpu::openRenderer(d);
+    gpu::restartOrFallBack(choice, d, ifs, job);
+  } catch (const gpu::GpuUnavailable& e) {
+    gpuFailed(e.what());
+  }
+  if (!choice.fallbackReason.empty()) noteFallback(choice.fallbackReason);
+  used = choice.renderer->deviceName();
+  if (!choice.renderer->waitUntilDone(progress)) throw RenderCancelled();
+  RenderImage image;
+  choice.renderer->snapshot(image, display);
+  return image;
+}
+
+PointGenerator pointGeneratorOn(const std::string& device, std::string& used) {
+  gpu::RenderDevice d = gpu::RenderDevice::Auto;
+  gpu::parseRenderDevice(device, d);
+  used = "cpu";
+  if (d == gpu::RenderDevice::Cpu) return {};
+  try {
+    const gpu::DeviceReport report = gpu::reportDevice(d);
+    if (!report.gpu) {
+      noteFallback(report.description.substr(report.description.find(": ") + 2));
+      return {};
+    }
+    used = "gpu (" + report.info.renderer + ")";
+  } catch (const gpu::GpuUnavailable& e) {
+    gpuFailed(e.what());
+  }
+  return [d](const CompiledIfs& ifs, const RenderJob& job,
+             const std::function<bool(const PointBatch&, const RenderStats&)>& sink) {
+    try {
+      return gpu::generatePointsGpu(ifs, job, sink);
+    } catch (const gpu::GpuUnavailable& e) {
+      if (d == gpu::RenderDevice::Gpu) gpuFailed(e.what());
+      noteFallback(e.what());
+      return generatePoints(ifs, job, sink);
+    }
+  };
+}
+
+std::string deviceReport(const std::string& device, bool& gpuUsed) {
+  gpu::RenderDevice d = gpu::RenderDevice::Auto;
+  gpu::parseRenderDevice(device, d);
+  try {
+    const gpu::DeviceReport report = gpu::reportDevice(d);
+    gpuUsed = report.gpu;
+    return report.description;
+  } catch (const gpu::GpuUnavailable& e) {
+    gpuUsed = false;
+    return std::string("none: ") + e.what();
+  }
+}
+
+#else  // a build without the GPU renderer
+
+RenderImage renderOnDevice(const std::string& device, std::shared_ptr<const CompiledIfs> ifs, const RenderJob& job,
+                           const DisplaySettings& display, const std::function<bool(const RenderStats&)>& progress,
+                           std::string& used) {
+  if (device == "gpu") gpuFailed("this build of gridifs has no GPU renderer");
+  if (device == "auto") noteFallback("this build of gridifs has no GPU renderer");
+  used = "cpu";
+  return renderToCompletion(std::move(ifs), job, display, progress);
+}
+
+PointGenerator pointGeneratorOn(const std::string& device, std::string& used) {
+  if (device == "gpu") gpuFailed("this build of gridifs has no GPU renderer");
+  if (device == "auto") noteFallback("this build of gridifs has no GPU renderer");
+  used = "cpu";
+  return {};
+}
+
+std::string deviceReport(const std::string& device, bool& gpuUsed) {
+  gpuUsed = false;
+  return device == "cpu" ? "cpu (as asked)" : "cpu: this build of gridifs has no GPU renderer";
+}
+
+#endif
+
+}  // namespace gridifs::cli

@@ -1,0 +1,289 @@
+#include "gpu/chaos_compute.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <string>
+
+#include "core/gpu/embedded_compute_shaders.h"
+
+namespace gridifs::gpu {
+namespace {
+
+enum Binding { kFunctions, kNodes, kAlias, kChains, kTallies, kKeys, kDensity, kColorSums, kPalette };
+
+constexpr std::uint32_t kGroupSize = 64;  // local_size_x in the shader
+constexpr std::uint32_t kMaxChains = 1u << 18;
+
+/// One function as the shader's `Fn` (std430: 64 bytes).
+struct GpuFunction {
+  float toLattice[4];
+  float maxCell[4];
+  float color[4];
+  float speed;
+  std::uint32_t strideJ, strideK, pairOffset;
+};
+static_assert(sizeof(GpuFunction) == 64);
+
+const char* shaderSource(const char* name) {
+  for (const EmbeddedShader& s : kEmbeddedShaders)
+    if (std::strcmp(s.name, name) == 0) return s.source;
+  throw GpuUnavailable(std::string("the GPU renderer's shader ") + name + " is missing from this build");
+}
+
+std::string megabytes(std::size_t bytes) { return std::to_string((bytes + (1u << 20) - 1) >> 20) + " MB"; }
+
+}  // namespace
+
+std::uint32_t chainCount(const RenderJob& job, bool software) {
+  // A preview runs until stopped: fewer chains on a software rasterizer, so the first points
+  // (after every chain's skip) show within a frame.
+  if (job.samples <= 0) return software ? (1u << 14) : kMaxChains;
+  const std::int64_t perChain = 64 * std::int64_t(job.skip + 1);
+  const std::int64_t n = job.samples / perChain / kGroupSize * kGroupSize;
+  return std::uint32_t(std::clamp<std::int64_t>(n, kGroupSize, kMaxChains));
+}
+
+ChaosCompute::ChaosCompute(const GpuInfo& info, bool accumulateColor, bool emitPoints, bool allowAtomic64)
+    : info_(info),
+      color_(accumulateColor && !emitPoints),
+      points_(emitPoints),
+      atomic64_(allowAtomic64 && info.atomic64 && !emitPoints) {
+  std::string source = "#version 430 core\n";
+  if (atomic64_)
+    source += "#extension GL_ARB_gpu_shader_int64 : require\n#extension GL_NV_shader_atomic_int64 : require\n";
+  source += std::string("#define ATOMIC64 ") + (atomic64_ ? "1" : "0") + "\n#define ACCUMULATE_COLOR " +
+            (color_ ? "1" : "0") + "\n#define EMIT_POINTS " + (points_ ? "1" : "0") + "\n#line 1\n";
+  source += shaderSource("chaos_game.comp.glsl");
+  const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
+  const char* text = source.c_str();
+  glShaderSource(shader, 1, &text, nullptr);
+  glCompileShader(shader);
+  GLint ok = 0;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    char log[2048] = {};
+    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
+    glDeleteShader(shader);
+    throw GpuUnavailable(std::string("the GPU driver rejected the chaos-game shader: ") + log);
+  }
+  program_ = glCreateProgram();
+  glAttachShader(program_, shader);
+  glLinkProgram(program_);
+  glDeleteShader(shader);
+  glGetProgramiv(program_, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    char log[2048] = {};
+    glGetProgramInfoLog(program_, sizeof log, nullptr, log);
+    throw GpuUnavailable(std::string("the GPU driver could not link the chaos-game shader: ") + log);
+  }
+  glGenBuffers(9, buffers_);
+}
+
+ChaosCompute::~ChaosCompute() {
+  glDeleteBuffers(9, buffers_);
+  glDeleteProgram(program_);
+}
+
+void ChaosCompute::allocate(unsigned buffer, std::size_t bytes, const std::string& what) {
+  bytes = std::max<std::size_t>(bytes, 16);
+  if (std::int64_t(bytes) > info_.maxStorageBlockBytes)
+    throw GpuUnavailable("the GPU cannot hold " + what + ": it needs " + megabytes(bytes) +
+                         " and the GPU's storage buffers hold at most " +
+                         megabytes(std::size_t(info_.maxStorageBlockBytes)));
+  while (glGetError() != GL_NO_ERROR) {
+  }
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
+  glBufferData(GL_SHADER_STORAGE_BUFFER, GLsizeiptr(bytes), nullptr, GL_DYNAMIC_COPY);
+  if (glGetError() == GL_OUT_OF_MEMORY)
+    throw GpuUnavailable("the GPU is out of memory for " + what + " (" + megabytes(bytes) + ")");
+}
+
+void ChaosCompute::setup(const CompiledIfs& ifs, const RenderJob& job, std::uint32_t chains) {
+  job_ = job;
+  chains_ = chains;
+  count_ = std::uint32_t(ifs.functions.size());
+  issued_ = 0;
+  if (job.samples > 0) {
+    budgetBase_ = std::uint64_t(job.samples) / chains;
+    budgetExtra_ = std::uint64_t(job.samples) % chains;
+  }
+  // The compiled IFS: functions (then the final function) and their node pairs.
+  std::vector<GpuFunction> functions;
+  std::vector<float> nodes;
+  auto add = [&](const CompiledFunction& f) {
+    GpuFunction g{};
+    for (int d = 0; d < 4; ++d) {
+      g.toLattice[d] = f.toLattice[d];
+      g.maxCell[d] = f.maxCell[d];
+      g.color[d] = f.color[d];
+    }
+    g.speed = f.colorSpeed;
+    g.strideJ = f.pairStrideJ;
+    g.strideK = f.pairStrideK;
+    g.pairOffset = std::uint32_t(nodes.size() / 8);
+    for (const NodePair& p : f.pairs) {
+      nodes.insert(nodes.end(), p.a, p.a + 4);
+      nodes.insert(nodes.end(), p.b, p.b + 4);
+    }
+    functions.push_back(g);
+  };
+  for (const CompiledFunction& f : ifs.functions) add(f);
+  if (ifs.finalFunction) add(*ifs.finalFunction);
+  std::vector<std::uint32_t> alias;
+  for (const AliasEntry& e : ifs.alias) alias.insert(alias.end(), {e.threshold, e.alias});
+
+  const OrbitCamera camera(job.camera, job.width, job.height);
+  const OrbitCamera::PixelRows rows = camera.pixelRows();
+  // 32-bit keys quantise depth linearly over the depth range the plotted points can have: a
+  // trilinear lookup is a convex combination of a cell's nodes, so every plotted point lies within
+  // the depth range of the nodes of the functions that produce it (the final function's, if any).
+  float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+  auto range = [&](const CompiledFunction& f) {
+    for (const NodePair& p : f.pairs)
+      for (const float* q : {p.a, p.b}) {
+        const float d = rows.rowD[0] * q[0] + rows.rowD[1] * q[1] + rows.rowD[2] * q[2] + rows.rowD[3];
+        lo = std::min(lo, d);
+        hi = std::max(hi, d);
+      }
+  };
+  if (ifs.finalFunction)
+    range(*ifs.finalFunction);
+  else
+    for (const CompiledFunction& f : ifs.functions) range(f);
+  lo = std::max(lo, float(camera.nearPlane()));
+  depthMin_ = lo;
+  depthScale_ = hi > lo ? 65534.0f / (hi - lo) : 0.0f;  // 0xFFFF.... stays the empty key
+
+  pixels_ = points_ ? 0 : std::size_t(job.width) * std::size_t(job.height);
+  const std::string image = std::to_string(job.width) + "×" + std::to_string(job.height) + " image";
+  allocate(buffers_[kFunctions], functions.size() * sizeof(GpuFunction), "the IFS");
+  glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(functions.size() * sizeof(GpuFunction)), functions.data());
+  allocate(buffers_[kNodes], nodes.size() * sizeof(float), "the IFS's grids");
+  glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(nodes.size() * sizeof(float)), nodes.data());
+  allocate(buffers_[kAlias], alias.size() * 4, "the IFS");
+  glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(alias.size() * 4), alias.data());
+  allocate(buffers_[kChains], std::size_t(chains) * 64, "the chains");
+  allocate(buffers_[kTallies], std::size_t(chains) * 8, "the chains");
+  const std::uint32_t ones = 0xFFFFFFFFu, zero = 0;
+  if (points_) {
+    // 32 bytes a slot; as many iterations per dispatch as 64 MB of slots hold.
+    pointSlots_ = std::size_t(chains) * std::max<std::size_t>(1, (std::size_t(64) << 20) / 32 / chains);
+    allocate(buffers_[kKeys], pointSlots_ * 32, "the points");
+  } else {
+    allocate(buffers_[kKeys], pixels_ * (atomic64_ ? 8 : 4), "the z-buffer of a " + image);
+    glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &ones);
+    allocate(buffers_[kDensity], pixels_ * 4, "the density of a " + image);
+    glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    if (color_) {
+      allocate(buffers_[kColorSums], pixels_ * 32, "the colour sums of a " + image);
+      glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+      std::vector<float> palette(257 * 4, 0.0f);
+      if (job.palette) {
+        for (std::size_t i = 0; i < 256 && i < job.palette->colors.size(); ++i) {
+          palette[i * 4 + 0] = job.palette->colors[i].r;
+          palette[i * 4 + 1] = job.palette->colors[i].g;
+          palette[i * 4 + 2] = job.palette->colors[i].b;
+        }
+        std::copy_n(&palette[255 * 4], 4, &palette[256 * 4]);
+      }
+      allocate(buffers_[kPalette], palette.size() * sizeof(float), "the palette");
+      glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(palette.size() * sizeof(float)), palette.data());
+    }
+  }
+  for (int b = 0; b < 9; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(b), buffers_[b]);
+
+  glUseProgram(program_);
+  auto loc = [&](const char* name) { return glGetUniformLocation(program_, name); };
+  glUniform1ui(loc("uChains"), chains);
+  glUniform1ui(loc("uCount"), count_);
+  glUniform1i(loc("uHasFinal"), ifs.finalFunction ? 1 : 0);
+  glUniform1ui(loc("uSkip"), std::uint32_t(job.skip));
+  glUniform1f(loc("uEscape"), limits::kEscapeBound);
+  glUniform2ui(loc("uSeed"), std::uint32_t(job.seed), std::uint32_t(job.seed >> 32));
+  glUniform2ui(loc("uBudget"), std::uint32_t(budgetBase_), std::uint32_t(budgetExtra_));
+  glUniform1i(loc("uUnlimited"), job.samples <= 0 ? 1 : 0);
+  glUniform4f(loc("uCamX"), rows.rowX[0], rows.rowY[0], rows.rowW[0], rows.rowD[0]);
+  glUniform4f(loc("uCamY"), rows.rowX[1], rows.rowY[1], rows.rowW[1], rows.rowD[1]);
+  glUniform4f(loc("uCamZ"), rows.rowX[2], rows.rowY[2], rows.rowW[2], rows.rowD[2]);
+  glUniform4f(loc("uCam1"), rows.rowX[3], rows.rowY[3], rows.rowW[3], rows.rowD[3]);
+  glUniform2f(loc("uSize"), float(job.width), float(job.height));
+  glUniform1f(loc("uNear"), float(camera.nearPlane()));
+  glUniform1ui(loc("uStride"), std::uint32_t(job.width));
+  glUniform2f(loc("uDepthQuant"), depthMin_, depthScale_);
+  glUniform1i(loc("uPalette"), job.palette ? 1 : 0);
+  glUniform1ui(loc("uMode"), 0);
+  glDispatchCompute((chains + kGroupSize - 1) / kGroupSize, 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  glUniform1ui(loc("uMode"), 1);
+  if (glGetError() == GL_OUT_OF_MEMORY) throw GpuUnavailable("the GPU ran out of memory for the " + image);
+}
+
+void ChaosCompute::dispatch(std::uint32_t iterations) {
+  if (points_) iterations = std::min<std::uint32_t>(iterations, std::uint32_t(pointSlots_ / chains_));
+  glUseProgram(program_);
+  glUniform1ui(glGetUniformLocation(program_, "uIterations"), iterations);
+  glDispatchCompute((chains_ + kGroupSize - 1) / kGroupSize, 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  issued_ += iterations;
+}
+
+void ChaosCompute::finish() { glFinish(); }
+
+std::int64_t ChaosCompute::samplesDone() const {
+  if (job_.samples <= 0) return std::int64_t(issued_ * chains_);
+  return std::int64_t(budgetExtra_ * std::min(budgetBase_ + 1, issued_) +
+                      (chains_ - budgetExtra_) * std::min(budgetBase_, issued_));
+}
+
+bool ChaosCompute::finished() const { return job_.samples > 0 && issued_ >= budgetBase_ + (budgetExtra_ ? 1 : 0); }
+
+void ChaosCompute::readback(ChaosReadback& out) const {
+  out.width = job_.width;
+  out.height = job_.height;
+  out.atomic64 = atomic64_;
+  out.depthMin = depthMin_;
+  out.depthScale = depthScale_;
+  auto read = [](unsigned buffer, void* data, std::size_t bytes) {
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
+    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(bytes), data);
+  };
+  std::vector<std::uint32_t> tallies(std::size_t(chains_) * 2);
+  read(buffers_[kTallies], tallies.data(), tallies.size() * 4);
+  out.bad = out.plotted = 0;
+  for (std::size_t i = 0; i < chains_; ++i) {
+    out.bad += tallies[2 * i];
+    out.plotted += tallies[2 * i + 1];
+  }
+  out.samples = samplesDone();
+  if (points_) return;
+  if (atomic64_) {
+    out.keys64.resize(pixels_);
+    out.keys32.clear();
+    read(buffers_[kKeys], out.keys64.data(), pixels_ * 8);
+  } else {
+    out.keys32.resize(pixels_);
+    out.keys64.clear();
+    read(buffers_[kKeys], out.keys32.data(), pixels_ * 4);
+  }
+  out.density.resize(pixels_);
+  read(buffers_[kDensity], out.density.data(), pixels_ * 4);
+  if (color_) {
+    out.colorSums.resize(pixels_ * 8);
+    read(buffers_[kColorSums], out.colorSums.data(), pixels_ * 32);
+  } else {
+    out.colorSums.clear();
+  }
+}
+
+void ChaosCompute::readPoints(std::vector<float>& slots, std::uint32_t iterations) const {
+  iterations = std::min<std::uint32_t>(iterations, std::uint32_t(pointSlots_ / chains_));
+  slots.resize(std::size_t(iterations) * chains_ * 8);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffers_[kKeys]);
+  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(slots.size() * 4), slots.data());
+}
+
+}  // namespace gridifs::gpu

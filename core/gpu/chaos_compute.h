@@ -1,0 +1,72 @@
+#pragma once
+// The GL side of the GPU chaos game (shaders/chaos_game.comp.glsl): the compiled IFS, the chains
+// and the image buffers in shader storage buffers, one dispatch per slice of iterations, and the
+// read-back of the buffers. Internal to GpuChaosRenderer and generatePointsGpu; every call must
+// run on the thread whose context is current.
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "render/chaos_renderer.h"
+#include "gpu/headless_gl_context.h"
+
+namespace gridifs::gpu {
+
+/// The buffers as read back: the raw keys, densities and fixed-point colour sums.
+struct ChaosReadback {
+  std::uint64_t generation = 0;
+  int width = 0, height = 0;
+  bool atomic64 = false;
+  float depthMin = 0.0f, depthScale = 0.0f;  // 32-bit keys: depth = depthMin + q / depthScale
+  std::vector<std::uint64_t> keys64;
+  std::vector<std::uint32_t> keys32;
+  std::vector<std::uint32_t> density;
+  std::vector<std::uint32_t> colorSums;  // 8 words per pixel (lo, hi per channel)
+  std::int64_t samples = 0, bad = 0, plotted = 0;
+};
+
+/// How many chains a job runs (a function of the job only, so the image does not depend on the
+/// GPU): enough that every chain iterates at least 64·(skip + 1) times, at most 2^18.
+std::uint32_t chainCount(const RenderJob& job, bool software);
+
+class ChaosCompute {
+ public:
+  /// Compiles the program variant. Throws GpuUnavailable when the driver rejects it.
+  ChaosCompute(const GpuInfo& info, bool accumulateColor, bool emitPoints, bool allowAtomic64);
+  ~ChaosCompute();
+  ChaosCompute(const ChaosCompute&) = delete;
+  ChaosCompute& operator=(const ChaosCompute&) = delete;
+
+  /// Uploads the IFS, allocates and clears the buffers and seeds the chains. Throws GpuUnavailable
+  /// when the image or the chains do not fit the device's memory.
+  void setup(const CompiledIfs& ifs, const RenderJob& job, std::uint32_t chains);
+  /// Iterates every chain `iterations` more times (fewer where its budget ends). Does not wait.
+  void dispatch(std::uint32_t iterations);
+  /// Waits for the dispatched work.
+  void finish();
+  /// Reads the image buffers and tallies (after finish()).
+  void readback(ChaosReadback& out) const;
+  /// EMIT_POINTS only: the slots of the last dispatch, xyz valid | rgb 0 for each, iteration-major.
+  void readPoints(std::vector<float>& slots, std::uint32_t iterations) const;
+  /// Samples done so far (all chains), from the dispatched iteration counts.
+  std::int64_t samplesDone() const;
+  bool finished() const;
+  std::uint32_t chains() const { return chains_; }
+  bool atomic64() const { return atomic64_; }
+
+ private:
+  void allocate(unsigned buffer, std::size_t bytes, const std::string& what);
+
+  GpuInfo info_;
+  bool color_ = false, points_ = false, atomic64_ = false;
+  unsigned program_ = 0;
+  unsigned buffers_[9] = {};
+  RenderJob job_;
+  std::uint32_t chains_ = 0, count_ = 0;
+  std::uint64_t budgetBase_ = 0, budgetExtra_ = 0, issued_ = 0;
+  std::size_t pixels_ = 0, pointSlots_ = 0;
+  float depthMin_ = 0.0f, depthScale_ = 0.0f;
+};
+
+}  // namespace gridifs::gpu

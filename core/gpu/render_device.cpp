@@ -1,0 +1,125 @@
+#include "gpu/render_device.h"
+
+#include <chrono>
+
+#include "gpu/chaos_compute.h"
+#include "gpu/gpu_chaos_renderer.h"
+
+namespace gridifs::gpu {
+
+bool parseRenderDevice(const std::string& text, RenderDevice& device) {
+  if (text == "auto")
+    device = RenderDevice::Auto;
+  else if (text == "gpu")
+    device = RenderDevice::Gpu;
+  else if (text == "cpu")
+    device = RenderDevice::Cpu;
+  else
+    return false;
+  return true;
+}
+
+namespace {
+
+std::string softwareReason(const GpuInfo& info) {
+  return "the only OpenGL here is " + info.renderer + ", a software rasterizer slower than the CPU renderer";
+}
+
+}  // namespace
+
+RendererChoice openRenderer(RenderDevice device) {
+  RendererChoice choice;
+  if (device != RenderDevice::Cpu) {
+    try {
+      auto gpu = std::make_unique<GpuChaosRenderer>();
+      if (device == RenderDevice::Gpu || !gpu->info().software) {
+        choice.renderer = std::move(gpu);
+        choice.gpu = true;
+        return choice;
+      }
+      choice.fallbackReason = softwareReason(gpu->info());
+    } catch (const GpuUnavailable& e) {
+      if (device == RenderDevice::Gpu) throw;
+      choice.fallbackReason = e.what();
+    }
+  }
+  choice.renderer = std::make_unique<ChaosRenderer>();
+  return choice;
+}
+
+std::uint64_t restartOrFallBack(RendererChoice& choice, RenderDevice device, std::shared_ptr<const CompiledIfs> ifs,
+                                const RenderJob& job) {
+  try {
+    return choice.renderer->restart(ifs, job);
+  } catch (const GpuUnavailable& e) {
+    if (device != RenderDevice::Auto) throw;
+    choice.fallbackReason = e.what();
+    choice.gpu = false;
+    choice.renderer = std::make_unique<ChaosRenderer>();
+    return choice.renderer->restart(std::move(ifs), job);
+  }
+}
+
+DeviceReport reportDevice(RenderDevice device) {
+  DeviceReport report;
+  if (device == RenderDevice::Cpu) {
+    report.description = "cpu (as asked)";
+    return report;
+  }
+  try {
+    report.info = probeGpu();
+    report.haveContext = true;
+    if (device == RenderDevice::Gpu || !report.info.software) {
+      report.gpu = true;
+      report.description = "gpu: " + report.info.renderer + ", OpenGL " + report.info.version +
+                           (report.info.atomic64 ? ", exact 64-bit depth keys" : ", 32-bit depth keys");
+    } else {
+      report.description = "cpu: " + softwareReason(report.info);
+    }
+  } catch (const GpuUnavailable& e) {
+    if (device == RenderDevice::Gpu) throw;
+    report.description = std::string("cpu: ") + e.what();
+  }
+  return report;
+}
+
+RenderStats generatePointsGpu(const CompiledIfs& ifs, const RenderJob& job,
+                              const std::function<bool(const PointBatch&, const RenderStats&)>& sink) {
+  if (job.samples <= 0) throw ModelError("render.samples", "must be at least 1");
+  if (ifs.functions.empty() || ifs.alias.size() != ifs.functions.size())
+    throw ModelError("functions", "no unmuted function has a positive weight");
+  const auto context = HeadlessGlContext::create();
+  ChaosCompute compute(context->info(), false, true, false);
+  RenderJob pointJob = job;
+  pointJob.width = pointJob.height = 1;  // no image; the camera is not used
+  compute.setup(ifs, pointJob, chainCount(job, context->info().software));
+  RenderStats stats;
+  stats.budget = job.samples;
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<float> slots, xyz, rgb;
+  const std::uint32_t perDispatch = 256;
+  ChaosReadback tallies;
+  while (!compute.finished()) {
+    compute.dispatch(perDispatch);
+    compute.finish();
+    compute.readPoints(slots, perDispatch);
+    xyz.clear();
+    rgb.clear();
+    for (std::size_t s = 0; s + 8 <= slots.size(); s += 8)
+      if (slots[s + 3] == 1.0f) {
+        xyz.insert(xyz.end(), {slots[s], slots[s + 1], slots[s + 2]});
+        rgb.insert(rgb.end(), {slots[s + 4], slots[s + 5], slots[s + 6]});
+      }
+    compute.readback(tallies);
+    stats.samples = tallies.samples;
+    stats.badSamples = tallies.bad;
+    stats.plotted = tallies.plotted;
+    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    stats.pointsPerSecond = stats.seconds > 0 ? double(stats.samples) / stats.seconds : 0.0;
+    stats.done = compute.finished();
+    if (!sink(PointBatch{xyz.data(), rgb.data(), xyz.size() / 3}, stats)) return stats;
+  }
+  return stats;
+}
+
+}  // namespace gridifs::gpu

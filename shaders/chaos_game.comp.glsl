@@ -1,0 +1,229 @@
+// The chaos game on the GPU (Gröller & Wegenkittl's stochastic algorithm, as in the CPU renderer;
+// structural colour after Draves & Reckase, §5): one independent chain per invocation.
+// The host prepends "#version 430", the extensions and these defines:
+//   ATOMIC64          1: z-buffer keys are (depth bits << 32 | rgba8) under 64-bit atomicMin (exact,
+//                     as on the CPU); 0: a 32-bit key (16-bit depth over the scene's depth range,
+//                     RGB565 colour) under 32-bit atomicMin.
+//   ACCUMULATE_COLOR  1: per-pixel colour sums for the flame display (fixed point, 16 fraction
+//                     bits, 64 bits per channel as two 32-bit words with carry, so sums are exact
+//                     and independent of the order of the atomics).
+//   EMIT_POINTS       1: write every plotted point (world xyz, rgb) instead of projecting it.
+layout(local_size_x = 64) in;
+
+struct Fn {
+  vec4 toLattice;
+  vec4 maxCell;
+  vec4 color;  // r g b c
+  float speed;
+  uint strideJ, strideK, pairOffset;
+};
+struct Chain {
+  vec4 p;      // xyz
+  vec4 color;  // r g b c
+  uvec4 rng;   // xoshiro128** state
+  uvec4 misc;  // iterations left, skip left
+};
+
+layout(std430, binding = 0) readonly buffer Functions { Fn fns[]; };
+layout(std430, binding = 1) readonly buffer Nodes { vec4 nodes[]; };  // node pairs: a, b, a, b, ...
+layout(std430, binding = 2) readonly buffer Alias { uvec2 aliasTable[]; };
+layout(std430, binding = 3) buffer Chains { Chain chains[]; };
+layout(std430, binding = 4) buffer Tallies { uvec2 tallies[]; };  // per chain: bad, plotted
+#if EMIT_POINTS
+layout(std430, binding = 5) writeonly buffer Points { vec4 points[]; };  // xyz valid, rgb 0 per slot
+#else
+#if ATOMIC64
+layout(std430, binding = 5) buffer ZBuffer { uint64_t keys[]; };
+#else
+layout(std430, binding = 5) buffer ZBuffer { uint keys[]; };
+#endif
+layout(std430, binding = 6) buffer Density { uint density[]; };
+#if ACCUMULATE_COLOR
+layout(std430, binding = 7) buffer ColorSums { uint sums[]; };  // 8 words per pixel: lo, hi per channel
+layout(std430, binding = 8) readonly buffer Palette { vec4 palette[]; };  // 257 entries when used
+#endif
+#endif
+
+uniform uint uMode;        // 0: seed the chains, 1: iterate
+uniform uint uChains;
+uniform uint uCount;       // functions (the final function, if any, is fns[uCount])
+uniform bool uHasFinal;
+uniform uint uSkip;
+uniform float uEscape;
+uniform uvec2 uSeed;       // low, high 32 bits
+uniform uvec2 uBudget;     // chain i iterates uBudget.x + (i < uBudget.y ? 1 : 0) times in all
+uniform bool uUnlimited;
+uniform uint uIterations;  // per chain in this dispatch
+uniform vec4 uCamX, uCamY, uCamZ, uCam1;  // (px·w, py·w, w, depth) = columns · (x, y, z, 1)
+uniform vec2 uSize;
+uniform float uNear;
+uniform uint uStride;
+uniform vec2 uDepthQuant;  // 32-bit keys: q = (depth - x) · y in [0, 65535]
+uniform bool uPalette;
+
+uint rotl(uint x, int k) { return (x << k) | (x >> (32 - k)); }
+
+// xoshiro128** (Blackman & Vigna 2018): four 32-bit words, no 64-bit arithmetic needed.
+uint nextRandom(inout uvec4 s) {
+  const uint result = rotl(s.y * 5u, 7) * 9u;
+  const uint t = s.y << 9;
+  s.z ^= s.x;
+  s.w ^= s.y;
+  s.y ^= s.z;
+  s.x ^= s.w;
+  s.z ^= t;
+  s.w = rotl(s.w, 11);
+  return result;
+}
+
+// A 32-bit integer mixer (Wellons' lowbias32) to seed each chain from (seed, chain).
+uint mix32(uint x) {
+  x ^= x >> 16;
+  x *= 0x7feb352du;
+  x ^= x >> 15;
+  x *= 0x846ca68bu;
+  x ^= x >> 16;
+  return x;
+}
+
+float signedUnit(uint bits) { return float(bits >> 8) * (2.0 / 16777216.0) - 1.0; }
+
+void restartChain(inout Chain ch) {
+  ch.p = vec4(signedUnit(nextRandom(ch.rng)), signedUnit(nextRandom(ch.rng)), signedUnit(nextRandom(ch.rng)), 0.0);
+  ch.color = vec4(0.5, 0.5, 0.5, float(nextRandom(ch.rng) >> 8) * (1.0 / 16777216.0));
+  ch.misc.y = uSkip;
+}
+
+// p = f(p): clamp to X, locate the cell, trilinear interpolation of the distorted nodes (the same
+// operations as CompiledFunction::evaluate).
+vec3 applyFunction(uint fi, vec3 p) {
+  const Fn f = fns[fi];
+  p = clamp(p, vec3(-1.0), vec3(1.0));
+  const vec3 s = (p + 1.0) * f.toLattice.xyz;
+  const vec3 c = min(floor(s), f.maxCell.xyz);
+  const vec3 t = s - c;
+  const uvec3 ci = uvec3(c);
+  const uint i00 = 2u * (f.pairOffset + ci.x + f.strideJ * ci.y + f.strideK * ci.z);
+  const uint dj = 2u * f.strideJ, dk = 2u * f.strideK;
+  const vec4 a00 = nodes[i00], b00 = nodes[i00 + 1u];
+  const vec4 a10 = nodes[i00 + dj], b10 = nodes[i00 + dj + 1u];
+  const vec4 a01 = nodes[i00 + dk], b01 = nodes[i00 + dk + 1u];
+  const vec4 a11 = nodes[i00 + dj + dk], b11 = nodes[i00 + dj + dk + 1u];
+  const vec4 ea0 = a00 + (a10 - a00) * t.y, eb0 = b00 + (b10 - b00) * t.y;
+  const vec4 ea1 = a01 + (a11 - a01) * t.y, eb1 = b01 + (b11 - b01) * t.y;
+  const vec4 ea = ea0 + (ea1 - ea0) * t.z, eb = eb0 + (eb1 - eb0) * t.z;
+  return (ea + (eb - ea) * t.x).xyz;
+}
+
+bool inBounds(vec3 p) { return all(lessThanEqual(abs(p), vec3(uEscape))); }  // false for NaN
+
+uint chooseFunction(inout uvec4 rng) {
+  uint column, low;
+  umulExtended(nextRandom(rng), uCount, column, low);
+  const uvec2 e = aliasTable[column];
+  return nextRandom(rng) < e.x ? column : e.y;
+}
+
+#if ACCUMULATE_COLOR
+void addFixed(uint word, float value) {
+  const uint v = uint(clamp(value, 0.0, 1.0) * 65536.0 + 0.5);
+  const uint old = atomicAdd(sums[word], v);
+  if (old + v < old) atomicAdd(sums[word + 1u], 1u);  // carry into the high word
+}
+#endif
+
+#if !EMIT_POINTS
+
+bool plot(vec3 q, vec4 col) {
+  const vec4 r = uCamX * q.x + uCamY * q.y + uCamZ * q.z + uCam1;
+  const float depth = r.w;
+  if (!(depth > uNear)) return false;
+  const vec2 xy = r.xy * (1.0 / r.z);
+  if (!(all(greaterThanEqual(xy, vec2(0.0))) && all(lessThan(xy, uSize)))) return false;
+  const uvec2 ixy = uvec2(xy);
+  const uint pixel = ixy.y * uStride + ixy.x;
+#if ATOMIC64
+  const uint64_t key = (uint64_t(floatBitsToUint(depth)) << 32) | uint64_t(packUnorm4x8(col));
+  atomicMin(keys[pixel], key);
+#else
+  const uint q16 = uint(clamp((depth - uDepthQuant.x) * uDepthQuant.y, 0.0, 65534.0));
+  const uvec3 c565 = uvec3(clamp(col.rgb, 0.0, 1.0) * vec3(31.0, 63.0, 31.0) + 0.5);
+  atomicMin(keys[pixel], (q16 << 16) | (c565.r << 11) | (c565.g << 5) | c565.b);
+#endif
+  if (atomicAdd(density[pixel], 1u) == 0xFFFFFFFFu) atomicMax(density[pixel], 0xFFFFFFFFu);  // saturate
+#if ACCUMULATE_COLOR
+  vec4 add = col;
+  if (uPalette) {  // flam3's linear palette mode: index c·256, blend entries i and i+1
+    const float x = clamp(col.w * 256.0, 0.0, 256.0);
+    const int i = min(int(x), 255);
+    add = vec4(mix(palette[i].rgb, palette[i + 1].rgb, x - float(i)), col.w);
+  }
+  for (uint k = 0u; k < 4u; ++k) addFixed(pixel * 8u + 2u * k, add[k]);
+#endif
+  return true;
+}
+#endif
+
+void main() {
+  const uint chain = gl_GlobalInvocationID.x;
+  if (chain >= uChains) return;
+  Chain ch;
+  if (uMode == 0u) {
+    ch.rng = uvec4(mix32(uSeed.x ^ mix32(chain)), mix32(uSeed.y ^ mix32(chain + 0x9e3779b9u)),
+                   mix32(uSeed.x + mix32(chain ^ 0x85ebca6bu)), mix32(uSeed.y + mix32(chain ^ 0xc2b2ae35u)));
+    if (all(equal(ch.rng, uvec4(0u)))) ch.rng.x = 1u;
+    for (int k = 0; k < 4; ++k) nextRandom(ch.rng);
+    restartChain(ch);
+    ch.misc.x = uUnlimited ? 0xFFFFFFFFu : uBudget.x + (chain < uBudget.y ? 1u : 0u);
+    chains[chain] = ch;
+    tallies[chain] = uvec2(0u);
+    return;
+  }
+  ch = chains[chain];
+  uvec2 tally = tallies[chain];
+  const uint n = min(ch.misc.x, uIterations);
+  for (uint k = 0u; k < n; ++k) {
+    const uint fi = chooseFunction(ch.rng);
+    const vec3 p = applyFunction(fi, ch.p.xyz);
+    const Fn f = fns[fi];
+    const vec4 col = ch.color + (f.color - ch.color) * f.speed;  // c = mix(c, c_i, speed)
+#if EMIT_POINTS
+    points[2u * (k * uChains + chain)] = vec4(0.0);
+#endif
+    if (!inBounds(p)) {
+      ++tally.x;
+      restartChain(ch);
+      continue;
+    }
+    ch.p.xyz = p;
+    ch.color = col;
+    if (ch.misc.y > 0u) {
+      --ch.misc.y;
+      continue;
+    }
+    vec3 q = p;
+    vec4 qc = col;
+    if (uHasFinal) {
+      const Fn g = fns[uCount];
+      q = applyFunction(uCount, p);
+      if (!inBounds(q)) {
+        ++tally.x;
+        continue;
+      }
+      qc = col + (g.color - col) * g.speed;
+    }
+#if EMIT_POINTS
+    points[2u * (k * uChains + chain)] = vec4(q, 1.0);
+    points[2u * (k * uChains + chain) + 1u] = vec4(clamp(qc.rgb, 0.0, 1.0), 0.0);
+    ++tally.y;
+#else
+    if (plot(q, qc)) ++tally.y;
+#endif
+  }
+#if EMIT_POINTS
+  for (uint k = n; k < uIterations; ++k) points[2u * (k * uChains + chain)] = vec4(0.0);  // past this chain's budget
+#endif
+  if (!uUnlimited) ch.misc.x -= n;
+  chains[chain] = ch;
+  tallies[chain] = tally;
+}

@@ -1,0 +1,99 @@
+// The GPU compute renderer's speed on the canonical scene (tests/bench/canonical_scene.h) at
+// 1024²: z-buffer + density, and with the flame display's colour sums; the CPU renderer on one
+// thread in the same run for the ratio. Without a GPU this measures Mesa's llvmpipe (the device is
+// printed in the context). docs/RENDERER.md has the figures.
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+#include "tests/bench/canonical_scene.h"
+#include "render/chaos_renderer.h"
+#include "render/compiled_ifs.h"
+#include "gpu/gpu_chaos_renderer.h"
+#include "io/project_io.h"
+
+namespace gridifs {
+namespace {
+
+const std::shared_ptr<const CompiledIfs>& ifs() {
+  static const auto compiled = compileIfs(canonicalScene());
+  return compiled;
+}
+
+gpu::GpuChaosRenderer& gpuRenderer() {
+  static gpu::GpuChaosRenderer renderer{[] {
+    gpu::GpuChaosRenderer::Options options;
+    options.sliceSeconds = 0.05;  // a render to completion: long dispatches
+    return options;
+  }()};
+  return renderer;
+}
+
+void run(benchmark::State& state, Renderer& renderer, RenderJob job) {
+  std::int64_t samples = 0;
+  double seconds = 0.0;
+  for (auto _ : state) {
+    renderer.restart(ifs(), job);
+    renderer.waitUntilDone({}, 0.002);
+    const RenderStats s = renderer.stats();
+    samples += s.samples;
+    seconds += s.seconds;
+  }
+  state.SetItemsProcessed(samples);
+  state.counters["points_per_s"] = seconds > 0 ? double(samples) / seconds : 0.0;
+}
+
+void BM_GpuZBuffer(benchmark::State& state) {
+  RenderJob job = RenderJob::fromProject(canonicalScene(), 1);
+  job.samples = state.range(0);
+  state.SetLabel(gpuRenderer().info().renderer + (gpuRenderer().info().atomic64 ? ", 64-bit keys" : ", 32-bit keys"));
+  run(state, gpuRenderer(), job);
+}
+
+void BM_GpuFlameColourSums(benchmark::State& state) {
+  RenderJob job = RenderJob::fromProject(canonicalScene(), 1);
+  job.samples = state.range(0);
+  job.accumulateColor = true;
+  state.SetLabel(gpuRenderer().info().renderer);
+  run(state, gpuRenderer(), job);
+}
+
+void BM_CpuOneThread(benchmark::State& state) {
+  RenderJob job = RenderJob::fromProject(canonicalScene(), 1);
+  job.samples = state.range(0);
+  job.accumulateColor = state.range(1) != 0;
+  ChaosRenderer cpu;
+  run(state, cpu, job);
+}
+
+// Sample counts: the GPU needs enough chains to fill itself (chainCount: 2^18 chains from
+// 2^18·64·21 ≈ 3.5·10^8 samples); on llvmpipe 5·10^7 is a few seconds.
+BENCHMARK(BM_GpuZBuffer)
+    ->Arg(50'000'000)
+    ->Arg(400'000'000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1);
+BENCHMARK(BM_GpuFlameColourSums)->Arg(50'000'000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK(BM_CpuOneThread)
+    ->Args({50'000'000, 0})
+    ->Args({50'000'000, 1})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1);
+
+}  // namespace
+}  // namespace gridifs
+
+// `bench_gpu --write-scene FILE.gridifs` saves the canonical scene for whole-process timings
+// (gridifs render against flam3-render, docs/RENDERER.md).
+int main(int argc, char** argv) {
+  if (argc == 3 && std::string(argv[1]) == "--write-scene") {
+    gridifs::saveProject(gridifs::canonicalScene(), argv[2]);
+    return 0;
+  }
+  benchmark::Initialize(&argc, argv);
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
