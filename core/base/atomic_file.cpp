@@ -1,10 +1,12 @@
 #include "base/atomic_file.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <string>
 
@@ -30,11 +32,39 @@ int syncPath(const fs::path& path, int flags) {
 
 fs::path folderOf(const fs::path& file) { return file.has_parent_path() ? file.parent_path() : fs::path("."); }
 
+namespace {
+
+/// Removes the temporaries that earlier writers of `target` left behind when they were killed
+/// (".STEM.tmp-PID-N.EXT" whose process PID no longer runs). A temporary of a writer that is
+/// still running, here or in another process, is left alone.
+void removeStaleTemporaries(const fs::path& target) {
+  const std::string prefix = "." + target.stem().string() + ".tmp-", extension = target.extension().string();
+  std::error_code ec;
+  for (fs::directory_iterator it(folderOf(target), ec), end; !ec && it != end; it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (name.size() <= prefix.size() + extension.size() || name.compare(0, prefix.size(), prefix) != 0 ||
+        name.compare(name.size() - extension.size(), extension.size(), extension) != 0)
+      continue;
+    const std::string middle = name.substr(prefix.size(), name.size() - prefix.size() - extension.size());
+    const std::size_t dash = middle.find('-');
+    if (dash == 0 || dash == std::string::npos || middle.find_first_not_of("0123456789-") != std::string::npos ||
+        middle.find('-', dash + 1) != std::string::npos)
+      continue;
+    const long pid = std::strtol(middle.c_str(), nullptr, 10);
+    if (pid <= 0 || pid == long(::getpid()) || !(::kill(pid_t(pid), 0) != 0 && errno == ESRCH)) continue;
+    std::error_code ignored;
+    fs::remove(it->path(), ignored);
+  }
+}
+
+}  // namespace
+
 AtomicFile::AtomicFile(fs::path target) : target_(std::move(target)) {
   static std::atomic<unsigned> counter{0};
   const std::string name = "." + target_.stem().string() + ".tmp-" + std::to_string(::getpid()) + "-" +
                            std::to_string(counter++) + target_.extension().string();
   temporary_ = folderOf(target_) / name;
+  removeStaleTemporaries(target_);
 }
 
 AtomicFile::~AtomicFile() {

@@ -14,6 +14,8 @@ namespace gridifs {
 /// A temporary file next to `target` (same folder and extension, a hidden name containing
 /// ".tmp"), renamed over `target` by commit(). Writers that need a path (OpenMesh, OpenImageIO,
 /// stdio) write temporaryPath(); the destructor removes the temporary unless it was committed.
+/// The constructor removes the temporaries of `target` that killed writers left behind (those
+/// whose process no longer runs), so a crash leaves nothing behind for longer than one write.
 class AtomicFile {
  public:
   explicit AtomicFile(std::filesystem::path target);
