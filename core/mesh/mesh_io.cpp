@@ -7,15 +7,19 @@
 #include <algorithm>
 #include <atomic>
 #include <cctype>
+#include <cstring>
 #include <fstream>
 #include <mutex>
 #include <new>
+#include <sstream>
+#include <string>
+#include <string_view>
 #include <system_error>
 
-#include "base/types.h"
 #include "base/atomic_file.h"
 #include "base/errors.h"
 #include "base/text_format.h"
+#include "base/types.h"
 
 namespace gridifs {
 namespace fs = std::filesystem;
@@ -108,6 +112,48 @@ const char* meshFormatName(MeshFormat format) {
 bool formatHasVertexColors(MeshFormat format) { return format == MeshFormat::Ply || format == MeshFormat::Off; }
 bool formatNeedsTriangles(MeshFormat format) { return format == MeshFormat::Stl; }
 
+namespace {
+
+/// The element counts an OFF, PLY or binary STL header declares, checked against the file's size
+/// before OpenMesh reserves memory for them: every vertex or face takes at least one byte (binary
+/// STL: exactly 50 per triangle), so a larger count is a hostile or truncated header. Returns the
+/// reason, or an empty string when the counts can be true.
+std::string implausibleHeader(const fs::path& file, MeshFormat format, std::uintmax_t bytes) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return {};
+  auto tooMany = [&](double declared) { return declared > double(bytes); };
+  if (format == MeshFormat::Off) {
+    std::string magic;
+    double vertices = 0, faces = 0;
+    in >> magic;
+    if (magic.find("OFF") == std::string::npos || !(in >> vertices >> faces)) return {};
+    if (vertices < 0 || faces < 0 || tooMany(vertices + faces))
+      return "its header declares more vertices or faces than the file can hold";
+  } else if (format == MeshFormat::Ply) {
+    std::string line;
+    double total = 0;
+    for (int n = 0; n < 1000 && std::getline(in, line) && line.rfind("end_header", 0) != 0; ++n) {
+      std::istringstream words(line);
+      std::string keyword, element;
+      double count = 0;
+      if (words >> keyword >> element >> count && keyword == "element") {
+        if (count < 0) return "its header declares a negative element count";
+        total += count;
+      }
+    }
+    if (tooMany(total)) return "its header declares more vertices or faces than the file can hold";
+  } else if (format == MeshFormat::Stl) {
+    char head[84] = {};
+    if (!in.read(head, sizeof head) || std::string_view(head, 5) == "solid") return {};  // ASCII STL
+    std::uint32_t triangles = 0;
+    std::memcpy(&triangles, head + 80, 4);
+    if (84.0 + 50.0 * triangles > double(bytes)) return "its header declares more triangles than the file holds";
+  }
+  return {};
+}
+
+}  // namespace
+
 IfsMesh readMeshFile(const fs::path& file) {
   const std::string name = file.string();
   const auto format = meshFormatFromPath(file);
@@ -122,6 +168,8 @@ IfsMesh readMeshFile(const fs::path& file) {
   if (bytes == 0) throw ModelError("", name + " is empty");
   if (bytes > kMaxMeshFileBytes) throw ModelError("", name + " is larger than 1 GiB, too large for a base mesh");
   if (::access(file.c_str(), R_OK) != 0) throw ModelError("", "cannot read " + name + ": permission denied");
+  if (const std::string reason = implausibleHeader(file, *format, bytes); !reason.empty())
+    throw ModelError("", "cannot read " + name + " as " + meshFormatName(*format) + ": " + reason);
 
   IfsMesh mesh;
   // Face status lets OpenMesh's importer mark the faces it could only add by duplicating

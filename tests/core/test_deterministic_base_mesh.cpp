@@ -2,6 +2,8 @@
 // validation (empty, non-manifold, unreadable), subdivision and its predicted counts.
 #include <gtest/gtest.h>
 
+#include <cstring>
+
 #include <algorithm>
 
 #include "mesh/base_mesh.h"
@@ -193,6 +195,15 @@ TEST(BaseMesh, BadFilesAreRefusedNamingTheFile) {
             "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n\x01\x02");
   writeFile(folder / "notes.txt", "hello");
   writeFile(folder / "hostile.off", "OFF\n900000000 900000000 0\n0 0 0\n");  // declares far more than it holds
+  writeFile(folder / "hostile.ply", "ply\nformat ascii 1.0\nelement vertex 4000000000\nproperty float x\n"
+                                    "property float y\nproperty float z\nelement face 1\n"
+                                    "property list uchar int vertex_indices\nend_header\n0 0 0\n");
+  {
+    std::string stl(84, '\0');  // binary STL: 80-byte header, then the triangle count
+    const std::uint32_t triangles = 2'000'000'000u;
+    std::memcpy(stl.data() + 80, &triangles, 4);
+    writeFile(folder / "hostile.stl", stl);
+  }
   std::filesystem::create_directories(folder / "folder.obj");
 
   struct Case {
@@ -201,7 +212,8 @@ TEST(BaseMesh, BadFilesAreRefusedNamingTheFile) {
   };
   for (const Case c : {Case{"missing.obj", "cannot read"}, Case{"empty.obj", "empty"}, Case{"points.ply", "no faces"},
                        Case{"vertices_only.obj", "no faces"}, Case{"fin.obj", "not a manifold"},
-                       Case{"bowtie.obj", "not a manifold"}, Case{"truncated.ply", ""}, Case{"hostile.off", ""},
+                       Case{"bowtie.obj", "not a manifold"}, Case{"truncated.ply", ""}, Case{"hostile.off", "header declares"},
+                       Case{"hostile.ply", "header declares"}, Case{"hostile.stl", "header declares"},
                        Case{"notes.txt", "not a mesh file"}, Case{"folder.obj", "folder"}}) {
     const std::string message = errorOf(fileSpec(path(c.name)));
     EXPECT_NE(message.find(path(c.name)), std::string::npos) << c.name << ": " << message;
