@@ -29,7 +29,7 @@ void drawHelpWindow(ModellerState& state) {
       {"Ctrl+O", "Open a project"},
       {"Ctrl+S", "Save"},
       {"Ctrl+Shift+S", "Save as"},
-      {"Ctrl+Z", "Undo (one step per edit or drag)"},
+      {"Ctrl+Z", "Undo (one step per edit or drag; the last 500 steps, at most 256 MiB, are kept)"},
       {"Ctrl+Shift+Z, Ctrl+Y", "Redo"},
       {"Delete", "Delete the active operation"},
       {"F", "Frame the hovered view (all views when none is hovered)"},

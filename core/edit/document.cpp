@@ -11,19 +11,30 @@ bool sameDisplay(const RenderSettings& a, const RenderSettings& b) {
 }
 
 bool sameRenderInput(const RenderSettings& a, const RenderSettings& b) {
-  return a.width == b.width && a.height == b.height && a.samples == b.samples && a.seed == b.seed &&
-         a.skip == b.skip && a.flame.palette == b.flame.palette;
+  return a.width == b.width && a.height == b.height && a.samples == b.samples && a.seed == b.seed && a.skip == b.skip &&
+         a.flame.palette == b.flame.palette;
 }
 
 Document::Document(Project project) : project_(std::move(project)), saved_(project_) {
   if (project_.functions.empty()) project_ = saved_ = defaultNewProject();
 }
 
+void Document::push(std::vector<Step>& to, Project project, std::string label) {
+  const std::size_t bytes = approximateMemory(project);
+  to.push_back({std::move(project), std::move(label), bytes});
+  historyBytes_ += bytes;
+  while (!undo_.empty() && (undo_.size() > kMaxUndoSteps || historyBytes_ > kMaxHistoryBytes) &&
+         undo_.size() + redo_.size() > 1) {
+    historyBytes_ -= undo_.front().bytes;
+    undo_.erase(undo_.begin());
+  }
+}
+
 void Document::commit(Project before, const std::string& label) {
   if (before == project_) return;
-  undo_.push_back({std::move(before), label});
-  if (undo_.size() > kMaxUndoSteps) undo_.erase(undo_.begin());
+  for (const Step& step : redo_) historyBytes_ -= step.bytes;
   redo_.clear();
+  push(undo_, std::move(before), label);
 }
 
 void Document::edit(const std::string& label, const Change& change) {
@@ -40,8 +51,10 @@ void Document::edit(const std::string& label, const Change& change) {
 void Document::validate(const Project& next) {
   // After a checked edit only the functions that changed are checked again; a project that came
   // from outside (constructor, reset, undo history from before) gets the full check once.
-  if (validated_) validateProjectChange(next, project_);
-  else validateProject(next);
+  if (validated_)
+    validateProjectChange(next, project_);
+  else
+    validateProject(next);
   validated_ = true;
 }
 
@@ -82,7 +95,8 @@ bool Document::travel(std::vector<Step>& from, std::vector<Step>& to) {
   if (from.empty()) return false;
   Step step = std::move(from.back());
   from.pop_back();
-  to.push_back({std::move(project_), step.label});
+  historyBytes_ -= step.bytes;
+  push(to, std::move(project_), step.label);
   project_ = std::move(step.project);
   validated_ = false;
   changed(to.back().project);
@@ -101,6 +115,7 @@ void Document::reset(Project project, std::filesystem::path path) {
   path_ = std::move(path);
   undo_.clear();
   redo_.clear();
+  historyBytes_ = 0;
   ++revision_;
   revisions_.geometry = revisions_.render = revisions_.display = revisions_.camera = revision_;
 }

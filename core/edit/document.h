@@ -82,12 +82,20 @@ class Document {
   const EvaluationCache& evaluation() const { return evaluation_; }
 
   static constexpr std::size_t kMaxUndoSteps = 500;
+  /// The undo and redo history together keep at most this much (approximateMemory of their
+  /// snapshots); the oldest undo steps are dropped first. The newest step always stays.
+  static constexpr std::size_t kMaxHistoryBytes = std::size_t(256) << 20;
+  /// Bytes the history holds now (for the Help window and tests).
+  std::size_t historyBytes() const { return historyBytes_; }
 
  private:
   struct Step {
     Project project;
     std::string label;
+    std::size_t bytes = 0;  // approximateMemory(project)
   };
+  /// Appends a step to `to`, counting its memory; drops the oldest undo steps past the caps.
+  void push(std::vector<Step>& to, Project project, std::string label);
   void commit(Project before, const std::string& label);
   /// Bumps revision() and the revisions of the concerns that differ from `before`.
   void changed(const Project& before);
@@ -101,6 +109,7 @@ class Document {
   std::uint64_t revision_ = 1;
   Revisions revisions_;
   std::vector<Step> undo_, redo_;
+  std::size_t historyBytes_ = 0;  // of undo_ and redo_
   std::optional<Step> gesture_;
   EvaluationCache evaluation_;
   bool validated_ = false;  // project_ passed validation (edits then re-check changed functions only)

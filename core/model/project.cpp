@@ -1,5 +1,7 @@
 #include "model/project.h"
 
+#include <variant>
+
 namespace gridifs {
 
 Project defaultNewProject() {
@@ -10,6 +12,31 @@ Project defaultNewProject() {
   f.color = {1.0, 0.6, 0.2};
   p.functions.push_back(f);
   return p;
+}
+
+namespace {
+
+std::size_t approximateMemory(const Function& f) {
+  std::size_t bytes = sizeof(Function) + f.name.capacity() + f.ops.capacity() * sizeof(Operation);
+  for (const Operation& op : f.ops) {
+    bytes += op.selection.capacity() * sizeof(SelectionBox);
+    if (const auto* morph = std::get_if<MorphOp>(&op.params))
+      bytes += morph->pairs.capacity() * sizeof(morph->pairs[0]);
+    if (const auto* nodes = std::get_if<NodesOp>(&op.params)) bytes += nodes->moves.capacity() * sizeof(NodeMove);
+    if (const auto* calc = std::get_if<CalculatorOp>(&op.params))
+      bytes += calc->x.capacity() + calc->y.capacity() + calc->z.capacity();
+  }
+  return bytes;
+}
+
+}  // namespace
+
+std::size_t approximateMemory(const Project& project) {
+  std::size_t bytes = sizeof(Project) + project.render.flame.palette.capacity();
+  for (const Function& f : project.functions) bytes += approximateMemory(f);
+  if (project.final_function) bytes += approximateMemory(*project.final_function);
+  for (const auto& row : project.transitions) bytes += sizeof(row) + row.capacity() * sizeof(double);
+  return bytes;
 }
 
 }  // namespace gridifs

@@ -42,4 +42,8 @@ struct Project {
 /// The project a new document starts from: one 6×6×6 grid scaled by one half.
 Project defaultNewProject();
 
+/// Roughly how many bytes `project` occupies in memory (its containers and strings), for the
+/// undo history's memory cap. Thread-safe; never throws.
+std::size_t approximateMemory(const Project& project);
+
 }  // namespace gridifs

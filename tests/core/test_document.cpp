@@ -92,3 +92,36 @@ TEST(Document, EvaluatedGridsFollowEdits) {
   EXPECT_GT(doc.revision(), revision);
   EXPECT_EQ(*doc.evaluatedGrid(0), *first);
 }
+
+// The undo history has a memory cap: with large snapshots the oldest steps are dropped, the
+// newest ones still undo exactly, and the history never holds more than the cap.
+TEST(Document, UndoHistoryStaysUnderItsMemoryCapByDroppingTheOldestSteps) {
+  Project big = defaultNewProject();
+  big.functions[0].resolution = {64, 32, 32};
+  NodesOp nodes;
+  for (int i = 0; i < 64; ++i)
+    for (int j = 0; j < 32; ++j)
+      for (int k = 0; k < 32; k += 2) nodes.moves.push_back({{i, j, k}, Vec3{0.0, 0.0, 0.001}});
+  Operation op;
+  op.params = nodes;
+  big.functions[0].ops.push_back(op);
+  const std::size_t snapshot = approximateMemory(big);
+  ASSERT_GT(snapshot, std::size_t(1) << 20);  // each undo step holds more than 1 MiB
+  const int edits = int(Document::kMaxHistoryBytes / snapshot) + 40;
+  ASSERT_LT(edits, int(Document::kMaxUndoSteps)) << "the memory cap, not the step cap, must bind";
+
+  Document doc(big);
+  for (int e = 1; e <= edits; ++e) doc.edit("weight", [&](Project& p) { p.functions[0].weight = 1.0 + e; });
+  EXPECT_LE(doc.historyBytes(), Document::kMaxHistoryBytes);
+  EXPECT_GT(doc.historyBytes(), Document::kMaxHistoryBytes - 2 * snapshot);
+  int undone = 0;
+  while (doc.undo()) {
+    ++undone;
+    EXPECT_EQ(doc.project().functions[0].weight, 1.0 + edits - undone);
+  }
+  EXPECT_LT(undone, edits) << "nothing was dropped";
+  EXPECT_GE(undone, int(Document::kMaxHistoryBytes / snapshot) - 1);
+  EXPECT_LE(doc.historyBytes(), Document::kMaxHistoryBytes);
+  EXPECT_TRUE(doc.redo());  // the dropped steps are gone, the kept ones redo
+  EXPECT_EQ(doc.project().functions[0].weight, 1.0 + edits - undone + 1);
+}
