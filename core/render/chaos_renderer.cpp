@@ -13,6 +13,7 @@
 #include <cstring>
 #include <limits>
 
+#include "base/system_memory.h"
 #include "render/chaos_kernel.h"
 
 // snapshot() reinterprets the packed colour bytes (r in the low byte) as r, g, b, a in memory.
@@ -39,7 +40,6 @@ std::int64_t workerBudget(const RenderJob& job, int worker) {
   const std::int64_t t = job.threads;
   return job.samples / t + (worker < job.samples % t ? 1 : 0);
 }
-
 
 /// Everything the workers need for one generation; immutable once published.
 struct PreparedJob {
@@ -225,13 +225,13 @@ void validateRenderJob(const RenderJob& job) {
     throw ModelError("render", "the image must be at least 1×1 pixel, not " + std::to_string(job.width) + "×" +
                                    std::to_string(job.height));
   const std::int64_t pixels = std::int64_t(job.width) * job.height;
-  if (job.width > limits::kMaxRenderSide || job.height > limits::kMaxRenderSide ||
-      pixels > limits::kMaxRenderPixels) {
+  if (job.width > limits::kMaxRenderSide || job.height > limits::kMaxRenderSide || pixels > limits::kMaxRenderPixels) {
     const double gb = double(pixels) * (12.0 * std::max(1, job.threads) + 12.0) / 1e9;
     throw ModelError("render", std::to_string(job.width) + "×" + std::to_string(job.height) +
                                    " is too large: GridIFS renders at most 67 megapixels (e.g. 8192×8192), "
                                    "because every render thread keeps its own z-buffer (this image would need "
-                                   "about " + std::to_string(int(std::ceil(gb))) + " GB)");
+                                   "about " +
+                                   std::to_string(int(std::ceil(gb))) + " GB)");
   }
   if (job.samples > limits::kMaxRenderSamples)
     throw ModelError("render.samples", std::to_string(job.samples) + " samples is more than the limit of " +
@@ -240,6 +240,23 @@ void validateRenderJob(const RenderJob& job) {
   if (job.threads < 1 || job.threads > limits::kMaxRenderThreads)
     throw ModelError("render", "the thread count must be between 1 and " + std::to_string(limits::kMaxRenderThreads));
   OrbitCamera(job.camera, job.width, job.height);  // throws for an unusable camera
+  const std::uint64_t needed = renderBufferBytes(job);
+  if (const auto available = availableMemoryBytes(); available && needed > *available)
+    throw ModelError("render", "a " + std::to_string(job.width) + "×" + std::to_string(job.height) + " render on " +
+                                   std::to_string(job.threads) + " thread" + (job.threads == 1 ? "" : "s") +
+                                   " needs about " + describeBytes(needed) + " of memory for its buffers, but only " +
+                                   describeBytes(*available) + " is free (use fewer threads or a smaller image)");
+}
+
+std::uint64_t renderBufferBytes(const RenderJob& job) {
+  const std::uint64_t pixels = std::uint64_t(job.width) * std::uint64_t(job.height);
+  // Per worker: a 16-byte z-buffer cell per pixel, plus 4 floats of colour sums with the flame
+  // display. The merged snapshot: RGBA8, depth, density (+ colour sums), and as much again for
+  // the image that is developed or written from it.
+  const std::uint64_t colour = job.accumulateColor ? 16 : 0;
+  const std::uint64_t perWorker = sizeof(kernel::PixelCell) + colour;
+  const std::uint64_t snapshot = 4 + 4 + 4 + colour;
+  return pixels * (std::uint64_t(std::max(1, job.threads)) * perWorker + 2 * snapshot);
 }
 
 ChaosRenderer::ChaosRenderer() : shared_(std::make_shared<Shared>()) {}
@@ -440,8 +457,7 @@ void shadeRenderImage(RenderImage& out, const DisplaySettings& display) {
   const float range = maxDepth - minDepth;
   const float scale = hits && range > 0.0f ? cue / range : 0.0f;
   std::uint8_t bg[4] = {0, 0, 0, 0};
-  for (int c = 0; c < 3; ++c)
-    bg[c] = std::uint8_t(std::lround(std::clamp(display.background[c], 0.0, 1.0) * 255.0));
+  for (int c = 0; c < 3; ++c) bg[c] = std::uint8_t(std::lround(std::clamp(display.background[c], 0.0, 1.0) * 255.0));
   std::uint32_t background;
   std::memcpy(&background, bg, 4);
   for (std::size_t i = 0; i < n; ++i) {
@@ -503,8 +519,8 @@ struct PointPlot {
   std::vector<float>* rgb;
   [[gnu::always_inline]] int operator()(kernel::v4f q, kernel::v4f col) const {
     xyz->insert(xyz->end(), {q[0], q[1], q[2]});
-    rgb->insert(rgb->end(), {std::clamp(col[0], 0.0f, 1.0f), std::clamp(col[1], 0.0f, 1.0f),
-                             std::clamp(col[2], 0.0f, 1.0f)});
+    rgb->insert(rgb->end(),
+                {std::clamp(col[0], 0.0f, 1.0f), std::clamp(col[1], 0.0f, 1.0f), std::clamp(col[2], 0.0f, 1.0f)});
     return 1;
   }
 };

@@ -66,7 +66,12 @@ struct RenderJob {
 
 /// Checks a job against the limits above. Throws ModelError naming the field
 /// ("render.width", "render.samples", ...) with one clear sentence.
+/// Also refuses a job whose buffers (renderBufferBytes) would not fit the memory free now.
 void validateRenderJob(const RenderJob& job);
+
+/// The bytes the CPU renderer's buffers take for `job` (every worker's z-buffer and colour sums,
+/// the merged snapshot and the image made from it).
+std::uint64_t renderBufferBytes(const RenderJob& job);
 
 /// How the merged buffers become colours (applied in snapshot(), so changing it needs no re-render).
 struct DisplaySettings {

@@ -6,7 +6,9 @@
 #include <cstring>
 #include <set>
 
+#include "base/system_memory.h"
 #include "io/project_io.h"
+#include "render/chaos_renderer.h"
 #include "tests/cli/run_command.h"
 #include "tests/core/renderer_scenes.h"
 
@@ -211,6 +213,27 @@ TEST(RenderCli, NonFiniteCalculatorIsBadInputAndExpandingIfsStillRenders) {
   EXPECT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.err.find("may not be contractive"), std::string::npos) << r.err;
   EXPECT_TRUE(fs::exists(dir.path / "exp.png"));
+}
+
+// A render whose buffers would not fit the free memory is refused before it allocates, with a
+// sentence that says how much it needs.
+TEST(RenderCli, ARenderThatDoesNotFitInMemoryIsRefusedUpFront) {
+  RenderJob job;
+  job.width = job.height = 8192;
+  job.threads = 64;
+  const auto available = availableMemoryBytes();
+  if (!available || *available >= renderBufferBytes(job))
+    GTEST_SKIP() << "this machine has room for a 64-thread 8192² render";
+  ScratchDir dir("render-memory");
+  const fs::path project = writeProject(dir, "s.gridifs", test::sierpinskiTetrahedron());
+  const fs::path out = dir.path / "out.png";
+  const auto r = runGridifs("render " + quote(project.string()) + " -o " + quote(out.string()) +
+                            " --width 8192 --height 8192 --threads 64 --device cpu");
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_NE(r.err.find("needs about"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("GiB"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(fs::exists(out));
 }
 
 }  // namespace
