@@ -1,6 +1,6 @@
 #pragma once
 // The progressive renderer's interface, implemented by the CPU worker pool (ChaosRenderer) and by
-// the OpenGL compute renderer (core/gpu/gpu_chaos_renderer.h), so that the command line and the
+// the OpenGL compute renderer (gpu/gpu_chaos_renderer.h), so that the command line and the
 // modeller's preview pick one at run time. The job, stats and image types live in
 // core/chaos_renderer.h; both implementations fill the same RenderImage, so the image, EXR and
 // flame code downstream does not know which one ran.

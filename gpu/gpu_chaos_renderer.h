@@ -4,7 +4,7 @@
 // with its own random stream from (seed, chain); the z-buffer, the density and the flame display's
 // colour sums in storage buffers; snapshot() fills the same RenderImage as ChaosRenderer.
 //
-// The context is a headless EGL one (core/gpu/headless_gl_context.h), owned by the renderer's own
+// The context is a headless EGL one (gpu/headless_gl_context.h), owned by the renderer's own
 // thread, for the command line and the modeller alike: the UI thread never waits for a dispatch,
 // and the same code runs in tests on Mesa's llvmpipe.
 //

@@ -8,7 +8,7 @@
 #include <limits>
 #include <string>
 
-#include "core/gpu/embedded_compute_shaders.h"
+#include "gpu/embedded_compute_shaders.h"
 
 namespace gridifs::gpu {
 namespace {
