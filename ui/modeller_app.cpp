@@ -108,6 +108,8 @@ class ModellerApp {
   std::vector<double> frameMs_;
   double slowestFrameMs_ = 0.0;  // past the first frames
   double phaseMs_[5] = {0, 0, 0, 0, 0};  // UI+edits+publish, grid views, IFS view, preview, ImGui
+  // Where the slowest frame's time went (written to the probe, so a soak can name the phase).
+  nlohmann::json slowestFramePhases_ = nlohmann::json::object();
 };
 
 float ModellerApp::framebufferScale() const {
@@ -272,6 +274,7 @@ void ModellerApp::writeProbe(double frameMs) {
   j["frame"] = frame_;
   j["frame_ms"] = frameMs;
   j["slowest_frame_ms"] = slowestFrameMs_;  // since the first frames (fonts, shaders) were made
+  j["slowest_frame_phases"] = slowestFramePhases_;
   j["revision"] = state_.document.revision();
   j["dirty"] = state_.document.dirty();
   j["path"] = state_.document.path().string();
@@ -354,8 +357,10 @@ int ModellerApp::run() {
     for (GridView& v : views_) v.hide();
     ifsView_.hide();
     preview_.hide();
+    const auto uiStart = std::chrono::steady_clock::now();
     buildUi();
     ImGui::Render();
+    const auto uiEnd = std::chrono::steady_clock::now();
 
     // 3. Apply the edits to the one Document.
     const bool hadEdits = !edits_.empty();
@@ -363,6 +368,7 @@ int ModellerApp::run() {
     state_.clampIndices();
     if (hadEdits) quietFrames = 0;
 
+    const auto applied = std::chrono::steady_clock::now();
     // 4. Publish a new renderer snapshot when the document changed.
     preview_.publish(state_);
 
@@ -407,10 +413,20 @@ int ModellerApp::run() {
       title_ = title;
       glfwSetWindowTitle(window_, title_.c_str());
     }
+    const auto beforeTick = std::chrono::steady_clock::now();
     files_.tick();
+    const auto ticked = std::chrono::steady_clock::now();
     ++frame_;
     glFinish();
-    const double frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - frameStart).count();
+    const auto finished = std::chrono::steady_clock::now();
+    const double frameMs = std::chrono::duration<double, std::milli>(finished - frameStart).count();
+    if (frame_ > 5 && frameMs > slowestFrameMs_) {
+      auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
+      slowestFramePhases_ = {{"poll_and_window", ms(frameStart, uiStart)}, {"build_ui", ms(uiStart, uiEnd)},
+                             {"apply_edits", ms(uiEnd, applied)},       {"publish", ms(applied, t0)},
+                             {"views", ms(t0, t3)},                     {"present", ms(t3, beforeTick)},
+                             {"files_tick", ms(beforeTick, ticked)},   {"gl_finish", ms(ticked, finished)}};
+    }
     if (frame_ > 5) {
       slowestFrameMs_ = std::max(slowestFrameMs_, frameMs);
       if (options_.stats) frameMs_.push_back(frameMs);  // kept only for the --stats summary

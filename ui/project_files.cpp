@@ -195,6 +195,7 @@ bool ProjectFiles::saveTo(const fs::path& file) {
     saveProject(state_.document.project(), file);
     state_.document.markSaved(fs::absolute(file));
     addRecent(fs::absolute(file));
+    finishAutosave();  // else it could write the recovery file again after this removal
     std::error_code ec;
     fs::remove(recoveryFile(), ec);
     state_.info("Saved " + file.string());
@@ -205,10 +206,23 @@ bool ProjectFiles::saveTo(const fs::path& file) {
   }
 }
 
+bool ProjectFiles::finishAutosave() {
+  if (!autosave_.valid()) return true;
+  const std::string error = autosave_.get();
+  if (!error.empty()) {
+    state_.error("Autosave failed: " + error);
+    return false;
+  }
+  autosavedRevision_ = autosavingRevision_;
+  return true;
+}
+
 void ProjectFiles::tick() {
+  if (autosave_.valid() && autosave_.wait_for(std::chrono::seconds(0)) == std::future_status::ready) finishAutosave();
   const Document& d = state_.document;
   if (!d.dirty()) {
-    if (autosavedRevision_ != 0) {
+    if (autosavedRevision_ != 0 || autosave_.valid()) {
+      finishAutosave();
       std::error_code ec;
       fs::remove(recoveryFile(), ec);
       fs::remove(fs::path(recoveryFile()).replace_extension(".path"), ec);
@@ -217,20 +231,25 @@ void ProjectFiles::tick() {
     lastAutosave_ = state_.now;
     return;
   }
+  if (autosave_.valid()) return;  // one at a time; the next tick catches up
   if (state_.now - lastAutosave_ < autosaveSeconds_ || d.revision() == autosavedRevision_) return;
   lastAutosave_ = state_.now;
-  try {
-    saveProject(d.project(), recoveryFile());
-    std::error_code ec;
-    fs::remove(fs::path(recoveryFile()).concat("~"), ec);
-    writeFileAtomically(fs::path(recoveryFile()).replace_extension(".path"), d.path().string() + "\n");
-    autosavedRevision_ = d.revision();
-  } catch (const std::exception& e) {
-    state_.error(std::string("Autosave failed: ") + e.what());
-  }
+  autosavingRevision_ = d.revision();
+  autosave_ = std::async(std::launch::async, [project = d.project(), original = d.path(), file = recoveryFile()] {
+    try {
+      saveProject(project, file);
+      std::error_code ec;
+      fs::remove(fs::path(file).concat("~"), ec);
+      writeFileAtomically(fs::path(file).replace_extension(".path"), original.string() + "\n");
+      return std::string();
+    } catch (const std::exception& e) {
+      return std::string(e.what());
+    }
+  });
 }
 
 void ProjectFiles::shutdown() {
+  finishAutosave();
   std::error_code ec;
   fs::remove(recoveryFile(), ec);
   fs::remove(fs::path(recoveryFile()).concat("~"), ec);

@@ -3,6 +3,7 @@
 // before losing unsaved work, load and save errors shown in the window (never fatal), and
 // autosave to a recovery file with an offer to recover after a crash.
 #include <filesystem>
+#include <future>
 #include <optional>
 #include <string>
 #include <variant>
@@ -75,12 +76,19 @@ class ProjectFiles {
   void saveRecent() const;
   void showError(const std::string& title, const std::string& message);
   std::filesystem::path recoveryFile() const;
+  /// Waits for the autosave in flight (if any) and reports its error; true when none failed.
+  bool finishAutosave();
 
   ModellerState& state_;
   AppFolders folders_;
   double autosaveSeconds_;
   double lastAutosave_ = 0.0;
   std::uint64_t autosavedRevision_ = 0;
+  // The autosave runs on a worker thread (serialising and syncing a large project to a busy
+  // disk can take longer than a frame); it holds its own copy of the project. Its result is an
+  // error message, empty on success.
+  std::future<std::string> autosave_;
+  std::uint64_t autosavingRevision_ = 0;
   FileBrowser browser_;
   bool browserForSave_ = false;
   bool browserForFlame_ = false;
