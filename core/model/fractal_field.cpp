@@ -1,0 +1,218 @@
+#include "model/fractal_field.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "base/hash.h"
+
+namespace gridifs {
+
+namespace {
+
+constexpr int kDims = 4;
+constexpr int kCorners = 1 << kDims;
+
+// Odd 64-bit multipliers that spread a vertex's four indices over the hash input.
+constexpr std::array<std::uint64_t, kDims> kIndexMix{0x9E3779B97F4A7C15ull, 0xC2B2AE3D27D4EB4Full,
+                                                     0x165667B19E3779F9ull, 0xD6E8FEB86659FD93ull};
+
+inline std::int64_t wrapIndex(std::int64_t i, std::int64_t cells) {
+  if (cells <= 0) return i;
+  i %= cells;
+  return i < 0 ? i + cells : i;
+}
+
+// Colonna, second appendix: the cubic through f0, f1 with end slopes d0, d1 (per cell).
+inline double hermite(double f0, double f1, double d0, double d1, double u) {
+  const double a3 = (d0 + d1) - 2.0 * (f1 - f0);
+  const double a2 = 3.0 * (f1 - f0) - (2.0 * d0 + d1);
+  return ((a3 * u + a2) * u + d0) * u + f0;
+}
+
+std::uint64_t levelKey(std::int64_t seed, int axis, int level) {
+  return splitmix64(splitmix64(static_cast<std::uint64_t>(seed + axis)) + static_cast<std::uint64_t>(level));
+}
+
+}  // namespace
+
+const char* toString(FieldInterpolation interpolation) {
+  return interpolation == FieldInterpolation::Linear ? "linear" : "cubic";
+}
+
+bool parseFieldInterpolation(const std::string& text, FieldInterpolation& out) {
+  if (text == "linear") {
+    out = FieldInterpolation::Linear;
+  } else if (text == "cubic") {
+    out = FieldInterpolation::Cubic;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+FractalField::FractalField(const FractalFieldParams& params) : params_(params) {
+  levelCount_ = std::clamp(params.octaves, 1, FractalFieldParams::kMaxOctaves);
+  // p(k) ∝ gain^k, normalised (Colonna §2.3 leaves the weights free as long as they decrease).
+  double total = 0.0;
+  for (int k = 1; k <= levelCount_; ++k) total += std::pow(params.gain, k);
+  // The generalised golden ratio for four dimensions (the real root of x^5 = x + 1): its
+  // powers give offsets that stay far from each other level after level.
+  constexpr double kPhi4 = 1.1673039782614187;
+  for (int k = 1; k <= levelCount_; ++k) {
+    Level& level = levels_[k - 1];
+    const double size = params.scale * std::pow(params.ratio, k - 1);
+    for (int d = 0; d < kDims; ++d) {
+      const double period = params.period[d];
+      if (period > 0.0) {
+        level.wrap[d] = std::max<std::int64_t>(1, std::llround(period / size));
+        level.cell[d] = period / static_cast<double>(level.wrap[d]);
+      } else {
+        level.wrap[d] = 0;
+        level.cell[d] = size;
+      }
+      const double alpha = 1.0 / std::pow(kPhi4, d + 1);
+      const double fraction = 0.5 + k * alpha;
+      level.offset[d] = level.cell[d] * (fraction - std::floor(fraction));
+    }
+    level.weight = std::pow(params.gain, k) / total;
+    for (int axis = 0; axis < 3; ++axis) level.keys[axis] = levelKey(params.seed, axis, k);
+  }
+}
+
+double FractalField::bound() const {
+  return params_.interpolation == FieldInterpolation::Linear ? 1.0 : 1.0 + kDims / 4.0;
+}
+
+FractalField::MeshGeometry FractalField::mesh(int level) const {
+  const Level& l = levels_[std::clamp(level, 1, levelCount_) - 1];
+  MeshGeometry g;
+  for (int d = 0; d < kDims; ++d) {
+    g.origin[d] = -l.offset[d];
+    g.cell[d] = l.cell[d];
+  }
+  g.weight = l.weight;
+  return g;
+}
+
+FieldPoint FractalField::wrapped(FieldPoint s) const {
+  for (int d = 0; d < kDims; ++d) {
+    const double period = params_.period[d];
+    if (period > 0.0) s[d] -= period * std::floor(s[d] / period);
+  }
+  return s;
+}
+
+Vec3 FractalField::displacement(const Vec3& q, double t) const {
+  const FieldPoint s = wrapped({q.x + params_.wind.x * t, q.y + params_.wind.y * t, q.z + params_.wind.z * t, t});
+  Vec3 sum{0.0, 0.0, 0.0};
+  for (int k = 0; k < levelCount_; ++k) {
+    const Level& level = levels_[k];
+    double f[3];
+    levelValues(level, level.keys, 3, s, f);
+    sum += level.weight * Vec3{f[0], f[1], f[2]};
+  }
+  return params_.amplitude * sum;
+}
+
+double FractalField::value(int axis, FieldPoint s) const {
+  s = wrapped(s);
+  double sum = 0.0;
+  for (int k = 0; k < levelCount_; ++k) {
+    const Level& level = levels_[k];
+    double f = 0.0;
+    levelValues(level, {levelKey(params_.seed, axis, k + 1), 0, 0}, 1, s, &f);
+    sum += level.weight * f;
+  }
+  return sum;
+}
+
+namespace {
+
+// The cell of one level that holds a sample point: its lower vertex's hash contribution per
+// dimension and step (-1, 0, +1, +2 from it, wrapped where periodic) and the position inside.
+struct CellStencil {
+  std::array<std::array<std::uint64_t, 4>, kDims> index{};  // [dimension][step + 1]
+  std::array<double, kDims> u{};
+};
+
+}  // namespace
+
+template <typename Level>
+static CellStencil stencilFor(const Level& level, const FieldPoint& s) {
+  CellStencil st;
+  for (int d = 0; d < kDims; ++d) {
+    const double x = (s[d] + level.offset[d]) / level.cell[d];
+    const double cell = std::floor(x);
+    st.u[d] = x - cell;
+    const auto base = static_cast<std::int64_t>(cell);
+    for (int step = 0; step < 4; ++step)
+      st.index[d][step] = static_cast<std::uint64_t>(wrapIndex(base + step - 1, level.wrap[d])) * kIndexMix[d];
+  }
+  return st;
+}
+
+// RDN from a vertex's summed index contributions and a (seed, axis, level) key, in [-1, 1).
+static inline double randomFromSum(std::uint64_t indexSum, std::uint64_t key) {
+  return static_cast<double>(splitmix64(indexSum + key) >> 11) * 0x1.0p-52 - 1.0;
+}
+
+void FractalField::levelValues(const Level& level, const std::array<std::uint64_t, 3>& keys, int axes,
+                               const FieldPoint& s, double* out) const {
+  const CellStencil st = stencilFor(level, s);
+  // The hash inputs of the 2^4 cell corners, and of each corner's outward neighbour along each
+  // dimension (step -1 below a lower corner, +2 beyond an upper one).
+  std::array<std::uint64_t, kCorners> corner{};
+  for (int c = 0; c < kCorners; ++c) {
+    std::uint64_t sum = 0;
+    for (int d = 0; d < kDims; ++d) sum += st.index[d][1 + ((c >> d) & 1)];
+    corner[c] = sum;
+  }
+  if (params_.interpolation == FieldInterpolation::Linear) {
+    std::array<double, kCorners> weight{};
+    for (int c = 0; c < kCorners; ++c) {
+      double w = 1.0;
+      for (int d = 0; d < kDims; ++d) w *= ((c >> d) & 1) ? st.u[d] : 1.0 - st.u[d];
+      weight[c] = w;
+    }
+    for (int a = 0; a < axes; ++a) {
+      double result = 0.0;
+      for (int c = 0; c < kCorners; ++c) result += weight[c] * randomFromSum(corner[c], keys[a]);
+      out[a] = result;
+    }
+    return;
+  }
+  std::array<std::array<std::uint64_t, kDims>, kCorners> outward{};
+  for (int c = 0; c < kCorners; ++c) {
+    for (int d = 0; d < kDims; ++d) {
+      const int bit = (c >> d) & 1;
+      outward[c][d] = corner[c] - st.index[d][1 + bit] + st.index[d][bit ? 3 : 0];
+    }
+  }
+  for (int a = 0; a < axes; ++a) {
+    // Values at the corners and their slopes by central differences (the appendix's
+    // ∂f/∂u = (f(u+1) - f(u-1)) / 2), which reach one node outside the cell.
+    std::array<double, kCorners> value{};
+    std::array<std::array<double, kDims>, kCorners> slope{};
+    for (int c = 0; c < kCorners; ++c) value[c] = randomFromSum(corner[c], keys[a]);
+    for (int c = 0; c < kCorners; ++c) {
+      for (int d = 0; d < kDims; ++d) {
+        const double beyond = randomFromSum(outward[c][d], keys[a]);
+        const double partner = value[c ^ (1 << d)];
+        slope[c][d] = ((c >> d) & 1) ? 0.5 * (beyond - partner) : 0.5 * (partner - beyond);
+      }
+    }
+    // Reduce one dimension at a time: cubic in the value along it, linear in the remaining
+    // slopes (the appendix's B points), until one value is left.
+    for (int d = 0; d < kDims; ++d) {
+      const int stride = 1 << d;
+      for (int c = 0; c < kCorners; c += stride * 2) {
+        const int c1 = c + stride;
+        value[c] = hermite(value[c], value[c1], slope[c][d], slope[c1][d], st.u[d]);
+        for (int j = d + 1; j < kDims; ++j) slope[c][j] += st.u[d] * (slope[c1][j] - slope[c][j]);
+      }
+    }
+    out[a] = value[0];
+  }
+}
+
+}  // namespace gridifs
