@@ -1,0 +1,114 @@
+#include "model/keyframe_track.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "base/errors.h"
+
+namespace gridifs {
+
+const char* toString(KeyInterpolation interpolation) {
+  switch (interpolation) {
+    case KeyInterpolation::Step:
+      return "step";
+    case KeyInterpolation::Linear:
+      return "linear";
+    case KeyInterpolation::Smooth:
+      return "smooth";
+  }
+  return "linear";
+}
+
+bool parseKeyInterpolation(const std::string& text, KeyInterpolation& out) {
+  if (text == "step") {
+    out = KeyInterpolation::Step;
+  } else if (text == "linear") {
+    out = KeyInterpolation::Linear;
+  } else if (text == "smooth") {
+    out = KeyInterpolation::Smooth;
+  } else {
+    return false;
+  }
+  return true;
+}
+
+namespace {
+
+// The Catmull-Rom tangent at key i (units of value per second): the slope between its
+// neighbours; one-sided at the ends.
+double tangentAt(const std::vector<Keyframe>& keys, std::size_t i) {
+  const std::size_t before = i == 0 ? 0 : i - 1;
+  const std::size_t after = std::min(i + 1, keys.size() - 1);
+  if (before == after) return 0.0;
+  return (keys[after].v - keys[before].v) / (keys[after].t - keys[before].t);
+}
+
+}  // namespace
+
+double KeyframeTrack::valueAt(double t) const {
+  if (keys.empty()) return 0.0;
+  if (t <= keys.front().t) return keys.front().v;
+  if (t >= keys.back().t) return keys.back().v;
+  // The segment [keys[i], keys[i+1]] that holds t.
+  const auto next =
+      std::upper_bound(keys.begin(), keys.end(), t, [](double time, const Keyframe& k) { return time < k.t; });
+  const std::size_t i = static_cast<std::size_t>(next - keys.begin()) - 1;
+  const Keyframe& a = keys[i];
+  const Keyframe& b = keys[i + 1];
+  const double h = b.t - a.t;
+  const double u = (t - a.t) / h;
+  switch (a.interp) {
+    case KeyInterpolation::Step:
+      return a.v;
+    case KeyInterpolation::Linear:
+      return a.v + u * (b.v - a.v);
+    case KeyInterpolation::Smooth: {
+      const double m0 = tangentAt(keys, i) * h, m1 = tangentAt(keys, i + 1) * h;
+      const double u2 = u * u, u3 = u2 * u;
+      return (2 * u3 - 3 * u2 + 1) * a.v + (u3 - 2 * u2 + u) * m0 + (-2 * u3 + 3 * u2) * b.v + (u3 - u2) * m1;
+    }
+  }
+  return a.v;
+}
+
+void KeyframeTrack::validate() const {
+  if (keys.empty()) throw ModelError("", "a track needs at least one key");
+  for (std::size_t i = 0; i < keys.size(); ++i) {
+    const std::string at = "[" + std::to_string(i) + "]";
+    if (!std::isfinite(keys[i].t)) throw ModelError(at + ".t", "the key's time must be a finite number");
+    if (!std::isfinite(keys[i].v)) throw ModelError(at + ".v", "the key's value must be a finite number");
+    if (i > 0 && keys[i].t <= keys[i - 1].t) {
+      throw ModelError(at + ".t", keys[i].t == keys[i - 1].t ? "two keys share the time " + std::to_string(keys[i].t) +
+                                                                   "; each key needs its own time"
+                                                             : "keys must be in increasing time order");
+    }
+  }
+}
+
+void KeyframeTrack::setKey(const Keyframe& key) {
+  const auto at =
+      std::lower_bound(keys.begin(), keys.end(), key.t, [](const Keyframe& k, double time) { return k.t < time; });
+  if (at != keys.end() && std::abs(at->t - key.t) <= 1e-9) {
+    *at = key;
+  } else {
+    keys.insert(at, key);
+  }
+}
+
+bool KeyframeTrack::removeKey(double t, double tolerance) {
+  const auto at =
+      std::find_if(keys.begin(), keys.end(), [&](const Keyframe& k) { return std::abs(k.t - t) <= tolerance; });
+  if (at == keys.end()) return false;
+  keys.erase(at);
+  return true;
+}
+
+void AnimationSettings::validate() const {
+  if (!std::isfinite(fps) || fps <= 0.0 || fps > 1000.0)
+    throw ModelError("fps", "frames per second must be in (0, 1000]");
+  if (!std::isfinite(start)) throw ModelError("start", "the start time must be a finite number");
+  if (!std::isfinite(end)) throw ModelError("end", "the end time must be a finite number");
+  if (end < start) throw ModelError("end", "the animation must not end before it starts");
+}
+
+}  // namespace gridifs

@@ -1,0 +1,59 @@
+#pragma once
+// Keyframe tracks: a numeric parameter of the project, addressed by its JSON path
+// ("functions[0].ops[1].k", "camera.yaw"), animated by keys {t, v, interp}. A key's
+// interpolation governs the segment from it to the next key: `step` holds its value,
+// `linear` blends, `smooth` is a cubic Hermite segment with Catmull-Rom tangents (finite
+// differences over the neighbouring keys, so uneven key spacing stays smooth). Before the first
+// key and after the last the end value holds.
+//
+// Thread-safety: plain values; evaluate from any thread.
+#include <map>
+#include <string>
+#include <vector>
+
+namespace gridifs {
+
+enum class KeyInterpolation { Step, Linear, Smooth };
+
+const char* toString(KeyInterpolation interpolation);
+/// Parses "step", "linear" or "smooth"; returns false for anything else.
+bool parseKeyInterpolation(const std::string& text, KeyInterpolation& out);
+
+struct Keyframe {
+  double t = 0.0;  // seconds
+  double v = 0.0;
+  KeyInterpolation interp = KeyInterpolation::Linear;
+  bool operator==(const Keyframe&) const = default;
+};
+
+struct KeyframeTrack {
+  std::vector<Keyframe> keys;  // strictly increasing t
+  bool operator==(const KeyframeTrack&) const = default;
+
+  /// The track's value at time t. Expects at least one key.
+  double valueAt(double t) const;
+  /// Throws ModelError (path "[i].t", "[i].v") for an empty track, keys out of time order or
+  /// duplicated, and non-finite times or values.
+  void validate() const;
+  /// Sets (or replaces, at the same time) a key and keeps the keys ordered.
+  void setKey(const Keyframe& key);
+  /// Removes the key at time t (within `tolerance`); false when there is none.
+  bool removeKey(double t, double tolerance = 1e-9);
+};
+
+/// All tracks of a project, by JSON path (ordered, so files save in a stable order).
+using KeyframeTracks = std::map<std::string, KeyframeTrack>;
+
+/// The project's timeline: "animation": {"fps", "start", "end", "loop"} (seconds).
+struct AnimationSettings {
+  double fps = 24.0;
+  double start = 0.0;
+  double end = 4.0;
+  bool loop = true;
+  bool operator==(const AnimationSettings&) const = default;
+
+  /// Throws ModelError for fps ≤ 0 or > 1000, non-finite values, or end before start.
+  void validate() const;
+};
+
+}  // namespace gridifs
