@@ -375,8 +375,8 @@ FlameImport importFlameGenome(const FlameGenome& genome, const FlameImportOption
       cam.target = Vec3(0.0, out.frame.scale * out.frame.zCenter, 0.0);
       if (genome.centerX != 0.0 || genome.centerY != 0.0)
         out.warnings.push_back(
-            "the flame's perspective eye is off the view's centre; GridIFS's camera looks from straight above the "
-            "centre, so parallax differs slightly");
+            "the flame's perspective eye is off the view's centre; GridIFS's camera looks straight at the centre, "
+            "so parallax differs slightly");
       if (cam.distance - cam.target.y < 1.0)
         out.warnings.push_back("the flame's eye is inside the attractor's domain; points behind it are not drawn");
     } else {
