@@ -242,4 +242,57 @@ Palette resolvePalette(const std::string& reference, const std::filesystem::path
   return builtinPalette(reference);
 }
 
+namespace {
+
+/// RGB in [0, 1] → hue in [0, 6), saturation and value in [0, 1] (the hexcone model).
+std::array<double, 3> rgbToHsv(double r, double g, double b) {
+  const double max = std::max({r, g, b}), min = std::min({r, g, b}), del = max - min;
+  const double s = max > 0.0 ? del / max : 0.0;
+  double h = 0.0;
+  if (s > 0.0) {
+    const double rc = (max - r) / del, gc = (max - g) / del, bc = (max - b) / del;
+    if (r == max)
+      h = bc - gc;
+    else if (g == max)
+      h = 2.0 + rc - bc;
+    else
+      h = 4.0 + gc - rc;
+    if (h < 0.0) h += 6.0;
+  }
+  return {h, s, max};
+}
+
+std::array<double, 3> hsvToRgb(double h, double s, double v) {
+  h = std::fmod(h, 6.0);
+  if (h < 0.0) h += 6.0;
+  const int sector = std::min(5, int(std::floor(h)));
+  const double f = h - sector, p = v * (1.0 - s), q = v * (1.0 - s * f), t = v * (1.0 - s * (1.0 - f));
+  switch (sector) {
+    case 0:
+      return {v, t, p};
+    case 1:
+      return {q, v, p};
+    case 2:
+      return {p, v, t};
+    case 3:
+      return {p, q, v};
+    case 4:
+      return {t, p, v};
+    default:
+      return {v, p, q};
+  }
+}
+
+}  // namespace
+
+Palette rotatePaletteHue(const Palette& palette, double turns) {
+  Palette out = palette;
+  for (Rgb& c : out.colors) {
+    const auto hsv = rgbToHsv(c.r, c.g, c.b);
+    const auto rgb = hsvToRgb(hsv[0] + 6.0 * turns, hsv[1], hsv[2]);
+    c = {float(rgb[0]), float(rgb[1]), float(rgb[2])};
+  }
+  return out;
+}
+
 }  // namespace gridifs

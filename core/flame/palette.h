@@ -70,6 +70,11 @@ std::string serializePaletteJson(const Palette& palette);
 /// A built-in palette by name. Throws PaletteError for an unknown name.
 Palette builtinPalette(const std::string& name);
 
+/// `palette` with every color's hue turned by `turns` of a full circle in HSV space, as flam3
+/// applies a genome's `hue` to the palette it takes from its collection (hue in sixths of a
+/// turn, saturation and value kept). Pure.
+Palette rotatePaletteHue(const Palette& palette, double turns);
+
 /// Resolves a palette reference (see the top of this file). `projectFolder` anchors relative
 /// "file:" paths. Throws PaletteError with a sentence naming the reference.
 Palette resolvePalette(const std::string& reference, const std::filesystem::path& projectFolder = {});

@@ -51,8 +51,9 @@ FlameAffine affine(const std::string& text, const std::string& what) {
 
 const std::set<std::string>& structuralAttributes() {
   static const std::set<std::string> names = {
-      "weight", "color",   "color_speed", "symmetry",         "coefs",           "post",     "chaos",  "opacity",
-      "name",   "animate", "var_color",   "motion_frequency", "motion_function", "plotmode", "visible"};
+      "weight",  "color",   "color_speed", "symmetry",         "coefs",           "post",     "chaos",   "opacity",
+      "name",    "animate", "var_color",   "motion_frequency", "motion_function", "plotmode", "visible", "yzCoefs",
+      "zxCoefs", "yzPost",  "zxPost"};
   return names;
 }
 
@@ -80,6 +81,17 @@ FlameXform parseXform(const pugi::xml_node& node, const std::string& where, bool
   if (!coefs) fail(where + " has no coefs");
   x.coefs = affine(coefs.value(), where + " coefs");
   if (const pugi::xml_attribute post = node.attribute("post")) x.post = affine(post.value(), where + " post");
+  // JWildfire's 3D affine parts; an identity part is the same as none.
+  auto part = [&](const char* name, std::optional<FlameAffine>& into) {
+    if (const pugi::xml_attribute a = node.attribute(name)) {
+      const FlameAffine m = affine(a.value(), where + " " + name);
+      if (!m.isIdentity()) into = m;
+    }
+  };
+  part("yzCoefs", x.yz);
+  part("zxCoefs", x.zx);
+  part("yzPost", x.postYz);
+  part("zxPost", x.postZx);
   if (const pugi::xml_attribute chaos = node.attribute("chaos")) {
     x.chaos = numbers(chaos.value(), where + " chaos");
     for (double c : x.chaos)
@@ -173,6 +185,17 @@ FlameGenome parseGenome(const pugi::xml_node& flame, std::size_t index) {
   g.estimator_curve = number(flame, "estimator_curve", g.estimator_curve, where);
   if (flame.attribute("palette")) g.paletteNumber = int(number(flame, "palette", -1.0, where));
   g.hue = number(flame, "hue", 0.0, where);
+  g.camPitch = number(flame, "cam_pitch", 0.0, where);
+  g.camYaw = number(flame, "cam_yaw", 0.0, where);
+  // JWildfire writes cam_persp, Apophysis 7X and Fractorium cam_perspective.
+  g.camPerspective = number(flame, "cam_persp", number(flame, "cam_perspective", 0.0, where), where);
+  g.camZpos = number(flame, "cam_zpos", 0.0, where);
+  g.camZoom = number(flame, "cam_zoom", 1.0, where);
+  if (!(g.camZoom > 1e-6 && g.camZoom < 1e6)) fail(where + " cam_zoom is out of range");
+  if (std::fabs(g.camPitch) > 1e3 || std::fabs(g.camYaw) > 1e3) fail(where + " cam_pitch or cam_yaw is out of range");
+  if (std::fabs(g.camPerspective) > 1e3 || std::fabs(g.camZpos) > 1e6)
+    fail(where + " cam_perspective or cam_zpos is out of range");
+  const bool preserveZ = number(flame, "preserve_z", number(flame, "new_linear", 0.0, where), where) != 0.0;
   if (const pugi::xml_attribute hint = flame.attribute("gridifs_frame")) {
     const auto v = numbers(hint.value(), where + " gridifs_frame");
     if (v.size() != 3 || !(v[2] > 0.0)) fail(where + " gridifs_frame needs a centre and a positive scale");
@@ -180,7 +203,6 @@ FlameGenome parseGenome(const pugi::xml_node& flame, std::size_t index) {
   }
 
   std::set<std::string> randomLeftOut, unknownLeftOut;
-  bool threeD = false;
   std::array<Rgb, Palette::kSize> colors{};
   int colorEntries = 0;
   for (const pugi::xml_node child : flame.children()) {
@@ -190,9 +212,11 @@ FlameGenome parseGenome(const pugi::xml_node& flame, std::size_t index) {
         fail(where + " has more than " + std::to_string(flame_limits::kMaxXforms) + " xforms");
       g.xforms.push_back(
           parseXform(child, where + " xform " + std::to_string(g.xforms.size()), false, randomLeftOut, unknownLeftOut));
+      g.xforms.back().preserveZ = preserveZ;
     } else if (tag == "finalxform") {
       if (g.finalXform) fail(where + " has more than one finalxform");
       g.finalXform = parseXform(child, where + " finalxform", true, randomLeftOut, unknownLeftOut);
+      g.finalXform->preserveZ = preserveZ;
     } else if (tag == "color") {
       const int i = int(number(child, "index", -1.0, where + " color"));
       if (i < 0 || i > 255) fail(where + " has a color entry whose index is not in 0..255");
@@ -221,11 +245,15 @@ FlameGenome parseGenome(const pugi::xml_node& flame, std::size_t index) {
     g.palette = p;
   }
   if (g.xforms.empty()) fail(where + " has no xforms");
-  for (const auto& attr : flame.attributes()) {
-    const std::string n = attr.name();
-    threeD |= n == "cam_pitch" || n == "cam_yaw" || n == "cam_perspective" || n == "cam_zpos";
-  }
-  for (const std::string& u : unknownLeftOut) threeD |= u.find("3D") != std::string::npos || u.rfind("z", 0) == 0;
+  g.threeD = g.camPitch != 0.0 || g.camYaw != 0.0 || g.camPerspective != 0.0;
+  for (const FlameXform& x : g.xforms) g.threeD |= x.isThreeD();
+  if (g.finalXform) g.threeD |= g.finalXform->isThreeD();
+  // What a GridIFS scene cannot hold: a random blur of the camera, fog, moved camera positions.
+  std::string camera;
+  for (const char* name : {"cam_dof", "cam_zdimish", "cam_pos_x", "cam_pos_y", "cam_pos_z"})
+    if (number(flame, name, 0.0, where) != 0.0) camera += std::string(camera.empty() ? "" : ", ") + name;
+  if (!camera.empty())
+    g.warnings.push_back("the camera settings " + camera + " have no GridIFS equivalent and were left out");
   if (!randomLeftOut.empty()) {
     std::string list;
     for (const auto& n : randomLeftOut) list += (list.empty() ? "" : ", ") + n;
@@ -236,30 +264,76 @@ FlameGenome parseGenome(const pugi::xml_node& flame, std::size_t index) {
     for (const auto& n : unknownLeftOut) list += (list.empty() ? "" : ", ") + n;
     g.warnings.push_back("unknown or unsupported attributes were left out: " + list);
   }
-  if (threeD) g.warnings.push_back("3D camera and z attributes are not imported: the genome is read as 2D");
-  if (g.hue != 0.0) g.warnings.push_back("the palette hue rotation was ignored");
   return g;
 }
 
 }  // namespace
 
-double FlameGenome::pixelsPerUnit() const { return scale * std::pow(2.0, zoom); }
+double FlameGenome::pixelsPerUnit() const { return scale * std::pow(2.0, zoom) * camZoom; }
+
+namespace {
+
+/// An affine map with JWildfire's 3D parts: the xy part's linear terms, then yz mixes y and z,
+/// then zx mixes x and z, then all translations add (JWildfire's full affine step).
+FlamePoint applyAffine3(const FlameAffine& xy, const std::optional<FlameAffine>& yz,
+                        const std::optional<FlameAffine>& zx, FlamePoint p) {
+  if (!yz && !zx) return xy.apply(p);
+  double x = xy.a * p.x + xy.b * p.y, y = xy.d * p.x + xy.e * p.y, z = p.z;
+  double tx = xy.c, ty = xy.f, tz = 0.0;
+  if (yz) {
+    const double ny = yz->a * y + yz->b * z, nz = yz->d * y + yz->e * z;
+    y = ny;
+    z = nz;
+    ty += yz->c;
+    tz += yz->f;
+  }
+  if (zx) {
+    const double nx = zx->a * x + zx->b * z, nz = zx->d * x + zx->e * z;
+    x = nx;
+    z = nz;
+    tx += zx->c;
+    tz += zx->f;
+  }
+  return {x + tx, y + ty, z + tz};
+}
+
+}  // namespace
 
 FlamePoint FlameXform::apply(FlamePoint p) const {
-  const FlamePoint t = coefs.apply(p);
-  VariationInput in{t.x, t.y, coefs, &params};
+  const FlamePoint t = applyAffine3(coefs, yz, zx, p);
+  VariationInput in{t.x, t.y, coefs, &params, t.z};
   FlamePoint sum;
+  bool flatten = false;
   for (const auto& [name, weight] : variations) {
     const FlameVariation* v = findFlameVariation(name);
     const FlamePoint q = v->apply(in, weight);
     sum.x += q.x;
     sum.y += q.y;
+    if (flameVariationWritesZ(name))
+      sum.z += q.z;
+    else if (preserveZ)
+      sum.z += weight * t.z;
+    flatten |= name == "flatten";
   }
-  return post.apply(sum);
+  if (flatten) sum.z = 0.0;
+  return applyAffine3(post, postYz, postZx, sum);
 }
 
 bool FlameXform::isAffine() const {
-  return std::all_of(variations.begin(), variations.end(), [](const auto& v) { return v.first == "linear"; });
+  return std::all_of(variations.begin(), variations.end(),
+                     [](const auto& v) { return isAffineFlameVariation(v.first); });
+}
+
+bool FlameXform::xyDependsOnZ() const {
+  // The pre-affine's x and y at z = 1 and z = 0 differ exactly when z is mixed in.
+  const FlamePoint a = applyAffine3(coefs, yz, zx, {0.0, 0.0, 0.0}), b = applyAffine3(coefs, yz, zx, {0.0, 0.0, 1.0});
+  return a.x != b.x || a.y != b.y;
+}
+
+bool FlameXform::isThreeD() const {
+  if (yz || zx || postYz || postZx) return true;
+  return std::any_of(variations.begin(), variations.end(),
+                     [](const auto& v) { return flameVariationWritesZ(v.first) && v.first != "linear"; });
 }
 
 std::vector<FlameGenome> parseFlameFile(const std::string& xmlText) {

@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "io/flame_variations.h"
 #include "flame/palette.h"
+#include "io/flame_variations.h"
 
 namespace gridifs {
 
@@ -28,6 +28,11 @@ struct FlameXform {
   double color_speed = 0.5;  // weight of the xform's color in the running mix (legacy: (1 − symmetry)/2)
   FlameAffine coefs;         // the pre-affine map
   FlameAffine post;          // identity unless `post` is given
+  /// JWildfire's 3D affine parts (`yzCoefs`, `zxCoefs`, `yzPost`, `zxPost`, same "a d b e c f"
+  /// order): after the xy part, y and z are mixed by yz, then x and z by zx; the translations add.
+  std::optional<FlameAffine> yz, zx, postYz, postZx;
+  /// The genome's `preserve_z`: planar variations carry w·z instead of dropping z.
+  bool preserveZ = false;
   std::vector<std::pair<std::string, double>> variations;  // deterministic ones, in file order
   std::map<std::string, double> params;                    // variation parameters
   std::vector<double> chaos;  // "xaos" row: weights of the next xform (missing entries are 1)
@@ -35,8 +40,14 @@ struct FlameXform {
 
   /// The whole map: post(Σ_v w_v · V_v(pre(p))) (Draves & Reckase §3, §3.1).
   FlamePoint apply(FlamePoint p) const;
-  /// Whether the map is affine (only `linear`, or no variation at all).
+  /// Whether the map is affine (only linear and the affine z variations, or no variation).
   bool isAffine() const;
+  /// Whether any variation receives a point whose x or y depends on the input z (the 3D
+  /// pre-affine parts mix z in). When not, the map is affine in z for fixed x and y, so two
+  /// grid layers in z sample it exactly.
+  bool xyDependsOnZ() const;
+  /// Whether the xform has 3D parts (z variations or 3D affine parts).
+  bool isThreeD() const;
 };
 
 struct FlameGenome {
@@ -54,7 +65,13 @@ struct FlameGenome {
   double estimator_radius = 9.0, estimator_minimum = 0.0, estimator_curve = 0.4;
   int paletteNumber = -1;          // `palette` attribute: flam3's collection (−1: none)
   std::optional<Palette> palette;  // inline `<palette>` hex or `<color>` entries
-  double hue = 0.0;
+  double hue = 0.0;                // flam3's hue rotation in turns, applied to a `palette` number's colors
+  /// The 3D camera of Apophysis 7X, JWildfire and Fractorium: pitch and yaw in radians as the
+  /// files store them, perspective (1 / the eye's distance from the z = 0 plane), zpos (subtracted
+  /// from z before the camera turns), and JWildfire's extra zoom factor.
+  double camPitch = 0.0, camYaw = 0.0, camPerspective = 0.0, camZpos = 0.0, camZoom = 1.0;
+  /// Whether the genome is 3D: a 3D camera, z variations or 3D affine parts.
+  bool threeD = false;
   /// `gridifs_frame` ("centerX centerY scale"), written by GridIFS's exporter so that importing
   /// the file again restores the project's frame exactly.
   std::optional<std::array<double, 3>> frameHint;
@@ -63,6 +80,7 @@ struct FlameGenome {
   /// Sentences about what was left out (random variations, unknown attributes, 3D attributes).
   std::vector<std::string> warnings;
 
+  /// scale · 2^zoom · cam_zoom.
   double pixelsPerUnit() const;
 };
 

@@ -21,8 +21,9 @@ constexpr double kNodeClamp = 1e4;
 double clampCoordinate(double v) { return std::isfinite(v) ? std::clamp(v, -kNodeClamp, kNodeClamp) : kNodeClamp; }
 
 /// A robust extent of the attractor: a short chaos game in double precision with the genome's
-/// weights and chaos rows; returns the 0.5 % and 99.5 % quantiles of x and y (flame units).
-std::array<double, 4> attractorExtent(const FlameGenome& g) {
+/// weights and chaos rows; returns the 0.5 % and 99.5 % quantiles of x, y and z in the flame
+/// camera's space (`frame`'s camera; 2D genomes: the flame plane, z = 0).
+std::array<double, 6> attractorExtent(const FlameGenome& g, const FlameFrame& frame) {
   const std::size_t n = g.xforms.size();
   std::vector<std::vector<double>> rows(n, std::vector<double>(n, 0.0));
   for (std::size_t i = 0; i < n; ++i)
@@ -30,9 +31,13 @@ std::array<double, 4> attractorExtent(const FlameGenome& g) {
       rows[i][j] = g.xforms[j].weight * (j < g.xforms[i].chaos.size() ? g.xforms[i].chaos[j] : 1.0);
   std::mt19937_64 rng(1);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  std::vector<double> xs, ys;
+  std::vector<double> xs, ys, zs;
   constexpr int kIterations = 120000, kSkip = 20;
-  FlamePoint p{unit(rng), unit(rng)};
+  auto start = [&] {
+    const double x = unit(rng), y = unit(rng);
+    return FlamePoint{x, y, g.threeD ? unit(rng) : 0.0};
+  };
+  FlamePoint p = start();
   std::size_t last = n;  // none
   int skip = kSkip;
   for (int it = 0; it < kIterations; ++it) {
@@ -54,8 +59,9 @@ std::array<double, 4> attractorExtent(const FlameGenome& g) {
     std::size_t k = 0;
     while (k + 1 < n && r >= (*weights)[k]) r -= (*weights)[k++];
     const FlamePoint q = g.xforms[k].apply(p);
-    if (!std::isfinite(q.x) || !std::isfinite(q.y) || std::fabs(q.x) > 1e10 || std::fabs(q.y) > 1e10) {
-      p = {unit(rng), unit(rng)};
+    if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z) || std::fabs(q.x) > 1e10 ||
+        std::fabs(q.y) > 1e10 || std::fabs(q.z) > 1e10) {
+      p = start();
       last = n;
       skip = kSkip;
       continue;
@@ -66,21 +72,30 @@ std::array<double, 4> attractorExtent(const FlameGenome& g) {
       --skip;
       continue;
     }
-    xs.push_back(p.x);
-    ys.push_back(p.y);
+    const FlamePoint c = frame.toCamera(p);
+    xs.push_back(c.x);
+    ys.push_back(c.y);
+    zs.push_back(c.z);
   }
-  if (xs.size() < 100) return {g.centerX, g.centerX, g.centerY, g.centerY};
+  if (xs.size() < 100) return {g.centerX, g.centerX, g.centerY, g.centerY, 0.0, 0.0};
   auto quantile = [](std::vector<double>& v, double q) {
     const std::size_t k = std::size_t(q * double(v.size() - 1));
     std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(k), v.end());
     return v[k];
   };
-  return {quantile(xs, 0.005), quantile(xs, 0.995), quantile(ys, 0.005), quantile(ys, 0.995)};
+  return {quantile(xs, 0.005), quantile(xs, 0.995), quantile(ys, 0.005),
+          quantile(ys, 0.995), quantile(zs, 0.005), quantile(zs, 0.995)};
 }
 
 FlameFrame chooseFrame(const FlameGenome& g, std::vector<std::string>& warnings) {
   FlameFrame frame;
   frame.rotate = g.rotate;
+  frame.threeD = g.threeD;
+  if (g.threeD) {
+    frame.pitch = g.camPitch;
+    frame.yaw = g.camYaw;
+    frame.zpos = g.camZpos;
+  }
   if (g.frameHint) {
     frame.centerX = (*g.frameHint)[0];
     frame.centerY = (*g.frameHint)[1];
@@ -92,14 +107,20 @@ FlameFrame chooseFrame(const FlameGenome& g, std::vector<std::string>& warnings)
   const double ppu = g.pixelsPerUnit();
   const double viewHalf = 0.5 * double(std::max(g.width, g.height)) / ppu;
   // The attractor's extent around the centre, in the view's (rotated) axes.
-  const auto e = attractorExtent(g);
+  const auto e = attractorExtent(g, frame);
   double half = viewHalf;
-  frame.scale = 1.0;
+  const double t = g.rotate * kPi / 180.0;
   for (double x : {e[0], e[1]})
     for (double y : {e[2], e[3]}) {
-      const FlamePoint r = frame.toX({x, y});  // scale 1: rotated offsets from the centre
-      half = std::max({half, std::fabs(r.x), std::fabs(r.y)});
+      // Rotated offsets from the centre in the camera's image plane.
+      const double dx = x - g.centerX, dy = y - g.centerY;
+      const double rx = std::cos(t) * dx - std::sin(t) * dy, ry = std::sin(t) * dx + std::cos(t) * dy;
+      half = std::max({half, std::fabs(rx), std::fabs(ry)});
     }
+  if (g.threeD) {
+    frame.zCenter = 0.5 * (e[4] + e[5]);
+    half = std::max(half, 0.5 * (e[5] - e[4]));
+  }
   half *= 1.05;  // a margin: the quantiles leave the outermost points out
   const double cap = 4.0 * viewHalf;
   if (half > cap) {
@@ -110,21 +131,42 @@ FlameFrame chooseFrame(const FlameGenome& g, std::vector<std::string>& warnings)
   return frame;
 }
 
+/// Grid nodes per axis. 2D genomes: R×R×2 (z collapsed). 3D genomes put the flame camera's depth
+/// on X's y: when the camera is not turned (pitch and yaw 0) that is the flame's z, and an xform
+/// whose variations see an x and y that do not depend on z is affine in z for fixed x and y, so
+/// two layers along y sample it exactly; otherwise (a turned camera, or z mixed into x or y)
+/// depth needs clamp(R/2, 2, 32) layers. Affine xforms are exact with 2×2×2.
+Index3 gridResolution(const FlameXform& x, const FlameFrame& frame, int resolution) {
+  if (x.isAffine()) return {2, 2, 2};
+  if (!frame.threeD) return {resolution, resolution, 2};
+  const bool turned = frame.pitch != 0.0 || frame.yaw != 0.0;
+  const int depth = !turned && !x.xyDependsOnZ() ? 2 : std::clamp(resolution / 2, 2, 32);
+  return {resolution, depth, resolution};
+}
+
+/// The map in X; 2D genomes keep z at 0.
+FlamePoint mapInX(const FlameXform& x, const FlameFrame& frame, const Vec3& u) {
+  const FlamePoint p = frame.fromX({u.x, u.y, frame.threeD ? u.z : 0.0});
+  FlamePoint q = frame.toX(x.apply(frame.threeD ? p : FlamePoint{p.x, p.y, 0.0}));
+  if (!frame.threeD) q.z = 0.0;
+  return q;
+}
+
 Function sampleXform(const FlameXform& x, const FlameFrame& frame, int resolution, const std::string& name) {
   Function fn;
   fn.name = name;
-  const int r = x.isAffine() ? 2 : resolution;
-  fn.resolution = {r, r, 2};
+  const Index3 n = gridResolution(x, frame, resolution);
+  fn.resolution = n;
   fn.weight = x.weight;
   fn.palette_index = x.color;
   fn.color_speed = x.color_speed;
   NodesOp nodes;
-  for (int k = 0; k < 2; ++k)
-    for (int j = 0; j < r; ++j)
-      for (int i = 0; i < r; ++i) {
-        const Vec3 u(-1.0 + 2.0 * i / (r - 1), -1.0 + 2.0 * j / (r - 1), -1.0 + 2.0 * k);
-        const FlamePoint q = frame.toX(x.apply(frame.fromX({u.x, u.y})));
-        const Vec3 target(clampCoordinate(q.x), clampCoordinate(q.y), 0.0);
+  for (int k = 0; k < n[2]; ++k)
+    for (int j = 0; j < n[1]; ++j)
+      for (int i = 0; i < n[0]; ++i) {
+        const Vec3 u(-1.0 + 2.0 * i / (n[0] - 1), -1.0 + 2.0 * j / (n[1] - 1), -1.0 + 2.0 * k / (n[2] - 1));
+        const FlamePoint q = mapInX(x, frame, u);
+        const Vec3 target(clampCoordinate(q.x), clampCoordinate(q.y), frame.threeD ? clampCoordinate(q.z) : 0.0);
         nodes.moves.push_back({{i, j, k}, target - u});
       }
   fn.ops.push_back(Operation{nodes, Center{}, Selection{}, false});
@@ -133,19 +175,51 @@ Function sampleXform(const FlameXform& x, const FlameFrame& frame, int resolutio
 
 }  // namespace
 
+namespace {
+
+/// The rows of the flame camera's turn (JWildfire, Fractorium and Apophysis 7X share it): yaw
+/// about z (the files store it with the opposite sign), then pitch about the turned x axis.
+std::array<std::array<double, 3>, 3> cameraRows(double pitch, double yaw) {
+  const double cy = std::cos(-yaw), sy = std::sin(-yaw), cp = std::cos(pitch), sp = std::sin(pitch);
+  return {{{cy, -sy, 0.0}, {cp * sy, cp * cy, -sp}, {sp * sy, sp * cy, cp}}};
+}
+
+}  // namespace
+
+FlamePoint FlameFrame::toCamera(FlamePoint p) const {
+  if (!threeD) return p;
+  const auto m = cameraRows(pitch, yaw);
+  const double v[3] = {p.x, p.y, p.z - zpos};
+  FlamePoint c;
+  c.x = m[0][0] * v[0] + m[0][1] * v[1] + m[0][2] * v[2];
+  c.y = m[1][0] * v[0] + m[1][1] * v[1] + m[1][2] * v[2];
+  c.z = m[2][0] * v[0] + m[2][1] * v[1] + m[2][2] * v[2];
+  return c;
+}
+
+FlamePoint FlameFrame::fromCamera(FlamePoint c) const {
+  if (!threeD) return c;
+  const auto m = cameraRows(pitch, yaw);  // orthonormal: the inverse is the transpose
+  return {m[0][0] * c.x + m[1][0] * c.y + m[2][0] * c.z, m[0][1] * c.x + m[1][1] * c.y + m[2][1] * c.z,
+          m[0][2] * c.x + m[1][2] * c.y + m[2][2] * c.z + zpos};
+}
+
 FlamePoint FlameFrame::toX(FlamePoint p) const {
+  const FlamePoint q = toCamera(p);
   const double t = rotate * kPi / 180.0, c = std::cos(t), s = std::sin(t);
-  const double dx = p.x - centerX, dy = p.y - centerY;
+  const double dx = q.x - centerX, dy = q.y - centerY;
   // flam3 turns the picture by `rotate` degrees about the centre; in its plane (rows going
   // down with y) the view axes are the plane's axes turned by +rotate (checked against flam3-render).
   const double rx = c * dx - s * dy, ry = s * dx + c * dy;
-  return {scale * rx, -scale * ry};
+  if (threeD) return {scale * rx, -scale * (q.z - zCenter), -scale * ry};
+  return {scale * rx, -scale * ry, scale * q.z};
 }
 
 FlamePoint FlameFrame::fromX(FlamePoint x) const {
   const double t = rotate * kPi / 180.0, c = std::cos(t), s = std::sin(t);
-  const double rx = x.x / scale, ry = -x.y / scale;
-  return {centerX + c * rx + s * ry, centerY - s * rx + c * ry};
+  const double rx = x.x / scale, ry = (threeD ? -x.z : -x.y) / scale;
+  const double depth = threeD ? zCenter - x.y / scale : x.z / scale;
+  return fromCamera({centerX + c * rx + s * ry, centerY - s * rx + c * ry, depth});
 }
 
 FlameFileImport importFlameFile(const std::filesystem::path& file, const std::string& genome,
@@ -182,16 +256,21 @@ FlameFileImport importFlameFile(const std::filesystem::path& file, const std::st
 double flameSamplingError(const Function& function, const FlameXform& map, const FlameFrame& frame) {
   const auto grid = evaluateFunctionAt(function, "");
   const Index3 n = function.resolution;
+  // 2D genomes: the z = 0 plane. 3D: every cell's centre.
+  const int layers = frame.threeD ? n[2] - 1 : 1;
   double worst = 0.0;
-  for (int j = 0; j + 1 < n[1]; ++j)
-    for (int i = 0; i + 1 < n[0]; ++i) {
-      const Vec3 u(-1.0 + (2.0 * i + 1.0) / (n[0] - 1), -1.0 + (2.0 * j + 1.0) / (n[1] - 1), 0.0);
-      const FlamePoint q = frame.toX(map.apply(frame.fromX({u.x, u.y})));
-      if (!std::isfinite(q.x) || !std::isfinite(q.y) || std::fabs(q.x) > kNodeClamp || std::fabs(q.y) > kNodeClamp)
-        continue;
-      const Vec3 g = grid->evaluate(u);
-      worst = std::max(worst, std::hypot(g.x - q.x, g.y - q.y, g.z));
-    }
+  for (int k = 0; k < layers; ++k)
+    for (int j = 0; j + 1 < n[1]; ++j)
+      for (int i = 0; i + 1 < n[0]; ++i) {
+        const Vec3 u(-1.0 + (2.0 * i + 1.0) / (n[0] - 1), -1.0 + (2.0 * j + 1.0) / (n[1] - 1),
+                     frame.threeD ? -1.0 + (2.0 * k + 1.0) / (n[2] - 1) : 0.0);
+        const FlamePoint q = mapInX(map, frame, u);
+        if (!std::isfinite(q.x) || !std::isfinite(q.y) || !std::isfinite(q.z) || std::fabs(q.x) > kNodeClamp ||
+            std::fabs(q.y) > kNodeClamp || std::fabs(q.z) > kNodeClamp)
+          continue;
+        const Vec3 g = grid->evaluate(u);
+        worst = std::max(worst, std::hypot(g.x - q.x, g.y - q.y, g.z - q.z));
+      }
   return worst;
 }
 
@@ -203,25 +282,39 @@ FlameImport importFlameGenome(const FlameGenome& genome, const FlameImportOption
   out.frame = chooseFrame(genome, out.warnings);
   Project& p = out.project;
 
-  // Palette: the genome's own colors, else flam3's collection by number.
+  // Palette: the genome's own colors, else flam3's collection by number, turned by `hue` as
+  // flam3 does when it takes a palette from its collection (flam3 leaves inline colors as they are).
   FlameSettings& fl = p.render.flame;
+  std::optional<Palette> palette = genome.palette;
+  const double hue = std::fmod(genome.hue, 1.0);
   if (genome.palette) {
-    if (options.inlinePaletteReference.empty())
-      throw FlameError("the genome has its own palette but there is no place to save it");
     fl.palette = options.inlinePaletteReference;
-    out.palette = genome.palette;
   } else if (genome.paletteNumber >= 0) {
     fl.palette = "flam3:" + std::to_string(genome.paletteNumber);
+    try {
+      palette = resolvePalette(fl.palette);
+      if (hue != 0.0) {
+        palette = rotatePaletteHue(*palette, hue);
+        palette->name += " hue " + std::to_string(hue);
+        fl.palette = options.inlinePaletteReference;
+      }
+    } catch (const PaletteError&) {
+      out.warnings.push_back("palette " + fl.palette + " is not installed here; function colors are white" +
+                             std::string(hue != 0.0 ? " and the hue rotation is not applied" : ""));
+      palette.reset();
+    }
   } else {
     out.warnings.push_back("the genome names no palette; using the default palette");
-  }
-  std::optional<Palette> palette = genome.palette;
-  if (!palette) {
     try {
       palette = resolvePalette(fl.palette);
     } catch (const PaletteError&) {
       out.warnings.push_back("palette " + fl.palette + " is not installed here; function colors are white");
     }
+  }
+  if (fl.palette == options.inlinePaletteReference) {
+    if (options.inlinePaletteReference.empty())
+      throw FlameError("the genome has its own palette but there is no place to save it");
+    out.palette = palette;
   }
 
   for (std::size_t i = 0; i < genome.xforms.size(); ++i) {
@@ -261,7 +354,7 @@ FlameImport importFlameGenome(const FlameGenome& genome, const FlameImportOption
     }
   }
 
-  // The view: an orthographic camera looking down −z (image x = X's x, image up = X's +y).
+  // The view: a camera looking down −z (image x = X's x, image up = X's +y).
   Camera& cam = p.camera;
   cam.ortho = true;
   cam.yaw = -90.0;
@@ -270,9 +363,31 @@ FlameImport importFlameGenome(const FlameGenome& genome, const FlameImportOption
   const double halfH = 0.5 * genome.height / genome.pixelsPerUnit() * out.frame.scale;
   cam.fov = 2.0 * std::atan(0.5) * 180.0 / kPi;  // 53.13°: halfH = distance / 2
   cam.distance = 2.0 * halfH;
-  if (cam.distance < 1e-3 || cam.distance > 1e4)
+  if (genome.threeD) {
+    // Level with the frame's horizon, looking along +y (image x = X's x, image up = X's +z):
+    // exactly the flame camera's view, and the orbit camera turns about the picture's up axis.
+    cam.pitch = 0.0;
+    if (genome.camPerspective > 0.0) {
+      // The flame's eye sits on the camera's axis at 1 / perspective in front of the plane
+      // c_z = 0, which it shows at the view's scale (zr = 1 − perspective · c_z).
+      cam.ortho = false;
+      cam.distance = out.frame.scale / genome.camPerspective;
+      cam.target = Vec3(0.0, out.frame.scale * out.frame.zCenter, 0.0);
+      if (genome.centerX != 0.0 || genome.centerY != 0.0)
+        out.warnings.push_back(
+            "the flame's perspective eye is off the view's centre; GridIFS's camera looks straight at the centre, "
+            "so parallax differs slightly");
+      if (cam.distance - cam.target.y < 1.0)
+        out.warnings.push_back("the flame's eye is inside the attractor's domain; points behind it are not drawn");
+    } else {
+      if (genome.camPerspective < 0.0)
+        out.warnings.push_back("a negative cam_perspective is not supported; the view is orthographic");
+      cam.distance = std::max(cam.distance, 4.0);  // the eye above all of X
+    }
+    cam.fov = 2.0 * std::atan(halfH / cam.distance) * 180.0 / kPi;
+  }
+  if (cam.distance < 1e-3 || cam.distance > 1e4 || !(cam.fov > 1e-3 && cam.fov < 179.0))
     throw FlameError("the genome's view is too small or too large to frame");
-  cam.target = Vec3(0.0, 0.0, 0.0);
 
   RenderSettings& r = p.render;
   r.width = genome.width;

@@ -13,18 +13,33 @@
 
 namespace gridifs {
 
-/// How the flame plane sits in X: X = scale · R(rotate) · (p − center), with y negated because
-/// flame image rows go down with y while GridIFS's camera looks down −z with +y up. z is 0.
+/// How the flame's space sits in X. 2D genomes: X = scale · R(rotate) · (p − center), with y
+/// negated because flame image rows go down with y while GridIFS's camera looks down −z with +y
+/// up, and z = 0. 3D genomes first turn the point into the flame camera's space,
+/// c = M(pitch, yaw) · (p − (0, 0, zpos)) (the camera of Apophysis 7X, JWildfire and Fractorium),
+/// then map c's x and y as above onto X's x and z (image up is +z) and its depth onto y:
+/// X = scale · (r_x, −(c_z − zCenter), −r_y), so that GridIFS's camera, level and looking along
+/// +y, sees what the flame camera sees (the flame's eye is on the +c_z side).
 struct FlameFrame {
   double centerX = 0.0, centerY = 0.0;
   double scale = 1.0;   // X units per flame unit
   double rotate = 0.0;  // degrees (the genome's `rotate`)
+  bool threeD = false;
+  double pitch = 0.0, yaw = 0.0;  // radians, the genome's cam_pitch and cam_yaw
+  double zpos = 0.0;              // the genome's cam_zpos
+  double zCenter = 0.0;           // camera-space depth at X's z = 0
   FlamePoint toX(FlamePoint p) const;
   FlamePoint fromX(FlamePoint x) const;
+  /// The flame camera's space: M · (p − (0, 0, zpos)) (identity for 2D genomes).
+  FlamePoint toCamera(FlamePoint p) const;
+  FlamePoint fromCamera(FlamePoint c) const;
 };
 
 struct FlameImportOptions {
-  int resolution = 64;  // nodes per axis in x and y for non-affine xforms (2..128)
+  /// Nodes per axis of the image plane for non-affine xforms (2..128). Along depth 2 (2D
+  /// genomes, and 3D ones whose xforms are affine in z as the camera sees it) or
+  /// clamp(R/2, 2, 32) (see gridResolution in the implementation).
+  int resolution = 64;
   /// The palette reference to store when the genome carries its own colors (the caller saves
   /// FlameImport::palette there), e.g. "file:name.palette.json".
   std::string inlinePaletteReference;
@@ -60,7 +75,8 @@ FlameFileImport importFlameFile(const std::filesystem::path& file, const std::st
                                 const std::filesystem::path& paletteFolder);
 
 /// The largest distance (X units) between `function`'s grid and `map` at the centres of the
-/// grid's cells in the z = 0 plane... exposed for tests: evaluates the grid trilinearly.
+/// grid's cells (2D genomes: in the z = 0 plane, the map's z collapsed to 0)... exposed for
+/// tests: evaluates the grid trilinearly.
 double flameSamplingError(const Function& function, const FlameXform& map, const FlameFrame& frame);
 
 }  // namespace gridifs

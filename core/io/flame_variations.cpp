@@ -25,7 +25,14 @@ double param(const VariationInput& in, const char* name, double fallback) {
 FlamePoint scaled(double w, double x, double y) { return {w * x, w * y}; }
 
 // Draves & Reckase, appendix: variations 0–30 and 38–40, 42, 46.
-FlamePoint linear(const VariationInput& in, double w) { return scaled(w, in.x, in.y); }
+// linear carries z as linear3D does: JWildfire, Fractorium and Apophysis 7X treat them alike.
+FlamePoint linear(const VariationInput& in, double w) { return {w * in.x, w * in.y, w * in.z}; }
+// The z variations of Apophysis 7X's 3D extension, as JWildfire and Fractorium evaluate them.
+FlamePoint zscale(const VariationInput& in, double w) { return {0.0, 0.0, w * in.z}; }
+FlamePoint ztranslate(const VariationInput&, double w) { return {0.0, 0.0, w}; }
+FlamePoint zcone(const VariationInput& in, double w) { return {0.0, 0.0, w * std::sqrt(in.x * in.x + in.y * in.y)}; }
+// flatten contributes nothing; FlameXform::apply clears z when the xform has it.
+FlamePoint flatten(const VariationInput&, double) { return {}; }
 FlamePoint sinusoidal(const VariationInput& in, double w) { return scaled(w, std::sin(in.x), std::sin(in.y)); }
 FlamePoint spherical(const VariationInput& in, double w) {
   const double r2 = w / (sumsq(in) + kEps);
@@ -412,16 +419,19 @@ FlamePoint escher(const VariationInput& in, double w) {
 }
 
 const std::vector<const char*>& randomNames() {
-  static const std::vector<const char*> names = {
-      "julia",    "noise",    "julian", "juliascope", "blur",        "gaussian_blur", "radial_blur", "pie",
-      "arch",     "square",   "rays",   "blade",      "twintrian",   "super_shape",   "flower",      "conic",
-      "parabola", "boarders", "cpow",   "pre_blur",   "wedge_julia", "lazysusan",     "edisc"};
+  static const std::vector<const char*> names = {"julia", "noise", "julian", "juliascope", "blur", "gaussian_blur",
+                                                 "radial_blur", "pie", "arch", "square", "rays", "blade", "twintrian",
+                                                 "super_shape", "flower", "conic", "parabola", "boarders", "cpow",
+                                                 "pre_blur", "wedge_julia", "lazysusan", "edisc",
+                                                 // 3D ones (Apophysis 7X, JWildfire, Fractorium)
+                                                 "zblur", "blur3D", "pre_blur3D", "julia3D", "julia3Dz"};
   return names;
 }
 
 const std::vector<const char*>& randomParameterPrefixes() {
-  static const std::vector<const char*> prefixes = {"julian_", "juliascope_", "radial_blur_", "pie_",  "super_shape_",
-                                                    "flower_", "conic_",      "parabola_",    "cpow_", "wedge_julia_"};
+  static const std::vector<const char*> prefixes = {"julian_",      "juliascope_",  "radial_blur_", "pie_",
+                                                    "super_shape_", "flower_",      "conic_",       "parabola_",
+                                                    "cpow_",        "wedge_julia_", "julia3D_",     "julia3Dz_"};
   return prefixes;
 }
 
@@ -436,6 +446,11 @@ double variationParameter(const VariationInput& in, const char* name, double fal
 const std::vector<FlameVariation>& flameVariations() {
   static const std::vector<FlameVariation> table = {
       {"linear", {}, linear},
+      {"linear3D", {}, linear},
+      {"zscale", {}, zscale},
+      {"ztranslate", {}, ztranslate},
+      {"zcone", {}, zcone},
+      {"flatten", {}, flatten},
       {"sinusoidal", {}, sinusoidal},
       {"spherical", {}, spherical},
       {"swirl", {}, swirl},
@@ -539,6 +554,15 @@ const FlameVariation* findFlameVariation(const std::string& name) {
   for (const FlameVariation& v : flameVariations())
     if (name == v.name) return &v;
   return nullptr;
+}
+
+bool flameVariationWritesZ(const std::string& name) {
+  return name == "linear" || name == "linear3D" || name == "zscale" || name == "ztranslate" || name == "zcone" ||
+         name == "flatten";
+}
+
+bool isAffineFlameVariation(const std::string& name) {
+  return name == "linear" || name == "linear3D" || name == "zscale" || name == "ztranslate" || name == "flatten";
 }
 
 bool isRandomFlameVariation(const std::string& name) {

@@ -356,15 +356,22 @@ struct ZBufferPlot {
   /// the blended RGB; lane 3 still sums c.
   const v4f* palette = nullptr;
 
-  /// Without colour sums, each plot is deferred by kDefer samples: the cell is prefetched now and
-  /// read-modify-written later, so the cache miss (the buffers are far larger than the caches)
-  /// overlaps the next samples' arithmetic instead of stalling it. The z-test is a minimum and the
-  /// density a sum, so the deferral changes nothing in the result. runChain calls flush().
+  /// Each plot is deferred by kDefer samples: the cell (and the pixel's colour sums) are
+  /// prefetched now and read-modify-written later, so the cache miss (the buffers are far larger
+  /// than the caches) overlaps the next samples' arithmetic instead of stalling it. The z-test is a
+  /// minimum and the density a sum; the pending plots are committed first in, first out, so every
+  /// pixel still receives its colour additions in sample order and the sums are bit-identical to
+  /// plotting at once. runChain calls flush().
   static constexpr unsigned kDefer = 8;
-  struct Pending {
+  struct PendingCell {
     PixelCell* cell = nullptr;
     std::uint64_t key = 0;
   };
+  struct PendingColor : PendingCell {
+    float* sums = nullptr;
+    v4f add{};
+  };
+  using Pending = std::conditional_t<kAccumulateColor, PendingColor, PendingCell>;
   Pending pending[kDefer] = {};
   unsigned next = 0;
 
@@ -376,12 +383,25 @@ struct ZBufferPlot {
     d.store(n + (n != 0xFFFFFFFFu), std::memory_order_relaxed);  // saturating
   }
 
+  [[gnu::always_inline]] static void commit(const Pending& p) {
+    commit(*p.cell, p.key);
+    if constexpr (kAccumulateColor) {
+      for (int k = 0; k < 4; ++k) {
+        std::atomic_ref<float> s(p.sums[k]);
+        s.store(s.load(std::memory_order_relaxed) + p.add[k], std::memory_order_relaxed);
+      }
+    }
+  }
+
   void flush() {
-    for (Pending& p : pending)
+    // Oldest first: the ring's next slot holds the oldest pending plot.
+    for (unsigned k = 0; k < kDefer; ++k) {
+      Pending& p = pending[(next + k) % kDefer];
       if (p.cell) {
-        commit(*p.cell, p.key);
+        commit(p);
         p.cell = nullptr;
       }
+    }
   }
 
   [[gnu::always_inline]] int operator()(v4f q, v4f col) {
@@ -394,14 +414,9 @@ struct ZBufferPlot {
     const std::size_t pixel = std::size_t(std::uint32_t(ixy[1])) * cam.stride + std::uint32_t(ixy[0]);
     const std::uint64_t key = (std::uint64_t(std::bit_cast<std::uint32_t>(depth)) << 32) | packColor(col);
     PixelCell& cell = cells[pixel];
-    if constexpr (!kAccumulateColor) {
-      __builtin_prefetch(&cell, 1);
-      Pending& slot = pending[next++ % kDefer];
-      if (slot.cell) commit(*slot.cell, slot.key);
-      slot = {&cell, key};
-      return 1;
-    }
-    commit(cell, key);
+    __builtin_prefetch(&cell, 1);
+    Pending& slot = pending[next++ % kDefer];
+    if (slot.cell) commit(slot);
     if constexpr (kAccumulateColor) {
       v4f add = col;
       if (palette) {  // flam3's linear palette mode: index c·256, blend entries i and i+1
@@ -412,10 +427,14 @@ struct ZBufferPlot {
         add = palette[i] + (palette[i + 1] - palette[i]) * frac;
         add[3] = col[3];
       }
-      for (int k = 0; k < 4; ++k) {
-        std::atomic_ref<float> s(colorSums[pixel * 4 + k]);
-        s.store(s.load(std::memory_order_relaxed) + add[k], std::memory_order_relaxed);
-      }
+      float* sums = colorSums + pixel * 4;
+      __builtin_prefetch(sums, 1);
+      slot.cell = &cell;
+      slot.key = key;
+      slot.sums = sums;
+      slot.add = add;
+    } else {
+      slot = {&cell, key};
     }
     return 1;
   }

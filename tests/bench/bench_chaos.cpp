@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "tests/bench/canonical_scene.h"
+#include "flame/palette.h"
 #include "render/chaos_kernel.h"
 #include "render/chaos_renderer.h"
 #include "render/compiled_ifs.h"
@@ -61,6 +62,11 @@ GRIDIFS_KERNEL_CLONES void runKernel(kernel::ChainState& chain, const kernel::Ho
   kernel::runChain(chain, ifs, count, plot, counters);
 }
 
+GRIDIFS_KERNEL_CLONES void runKernel(kernel::ChainState& chain, const kernel::HotIfs& ifs, std::int64_t count,
+                                     kernel::ZBufferPlot<true>& plot, kernel::ChainCounters& counters) {
+  kernel::runChain(chain, ifs, count, plot, counters);
+}
+
 /// The canonical scene varied: 0 as is (palette indices 0, 0.5, 1), 1 every palette index 0
 /// (the default of a new function), 2 an all-red IFS (green and blue 0 in every function), 3 with
 /// a transition matrix in which no function follows itself (the Markov-chain walk). In 1 and 2 a
@@ -80,8 +86,9 @@ Project kernelScene(int variant) {
 }
 
 /// The kernel alone on the calling thread (no pool) for scene `variant` (see kernelScene), with
-/// denormals flushed as the renderer's workers do (`flush` 1) or not (0).
-void runKernelBenchmark(benchmark::State& state, int variant, bool flush) {
+/// denormals flushed as the renderer's workers do (`flush` 1) or not (0); with `flameColours`
+/// the flame display's palette colour sums too (a 1024² sum buffer, the ember palette).
+void runKernelBenchmark(benchmark::State& state, int variant, bool flush, bool flameColours = false) {
   const Project scene = kernelScene(variant);
   const RenderJob job = RenderJob::fromProject(scene, 1);
   const auto compiled = compileIfs(scene);
@@ -96,13 +103,23 @@ void runKernelBenchmark(benchmark::State& state, int variant, bool flush) {
   hotIfs.skip = job.skip;
   const kernel::HotCamera cam = kernel::makeHotCamera(OrbitCamera(job.camera, job.width, job.height));
   std::vector<kernel::PixelCell> cells(std::size_t(job.width) * job.height);
+  std::vector<float> sums(flameColours ? cells.size() * 4 : 0);
+  std::vector<kernel::v4f> palette;
+  for (const Rgb& c : builtinPalette("ember").colors) palette.push_back(kernel::v4f{c.r, c.g, c.b, 0.0f});
+  palette.push_back(palette.back());
   kernel::ZBufferPlot<false> plot{cam, cells.data(), nullptr};
+  kernel::ZBufferPlot<true> flamePlot{cam, cells.data(), sums.data(), palette.data()};
   kernel::ChainState chain = kernel::ChainState::start(1, 0, job.skip);
   kernel::ChainCounters counters;
   std::optional<kernel::DenormalsAreZero> flushDenormals;
   if (flush) flushDenormals.emplace();
   const double cpu0 = processCpuSeconds();
-  for (auto _ : state) runKernel(chain, hotIfs, 1 << 22, plot, counters);
+  for (auto _ : state) {
+    if (flameColours)
+      runKernel(chain, hotIfs, 1 << 22, flamePlot, counters);
+    else
+      runKernel(chain, hotIfs, 1 << 22, plot, counters);
+  }
   state.SetItemsProcessed(counters.samples);
   state.counters["points_per_cpu_second"] = double(counters.samples) / (processCpuSeconds() - cpu0);
   state.counters["plotted_fraction"] = double(counters.plotted) / double(counters.samples);
@@ -111,6 +128,10 @@ void runKernelBenchmark(benchmark::State& state, int variant, bool flush) {
 /// Points per CPU second, robust to a busy machine. Arg 1: with a transition matrix.
 void BM_Kernel(benchmark::State& state) { runKernelBenchmark(state, state.range(0) == 1 ? 3 : 0, true); }
 BENCHMARK(BM_Kernel)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->MinTime(1.0);
+
+/// The z-buffer (arg 0) against the flame display's colour sums (arg 1), same scene and thread.
+void BM_KernelFlame(benchmark::State& state) { runKernelBenchmark(state, 0, true, state.range(0) == 1); }
+BENCHMARK(BM_KernelFlame)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->MinTime(1.0);
 
 /// The denormal pair: every colour variant at the same rate with flushing (within noise), and the
 /// stall it prevents without (args: variant, flush).

@@ -3,13 +3,14 @@
 // test_flam3_crosscheck.cpp), round trips, genome selection and bad input.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstdio>
 #include <nlohmann/json.hpp>
 
+#include "flam3_compare.h"
 #include "io/flame_genome.h"
 #include "io/project_io.h"
 #include "model/stack_evaluator.h"
-#include "flam3_compare.h"
 #include "run_command.h"
 
 using namespace gridifs;
@@ -108,6 +109,92 @@ TEST(FlameCli, ImportedNonlinearGenomesMatchFlam3) {
     EXPECT_GE(c.corrLuma, 0.93) << which;
     EXPECT_LE(std::fabs(c.median), 0.1) << which;
   }
+}
+
+namespace {
+
+/// The mean color (unassociated, alpha-weighted) of an RGBA PNG.
+std::array<double, 3> meanColor(const std::filesystem::path& png) {
+  const Planes p = readRgba(png);
+  std::array<double, 3> sum{0, 0, 0};
+  double alpha = 0;
+  for (std::size_t i = 0; i < std::size_t(p.width) * p.height; ++i) {
+    const float* px = &p.rgba[i * 4];
+    for (int c = 0; c < 3; ++c) sum[std::size_t(c)] += px[3] * px[c];
+    alpha += px[3];
+  }
+  for (double& c : sum) c /= std::max(alpha, 1e-9);
+  return sum;
+}
+
+}  // namespace
+
+TEST(FlameCli, HueRotationMatchesFlam3) {
+  // flam3 turns the hue of a palette it takes from its collection by `hue` turns.
+  if (!haveFlam3()) GTEST_SKIP() << "flam3-render (flam3-utils) is not installed";
+  const ScratchDir dir("flame-import-hue");
+  const AlphaComparison c = crossCheckImported("sierpinski_hue.flam3", "0", dir);
+  ASSERT_TRUE(c.valid);
+  std::printf("[import crosscheck hue 0.3] %s\n", c.summary().c_str());
+  EXPECT_GE(c.corrLuma, 0.99);
+  EXPECT_TRUE(std::filesystem::exists(dir.path / "imported.palette.json"));
+  const auto flam3 = meanColor(dir.path / "flam3.png"), gridifs = meanColor(dir.path / "gridifs.png");
+  const ScratchDir plainDir("flame-import-hue-plain");
+  const auto plainPng = plainDir.path / "plain.png";
+  ASSERT_TRUE(renderWithFlam3(kData / "sierpinski2d.flam3", plainPng));
+  const auto plain = meanColor(plainPng);
+  double shift = 0;
+  for (int k = 0; k < 3; ++k) {
+    const std::size_t i = std::size_t(k);
+    std::printf("[hue] channel %d: flam3 %.4f gridifs %.4f (hue 0: %.4f)\n", k, flam3[i], gridifs[i], plain[i]);
+    EXPECT_NEAR(gridifs[i], flam3[i], 0.02) << k;
+    shift = std::max(shift, std::fabs(plain[i] - flam3[i]));
+  }
+  EXPECT_GT(shift, 0.05);  // the rotation changes the picture's colors: the check can fail
+}
+
+TEST(FlameCli, ZVariationsSeenFromAboveMatchFlam3) {
+  // A genome with z variations and 3D affine parts, seen by a camera straight from above:
+  // flam3-render, which ignores the 3D attributes, draws the same picture.
+  if (!haveFlam3()) GTEST_SKIP() << "flam3-render (flam3-utils) is not installed";
+  const ScratchDir dir("flame-import-z-topdown");
+  const AlphaComparison c = crossCheckImported("zvariations_topdown.flame", "0", dir);
+  ASSERT_TRUE(c.valid);
+  std::printf("[import crosscheck z variations from above] %s\n", c.summary().c_str());
+  EXPECT_GE(c.corrAlpha, 0.99);
+  EXPECT_GE(c.corrLuma, 0.99);
+  EXPECT_LE(std::fabs(c.median), 0.03);
+  // 3D genomes are seen level, along +y: X's y is the flame's depth, which xform 0 halves
+  // (linear carries z, zscale −0.5 takes half of it away).
+  const Project p = loadProject(dir.path / "imported.gridifs");
+  EXPECT_EQ(p.camera.pitch, 0.0);
+  const auto grid = evaluateFunctionAt(p.functions[0], "");
+  EXPECT_NEAR(grid->evaluate(Vec3(0.3, 0.5, -0.2)).y - grid->evaluate(Vec3(0.3, -0.5, -0.2)).y, 0.5, 1e-9);
+}
+
+TEST(FlameCli, ImportsThreeDimensionalGenomes) {
+  const ScratchDir dir("flame-import-3d");
+  const auto out = dir.path / "tetra.gridifs";
+  const CommandResult r = runGridifs("import-flame " + quote((kData / "tetrahedron3d.flame").string()) +
+                                     " --genome tetrahedron-perspective -o " + quote(out.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.err.find("2D"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("cam_dof"), std::string::npos) << r.err;
+  const Project p = loadProject(out);
+  EXPECT_FALSE(p.camera.ortho);
+  for (const Function& f : p.functions) EXPECT_EQ(f.resolution, (Index3{2, 2, 2}));
+  for (const char* mode : {"zbuffer", "flame"}) {
+    const CommandResult render = runGridifs("render " + quote(out.string()) + " -o " +
+                                            quote((dir.path / (std::string(mode) + ".png")).string()) + " --mode " +
+                                            mode + " --samples 200000 --threads 2");
+    EXPECT_EQ(render.exitCode, 0) << render.err;
+  }
+  const auto swirl = dir.path / "swirl.gridifs";
+  const CommandResult s = runGridifs("import-flame " + quote((kData / "tetrahedron3d.flame").string()) +
+                                     " --genome 1 --resolution 16 -o " + quote(swirl.string()));
+  ASSERT_EQ(s.exitCode, 0) << s.err;
+  EXPECT_NE(s.err.find("blur3D"), std::string::npos) << s.err;
+  EXPECT_EQ(loadProject(swirl).functions[0].resolution, (Index3{16, 8, 16}));
 }
 
 TEST(FlameCli, ListAndSelectGenomes) {
