@@ -8,6 +8,8 @@
 #include <sstream>
 
 #include "base/atomic_file.h"
+#include "io/animation_io.h"
+#include "io/animation_json.h"
 #include "model/calculator.h"
 #include "model/palette_reference.h"
 #include "model/stack_evaluator.h"
@@ -541,7 +543,9 @@ Project parseProject(const std::string& text) {
       project.transitions.push_back(std::move(weights));
     }
   }
+  readAnimation(root, project);
   validateProject(project);
+  checkTrackPaths(project);
   return project;
 }
 
@@ -568,6 +572,7 @@ std::string serializeProject(const Project& project) {
   root["functions"] = functions;
   if (project.final_function) root["final"] = writeFunction(*project.final_function);
   if (!project.transitions.empty()) root["transitions"] = project.transitions;
+  writeAnimation(project, root);
   return root.dump(2) + "\n";
 }
 

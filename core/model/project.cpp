@@ -36,6 +36,8 @@ std::size_t approximateMemory(const Project& project) {
   for (const Function& f : project.functions) bytes += approximateMemory(f);
   if (project.final_function) bytes += approximateMemory(*project.final_function);
   for (const auto& row : project.transitions) bytes += sizeof(row) + row.capacity() * sizeof(double);
+  for (const auto& [path, track] : project.tracks)
+    bytes += 64 + path.capacity() + track.keys.capacity() * sizeof(Keyframe);  // 64: a map node
   return bytes;
 }
 

@@ -5,6 +5,7 @@
 
 #include "model/flame_settings.h"
 #include "model/function.h"
+#include "model/keyframe_track.h"
 
 namespace gridifs {
 
@@ -36,6 +37,12 @@ struct Project {
   /// "transitions": N×N weights, after function i the next is j with probability
   /// ∝ weight_j · transitions[i][j] (core/transition_matrix.h). Empty: unrestricted.
   std::vector<std::vector<double>> transitions;
+  /// "time": the current time in seconds; fractal fields and the calculator's `t` read it.
+  double time = 0.0;
+  /// "animation": the timeline; absent in projects that were never animated.
+  std::optional<AnimationSettings> animation;
+  /// "tracks": keyframed parameters by JSON path. A track overrides the stored value.
+  KeyframeTracks tracks;
   bool operator==(const Project&) const = default;
 };
 
