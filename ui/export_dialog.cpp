@@ -371,6 +371,7 @@ nlohmann::json ExportDialog::probeJson() const {
           {"phase", phases[int(phase_)]},
           {"running", running()},
           {"progress", progress_.load()},
+          {"output", kind_ == Kind::Mesh ? meshOutput_ : pointsOutput_},
           {"message", message_}};
 }
 

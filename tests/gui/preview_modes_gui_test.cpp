@@ -118,13 +118,21 @@ TEST(PreviewModesGui, ExportMeshThroughTheMenuWritesAPlyThatLoadsBack) {
   // The dialog sizes itself to its contents in its first frames.
   const std::optional<Rect> output = app.waitForStableRect("export.output");
   ASSERT_TRUE(output) << "the export dialog did not open";
-  clickRect(*output);
-  run("xdotool search --name GridIFS windowfocus >/dev/null 2>&1");
-  // Held for a moment: ImGui 1.86 has no input queue, a tap can fall between two frames.
-  xdotool("keydown ctrl+a sleep 0.15 keyup ctrl+a");
-  std::this_thread::sleep_for(200ms);
-  xdotool("type --delay 15 '" + out.string() + "'");
-  std::this_thread::sleep_for(300ms);
+  // Replace the suggested path. On a busy machine a click, the select-all or the first typed
+  // keys can fall between frames, so the text is checked through the probe and typed again
+  // if it did not come out whole.
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    clickRect(*output);
+    run("xdotool search --name GridIFS windowfocus >/dev/null 2>&1");
+    std::this_thread::sleep_for(200ms);
+    // Held for a moment: ImGui 1.86 has no input queue, a tap can fall between two frames.
+    xdotool("keydown ctrl+a sleep 0.15 keyup ctrl+a");
+    std::this_thread::sleep_for(200ms);
+    xdotool("type --delay 15 '" + out.string() + "'");
+    probe = app.waitFor([&](const nlohmann::json& j) { return j["export"]["output"] == out.string(); }, 5s);
+    if (probe["export"]["output"] == out.string()) break;
+  }
+  ASSERT_EQ(probe["export"]["output"], out.string()) << "the typed path did not arrive";
   const std::optional<Rect> exportButton = app.waitForStableRect("export.run");
   ASSERT_TRUE(exportButton);
   clickRect(*exportButton);
