@@ -4,9 +4,30 @@
 #include <cmath>
 #include <cstdio>
 
+#include "app/cli.h"
+#include "render/chaos_renderer.h"
+
 namespace gridifs::cli {
 
-ProgressBar::ProgressBar(std::string label, bool enabled) : label_(std::move(label)), enabled_(enabled) {}
+ProgressBar::ProgressBar(std::string label, bool quiet) : label_(std::move(label)), enabled_(!quiet && stderrIsTerminal()) {}
+
+bool ProgressBar::report(const RenderStats& s) {
+  update(s.samples, s.budget, s.pointsPerSecond, s.done);
+  return true;
+}
+
+bool ProgressBar::fraction(double done) {
+  constexpr std::int64_t kSteps = 1000;
+  update(std::int64_t(std::clamp(done, 0.0, 1.0) * kSteps), kSteps, 0.0, done >= 1.0);
+  return true;
+}
+
+void ProgressBar::message(const std::string& text) {
+  if (!enabled_) return;
+  std::fprintf(stderr, "\r%s: %s\033[K", label_.c_str(), text.c_str());
+  std::fflush(stderr);
+  drawn_ = true;
+}
 
 ProgressBar::~ProgressBar() { finish(); }
 
@@ -43,8 +64,11 @@ void ProgressBar::update(std::int64_t done, std::int64_t total, double pointsPer
     else
       std::snprintf(eta, sizeof eta, "ETA %.0fs", std::ceil(seconds));
   }
-  std::fprintf(stderr, "\r%s [%s] %5.1f%%  %spoints/s  %s\033[K", label_.c_str(), bar.c_str(), 100.0 * fraction,
-               humanCount(pointsPerSecond).c_str(), eta);
+  if (pointsPerSecond > 0.0)
+    std::fprintf(stderr, "\r%s [%s] %5.1f%%  %spoints/s  %s\033[K", label_.c_str(), bar.c_str(), 100.0 * fraction,
+                 humanCount(pointsPerSecond).c_str(), eta);
+  else
+    std::fprintf(stderr, "\r%s [%s] %5.1f%%\033[K", label_.c_str(), bar.c_str(), 100.0 * fraction);
   std::fflush(stderr);
   drawn_ = true;
 }

@@ -6,6 +6,7 @@
 #include <iostream>
 
 #include "app/cli.h"
+#include "app/progress_bar.h"
 #include "mesh/deterministic_ifs.h"
 #include "mesh/mesh_io.h"
 #include "io/project_io.h"
@@ -18,39 +19,6 @@ struct ExportMeshArgs {
   int depth = 0, subdivide = 0, threads = 0;
   bool smooth = false, fit = false, ascii = false;
   std::uint64_t maxFaces = DeterministicLimits{}.maxFaces;
-};
-
-// A one-line bar on stderr, redrawn in place; only on a terminal.
-class ProgressBar {
- public:
-  explicit ProgressBar(bool enabled) : enabled_(enabled) {}
-  ~ProgressBar() { finish(); }
-  bool update(double fraction) {
-    if (!enabled_) return true;
-    const int percent = int(std::floor(fraction * 100.0));
-    if (percent == shown_) return true;
-    shown_ = percent;
-    constexpr int kWidth = 30;
-    const int filled = percent * kWidth / 100;
-    std::fprintf(stderr, "\rexport-mesh [%s%s] %3d%%", std::string(std::size_t(filled), '#').c_str(),
-                 std::string(std::size_t(kWidth - filled), '-').c_str(), percent);
-    std::fflush(stderr);
-    return true;
-  }
-  void finish() {
-    if (enabled_ && shown_ >= 0) std::fputs("\r\033[K", stderr);
-    shown_ = -1;
-  }
-  void message(const char* text) {
-    if (!enabled_) return;
-    std::fprintf(stderr, "\rexport-mesh: %s\033[K", text);
-    std::fflush(stderr);
-    shown_ = 0;
-  }
-
- private:
-  bool enabled_;
-  int shown_ = -1;
 };
 
 BaseMeshSpec baseSpec(const ExportMeshArgs& a, MeshFormat format) {
@@ -110,14 +78,14 @@ int runExportMesh(const ExportMeshArgs& a) {
   if (!formatHasVertexColors(format))
     std::fprintf(stderr, "note: %s files carry no vertex colors; write .ply for colors.\n", meshFormatName(format));
 
-  ProgressBar bar(stderrIsTerminal());
+  ProgressBar bar("export-mesh", false);
   try {
     const IfsMesh base = refineBase(std::move(coarse), spec);
     // Initialised in place: OpenMesh meshes copy on assignment (no move), which would double
     // the peak memory of a large result.
     const DeterministicMesh result =
-        buildDeterministicMesh(ifs, base, options, [&](double f) { return bar.update(f); });
-    bar.message(("writing " + output.string()).c_str());
+        buildDeterministicMesh(ifs, base, options, [&](double f) { return bar.fraction(f); });
+    bar.message("writing " + output.string());
     writeMeshFile(result.mesh, output, MeshWriteOptions{!a.ascii, true});
   } catch (const ModelError& e) {
     bar.finish();

@@ -1,6 +1,7 @@
 // gridifs export-points FILE -o OUT.ply --samples N: the chaos-game points the renderer would plot
 // (same worker streams, skip and final function; not culled to the frame) as a binary
 // little-endian PLY with x y z float and red green blue uchar.
+#include "app/chaos_verb_options.h"
 #include "app/cli.h"
 #include "app/progress_bar.h"
 #include "app/render_device_option.h"
@@ -26,14 +27,11 @@ int runExportPoints(const std::string& file, const std::string& out, RenderOverr
                                   " streams";
   std::string used;
   const PointGenerator generator = pointGeneratorOn(device, used);
-  ProgressBar bar("export-points", !quiet && stderrIsTerminal());
+  ProgressBar bar("export-points", quiet);
   try {
     writePointCloud(
         *setup.ifs, setup.job, out, description,
-        [&](const RenderStats& s) {
-          bar.update(s.samples, s.budget, s.pointsPerSecond, s.done);
-          return true;
-        },
+        [&](const RenderStats& s) { return bar.report(s); },
         generator);
   } catch (const ModelError& e) {
     throw CliError(kBadInput, file + ": " + e.message());
@@ -49,19 +47,10 @@ const VerbRegistration kExportPoints{
     {"export-points",
      "FILE -o OUT.ply [--samples N --seed S --threads T --device auto|gpu|cpu]: chaos-game points with colours",
      [](CLI::App& app) {
-       auto file = std::make_shared<std::string>();
-       auto out = std::make_shared<std::string>();
-       auto o = std::make_shared<RenderOverrides>();
-       auto quiet = std::make_shared<bool>(false);
-       app.add_option("FILE", *file, "project file (.gridifs)")->required();
-       app.add_option("-o,--output", *out, "output point cloud (.ply, binary little-endian)")->required();
-       app.add_option("--samples", o->samples, "chaos-game iterations, e.g. 1e6 (default 1000000)");
-       app.add_option("--seed", o->seed, "random seed (default: the project's)");
-       app.add_option("--threads", o->threads,
-                      "number of worker streams to reproduce (default: all cores, like render)");
-       addDeviceOption(app, o->device);
-       app.add_flag("-q,--quiet", *quiet, "no progress bar");
-       return [=] { return runExportPoints(*file, *out, *o, *quiet); };
+       const auto a = addChaosVerbOptions(app, "output point cloud (.ply, binary little-endian)",
+                                          "chaos-game iterations, e.g. 1e6 (default 1000000)",
+                                          "number of worker streams to reproduce (default: all cores, like render)");
+       return [=] { return runExportPoints(a->file, a->out, a->overrides, a->quiet); };
      }}};
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "app/cli.h"
+#include "app/chaos_verb_options.h"
 #include "app/progress_bar.h"
 #include "app/render_device_option.h"
 #include "app/render_setup.h"
@@ -92,17 +93,14 @@ void writeImage(const RenderImage& image, const std::filesystem::path& out, cons
 /// Throws CliError when interrupted or when at least half of the points were unusable (nothing is written then).
 RenderImage renderWithProgress(const RenderSetup& setup, const RenderJob& job, const std::string& file,
                                const std::string& out, bool quiet, const std::string& device) {
-  ProgressBar bar("render", !quiet && stderrIsTerminal());
+  ProgressBar bar("render", quiet);
   InterruptGuard interrupt;
   RenderImage image;
   try {
     std::string used;
     image = renderOnDevice(
         device, setup.ifs, job, DisplaySettings::fromProject(setup.project),
-        [&](const RenderStats& s) {
-          bar.update(s.samples, s.budget, s.pointsPerSecond, s.done);
-          return !gInterrupted.load();
-        },
+        [&](const RenderStats& s) { return bar.report(s) && !gInterrupted.load(); },
         used);
   } catch (const RenderCancelled&) {
     bar.finish();
@@ -201,20 +199,11 @@ const VerbRegistration kRender{
      "--device auto|gpu|cpu] "
      "[--mode zbuffer|flame --palette P --bit-depth B --transparent]: render headlessly",
      [](CLI::App& app) {
-       auto file = std::make_shared<std::string>();
-       auto out = std::make_shared<std::string>();
-       auto o = std::make_shared<RenderOverrides>();
-       auto quiet = std::make_shared<bool>(false);
-       app.add_option("FILE", *file, "project file (.gridifs)")->required();
-       app.add_option("-o,--output", *out, "output image: .png or .tif (8-bit RGB) or .exr (float RGBA + Z)")
-           ->required();
-       app.add_option("--width", o->width, "image width in pixels (default: the project's)");
-       app.add_option("--height", o->height, "image height in pixels (default: the project's)");
-       app.add_option("--samples", o->samples, "chaos-game iterations in total, e.g. 2e7 (default: the project's)");
-       app.add_option("--seed", o->seed, "random seed (default: the project's)");
-       app.add_option("--threads", o->threads, "render threads (default: all cores; the image depends on it)");
-       addDeviceOption(app, o->device);
-       app.add_flag("-q,--quiet", *quiet, "no progress bar");
+       const auto a = addChaosVerbOptions(app, "output image: .png or .tif (8-bit RGB) or .exr (float RGBA + Z)",
+                                          "chaos-game iterations in total, e.g. 2e7 (default: the project's)",
+                                          "render threads (default: all cores; the image depends on it)");
+       app.add_option("--width", a->overrides.width, "image width in pixels (default: the project's)");
+       app.add_option("--height", a->overrides.height, "image height in pixels (default: the project's)");
        auto flame = std::make_shared<FlameOptions>();
        app.add_option("--mode", flame->mode,
                       "zbuffer (nearest surface) or flame (log density, palette colors); "
@@ -226,7 +215,7 @@ const VerbRegistration kRender{
                       "flame mode: 8 or 16 bits for PNG/TIFF, 16 (half) or 32 "
                       "(float) for EXR");
        app.add_flag("--transparent", flame->transparent, "flame mode: PNG/TIFF with alpha instead of the background");
-       return [=] { return runRender(*file, *out, *o, *quiet, *flame); };
+       return [=] { return runRender(a->file, a->out, a->overrides, a->quiet, *flame); };
      }}};
 
 }  // namespace

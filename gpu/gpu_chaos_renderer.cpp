@@ -328,12 +328,7 @@ void GpuChaosRenderer::snapshot(RenderImage& out, const DisplaySettings& display
   out.generation = s.generation;
   out.stats = s;
   if (!shared_->hasJob) {
-    out.width = out.height = 0;
-    out.rgba.clear();
-    out.depth.clear();
-    out.density.clear();
-    out.colorSums.clear();
-    out.hitPixels = 0;
+    out.clear();
     return;
   }
   if (!shared_->done) {

@@ -74,12 +74,12 @@ void ExportDialog::open(Kind kind, const ModellerState& state) {
 }
 
 void ExportDialog::updatePlan(const ModellerState& state) {
-  if (plan_.valid && plan_.revision == state.document.revision() && plan_.depth == depth_ &&
+  if (plan_.valid && plan_.revision == state.document.revisions().geometry && plan_.depth == depth_ &&
       plan_.subdivide == subdivide_ && plan_.base == base_ && plan_.baseFile == baseFile_ && plan_.smooth == smooth_ &&
       plan_.fit == fit_ && plan_.output == meshOutput_)
     return;
   plan_.valid = true;
-  plan_.revision = state.document.revision();
+  plan_.revision = state.document.revisions().geometry;  // the plan depends on the functions only
   plan_.depth = depth_;
   plan_.subdivide = subdivide_;
   plan_.base = base_;

@@ -183,8 +183,8 @@ void drawFunctionsPanel(ModellerState& state, EditQueue& edits) {
 
   // Contractivity (Gröller & Wegenkittl 1994, §1.1): an IFS function must shrink distances.
   auto& contractivity = state.contractivity;
-  if (contractivity.revision != state.document.revision() || contractivity.function != fi) {
-    contractivity.revision = state.document.revision();
+  if (contractivity.revision != state.document.revisions().geometry || contractivity.function != fi) {
+    contractivity.revision = state.document.revisions().geometry;
     contractivity.function = fi;
     try {
       contractivity.bound = estimateContractivity(*state.document.evaluatedGrid(std::size_t(fi))).bound;

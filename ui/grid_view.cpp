@@ -214,17 +214,11 @@ void GridView::build(ModellerState& state, EditQueue& edits, glm::vec2 size, flo
                               "Alt+click: place center · right-drag: orbit/pan · wheel: zoom · F: frame";
     if (io.MouseWheel != 0.0f && drag_ == Drag::None) zoom(state, edits, io.MouseWheel);
   }
-  if (wheelGestureUntil_ > 0.0 && state.now > wheelGestureUntil_) {
-    edits.end();
-    wheelGestureUntil_ = -1.0;
-  }
+  orbit_.settleWheel(edits, state.now);
   if (drag_ == Drag::None && hovered_) {
     for (int button = 0; button < 3; ++button)
       if (ImGui::IsMouseClicked(button)) {
-        if (wheelGestureUntil_ > 0.0) {
-          edits.end();
-          wheelGestureUntil_ = -1.0;
-        }
+        orbit_.settleWheel(edits, -1.0);
         dragButton_ = button;
         beginDrag(state, edits, mouse);
         break;
@@ -245,15 +239,8 @@ void GridView::build(ModellerState& state, EditQueue& edits, glm::vec2 size, flo
 }
 
 void GridView::zoom(ModellerState& state, EditQueue& edits, float wheel) {
-  const double factor = std::pow(0.87, double(wheel));
-  if (usesProjectCamera()) {
-    if (wheelGestureUntil_ < 0.0) edits.begin("Zoom preview camera");
-    const double distance = std::clamp(state.document.project().camera.distance * factor, 0.05, 500.0);
-    edits.update([distance](Project& p) { p.camera.distance = distance; });
-    wheelGestureUntil_ = state.now + 0.6;
-  } else {
-    camera_.orbit.distance = std::clamp(camera_.orbit.distance * factor, 0.02, 500.0);
-  }
+  if (usesProjectCamera()) orbit_.zoomProject(state.document.project().camera, edits, wheel, state.now);
+  else camera_.orbit = OrbitController::zoomed(camera_.orbit, wheel, 0.02);
 }
 
 void GridView::beginDrag(ModellerState& state, EditQueue& edits, dvec2 mouse) {
@@ -261,13 +248,14 @@ void GridView::beginDrag(ModellerState& state, EditQueue& edits, dvec2 mouse) {
   drag_ = Drag::None;
   dragStart_ = dragLast_ = mouse;
   dragMoved_ = false;
-  dragCamera_ = camera(state).orbit;
   if (dragButton_ == 2 || (dragButton_ == 1 && (io.KeyShift || camera_.axis != ViewAxis::User))) {
     drag_ = Drag::Pan;
+    orbit_.begin(OrbitController::Motion::Pan, camera(state).orbit, mouse);
     return;
   }
   if (dragButton_ == 1) {
     drag_ = Drag::Orbit;
+    orbit_.begin(OrbitController::Motion::Orbit, camera(state).orbit, mouse);
     return;
   }
   const ViewCamera cam = camera(state);
@@ -342,20 +330,8 @@ void GridView::updateDrag(ModellerState& state, EditQueue& edits, dvec2 mouse) {
   switch (drag_) {
     case Drag::Orbit:
     case Drag::Pan: {
-      Camera cam = dragCamera_;
-      if (drag_ == Drag::Orbit) {
-        cam.yaw = dragCamera_.yaw - delta.x * 0.4;
-        cam.pitch = std::clamp(dragCamera_.pitch + delta.y * 0.4, -89.0, 89.0);
-      } else {
-        const ViewCamera vc{camera_.axis, dragCamera_};
-        cam.target = dragCamera_.target - vc.dragDelta(delta.x, delta.y, dragCamera_.target, size_.y);
-      }
-      if (usesProjectCamera()) {
-        if (firstMove) edits.begin(drag_ == Drag::Orbit ? "Orbit preview camera" : "Pan preview camera");
-        edits.update([cam](Project& p) { p.camera = cam; });
-      } else {
-        camera_.orbit = cam;
-      }
+      if (usesProjectCamera()) orbit_.dragProject(edits, mouse, camera_.axis, size_.y, firstMove);
+      else camera_.orbit = orbit_.dragged(mouse, camera_.axis, size_.y);
       break;
     }
     case Drag::Box: break;
@@ -417,6 +393,7 @@ void GridView::updateDrag(ModellerState& state, EditQueue& edits, dvec2 mouse) {
 void GridView::endDrag(ModellerState& state, EditQueue& edits, dvec2 mouse) {
   const ImGuiIO& io = ImGui::GetIO();
   const Drag drag = std::exchange(drag_, Drag::None);
+  orbit_.end();
   if (content_ == Content::FunctionGrid) {
     const Index3 res = state.function().resolution;
     if (drag == Drag::Box) {
@@ -574,7 +551,7 @@ void GridView::render(ModellerState& state, ViewRenderer& renderer) {
   }
   const ViewCamera cam = camera(state);
   Key key;
-  key.revision = state.document.revision();
+  key.revision = state.document.revisions().geometry;  // the views draw the functions only
   key.function = state.activeFunction;
   key.camera = cam.orbit;
   key.axis = cam.axis;

@@ -12,6 +12,7 @@
 #include "ui/edit_queue.h"
 #include "ui/gl_resources.h"
 #include "ui/modeller_state.h"
+#include "ui/orbit_controller.h"
 #include "ui/view_renderer.h"
 
 namespace gridifs::ui {
@@ -66,7 +67,7 @@ class GridView {
 
   /// Everything a view's picture depends on; equal keys mean the texture is still valid.
   struct Key {
-    std::uint64_t revision = 0;
+    std::uint64_t revision = 0;  // Document::revisions().geometry
     int function = -1, op = -1;
     Selection selection;
     Camera camera;
@@ -100,11 +101,10 @@ class GridView {
   int handlePair_ = -1;
   Vec3 handleStart_{0.0}, anchor_{0.0};
   Function dragFunction_;    // the function as it was when a node/handle/placement drag began
-  Camera dragCamera_;        // the camera when an orbit or pan began
   int dragFunctionIndex_ = 0;
   std::size_t pressedNode_ = 0;
   bool pressedWasSelected_ = false;
-  double wheelGestureUntil_ = -1.0;  // a run of wheel steps on the project camera is one undo step
+  OrbitController orbit_;  // orbit, pan and zoom of the user view's project camera or the view's own
 };
 
 }  // namespace gridifs::ui

@@ -80,8 +80,8 @@ float drawMenuBar(AppCommands& app) {
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Operation")) {
-    for (NewOpKind kind : kNewOpKinds)
-      if (ImGui::MenuItem(newOpLabel(kind))) addOperation(s, app.edits, kind);
+    for (const OperationSpec& spec : operationTable())
+      if (spec.addable && ImGui::MenuItem(spec.title)) addOperation(s, app.edits, spec);
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Select")) {

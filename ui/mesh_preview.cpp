@@ -35,15 +35,9 @@ MeshPreview::~MeshPreview() {
 
 void MeshPreview::update(const Document& document) {
   const bool settingsChanged = depth != requestedDepth_ || sphere != requestedSphere_;
-  if (!settingsChanged && haveRequest_ && document.revision() == revision_) return;
-  revision_ = document.revision();
-  const Project& p = document.project();
-  // Camera and render edits bump the revision too; only the functions change the mesh.
-  if (!settingsChanged && haveRequest_ && p.functions == builtFor_.functions &&
-      p.final_function == builtFor_.final_function)
-    return;
-  builtFor_.functions = p.functions;
-  builtFor_.final_function = p.final_function;
+  // Only the functions change the mesh: camera and render edits leave the geometry revision alone.
+  if (!settingsChanged && haveRequest_ && document.revisions().geometry == revision_) return;
+  revision_ = document.revisions().geometry;
   haveRequest_ = true;
   requestedDepth_ = depth;
   requestedSphere_ = sphere;

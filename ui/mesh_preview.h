@@ -80,8 +80,7 @@ class MeshPreview {
   static Result build(const Request& request, std::atomic<double>& progress);
 
   // UI-thread state.
-  std::uint64_t revision_ = 0;
-  Project builtFor_;  // functions and final function of the last request
+  std::uint64_t revision_ = 0;  // Document::revisions().geometry of the last request
   bool haveRequest_ = false;
   int requestedDepth_ = -1;
   bool requestedSphere_ = false;

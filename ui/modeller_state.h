@@ -76,12 +76,12 @@ class ModellerState {
   std::vector<KeyPress> keyPresses;
 
   UiProbe probe;
-  /// The calculator's expression fields keep what the artist typed, even when it does not
+  /// An operation's expression fields keep what the artist typed, even when it does not
   /// parse yet (the op itself only ever holds valid expressions).
   struct {
     int function = -1, op = -1;
-    std::array<std::string, 3> text, base;
-  } calculatorEdit;
+    std::vector<std::string> text, base;
+  } expressionEdit;
   /// Display cache of the active function's contractivity bound (Gröller & Wegenkittl 1994, §1.1).
   struct {
     std::uint64_t revision = 0;

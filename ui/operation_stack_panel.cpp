@@ -12,74 +12,15 @@
 namespace gridifs::ui {
 namespace {
 
-OpParams defaultParams(NewOpKind kind, const ModellerState& state, const Vec3& anchor) {
-  (void)state;
-  switch (kind) {
-    case NewOpKind::Translate: return TranslateOp{Vec3(0.0)};
-    case NewOpKind::Rotate: return RotateOp{Vec3(0.0)};
-    case NewOpKind::Scale: return ScaleOp{Vec3(1.0)};
-    case NewOpKind::Taper: return TaperOp{};
-    case NewOpKind::Twist: return TwistOp{};
-    case NewOpKind::Bend: return BendOp{};
-    case NewOpKind::Magnet: return MagnetOp{anchor, 0.5, 0.0, 2.0};
-    case NewOpKind::Morph: return MorphOp{{MorphPair{anchor, anchor}}, 1.0};
-    case NewOpKind::Calculator: {
-      CalculatorOp c;
-      c.vars[0] = CalculatorVar{0.0, -1.0, 1.0};
-      c.vars[1] = CalculatorVar{0.0, -1.0, 1.0};
-      c.vars[2] = CalculatorVar{0.0, -1.0, 1.0};
-      return c;
-    }
-  }
-  return TranslateOp{};
-}
-
-const char* typeLabel(const Operation& op) {
-  static const char* labels[] = {"Translate", "Rotate", "Scale", "Taper", "Twist",
-                                 "Bend",      "Magnet", "Morph", "Calculator", "Nodes"};
-  return labels[op.params.index()];
-}
-
 std::string summary(const Operation& op) {
-  char text[160] = {};
-  std::visit(
-      [&](const auto& p) {
-        using T = std::decay_t<decltype(p)>;
-        if constexpr (std::is_same_v<T, TranslateOp>) std::snprintf(text, sizeof text, "%.2f %.2f %.2f", p.offset.x, p.offset.y, p.offset.z);
-        else if constexpr (std::is_same_v<T, RotateOp>) std::snprintf(text, sizeof text, "%.0f° %.0f° %.0f°", p.angles.x, p.angles.y, p.angles.z);
-        else if constexpr (std::is_same_v<T, ScaleOp>) std::snprintf(text, sizeof text, "%.2f %.2f %.2f", p.factors.x, p.factors.y, p.factors.z);
-        else if constexpr (std::is_same_v<T, TaperOp> || std::is_same_v<T, TwistOp>)
-          std::snprintf(text, sizeof text, "%s %s k=%.2f", axisName(p.axis), profileName(p.profile), p.k);
-        else if constexpr (std::is_same_v<T, BendOp>) std::snprintf(text, sizeof text, "%s→%s k=%.2f", axisName(p.axis), axisName(p.toward), p.k);
-        else if constexpr (std::is_same_v<T, MagnetOp>) std::snprintf(text, sizeof text, "s=%.2f d=%.2f", p.strength, p.dmax);
-        else if constexpr (std::is_same_v<T, MorphOp>) std::snprintf(text, sizeof text, "%zu pair%s", p.pairs.size(), p.pairs.size() == 1 ? "" : "s");
-        else if constexpr (std::is_same_v<T, CalculatorOp>) std::snprintf(text, sizeof text, "%s", p.x.substr(0, 24).c_str());
-        else if constexpr (std::is_same_v<T, NodesOp>) std::snprintf(text, sizeof text, "%zu move%s", p.moves.size(), p.moves.size() == 1 ? "" : "s");
-      },
-      op.params);
-  std::string s = text;
+  std::string s = operationSummary(op.params);
   if (!op.selection.empty()) s += "  [sel]";
   return s;
 }
 
 }  // namespace
 
-const char* newOpLabel(NewOpKind kind) {
-  switch (kind) {
-    case NewOpKind::Translate: return "Translate";
-    case NewOpKind::Rotate: return "Rotate";
-    case NewOpKind::Scale: return "Scale";
-    case NewOpKind::Taper: return "Taper";
-    case NewOpKind::Twist: return "Twist";
-    case NewOpKind::Bend: return "Bend";
-    case NewOpKind::Magnet: return "Magnet";
-    case NewOpKind::Morph: return "Morph";
-    case NewOpKind::Calculator: return "Calculator";
-  }
-  return "";
-}
-
-void addOperation(ModellerState& state, EditQueue& edits, NewOpKind kind) {
+void addOperation(ModellerState& state, EditQueue& edits, const OperationSpec& spec) {
   state.clampIndices();
   const Function& f = state.function();
   if (int(f.ops.size()) >= limits::kMaxOpsPerFunction) {
@@ -105,11 +46,11 @@ void addOperation(ModellerState& state, EditQueue& edits, NewOpKind kind) {
       }
     anchor = n ? sum / double(n) : Vec3(0.0);
   }
-  op.params = defaultParams(kind, state, anchor);
-  if (kind == NewOpKind::Morph) std::get<MorphOp>(op.params).pairs[0].to = anchor + Vec3(0.0, 0.0, 0.25);
+  op.params = spec.defaults;
+  if (spec.placeAt) spec.placeAt(op.params, anchor);
   const int fi = state.activeFunction;
   const int at = state.activeOp < 0 ? int(f.ops.size()) : state.activeOp + 1;
-  edits.commit(std::string("Add ") + newOpLabel(kind), [fi, at, op](Project& p) {
+  edits.commit(std::string("Add ") + spec.title, [fi, at, op](Project& p) {
     auto& ops = p.functions[std::size_t(fi)].ops;
     ops.insert(ops.begin() + at, op);
   });
@@ -137,8 +78,9 @@ int toolbarRows(float available) {
   const ImGuiStyle& style = ImGui::GetStyle();
   int rows = 1;
   float x = 0.0f;
-  for (NewOpKind kind : kNewOpKinds) {
-    const float w = ImGui::CalcTextSize(newOpLabel(kind)).x + style.FramePadding.x * 2;
+  for (const OperationSpec& spec : operationTable()) {
+    if (!spec.addable) continue;
+    const float w = ImGui::CalcTextSize(spec.title).x + style.FramePadding.x * 2;
     if (x > 0.0f && x + style.ItemSpacing.x + w <= available) {
       x += style.ItemSpacing.x + w;
     } else {
@@ -183,20 +125,22 @@ void drawOperationStackPanel(ModellerState& state, EditQueue& edits) {
     state.probe.item("ops.add");
     contextHelp(state, "Add an operation after the active one, applied to the current selection");
     if (ImGui::BeginPopup("addop")) {
-      for (NewOpKind kind : kNewOpKinds) {
-        if (ImGui::Selectable(newOpLabel(kind))) addOperation(state, edits, kind);
-        state.probe.item(std::string("ops.add.") + newOpLabel(kind));
+      for (const OperationSpec& spec : operationTable()) {
+        if (!spec.addable) continue;
+        if (ImGui::Selectable(spec.title)) addOperation(state, edits, spec);
+        state.probe.item(std::string("ops.add.") + spec.title);
       }
       ImGui::EndPopup();
     }
   } else {
     float x = 0.0f;
-    for (NewOpKind kind : kNewOpKinds) {
-      const char* label = newOpLabel(kind);
+    for (const OperationSpec& spec : operationTable()) {
+      if (!spec.addable) continue;
+      const char* label = spec.title;
       const float w = ImGui::CalcTextSize(label).x + ImGui::GetStyle().FramePadding.x * 2;
       if (x > 0.0f && x + ImGui::GetStyle().ItemSpacing.x + w <= available) ImGui::SameLine();
       else x = 0.0f;
-      if (ImGui::Button(label)) addOperation(state, edits, kind);
+      if (ImGui::Button(label)) addOperation(state, edits, spec);
       state.probe.item(std::string("ops.add.") + label);
       if (ImGui::IsItemHovered())
         state.contextHelp = std::string("Add a ") + label + " operation after the active one, applied to the current selection";
@@ -219,7 +163,7 @@ void drawOperationStackPanel(ModellerState& state, EditQueue& edits) {
       contextHelp(state, "Mute: skip this operation when evaluating the stack");
       ImGui::SameLine();
       char label[64];
-      std::snprintf(label, sizeof label, "%d  %s", o + 1, typeLabel(op));
+      std::snprintf(label, sizeof label, "%d  %s", o + 1, operationSpec(op.params).title);
       ImGui::PushStyleColor(ImGuiCol_Text, op.muted ? ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]
                                                     : ImGui::GetStyle().Colors[ImGuiCol_Text]);
       if (ImGui::Selectable(label, o == state.activeOp, ImGuiSelectableFlags_AllowItemOverlap))

@@ -1,6 +1,7 @@
 #pragma once
 // The modeller's panels, one per file: each draws from the Document (through the
 // ModellerState) and emits edits; none holds geometry logic.
+#include "model/operation_table.h"
 #include "ui/edit_queue.h"
 #include "ui/modeller_state.h"
 
@@ -22,15 +23,10 @@ void drawSelectionPanel(ModellerState& state, EditQueue& edits);
 /// help_window.cpp: the keyboard and mouse shortcuts.
 void drawHelpWindow(ModellerState& state);
 
-/// Operation kinds the artist can add, in menu order (variant alternatives of OpParams).
-enum class NewOpKind { Translate, Rotate, Scale, Taper, Twist, Bend, Magnet, Morph, Calculator };
-inline constexpr NewOpKind kNewOpKinds[] = {NewOpKind::Translate, NewOpKind::Rotate, NewOpKind::Scale,
-                                            NewOpKind::Taper,     NewOpKind::Twist,  NewOpKind::Bend,
-                                            NewOpKind::Magnet,    NewOpKind::Morph,  NewOpKind::Calculator};
-const char* newOpLabel(NewOpKind kind);
-/// Adds an op of `kind` after the active op with the current selection and center
-/// (operation_stack_panel.cpp). Shared by the panel's toolbar and the Operation menu.
-void addOperation(ModellerState& state, EditQueue& edits, NewOpKind kind);
+/// Adds an op of type `spec` (an addable entry of the operation table) after the active op with
+/// the current selection and center (operation_stack_panel.cpp). Shared by the panel's toolbar
+/// and the Operation menu.
+void addOperation(ModellerState& state, EditQueue& edits, const OperationSpec& spec);
 /// Deletes the active op (Delete key, menu, panel).
 void deleteActiveOperation(ModellerState& state, EditQueue& edits);
 /// Adds a new 6×6×6 function (functions_panel.cpp).

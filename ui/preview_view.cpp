@@ -81,53 +81,30 @@ void PreviewView::build(ModellerState& state, EditQueue& edits, float framebuffe
 
   ImGuiIO& io = ImGui::GetIO();
   if (hovered) state.contextHelp = "Drag: orbit the preview camera · middle/Shift+drag: pan · wheel: zoom";
-  if (wheelGestureUntil_ > 0.0 && state.now > wheelGestureUntil_) {
-    edits.end();
-    wheelGestureUntil_ = -1.0;
-  }
-  if (hovered && io.MouseWheel != 0.0f && drag_ == 0) {
-    if (wheelGestureUntil_ < 0.0) edits.begin("Zoom preview camera");
-    const double distance = std::clamp(project.camera.distance * std::pow(0.87, double(io.MouseWheel)), 0.05, 500.0);
-    edits.update([distance](Project& p) { p.camera.distance = distance; });
-    wheelGestureUntil_ = state.now + 0.6;
-  }
+  orbit_.settleWheel(edits, state.now);
+  if (hovered && io.MouseWheel != 0.0f && orbit_.motion() == OrbitController::Motion::None)
+    orbit_.zoomProject(project.camera, edits, io.MouseWheel, state.now);
   const glm::dvec2 mouse(io.MousePos.x - origin.x, io.MousePos.y - origin.y);
-  if (drag_ == 0 && hovered) {
+  if (orbit_.motion() == OrbitController::Motion::None && hovered) {
     for (int b = 0; b < 3; ++b)
       if (ImGui::IsMouseClicked(b)) {
-        if (wheelGestureUntil_ > 0.0) {
-          edits.end();
-          wheelGestureUntil_ = -1.0;
-        }
+        orbit_.settleWheel(edits, -1.0);
         dragButton_ = b;
-        drag_ = (b == 2 || io.KeyShift) ? 2 : 1;
-        dragStart_ = mouse;
         dragMoved_ = false;
-        dragCamera_ = project.camera;
+        orbit_.begin((b == 2 || io.KeyShift) ? OrbitController::Motion::Pan : OrbitController::Motion::Orbit,
+                     project.camera, mouse);
+        dragStart_ = mouse;
         break;
       }
   }
-  if (drag_ != 0) {
-    const glm::dvec2 delta = mouse - dragStart_;
+  if (orbit_.motion() != OrbitController::Motion::None) {
     if (ImGui::IsMouseDown(dragButton_)) {
-      if (!dragMoved_ && glm::length(delta) > 3.0) {
-        dragMoved_ = true;
-        edits.begin(drag_ == 1 ? "Orbit preview camera" : "Pan preview camera");
-      }
-      if (dragMoved_) {
-        Camera cam = dragCamera_;
-        if (drag_ == 1) {
-          cam.yaw = dragCamera_.yaw - delta.x * 0.4;
-          cam.pitch = std::clamp(dragCamera_.pitch + delta.y * 0.4, -89.0, 89.0);
-        } else {
-          const ViewCamera vc{ViewAxis::User, dragCamera_};
-          cam.target = dragCamera_.target - vc.dragDelta(delta.x, delta.y, dragCamera_.target, size_.y);
-        }
-        edits.update([cam](Project& p) { p.camera = cam; });
-      }
+      const bool firstMove = !dragMoved_ && glm::length(mouse - dragStart_) > 3.0;
+      if (firstMove) dragMoved_ = true;
+      if (dragMoved_) orbit_.dragProject(edits, mouse, ViewAxis::User, size_.y, firstMove);
     } else {
       if (dragMoved_) edits.end();
-      drag_ = 0;
+      orbit_.end();
     }
   }
 }

@@ -7,6 +7,7 @@
 #include "ui/edit_queue.h"
 #include "ui/gl_resources.h"
 #include "ui/modeller_state.h"
+#include "ui/orbit_controller.h"
 #include "ui/preview_renderer.h"
 #include "ui/preview_modes.h"
 #include "ui/view_renderer.h"
@@ -25,7 +26,7 @@ class PreviewView {
   void present(int framebufferHeight) const;
   void hide() { visible_ = false; }
   bool busy() const { return renderer_.busy() || modes_.busy(); }
-  bool dragging() const { return drag_ != 0; }
+  bool dragging() const { return orbit_.motion() != OrbitController::Motion::None; }
   const RenderImage& image() const { return image_; }
   std::uint64_t restarts() const { return renderer_.restarts(); }
   /// Picks the preview's renderer (auto | gpu | cpu); an error sentence when gpu cannot be had.
@@ -45,12 +46,10 @@ class PreviewView {
   Vec3 drawnBackground_{-1.0};
   double lastFetch_ = -1.0;
   float framebufferScale_ = 1.0f;
-  int drag_ = 0;  // 0 none, 1 orbit, 2 pan
+  OrbitController orbit_;  // the project camera, orbited, panned and zoomed from this view
   int dragButton_ = 0;
   bool dragMoved_ = false;
   glm::dvec2 dragStart_{0.0};
-  Camera dragCamera_;
-  double wheelGestureUntil_ = -1.0;
 };
 
 }  // namespace gridifs::ui

@@ -37,15 +37,21 @@ void Document::commit(Project before, const std::string& label) {
   push(undo_, std::move(before), label);
 }
 
-void Document::edit(const std::string& label, const Change& change) {
-  if (gesture_) endGesture();
+bool Document::apply(const Change& change, Project& before) {
   Project next = project_;
   change(next);
-  if (next == project_) return;
+  if (next == project_) return false;
   validate(next);
   std::swap(project_, next);
   changed(next);
-  commit(std::move(next), label);
+  before = std::move(next);
+  return true;
+}
+
+void Document::edit(const std::string& label, const Change& change) {
+  if (gesture_) endGesture();
+  Project before;
+  if (apply(change, before)) commit(std::move(before), label);
 }
 
 void Document::validate(const Project& next) {
@@ -65,12 +71,8 @@ void Document::beginGesture(const std::string& label) {
 
 void Document::updateGesture(const Change& change) {
   if (!gesture_) beginGesture("Edit");
-  Project next = project_;
-  change(next);
-  if (next == project_) return;
-  validate(next);
-  std::swap(project_, next);
-  changed(next);
+  Project before;
+  apply(change, before);
 }
 
 void Document::endGesture() {

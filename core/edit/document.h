@@ -103,6 +103,9 @@ class Document {
   bool travel(std::vector<Step>& from, std::vector<Step>& to);
   /// Throws ModelError when `next` is invalid.
   void validate(const Project& next);
+  /// Applies `change` to a copy, validates and publishes it; false (and nothing changed) when the
+  /// change changes nothing. `before` receives the project as it was.
+  bool apply(const Change& change, Project& before);
 
   Project project_, saved_;
   std::filesystem::path path_;

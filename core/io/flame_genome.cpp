@@ -1,15 +1,14 @@
 #include "io/flame_genome.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
-#include <fstream>
 #include <pugixml.hpp>
 #include <set>
 #include <sstream>
 
+#include "base/bounded_read.h"
 #include "io/project_io.h"
 
 namespace gridifs {
@@ -371,17 +370,9 @@ std::vector<FlameGenome> parseFlameFile(const std::string& xmlText) {
 }
 
 std::vector<FlameGenome> loadFlameFile(const std::filesystem::path& file) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(file, ec)) throw IoError("it is a folder, not a flame file");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw IoError(std::string("cannot open it: ") + std::strerror(errno));
-  std::string text;
-  char buffer[1 << 16];
-  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
-    text.append(buffer, std::size_t(in.gcount()));
-    if (text.size() > flame_limits::kMaxFileBytes) fail("the file is larger than 64 MiB");
-  }
-  return parseFlameFile(text);
+  const std::optional<std::string> text = readBoundedFile(file, flame_limits::kMaxFileBytes, "flame file");
+  if (!text) fail("the file is larger than 64 MiB");
+  return parseFlameFile(*text);
 }
 
 const FlameGenome& selectGenome(const std::vector<FlameGenome>& genomes, const std::string& indexOrName) {

@@ -1,18 +1,16 @@
 #include "io/project_io.h"
 
-#include <cerrno>
 #include <cmath>
 #include <cstring>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "base/atomic_file.h"
+#include "base/bounded_read.h"
 #include "io/animation_io.h"
 #include "io/animation_json.h"
-#include "model/calculator.h"
+#include "model/operation_table.h"
 #include "model/palette_reference.h"
-#include "model/stack_evaluator.h"
 #include "model/validation.h"
 #include "model/transition_matrix.h"
 
@@ -134,23 +132,6 @@ Vec3 vec3(const json& obj, const char* key, const std::string& path, Vec3 fallba
   return readVec3(*it, join(path, key), lo, hi);
 }
 
-Axis axis(const json& obj, const char* key, const std::string& path, Axis fallback) {
-  auto it = obj.find(key);
-  if (it == obj.end()) return fallback;
-  Axis a;
-  if (!parseAxis(readString(*it, join(path, key), 16), a)) fail(join(path, key), "expected \"x\", \"y\" or \"z\"");
-  return a;
-}
-
-Profile profile(const json& obj, const std::string& path) {
-  auto it = obj.find("profile");
-  if (it == obj.end()) return Profile::Linear;
-  Profile p;
-  if (!parseProfile(readString(*it, join(path, "profile"), 16), p))
-    fail(join(path, "profile"), "expected \"linear\", \"sine\" or \"pingpong\"");
-  return p;
-}
-
 Center readCenter(const json& obj, const std::string& path) {
   Center c;
   auto it = obj.find("center");
@@ -200,88 +181,84 @@ Selection readSelection(const json& obj, const std::string& path) {
   return selection;
 }
 
-OpParams readParams(const std::string& type, const json& o, const std::string& path) {
-  if (type == "translate") return TranslateOp{vec3(o, "offset", path, Vec3{0.0})};
-  if (type == "rotate") return RotateOp{vec3(o, "angles", path, Vec3{0.0})};
-  if (type == "scale") return ScaleOp{vec3(o, "factors", path, Vec3{1.0})};
-  if (type == "taper" || type == "twist") {
-    const Axis a = axis(o, "axis", path, Axis::Z);
-    const Profile pr = profile(o, path);
-    const double k = number(o, "k", path, 0.0), omega = number(o, "omega", path, 1.0);
-    if (type == "taper") return TaperOp{a, pr, k, omega};
-    return TwistOp{a, pr, k, omega};
-  }
-  if (type == "bend") {
-    BendOp b{axis(o, "axis", path, Axis::Z), axis(o, "toward", path, Axis::Y), number(o, "k", path, 0.0)};
-    if (b.axis == b.toward) fail(join(path, "toward"), "the bend must go toward an axis other than its own");
-    return b;
-  }
-  if (type == "magnet")
-    return MagnetOp{vec3(o, "point", path, Vec3{0.0}), number(o, "dmax", path, 0.5, 0.0, limits::kMaxCoordinate),
-                    number(o, "strength", path, 0.5), number(o, "falloff", path, 2.0, 0.0, 1000.0)};
-  if (type == "morph") {
-    MorphOp m;
-    m.strength = number(o, "strength", path, 1.0);
-    if (auto it = o.find("pairs"); it != o.end()) {
-      const std::string p = join(path, "pairs");
-      if (!it->is_array()) fail(p, std::string("expected an array of [start, end] pairs, found ") + typeName(*it));
-      if (it->size() > std::size_t(limits::kMaxMorphPairs))
-        fail(p, "more than " + std::to_string(limits::kMaxMorphPairs) + " morph pairs");
-      for (std::size_t i = 0; i < it->size(); ++i) {
-        const json& pair = (*it)[i];
-        if (!pair.is_array() || pair.size() != 2) fail(item(p, i), "expected a pair [[x, y, z], [x, y, z]]");
-        m.pairs.push_back({readVec3(pair[0], item(item(p, i), 0), -limits::kMaxCoordinate, limits::kMaxCoordinate),
-                           readVec3(pair[1], item(item(p, i), 1), -limits::kMaxCoordinate, limits::kMaxCoordinate)});
-      }
+CalculatorVar readCalculatorVar(const json& v, const std::string& path) {
+  requireObject(v, path);
+  CalculatorVar var;
+  var.min = number(v, "min", path, var.min);
+  var.max = number(v, "max", path, var.max);
+  var.value = number(v, "value", path, var.value);
+  if (var.min > var.max) fail(join(path, "min"), "the slider minimum is larger than its maximum");
+  return var;
+}
+
+/// Reads one parameter of the operation table into `params`; an absent key keeps the default.
+void readParam(const ParamSpec& s, const json& o, const std::string& opPath, OpParams& params) {
+  auto it = o.find(s.key);
+  if (it == o.end()) return;
+  const std::string path = join(opPath, s.key);
+  switch (s.type) {
+    case ParamType::Number: s.setNumber(params, 0, readNumber(*it, path, s.min, s.max)); break;
+    case ParamType::Integer:
+      s.setNumber(params, 0, double(readInteger(*it, path, std::int64_t(s.min), std::int64_t(s.max))));
+      break;
+    case ParamType::Seed: s.value<std::uint64_t>(params) = unsignedInteger(o, s.key, opPath, 0); break;
+    case ParamType::Vector: {
+      if (!it->is_array() || it->size() != std::size_t(s.components))
+        fail(path, "expected an array of " + std::to_string(s.components) + " numbers");
+      for (int c = 0; c < s.components; ++c) s.setNumber(params, c, readNumber((*it)[c], item(path, c), s.min, s.max));
+      break;
     }
-    return m;
-  }
-  if (type == "calculator") {
-    CalculatorOp c;
-    c.x = string(o, "x", path, "x", limits::kMaxExpressionLength);
-    c.y = string(o, "y", path, "y", limits::kMaxExpressionLength);
-    c.z = string(o, "z", path, "z", limits::kMaxExpressionLength);
-    c.seed = unsignedInteger(o, "seed", path, 1);
-    if (auto it = o.find("vars"); it != o.end()) {
-      const std::string p = join(path, "vars");
-      requireObject(*it, p);
+    case ParamType::Choice: {
+      const std::string name = readString(*it, path, 16);
+      int index = 0;
+      while (index < int(s.choices->names.size()) && name != s.choices->names[std::size_t(index)]) ++index;
+      if (index == int(s.choices->names.size())) fail(path, "expected " + choiceList(*s.choices));
+      s.setChoice(params, index);
+      break;
+    }
+    case ParamType::Expression: s.value<std::string>(params) = readString(*it, path, s.maxLength); break;
+    case ParamType::CalculatorVars: {
+      requireObject(*it, path);
+      auto& vars = s.value<std::array<CalculatorVar, 3>>(params);
       for (auto v = it->begin(); v != it->end(); ++v) {
         const std::string& name = v.key();
         if (name != "v1" && name != "v2" && name != "v3")
-          fail(join(p, name.substr(0, 32)), "unknown calculator variable (use v1, v2 or v3)");
-        const std::string vp = join(p, name);
-        requireObject(v.value(), vp);
-        CalculatorVar var;
-        var.min = number(v.value(), "min", vp, -1.0);
-        var.max = number(v.value(), "max", vp, 1.0);
-        var.value = number(v.value(), "value", vp, 0.0);
-        if (var.min > var.max) fail(join(vp, "min"), "the slider minimum is larger than its maximum");
-        c.vars[name[1] - '1'] = var;
+          fail(join(path, name.substr(0, 32)), "unknown calculator variable (use v1, v2 or v3)");
+        vars[std::size_t(name[1] - '1')] = readCalculatorVar(v.value(), join(path, name));
       }
+      break;
     }
-    return c;
-  }
-  if (type == "nodes") {
-    NodesOp n;
-    if (auto it = o.find("moves"); it != o.end()) {
-      const std::string p = join(path, "moves");
-      if (!it->is_array()) fail(p, std::string("expected an array of [i, j, k, [dx, dy, dz]], found ") + typeName(*it));
-      if (it->size() > std::size_t(limits::kMaxNodeMoves)) fail(p, "too many node moves");
+    case ParamType::MorphPairs: {
+      if (!it->is_array()) fail(path, std::string("expected an array of [start, end] pairs, found ") + typeName(*it));
+      if (it->size() > std::size_t(limits::kMaxMorphPairs))
+        fail(path, "more than " + std::to_string(limits::kMaxMorphPairs) + " morph pairs");
+      auto& pairs = s.value<std::vector<MorphPair>>(params);
+      pairs.clear();
+      for (std::size_t i = 0; i < it->size(); ++i) {
+        const json& pair = (*it)[i];
+        if (!pair.is_array() || pair.size() != 2) fail(item(path, i), "expected a pair [[x, y, z], [x, y, z]]");
+        pairs.push_back({readVec3(pair[0], item(item(path, i), 0), -limits::kMaxCoordinate, limits::kMaxCoordinate),
+                         readVec3(pair[1], item(item(path, i), 1), -limits::kMaxCoordinate, limits::kMaxCoordinate)});
+      }
+      break;
+    }
+    case ParamType::NodeMoves: {
+      if (!it->is_array()) fail(path, std::string("expected an array of [i, j, k, [dx, dy, dz]], found ") + typeName(*it));
+      if (it->size() > std::size_t(limits::kMaxNodeMoves)) fail(path, "too many node moves");
+      auto& moves = s.value<std::vector<NodeMove>>(params);
+      moves.clear();
       for (std::size_t m = 0; m < it->size(); ++m) {
         const json& mv = (*it)[m];
-        const std::string mp = item(p, m);
+        const std::string mp = item(path, m);
         if (!mv.is_array() || mv.size() != 4) fail(mp, "expected [i, j, k, [dx, dy, dz]]");
         NodeMove move;
         for (int d = 0; d < 3; ++d) move.index[d] = int(readInteger(mv[d], item(mp, d), 0, limits::kMaxResolution - 1));
         move.displacement = readVec3(mv[3], item(mp, 3), -limits::kMaxCoordinate, limits::kMaxCoordinate);
-        n.moves.push_back(move);
+        moves.push_back(move);
       }
+      break;
     }
-    return n;
   }
-  fail(join(path, "type"), "unknown operation \"" + type.substr(0, 40) +
-                               "\" (expected translate, rotate, scale, taper, twist, bend, magnet, morph, "
-                               "calculator or nodes)");
 }
 
 Operation readOperation(const json& o, const std::string& path) {
@@ -289,8 +266,12 @@ Operation readOperation(const json& o, const std::string& path) {
   auto typeIt = o.find("type");
   if (typeIt == o.end()) fail(path, "the operation has no \"type\"");
   const std::string type = readString(*typeIt, join(path, "type"), 64);
+  const OperationSpec* spec = findOperation(type);
+  if (!spec)
+    fail(join(path, "type"), "unknown operation \"" + type.substr(0, 40) + "\" (expected " + operationTypeList() + ")");
   Operation op;
-  op.params = readParams(type, o, path);
+  op.params = spec->defaults;
+  for (const ParamSpec& param : spec->params) readParam(param, o, path, op.params);
   op.center = readCenter(o, path);
   op.selection = readSelection(o, path);
   op.muted = boolean(o, "muted", path, false);
@@ -374,52 +355,47 @@ void checkDepth(const std::string& text) {
 
 ordered_json writeVec3(const Vec3& v) { return ordered_json::array({v.x, v.y, v.z}); }
 
+ordered_json writeParam(const ParamSpec& s, const OpParams& params) {
+  switch (s.type) {
+    case ParamType::Number: return s.value<double>(params);
+    case ParamType::Integer: return s.value<int>(params);
+    case ParamType::Seed: return s.value<std::uint64_t>(params);
+    case ParamType::Vector: {
+      ordered_json a = ordered_json::array();
+      for (int c = 0; c < s.components; ++c) a.push_back(s.number(params, c));
+      return a;
+    }
+    case ParamType::Choice: return s.choices->names[std::size_t(s.choice(params))];
+    case ParamType::Expression: return s.value<std::string>(params);
+    case ParamType::CalculatorVars: {
+      ordered_json vars;
+      const auto& v = s.value<std::array<CalculatorVar, 3>>(params);
+      for (int i = 0; i < 3; ++i)
+        vars["v" + std::to_string(i + 1)] = {{"value", v[std::size_t(i)].value}, {"min", v[std::size_t(i)].min},
+                                             {"max", v[std::size_t(i)].max}};
+      return vars;
+    }
+    case ParamType::MorphPairs: {
+      ordered_json pairs = ordered_json::array();
+      for (const MorphPair& pair : s.value<std::vector<MorphPair>>(params))
+        pairs.push_back({writeVec3(pair.from), writeVec3(pair.to)});
+      return pairs;
+    }
+    case ParamType::NodeMoves: {
+      ordered_json moves = ordered_json::array();
+      for (const NodeMove& m : s.value<std::vector<NodeMove>>(params))
+        moves.push_back({m.index[0], m.index[1], m.index[2], writeVec3(m.displacement)});
+      return moves;
+    }
+  }
+  return nullptr;
+}
+
 ordered_json writeOperation(const Operation& op) {
   ordered_json o;
-  o["type"] = opTypeName(op.params);
-  std::visit(
-      [&](const auto& p) {
-        using T = std::decay_t<decltype(p)>;
-        if constexpr (std::is_same_v<T, TranslateOp>) o["offset"] = writeVec3(p.offset);
-        else if constexpr (std::is_same_v<T, RotateOp>) o["angles"] = writeVec3(p.angles);
-        else if constexpr (std::is_same_v<T, ScaleOp>) o["factors"] = writeVec3(p.factors);
-        else if constexpr (std::is_same_v<T, TaperOp> || std::is_same_v<T, TwistOp>) {
-          o["axis"] = axisName(p.axis);
-          o["profile"] = profileName(p.profile);
-          o["k"] = p.k;
-          o["omega"] = p.omega;
-        } else if constexpr (std::is_same_v<T, BendOp>) {
-          o["axis"] = axisName(p.axis);
-          o["toward"] = axisName(p.toward);
-          o["k"] = p.k;
-        } else if constexpr (std::is_same_v<T, MagnetOp>) {
-          o["point"] = writeVec3(p.point);
-          o["dmax"] = p.dmax;
-          o["strength"] = p.strength;
-          o["falloff"] = p.falloff;
-        } else if constexpr (std::is_same_v<T, MorphOp>) {
-          ordered_json pairs = ordered_json::array();
-          for (const MorphPair& pair : p.pairs) pairs.push_back({writeVec3(pair.from), writeVec3(pair.to)});
-          o["pairs"] = pairs;
-          o["strength"] = p.strength;
-        } else if constexpr (std::is_same_v<T, CalculatorOp>) {
-          o["x"] = p.x;
-          o["y"] = p.y;
-          o["z"] = p.z;
-          ordered_json vars;
-          static const char* kVarNames[3] = {"v1", "v2", "v3"};
-          for (int v = 0; v < 3; ++v)
-            vars[kVarNames[v]] = {{"value", p.vars[v].value}, {"min", p.vars[v].min}, {"max", p.vars[v].max}};
-          o["vars"] = vars;
-          o["seed"] = p.seed;
-        } else if constexpr (std::is_same_v<T, NodesOp>) {
-          ordered_json moves = ordered_json::array();
-          for (const NodeMove& m : p.moves)
-            moves.push_back({m.index[0], m.index[1], m.index[2], writeVec3(m.displacement)});
-          o["moves"] = moves;
-        }
-      },
-      op.params);
+  const OperationSpec& spec = operationSpec(op.params);
+  o["type"] = spec.type;
+  for (const ParamSpec& param : spec.params) o[param.key] = writeParam(param, op.params);
   if (op.center.kind == Center::Kind::Grid) o["center"] = "grid";
   else if (op.center.kind == Center::Kind::Selection) o["center"] = "selection";
   else o["center"] = writeVec3(op.center.point);
@@ -577,17 +553,9 @@ std::string serializeProject(const Project& project) {
 }
 
 Project loadProject(const std::filesystem::path& file) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(file, ec)) throw IoError("it is a folder, not a project file");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw IoError(std::string("cannot open it: ") + std::strerror(errno));
-  std::string text;
-  char buffer[1 << 16];
-  while (in.read(buffer, sizeof buffer) || in.gcount() > 0) {
-    text.append(buffer, std::size_t(in.gcount()));
-    if (text.size() > limits::kMaxFileBytes) fail("", "the file is larger than 64 MiB");
-  }
-  return parseProject(text);
+  const std::optional<std::string> text = readBoundedFile(file, limits::kMaxFileBytes, "project file");
+  if (!text) fail("", "the file is larger than 64 MiB");
+  return parseProject(*text);
 }
 
 void saveProject(const Project& project, const std::filesystem::path& file) {

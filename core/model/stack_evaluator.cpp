@@ -281,10 +281,4 @@ std::shared_ptr<const Grid> evaluateFunctionAt(const Function& function, const s
   }
 }
 
-const char* opTypeName(const OpParams& params) {
-  static const char* kNames[] = {"translate", "rotate", "scale",      "taper",     "twist",
-                                 "bend",      "magnet", "morph",      "calculator", "nodes"};
-  return kNames[params.index()];
-}
-
 }  // namespace gridifs

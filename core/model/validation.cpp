@@ -2,11 +2,9 @@
 
 #include <cmath>
 #include <sstream>
-#include <variant>
 
-#include "model/calculator.h"
 #include "model/palette_reference.h"
-#include "model/stack_evaluator.h"
+#include "model/operation_table.h"
 #include "model/transition_matrix.h"
 
 namespace gridifs {
@@ -71,20 +69,10 @@ void validate(const Project& project, const Project* trusted) {
     if (!(fn.weight >= 0.0) || !std::isfinite(fn.weight)) fail(join(path, "weight"), "expected a non-negative weight");
     if (before && before->ops == fn.ops) return;  // calculator parses and morph solves are the cost
     for (std::size_t o = 0; o < fn.ops.size(); ++o) {
-      const std::string op = item(join(path, "ops"), o);
-      if (const auto* calc = std::get_if<CalculatorOp>(&fn.ops[o].params)) {
-        if (auto diagnostic = checkCalculator(*calc))
-          fail(join(op, std::string(1, "xyz"[diagnostic->expression])), diagnostic->message);
-      } else if (const auto* morph = std::get_if<MorphOp>(&fn.ops[o].params)) {
-        std::vector<Vec3> alpha;
-        std::vector<double> radius;
-        try {
-          solveMorph(*morph, alpha, radius);
-        } catch (const ModelError& e) {
-          throw e.under(op);
-        }
-      } else if (const auto* bend = std::get_if<BendOp>(&fn.ops[o].params)) {
-        if (bend->axis == bend->toward) fail(join(op, "toward"), "the bend must go toward an axis other than its own");
+      try {
+        validateOperationParams(fn.ops[o].params);
+      } catch (const ModelError& e) {
+        throw e.under(item(join(path, "ops"), o));
       }
     }
   };

@@ -370,12 +370,7 @@ void ChaosRenderer::snapshot(RenderImage& out, const DisplaySettings& display) c
   out.generation = generation;
   out.stats = stats();
   if (!job) {
-    out.width = out.height = 0;
-    out.rgba.clear();
-    out.depth.clear();
-    out.density.clear();
-    out.colorSums.clear();
-    out.hitPixels = 0;
+    out.clear();
     return;
   }
   const int width = job->job.width, height = job->job.height;

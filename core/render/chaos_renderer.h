@@ -109,6 +109,16 @@ struct RenderImage {
   float minDepth = 0.0f, maxDepth = 0.0f;  // depth range of the hit pixels
   std::uint64_t generation = 0;
   RenderStats stats;
+
+  /// No picture (no job yet): size 0 and empty buffers, which keep their capacity.
+  void clear() {
+    width = height = 0;
+    rgba.clear();
+    depth.clear();
+    density.clear();
+    colorSums.clear();
+    hitPixels = 0;
+  }
 };
 
 /// The progressive renderer. See the threading model at the top of this file.

@@ -30,14 +30,15 @@ inline std::string quote(const std::string& s) {
   return q + "'";
 }
 
-/// Runs `gridifs ARGS` (already quoted as needed) with `input` on stdin. A watchdog
-/// (timeout 60 s) turns a hang into a failure instead of a stuck test run.
-inline CommandResult runGridifs(const std::string& args, const std::string& input = "") {
+/// Runs `gridifs ARGS` (already quoted as needed) with `input` on stdin and `env` ("NAME=value
+/// ...") set for the child only. A watchdog (timeout 60 s) turns a hang into a failure instead of
+/// a stuck test run.
+inline CommandResult runGridifs(const std::string& args, const std::string& input = "", const std::string& env = "") {
   namespace fs = std::filesystem;
   static int counter = 0;
   const fs::path base = fs::temp_directory_path() / ("gridifs-cli-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
   { std::ofstream(base.string() + ".in", std::ios::binary) << input; }
-  const std::string cmd = "timeout 60 " + quote(GRIDIFS_EXE) + " " + args + " < " + quote(base.string() + ".in") + " > " +
+  const std::string cmd = (env.empty() ? "" : "env " + env + " ") + "timeout 60 " + quote(GRIDIFS_EXE) + " " + args + " < " + quote(base.string() + ".in") + " > " +
                           quote(base.string() + ".out") + " 2> " + quote(base.string() + ".err");
   const int status = std::system(cmd.c_str());
   CommandResult r;

@@ -19,21 +19,7 @@ using test_support::slurp;
 namespace fs = std::filesystem;
 
 /// runGridifs with environment variables set for the child only.
-CommandResult runWithEnv(const std::string& env, const std::string& args) {
-  static int counter = 0;
-  const fs::path base =
-      fs::temp_directory_path() / ("gridifs-dev-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
-  const std::string cmd = "env " + env + " timeout 60 " + quote(GRIDIFS_EXE) + " " + args + " < /dev/null > " +
-                          quote(base.string() + ".out") + " 2> " + quote(base.string() + ".err");
-  const int status = std::system(cmd.c_str());
-  CommandResult r;
-  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  r.out = slurp(base.string() + ".out");
-  r.err = slurp(base.string() + ".err");
-  fs::remove(base.string() + ".out");
-  fs::remove(base.string() + ".err");
-  return r;
-}
+CommandResult runWithEnv(const std::string& env, const std::string& args) { return runGridifs(args, "", env); }
 
 const std::string kNoEgl = "__EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json";
 const std::string kNoCompute = "MESA_EXTENSION_OVERRIDE=-GL_ARB_compute_shader";

@@ -7,6 +7,7 @@
 #include <algorithm>
 
 #include "mesh/base_mesh.h"
+#include "model_error_text.h"
 #include "deterministic_samples.h"
 
 using namespace gridifs;
@@ -28,12 +29,7 @@ bool closed(const IfsMesh& mesh) {
 }
 
 std::string errorOf(const BaseMeshSpec& spec) {
-  try {
-    loadCoarseBase(spec);
-  } catch (const ModelError& e) {
-    return e.what();
-  }
-  return "";
+  return test_support::modelErrorText([&] { loadCoarseBase(spec); });
 }
 
 BaseMeshSpec fileSpec(const std::filesystem::path& file, int subdivision = 0) {

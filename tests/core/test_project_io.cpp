@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "io/project_io.h"
+#include "model_error_text.h"
 #include "project_samples.h"
 
 using namespace gridifs;
@@ -20,12 +21,7 @@ std::string readFile(const fs::path& p) {
 }
 
 std::string errorOf(const std::string& text) {
-  try {
-    parseProject(text);
-  } catch (const ModelError& e) {
-    return e.what();
-  }
-  return "";
+  return test_support::modelErrorText([&] { parseProject(text); });
 }
 
 const char* kMinimal = R"({"format":"gridifs","version":1,"functions":[{"name":"a"}]})";
@@ -225,4 +221,27 @@ TEST(ProjectIo, EveryExampleLoadsAndEvaluates) {
     EXPECT_EQ(parseProject(serializeProject(p)), p);
   }
   EXPECT_GE(count, 9);
+}
+
+// The file format is a contract: every shipped project (assets/ and its subfolders, the
+// projects of tests/data/flame) is saved exactly as tests/data/saved holds it (the bytes GridIFS
+// has always written for it; a project GridIFS wrote itself is its own saved form), and a saved
+// file is saved again unchanged.
+TEST(ProjectIo, EveryShippedProjectSavesAsItAlwaysHas) {
+  const fs::path saved = fs::path(GRIDIFS_TEST_DATA) / "saved";
+  int count = 0;
+  for (const auto& [root, tag] : {std::pair<fs::path, std::string>{GRIDIFS_ASSETS, "assets"},
+                                  {fs::path(GRIDIFS_TEST_DATA) / "flame", "flame"}}) {
+    for (const auto& entry : fs::recursive_directory_iterator(root)) {
+      if (entry.path().extension() != ".gridifs") continue;
+      ++count;
+      SCOPED_TRACE(entry.path().string());
+      // A project written by GridIFS (the imported flame in assets/flames) is its own saved form.
+      const fs::path savedFile = saved / tag / fs::relative(entry.path(), root);
+      const std::string expected = readFile(fs::exists(savedFile) ? savedFile : entry.path());
+      EXPECT_EQ(serializeProject(loadProject(entry.path())), expected);
+      EXPECT_EQ(serializeProject(parseProject(expected)), expected);
+    }
+  }
+  EXPECT_GE(count, 13);
 }

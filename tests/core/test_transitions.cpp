@@ -10,6 +10,7 @@
 #include "render/compiled_ifs.h"
 #include "mesh/deterministic_ifs.h"
 #include "io/project_io.h"
+#include "model_error_text.h"
 #include "model/transition_matrix.h"
 #include "deterministic_samples.h"
 
@@ -41,12 +42,7 @@ int cellOf(Vec3 p, double margin) {
 }
 
 std::string expectError(const std::string& text) {
-  try {
-    parseProject(text);
-  } catch (const ModelError& e) {
-    return e.what();
-  }
-  return "";
+  return test_support::modelErrorText([&] { parseProject(text); });
 }
 
 }  // namespace
