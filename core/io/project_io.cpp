@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "base/atomic_file.h"
+#include "io/shading_io.h"
 #include "model/calculator.h"
 #include "model/palette_reference.h"
 #include "model/stack_evaluator.h"
@@ -510,9 +511,10 @@ Project parseProject(const std::string& text) {
     r.depth_cue = number(*it, "depth_cue", "render", r.depth_cue, 0.0, 1.0);
     if (auto m = it->find("mode"); m != it->end()) {
       if (!parseDisplayMode(readString(*m, "render.mode", 32), r.mode))
-        fail("render.mode", "expected \"zbuffer\" or \"flame\"");
+        fail("render.mode", "expected \"zbuffer\", \"flame\" or \"shaded\"");
     }
     if (auto fl = it->find("flame"); fl != it->end()) r.flame = readFlame(*fl, "render.flame");
+    if (auto sh = it->find("shading"); sh != it->end()) r.shading = readShadingSettings(*sh, "render.shading");
   }
   auto functions = root.find("functions");
   if (functions == root.end()) fail("functions", "the project has no functions");
@@ -563,6 +565,7 @@ std::string serializeProject(const Project& project) {
                              {"estimator_radius", fl.estimator_radius}, {"estimator_minimum", fl.estimator_minimum},
                              {"estimator_curve", fl.estimator_curve}, {"filter_radius", fl.filter_radius}};
   if (fl.density_unit != 1.0) root["render"]["flame"]["density_unit"] = fl.density_unit;
+  root["render"]["shading"] = writeShadingSettings(r.shading);
   ordered_json functions = ordered_json::array();
   for (const Function& f : project.functions) functions.push_back(writeFunction(f));
   root["functions"] = functions;
