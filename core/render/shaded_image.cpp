@@ -78,7 +78,12 @@ struct DevelopContext {
   float ambient, specular, shininess;
   float aoRadius, aoStrength;
   int aoDirections;
-  std::vector<float> aoCos, aoSin;  // kPattern² × directions
+  /// Pixel offsets of the occlusion samples: kPattern² patterns × directions × kAoSteps.
+  std::vector<std::array<int, 2>> aoOffsets;
+  std::vector<Vec3f> viewNormals;              // per pixel (valid where covered)
+  int blocksX = 0, blocksY = 0;                // 2×2 blocks of the occlusion
+  std::vector<float> blockAo, blockDepth;      // per block: occlusion and the depth it was computed at
+  std::array<float, 1025> specularTable;       // x^shininess over [0, 1]
   float fogR, fogG, fogB, fogDensity;
   float bgR, bgG, bgB;
   float viewToWorld[3][3];
@@ -154,16 +159,14 @@ float ambientOcclusion(const DevelopContext& c, int x, int y, Vec3f p, Vec3f n, 
   const float worldRadius = c.aoRadius * c.un.footprint(d);
   const float r2 = worldRadius * worldRadius;
   const int pattern = (y % kPattern) * kPattern + (x % kPattern);
-  const float jitter = (float(pattern) + 0.5f) / float(kPattern * kPattern);
-  const float* cs = &c.aoCos[std::size_t(pattern) * std::size_t(c.aoDirections)];
-  const float* sn = &c.aoSin[std::size_t(pattern) * std::size_t(c.aoDirections)];
+  const std::array<int, 2>* offsets = &c.aoOffsets[std::size_t(pattern) * std::size_t(c.aoDirections * kAoSteps)];
   float sum = 0.0f;
   for (int k = 0; k < c.aoDirections; ++k) {
     float horizon = 0.0f;
     for (int s = 0; s < kAoSteps; ++s) {
-      const float t = (float(s) + jitter) / float(kAoSteps) * c.aoRadius + 1.0f;
-      const int sx = x + int(std::lround(cs[k] * t)), sy = y + int(std::lround(sn[k] * t));
-      if (sx < 0 || sx >= c.width || sy < 0 || sy >= c.height) break;
+      const std::array<int, 2> o = offsets[k * kAoSteps + s];
+      const int sx = x + o[0], sy = y + o[1];
+      if (unsigned(sx) >= unsigned(c.width) || unsigned(sy) >= unsigned(c.height)) break;
       const float sd = c.depth[std::size_t(sy) * std::size_t(c.width) + std::size_t(sx)];
       if (sd == kInf) continue;
       const Vec3f v = c.un.at(sx, sy, sd) - p;
@@ -178,10 +181,65 @@ float ambientOcclusion(const DevelopContext& c, int x, int y, Vec3f p, Vec3f n, 
   return std::clamp(1.0f - c.aoStrength * sum / float(c.aoDirections), 0.0f, 1.0f);
 }
 
-std::uint8_t toDisplay8(float linear) {
-  const float v = std::clamp(linear, 0.0f, 1.0f);
-  const float s = v <= 0.0031308f ? v * 12.92f : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
-  return std::uint8_t(s * 255.0f + 0.5f);
+/// Linear light → 8-bit sRGB through a table over [0, 1] (4096 steps: finer than the 8-bit
+/// output's steps everywhere but the darkest few codes, where the curve is linear anyway).
+constexpr int kDisplaySteps = 4096;
+struct DisplayTable {
+  std::array<std::uint8_t, kDisplaySteps + 1> code;
+  DisplayTable() {
+    for (int i = 0; i <= kDisplaySteps; ++i) {
+      const double v = double(i) / kDisplaySteps;
+      const double s = v <= 0.0031308 ? v * 12.92 : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
+      code[std::size_t(i)] = std::uint8_t(s * 255.0 + 0.5);
+    }
+  }
+};
+const DisplayTable kDisplay;
+
+inline std::uint8_t toDisplay8(float linear) {
+  const float v = linear > 0.0f ? (linear < 1.0f ? linear : 1.0f) : 0.0f;  // NaN → 0
+  return kDisplay.code[std::size_t(v * float(kDisplaySteps) + 0.5f)];
+}
+
+/// The view-space normal of pixel (x, y) at smoothed depth d (facing the camera).
+Vec3f viewNormal(const DevelopContext& c, int x, int y, float d) {
+  const Vec3f p = c.un.at(x, y, d);
+  const float tolerance = kEdgeFootprints * c.un.footprint(d);
+  Vec3f dx, dy, n{0.0f, 0.0f, 1.0f};
+  // Rows go down the image, so the upward difference is the negative of the +y one.
+  if (difference(c, x, y, 1, 0, d, p, tolerance, dx) && difference(c, x, y, 0, 1, d, p, tolerance, dy))
+    n = normalized(cross(dx, Vec3f{-dy.x, -dy.y, -dy.z}));
+  const bool away = c.un.perspective ? dot(n, p) > 0.0f : n.z < 0.0f;
+  return away ? Vec3f{-n.x, -n.y, -n.z} : n;
+}
+
+void normalRows(DevelopContext& c, std::size_t rowBegin, std::size_t rowEnd) {
+  for (std::size_t y = rowBegin; y < rowEnd; ++y)
+    for (int x = 0; x < c.width; ++x) {
+      const std::size_t i = y * std::size_t(c.width) + std::size_t(x);
+      if (c.depth[i] != kInf) c.viewNormals[i] = viewNormal(c, x, int(y), c.depth[i]);
+    }
+}
+
+/// Occlusion changes slowly across a surface: it is computed once per 2×2 block (at the block's
+/// first covered pixel) and the block's other pixels on the same surface reuse it.
+void blockOcclusionRows(DevelopContext& c, std::size_t blockRowBegin, std::size_t blockRowEnd) {
+  for (std::size_t by = blockRowBegin; by < blockRowEnd; ++by)
+    for (int bx = 0; bx < c.blocksX; ++bx) {
+      const std::size_t block = by * std::size_t(c.blocksX) + std::size_t(bx);
+      c.blockDepth[block] = kInf;
+      c.blockAo[block] = 1.0f;
+      for (int k = 0; k < 4; ++k) {
+        const int x = 2 * bx + (k & 1), y = 2 * int(by) + (k >> 1);
+        if (x >= c.width || y >= c.height) continue;
+        const std::size_t i = std::size_t(y) * std::size_t(c.width) + std::size_t(x);
+        const float d = c.depth[i];
+        if (d == kInf) continue;
+        c.blockDepth[block] = d;
+        c.blockAo[block] = ambientOcclusion(c, x, y, c.un.at(x, y, d), c.viewNormals[i], d);
+        break;
+      }
+    }
 }
 
 void shadeRows(const DevelopContext& c, ShadedImage& out, std::size_t rowBegin, std::size_t rowEnd) {
@@ -203,15 +261,15 @@ void shadeRows(const DevelopContext& c, ShadedImage& out, std::size_t rowBegin, 
       }
       const Vec3f p = c.un.at(x, y, d);
       const float foot = c.un.footprint(d);
-      const float tolerance = kEdgeFootprints * foot;
-      Vec3f dx, dy, n{0.0f, 0.0f, 1.0f};
-      // Rows go down the image, so the upward difference is the negative of the +y one.
-      if (difference(c, x, y, 1, 0, d, p, tolerance, dx) && difference(c, x, y, 0, 1, d, p, tolerance, dy))
-        n = normalized(cross(dx, Vec3f{-dy.x, -dy.y, -dy.z}));
-      const Vec3f toEye = normalized(Vec3f{-p.x, -p.y, -p.z});
-      if (!c.un.perspective ? n.z < 0.0f : dot(n, toEye) < 0.0f) n = {-n.x, -n.y, -n.z};
-      const Vec3f view = c.un.perspective ? toEye : Vec3f{0.0f, 0.0f, 1.0f};
-      const float ao = c.aoStrength > 0.0f && c.aoRadius > 0.0f ? ambientOcclusion(c, x, y, p, n, d) : 1.0f;
+      const Vec3f n = c.viewNormals[i];
+      const Vec3f view = c.un.perspective ? normalized(Vec3f{-p.x, -p.y, -p.z}) : Vec3f{0.0f, 0.0f, 1.0f};
+      float ao = 1.0f;
+      if (c.aoStrength > 0.0f && c.aoRadius > 0.0f) {
+        // The block's occlusion where this pixel lies on the block's surface; its own at edges.
+        const std::size_t block = std::size_t(y / 2) * std::size_t(c.blocksX) + std::size_t(x / 2);
+        ao = std::abs(c.blockDepth[block] - d) <= kEdgeFootprints * foot ? c.blockAo[block]
+                                                                           : ambientOcclusion(c, x, y, p, n, d);
+      }
       const float ar = c.srgbLut[c.albedo[i * 4 + 0]], ag = c.srgbLut[c.albedo[i * 4 + 1]],
                   ab = c.srgbLut[c.albedo[i * 4 + 2]];
       float diffR = c.ambient * ao, diffG = diffR, diffB = diffR;
@@ -241,7 +299,11 @@ void shadeRows(const DevelopContext& c, ShadedImage& out, std::size_t rowBegin, 
                                            light.direction.z + view.z});
           const float nh = dot(n, h);
           if (nh > 0.0f) {
-            const float sp = c.specular * std::pow(nh, c.shininess) * lit;
+            const float t = nh * 1024.0f;
+            const int k = std::min(int(t), 1023);
+            const float power = c.specularTable[std::size_t(k)] +
+                                (c.specularTable[std::size_t(k) + 1] - c.specularTable[std::size_t(k)]) * (t - float(k));
+            const float sp = c.specular * power * lit;
             specR += light.r * sp;
             specG += light.g * sp;
             specB += light.b * sp;
@@ -382,14 +444,18 @@ void developShaded(const RenderImage& snapshot, const ShadingSettings& settings,
   c.aoRadius = float(settings.ao.radius);
   c.aoStrength = float(settings.ao.strength);
   c.aoDirections = std::max(1, settings.ao.directions);
-  for (int pattern = 0; pattern < kPattern * kPattern; ++pattern)
+  for (int pattern = 0; pattern < kPattern * kPattern; ++pattern) {
+    // Interleaved rotations and step offsets: neighbouring pixels look along different directions
+    // at different distances, so the sampling pattern does not show as streaks or rings.
+    const double jitter = (double(pattern) + 0.5) / double(kPattern * kPattern);
     for (int k = 0; k < c.aoDirections; ++k) {
-      // Interleaved rotations: neighbouring pixels look along different directions, so the
-      // occlusion's sampling pattern does not show as streaks.
       const double angle = 2.0 * M_PI * (double(k) + double((pattern * 7) % 16) / 16.0) / double(c.aoDirections);
-      c.aoCos.push_back(float(std::cos(angle)));
-      c.aoSin.push_back(float(std::sin(angle)));
+      for (int step = 0; step < kAoSteps; ++step) {
+        const double t = (double(step) + jitter) / double(kAoSteps) * double(c.aoRadius) + 1.0;
+        c.aoOffsets.push_back({int(std::lround(std::cos(angle) * t)), int(std::lround(std::sin(angle) * t))});
+      }
     }
+  }
   c.fogR = srgbToLinear(float(settings.fog.color.x));
   c.fogG = srgbToLinear(float(settings.fog.color.y));
   c.fogB = srgbToLinear(float(settings.fog.color.z));
@@ -409,6 +475,17 @@ void developShaded(const RenderImage& snapshot, const ShadingSettings& settings,
     smoothPass(horizontal.data(), smooth.data(), width, height, c.un, true, b, e);
   });
   c.depth = smooth.data();
+  for (int k = 0; k <= 1024; ++k) c.specularTable[std::size_t(k)] = std::pow(float(k) / 1024.0f, c.shininess);
+  c.viewNormals.resize(n);
+  parallelFor(std::size_t(height), threads, grain, [&](std::size_t b, std::size_t e) { normalRows(c, b, e); });
+  if (c.aoStrength > 0.0f && c.aoRadius > 0.0f) {
+    c.blocksX = (width + 1) / 2;
+    c.blocksY = (height + 1) / 2;
+    c.blockAo.resize(std::size_t(c.blocksX) * std::size_t(c.blocksY));
+    c.blockDepth.resize(c.blockAo.size());
+    parallelFor(std::size_t(c.blocksY), threads, grain / 2,
+                [&](std::size_t b, std::size_t e) { blockOcclusionRows(c, b, e); });
+  }
   parallelFor(std::size_t(height), threads, grain, [&](std::size_t b, std::size_t e) { shadeRows(c, out, b, e); });
 }
 
