@@ -188,8 +188,9 @@ int runShadedRender(const std::string& file, const std::string& out, const Rende
     throw CliError(kBadInput, file + ": " + e.what());
   }
   if (device == "gpu")
-    std::fprintf(stderr, "note: the shaded display renders on the CPU (its shadow maps and depth of field are "
-                         "filled by the CPU chaos game).\n");
+    std::fprintf(stderr,
+                 "note: the shaded display renders on the CPU (its shadow maps and depth of field are "
+                 "filled by the CPU chaos game).\n");
   const DisplaySettings display = shadedDisplaySettings(setup.project);
   const RenderImage image = renderWithProgress(setup, job, file, out, quiet, "cpu", &display);
   if (image.hitPixels == 0)
@@ -202,8 +203,8 @@ int runShadedRender(const std::string& file, const std::string& out, const Rende
     throw CliError(kBadInput, file + ": " + e.what());
   }
   const std::string description = "GridIFS shaded render of " + file + ", " + std::to_string(job.samples) +
-                                  " samples, seed " + std::to_string(job.seed) + ", " +
-                                  std::to_string(job.threads) + " threads";
+                                  " samples, seed " + std::to_string(job.seed) + ", " + std::to_string(job.threads) +
+                                  " threads";
   writeShadedImage(shaded, image, out, description);
   return kSuccess;
 }

@@ -9,12 +9,12 @@
 #include <string>
 #include <vector>
 
+#include "render/shaded_image.h"
 #include "ui/edit_queue.h"
 #include "ui/flame_display.h"
 #include "ui/gl_resources.h"
 #include "ui/mesh_preview.h"
 #include "ui/modeller_state.h"
-#include "render/shaded_image.h"
 
 namespace gridifs::ui {
 

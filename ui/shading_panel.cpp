@@ -23,8 +23,7 @@ void shadingGesture(EditQueue& edits, const char* label, bool changed, ShadingCh
 }
 
 void slider(ModellerState& state, EditQueue& edits, const char* id, const char* undoLabel, double value, double min,
-            double max, const char* format, ShadingChange (*make)(double), const char* help,
-            bool logarithmic = false) {
+            double max, const char* format, ShadingChange (*make)(double), const char* help, bool logarithmic = false) {
   ImGui::SetNextItemWidth(-ImGui::GetFontSize() * 0.5f);
   const bool changed =
       ImGui::SliderScalar(id, ImGuiDataType_Double, &value, &min, &max, format,
@@ -61,7 +60,8 @@ void drawLight(ModellerState& state, EditQueue& edits, std::size_t index, const 
   gestureItem(edits, "Light direction", changed, [index, azimuth, elevation](Project& p) {
     p.render.shading.lights.at(index).direction = fromAngles(azimuth, elevation);
   });
-  contextHelp(state, "Where the light comes from, around the vertical axis (Alt+drag on the preview moves the key light)");
+  contextHelp(state,
+              "Where the light comes from, around the vertical axis (Alt+drag on the preview moves the key light)");
   ImGui::SetNextItemWidth(width);
   changed = ImGui::SliderScalar("##elevation", ImGuiDataType_Double, &elevation, &kElevationMin, &kElevationMax,
                                 "elevation %.0f°", ImGuiSliderFlags_AlwaysClamp);
@@ -119,23 +119,28 @@ void drawShadingPanel(ModellerState& state, EditQueue& edits) {
   }
 
   sectionTitle("Surface");
-  slider(state, edits, "##ambient", "Ambient", s.ambient, 0.0, 1.0, "ambient %.2f",
-         [](double v) -> ShadingChange { return [v](ShadingSettings& x) { x.ambient = v; }; },
-         "Light that reaches every point, scaled by the ambient occlusion");
-  slider(state, edits, "##specular", "Specular", s.specular, 0.0, 2.0, "specular %.2f",
-         [](double v) -> ShadingChange { return [v](ShadingSettings& x) { x.specular = v; }; },
-         "Strength of the highlights (Blinn-Phong)");
-  slider(state, edits, "##shininess", "Shininess", s.shininess, 1.0, 512.0, "shininess %.0f",
-         [](double v) -> ShadingChange { return [v](ShadingSettings& x) { x.shininess = v; }; },
-         "How small and sharp the highlights are", true);
+  slider(
+      state, edits, "##ambient", "Ambient", s.ambient, 0.0, 1.0, "ambient %.2f",
+      [](double v) -> ShadingChange { return [v](ShadingSettings& x) { x.ambient = v; }; },
+      "Light that reaches every point, scaled by the ambient occlusion");
+  slider(
+      state, edits, "##specular", "Specular", s.specular, 0.0, 2.0, "specular %.2f",
+      [](double v) -> ShadingChange { return [v](ShadingSettings& x) { x.specular = v; }; },
+      "Strength of the highlights (Blinn-Phong)");
+  slider(
+      state, edits, "##shininess", "Shininess", s.shininess, 1.0, 512.0, "shininess %.0f",
+      [](double v) -> ShadingChange { return [v](ShadingSettings& x) { x.shininess = v; }; },
+      "How small and sharp the highlights are", true);
 
   sectionTitle("Ambient occlusion");
-  slider(state, edits, "##aoradius", "Occlusion radius", s.ao.radius, 0.0, 64.0, "radius %.0f px",
-         [](double v) -> ShadingChange { return [v](ShadingSettings& x) { x.ao.radius = v; }; },
-         "How far (in pixels) the occlusion looks for surrounding surfaces");
-  slider(state, edits, "##aostrength", "Occlusion strength", s.ao.strength, 0.0, 1.0, "strength %.2f",
-         [](double v) -> ShadingChange { return [v](ShadingSettings& x) { x.ao.strength = v; }; },
-         "How much creases and corners darken (0: off)");
+  slider(
+      state, edits, "##aoradius", "Occlusion radius", s.ao.radius, 0.0, 64.0, "radius %.0f px",
+      [](double v) -> ShadingChange { return [v](ShadingSettings& x) { x.ao.radius = v; }; },
+      "How far (in pixels) the occlusion looks for surrounding surfaces");
+  slider(
+      state, edits, "##aostrength", "Occlusion strength", s.ao.strength, 0.0, 1.0, "strength %.2f",
+      [](double v) -> ShadingChange { return [v](ShadingSettings& x) { x.ao.strength = v; }; },
+      "How much creases and corners darken (0: off)");
   int directions = s.ao.directions;
   ImGui::SetNextItemWidth(-ImGui::GetFontSize() * 0.5f);
   const bool dirChanged = ImGui::SliderInt("##aodirs", &directions, 1, limits::kMaxAoDirections, "%d directions",
@@ -152,9 +157,10 @@ void drawShadingPanel(ModellerState& state, EditQueue& edits) {
               [fog](Project& p) { p.render.shading.fog.color = Vec3(fog[0], fog[1], fog[2]); });
   contextHelp(state, "The colour distant points fade to");
   ImGui::SameLine();
-  slider(state, edits, "##fogdensity", "Fog density", s.fog.density, 0.0, 2.0, "density %.3f",
-         [](double v) -> ShadingChange { return [v](ShadingSettings& x) { x.fog.density = v; }; },
-         "How quickly points fade with distance (0: no fog)");
+  slider(
+      state, edits, "##fogdensity", "Fog density", s.fog.density, 0.0, 2.0, "density %.3f",
+      [](double v) -> ShadingChange { return [v](ShadingSettings& x) { x.fog.density = v; }; },
+      "How quickly points fade with distance (0: no fog)");
 
   sectionTitle("Depth of field");
   // An aperture needs a focus distance; the first one is the camera's distance to its target.

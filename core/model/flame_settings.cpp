@@ -4,9 +4,12 @@ namespace gridifs {
 
 const char* displayModeName(DisplayMode mode) {
   switch (mode) {
-    case DisplayMode::Flame: return "flame";
-    case DisplayMode::Shaded: return "shaded";
-    default: return "zbuffer";
+    case DisplayMode::Flame:
+      return "flame";
+    case DisplayMode::Shaded:
+      return "shaded";
+    default:
+      return "zbuffer";
   }
 }
 

@@ -304,8 +304,8 @@ void validateRenderJob(const RenderJob& job) {
     throw ModelError("render", "the thread count must be between 1 and " + std::to_string(limits::kMaxRenderThreads));
   OrbitCamera(job.camera, job.width, job.height);  // throws for an unusable camera
   if (job.shadowLights.size() > std::size_t(kernel::kMaxShadowLights))
-    throw ModelError("render.shading.lights", "at most " + std::to_string(kernel::kMaxShadowLights) +
-                                                  " lights can cast shadows");
+    throw ModelError("render.shading.lights",
+                     "at most " + std::to_string(kernel::kMaxShadowLights) + " lights can cast shadows");
   for (const LightView& light : job.shadowLights)
     if (light.size() != job.shadowLights[0].size())
       throw ModelError("render.shading.lights", "every shadow map of a render must have the same size");
@@ -328,7 +328,8 @@ std::uint64_t renderBufferBytes(const RenderJob& job) {
   const std::uint64_t perWorker = sizeof(kernel::PixelCell) + colour;
   const std::uint64_t snapshot = 4 + 4 + 4 + colour;
   std::uint64_t lightTexels = 0;  // per worker 4 bytes a texel, and the merged float copy
-  for (const LightView& light : job.shadowLights) lightTexels += std::uint64_t(light.size()) * std::uint64_t(light.size());
+  for (const LightView& light : job.shadowLights)
+    lightTexels += std::uint64_t(light.size()) * std::uint64_t(light.size());
   return pixels * (std::uint64_t(std::max(1, job.threads)) * perWorker + 2 * snapshot) +
          lightTexels * 4 * (std::uint64_t(std::max(1, job.threads)) + 1);
 }

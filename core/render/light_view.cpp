@@ -17,7 +17,8 @@ BoundingSphere attractorBounds(const CompiledIfs& ifs) {
           hi[d] = std::max(hi[d], double(node[d]));
         }
   };
-  if (ifs.finalFunction) add(*ifs.finalFunction);
+  if (ifs.finalFunction)
+    add(*ifs.finalFunction);
   else
     for (const CompiledFunction& f : ifs.functions) add(f);
   BoundingSphere s;

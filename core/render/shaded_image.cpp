@@ -63,7 +63,7 @@ struct ShadowLight {
 struct DevelopContext {
   int width, height;
   Unproject un;
-  const float* depth;   // smoothed
+  const float* depth;  // smoothed
   const std::uint8_t* albedo;
   std::array<float, 256> srgbLut;
   struct Light {
@@ -80,10 +80,10 @@ struct DevelopContext {
   int aoDirections;
   /// Pixel offsets of the occlusion samples: kPattern² patterns × directions × kAoSteps.
   std::vector<std::array<int, 2>> aoOffsets;
-  std::vector<Vec3f> viewNormals;              // per pixel (valid where covered)
-  int blocksX = 0, blocksY = 0;                // 2×2 blocks of the occlusion
-  std::vector<float> blockAo, blockDepth;      // per block: occlusion and the depth it was computed at
-  std::array<float, 1025> specularTable;       // x^shininess over [0, 1]
+  std::vector<Vec3f> viewNormals;          // per pixel (valid where covered)
+  int blocksX = 0, blocksY = 0;            // 2×2 blocks of the occlusion
+  std::vector<float> blockAo, blockDepth;  // per block: occlusion and the depth it was computed at
+  std::array<float, 1025> specularTable;   // x^shininess over [0, 1]
   float fogR, fogG, fogB, fogDensity;
   float bgR, bgG, bgB;
   float viewToWorld[3][3];
@@ -268,7 +268,7 @@ void shadeRows(const DevelopContext& c, ShadedImage& out, std::size_t rowBegin, 
         // The block's occlusion where this pixel lies on the block's surface; its own at edges.
         const std::size_t block = std::size_t(y / 2) * std::size_t(c.blocksX) + std::size_t(x / 2);
         ao = std::abs(c.blockDepth[block] - d) <= kEdgeFootprints * foot ? c.blockAo[block]
-                                                                           : ambientOcclusion(c, x, y, p, n, d);
+                                                                         : ambientOcclusion(c, x, y, p, n, d);
       }
       const float ar = c.srgbLut[c.albedo[i * 4 + 0]], ag = c.srgbLut[c.albedo[i * 4 + 1]],
                   ab = c.srgbLut[c.albedo[i * 4 + 2]];
@@ -295,14 +295,15 @@ void shadeRows(const DevelopContext& c, ShadedImage& out, std::size_t rowBegin, 
         diffG += light.g * diffuse;
         diffB += light.b * diffuse;
         if (c.specular > 0.0f) {
-          const Vec3f h = normalized(Vec3f{light.direction.x + view.x, light.direction.y + view.y,
-                                           light.direction.z + view.z});
+          const Vec3f h =
+              normalized(Vec3f{light.direction.x + view.x, light.direction.y + view.y, light.direction.z + view.z});
           const float nh = dot(n, h);
           if (nh > 0.0f) {
             const float t = nh * 1024.0f;
             const int k = std::min(int(t), 1023);
-            const float power = c.specularTable[std::size_t(k)] +
-                                (c.specularTable[std::size_t(k) + 1] - c.specularTable[std::size_t(k)]) * (t - float(k));
+            const float power =
+                c.specularTable[std::size_t(k)] +
+                (c.specularTable[std::size_t(k) + 1] - c.specularTable[std::size_t(k)]) * (t - float(k));
             const float sp = c.specular * power * lit;
             specR += light.r * sp;
             specG += light.g * sp;

@@ -27,7 +27,7 @@ struct ShadedImage {
   std::vector<float> linear;       // 4 per pixel: linear-light RGB premultiplied by A, A = coverage (EXR)
   std::vector<float> normals;      // 3 per pixel: world-space unit normal; 0 where empty
   std::vector<float> occlusion;    // ambient light that reaches the pixel: 1 open, 0 fully occluded; 1 where empty
-  std::vector<float> shadow;       // light visibility over the shadowed lights, weighted by intensity: 1 lit, 0 in shadow
+  std::vector<float> shadow;  // light visibility over the shadowed lights, weighted by intensity: 1 lit, 0 in shadow
 };
 
 /// Develops `snapshot` (taken with depth cue 0, so that rgba holds the structural colour; see

@@ -29,8 +29,8 @@ inline HotLight makeHotLight(const LightView& view, std::uint32_t* depth) {
 
 /// Depth-of-field jitter: the camera's view axes in world space and the lens.
 struct HotLens {
-  v4f right, up;     // world unit vectors of the image plane
-  v4f depthRow;      // view depth = dot(depthRow, (x, y, z, 1))
+  v4f right, up;  // world unit vectors of the image plane
+  v4f depthRow;   // view depth = dot(depthRow, (x, y, z, 1))
   float aperture = 0.0f, focus = 0.0f;
 };
 

@@ -1,11 +1,10 @@
 // gridifs render --mode shaded on real files: PNG and EXR with the compositing channels, the
 // project's render.mode, determinism, and bad shading input (exit 2, one sentence with the path).
+#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <fstream>
-
-#include <OpenImageIO/imageio.h>
 
 #include "io/project_io.h"
 #include "tests/cli/run_command.h"
@@ -36,8 +35,8 @@ TEST(ShadedCli, ExrCarriesNormalsOcclusionAndShadowChannels) {
   const fs::path project = dir.path / "squares.gridifs";
   saveProject(squares(DisplayMode::ZBuffer), project);
   const fs::path exr = dir.path / "out.exr";
-  const auto r = runGridifs("render " + quote(project.string()) + " -o " + quote(exr.string()) +
-                            " --mode shaded --threads 2 -q");
+  const auto r =
+      runGridifs("render " + quote(project.string()) + " -o " + quote(exr.string()) + " --mode shaded --threads 2 -q");
   ASSERT_EQ(r.exitCode, 0) << r.err;
   auto in = OIIO::ImageInput::open(exr.string());
   ASSERT_TRUE(in);
@@ -49,8 +48,8 @@ TEST(ShadedCli, ExrCarriesNormalsOcclusionAndShadowChannels) {
     EXPECT_NE(it, spec.channelnames.end()) << name;
     return std::size_t(it - spec.channelnames.begin());
   };
-  const std::size_t a = channel("A"), nx = channel("N.x"), ny = channel("N.y"), nz = channel("N.z"),
-                    ao = channel("AO"), shadow = channel("shadow");
+  const std::size_t a = channel("A"), nx = channel("N.x"), ny = channel("N.y"), nz = channel("N.z"), ao = channel("AO"),
+                    shadow = channel("shadow");
   channel("Z");
   std::vector<float> px(std::size_t(spec.width) * std::size_t(spec.height) * 10);
   ASSERT_TRUE(in->read_image(0, 0, 0, 10, OIIO::TypeDesc::FLOAT, px.data()));
@@ -74,12 +73,14 @@ TEST(ShadedCli, TheProjectsModeIsUsedAndRendersAreDeterministic) {
   const fs::path project = dir.path / "squares.gridifs";
   saveProject(squares(DisplayMode::Shaded), project);
   const fs::path a = dir.path / "a.png", b = dir.path / "b.png", z = dir.path / "z.png";
-  ASSERT_EQ(runGridifs("render " + quote(project.string()) + " -o " + quote(a.string()) + " --threads 2 -q").exitCode, 0);
-  ASSERT_EQ(runGridifs("render " + quote(project.string()) + " -o " + quote(b.string()) + " --threads 2 -q").exitCode, 0);
-  ASSERT_EQ(runGridifs("render " + quote(project.string()) + " -o " + quote(z.string()) +
-                       " --threads 2 --mode zbuffer -q")
-                .exitCode,
+  ASSERT_EQ(runGridifs("render " + quote(project.string()) + " -o " + quote(a.string()) + " --threads 2 -q").exitCode,
             0);
+  ASSERT_EQ(runGridifs("render " + quote(project.string()) + " -o " + quote(b.string()) + " --threads 2 -q").exitCode,
+            0);
+  ASSERT_EQ(
+      runGridifs("render " + quote(project.string()) + " -o " + quote(z.string()) + " --threads 2 --mode zbuffer -q")
+          .exitCode,
+      0);
   EXPECT_EQ(test_support::slurp(a), test_support::slurp(b));
   EXPECT_NE(test_support::slurp(a), test_support::slurp(z));
 }
@@ -115,8 +116,8 @@ TEST(ShadedCli, BadShadingIsRefusedWithTheJsonPath) {
   }
   const fs::path good = dir.path / "good.gridifs";
   saveProject(squares(DisplayMode::ZBuffer), good);
-  const auto r = runGridifs("render " + quote(good.string()) + " -o " + quote((dir.path / "o.png").string()) +
-                            " --mode lit -q");
+  const auto r =
+      runGridifs("render " + quote(good.string()) + " -o " + quote((dir.path / "o.png").string()) + " --mode lit -q");
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.err.find("shaded"), std::string::npos) << r.err;
 }

@@ -14,7 +14,8 @@ namespace gridifs::test {
 /// square, p ↦ (half/2)·p + center ± half/2 in the plane. The quadrants are filled when the whole
 /// attractor's projection on the plane's axes is [-1, 1]² — true when a square of half size 1
 /// centred on the origin shares those axes, as in every scene here.
-inline void addSquare(Project& p, const Vec3& center, double half, int flatAxis, const Vec3& color, double weight = 1.0) {
+inline void addSquare(Project& p, const Vec3& center, double half, int flatAxis, const Vec3& color,
+                      double weight = 1.0) {
   const int a = (flatAxis + 1) % 3, b = (flatAxis + 2) % 3;
   for (int q = 0; q < 4; ++q) {
     Function f;
@@ -42,8 +43,7 @@ inline void separateSquares(Project& p) {
   const std::size_t n = p.functions.size();
   p.transitions.assign(n, std::vector<double>(n, 0.0));
   for (std::size_t i = 0; i < n; ++i)
-    for (std::size_t j = 0; j < n; ++j)
-      p.transitions[i][j] = i / 4 == j / 4 ? 1.0 : 0.05;
+    for (std::size_t j = 0; j < n; ++j) p.transitions[i][j] = i / 4 == j / 4 ? 1.0 : 0.05;
 }
 
 /// A project in the shaded mode with no functions yet: ambient 0.2, one light, no occlusion.

@@ -42,7 +42,8 @@ TEST(ShadedPreviewGui, ShadedModeLightsTheAttractorAndItsSlidersNeedNoRestart) {
     return j["undo"] == "Ambient" && j["preview_modes"]["shaded_develops"].get<int>() > develops;
   });
   EXPECT_EQ(probe["undo"], "Ambient");
-  EXPECT_EQ(probe["preview"]["restarts"].get<std::uint64_t>(), restarts) << "the ambient slider restarted the chaos game";
+  EXPECT_EQ(probe["preview"]["restarts"].get<std::uint64_t>(), restarts)
+      << "the ambient slider restarted the chaos game";
   std::this_thread::sleep_for(400ms);
   const auto brighter = grabScreen(home, image);
   EXPECT_GT(meanAbsDifference(shaded, brighter), 1.0) << "the ambient drag did not change the picture";
@@ -50,11 +51,14 @@ TEST(ShadedPreviewGui, ShadedModeLightsTheAttractorAndItsSlidersNeedNoRestart) {
   // Alt+drag on the preview turns the key light (it casts shadows: its depth buffer is re-rendered).
   const int cx = image.x + image.w / 2, cy = image.y + image.h / 2;
   focusWindow();
-  std::string cmd = "mousemove " + std::to_string(cx) + " " + std::to_string(cy) + " sleep 0.15 keydown alt sleep 0.1 mousedown 1 sleep 0.15";
-  for (int s = 1; s <= 8; ++s) cmd += " mousemove " + std::to_string(cx + 12 * s) + " " + std::to_string(cy) + " sleep 0.05";
+  std::string cmd = "mousemove " + std::to_string(cx) + " " + std::to_string(cy) +
+                    " sleep 0.15 keydown alt sleep 0.1 mousedown 1 sleep 0.15";
+  for (int s = 1; s <= 8; ++s)
+    cmd += " mousemove " + std::to_string(cx + 12 * s) + " " + std::to_string(cy) + " sleep 0.05";
   cmd += " sleep 0.2 mouseup 1 sleep 0.1 keyup alt";
   xdotool(cmd);
-  probe = app.waitFor([](const nlohmann::json& j) { return j["undo"] == "Move key light" && j["preview"]["done"].get<bool>(); });
+  probe = app.waitFor(
+      [](const nlohmann::json& j) { return j["undo"] == "Move key light" && j["preview"]["done"].get<bool>(); });
   EXPECT_EQ(probe["undo"], "Move key light");
   EXPECT_GT(probe["preview"]["restarts"].get<std::uint64_t>(), restarts);
   std::this_thread::sleep_for(400ms);
