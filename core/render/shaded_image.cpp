@@ -80,10 +80,11 @@ struct DevelopContext {
   int aoDirections;
   /// Pixel offsets of the occlusion samples: kPattern² patterns × directions × kAoSteps.
   std::vector<std::array<int, 2>> aoOffsets;
-  std::vector<Vec3f> viewNormals;          // per pixel (valid where covered)
-  int blocksX = 0, blocksY = 0;            // 2×2 blocks of the occlusion
-  std::vector<float> blockAo, blockDepth;  // per block: occlusion and the depth it was computed at
-  std::array<float, 1025> specularTable;   // x^shininess over [0, 1]
+  std::array<float, 3>* viewNormals = nullptr;  // per pixel (valid where covered)
+  int blocksX = 0, blocksY = 0;                 // 2×2 blocks of the occlusion
+  float* blockAo = nullptr;                     // per block: occlusion
+  float* blockDepth = nullptr;                  // per block: the depth it was computed at
+  std::array<float, 1025> specularTable;        // x^shininess over [0, 1]
   float fogR, fogG, fogB, fogDensity;
   float bgR, bgG, bgB;
   float viewToWorld[3][3];
@@ -217,7 +218,9 @@ void normalRows(DevelopContext& c, std::size_t rowBegin, std::size_t rowEnd) {
   for (std::size_t y = rowBegin; y < rowEnd; ++y)
     for (int x = 0; x < c.width; ++x) {
       const std::size_t i = y * std::size_t(c.width) + std::size_t(x);
-      if (c.depth[i] != kInf) c.viewNormals[i] = viewNormal(c, x, int(y), c.depth[i]);
+      if (c.depth[i] == kInf) continue;
+      const Vec3f n = viewNormal(c, x, int(y), c.depth[i]);
+      c.viewNormals[i] = {n.x, n.y, n.z};
     }
 }
 
@@ -236,7 +239,8 @@ void blockOcclusionRows(DevelopContext& c, std::size_t blockRowBegin, std::size_
         const float d = c.depth[i];
         if (d == kInf) continue;
         c.blockDepth[block] = d;
-        c.blockAo[block] = ambientOcclusion(c, x, y, c.un.at(x, y, d), c.viewNormals[i], d);
+        const std::array<float, 3>& n = c.viewNormals[i];
+        c.blockAo[block] = ambientOcclusion(c, x, y, c.un.at(x, y, d), Vec3f{n[0], n[1], n[2]}, d);
         break;
       }
     }
@@ -261,7 +265,7 @@ void shadeRows(const DevelopContext& c, ShadedImage& out, std::size_t rowBegin, 
       }
       const Vec3f p = c.un.at(x, y, d);
       const float foot = c.un.footprint(d);
-      const Vec3f n = c.viewNormals[i];
+      const Vec3f n{c.viewNormals[i][0], c.viewNormals[i][1], c.viewNormals[i][2]};
       const Vec3f view = c.un.perspective ? normalized(Vec3f{-p.x, -p.y, -p.z}) : Vec3f{0.0f, 0.0f, 1.0f};
       float ao = 1.0f;
       if (c.aoStrength > 0.0f && c.aoRadius > 0.0f) {
@@ -466,24 +470,30 @@ void developShaded(const RenderImage& snapshot, const ShadingSettings& settings,
   c.bgB = float(std::clamp(background.z, 0.0, 1.0));
 
   // Empty pixels: the snapshot's alpha is 0 there (its depth is +inf as well).
-  std::vector<float> raw(n), horizontal(n), smooth(n);
-  for (std::size_t i = 0; i < n; ++i) raw[i] = snapshot.rgba[i * 4 + 3] ? snapshot.depth[i] : kInf;
+  // The snapshot's depth is +inf where no point was plotted (RenderImage), which the passes below
+  // treat as empty.
+  ShadedImage::Workspace& w = out.workspace;
+  w.horizontal.resize(n);
+  w.smooth.resize(n);
+  w.viewNormals.resize(n);
   const std::size_t grain = 16;
   parallelFor(std::size_t(height), threads, grain, [&](std::size_t b, std::size_t e) {
-    smoothPass(raw.data(), horizontal.data(), width, height, c.un, false, b, e);
+    smoothPass(snapshot.depth.data(), w.horizontal.data(), width, height, c.un, false, b, e);
   });
   parallelFor(std::size_t(height), threads, grain, [&](std::size_t b, std::size_t e) {
-    smoothPass(horizontal.data(), smooth.data(), width, height, c.un, true, b, e);
+    smoothPass(w.horizontal.data(), w.smooth.data(), width, height, c.un, true, b, e);
   });
-  c.depth = smooth.data();
+  c.depth = w.smooth.data();
   for (int k = 0; k <= 1024; ++k) c.specularTable[std::size_t(k)] = std::pow(float(k) / 1024.0f, c.shininess);
-  c.viewNormals.resize(n);
+  c.viewNormals = w.viewNormals.data();
   parallelFor(std::size_t(height), threads, grain, [&](std::size_t b, std::size_t e) { normalRows(c, b, e); });
   if (c.aoStrength > 0.0f && c.aoRadius > 0.0f) {
     c.blocksX = (width + 1) / 2;
     c.blocksY = (height + 1) / 2;
-    c.blockAo.resize(std::size_t(c.blocksX) * std::size_t(c.blocksY));
-    c.blockDepth.resize(c.blockAo.size());
+    w.blockAo.resize(std::size_t(c.blocksX) * std::size_t(c.blocksY));
+    w.blockDepth.resize(w.blockAo.size());
+    c.blockAo = w.blockAo.data();
+    c.blockDepth = w.blockDepth.data();
     parallelFor(std::size_t(c.blocksY), threads, grain / 2,
                 [&](std::size_t b, std::size_t e) { blockOcclusionRows(c, b, e); });
   }

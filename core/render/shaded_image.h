@@ -13,6 +13,7 @@
 // (Reeves, Salesin & Cook 1987) and exponential distance fog.
 //
 // Thread-safety: pure function of its arguments; runs on up to `threads` oneTBB threads.
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -28,6 +29,14 @@ struct ShadedImage {
   std::vector<float> normals;      // 3 per pixel: world-space unit normal; 0 where empty
   std::vector<float> occlusion;    // ambient light that reaches the pixel: 1 open, 0 fully occluded; 1 where empty
   std::vector<float> shadow;  // light visibility over the shadowed lights, weighted by intensity: 1 lit, 0 in shadow
+
+  /// developShaded's working buffers, kept between calls so that re-developing the same size
+  /// (a light or occlusion slider) allocates and clears nothing.
+  struct Workspace {
+    std::vector<float> horizontal, smooth;          // depth after each smoothing pass
+    std::vector<std::array<float, 3>> viewNormals;  // per pixel, view space
+    std::vector<float> blockAo, blockDepth;         // occlusion per 2×2 block
+  } workspace;
 };
 
 /// Develops `snapshot` (taken with depth cue 0, so that rgba holds the structural colour; see
