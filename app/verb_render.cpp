@@ -15,9 +15,11 @@
 #include "app/progress_bar.h"
 #include "app/render_device_option.h"
 #include "app/render_setup.h"
+#include "app/shaded_image_output.h"
 #include "base/atomic_file.h"
 #include "base/color_space.h"
 #include "render/flame_render.h"
+#include "render/shaded_image.h"
 
 namespace gridifs::cli {
 namespace {
@@ -92,14 +94,15 @@ void writeImage(const RenderImage& image, const std::filesystem::path& out, cons
 /// Runs `job` to completion on `device` (app/render_device_option.h) with a progress bar (interruptible with Ctrl-C).
 /// Throws CliError when interrupted or when at least half of the points were unusable (nothing is written then).
 RenderImage renderWithProgress(const RenderSetup& setup, const RenderJob& job, const std::string& file,
-                               const std::string& out, bool quiet, const std::string& device) {
+                               const std::string& out, bool quiet, const std::string& device,
+                               const DisplaySettings* displayOverride = nullptr) {
   ProgressBar bar("render", quiet);
   InterruptGuard interrupt;
   RenderImage image;
   try {
     std::string used;
     image = renderOnDevice(
-        device, setup.ifs, job, DisplaySettings::fromProject(setup.project),
+        device, setup.ifs, job, displayOverride ? *displayOverride : DisplaySettings::fromProject(setup.project),
         [&](const RenderStats& s) { return bar.report(s) && !gInterrupted.load(); },
         used);
   } catch (const RenderCancelled&) {
@@ -168,18 +171,55 @@ int runFlameRender(const std::string& file, const std::string& out, const Render
   return kSuccess;
 }
 
+/// `--mode shaded`: the chaos game fills the camera's z-buffer and one depth buffer per shadowed
+/// light (with depth of field when the aperture is above 0), then the image is developed with the
+/// lights, occlusion and fog (core/render/shaded_image.h). Shadow maps and depth of field are
+/// CPU chaos-game effects, so this mode always renders on the CPU.
+int runShadedRender(const std::string& file, const std::string& out, const RenderSetup& setup, bool quiet,
+                    const std::string& device) {
+  const ShadingSettings& shading = setup.project.render.shading;
+  RenderJob job;
+  try {
+    job = shadedRenderJob(setup.job, shading, *setup.ifs);
+    validateRenderJob(job);
+  } catch (const ModelError& e) {
+    throw CliError(kBadInput, file + ": " + e.what());
+  }
+  if (device == "gpu")
+    std::fprintf(stderr,
+                 "note: the shaded display renders on the CPU (its shadow maps and depth of field are "
+                 "filled by the CPU chaos game).\n");
+  const DisplaySettings display = shadedDisplaySettings(setup.project);
+  const RenderImage image = renderWithProgress(setup, job, file, out, quiet, "cpu", &display);
+  if (image.hitPixels == 0)
+    std::fprintf(stderr, "warning: %s: no point landed in the %dx%d frame; check the camera.\n", file.c_str(),
+                 image.width, image.height);
+  ShadedImage shaded;
+  try {
+    developShaded(image, shading, setup.project.camera, setup.project.render.background, job.threads, shaded);
+  } catch (const ModelError& e) {
+    throw CliError(kBadInput, file + ": " + e.what());
+  }
+  const std::string description = "GridIFS shaded render of " + file + ", " + std::to_string(job.samples) +
+                                  " samples, seed " + std::to_string(job.seed) + ", " + std::to_string(job.threads) +
+                                  " threads";
+  writeShadedImage(shaded, image, out, description);
+  return kSuccess;
+}
+
 int runRender(const std::string& file, const std::string& out, const RenderOverrides& overrides, bool quiet,
               const FlameOptions& flame = {}) {
   checkOutputPath(out, {"png", "exr", "tif", "tiff"}, "the output image");
   const std::string device = checkedDevice(overrides.device);
   DisplayMode mode = DisplayMode::ZBuffer;
   if (flame.mode && !parseDisplayMode(*flame.mode, mode))
-    throw CliError(kBadInput, "--mode must be zbuffer or flame, not \"" + *flame.mode + "\"");
+    throw CliError(kBadInput, "--mode must be zbuffer, flame or shaded, not \"" + *flame.mode + "\"");
   const RenderSetup setup = prepareRender(file, overrides, limits::kMaxRenderSamples);
   if (!flame.mode) mode = setup.project.render.mode;
   if (mode == DisplayMode::Flame) return runFlameRender(file, out, setup, flame, quiet, device);
   if (flame.bitDepth || flame.transparent || flame.palette)
     throw CliError(kBadInput, "--bit-depth, --transparent and --palette apply to --mode flame only");
+  if (mode == DisplayMode::Shaded) return runShadedRender(file, out, setup, quiet, device);
   const RenderImage image = renderWithProgress(setup, setup.job, file, out, quiet, device);
   const RenderStats& s = image.stats;
   if (s.badSamples > 0)
@@ -197,7 +237,7 @@ const VerbRegistration kRender{
     {"render",
      "FILE -o OUT.(png|exr|tif) [--width W --height H --samples N --seed S --threads T "
      "--device auto|gpu|cpu] "
-     "[--mode zbuffer|flame --palette P --bit-depth B --transparent]: render headlessly",
+     "[--mode zbuffer|flame|shaded --palette P --bit-depth B --transparent]: render headlessly",
      [](CLI::App& app) {
        const auto a = addChaosVerbOptions(app, "output image: .png or .tif (8-bit RGB) or .exr (float RGBA + Z)",
                                           "chaos-game iterations in total, e.g. 2e7 (default: the project's)",
@@ -206,7 +246,8 @@ const VerbRegistration kRender{
        app.add_option("--height", a->overrides.height, "image height in pixels (default: the project's)");
        auto flame = std::make_shared<FlameOptions>();
        app.add_option("--mode", flame->mode,
-                      "zbuffer (nearest surface) or flame (log density, palette colors); "
+                      "zbuffer (nearest surface), flame (log density, palette colors) or shaded "
+                      "(lights, shadows, occlusion, fog; EXR adds N.x N.y N.z AO shadow); "
                       "default: the project's render.mode");
        app.add_option("--palette", flame->palette,
                       "flame palette: a built-in name (ember, ice, ...), flam3:N, "

@@ -104,6 +104,8 @@ float drawMenuBar(AppCommands& app) {
         s.previewMode = PreviewMode::ZBuffer;
       if (ImGui::MenuItem("Flame (log density)", nullptr, s.previewMode == PreviewMode::Flame))
         s.previewMode = PreviewMode::Flame;
+      if (ImGui::MenuItem("Shaded (lights, shadows, occlusion)", nullptr, s.previewMode == PreviewMode::Shaded))
+        s.previewMode = PreviewMode::Shaded;
       if (ImGui::MenuItem("Mesh F^n(A) (deterministic)", nullptr, s.previewMode == PreviewMode::Mesh))
         s.previewMode = PreviewMode::Mesh;
       ImGui::EndMenu();

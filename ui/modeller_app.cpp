@@ -250,6 +250,17 @@ void ModellerApp::buildUi() {
   ImGui::End();
   ImGui::PopStyleVar();
 
+  if (state_.previewMode == PreviewMode::Shaded) {
+    // Over the IFS view while the preview shows the shaded display, so that the picture and its
+    // light dial stay free (placed once; the artist may move it).
+    const ImVec2 ifsPos = panels_.pos[std::size_t(Panel::Ifs)], ifsSize = panels_.size[std::size_t(Panel::Ifs)];
+    const float em = ImGui::GetFontSize();
+    ImGui::SetNextWindowPos(ImVec2(ifsPos.x + ifsSize.x - em * 18.0f, ifsPos.y), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(em * 18.0f, std::max(em * 20.0f, ifsSize.y)), ImGuiCond_FirstUseEver);
+    if (ImGui::Begin("Shading")) drawShadingPanel(state_, edits_);
+    state_.probe.window("panel.shading");
+    ImGui::End();
+  }
   drawHelpWindow(state_);
   files_.draw(edits_);
   export_.draw(state_);

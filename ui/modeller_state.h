@@ -16,7 +16,7 @@
 namespace gridifs::ui {
 
 /// What the preview shows; later modes (flame display, deterministic mesh) join this list.
-enum class PreviewMode { ZBuffer, Flame, Mesh };  // Mesh: F^n(A)
+enum class PreviewMode { ZBuffer, Flame, Mesh, Shaded };  // Mesh: F^n(A)
 
 class ModellerState {
  public:

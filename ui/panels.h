@@ -20,6 +20,9 @@ float operationStackPanelMinHeight(float panelWidth);
 void drawOperationPanel(ModellerState& state, EditQueue& edits);
 /// selection_panel.cpp: index boxes with or/and/xor/minus, all/none/invert, the center for new ops.
 void drawSelectionPanel(ModellerState& state, EditQueue& edits);
+/// shading_panel.cpp: the shaded display's lights, ambient, specular, occlusion, fog and depth of
+/// field, one undo step per slider drag.
+void drawShadingPanel(ModellerState& state, EditQueue& edits);
 /// help_window.cpp: the keyboard and mouse shortcuts.
 void drawHelpWindow(ModellerState& state);
 

@@ -14,6 +14,8 @@ const char* modeName(PreviewMode mode) {
       return "flame";
     case PreviewMode::Mesh:
       return "mesh";
+    case PreviewMode::Shaded:
+      return "shaded";
     default:
       return "zbuffer";
   }
@@ -27,7 +29,9 @@ void PreviewModes::syncFromProject(ModellerState& state) {
   const DisplayMode pm = state.document.project().render.mode;
   if (!synced_ || pm != projectMode_) {
     if (state.previewMode != PreviewMode::Mesh)
-      state.previewMode = pm == DisplayMode::Flame ? PreviewMode::Flame : PreviewMode::ZBuffer;
+      state.previewMode = pm == DisplayMode::Flame    ? PreviewMode::Flame
+                          : pm == DisplayMode::Shaded ? PreviewMode::Shaded
+                                                      : PreviewMode::ZBuffer;
     projectMode_ = pm;
     synced_ = true;
   }
@@ -46,14 +50,22 @@ void PreviewModes::buildToolbar(ModellerState& state, EditQueue& edits) {
   modeButton("Flame", PreviewMode::Flame, "preview.mode.flame",
              "Log density colored by structure (Draves & Reckase 2003, §4-8); same chaos game, no restart");
   ImGui::SameLine();
+  modeButton("Shaded", PreviewMode::Shaded, "preview.mode.shaded",
+             "The nearest surface lit by up to 3 lights, with shadows, ambient occlusion, fog and depth of field "
+             "(settings in the Shading panel; Alt+drag moves the key light)");
+  ImGui::SameLine();
   modeButton("Mesh F^n(A)", PreviewMode::Mesh, "preview.mode.mesh",
              "The deterministic algorithm (Gröller & Wegenkittl 1994, §3.2): n levels of the IFS applied to a cube or sphere");
   // Menu (View > Preview mode) and toolbar both land here: z-buffer/flame become one undo step
   // on render.mode.
   if (state.previewMode != PreviewMode::Mesh) {
-    const DisplayMode want = state.previewMode == PreviewMode::Flame ? DisplayMode::Flame : DisplayMode::ZBuffer;
+    const DisplayMode want = state.previewMode == PreviewMode::Flame    ? DisplayMode::Flame
+                             : state.previewMode == PreviewMode::Shaded ? DisplayMode::Shaded
+                                                                        : DisplayMode::ZBuffer;
     if (want != state.document.project().render.mode) {
-      edits.commit(want == DisplayMode::Flame ? "Flame display" : "Z-buffer display",
+      edits.commit(want == DisplayMode::Flame    ? "Flame display"
+                   : want == DisplayMode::Shaded ? "Shaded display"
+                                                 : "Z-buffer display",
                    [want](Project& p) { p.render.mode = want; });
       projectMode_ = want;
     }
@@ -107,6 +119,29 @@ bool PreviewModes::updateTexture(ModellerState& state, const RenderImage& image,
     case PreviewMode::Mesh:
       if (modeChanged) meshDirty_ = true;
       return false;
+    case PreviewMode::Shaded: {
+      // Developing is a pass over the z-buffer (core/render/shaded_image.h): light, occlusion and
+      // fog changes re-develop the same buffers without a restart.
+      const Project& p = state.document.project();
+      const bool settingsChanged = !(p.render.shading == developedShading_) || !(p.camera == developedCamera_) ||
+                                   !(p.render.background == developedBackground_);
+      if ((fetched || modeChanged || settingsChanged) && image.width > 0) {
+        try {
+          developShaded(image, p.render.shading, p.camera, p.render.background, state.renderThreads, shaded_);
+          shadedError_.clear();
+        } catch (const std::exception& e) {
+          shadedError_ = e.what();
+          return false;
+        }
+        developedShading_ = p.render.shading;
+        developedCamera_ = p.camera;
+        developedBackground_ = p.render.background;
+        ++shadedDevelops_;
+        texture.upload(shaded_.width, shaded_.height, shaded_.rgba.data());
+        return true;
+      }
+      return modeChanged;
+    }
     case PreviewMode::Flame:
       if (modeChanged) flame_.invalidate();
       return flame_.update(state.document, state.now, image, fetched,
@@ -155,7 +190,9 @@ nlohmann::json PreviewModes::probeJson() const {
           {"mesh_depth", mesh_.shownDepth()},
           {"mesh_max_depth", mesh_.maxDepth()},
           {"mesh_building", mesh_.building()},
-          {"mesh_error", mesh_.error()}};
+          {"mesh_error", mesh_.error()},
+          {"shaded_develops", shadedDevelops_},
+          {"shaded_error", shadedError_}};
 }
 
 }  // namespace gridifs::ui

@@ -1,5 +1,5 @@
 #pragma once
-// The preview's display modes (z-buffer | flame over the same chaos game |
+// The preview's display modes (z-buffer | flame | shaded over the same chaos game |
 // the deterministic mesh F^n(A)), owned by PreviewView: a second toolbar row with the mode switch
 // and the mode's controls, and what the preview texture shows in each mode.
 #include <imgui.h>
@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "render/shaded_image.h"
 #include "ui/edit_queue.h"
 #include "ui/flame_display.h"
 #include "ui/gl_resources.h"
@@ -66,6 +67,13 @@ class PreviewModes {
   glm::ivec2 drawnSize_{0, 0};
   Vec3 drawnBackground_{-1.0};
   bool meshDirty_ = true;
+  // The shaded display: what was last developed, to re-develop only on change.
+  ShadedImage shaded_;
+  ShadingSettings developedShading_;
+  Camera developedCamera_;
+  Vec3 developedBackground_{-1.0};
+  std::uint64_t shadedDevelops_ = 0;
+  std::string shadedError_;
 };
 
 }  // namespace gridifs::ui

@@ -1,6 +1,7 @@
 #include "ui/preview_renderer.h"
 
 #include "render/compiled_ifs.h"
+#include "render/shaded_image.h"
 #if GRIDIFS_HAVE_GPU
 #include "gpu/render_device.h"
 #endif
@@ -38,7 +39,9 @@ void PreviewRenderer::publish(const Document& document, int width, int height, i
   const Project& project = document.project();
   const Revisions& now = document.revisions();
   if (now.display != published_.display) {
-    const DisplaySettings display = DisplaySettings::fromProject(project);
+    // The shaded display develops the structural colour itself: no depth cueing in its buffers.
+    const DisplaySettings display = project.render.mode == DisplayMode::Shaded ? shadedDisplaySettings(project)
+                                                                               : DisplaySettings::fromProject(project);
     if (!(display.background == display_.background) || display.depthCue != display_.depthCue) {
       display_ = display;
       displayChanged_ = true;
@@ -58,6 +61,8 @@ void PreviewRenderer::publish(const Document& document, int width, int height, i
     job.height = height;
     job.lowPriority = true;  // the UI thread gets a core first (the modeller stays at ≥ 30 fps while rendering)
     job = previewFlameJob(job, document);  // color sums always on: the mode switch is instant
+    // Shadow maps and depth of field are filled by the same chaos game (core/render/shaded_plot.h).
+    if (project.render.mode == DisplayMode::Shaded) job = shadedRenderJob(job, project.render.shading, *ifs);
 #if GRIDIFS_HAVE_GPU
     try {
       renderer_->restart(ifs, job);

@@ -8,6 +8,7 @@
 #include <cstdio>
 
 #include "edit/view_camera.h"
+#include "render/camera.h"
 #include "ui/widgets.h"
 
 namespace gridifs::ui {
@@ -80,24 +81,56 @@ void PreviewView::build(ModellerState& state, EditQueue& edits, float framebuffe
                                         state.previewError.c_str());
 
   ImGuiIO& io = ImGui::GetIO();
-  if (hovered) state.contextHelp = "Drag: orbit the preview camera · middle/Shift+drag: pan · wheel: zoom";
+  const bool shaded = state.previewMode == PreviewMode::Shaded && !project.render.shading.lights.empty();
+  if (shaded) drawLightGizmo(state, origin);
+  if (hovered)
+    state.contextHelp = shaded ? "Drag: orbit · middle/Shift+drag: pan · wheel: zoom · Alt+drag: move the key light"
+                               : "Drag: orbit the preview camera · middle/Shift+drag: pan · wheel: zoom";
   orbit_.settleWheel(edits, state.now);
-  if (hovered && io.MouseWheel != 0.0f && orbit_.motion() == OrbitController::Motion::None)
-    orbit_.zoomProject(project.camera, edits, io.MouseWheel, state.now);
+  const bool idle = orbit_.motion() == OrbitController::Motion::None && !lightDrag_;
+  if (hovered && io.MouseWheel != 0.0f && idle) orbit_.zoomProject(project.camera, edits, io.MouseWheel, state.now);
   const glm::dvec2 mouse(io.MousePos.x - origin.x, io.MousePos.y - origin.y);
-  if (orbit_.motion() == OrbitController::Motion::None && hovered) {
+  if (idle && hovered) {
     for (int b = 0; b < 3; ++b)
       if (ImGui::IsMouseClicked(b)) {
         orbit_.settleWheel(edits, -1.0);
         dragButton_ = b;
         dragMoved_ = false;
-        orbit_.begin((b == 2 || io.KeyShift) ? OrbitController::Motion::Pan : OrbitController::Motion::Orbit,
-                     project.camera, mouse);
         dragStart_ = mouse;
+        if (b == 0 && io.KeyAlt && shaded) {
+          lightDrag_ = true;
+          dragLight_ = project.render.shading.lights[0].direction;
+        } else {
+          orbit_.begin((b == 2 || io.KeyShift) ? OrbitController::Motion::Pan : OrbitController::Motion::Orbit,
+                       project.camera, mouse);
+        }
         break;
       }
   }
-  if (orbit_.motion() != OrbitController::Motion::None) {
+  if (lightDrag_) {
+    if (ImGui::IsMouseDown(dragButton_)) {
+      const glm::dvec2 delta = mouse - dragStart_;
+      if (!dragMoved_ && glm::length(delta) > 3.0) {
+        dragMoved_ = true;
+        edits.begin("Move key light");
+      }
+      if (dragMoved_) {
+        // The key light turns with the mouse: right/left about the vertical axis, up/down in elevation.
+        const double length = glm::length(dragLight_);
+        const double azimuth = std::atan2(dragLight_.y, dragLight_.x) - delta.x * 0.01;
+        double elevation = std::asin(std::clamp(dragLight_.z / length, -1.0, 1.0)) - delta.y * 0.01;
+        elevation = std::clamp(elevation, -1.55, 1.5705);
+        const Vec3 direction(std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth),
+                             std::sin(elevation));
+        edits.update([direction](Project& p) {
+          if (!p.render.shading.lights.empty()) p.render.shading.lights[0].direction = direction;
+        });
+      }
+    } else {
+      if (dragMoved_) edits.end();
+      lightDrag_ = false;
+    }
+  } else if (orbit_.motion() != OrbitController::Motion::None) {
     if (ImGui::IsMouseDown(dragButton_)) {
       const bool firstMove = !dragMoved_ && glm::length(mouse - dragStart_) > 3.0;
       if (firstMove) dragMoved_ = true;
@@ -107,6 +140,27 @@ void PreviewView::build(ModellerState& state, EditQueue& edits, float framebuffe
       orbit_.end();
     }
   }
+}
+
+void PreviewView::drawLightGizmo(ModellerState& state, ImVec2 origin) const {
+  // The key light as seen from the camera: a line from the image centre towards the light, a
+  // filled sun where the light is in front of the view, an outline where it is behind.
+  const Project& project = state.document.project();
+  const OrbitCamera camera(project.camera, 64, 64);
+  const glm::dvec4 v = camera.view() * glm::dvec4(project.render.shading.lights[0].direction, 0.0);
+  const double length = glm::length(glm::dvec3(v));
+  if (!(length > 0.0)) return;
+  const float radius = float(std::min(size_.x, size_.y) * 0.12);
+  const ImVec2 centre(origin.x + float(size_.x) - radius * 1.4f, origin.y + radius * 1.4f);
+  const ImVec2 sun(centre.x + float(v.x / length) * radius, centre.y - float(v.y / length) * radius);
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  const ImU32 colour = lightDrag_ ? IM_COL32(255, 230, 120, 255) : IM_COL32(255, 220, 120, 170);
+  draw->AddCircle(centre, radius, IM_COL32(255, 255, 255, 60), 48, 1.0f);
+  draw->AddLine(centre, sun, colour, 1.5f);
+  if (v.z >= 0.0)
+    draw->AddCircleFilled(sun, radius * 0.12f + 2.0f, colour);
+  else
+    draw->AddCircle(sun, radius * 0.12f + 2.0f, colour, 16, 1.5f);
 }
 
 void PreviewView::publish(ModellerState& state) {

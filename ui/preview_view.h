@@ -2,6 +2,8 @@
 // The preview window (Gröller & Wegenkittl 1994, §4.2 "the rendered result"): the renderer's
 // z-buffer image, streamed while it fills, orbiting with the IFS user view; pause/resume,
 // sample budget, depth cueing and background.
+#include <imgui.h>
+
 #include <glm/vec2.hpp>
 
 #include "ui/edit_queue.h"
@@ -46,7 +48,12 @@ class PreviewView {
   Vec3 drawnBackground_{-1.0};
   double lastFetch_ = -1.0;
   float framebufferScale_ = 1.0f;
+  /// The key light's direction as a small dial in the image's corner (Alt+drag turns it).
+  void drawLightGizmo(ModellerState& state, ImVec2 origin) const;
+
   OrbitController orbit_;  // the project camera, orbited, panned and zoomed from this view
+  bool lightDrag_ = false;  // Alt+drag in the shaded mode turns the key light instead
+  Vec3 dragLight_{0.0};
   int dragButton_ = 0;
   bool dragMoved_ = false;
   glm::dvec2 dragStart_{0.0};

@@ -4,15 +4,33 @@
 
 namespace gridifs {
 
+namespace {
+
+/// What the shaded display asks of the chaos game: a depth buffer per shadowed light (its
+/// direction) and the depth-of-field lens. Nothing outside the shaded mode.
+std::vector<double> shadedChaosInputs(const RenderSettings& r) {
+  std::vector<double> inputs;
+  if (r.mode != DisplayMode::Shaded) return inputs;
+  for (const ShadingLight& l : r.shading.lights)
+    if (l.shadows) inputs.insert(inputs.end(), {l.direction.x, l.direction.y, l.direction.z});
+  inputs.push_back(-1.0);  // separates the lights from the lens
+  if (r.shading.dof.focus && r.shading.dof.aperture > 0.0)
+    inputs.insert(inputs.end(), {r.shading.dof.aperture, *r.shading.dof.focus});
+  return inputs;
+}
+
+}  // namespace
+
 bool sameDisplay(const RenderSettings& a, const RenderSettings& b) {
   FlameSettings toneA = a.flame, toneB = b.flame;
   toneA.palette = toneB.palette = "";  // the palette is looked up per sample: a render input
-  return a.background == b.background && a.depth_cue == b.depth_cue && a.mode == b.mode && toneA == toneB;
+  return a.background == b.background && a.depth_cue == b.depth_cue && a.mode == b.mode && toneA == toneB &&
+         a.shading == b.shading;
 }
 
 bool sameRenderInput(const RenderSettings& a, const RenderSettings& b) {
   return a.width == b.width && a.height == b.height && a.samples == b.samples && a.seed == b.seed && a.skip == b.skip &&
-         a.flame.palette == b.flame.palette;
+         a.flame.palette == b.flame.palette && shadedChaosInputs(a) == shadedChaosInputs(b);
 }
 
 Document::Document(Project project) : project_(std::move(project)), saved_(project_) {

@@ -27,9 +27,10 @@ struct Revisions {
 };
 
 /// Whether two render settings give the same picture from the same buffers (background, depth
-/// cue, display mode and the flame tone mapping; the palette is a render input).
+/// cue, display mode, the flame tone mapping and the shading; the palette is a render input).
 bool sameDisplay(const RenderSettings& a, const RenderSettings& b);
-/// Whether two render settings drive the chaos game the same way (everything but the display).
+/// Whether two render settings drive the chaos game the same way (everything but the display;
+/// in the shaded mode the directions of shadowed lights and the depth of field are render inputs).
 bool sameRenderInput(const RenderSettings& a, const RenderSettings& b);
 
 /// Not thread-safe: owned and used by one thread (the UI thread, or a CLI verb).

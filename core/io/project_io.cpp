@@ -9,6 +9,7 @@
 #include "base/bounded_read.h"
 #include "io/animation_io.h"
 #include "io/animation_json.h"
+#include "io/shading_io.h"
 #include "model/operation_table.h"
 #include "model/palette_reference.h"
 #include "model/validation.h"
@@ -488,9 +489,10 @@ Project parseProject(const std::string& text) {
     r.depth_cue = number(*it, "depth_cue", "render", r.depth_cue, 0.0, 1.0);
     if (auto m = it->find("mode"); m != it->end()) {
       if (!parseDisplayMode(readString(*m, "render.mode", 32), r.mode))
-        fail("render.mode", "expected \"zbuffer\" or \"flame\"");
+        fail("render.mode", "expected \"zbuffer\", \"flame\" or \"shaded\"");
     }
     if (auto fl = it->find("flame"); fl != it->end()) r.flame = readFlame(*fl, "render.flame");
+    if (auto sh = it->find("shading"); sh != it->end()) r.shading = readShadingSettings(*sh, "render.shading");
   }
   auto functions = root.find("functions");
   if (functions == root.end()) fail("functions", "the project has no functions");
@@ -543,6 +545,9 @@ std::string serializeProject(const Project& project) {
                              {"estimator_radius", fl.estimator_radius}, {"estimator_minimum", fl.estimator_minimum},
                              {"estimator_curve", fl.estimator_curve}, {"filter_radius", fl.filter_radius}};
   if (fl.density_unit != 1.0) root["render"]["flame"]["density_unit"] = fl.density_unit;
+  // Written when it says something: files that never used shading save as they always have.
+  if (r.mode == DisplayMode::Shaded || !(r.shading == ShadingSettings{}))
+    root["render"]["shading"] = writeShadingSettings(r.shading);
   ordered_json functions = ordered_json::array();
   for (const Function& f : project.functions) functions.push_back(writeFunction(f));
   root["functions"] = functions;

@@ -7,12 +7,13 @@
 
 namespace gridifs {
 
-/// Which picture a render shows: the nearest surface (z-buffer, Gröller & Wegenkittl 1994, §3.1) or the
-/// whole attractor's log density colored by structure (flame, Draves & Reckase 2003, §4–8).
-enum class DisplayMode { ZBuffer, Flame };
+/// Which picture a render shows: the nearest surface (z-buffer, Gröller & Wegenkittl 1994, §3.1), the
+/// whole attractor's log density colored by structure (flame, Draves & Reckase 2003, §4–8), or the
+/// nearest surface lit, shadowed and occluded (shaded, core/render/shaded_image.h).
+enum class DisplayMode { ZBuffer, Flame, Shaded };
 
 const char* displayModeName(DisplayMode mode);
-/// Parses "zbuffer" / "flame"; false for anything else.
+/// Parses "zbuffer" / "flame" / "shaded"; false for anything else.
 bool parseDisplayMode(const std::string& text, DisplayMode& out);
 
 struct FlameSettings {

@@ -6,6 +6,7 @@
 #include "model/flame_settings.h"
 #include "model/function.h"
 #include "model/keyframe_track.h"
+#include "model/shading_settings.h"
 
 namespace gridifs {
 
@@ -24,8 +25,9 @@ struct RenderSettings {
   int skip = 20;
   Vec3 background{0.0};
   double depth_cue = 0.6;  // 0: no attenuation, 1: farthest points black
-  DisplayMode mode = DisplayMode::ZBuffer;  // "render.mode": "zbuffer" | "flame"
+  DisplayMode mode = DisplayMode::ZBuffer;  // "render.mode": "zbuffer" | "flame" | "shaded"
   FlameSettings flame;                      // "render.flame": the flame display (Draves & Reckase 2003, §4–8)
+  ShadingSettings shading;                  // "render.shading": lights, occlusion, fog, depth of field
   bool operator==(const RenderSettings&) const = default;
 };
 

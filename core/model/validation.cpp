@@ -56,6 +56,7 @@ namespace {
 // passed these checks) keeps its verdict, so its operations are not checked again.
 void validate(const Project& project, const Project* trusted) {
   validateFlameSettings(project.render.flame, "render.flame");
+  validateShadingSettings(project.render.shading, "render.shading");
   if (project.functions.empty()) fail("functions", "the IFS needs at least one function");
   if (project.functions.size() > std::size_t(limits::kMaxFunctions))
     fail("functions", "more than " + std::to_string(limits::kMaxFunctions) + " functions");

@@ -15,6 +15,7 @@
 
 #include "base/system_memory.h"
 #include "render/chaos_kernel.h"
+#include "render/shaded_plot.h"
 
 // snapshot() reinterprets the packed colour bytes (r in the low byte) as r, g, b, a in memory.
 static_assert(std::endian::native == std::endian::little, "the renderer assumes a little-endian CPU");
@@ -49,6 +50,9 @@ struct PreparedJob {
   kernel::HotCamera camera;
   RenderJob job;
   std::vector<kernel::v4f> palette;  // 257 entries when job.palette is set
+  kernel::HotLens lens;
+
+  bool shaded() const { return !job.shadowLights.empty() || job.dofAperture > 0.0; }
 
   PreparedJob(std::shared_ptr<const CompiledIfs> compiled, const RenderJob& renderJob)
       : ifs(std::move(compiled)), job(renderJob) {
@@ -68,6 +72,19 @@ struct PreparedJob {
     hotIfs.skip = job.skip;
     hotIfs.escapeBound = limits::kEscapeBound;
     camera = kernel::makeHotCamera(OrbitCamera(job.camera, job.width, job.height));
+    if (job.dofAperture > 0.0) {
+      const OrbitCamera orbit(job.camera, job.width, job.height);
+      const glm::dmat4& view = orbit.view();  // rows of the rotation: the view axes in world space
+      for (int d = 0; d < 3; ++d) {
+        lens.right[d] = float(view[d][0]);
+        lens.up[d] = float(view[d][1]);
+      }
+      lens.right[3] = lens.up[3] = 0.0f;
+      const kernel::v4f* columns[4] = {&camera.cx, &camera.cy, &camera.cz, &camera.c1};
+      for (int d = 0; d < 4; ++d) lens.depthRow[d] = (*columns[d])[3];
+      lens.aperture = float(job.dofAperture);
+      lens.focus = float(job.dofFocus);
+    }
     if (job.palette) {
       for (const Rgb& c : job.palette->colors) palette.push_back(kernel::v4f{c.r, c.g, c.b, 0.0f});
       palette.push_back(palette.back());
@@ -95,6 +112,9 @@ struct ChaosRenderer::Worker {
   int index = 0;
   std::vector<kernel::PixelCell> cells;
   std::vector<float> colorSums;
+  /// One depth buffer per shadowed light (float bits, ~0u where empty), and the lens samples.
+  std::vector<std::uint32_t> lightDepth[kernel::kMaxShadowLights];
+  kernel::Rng lensRng;
   /// The generation the buffers and counters belong to; 0 while they are being reset.
   std::atomic<std::uint64_t> bufferGeneration{0};
   alignas(64) std::atomic<std::int64_t> samples{0};
@@ -108,6 +128,15 @@ struct ChaosRenderer::Worker {
       colorSums.assign(n * 4, 0.0f);
     else
       std::vector<float>().swap(colorSums);
+    for (int l = 0; l < kernel::kMaxShadowLights; ++l) {
+      if (l < int(job.shadowLights.size())) {
+        const std::size_t size = std::size_t(job.shadowLights[std::size_t(l)].size());
+        lightDepth[l].assign(size * size, ~0u);
+      } else {
+        std::vector<std::uint32_t>().swap(lightDepth[l]);
+      }
+    }
+    lensRng = kernel::Rng::forStream(job.seed ^ 0x1E45D0F5A1E7ull, std::uint64_t(index));
   }
 };
 
@@ -130,6 +159,38 @@ GRIDIFS_KERNEL_CLONES void runBatchPlain(kernel::ChainState& chain, const Prepar
 GRIDIFS_KERNEL_CLONES void runBatchColor(kernel::ChainState& chain, const PreparedJob& job, ChaosRenderer::Worker& w,
                                          std::int64_t count, kernel::ChainCounters& counters) {
   runBatchImpl<true>(chain, job, w, count, counters);
+}
+
+template <bool kColor>
+[[gnu::always_inline]] inline void runShadedImpl(kernel::ChainState& chain, const PreparedJob& job,
+                                                 ChaosRenderer::Worker& w, std::int64_t count,
+                                                 kernel::ChainCounters& counters) {
+  kernel::ShadedPlot<kColor> plot;
+  plot.camera = kernel::ZBufferPlot<kColor>{job.camera, w.cells.data(), w.colorSums.data(),
+                                            job.palette.empty() ? nullptr : job.palette.data()};
+  plot.lightCount = int(job.job.shadowLights.size());
+  for (int l = 0; l < plot.lightCount; ++l)
+    plot.lights[l] = kernel::makeHotLight(job.job.shadowLights[std::size_t(l)], w.lightDepth[l].data());
+  if (plot.lightCount > 0) {
+    plot.lightSize = float(job.job.shadowLights[0].size());
+    plot.lightStride = std::uint32_t(job.job.shadowLights[0].size());
+  }
+  plot.lens = job.lens;
+  plot.jitter = job.job.dofAperture > 0.0;
+  plot.rng = w.lensRng;
+  kernel::runChain(chain, job.hotIfs, count, plot, counters);
+  w.lensRng = plot.rng;
+}
+
+GRIDIFS_KERNEL_CLONES void runBatchShaded(kernel::ChainState& chain, const PreparedJob& job, ChaosRenderer::Worker& w,
+                                          std::int64_t count, kernel::ChainCounters& counters) {
+  runShadedImpl<false>(chain, job, w, count, counters);
+}
+
+GRIDIFS_KERNEL_CLONES void runBatchShadedColor(kernel::ChainState& chain, const PreparedJob& job,
+                                               ChaosRenderer::Worker& w, std::int64_t count,
+                                               kernel::ChainCounters& counters) {
+  runShadedImpl<true>(chain, job, w, count, counters);
 }
 
 /// Lowers the calling thread's priority once (an unprivileged thread cannot raise it again).
@@ -184,7 +245,9 @@ void workerMain(std::shared_ptr<ChaosRenderer::Shared> shared, ChaosRenderer::Wo
           shared->paused.load(std::memory_order_relaxed) || shared->quit.load(std::memory_order_relaxed))
         break;
       const std::int64_t n = std::min(remaining, kBatch);
-      if (job->job.accumulateColor)
+      if (job->shaded())
+        (job->job.accumulateColor ? runBatchShadedColor : runBatchShaded)(chain, *job, *w, n, counters);
+      else if (job->job.accumulateColor)
         runBatchColor(chain, *job, *w, n, counters);
       else
         runBatchPlain(chain, *job, *w, n, counters);
@@ -240,6 +303,14 @@ void validateRenderJob(const RenderJob& job) {
   if (job.threads < 1 || job.threads > limits::kMaxRenderThreads)
     throw ModelError("render", "the thread count must be between 1 and " + std::to_string(limits::kMaxRenderThreads));
   OrbitCamera(job.camera, job.width, job.height);  // throws for an unusable camera
+  if (job.shadowLights.size() > std::size_t(kernel::kMaxShadowLights))
+    throw ModelError("render.shading.lights",
+                     "at most " + std::to_string(kernel::kMaxShadowLights) + " lights can cast shadows");
+  for (const LightView& light : job.shadowLights)
+    if (light.size() != job.shadowLights[0].size())
+      throw ModelError("render.shading.lights", "every shadow map of a render must have the same size");
+  if (job.dofAperture < 0.0 || !std::isfinite(job.dofAperture) || !std::isfinite(job.dofFocus))
+    throw ModelError("render.shading.dof", "the aperture and focus must be finite and the aperture not negative");
   const std::uint64_t needed = renderBufferBytes(job);
   if (const auto available = availableMemoryBytes(); available && needed > *available)
     throw ModelError("render", "a " + std::to_string(job.width) + "×" + std::to_string(job.height) + " render on " +
@@ -256,7 +327,11 @@ std::uint64_t renderBufferBytes(const RenderJob& job) {
   const std::uint64_t colour = job.accumulateColor ? 16 : 0;
   const std::uint64_t perWorker = sizeof(kernel::PixelCell) + colour;
   const std::uint64_t snapshot = 4 + 4 + 4 + colour;
-  return pixels * (std::uint64_t(std::max(1, job.threads)) * perWorker + 2 * snapshot);
+  std::uint64_t lightTexels = 0;  // per worker 4 bytes a texel, and the merged float copy
+  for (const LightView& light : job.shadowLights)
+    lightTexels += std::uint64_t(light.size()) * std::uint64_t(light.size());
+  return pixels * (std::uint64_t(std::max(1, job.threads)) * perWorker + 2 * snapshot) +
+         lightTexels * 4 * (std::uint64_t(std::max(1, job.threads)) + 1);
 }
 
 ChaosRenderer::ChaosRenderer() : shared_(std::make_shared<Shared>()) {}
@@ -434,6 +509,21 @@ void ChaosRenderer::snapshot(RenderImage& out, const DisplaySettings& display) c
     for (const Worker* w : ready)
       for (std::size_t i = 0; i < n * 4; ++i)
         out.colorSums[i] += std::atomic_ref<const float>(w->colorSums[i]).load(std::memory_order_relaxed);
+  // The light depth buffers: the nearest sample per texel over all workers.
+  out.lightViews = job->job.shadowLights;
+  out.lightDepth.resize(out.lightViews.size());
+  for (std::size_t l = 0; l < out.lightViews.size(); ++l) {
+    const std::size_t texels = std::size_t(out.lightViews[l].size()) * std::size_t(out.lightViews[l].size());
+    std::vector<float>& merged = out.lightDepth[l];
+    merged.assign(texels, std::numeric_limits<float>::infinity());
+    for (const Worker* w : ready) {
+      const std::uint32_t* src = w->lightDepth[l].data();
+      for (std::size_t i = 0; i < texels; ++i) {
+        const std::uint32_t key = std::atomic_ref<const std::uint32_t>(src[i]).load(std::memory_order_relaxed);
+        if (key != ~0u) merged[i] = std::min(merged[i], std::bit_cast<float>(key));
+      }
+    }
+  }
   out.hitPixels = hits;
   out.minDepth = hits ? minDepth : 0.0f;
   out.maxDepth = hits ? maxDepth : 0.0f;

@@ -20,6 +20,7 @@
 
 #include "render/camera.h"
 #include "render/compiled_ifs.h"
+#include "render/light_view.h"
 #include "flame/palette.h"
 #include "render/renderer.h"
 
@@ -58,6 +59,11 @@ struct RenderJob {
   /// Run the workers at a lower OS priority (Linux: nice 10) so that the UI thread always gets a
   /// core first on a machine with few cores (the GUI's preview). Does not change the image.
   bool lowPriority = false;
+  /// The shaded display's chaos-game effects (core/render/shaded_plot.h): one depth buffer per
+  /// light view (at most 3), filled by the same samples as the camera's z-buffer, and depth of
+  /// field (aperture > 0: each point moves on a disc of radius aperture · |depth − focus|).
+  std::vector<LightView> shadowLights;
+  double dofAperture = 0.0, dofFocus = 0.0;
 
   /// camera, size, samples, seed and skip from the project; `threads` as given
   /// (≤ 0: std::thread::hardware_concurrency()).
@@ -109,6 +115,10 @@ struct RenderImage {
   float minDepth = 0.0f, maxDepth = 0.0f;  // depth range of the hit pixels
   std::uint64_t generation = 0;
   RenderStats stats;
+  /// One per job.shadowLights: the views and their merged depth buffers (size² light depths,
+  /// +inf where no sample landed).
+  std::vector<LightView> lightViews;
+  std::vector<std::vector<float>> lightDepth;
 
   /// No picture (no job yet): size 0 and empty buffers, which keep their capacity.
   void clear() {
@@ -118,6 +128,8 @@ struct RenderImage {
     density.clear();
     colorSums.clear();
     hitPixels = 0;
+    lightViews.clear();
+    lightDepth.clear();
   }
 };
 
