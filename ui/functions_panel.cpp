@@ -42,6 +42,14 @@ void addFunction(ModellerState& state, EditQueue& edits) {
   f.placement.scale = Vec3(0.5);
   f.color = newFunctionColor(p.functions.size());
   f.palette_index = p.functions.empty() ? 0.0 : std::min(1.0, double(p.functions.size()) / 4.0);
+  if (p.space) {
+    // A free-form IFS takes matrix functions: start with "halfway to the centroid of the control
+    // points", a contraction the artist then edits in the Matrices window.
+    const std::size_t m = p.space->control_points.size();
+    f.kind = FunctionKind::Matrix;
+    f.matrix.assign(m, std::vector<double>(m, 0.5 / double(m)));
+    for (std::size_t i = 0; i < m; ++i) f.matrix[i][i] += 0.5;
+  }
   const int index = int(p.functions.size());
   edits.commit("Add function", [f](Project& pr) { insertFunction(pr, pr.functions.size(), f); });
   edits.after([&state, index] {

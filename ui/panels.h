@@ -19,6 +19,9 @@ float operationStackPanelMinHeight(float panelWidth);
 void drawOperationPanel(ModellerState& state, EditQueue& edits);
 /// selection_panel.cpp: index boxes with or/and/xor/minus, all/none/invert, the center for new ops.
 void drawSelectionPanel(ModellerState& state, EditQueue& edits);
+/// matrices_window.cpp: the transition matrix, and a free-form IFS's control points and
+/// matrices, with presets (Function › Matrices…).
+void drawMatricesWindow(ModellerState& state, EditQueue& edits);
 /// help_window.cpp: the keyboard and mouse shortcuts.
 void drawHelpWindow(ModellerState& state);
 

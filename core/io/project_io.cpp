@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "base/atomic_file.h"
+#include "io/free_form_io.h"
 #include "model/calculator.h"
 #include "model/palette_reference.h"
 #include "model/stack_evaluator.h"
@@ -348,6 +349,7 @@ Function readFunction(const json& f, const std::string& path, std::size_t index)
       fail(p, "more than " + std::to_string(limits::kMaxOpsPerFunction) + " operations");
     for (std::size_t o = 0; o < it->size(); ++o) fn.ops.push_back(readOperation((*it)[o], item(p, o)));
   }
+  free_form_io::readFunctionFields(f, path, fn);
   return fn;
 }
 
@@ -430,6 +432,7 @@ ordered_json writeOperation(const Operation& op) {
 }
 
 ordered_json writeFunction(const Function& f) {
+  if (free_form_io::isMatrixFunction(f)) return free_form_io::writeMatrixFunction(f);
   ordered_json o;
   o["name"] = f.name;
   o["resolution"] = {f.resolution[0], f.resolution[1], f.resolution[2]};
@@ -445,6 +448,7 @@ ordered_json writeFunction(const Function& f) {
   ordered_json ops = ordered_json::array();
   for (const Operation& op : f.ops) ops.push_back(writeOperation(op));
   o["ops"] = ops;
+  free_form_io::writeGridFunctionFields(f, o);
   return o;
 }
 
@@ -541,6 +545,7 @@ Project parseProject(const std::string& text) {
       project.transitions.push_back(std::move(weights));
     }
   }
+  project.space = free_form_io::readSpace(root);
   validateProject(project);
   return project;
 }
@@ -565,6 +570,7 @@ std::string serializeProject(const Project& project) {
   if (fl.density_unit != 1.0) root["render"]["flame"]["density_unit"] = fl.density_unit;
   ordered_json functions = ordered_json::array();
   for (const Function& f : project.functions) functions.push_back(writeFunction(f));
+  free_form_io::writeSpace(project, root);
   root["functions"] = functions;
   if (project.final_function) root["final"] = writeFunction(*project.final_function);
   if (!project.transitions.empty()) root["transitions"] = project.transitions;

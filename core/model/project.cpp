@@ -26,6 +26,7 @@ std::size_t approximateMemory(const Function& f) {
     if (const auto* calc = std::get_if<CalculatorOp>(&op.params))
       bytes += calc->x.capacity() + calc->y.capacity() + calc->z.capacity();
   }
+  for (const auto& row : f.matrix) bytes += sizeof(row) + row.capacity() * sizeof(double);
   return bytes;
 }
 
@@ -36,6 +37,7 @@ std::size_t approximateMemory(const Project& project) {
   for (const Function& f : project.functions) bytes += approximateMemory(f);
   if (project.final_function) bytes += approximateMemory(*project.final_function);
   for (const auto& row : project.transitions) bytes += sizeof(row) + row.capacity() * sizeof(double);
+  if (project.space) bytes += project.space->control_points.capacity() * sizeof(Vec3);
   return bytes;
 }
 

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "model/flame_settings.h"
+#include "model/free_form_space.h"
 #include "model/function.h"
 
 namespace gridifs {
@@ -36,6 +37,8 @@ struct Project {
   /// "transitions": N×N weights, after function i the next is j with probability
   /// ∝ weight_j · transitions[i][j] (core/transition_matrix.h). Empty: unrestricted.
   std::vector<std::vector<double>> transitions;
+  /// "space": control points of a free-form IFS (model/free_form.h); its functions are Matrix ones.
+  std::optional<FreeFormSpace> space;
   bool operator==(const Project&) const = default;
 };
 

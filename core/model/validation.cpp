@@ -5,6 +5,7 @@
 #include <variant>
 
 #include "model/calculator.h"
+#include "model/free_form.h"
 #include "model/palette_reference.h"
 #include "model/stack_evaluator.h"
 #include "model/transition_matrix.h"
@@ -104,6 +105,7 @@ void validate(const Project& project, const Project* trusted) {
   if (anyActive && !(totalWeight > 0.0))
     fail("functions", "every active function has weight 0 (weights must not all be zero)");
   checkTransitions(project);
+  checkFreeForm(project);
 }
 
 }  // namespace

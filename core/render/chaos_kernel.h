@@ -86,6 +86,7 @@ struct alignas(64) HotFunction {
   v4f speed;  // color_speed in all lanes
   const NodePair* pairs;
   std::uint32_t strideJ, strideK;
+  const float* matrix;  // a free-form IFS's matrix rows (CompiledFunction::matrix), else null
 };
 
 inline HotFunction makeHot(const CompiledFunction& f) {
@@ -99,6 +100,7 @@ inline HotFunction makeHot(const CompiledFunction& f) {
   h.pairs = f.pairs.data();
   h.strideJ = f.pairStrideJ;
   h.strideK = f.pairStrideK;
+  h.matrix = f.matrix.empty() ? nullptr : f.matrix.data();
   return h;
 }
 
@@ -204,6 +206,9 @@ struct HotIfs {
   const HotFunction* finalFunction = nullptr;  // null when none
   int skip = 20;
   float escapeBound = 1e5f;
+  /// Free-form IFS (barycentric_kernel.h): m coordinates and the padded size in blocks of 8
+  /// floats; 0 blocks for a grid IFS.
+  std::uint32_t barycentricSize = 0, barycentricBlocks = 0;
 
   [[gnu::always_inline]] std::uint32_t choose(std::uint64_t r) const {
     const std::uint32_t column = std::uint32_t((std::uint64_t(std::uint32_t(r >> 32)) * count) >> 32);
