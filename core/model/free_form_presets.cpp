@@ -111,7 +111,7 @@ BarycentricMatrix deCasteljauRight(int degree, double r) {
   for (int i = 0; i <= degree; ++i)
     for (int j = i; j <= degree; ++j)
       t[std::size_t(i)][std::size_t(j)] =
-          binomial(degree - i, j - i) * std::pow(r, degree - j) * std::pow(1.0 - r, j - i);
+          binomial(degree - i, j - i) * std::pow(r, j - i) * std::pow(1.0 - r, degree - j);
   return t;
 }
 

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
 #include "io/project_io.h"
@@ -48,8 +49,11 @@ double nearest(const std::vector<Vec3>& cloud, Vec3 p) {
 std::filesystem::path movedSierpinski(const std::filesystem::path& dir) {
   Project p = loadProject(kSierpinski);
   for (Function& f : p.functions) {
-    f.ops.push_back(Operation{ScaleOp{Vec3{0.4}}});
-    f.ops.push_back(Operation{TranslateOp{Vec3{0.5, 0.5, 0.5}}});
+    Operation scale, move;
+    scale.params = ScaleOp{Vec3{0.4}};
+    move.params = TranslateOp{Vec3{0.5, 0.5, 0.5}};
+    f.ops.push_back(scale);
+    f.ops.push_back(move);
   }
   const auto file = dir / "moved.gridifs";
   saveProject(p, file);
@@ -73,7 +77,7 @@ TEST(CombineCli, UnionIsTheUnionOfTheAttractors) {
   const auto pa = exportPoints(kSierpinski, dir.path / "a.ply", 20000);
   const auto pb = exportPoints(b, dir.path / "b.ply", 20000);
   const auto pc = exportPoints(c, dir.path / "c.ply", 4000);
-  ASSERT_EQ(pc.size(), 4000u);
+  ASSERT_GT(pc.size(), 3500u);  // less the skipped first iterations of each chain
   int nearA = 0, nearB = 0;
   for (std::size_t i = 0; i < pc.size(); i += 4) {
     const double da = nearest(pa, pc[i]), db = nearest(pb, pc[i]);

@@ -216,7 +216,8 @@ TEST(FreeForm, ValidationNamesTheJsonPath) {
   EXPECT_NE(loadError(R"({"format": "gridifs", "version": 1, "functions": [{"kind": "matrix", "matrix": [[1]]}]})")
                 .find("functions[0].kind: a \"matrix\" function needs control points"),
             std::string::npos);
-  EXPECT_NE(loadError(R"({"format": "gridifs", "version": 1, "space": {"control_points": [[0,0,0]]}, "functions": []})")
+  EXPECT_NE(loadError(R"({"format": "gridifs", "version": 1, "space": {"control_points": [[0,0,0]]},
+                          "functions": [{"kind": "matrix", "matrix": [[1]]}]})")
                 .find("space.control_points: expected between 2 and 64"),
             std::string::npos);
   EXPECT_NE(loadError(std::string(kCurveHead) + fn + R"([[1,0,0],[0,1,0],[0,0,1]], "ops": []}]})")
