@@ -9,8 +9,9 @@
 //           which a chain never needs after its first step).
 //  concat   as union, and a function of A may also be followed by one of B: the chaos game then
 //           applies B's maps to A's points (the paper's concatenation, an empty block replaced by
-//           the identity). Grid projects only. The A part is transient in the chaos game (`info`
-//           says so); the deterministic algorithm builds every allowed word.
+//           the identity). Grid projects only. The graph is not strongly connected (`info`
+//           says so): the chaos game restarts its chains regularly (CompiledIfs::restartInterval)
+//           and the deterministic algorithm builds every allowed word.
 //  product  free-form projects: the tensor (Kronecker) products T_a ⊗ T_b of every pair, on the
 //           m_A·m_B control points p_i + q_k: the attractor is the sum A + B of the two
 //           (§5.4; two Bézier curves give a translational patch). Transitions multiply.

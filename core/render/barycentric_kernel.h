@@ -45,6 +45,9 @@ template <int kBlocks, bool kRestricted, class Plot>
 [[gnu::always_inline]] inline int stepBarycentricLane(ChainState& st, BarycentricState& bs, int lane, const HotIfs& ifs,
                                                       Plot& plot, std::int64_t& bad) {
   constexpr int kPad = 8 * kBlocks, kStride = kPad + 8;
+  if constexpr (kRestricted)
+    if (ifs.restartInterval && ++st.age[lane] > ifs.restartInterval)
+      bs.restartLane(st, lane, ifs.skip, ifs.barycentricSize);
   std::uint32_t index;
   if constexpr (kRestricted)
     index = ifs.chooseAfter(st.last[lane], st.rng.next());

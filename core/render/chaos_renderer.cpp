@@ -67,6 +67,7 @@ struct PreparedJob {
     hotIfs.finalFunction = ifs->finalFunction ? &hot.back() : nullptr;
     hotIfs.skip = job.skip;
     hotIfs.escapeBound = limits::kEscapeBound;
+    hotIfs.restartInterval = ifs->restartInterval;
     if (ifs->barycentricSize > 0) {
       if (ifs->barycentricPad % 8 != 0 || ifs->barycentricPad > std::uint32_t(kernel::kMaxBarycentricPad) ||
           ifs->barycentricSize > ifs->barycentricPad)

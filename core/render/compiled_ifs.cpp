@@ -25,6 +25,11 @@ void compileColor(const Function& function, CompiledFunction& out) {
   out.weight = function.weight;
 }
 
+/// Steps between restarts of a chain on a graph that is not strongly connected: long enough that
+/// the skipped first steps cost 2%, short enough that a render's millions of restarts sample each
+/// part of the attractor in proportion.
+constexpr std::uint32_t kRestartInterval = 1024;
+
 /// The padded barycentric size of the kernel's blocks: 8, 16, 32 or 64 floats.
 std::uint32_t barycentricPadFor(std::size_t m) {
   std::uint32_t pad = 8;
@@ -185,6 +190,7 @@ std::shared_ptr<const CompiledIfs> compileWith(
       ifs->transitionAlias.insert(ifs->transitionAlias.end(), table.begin(), table.end());
     }
     ifs->transitionAlias.insert(ifs->transitionAlias.end(), ifs->alias.begin(), ifs->alias.end());
+    if (transitionComponents(project).size() > 1) ifs->restartInterval = kRestartInterval;
   }
   if (project.final_function && !project.final_function->muted) {
     try {

@@ -61,6 +61,11 @@ struct CompiledIfs {
   /// row r < n picks the function after function r, row n the first function of a chain (the
   /// usual weights). Empty when the project has no matrix (the unrestricted chaos game).
   std::vector<AliasEntry> transitionAlias;
+  /// With transitions whose graph is not strongly connected, a chain never leaves the closed part
+  /// it falls into (a union's half, a concatenation's second IFS) and never revisits transient
+  /// parts. Restarting each chain after this many steps samples every part as the first-function
+  /// weights say, whatever the number of chains; 0 (strongly connected, or no matrix): never.
+  std::uint32_t restartInterval = 0;
   /// Free-form IFS: m barycentric coordinates (0 for a grid IFS), padded to a multiple of 8.
   std::uint32_t barycentricSize = 0, barycentricPad = 0;
   std::uint32_t barycentricStride() const { return barycentricPad + 8; }

@@ -45,15 +45,13 @@ double nearest(const std::vector<Vec3>& cloud, Vec3 p) {
   return best;
 }
 
-/// The Sierpinski tetrahedron shrunk and moved aside: a second, disjoint attractor.
+/// A small Sierpinski tetrahedron in the (-1, -1, -1) corner of X, away from the big one:
+/// f_i(x) = 0.2·x + 0.2·v_i + 0.8·c with corners v_i and centre c = (-0.7, -0.7, -0.7).
 std::filesystem::path movedSierpinski(const std::filesystem::path& dir) {
   Project p = loadProject(kSierpinski);
   for (Function& f : p.functions) {
-    Operation scale, move;
-    scale.params = ScaleOp{Vec3{0.4}};
-    move.params = TranslateOp{Vec3{0.5, 0.5, 0.5}};
-    f.ops.push_back(scale);
-    f.ops.push_back(move);
+    f.placement.translate = 0.4 * f.placement.translate + Vec3{-0.56};
+    f.placement.scale = Vec3{0.2};
   }
   const auto file = dir / "moved.gridifs";
   saveProject(p, file);
