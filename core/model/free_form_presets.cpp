@@ -116,7 +116,7 @@ BarycentricMatrix deCasteljauRight(int degree, double r) {
 }
 
 std::vector<Vec3> defaultCurveControlPoints() {
-  return {{-0.9, -0.6, 0.0}, {-0.4, 0.9, 0.3}, {0.4, -0.9, -0.3}, {0.9, 0.6, 0.0}};
+  return {{-0.9, 0.0, -0.6}, {-0.4, 0.3, 0.9}, {0.4, -0.3, -0.9}, {0.9, 0.0, 0.6}};  // +z is up
 }
 
 std::vector<Vec3> defaultPatchControlPoints() {
