@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "model/contractivity.h"
+#include "model/free_form.h"
 #include "model/transition_matrix.h"
 #include "ui/panels.h"
 #include "ui/widgets.h"
@@ -167,6 +168,18 @@ void drawFunctionsPanel(ModellerState& state, EditQueue& edits) {
   gestureItem(edits, "Palette index", changed, [fi, paletteIndex](Project& p) { p.functions[std::size_t(fi)].palette_index = paletteIndex; });
   contextHelp(state, "Structural color coordinate c_i for flame-style coloring (Draves & Reckase 2003, §5)");
 
+  if (f.kind == FunctionKind::Matrix) {
+    // A free-form IFS's function has no grid: its matrix and the control points are edited in
+    // the Matrices window.
+    ImGui::PopItemWidth();
+    ImGui::TextWrapped("A %zu x %zu matrix on the control points' barycentric coordinates.", f.matrix.size(),
+                       f.matrix.size());
+    if (ImGui::Button("Edit matrices... (M)")) state.showMatrices = true;
+    const double c = simplexContraction(f.matrix);
+    ImGui::TextColored(c < 1.0 ? ImVec4(0.55f, 0.8f, 0.55f, 1.0f) : ImVec4(1.0f, 0.6f, 0.3f, 1.0f),
+                       "Contracts the simplex by %.3f%s", c, c < 1.0 ? "" : "  (not contractive)");
+    return;
+  }
   int resolution[3] = {f.resolution[0], f.resolution[1], f.resolution[2]};
   changed = ImGui::DragInt3("Resolution", resolution, 0.1f, limits::kMinResolution, limits::kMaxResolution);
   for (int& r : resolution) r = std::clamp(r, limits::kMinResolution, limits::kMaxResolution);

@@ -234,14 +234,16 @@ void drawMatricesWindow(ModellerState& state, EditQueue& edits) {
     return;
   }
   state.probe.window("window.matrices");
+  // A floating window over the tiled panels: in front when it opens, or it may open behind one.
+  if (ImGui::IsWindowAppearing()) ImGui::SetWindowFocus();
+  drawPresets(state, edits);
+  ImGui::Spacing();
   drawTransitions(state, edits);
   ImGui::Spacing();
   if (state.document.project().space) {
     drawControlPoints(state, edits);
     drawFunctionMatrix(state, edits);
   }
-  ImGui::Spacing();
-  drawPresets(state, edits);
   ImGui::End();
 }
 
