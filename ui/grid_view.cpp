@@ -614,7 +614,8 @@ void GridView::render(ModellerState& state, ViewRenderer& renderer) {
   key_ = key;
   scene_.clear();
   // A matrix function has no grid: its views show the control points and the matrices' images.
-  if (content_ == Content::FunctionGrid && state.function().kind != FunctionKind::Matrix) buildFunctionScene(state);
+  if (content_ == Content::FunctionGrid && state.function().kind != FunctionKind::Matrix)
+    buildFunctionScene(state);
   else buildIfsScene(state);
   const glm::dmat4 vp = camera(state).viewProjection(size_.x, size_.y);
   renderer.drawScene(target_, glm::mat4(vp), scene_, framebufferScale_ * state.uiScale, kBackgroundTop,

@@ -68,7 +68,8 @@ float drawMenuBar(AppCommands& app) {
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Function")) {
-    if (ImGui::MenuItem(s.document.project().space ? "Add matrix function" : "Add 6x6x6 grid")) addFunction(s, app.edits);
+    if (ImGui::MenuItem(s.document.project().space ? "Add matrix function" : "Add 6x6x6 grid"))
+      addFunction(s, app.edits);
     if (ImGui::MenuItem("Matrices...", "M", s.showMatrices)) s.showMatrices = !s.showMatrices;
     drawSymmetryMenu(s, app.edits);  // ui/symmetry_menu.cpp
     ImGui::Separator();

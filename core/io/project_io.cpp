@@ -12,8 +12,8 @@
 #include "model/calculator.h"
 #include "model/palette_reference.h"
 #include "model/stack_evaluator.h"
-#include "model/validation.h"
 #include "model/transition_matrix.h"
+#include "model/validation.h"
 
 namespace gridifs {
 namespace {

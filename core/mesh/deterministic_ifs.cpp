@@ -1,8 +1,5 @@
 #include "mesh/deterministic_ifs.h"
 
-#include "base/parallel.h"
-#include "base/text_format.h"
-
 #include <algorithm>
 #include <climits>
 #include <cmath>
@@ -11,6 +8,8 @@
 #include <functional>
 #include <limits>
 
+#include "base/parallel.h"
+#include "base/text_format.h"
 #include "model/bezier_lattice.h"
 #include "model/stack_evaluator.h"
 #include "model/transition_matrix.h"
@@ -32,8 +31,9 @@ constexpr std::uint64_t kBytesPerFace = 2 * sizeof(int);
 template <class GridOf, class FinalOf>
 DeterministicIfs snapshotWith(const Project& project, GridOf gridOf, FinalOf finalOf) {
   if (project.space)
-    throw ModelError("space", "the deterministic algorithm does not build free-form (control point) IFSs yet; "
-                              "their chaos-game points export with export-points");
+    throw ModelError("space",
+                     "the deterministic algorithm does not build free-form (control point) IFSs yet; "
+                     "their chaos-game points export with export-points");
   DeterministicIfs ifs;
   for (std::size_t i = 0; i < project.functions.size(); ++i) {
     const Function& f = project.functions[i];

@@ -236,8 +236,7 @@ struct ChainCounters {
 /// One iteration of one lane; returns 1 when a point was plotted. kRestricted: walk the
 /// transition matrix's Markov chain (Thollot et al. §3.2) instead of independent choices.
 template <bool kRestricted, bool kRestarts, class Plot>
-[[gnu::always_inline]] inline int stepLane(ChainState& st, int lane, const HotIfs& ifs, Plot& plot,
-                                           std::int64_t& bad) {
+[[gnu::always_inline]] inline int stepLane(ChainState& st, int lane, const HotIfs& ifs, Plot& plot, std::int64_t& bad) {
   if constexpr (kRestarts)
     if (++st.age[lane] > ifs.restartInterval) st.restartLane(lane, ifs.skip);
   std::uint32_t index;

@@ -37,7 +37,6 @@ std::uint32_t barycentricPadFor(std::size_t m) {
   return pad;
 }
 
-
 }  // namespace
 
 CompiledFunction compileFunction(const Function& function, const Grid& evaluated, std::size_t sourceIndex) {
@@ -68,11 +67,11 @@ CompiledFunction compileFunction(const Function& function, const Grid& evaluated
   return out;
 }
 
-
 CompiledFunction compileMatrixFunction(const Function& function, const FreeFormSpace& space, std::uint32_t pad,
                                        std::size_t sourceIndex) {
   const std::size_t m = space.control_points.size();
-  if (function.matrix.size() != m || m > pad) throw ModelError("matrix", "the matrix does not match the control points");
+  if (function.matrix.size() != m || m > pad)
+    throw ModelError("matrix", "the matrix does not match the control points");
   CompiledFunction out;
   const std::size_t stride = std::size_t(pad) + 8;
   out.matrix.assign(m * stride, 0.0f);

@@ -10,11 +10,11 @@
 #include <optional>
 #include <thread>
 
-#include "tests/bench/canonical_scene.h"
 #include "model/free_form_presets.h"
 #include "render/barycentric_kernel.h"
 #include "render/chaos_renderer.h"
 #include "render/compiled_ifs.h"
+#include "tests/bench/canonical_scene.h"
 
 namespace gridifs {
 namespace {
