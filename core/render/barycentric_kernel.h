@@ -60,13 +60,20 @@ template <int kBlocks, bool kRestricted, class Plot>
   const float* row = f.matrix;
   for (std::uint32_t i = 0; i < ifs.barycentricSize; ++i, row += kStride) {
     const float li = lambda[i];
-    const v8f l8 = {li, li, li, li, li, li, li, li};
+    // Scalar-to-vector arithmetic broadcasts in registers; an initialiser list would go through
+    // four narrow stack stores and one wide load (a store-forwarding stall on every row).
+#if defined(__SSE2__)
+    const v4f l4 = v4f(_mm_set1_ps(li));
+#else
+    const v4f l4 = {li, li, li, li};
+#endif
+    const v8f l8 = __builtin_shufflevector(l4, l4, 0, 1, 2, 3, 0, 1, 2, 3);
     for (int b = 0; b < kBlocks; ++b) {
       v8f r;
       std::memcpy(&r, row + 8 * b, 32);
       next[b] += l8 * r;
     }
-    q += v4f{li, li, li, li} * load4(row + kPad);
+    q += l4 * load4(row + kPad);
   }
   const v4f col = st.color[lane] + (f.color - st.color[lane]) * f.speed;  // Draves & Reckase 2003, §5
   if (!inBounds(q, ifs.escapeBound)) [[unlikely]] {
@@ -106,8 +113,8 @@ template <int kBlocks, bool kRestricted, class Plot>
 }
 
 template <int kBlocks, class Plot>
-inline std::int64_t runBarycentricBlocks(ChainState& st, BarycentricState& bs, const HotIfs& ifs, std::int64_t count,
-                                         Plot& plot, std::int64_t& bad) {
+[[gnu::always_inline]] inline std::int64_t runBarycentricBlocks(ChainState& st, BarycentricState& bs, const HotIfs& ifs,
+                                                                std::int64_t count, Plot& plot, std::int64_t& bad) {
   return ifs.transitionRows ? runBarycentricLanes<kBlocks, true>(st, bs, ifs, count, plot, bad)
                             : runBarycentricLanes<kBlocks, false>(st, bs, ifs, count, plot, bad);
 }
@@ -115,8 +122,8 @@ inline std::int64_t runBarycentricBlocks(ChainState& st, BarycentricState& bs, c
 /// runChain for a free-form IFS (ifs.barycentricBlocks > 0); `bs` belongs to `st` (started with
 /// BarycentricState::start after ChainState::start).
 template <class Plot>
-inline void runBarycentricChain(ChainState& st, BarycentricState& bs, const HotIfs& ifs, std::int64_t count, Plot& plot,
-                                ChainCounters& counters) {
+[[gnu::always_inline]] inline void runBarycentricChain(ChainState& st, BarycentricState& bs, const HotIfs& ifs,
+                                                       std::int64_t count, Plot& plot, ChainCounters& counters) {
   std::int64_t bad = 0, plotted = 0;
   ChainState local = st;
   bs.renormalise(ifs.barycentricSize);
