@@ -86,6 +86,9 @@ std::size_t resolveFunction(const Project& project, const std::string& which, co
 
 std::shared_ptr<const Grid> evaluateForVerb(const Document& document, std::size_t index,
                                             const std::filesystem::path& file) {
+  if (document.project().functions[index].kind == FunctionKind::Matrix)
+    throw CliError(kBadInput, file.string() + ": function " + std::to_string(index) +
+                                  " is a matrix of a free-form IFS and has no grid to evaluate");
   try {
     return document.evaluatedGrid(index);
   } catch (const ModelError& e) {

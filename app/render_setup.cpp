@@ -9,6 +9,7 @@
 
 #include "app/cli.h"
 #include "model/contractivity.h"
+#include "model/free_form.h"
 
 namespace gridifs::cli {
 
@@ -75,7 +76,10 @@ RenderSetup prepareRender(const std::filesystem::path& file, const RenderOverrid
   // The chaos game still draws something for an expanding function (clamping to X keeps the chain
   // bounded), so this is a warning, as in `gridifs info`.
   for (const CompiledFunction& f : setup.ifs->functions) {
-    const ContractivityEstimate c = estimateContractivity(*document.evaluatedGrid(f.sourceIndex));
+    const Function& source = setup.project.functions[f.sourceIndex];
+    const ContractivityEstimate c = source.kind == FunctionKind::Matrix
+                                        ? ContractivityEstimate{simplexContraction(source.matrix), Index3{0, 0, 0}}
+                                        : estimateContractivity(*document.evaluatedGrid(f.sourceIndex));
     if (c.bound >= 1.0)
       std::fprintf(stderr, "warning: %s: function %zu \"%s\" may not be contractive (Lipschitz bound %.3g).\n",
                    file.c_str(), f.sourceIndex, setup.project.functions[f.sourceIndex].name.c_str(), c.bound);

@@ -6,6 +6,7 @@
 #include "app/cli.h"
 #include "app/render_device_option.h"
 #include "model/contractivity.h"
+#include "model/free_form.h"
 #include "model/transition_matrix.h"
 
 namespace gridifs::cli {
@@ -25,8 +26,13 @@ std::vector<FunctionReport> analyse(const Document& document, const std::filesys
   std::vector<FunctionReport> reports;
   for (std::size_t i = 0; i < p.functions.size(); ++i) {
     const Function& f = p.functions[i];
+    const double probability = f.muted || total <= 0 ? 0.0 : f.weight / total;
+    if (f.kind == FunctionKind::Matrix) {
+      reports.push_back({&f, probability, {simplexContraction(f.matrix), Index3{-1, -1, -1}}});
+      continue;
+    }
     const auto grid = evaluateForVerb(document, i, file);
-    reports.push_back({&f, f.muted || total <= 0 ? 0.0 : f.weight / total, estimateContractivity(*grid)});
+    reports.push_back({&f, probability, estimateContractivity(*grid)});
   }
   return reports;
 }
@@ -59,9 +65,15 @@ int runInfo(const std::string& file, bool asJson, const std::optional<std::strin
                       {"contractivity", r.contractivity.bound},
                       {"contractive", r.contractivity.bound < 1.0}});
       if (r.function->sampling_error) list.back()["sampling_error"] = *r.function->sampling_error;
+      if (r.function->kind == FunctionKind::Matrix) {
+        list.back()["kind"] = "matrix";
+        list.back().erase("resolution");
+        list.back().erase("ops");
+      }
     }
     out["functions"] = list;
     out["transitions"] = !p.transitions.empty();
+    if (p.space) out["control_points"] = p.space->control_points.size();
     out["strongly_connected"] = components.size() <= 1;
     out["contractive"] = allContractive;
     out["render_device"] = gpu ? "gpu" : "cpu";
@@ -75,8 +87,11 @@ int runInfo(const std::string& file, bool asJson, const std::optional<std::strin
     for (std::size_t i = 0; i < reports.size(); ++i) {
       const auto& r = reports[i];
       char res[32];
-      std::snprintf(res, sizeof res, "%dx%dx%d", r.function->resolution[0], r.function->resolution[1],
-                    r.function->resolution[2]);
+      if (r.function->kind == FunctionKind::Matrix)
+        std::snprintf(res, sizeof res, "matrix %zu", r.function->matrix.size());
+      else
+        std::snprintf(res, sizeof res, "%dx%dx%d", r.function->resolution[0], r.function->resolution[1],
+                      r.function->resolution[2]);
       std::printf("  %-3zu %-16.16s %8.4g %7.4f %-11s %4zu  %.4f%s%s\n", i, r.function->name.c_str(),
                   r.function->weight, r.probability, res, r.function->ops.size(), r.contractivity.bound,
                   r.contractivity.bound < 1.0 ? "" : "  (not contractive)", r.function->muted ? "  muted" : "");
@@ -84,6 +99,9 @@ int runInfo(const std::string& file, bool asJson, const std::optional<std::strin
         std::printf("      sampled from a closed-form map: largest grid error %.3g\n", *r.function->sampling_error);
     }
     std::printf("  render device (--device %s): %s\n", device.c_str(), deviceLine.c_str());
+    if (p.space)
+      std::printf("  free-form space: %zu control points (contractivity of a matrix: its contraction of the simplex)\n",
+                  p.space->control_points.size());
     if (!p.transitions.empty()) std::printf("  transition matrix: %zu x %zu\n", p.transitions.size(), p.transitions.size());
   }
   if (components.size() > 1) {
@@ -100,13 +118,19 @@ int runInfo(const std::string& file, bool asJson, const std::optional<std::strin
   }
   for (std::size_t i = 0; i < reports.size(); ++i) {
     const auto& r = reports[i];
-    if (!r.function->muted && r.contractivity.bound >= 1.0)
+    if (!r.function->muted && r.contractivity.bound >= 1.0 && r.function->kind == FunctionKind::Matrix)
+      std::fprintf(stderr,
+                   "warning: function %zu \"%s\" may not be contractive: its matrix contracts the simplex by "
+                   "%.4g (>= 1).\n",
+                   i, r.function->name.c_str(), r.contractivity.bound);
+    else if (!r.function->muted && r.contractivity.bound >= 1.0)
       std::fprintf(stderr,
                    "warning: function %zu \"%s\" may not be contractive: its Lipschitz bound is %.4g (>= 1) "
                    "around cell (%d, %d, %d).\n",
                    i, r.function->name.c_str(), r.contractivity.bound, r.contractivity.worstCell[0],
                    r.contractivity.worstCell[1], r.contractivity.worstCell[2]);
   }
+  for (const std::string& w : freeFormWarnings(p)) std::fprintf(stderr, "warning: %s.\n", w.c_str());
   return kSuccess;
 }
 

@@ -103,6 +103,12 @@ void ChaosCompute::allocate(unsigned buffer, std::size_t bytes, const std::strin
 }
 
 void ChaosCompute::setup(const CompiledIfs& ifs, const RenderJob& job, std::uint32_t chains) {
+  // The compute shader walks grid functions chosen independently; the CPU renderer takes the
+  // rest (auto falls back to it).
+  if (ifs.barycentricSize > 0)
+    throw GpuUnavailable("the GPU renderer does not run free-form (control point) IFSs; the CPU renderer does");
+  if (!ifs.transitionAlias.empty())
+    throw GpuUnavailable("the GPU renderer does not follow transition matrices; the CPU renderer does");
   job_ = job;
   chains_ = chains;
   count_ = std::uint32_t(ifs.functions.size());

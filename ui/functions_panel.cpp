@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "model/contractivity.h"
+#include "model/free_form.h"
 #include "model/transition_matrix.h"
 #include "ui/panels.h"
 #include "ui/widgets.h"
@@ -42,6 +43,14 @@ void addFunction(ModellerState& state, EditQueue& edits) {
   f.placement.scale = Vec3(0.5);
   f.color = newFunctionColor(p.functions.size());
   f.palette_index = p.functions.empty() ? 0.0 : std::min(1.0, double(p.functions.size()) / 4.0);
+  if (p.space) {
+    // A free-form IFS takes matrix functions: start with "halfway to the centroid of the control
+    // points", a contraction the artist then edits in the Matrices window.
+    const std::size_t m = p.space->control_points.size();
+    f.kind = FunctionKind::Matrix;
+    f.matrix.assign(m, std::vector<double>(m, 0.5 / double(m)));
+    for (std::size_t i = 0; i < m; ++i) f.matrix[i][i] += 0.5;
+  }
   const int index = int(p.functions.size());
   edits.commit("Add function", [f](Project& pr) { insertFunction(pr, pr.functions.size(), f); });
   edits.after([&state, index] {
@@ -159,6 +168,18 @@ void drawFunctionsPanel(ModellerState& state, EditQueue& edits) {
   gestureItem(edits, "Palette index", changed, [fi, paletteIndex](Project& p) { p.functions[std::size_t(fi)].palette_index = paletteIndex; });
   contextHelp(state, "Structural color coordinate c_i for flame-style coloring (Draves & Reckase 2003, §5)");
 
+  if (f.kind == FunctionKind::Matrix) {
+    // A free-form IFS's function has no grid: its matrix and the control points are edited in
+    // the Matrices window.
+    ImGui::PopItemWidth();
+    ImGui::TextWrapped("A %zu x %zu matrix on the control points' barycentric coordinates.", f.matrix.size(),
+                       f.matrix.size());
+    if (ImGui::Button("Edit matrices... (M)")) state.showMatrices = true;
+    const double c = simplexContraction(f.matrix);
+    ImGui::TextColored(c < 1.0 ? ImVec4(0.55f, 0.8f, 0.55f, 1.0f) : ImVec4(1.0f, 0.6f, 0.3f, 1.0f),
+                       "Contracts the simplex by %.3f%s", c, c < 1.0 ? "" : "  (not contractive)");
+    return;
+  }
   int resolution[3] = {f.resolution[0], f.resolution[1], f.resolution[2]};
   changed = ImGui::DragInt3("Resolution", resolution, 0.1f, limits::kMinResolution, limits::kMaxResolution);
   for (int& r : resolution) r = std::clamp(r, limits::kMinResolution, limits::kMaxResolution);

@@ -139,11 +139,12 @@ void GridView::pickableNodes(ModellerState& state, std::vector<Vec3>& out, std::
   out.clear();
   owner.clear();
   if (content_ == Content::FunctionGrid) {
-    out = state.localGrid().nodes();
+    if (state.function().kind != FunctionKind::Matrix) out = state.localGrid().nodes();
     return;
   }
   const auto& functions = state.document.project().functions;
   for (std::size_t f = 0; f < functions.size(); ++f) {
+    if (functions[f].kind == FunctionKind::Matrix) continue;  // no grid to pick or place
     try {
       const auto grid = state.document.evaluatedGrid(f);
       out.insert(out.end(), grid->nodes().begin(), grid->nodes().end());
@@ -518,7 +519,30 @@ void GridView::buildIfsScene(ModellerState& state) {
   appendCube(scene_.lines, {0.62f, 0.65f, 0.72f, 0.55f});
   appendAxes(scene_.lines);
   const auto& functions = state.document.project().functions;
+  if (const auto& space = state.document.project().space) {
+    // A free-form IFS (Thollot et al. 1997, §3.1): its control polygon, and each matrix's image
+    // of it (the rows of T·P), which is where that function puts the whole shape.
+    const auto& cp = space->control_points;
+    for (std::size_t j = 0; j + 1 < cp.size(); ++j) line(scene_.lines, cp[j], cp[j + 1], {0.85f, 0.85f, 0.9f, 0.7f});
+    for (std::size_t f = 0; f < functions.size(); ++f) {
+      const Function& fn = functions[f];
+      if (fn.kind != FunctionKind::Matrix || fn.matrix.size() != cp.size()) continue;
+      std::vector<Vec3> image;
+      for (const auto& row : fn.matrix) {
+        Vec3 q{0.0};
+        for (std::size_t j = 0; j < cp.size() && j < row.size(); ++j) q += row[j] * cp[j];
+        image.push_back(q);
+      }
+      const bool active = int(f) == state.activeFunction;
+      const glm::vec4 color = lineColor(fn.color, fn.muted ? 0.2f : active ? 0.95f : 0.5f);
+      for (std::size_t j = 0; j + 1 < image.size(); ++j) line(scene_.lines, image[j], image[j + 1], color);
+      if (active)
+        for (const Vec3& q : image) scene_.points.push_back(vertex(q, {glm::vec3(fn.color), 1.0f}, 4.5f));
+    }
+    for (const Vec3& p : cp) scene_.points.push_back(vertex(p, {0.95f, 0.95f, 0.95f, 1.0f}, 7.0f));
+  }
   for (std::size_t f = 0; f < functions.size(); ++f) {
+    if (functions[f].kind == FunctionKind::Matrix) continue;  // drawn above, through the control points
     std::shared_ptr<const Grid> grid;
     try {
       grid = state.document.evaluatedGrid(f);
@@ -566,7 +590,9 @@ void GridView::render(ModellerState& state, ViewRenderer& renderer) {
   if (key == key_) return;
   key_ = key;
   scene_.clear();
-  if (content_ == Content::FunctionGrid) buildFunctionScene(state);
+  // A matrix function has no grid: its views show the control points and the matrices' images.
+  if (content_ == Content::FunctionGrid && state.function().kind != FunctionKind::Matrix)
+    buildFunctionScene(state);
   else buildIfsScene(state);
   const glm::dmat4 vp = camera(state).viewProjection(size_.x, size_.y);
   renderer.drawScene(target_, glm::mat4(vp), scene_, framebufferScale_ * state.uiScale, kBackgroundTop,

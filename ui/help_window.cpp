@@ -37,6 +37,7 @@ void drawHelpWindow(ModellerState& state) {
       {"Ctrl+A, Esc, Ctrl+I", "Select all nodes / none / invert"},
       {"Space", "Pause or resume the preview"},
       {"F1", "This window"},
+      {"M", "The Matrices window: transitions, control points, free-form matrices and presets"},
       {"Ctrl+Q", "Quit (asks before losing unsaved work)"},
   };
   static const Row mouse[] = {

@@ -68,7 +68,9 @@ float drawMenuBar(AppCommands& app) {
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Function")) {
-    if (ImGui::MenuItem("Add 6x6x6 grid")) addFunction(s, app.edits);
+    if (ImGui::MenuItem(s.document.project().space ? "Add matrix function" : "Add 6x6x6 grid"))
+      addFunction(s, app.edits);
+    if (ImGui::MenuItem("Matrices...", "M", s.showMatrices)) s.showMatrices = !s.showMatrices;
     drawSymmetryMenu(s, app.edits);  // ui/symmetry_menu.cpp
     ImGui::Separator();
     const auto& functions = d.project().functions;
@@ -154,6 +156,7 @@ void handleKey(AppCommands& app, const ImGuiIO& io, bool ctrl, bool shift, Press
   if (pressed(GLFW_KEY_ESCAPE)) s.selection().clear();
   if (pressed(GLFW_KEY_SPACE)) s.previewPaused = !s.previewPaused;
   if (pressed(GLFW_KEY_F1)) s.showHelp = !s.showHelp;
+  if (pressed(GLFW_KEY_M)) s.showMatrices = !s.showMatrices;
   for (int v = 0; v < 4; ++v)
     if (pressed(GLFW_KEY_1 + v) || pressed(GLFW_KEY_KP_1 + v)) toggleView(s, v);
 }

@@ -262,6 +262,7 @@ void ModellerApp::buildUi() {
     ImGui::End();
   }
   drawHelpWindow(state_);
+  drawMatricesWindow(state_, edits_);
   files_.draw(edits_);
   export_.draw(state_);
   if (!state_.gridError.empty() && state_.statusText != state_.gridError) state_.error(state_.gridError);

@@ -58,6 +58,13 @@ class ModellerState {
 
   // Windows and modes.
   bool showHelp = false;
+  bool showMatrices = false;  // the Matrices window (transitions, free-form control points and matrices)
+  /// The free-form preset the Matrices window would apply next (UI state, not saved).
+  struct FreeFormPresetChoice {
+    int preset = 0;
+    float split = 0.5f, roughness = 0.0f;
+    int seed = 1;
+  } freeFormPreset;
   bool morphAsDirection = false;
   SelectionBox boxEntry{{0, 2}, {0, 5}, {0, 5}, SelectionOp::Or};  // the index box being typed  // morph vectors entered as start + direction
   bool showRenderSettings = true;

@@ -23,6 +23,9 @@ void drawSelectionPanel(ModellerState& state, EditQueue& edits);
 /// shading_panel.cpp: the shaded display's lights, ambient, specular, occlusion, fog and depth of
 /// field, one undo step per slider drag.
 void drawShadingPanel(ModellerState& state, EditQueue& edits);
+/// matrices_window.cpp: the transition matrix, and a free-form IFS's control points and
+/// matrices, with presets (Function › Matrices…).
+void drawMatricesWindow(ModellerState& state, EditQueue& edits);
 /// help_window.cpp: the keyboard and mouse shortcuts.
 void drawHelpWindow(ModellerState& state);
 

@@ -110,6 +110,10 @@ FlameAffine fitAffine(const Grid& g, double& maxError) {
 }
 
 FlameExport exportFlame(const Project& project, const std::filesystem::path& projectFolder, const std::string& name) {
+  if (project.space)
+    throw ModelError("space",
+                     "a free-form (control point) IFS has no flame form: its maps act on barycentric "
+                     "coordinates, not on the plane");
   FlameExport out;
   // The flame plane is X's z = 0 plane with y flipped (image rows go down with y); the frame
   // is recorded so that importing the file again restores the same grids.

@@ -9,11 +9,13 @@
 #include "base/bounded_read.h"
 #include "io/animation_io.h"
 #include "io/animation_json.h"
+#include "io/free_form_io.h"
 #include "io/shading_io.h"
 #include "model/operation_table.h"
 #include "model/palette_reference.h"
 #include "model/validation.h"
 #include "model/transition_matrix.h"
+#include "model/validation.h"
 
 namespace gridifs {
 namespace {
@@ -332,6 +334,7 @@ Function readFunction(const json& f, const std::string& path, std::size_t index)
       fail(p, "more than " + std::to_string(limits::kMaxOpsPerFunction) + " operations");
     for (std::size_t o = 0; o < it->size(); ++o) fn.ops.push_back(readOperation((*it)[o], item(p, o)));
   }
+  free_form_io::readFunctionFields(f, path, fn);
   return fn;
 }
 
@@ -409,6 +412,7 @@ ordered_json writeOperation(const Operation& op) {
 }
 
 ordered_json writeFunction(const Function& f) {
+  if (free_form_io::isMatrixFunction(f)) return free_form_io::writeMatrixFunction(f);
   ordered_json o;
   o["name"] = f.name;
   o["resolution"] = {f.resolution[0], f.resolution[1], f.resolution[2]};
@@ -424,6 +428,7 @@ ordered_json writeFunction(const Function& f) {
   ordered_json ops = ordered_json::array();
   for (const Operation& op : f.ops) ops.push_back(writeOperation(op));
   o["ops"] = ops;
+  free_form_io::writeGridFunctionFields(f, o);
   return o;
 }
 
@@ -522,6 +527,7 @@ Project parseProject(const std::string& text) {
     }
   }
   readAnimation(root, project);
+  project.space = free_form_io::readSpace(root);
   validateProject(project);
   checkTrackPaths(project);
   return project;
@@ -550,6 +556,7 @@ std::string serializeProject(const Project& project) {
     root["render"]["shading"] = writeShadingSettings(r.shading);
   ordered_json functions = ordered_json::array();
   for (const Function& f : project.functions) functions.push_back(writeFunction(f));
+  free_form_io::writeSpace(project, root);
   root["functions"] = functions;
   if (project.final_function) root["final"] = writeFunction(*project.final_function);
   if (!project.transitions.empty()) root["transitions"] = project.transitions;

@@ -1,8 +1,5 @@
 #include "mesh/deterministic_ifs.h"
 
-#include "base/parallel.h"
-#include "base/text_format.h"
-
 #include <algorithm>
 #include <climits>
 #include <cmath>
@@ -11,6 +8,9 @@
 #include <functional>
 #include <limits>
 
+#include "base/parallel.h"
+#include "base/text_format.h"
+#include "model/bezier_lattice.h"
 #include "model/stack_evaluator.h"
 #include "model/transition_matrix.h"
 
@@ -30,6 +30,10 @@ constexpr std::uint64_t kBytesPerFace = 2 * sizeof(int);
 
 template <class GridOf, class FinalOf>
 DeterministicIfs snapshotWith(const Project& project, GridOf gridOf, FinalOf finalOf) {
+  if (project.space)
+    throw ModelError("space",
+                     "the deterministic algorithm does not build free-form (control point) IFSs yet; "
+                     "their chaos-game points export with export-points");
   DeterministicIfs ifs;
   for (std::size_t i = 0; i < project.functions.size(); ++i) {
     const Function& f = project.functions[i];
@@ -47,6 +51,13 @@ DeterministicIfs snapshotWith(const Project& project, GridOf gridOf, FinalOf fin
   }
   if (project.final_function && !project.final_function->muted) {
     ifs.finalGrid = finalOf();
+    if (project.final_function->interpolation == LatticeInterpolation::Bezier) {
+      try {
+        ifs.finalGrid = sampleBezierLattice(*ifs.finalGrid);
+      } catch (const ModelError& e) {
+        throw e.under("final");
+      }
+    }
     if (!allFinite(*ifs.finalGrid)) throw ModelError("final", "a grid node is not finite");
   }
   return ifs;

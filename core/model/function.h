@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "model/function_kind.h"
 #include "model/operation.h"
 
 namespace gridifs {
@@ -28,6 +29,12 @@ struct Function {
   /// "sampling_error": set when the grid samples a map given in closed form (a flame xform on
   /// import): the largest distance, in X units, between the grid and that map at cell centres.
   std::optional<double> sampling_error;
+  /// "kind": Matrix functions ignore every grid field above and act through `matrix`.
+  FunctionKind kind = FunctionKind::Grid;
+  /// "matrix" of a Matrix function: m×m, rows summing to 1; λ ← λ·matrix (Thollot et al. 1997, §3.1).
+  std::vector<std::vector<double>> matrix;
+  /// "interpolation": how the final function's lattice maps points (ignored in the loop).
+  LatticeInterpolation interpolation = LatticeInterpolation::Trilinear;
   bool operator==(const Function&) const = default;
 };
 

@@ -26,6 +26,7 @@ std::size_t approximateMemory(const Function& f) {
     if (const auto* calc = std::get_if<CalculatorOp>(&op.params))
       bytes += calc->x.capacity() + calc->y.capacity() + calc->z.capacity();
   }
+  for (const auto& row : f.matrix) bytes += sizeof(row) + row.capacity() * sizeof(double);
   return bytes;
 }
 
@@ -38,6 +39,7 @@ std::size_t approximateMemory(const Project& project) {
   for (const auto& row : project.transitions) bytes += sizeof(row) + row.capacity() * sizeof(double);
   for (const auto& [path, track] : project.tracks)
     bytes += 64 + path.capacity() + track.keys.capacity() * sizeof(Keyframe);  // 64: a map node
+  if (project.space) bytes += project.space->control_points.capacity() * sizeof(Vec3);
   return bytes;
 }
 

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "model/flame_settings.h"
+#include "model/free_form_space.h"
 #include "model/function.h"
 #include "model/keyframe_track.h"
 #include "model/shading_settings.h"
@@ -45,6 +46,8 @@ struct Project {
   std::optional<AnimationSettings> animation;
   /// "tracks": keyframed parameters by JSON path. A track overrides the stored value.
   KeyframeTracks tracks;
+  /// "space": control points of a free-form IFS (model/free_form.h); its functions are Matrix ones.
+  std::optional<FreeFormSpace> space;
   bool operator==(const Project&) const = default;
 };
 

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "model/calculator.h"
+#include "model/free_form.h"
 #include "model/palette_reference.h"
 #include "model/operation_table.h"
 #include "model/transition_matrix.h"
@@ -93,6 +95,7 @@ void validate(const Project& project, const Project* trusted) {
   if (anyActive && !(totalWeight > 0.0))
     fail("functions", "every active function has weight 0 (weights must not all be zero)");
   checkTransitions(project);
+  checkFreeForm(project);
 }
 
 }  // namespace

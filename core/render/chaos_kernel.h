@@ -86,6 +86,7 @@ struct alignas(64) HotFunction {
   v4f speed;  // color_speed in all lanes
   const NodePair* pairs;
   std::uint32_t strideJ, strideK;
+  const float* matrix;  // a free-form IFS's matrix rows (CompiledFunction::matrix), else null
 };
 
 inline HotFunction makeHot(const CompiledFunction& f) {
@@ -99,6 +100,7 @@ inline HotFunction makeHot(const CompiledFunction& f) {
   h.pairs = f.pairs.data();
   h.strideJ = f.pairStrideJ;
   h.strideK = f.pairStrideK;
+  h.matrix = f.matrix.empty() ? nullptr : f.matrix.data();
   return h;
 }
 
@@ -176,6 +178,8 @@ struct ChainState {
   /// The function each lane applied last (transition matrix); kNoFunction after a restart.
   std::uint32_t last[kLanes] = {};
   static constexpr std::uint32_t kNoFunction = 0xFFFFFFFFu;
+  /// Steps since the lane's last restart (only counted when HotIfs::restartInterval is set).
+  std::uint32_t age[kLanes] = {};
 
   void restartLane(int lane, int skip) {
     const std::uint64_t a = rng.next(), b = rng.next();
@@ -185,6 +189,7 @@ struct ChainState {
     color[lane] = v4f{0.5f, 0.5f, 0.5f, float(std::uint32_t(b >> 40)) * (1.0f / 16777216.0f)};
     skipLeft[lane] = skip;
     last[lane] = kNoFunction;
+    age[lane] = 0;
   }
   /// A fresh chain set for stream (seed, worker).
   static ChainState start(std::uint64_t seed, std::uint64_t worker, int skip) {
@@ -204,6 +209,11 @@ struct HotIfs {
   const HotFunction* finalFunction = nullptr;  // null when none
   int skip = 20;
   float escapeBound = 1e5f;
+  /// CompiledIfs::restartInterval: restart a lane after this many steps (0: never).
+  std::uint32_t restartInterval = 0;
+  /// Free-form IFS (barycentric_kernel.h): m coordinates and the padded size in blocks of 8
+  /// floats; 0 blocks for a grid IFS.
+  std::uint32_t barycentricSize = 0, barycentricBlocks = 0;
 
   [[gnu::always_inline]] std::uint32_t choose(std::uint64_t r) const {
     const std::uint32_t column = std::uint32_t((std::uint64_t(std::uint32_t(r >> 32)) * count) >> 32);
@@ -225,9 +235,10 @@ struct ChainCounters {
 
 /// One iteration of one lane; returns 1 when a point was plotted. kRestricted: walk the
 /// transition matrix's Markov chain (Thollot et al. §3.2) instead of independent choices.
-template <bool kRestricted, class Plot>
-[[gnu::always_inline]] inline int stepLane(ChainState& st, int lane, const HotIfs& ifs, Plot& plot,
-                                           std::int64_t& bad) {
+template <bool kRestricted, bool kRestarts, class Plot>
+[[gnu::always_inline]] inline int stepLane(ChainState& st, int lane, const HotIfs& ifs, Plot& plot, std::int64_t& bad) {
+  if constexpr (kRestarts)
+    if (++st.age[lane] > ifs.restartInterval) st.restartLane(lane, ifs.skip);
   std::uint32_t index;
   if constexpr (kRestricted) index = ifs.chooseAfter(st.last[lane], st.rng.next());
   else index = ifs.choose(st.rng.next());
@@ -269,22 +280,26 @@ template <class Plot>
   const std::int64_t rounds = count / kLanes;
   static_assert(kLanes == 4);
   // The restricted loop is a separate instantiation, so the unrestricted one is unchanged.
-  if (ifs.transitionRows) {
+  if (ifs.transitionRows && ifs.restartInterval) {
+    for (std::int64_t n = 0; n < rounds; ++n)
+      for (int l = 0; l < kLanes; ++l) plotted += stepLane<true, true>(local, l, ifs, plot, bad);
+    for (int l = 0; l < int(count % kLanes); ++l) plotted += stepLane<true, true>(local, l, ifs, plot, bad);
+  } else if (ifs.transitionRows) {
     for (std::int64_t n = 0; n < rounds; ++n) {
-      plotted += stepLane<true>(local, 0, ifs, plot, bad);
-      plotted += stepLane<true>(local, 1, ifs, plot, bad);
-      plotted += stepLane<true>(local, 2, ifs, plot, bad);
-      plotted += stepLane<true>(local, 3, ifs, plot, bad);
+      plotted += stepLane<true, false>(local, 0, ifs, plot, bad);
+      plotted += stepLane<true, false>(local, 1, ifs, plot, bad);
+      plotted += stepLane<true, false>(local, 2, ifs, plot, bad);
+      plotted += stepLane<true, false>(local, 3, ifs, plot, bad);
     }
-    for (int l = 0; l < int(count % kLanes); ++l) plotted += stepLane<true>(local, l, ifs, plot, bad);
+    for (int l = 0; l < int(count % kLanes); ++l) plotted += stepLane<true, false>(local, l, ifs, plot, bad);
   } else {
     for (std::int64_t n = 0; n < rounds; ++n) {
-      plotted += stepLane<false>(local, 0, ifs, plot, bad);
-      plotted += stepLane<false>(local, 1, ifs, plot, bad);
-      plotted += stepLane<false>(local, 2, ifs, plot, bad);
-      plotted += stepLane<false>(local, 3, ifs, plot, bad);
+      plotted += stepLane<false, false>(local, 0, ifs, plot, bad);
+      plotted += stepLane<false, false>(local, 1, ifs, plot, bad);
+      plotted += stepLane<false, false>(local, 2, ifs, plot, bad);
+      plotted += stepLane<false, false>(local, 3, ifs, plot, bad);
     }
-    for (int l = 0; l < int(count % kLanes); ++l) plotted += stepLane<false>(local, l, ifs, plot, bad);
+    for (int l = 0; l < int(count % kLanes); ++l) plotted += stepLane<false, false>(local, l, ifs, plot, bad);
   }
   if constexpr (requires { plot.flush(); }) plot.flush();
   st = local;

@@ -14,6 +14,7 @@
 #include <limits>
 
 #include "base/system_memory.h"
+#include "render/barycentric_kernel.h"
 #include "render/chaos_kernel.h"
 #include "render/shaded_plot.h"
 
@@ -71,6 +72,17 @@ struct PreparedJob {
     hotIfs.finalFunction = ifs->finalFunction ? &hot.back() : nullptr;
     hotIfs.skip = job.skip;
     hotIfs.escapeBound = limits::kEscapeBound;
+    hotIfs.restartInterval = ifs->restartInterval;
+    if (ifs->barycentricSize > 0) {
+      if (ifs->barycentricPad % 8 != 0 || ifs->barycentricPad > std::uint32_t(kernel::kMaxBarycentricPad) ||
+          ifs->barycentricSize > ifs->barycentricPad)
+        throw ModelError("space", "the compiled free-form space does not fit the renderer");
+      for (const CompiledFunction& f : ifs->functions)
+        if (f.matrix.size() != std::size_t(ifs->barycentricSize) * ifs->barycentricStride())
+          throw ModelError("functions", "a compiled matrix does not match the control points");
+      hotIfs.barycentricSize = ifs->barycentricSize;
+      hotIfs.barycentricBlocks = ifs->barycentricPad / 8;
+    }
     camera = kernel::makeHotCamera(OrbitCamera(job.camera, job.width, job.height));
     if (job.dofAperture > 0.0) {
       const OrbitCamera orbit(job.camera, job.width, job.height);
@@ -193,6 +205,20 @@ GRIDIFS_KERNEL_CLONES void runBatchShadedColor(kernel::ChainState& chain, const 
   runShadedImpl<true>(chain, job, w, count, counters);
 }
 
+/// A free-form IFS's batch (barycentric_kernel.h); kept out of the grid kernel's clones.
+GRIDIFS_KERNEL_CLONES void runBarycentricBatch(kernel::ChainState& chain, kernel::BarycentricState& bary,
+                                               const PreparedJob& job, ChaosRenderer::Worker& w, std::int64_t count,
+                                               kernel::ChainCounters& counters) {
+  if (job.job.accumulateColor) {
+    kernel::ZBufferPlot<true> plot{job.camera, w.cells.data(), w.colorSums.data(),
+                                   job.palette.empty() ? nullptr : job.palette.data()};
+    kernel::runBarycentricChain(chain, bary, job.hotIfs, count, plot, counters);
+  } else {
+    kernel::ZBufferPlot<false> plot{job.camera, w.cells.data(), w.colorSums.data(), nullptr};
+    kernel::runBarycentricChain(chain, bary, job.hotIfs, count, plot, counters);
+  }
+}
+
 /// Lowers the calling thread's priority once (an unprivileged thread cannot raise it again).
 void lowerThreadPriority() {
 #if defined(__linux__)
@@ -207,6 +233,7 @@ void workerMain(std::shared_ptr<ChaosRenderer::Shared> shared, ChaosRenderer::Wo
   std::uint64_t myGeneration = 0;
   std::int64_t remaining = 0;
   kernel::ChainState chain;
+  auto bary = std::make_unique<kernel::BarycentricState>();  // used by free-form IFSs only
   kernel::ChainCounters counters;
   for (;;) {
     bool fresh = false;
@@ -238,6 +265,7 @@ void workerMain(std::shared_ptr<ChaosRenderer::Shared> shared, ChaosRenderer::Wo
       counters = {};
       remaining = workerBudget(job->job, w->index);
       chain = kernel::ChainState::start(job->job.seed, std::uint64_t(w->index), job->job.skip);
+      if (job->hotIfs.barycentricBlocks) bary->start(chain, job->hotIfs);
       w->bufferGeneration.store(myGeneration, std::memory_order_release);
     }
     while (remaining > 0) {
@@ -245,7 +273,9 @@ void workerMain(std::shared_ptr<ChaosRenderer::Shared> shared, ChaosRenderer::Wo
           shared->paused.load(std::memory_order_relaxed) || shared->quit.load(std::memory_order_relaxed))
         break;
       const std::int64_t n = std::min(remaining, kBatch);
-      if (job->shaded())
+      if (job->hotIfs.barycentricBlocks)
+        runBarycentricBatch(chain, *bary, *job, *w, n, counters);
+      else if (job->shaded())
         (job->job.accumulateColor ? runBatchShadedColor : runBatchShaded)(chain, *job, *w, n, counters);
       else if (job->job.accumulateColor)
         runBatchColor(chain, *job, *w, n, counters);
@@ -633,6 +663,8 @@ RenderStats generatePoints(const CompiledIfs& ifs, const RenderJob& job,
   rgb.reserve(kPointBatch * 3);
   for (int w = 0; w < job.threads; ++w) {
     kernel::ChainState chain = kernel::ChainState::start(job.seed, std::uint64_t(w), job.skip);
+    auto bary = std::make_unique<kernel::BarycentricState>();
+    if (prepared.hotIfs.barycentricBlocks) bary->start(chain, prepared.hotIfs);
     kernel::ChainCounters counters;
     PointPlot plot{&xyz, &rgb};
     for (std::int64_t remaining = workerBudget(job, w); remaining > 0;) {
@@ -640,7 +672,10 @@ RenderStats generatePoints(const CompiledIfs& ifs, const RenderJob& job,
       xyz.clear();
       rgb.clear();
       const kernel::ChainCounters before = counters;
-      kernel::runChain(chain, prepared.hotIfs, n, plot, counters);
+      if (prepared.hotIfs.barycentricBlocks)
+        kernel::runBarycentricChain(chain, *bary, prepared.hotIfs, n, plot, counters);
+      else
+        kernel::runChain(chain, prepared.hotIfs, n, plot, counters);
       remaining -= n;
       stats.samples += counters.samples - before.samples;
       stats.badSamples += counters.bad - before.bad;

@@ -5,6 +5,7 @@
 #include <functional>
 #include <string>
 
+#include "model/bezier_lattice.h"
 #include "model/stack_evaluator.h"
 #include "model/transition_matrix.h"
 
@@ -15,6 +16,25 @@ float clampToX(float v) {
   // NaN → -1, like Grid::evaluate (points outside X are clamped to X first).
   v = v > -1.0f ? v : -1.0f;
   return v < 1.0f ? v : 1.0f;
+}
+
+void compileColor(const Function& function, CompiledFunction& out) {
+  for (int d = 0; d < 3; ++d) out.color[d] = float(std::clamp(function.color[d], 0.0, 1.0));
+  out.color[3] = float(std::clamp(function.palette_index, 0.0, 1.0));
+  out.colorSpeed = float(std::clamp(function.color_speed, 0.0, 1.0));
+  out.weight = function.weight;
+}
+
+/// Steps between restarts of a chain on a graph that is not strongly connected: long enough that
+/// the skipped first steps cost 2%, short enough that a render's millions of restarts sample each
+/// part of the attractor in proportion.
+constexpr std::uint32_t kRestartInterval = 1024;
+
+/// The padded barycentric size of the kernel's blocks: 8, 16, 32 or 64 floats.
+std::uint32_t barycentricPadFor(std::size_t m) {
+  std::uint32_t pad = 8;
+  while (pad < m) pad *= 2;
+  return pad;
 }
 
 }  // namespace
@@ -42,10 +62,31 @@ CompiledFunction compileFunction(const Function& function, const Grid& evaluated
     out.toLattice[d] = 0.5f * float(n[d] - 1);
     out.maxCell[d] = float(n[d] - 2);
   }
-  for (int d = 0; d < 3; ++d) out.color[d] = float(std::clamp(function.color[d], 0.0, 1.0));
-  out.color[3] = float(std::clamp(function.palette_index, 0.0, 1.0));
-  out.colorSpeed = float(std::clamp(function.color_speed, 0.0, 1.0));
-  out.weight = function.weight;
+  compileColor(function, out);
+  out.sourceIndex = sourceIndex;
+  return out;
+}
+
+CompiledFunction compileMatrixFunction(const Function& function, const FreeFormSpace& space, std::uint32_t pad,
+                                       std::size_t sourceIndex) {
+  const std::size_t m = space.control_points.size();
+  if (function.matrix.size() != m || m > pad)
+    throw ModelError("matrix", "the matrix does not match the control points");
+  CompiledFunction out;
+  const std::size_t stride = std::size_t(pad) + 8;
+  out.matrix.assign(m * stride, 0.0f);
+  for (std::size_t i = 0; i < m; ++i) {
+    if (function.matrix[i].size() != m) throw ModelError("matrix", "the matrix does not match the control points");
+    Vec3 tp{0.0};
+    for (std::size_t j = 0; j < m; ++j) {
+      const double t = function.matrix[i][j];
+      if (!std::isfinite(t)) throw ModelError("matrix", "the matrix has non-finite entries");
+      out.matrix[i * stride + j] = float(t);
+      tp += t * space.control_points[j];
+    }
+    for (int d = 0; d < 3; ++d) out.matrix[i * stride + pad + std::size_t(d)] = float(tp[d]);
+  }
+  compileColor(function, out);
   out.sourceIndex = sourceIndex;
   return out;
 }
@@ -113,14 +154,23 @@ std::shared_ptr<const CompiledIfs> compileWith(
     const Project& project, const std::function<std::shared_ptr<const Grid>(std::size_t)>& gridOf,
     const std::function<std::shared_ptr<const Grid>()>& finalGrid) {
   auto ifs = std::make_shared<CompiledIfs>();
+  if (project.space) {
+    ifs->barycentricSize = std::uint32_t(project.space->control_points.size());
+    ifs->barycentricPad = barycentricPadFor(ifs->barycentricSize);
+  }
   std::vector<double> weights;
   for (std::size_t i = 0; i < project.functions.size(); ++i) {
     const Function& f = project.functions[i];
     if (f.muted || !(f.weight > 0.0)) continue;
     const std::string path = "functions[" + std::to_string(i) + "]";
-    const auto grid = gridOf(i);
     try {
-      ifs->functions.push_back(compileFunction(f, *grid, i));
+      if (f.kind == FunctionKind::Matrix) {
+        if (!project.space) throw ModelError("kind", "a \"matrix\" function needs control points");
+        ifs->functions.push_back(compileMatrixFunction(f, *project.space, ifs->barycentricPad, i));
+        weights.push_back(f.weight);
+        continue;
+      }
+      ifs->functions.push_back(compileFunction(f, *gridOf(i), i));
     } catch (const ModelError& e) {
       throw e.under(path);
     }
@@ -139,10 +189,13 @@ std::shared_ptr<const CompiledIfs> compileWith(
       ifs->transitionAlias.insert(ifs->transitionAlias.end(), table.begin(), table.end());
     }
     ifs->transitionAlias.insert(ifs->transitionAlias.end(), ifs->alias.begin(), ifs->alias.end());
+    if (transitionComponents(project).size() > 1) ifs->restartInterval = kRestartInterval;
   }
   if (project.final_function && !project.final_function->muted) {
-    const auto grid = finalGrid();
     try {
+      auto grid = finalGrid();
+      // The kernel interpolates trilinearly: a Bézier lattice goes in sampled (bezier_lattice.h).
+      if (project.final_function->interpolation == LatticeInterpolation::Bezier) grid = sampleBezierLattice(*grid);
       ifs->finalFunction = compileFunction(*project.final_function, *grid, std::size_t(-1));
     } catch (const ModelError& e) {
       throw e.under("final");

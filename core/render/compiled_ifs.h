@@ -34,6 +34,11 @@ struct CompiledFunction {
   double weight = 1.0;
   /// Index in Project::functions (or SIZE_MAX for the final function).
   std::size_t sourceIndex = 0;
+  /// A matrix function of a free-form IFS (Thollot et al. 1997, §3.1; `pairs` is then empty): m
+  /// rows of CompiledIfs::barycentricStride() floats, row i = T_i0 … T_i(pad−1) (zero past m),
+  /// then (T·P)_i as x y z 0 (P the control points) and 4 zeros, so one pass over the rows gives
+  /// both λ·T and the plotted point P·(λ·T).
+  std::vector<float> matrix;
 
   /// Reference (scalar) evaluation, identical in result to the renderer's inner loop:
   /// clamp p to X (NaN → -1), locate the cell, interpolate trilinearly in float.
@@ -56,6 +61,14 @@ struct CompiledIfs {
   /// row r < n picks the function after function r, row n the first function of a chain (the
   /// usual weights). Empty when the project has no matrix (the unrestricted chaos game).
   std::vector<AliasEntry> transitionAlias;
+  /// With transitions whose graph is not strongly connected, a chain never leaves the closed part
+  /// it falls into (a union's half, a concatenation's second IFS) and never revisits transient
+  /// parts. Restarting each chain after this many steps samples every part as the first-function
+  /// weights say, whatever the number of chains; 0 (strongly connected, or no matrix): never.
+  std::uint32_t restartInterval = 0;
+  /// Free-form IFS: m barycentric coordinates (0 for a grid IFS), padded to a multiple of 8.
+  std::uint32_t barycentricSize = 0, barycentricPad = 0;
+  std::uint32_t barycentricStride() const { return barycentricPad + 8; }
 
   /// Maps a 64-bit random number to a function index by weight: the high 32 bits pick the
   /// column, the low 32 bits decide between it and its alias.
@@ -70,6 +83,11 @@ struct CompiledIfs {
 /// Packs an evaluated grid (distorted and placed) for the renderer. Throws ModelError when a
 /// node is not finite.
 CompiledFunction compileFunction(const Function& function, const Grid& evaluated, std::size_t sourceIndex);
+
+/// Packs a matrix function of a free-form project (see CompiledFunction::matrix); `pad` is the
+/// padded size (a multiple of 8, at least m). Throws ModelError when an entry is not finite.
+CompiledFunction compileMatrixFunction(const Function& function, const FreeFormSpace& space, std::uint32_t pad,
+                                       std::size_t sourceIndex);
 
 /// Builds the alias table for `weights` (all ≥ 0, at least one > 0). Exposed for tests.
 std::vector<AliasEntry> buildAliasTable(const std::vector<double>& weights);

@@ -12,9 +12,12 @@
 
 #include "tests/bench/canonical_scene.h"
 #include "flame/palette.h"
+#include "model/free_form_presets.h"
+#include "render/barycentric_kernel.h"
 #include "render/chaos_kernel.h"
 #include "render/chaos_renderer.h"
 #include "render/compiled_ifs.h"
+#include "tests/bench/canonical_scene.h"
 
 namespace gridifs {
 namespace {
@@ -146,6 +149,46 @@ BENCHMARK(BM_KernelColours)
     ->Args({2, 0})
     ->Unit(benchmark::kMillisecond)
     ->MinTime(1.0);
+
+GRIDIFS_KERNEL_CLONES void runFreeFormKernel(kernel::ChainState& chain, kernel::BarycentricState& bary,
+                                             const kernel::HotIfs& ifs, std::int64_t count,
+                                             kernel::ZBufferPlot<false>& plot, kernel::ChainCounters& counters) {
+  kernel::runBarycentricChain(chain, bary, ifs, count, plot, counters);
+}
+
+/// A free-form IFS in the kernel (Thollot et al. 1997, §3.1), on the canonical scene's camera and
+/// buffers: arg 4, the cubic Bézier curve (2 matrices, m = 4); arg 16, the bicubic patch (4
+/// matrices, m = 16). Compare points_per_cpu_second with BM_Kernel/0 (three 16³ grids).
+void BM_FreeFormKernel(benchmark::State& state) {
+  Project scene = canonicalScene();
+  applyFreeFormPreset(scene, state.range(0) == 4 ? FreeFormPreset::BezierCurve : FreeFormPreset::BezierPatch);
+  const RenderJob job = RenderJob::fromProject(scene, 1);
+  const auto compiled = compileIfs(scene);
+  const auto& ifs = *compiled;
+  std::vector<kernel::HotFunction> hot;
+  for (const auto& f : ifs.functions) hot.push_back(kernel::makeHot(f));
+  kernel::HotIfs hotIfs;
+  hotIfs.functions = hot.data();
+  hotIfs.alias = ifs.alias.data();
+  hotIfs.count = std::uint32_t(hot.size());
+  hotIfs.skip = job.skip;
+  hotIfs.barycentricSize = ifs.barycentricSize;
+  hotIfs.barycentricBlocks = ifs.barycentricPad / 8;
+  const kernel::HotCamera cam = kernel::makeHotCamera(OrbitCamera(job.camera, job.width, job.height));
+  std::vector<kernel::PixelCell> cells(std::size_t(job.width) * job.height);
+  kernel::ZBufferPlot<false> plot{cam, cells.data(), nullptr};
+  kernel::ChainState chain = kernel::ChainState::start(1, 0, job.skip);
+  auto bary = std::make_unique<kernel::BarycentricState>();
+  bary->start(chain, hotIfs);
+  kernel::ChainCounters counters;
+  const kernel::DenormalsAreZero flushDenormals;
+  const double cpu0 = processCpuSeconds();
+  for (auto _ : state) runFreeFormKernel(chain, *bary, hotIfs, 1 << 22, plot, counters);
+  state.SetItemsProcessed(counters.samples);
+  state.counters["points_per_cpu_second"] = double(counters.samples) / (processCpuSeconds() - cpu0);
+  state.counters["plotted_fraction"] = double(counters.plotted) / double(counters.samples);
+}
+BENCHMARK(BM_FreeFormKernel)->Arg(4)->Arg(16)->Unit(benchmark::kMillisecond)->MinTime(1.0);
 
 /// The plot-only limit: the same RNG, random pixels of a 1024² z-buffer + density (the renderer's
 /// 16-byte cells), no function evaluation. One thread; the canonical scene's plotted fraction is close to 1.
