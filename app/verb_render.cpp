@@ -2,7 +2,6 @@
 // OpenImageIO. PNG/TIFF: 8-bit RGB with the background composited. EXR: float
 // R G B A (linear, premultiplied, A = coverage) plus a Z channel with the view depth, so
 // compositors can use it.
-#include <OpenImageIO/imageio.h>
 
 #include <atomic>
 #include <cmath>
@@ -19,6 +18,7 @@
 #include "base/atomic_file.h"
 #include "base/color_space.h"
 #include "render/flame_render.h"
+#include "render/image_file.h"
 #include "render/shaded_image.h"
 
 namespace gridifs::cli {
@@ -35,57 +35,36 @@ struct InterruptGuard {
   ~InterruptGuard() { std::signal(SIGINT, previous); }
 };
 
-/// The Z value of pixels without points (Blender's convention for "background").
-constexpr float kEmptyZ = 1e10f;
-
 void writeImage(const RenderImage& image, const std::filesystem::path& out, const RenderSetup& setup,
                 const std::string& file) {
-  const std::string ext = lowerExtension(out);
-  AtomicFile output(out);
-  const std::string temp = output.temporaryPath().string();
-  auto writer = OIIO::ImageOutput::create(temp);
-  if (!writer) throw CliError(kFailure, "cannot write " + out.string() + ": " + OIIO::geterror());
   const std::size_t n = std::size_t(image.width) * std::size_t(image.height);
-  bool ok = false;
-  const std::string description = "GridIFS render of " + file + ", " + std::to_string(setup.job.samples) +
-                                  " samples, seed " + std::to_string(setup.job.seed) + ", " +
-                                  std::to_string(setup.job.threads) + " threads";
-  if (ext == "exr") {
-    OIIO::ImageSpec spec(image.width, image.height, 5, OIIO::TypeDesc::FLOAT);
-    spec.channelnames = {"R", "G", "B", "A", "Z"};
-    spec.alpha_channel = 3;
-    spec.z_channel = 4;
-    spec.attribute("Software", "GridIFS");
-    spec.attribute("ImageDescription", description);
-    spec.attribute("compression", "zip");
-    std::vector<float> pixels(n * 5);
-    for (std::size_t i = 0; i < n; ++i) {
-      const std::uint8_t* px = &image.rgba[i * 4];
-      const bool hit = px[3] != 0;
-      for (int c = 0; c < 3; ++c) pixels[i * 5 + c] = hit ? srgbToLinear(px[c] / 255.0f) : 0.0f;
-      pixels[i * 5 + 3] = hit ? 1.0f : 0.0f;
-      pixels[i * 5 + 4] = hit ? image.depth[i] : kEmptyZ;
-    }
-    ok = writer->open(temp, spec) && writer->write_image(OIIO::TypeDesc::FLOAT, pixels.data()) && writer->close();
-  } else {
-    OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::UINT8);
-    spec.attribute("Software", "GridIFS");
-    spec.attribute("ImageDescription", description);
-    if (ext == "tif" || ext == "tiff") spec.attribute("compression", "zip");
-    std::vector<std::uint8_t> pixels(n * 3);
-    for (std::size_t i = 0; i < n; ++i)
-      for (int c = 0; c < 3; ++c) pixels[i * 3 + c] = image.rgba[i * 4 + c];
-    ok = writer->open(temp, spec) && writer->write_image(OIIO::TypeDesc::UINT8, pixels.data()) && writer->close();
-  }
-  if (!ok) {
-    std::string message = writer->geterror();
-    if (message.empty()) message = "the image library reported an error";
-    while (!message.empty() && message.back() == '\n') message.pop_back();
-    throw CliError(kFailure, "cannot write " + out.string() + ": " + message);
-  }
-  writer.reset();
+  ImageFileLayout layout;
+  layout.width = image.width;
+  layout.height = image.height;
+  layout.description = "GridIFS render of " + file + ", " + std::to_string(setup.job.samples) + " samples, seed " +
+                       std::to_string(setup.job.seed) + ", " + std::to_string(setup.job.threads) + " threads";
   try {
-    output.commit();
+    if (lowerExtension(out) == "exr") {
+      layout.channels = {"R", "G", "B", "A", "Z"};
+      layout.alphaChannel = 3;
+      layout.zChannel = 4;
+      layout.stored = StoredSample::Float;
+      std::vector<float> pixels(n * 5);
+      for (std::size_t i = 0; i < n; ++i) {
+        const std::uint8_t* px = &image.rgba[i * 4];
+        const bool hit = px[3] != 0;
+        for (int c = 0; c < 3; ++c) pixels[i * 5 + c] = hit ? srgbToLinear(px[c] / 255.0f) : 0.0f;
+        pixels[i * 5 + 3] = hit ? 1.0f : 0.0f;
+        pixels[i * 5 + 4] = hit ? image.depth[i] : kEmptyPixelDepth;
+      }
+      writeImageFile(out, layout, pixels.data());
+    } else {
+      layout.channels = {"R", "G", "B"};
+      std::vector<std::uint8_t> pixels(n * 3);
+      for (std::size_t i = 0; i < n; ++i)
+        for (int c = 0; c < 3; ++c) pixels[i * 3 + c] = image.rgba[i * 4 + c];
+      writeImageFile(out, layout, pixels.data());
+    }
   } catch (const IoError& e) {
     throw CliError(kFailure, e.what());
   }

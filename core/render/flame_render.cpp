@@ -1,6 +1,5 @@
 #include "render/flame_render.h"
 
-#include <OpenImageIO/imageio.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -11,6 +10,7 @@
 #include "base/color_space.h"
 #include "base/errors.h"
 #include "base/text_format.h"
+#include "render/image_file.h"
 
 namespace gridifs {
 
@@ -113,14 +113,15 @@ void writeFlameImage(const FlameImage& image, const std::filesystem::path& file,
   const bool exr = ext == "exr";
   if (!exr && ext != "png" && ext != "tif" && ext != "tiff")
     throw IoError("cannot write " + file.string() + ": use a .png, .tif or .exr file name");
-  OIIO::TypeDesc format;
-  if (exr) format = bitDepth == 32 ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::HALF;
-  else if (bitDepth == 16) format = OIIO::TypeDesc::UINT16;
-  else if (bitDepth == 8) format = OIIO::TypeDesc::UINT8;
+  ImageFileLayout layout;
+  if (exr) layout.stored = bitDepth == 32 ? StoredSample::Float : StoredSample::Half;
+  else if (bitDepth == 16) layout.stored = StoredSample::UInt16;
+  else if (bitDepth == 8) layout.stored = StoredSample::UInt8;
   else throw IoError("cannot write " + file.string() + ": PNG and TIFF take 8 or 16 bits per channel");
-  const int channels = withAlpha ? 4 : 3;
-  OIIO::ImageSpec spec(image.width, image.height, channels, format);
-  if (withAlpha) spec.alpha_channel = 3;
+  layout.width = image.width;
+  layout.height = image.height;
+  layout.channels = withAlpha ? std::vector<std::string>{"R", "G", "B", "A"} : std::vector<std::string>{"R", "G", "B"};
+  if (withAlpha) layout.alphaChannel = 3;
   std::vector<float> pixels;
   const float* data = image.rgba.data();
   if (exr) {
@@ -145,14 +146,7 @@ void writeFlameImage(const FlameImage& image, const std::filesystem::path& file,
     pixels = std::move(rgb);
     data = pixels.data();
   }
-  AtomicFile atomic(file);
-  const std::string temporary = atomic.temporaryPath().string();
-  auto out = OIIO::ImageOutput::create(temporary);
-  if (!out) throw IoError("cannot write " + file.string() + ": " + OIIO::geterror());
-  if (!out->open(temporary, spec)) throw IoError("cannot write " + file.string() + ": " + out->geterror());
-  if (!(out->write_image(OIIO::TypeDesc::FLOAT, data) && out->close()))
-    throw IoError("cannot write " + file.string() + ": " + out->geterror());
-  atomic.commit();
+  writeImageFile(file, layout, data);
 }
 
 }  // namespace gridifs

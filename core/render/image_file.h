@@ -1,0 +1,31 @@
+#pragma once
+// One writer for every image file GridIFS produces (z-buffer, flame and shaded renders):
+// OpenImageIO picks the format from the extension, the file is written atomically (a temporary
+// renamed over the target), and a failure names the file.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace gridifs {
+
+/// How the channels are stored in the file.
+enum class StoredSample { UInt8, UInt16, Half, Float };
+
+struct ImageFileLayout {
+  int width = 0, height = 0;
+  std::vector<std::string> channels;  // e.g. {"R", "G", "B", "A", "Z"}
+  int alphaChannel = -1, zChannel = -1;
+  StoredSample stored = StoredSample::UInt8;
+  std::string description;  // the ImageDescription metadata; empty for none
+};
+
+/// Writes interleaved pixels (width · height · channels values; 8-bit or float, converted to
+/// `layout.stored`). Throws IoError("cannot write FILE: …") and leaves an existing file as it was.
+void writeImageFile(const std::filesystem::path& file, const ImageFileLayout& layout, const std::uint8_t* pixels);
+void writeImageFile(const std::filesystem::path& file, const ImageFileLayout& layout, const float* pixels);
+
+/// The Z value of pixels without points in EXR files (Blender's convention for "background").
+inline constexpr float kEmptyPixelDepth = 1e10f;
+
+}  // namespace gridifs
