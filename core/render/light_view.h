@@ -23,6 +23,11 @@ struct BoundingSphere {
   double radius = 1.0;
 };
 
+// Declared before LightView, whose defaulted comparison needs it.
+inline bool operator==(const BoundingSphere& a, const BoundingSphere& b) {
+  return a.center == b.center && a.radius == b.radius;
+}
+
 /// A sphere holding every point the chaos game can plot for `ifs`: each function maps into the
 /// convex hull of its distorted nodes (trilinear interpolation is a convex combination), so the
 /// attractor lies in the union of those hulls — or, with a final function, in the final
@@ -58,9 +63,5 @@ class LightView {
   BoundingSphere bounds_;
   int size_ = 16;
 };
-
-inline bool operator==(const BoundingSphere& a, const BoundingSphere& b) {
-  return a.center == b.center && a.radius == b.radius;
-}
 
 }  // namespace gridifs
