@@ -373,6 +373,10 @@ FlameImport importFlameGenome(const FlameGenome& genome, const FlameImportOption
       cam.ortho = false;
       cam.distance = out.frame.scale / genome.camPerspective;
       cam.target = Vec3(0.0, out.frame.scale * out.frame.zCenter, 0.0);
+      // The eye looks at the flame's plane z = 0; an attractor thousands of view sizes away from
+      // that plane in depth has no view a project camera can hold.
+      if (!(std::fabs(cam.target.y) <= 1e4))
+        throw FlameError("the attractor lies too far in front of or behind the flame's camera plane to frame");
       if (genome.centerX != 0.0 || genome.centerY != 0.0)
         out.warnings.push_back(
             "the flame's perspective eye is off the view's centre; GridIFS's camera looks straight at the centre, "
@@ -386,7 +390,7 @@ FlameImport importFlameGenome(const FlameGenome& genome, const FlameImportOption
     }
     cam.fov = 2.0 * std::atan(halfH / cam.distance) * 180.0 / kPi;
   }
-  if (cam.distance < 1e-3 || cam.distance > 1e4 || !(cam.fov > 1e-3 && cam.fov < 179.0))
+  if (!(cam.distance >= 1e-3 && cam.distance <= 1e4) || !(cam.fov >= 1.0 && cam.fov <= 170.0))
     throw FlameError("the genome's view is too small or too large to frame");
 
   RenderSettings& r = p.render;

@@ -52,11 +52,45 @@ void validateFlameSettings(const FlameSettings& f, const std::string& path) {
   }
 }
 
+void validateCamera(const Camera& c, const std::string& path) {
+  auto range = [&](double v, const std::string& key, double lo, double hi) {
+    if (!(v >= lo && v <= hi)) {
+      std::ostringstream s;
+      s << "expected a number between " << lo << " and " << hi << ", found " << v;
+      fail(join(path, key), s.str());
+    }
+  };
+  // The same ranges the project reader accepts, so whatever validates also loads back.
+  range(c.yaw, "yaw", -1e6, 1e6);
+  range(c.pitch, "pitch", -90.0, 90.0);
+  range(c.distance, "distance", 1e-3, 1e4);
+  for (int d = 0; d < 3; ++d) range(c.target[d], "target[" + std::to_string(d) + "]", -1e4, 1e4);
+  range(c.fov, "fov", 1.0, 170.0);
+}
+
+void validateRenderSettings(const RenderSettings& r, const std::string& path) {
+  auto range = [&](double v, const std::string& key, double lo, double hi) {
+    if (!(v >= lo && v <= hi)) {
+      std::ostringstream s;
+      s << "expected a number between " << lo << " and " << hi << ", found " << v;
+      fail(join(path, key), s.str());
+    }
+  };
+  range(r.width, "width", 1, 16384);
+  range(r.height, "height", 1, 16384);
+  range(double(r.samples), "samples", 1, 1e11);
+  range(r.skip, "skip", 0, 100000);
+  for (int d = 0; d < 3; ++d) range(r.background[d], "background[" + std::to_string(d) + "]", 0.0, 1.0);
+  range(r.depth_cue, "depth_cue", 0.0, 1.0);
+}
+
 namespace {
 
 // Checks `project`; a function equal to the one at the same place of `trusted` (a project that
 // passed these checks) keeps its verdict, so its operations are not checked again.
 void validate(const Project& project, const Project* trusted) {
+  validateCamera(project.camera, "camera");
+  validateRenderSettings(project.render, "render");
   validateFlameSettings(project.render.flame, "render.flame");
   validateShadingSettings(project.render.shading, "render.shading");
   if (project.functions.empty()) fail("functions", "the IFS needs at least one function");

@@ -16,6 +16,10 @@ namespace gridifs {
 /// `path` + "." + the field.
 void validateFlameSettings(const FlameSettings& settings, const std::string& path);
 
+/// The camera's and the render settings' ranges, the same the project reader accepts.
+void validateCamera(const Camera& camera, const std::string& path);
+void validateRenderSettings(const RenderSettings& settings, const std::string& path);
+
 /// Checks limits and the semantic rules. Throws ModelError with a JSON path
 /// (`functions[2].ops[0].k`).
 void validateProject(const Project& project);
