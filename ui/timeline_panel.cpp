@@ -119,6 +119,7 @@ void togglePlaybackNow(ModellerState& state) {
   // Play from the start when the playhead is outside the range or at its end.
   if (from < a.start || frameOf(from, a.fps) >= frameOf(a.end, a.fps)) from = double(frameOf(a.start, a.fps)) / a.fps;
   setTime(state, from);
+  if (state.document.project().time != from) return;  // the tracks do not fit the project there
   play.playing = true;
   play.startTime = from;
   play.startClock = state.now;
