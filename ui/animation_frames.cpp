@@ -27,8 +27,8 @@ std::string lowerExtension(const std::filesystem::path& file) {
 
 /// Writes 8-bit display colour (4 per pixel, over the background) as RGB, or linear float RGB
 /// for EXR.
-void writeDisplayImage(const std::vector<std::uint8_t>& rgba, int width, int height,
-                       const std::filesystem::path& out, const std::string& description) {
+void writeDisplayImage(const std::vector<std::uint8_t>& rgba, int width, int height, const std::filesystem::path& out,
+                       const std::string& description) {
   const std::size_t n = std::size_t(width) * std::size_t(height);
   ImageFileLayout layout;
   layout.width = width;
@@ -102,8 +102,9 @@ void renderAnimationFrame(const Project& animated, long frame, const std::filesy
   const std::shared_ptr<const CompiledIfs> ifs = compileIfs(document.project(), document.evaluation());
   RenderJob job = RenderJob::fromProject(project, threads);
   auto report = [&](const RenderStats& s) { return !progress || progress(std::min(1.0, s.progress())); };
-  const std::string description = "GridIFS animation frame " + std::to_string(frame) + " (t = " +
-                                  std::to_string(project.time) + " s), " + std::to_string(job.samples) + " samples";
+  const std::string description = "GridIFS animation frame " + std::to_string(frame) +
+                                  " (t = " + std::to_string(project.time) + " s), " + std::to_string(job.samples) +
+                                  " samples";
   switch (project.render.mode) {
     case DisplayMode::Flame: {
       // Draves & Reckase 2003, §4–8: supersampled palette colours, log-density tone mapping.

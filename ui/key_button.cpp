@@ -23,7 +23,8 @@ bool hasKeyAt(const KeyframeTrack& track, double t) {
 
 std::vector<KeyedNumber> componentsOf(const std::string& path, const double* values, int components) {
   std::vector<KeyedNumber> numbers;
-  for (int c = 0; c < components; ++c) numbers.push_back({componentPath(path, components, c), values ? values[c] : 0.0});
+  for (int c = 0; c < components; ++c)
+    numbers.push_back({componentPath(path, components, c), values ? values[c] : 0.0});
   return numbers;
 }
 
@@ -65,9 +66,15 @@ void keyButton(ModellerState& state, EditQueue& edits, const std::string& id, co
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const ImU32 key = IM_COL32(240, 200, 70, 255), faint = IM_COL32(150, 150, 160, hovered ? 255 : 110);
   switch (keyState) {
-    case KeyState::KeyHere: draw->AddQuadFilled(a, b, c, d, key); break;
-    case KeyState::Animated: draw->AddQuad(a, b, c, d, key, 1.6f); break;
-    case KeyState::None: draw->AddQuad(a, b, c, d, faint, 1.2f); break;
+    case KeyState::KeyHere:
+      draw->AddQuadFilled(a, b, c, d, key);
+      break;
+    case KeyState::Animated:
+      draw->AddQuad(a, b, c, d, key, 1.6f);
+      break;
+    case KeyState::None:
+      draw->AddQuad(a, b, c, d, faint, 1.2f);
+      break;
   }
   if (hovered) {
     state.contextHelp = keyState == KeyState::KeyHere

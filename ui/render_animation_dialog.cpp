@@ -114,9 +114,8 @@ void RenderAnimationDialog::start(ModellerState& state) {
       finish(Phase::Done, "Rendered " + std::to_string(last - first + 1) + " frames: " + frameFileName(pattern, first) +
                               " … " + fs::path(frameFileName(pattern, last)).filename().string() + ".");
     } catch (const RenderCancelled&) {
-      finish(Phase::Cancelled, "Cancelled at frame " + std::to_string(frame) + "; " +
-                                   std::to_string(frame - first) + " frames were written, frame " +
-                                   std::to_string(frame) + " was not.");
+      finish(Phase::Cancelled, "Cancelled at frame " + std::to_string(frame) + "; " + std::to_string(frame - first) +
+                                   " frames were written, frame " + std::to_string(frame) + " was not.");
     } catch (const std::exception& e) {
       finish(Phase::Failed, "Frame " + std::to_string(frame) + ": " + e.what());
     }
@@ -130,8 +129,10 @@ void RenderAnimationDialog::draw(ModellerState& state) {
       haveResult_ = false;
       phase_ = result_;
       message_ = resultMessage_;
-      if (phase_ == Phase::Done) state.info(message_);
-      else state.error(message_);
+      if (phase_ == Phase::Done)
+        state.info(message_);
+      else
+        state.error(message_);
     }
   }
   if (!running() && worker_.joinable()) worker_.join();
@@ -191,7 +192,10 @@ void RenderAnimationDialog::draw(ModellerState& state) {
                        frames, frames == 1 ? "" : "s", a.fps, first_ / a.fps, last_ / a.fps, width_, height_,
                        double(samples_) / 1e6, double(samples_) * double(frames) / 1e6);
     if (!checkFramePattern(pattern_))
-      ImGui::TextDisabled("%s", (frameFileName(pattern_, first_) + (frames > 1 ? " ... " + fs::path(frameFileName(pattern_, last_)).filename().string() : "")).c_str());
+      ImGui::TextDisabled("%s",
+                          (frameFileName(pattern_, first_) +
+                           (frames > 1 ? " ... " + fs::path(frameFileName(pattern_, last_)).filename().string() : ""))
+                              .c_str());
   } else {
     ImGui::TextWrapped("The last frame comes before the first.");
   }
@@ -199,7 +203,8 @@ void RenderAnimationDialog::draw(ModellerState& state) {
 
   if (busy) {
     char overlay[64];
-    std::snprintf(overlay, sizeof overlay, "frame %d of %d", std::min(framesDone_.load() + 1, frameCount_), frameCount_);
+    std::snprintf(overlay, sizeof overlay, "frame %d of %d", std::min(framesDone_.load() + 1, frameCount_),
+                  frameCount_);
     ImGui::ProgressBar(float(progress_.load()), ImVec2(-em * 7.0f, 0), overlay);
     state.probe.item("animation.progress");
     ImGui::SameLine();
@@ -227,8 +232,12 @@ void RenderAnimationDialog::draw(ModellerState& state) {
 
 nlohmann::json RenderAnimationDialog::probeJson() const {
   static const char* phases[] = {"options", "running", "done", "failed", "cancelled"};
-  return {{"open", open_},           {"running", running()},     {"phase", phases[int(phase_)]},
-          {"progress", progress_.load()}, {"frames_done", framesDone_.load()}, {"message", message_}};
+  return {{"open", open_},
+          {"running", running()},
+          {"phase", phases[int(phase_)]},
+          {"progress", progress_.load()},
+          {"frames_done", framesDone_.load()},
+          {"message", message_}};
 }
 
 }  // namespace gridifs::ui

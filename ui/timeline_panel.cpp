@@ -167,7 +167,8 @@ void drawTimelinePanel(ModellerState& state, EditQueue& edits) {
   if (ImGui::Button("<")) stepFrames(state, edits, -1);
   contextHelp(state, "One frame back (Left)");
   ImGui::SameLine(0, 2);
-  if (ImGui::Button(state.playback.playing ? "Pause##play" : "Play##play", ImVec2(em * 3.2f, 0))) togglePlayback(state, edits);
+  if (ImGui::Button(state.playback.playing ? "Pause##play" : "Play##play", ImVec2(em * 3.2f, 0)))
+    togglePlayback(state, edits);
   state.probe.item("timeline.play");
   contextHelp(state, "Play or pause the animation (Alt+A); the preview renders each frame progressively");
   ImGui::SameLine(0, 2);
@@ -218,8 +219,11 @@ void drawTimelinePanel(ModellerState& state, EditQueue& edits) {
   sameLineIfRoom(ImGui::GetFrameHeight() + ImGui::CalcTextSize("Camera").x + em);
   const Camera& cam = project.camera;
   keyButton(state, edits, "camera",
-            {{"camera.yaw", cam.yaw}, {"camera.pitch", cam.pitch}, {"camera.distance", cam.distance},
-             {"camera.target[0]", cam.target.x}, {"camera.target[1]", cam.target.y},
+            {{"camera.yaw", cam.yaw},
+             {"camera.pitch", cam.pitch},
+             {"camera.distance", cam.distance},
+             {"camera.target[0]", cam.target.x},
+             {"camera.target[1]", cam.target.y},
              {"camera.target[2]", cam.target.z}});
   ImGui::TextUnformatted("Camera");
   contextHelp(state, "The diamond keys the preview camera (yaw, pitch, distance, target) at the current time");

@@ -117,8 +117,7 @@ void remapTrackIndices(KeyframeTracks& tracks, const std::string& listPath, cons
   for (auto& [path, track] : tracks) {
     const std::size_t close = path.find(']', prefix.size());
     if (path.compare(0, prefix.size(), prefix) != 0 || close == std::string::npos || close == prefix.size() ||
-        close - prefix.size() > 6 ||
-        path.find_first_not_of("0123456789", prefix.size()) != close) {
+        close - prefix.size() > 6 || path.find_first_not_of("0123456789", prefix.size()) != close) {
       remapped.emplace(path, std::move(track));
       continue;
     }

@@ -1,9 +1,9 @@
 // Document edits, gestures and undo/redo over random edit sequences.
 #include <gtest/gtest.h>
 
-#include "edit/document.h"
 #include <filesystem>
 
+#include "edit/document.h"
 #include "io/animation_io.h"
 #include "io/project_io.h"
 #include "project_samples.h"
