@@ -2,9 +2,11 @@
 // swatch strips (flam3's collection and ours) and the tone-mapping settings of Draves & Reckase 2003, §4–8 as
 // edits of render.flame, one undo step per slider drag.
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 
 #include "flame/palette.h"
+#include "ui/key_button.h"
 #include "ui/preview_modes.h"
 #include "ui/widgets.h"
 
@@ -34,6 +36,10 @@ void drawSwatch(ImDrawList* draw, ImVec2 min, ImVec2 max, const std::vector<ImU3
 void flameSlider(ModellerState& state, EditQueue& edits, const char* label, const char* undoLabel, double value,
                  double min, double max, const char* format, bool logarithmic, double FlameSettings::*field,
                  const char* help) {
+  // The file's name of the field: "Gamma threshold" → render.flame.gamma_threshold.
+  std::string key = undoLabel;
+  for (char& c : key) c = c == ' ' ? '_' : char(std::tolower(static_cast<unsigned char>(c)));
+  keyButton(state, edits, "render.flame." + key, &value);
   const bool changed =
       ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &min, &max, format,
                           ImGuiSliderFlags_AlwaysClamp | (logarithmic ? ImGuiSliderFlags_Logarithmic : 0));

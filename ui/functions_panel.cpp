@@ -9,6 +9,7 @@
 #include "model/contractivity.h"
 #include "model/free_form.h"
 #include "model/transition_matrix.h"
+#include "ui/key_button.h"
 #include "ui/panels.h"
 #include "ui/widgets.h"
 
@@ -153,6 +154,8 @@ void drawFunctionsPanel(ModellerState& state, EditQueue& edits) {
   gestureItem(edits, "Rename function", changed && !name.empty(), [fi, name](Project& p) { p.functions[std::size_t(fi)].name = name; });
 
   double weight = f.weight;
+  const std::string fpath = "functions[" + std::to_string(fi) + "]";
+  keyButton(state, edits, fpath + ".weight", &weight);
   changed = dragDouble("Weight", weight, 0.01, 0.0, 1000.0, "%.3f");
   gestureItem(edits, "Function weight", changed, [fi, weight](Project& p) { p.functions[std::size_t(fi)].weight = weight; });
   contextHelp(state, "Probability of choosing this function is proportional to its weight");
@@ -190,12 +193,15 @@ void drawFunctionsPanel(ModellerState& state, EditQueue& edits) {
 
   if (ImGui::CollapsingHeader("Placement", ImGuiTreeNodeFlags_DefaultOpen)) {
     Placement pl = f.placement;
+    keyButton(state, edits, fpath + ".placement.translate", &pl.translate.x, 3);
     changed = dragVec3("Translate", pl.translate, 0.005);
     state.probe.frame("function.translate");
     gestureItem(edits, "Move placement", changed, [fi, pl](Project& p) { p.functions[std::size_t(fi)].placement = pl; });
     contextHelp(state, "Where the grid sits in the common initial grid; also: drag it in the IFS view");
+    keyButton(state, edits, fpath + ".placement.rotate", &pl.rotate.x, 3);
     changed = dragVec3("Rotate", pl.rotate, 0.5, -360.0, 360.0, "%.1f°");
     gestureItem(edits, "Rotate placement", changed, [fi, pl](Project& p) { p.functions[std::size_t(fi)].placement = pl; });
+    keyButton(state, edits, fpath + ".placement.scale", &pl.scale.x, 3);
     changed = dragVec3("Scale", pl.scale, 0.005, -4.0, 4.0);
     state.probe.frame("function.scale");
     gestureItem(edits, "Scale placement", changed, [fi, pl](Project& p) { p.functions[std::size_t(fi)].placement = pl; });

@@ -36,6 +36,8 @@ void drawHelpWindow(ModellerState& state) {
       {"1 2 3 4", "Top / side / front / user grid view alone; again: all four"},
       {"Ctrl+A, Esc, Ctrl+I", "Select all nodes / none / invert"},
       {"Space", "Pause or resume the preview"},
+      {"Alt+A", "Play or pause the animation (the timeline under the preview)"},
+      {"Left, Right", "One frame back / forward (Shift: to the first / last frame)"},
       {"F1", "This window"},
       {"M", "The Matrices window: transitions, control points, free-form matrices and presets"},
       {"Ctrl+Q", "Quit (asks before losing unsaved work)"},
@@ -51,6 +53,8 @@ void drawHelpWindow(ModellerState& state) {
       {"Wheel", "Zoom"},
       {"Drag a grid in the IFS view", "Move the function's placement"},
       {"Drag in the preview", "Orbit the preview camera (same as the IFS user view)"},
+      {"Drag the timeline", "Scrub through the animation; the preview follows (not an undo step)"},
+      {"Click a diamond", "Set a key at the current time, or remove the key there; editing a keyed value keys it"},
   };
   auto table = [](const char* id, const Row* rows, std::size_t n) {
     if (ImGui::BeginTable(id, 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {

@@ -8,6 +8,7 @@
 #include "ui/export_dialog.h"
 #include "ui/symmetry_menu.h"
 #include "ui/panels.h"
+#include "ui/timeline_panel.h"
 
 namespace gridifs::ui {
 namespace {
@@ -55,6 +56,10 @@ float drawMenuBar(AppCommands& app) {
       app.exporter->drawMenuItems(s);  // Export mesh..., Export points...
       ImGui::Separator();
     }
+    if (ImGui::MenuItem("Render animation...")) s.showRenderAnimation = true;
+    s.probe.item("menu.render_animation");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Render the timeline's frames to numbered image files");
+    ImGui::Separator();
     if (ImGui::MenuItem("Quit", "Ctrl+Q")) app.files.requestQuit();
     ImGui::EndMenu();
   }
@@ -113,6 +118,7 @@ float drawMenuBar(AppCommands& app) {
       ImGui::EndMenu();
     }
     if (ImGui::MenuItem(s.previewPaused ? "Resume preview" : "Pause preview", "Space")) s.previewPaused = !s.previewPaused;
+    if (ImGui::MenuItem(s.playback.playing ? "Pause animation" : "Play animation", "Alt+A")) togglePlayback(s, app.edits);
     ImGui::Separator();
     if (ImGui::MenuItem("Reset layout")) app.resetLayout();
     ImGui::EndMenu();
@@ -128,7 +134,7 @@ float drawMenuBar(AppCommands& app) {
 namespace {
 
 template <class Pressed>
-void handleKey(AppCommands& app, const ImGuiIO& io, bool ctrl, bool shift, Pressed pressed) {
+void handleKey(AppCommands& app, const ImGuiIO& io, bool ctrl, bool shift, bool alt, Pressed pressed) {
   ModellerState& s = app.state;
   // Ctrl shortcuts work everywhere except undo/redo while typing (the field has its own).
   if (ctrl) {
@@ -151,6 +157,16 @@ void handleKey(AppCommands& app, const ImGuiIO& io, bool ctrl, bool shift, Press
     return;
   }
   if (io.WantTextInput) return;
+  // The timeline: Blender's Alt+A plays (Space already pauses the preview), arrows step frames.
+  if (alt && pressed(GLFW_KEY_A)) togglePlayback(s, app.edits);
+  if (pressed(GLFW_KEY_LEFT)) {
+    if (shift) jumpToEnd(s, app.edits, false);
+    else stepFrames(s, app.edits, -1);
+  }
+  if (pressed(GLFW_KEY_RIGHT)) {
+    if (shift) jumpToEnd(s, app.edits, true);
+    else stepFrames(s, app.edits, 1);
+  }
   if (pressed(GLFW_KEY_DELETE)) deleteActiveOperation(s, app.edits);
   if (pressed(GLFW_KEY_F)) app.frameViews();
   if (pressed(GLFW_KEY_ESCAPE)) s.selection().clear();
@@ -170,8 +186,8 @@ void handleShortcuts(AppCommands& app) {
   s.keyPresses.clear();
   if (app.files.modalOpen()) return;
   for (const ModellerState::KeyPress& press : presses) {
-    const bool ctrl = press.mods & GLFW_MOD_CONTROL, shift = press.mods & GLFW_MOD_SHIFT;
-    handleKey(app, io, ctrl, shift, [&](int key) { return press.key == key; });
+    const bool ctrl = press.mods & GLFW_MOD_CONTROL, shift = press.mods & GLFW_MOD_SHIFT, alt = press.mods & GLFW_MOD_ALT;
+    handleKey(app, io, ctrl, shift, alt, [&](int key) { return press.key == key; });
   }
 }
 

@@ -32,6 +32,8 @@
 #include "ui/project_files.h"
 #include "ui/screenshot.h"
 #include "ui/theme.h"
+#include "ui/timeline_panel.h"
+#include "ui/render_animation_dialog.h"
 #include "ui/view_renderer.h"
 
 namespace gridifs::ui {
@@ -98,6 +100,7 @@ class ModellerApp {
   GridView ifsView_;
   PreviewView preview_;
   ExportDialog export_;  // File > Export
+  RenderAnimationDialog animation_;  // File > Render animation
   std::unique_ptr<AppCommands> commands_;
   std::string iniPath_, title_;
   bool resetLayout_ = false;
@@ -239,8 +242,10 @@ void ModellerApp::buildUi() {
   ImGui::End();
   beginPanel(Panel::Preview, layout, cond);
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(6 * state_.uiScale, 6 * state_.uiScale));
-  if (ImGui::Begin("Preview", nullptr, viewWindow))
+  if (ImGui::Begin("Preview", nullptr, viewWindow)) {
     preview_.build(state_, edits_, fbScale);
+    drawTimelinePanel(state_, edits_);
+  }
   endPanel(Panel::Preview);
   ImGui::End();
   beginPanel(Panel::Ifs, layout, cond);
@@ -265,6 +270,7 @@ void ModellerApp::buildUi() {
   drawMatricesWindow(state_, edits_);
   files_.draw(edits_);
   export_.draw(state_);
+  animation_.draw(state_);
   if (!state_.gridError.empty() && state_.statusText != state_.gridError) state_.error(state_.gridError);
   drawStatusBar(state_, statusHeight);
 }
@@ -307,6 +313,19 @@ void ModellerApp::writeProbe(double frameMs) {
   j["rects"] = rects;
   j["preview_modes"] = preview_.modes().probeJson();
   j["export"] = export_.probeJson();
+  j["render_animation"] = animation_.probeJson();
+  const Project& project = state_.document.project();
+  nlohmann::json tracks = nlohmann::json::object();
+  for (const auto& [path, track] : project.tracks) {
+    nlohmann::json keys = nlohmann::json::array();
+    for (const Keyframe& k : track.keys) keys.push_back({k.t, k.v});
+    tracks[path] = keys;
+  }
+  const AnimationSettings timeline = timelineOf(project);
+  j["timeline"] = {{"time", project.time},       {"playing", state_.playback.playing},
+                   {"fps", timeline.fps},        {"start", timeline.start},
+                   {"end", timeline.end},        {"loop", timeline.loop},
+                   {"has_animation", project.animation.has_value()}, {"tracks", tracks}};
   // Node positions in the Top view (window coordinates), so a test can press on a real node.
   nlohmann::json nodes = nlohmann::json::array();
   for (const glm::dvec2& p : views_[0].screenNodes(state_)) nodes.push_back({p.x, p.y});
@@ -339,7 +358,7 @@ int ModellerApp::run() {
   for (;;) {
     // 1. Poll. Idle windows wait for input (redraw on demand); a filling preview, a drag or
     //    a capture keeps the loop animating.
-    const bool animate = capture || preview_.busy() || export_.running() || quietFrames < 3 || ImGui::IsAnyMouseDown();
+    const bool animate = capture || state_.playback.playing || animation_.running() || preview_.busy() || export_.running() || quietFrames < 3 || ImGui::IsAnyMouseDown();
     if (animate) {
       glfwPollEvents();
     } else {
@@ -359,6 +378,7 @@ int ModellerApp::run() {
 
     appWindow_.track();
     followContentScale();
+    advancePlayback(state_);
 
     // 2. Build the UI; widgets collect edits.
     ImGui_ImplOpenGL3_NewFrame();

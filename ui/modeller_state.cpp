@@ -3,11 +3,14 @@
 #include <algorithm>
 
 #include "edit/node_picking.h"
+#include "io/animation_io.h"
 #include "model/stack_evaluator.h"
 
 namespace gridifs::ui {
 
 ModellerState::ModellerState() : document(defaultNewProject()) {
+  // Animated parameters follow the timeline; editing one keys it at the current time.
+  document.setRule(keyEditedParameters);
   const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
   // Leave one core to the UI thread (and llvmpipe) so the window stays smooth.
   renderThreads = int(std::max(1u, cores - 1));

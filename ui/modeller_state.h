@@ -71,6 +71,13 @@ class ModellerState {
   int maximizedGridView = -1;  // -1: the four views; 0..3: one of them fills the window
   PreviewMode previewMode = PreviewMode::ZBuffer;
   bool previewPaused = false;
+  /// The timeline (ui/timeline_panel.cpp): whether it plays, and from which time at which clock.
+  struct Playback {
+    bool playing = false;
+    double startTime = 0.0, startClock = 0.0;
+  } playback;
+  float timelineHeight = 0.0f;       // what the timeline under the preview took in the last frame
+  bool showRenderAnimation = false;  // File > Render animation...
   int renderThreads = 1;
   RenderStats previewStats;
   std::string previewDevice = "cpu";  // which renderer fills the preview ("cpu", "gpu (...)")

@@ -9,6 +9,7 @@
 #include <cctype>
 
 #include "edit/node_picking.h"
+#include "ui/key_button.h"
 #include "ui/operation_editor.h"
 #include "ui/panels.h"
 #include "ui/widgets.h"
@@ -74,6 +75,14 @@ void drawParams(OpEditor& e, const OperationSpec& spec) {
     }
     const bool enabled = !s.enabled || s.enabled(e.op.params);
     ImGui::BeginDisabled(!enabled);
+    if (s.type == ParamType::Number || s.type == ParamType::Vector) {
+      // Integers, seeds and choices are not keyed: a blend between two of them is not one of them.
+      double values[4] = {0, 0, 0, 0};
+      const int n = std::min(s.type == ParamType::Vector ? s.components : 1, 4);
+      for (int c = 0; c < n; ++c) values[c] = s.number(e.op.params, c);
+      keyButton(e.state, e.edits, "functions[" + std::to_string(e.function) + "].ops[" + std::to_string(e.index) + "]." + s.key,
+                values, n);
+    }
     const bool changed = scalarWidget(s, e.op.params);
     e.state.probe.item(id);
     e.item(std::string(spec.type) + " " + lowercase(s.label), changed);

@@ -18,6 +18,13 @@ std::string summary(const Operation& op) {
   return s;
 }
 
+/// The keyframe tracks follow the operations when the stack changes order.
+std::string opsPath(int function) { return "functions[" + std::to_string(function) + "].ops"; }
+
+void swapTracks(Project& p, int function, int a, int b) {
+  remapTrackIndices(p.tracks, opsPath(function), [a, b](int i) { return i == a ? b : i == b ? a : i; });
+}
+
 }  // namespace
 
 void addOperation(ModellerState& state, EditQueue& edits, const OperationSpec& spec) {
@@ -53,6 +60,7 @@ void addOperation(ModellerState& state, EditQueue& edits, const OperationSpec& s
   edits.commit(std::string("Add ") + spec.title, [fi, at, op](Project& p) {
     auto& ops = p.functions[std::size_t(fi)].ops;
     ops.insert(ops.begin() + at, op);
+    remapTrackIndices(p.tracks, opsPath(fi), [at](int i) { return i >= at ? i + 1 : i; });
   });
   edits.after([&state, at] { state.activeOp = at; });
 }
@@ -63,6 +71,7 @@ void deleteActiveOperation(ModellerState& state, EditQueue& edits) {
   edits.commit("Delete operation", [fi, oi](Project& p) {
     auto& ops = p.functions[std::size_t(fi)].ops;
     ops.erase(ops.begin() + oi);
+    remapTrackIndices(p.tracks, opsPath(fi), [oi](int i) { return i == oi ? -1 : i > oi ? i - 1 : i; });
   });
   edits.after([&state, oi] {
     state.activeOp = oi - 1;
@@ -183,6 +192,7 @@ void drawOperationStackPanel(ModellerState& state, EditQueue& edits) {
     edits.commit("Move operation up", [fi, active](Project& p) {
       auto& ops = p.functions[std::size_t(fi)].ops;
       std::swap(ops[std::size_t(active)], ops[std::size_t(active - 1)]);
+      swapTracks(p, fi, active, active - 1);
     });
     state.activeOp = active - 1;
   }
@@ -193,6 +203,7 @@ void drawOperationStackPanel(ModellerState& state, EditQueue& edits) {
     edits.commit("Move operation down", [fi, active](Project& p) {
       auto& ops = p.functions[std::size_t(fi)].ops;
       std::swap(ops[std::size_t(active)], ops[std::size_t(active + 1)]);
+      swapTracks(p, fi, active, active + 1);
     });
     state.activeOp = active + 1;
   }
@@ -204,6 +215,7 @@ void drawOperationStackPanel(ModellerState& state, EditQueue& edits) {
     edits.commit("Duplicate operation", [fi, active, copy](Project& p) {
       auto& ops = p.functions[std::size_t(fi)].ops;
       ops.insert(ops.begin() + active + 1, copy);
+      remapTrackIndices(p.tracks, opsPath(fi), [active](int i) { return i > active ? i + 1 : i; });
     });
     state.activeOp = active + 1;
   }

@@ -17,7 +17,7 @@ PanelRects defaultPanelLayout(ImVec2 origin, ImVec2 area, float operationsMinHei
   // screens, taken from the Functions panel, while the Selection panel keeps a quarter.
   const float o = std::round(std::min(std::max(h * 0.25f, operationsMinHeight), h * 0.5f));
   const float f = std::round(std::max(std::min(h * 0.47f, h - o - h * 0.25f), h * 0.2f));
-  const float g = std::round(h * 0.63f), p = std::round(h * 0.58f);
+  const float g = std::round(h * 0.63f), p = std::round(h * 0.64f);  // the preview holds the timeline too
   auto set = [&](Panel i, float x, float y, float w, float ht) {
     l.posOf(i) = ImVec2(origin.x + x, origin.y + y);
     l.sizeOf(i) = ImVec2(w, ht);

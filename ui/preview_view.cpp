@@ -9,6 +9,7 @@
 
 #include "edit/view_camera.h"
 #include "render/camera.h"
+#include "ui/timeline_panel.h"
 #include "ui/widgets.h"
 
 namespace gridifs::ui {
@@ -66,9 +67,9 @@ void PreviewView::build(ModellerState& state, EditQueue& edits, float framebuffe
   ImGui::ProgressBar(progress, ImVec2(-1, ImGui::GetFontSize() * 0.3f), "");
   ImGui::PopStyleVar();
 
-  // Image.
+  // Image, above the timeline.
   const ImVec2 avail = ImGui::GetContentRegionAvail();
-  size_ = glm::dvec2(std::max(avail.x, 16.0f), std::max(avail.y, 16.0f));
+  size_ = glm::dvec2(std::max(avail.x, 16.0f), std::max(avail.y - timelinePanelHeight(state), 16.0f));
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   screenOrigin_ = glm::dvec2(origin.x, origin.y);
   visible_ = true;

@@ -1,5 +1,6 @@
 #include "edit/document.h"
 
+#include "base/errors.h"
 #include "model/validation.h"
 
 namespace gridifs {
@@ -58,6 +59,7 @@ void Document::commit(Project before, const std::string& label) {
 bool Document::apply(const Change& change, Project& before) {
   Project next = project_;
   change(next);
+  if (rule_) next = rule_(project_, std::move(next));
   if (next == project_) return false;
   validate(next);
   std::swap(project_, next);
@@ -70,6 +72,11 @@ void Document::edit(const std::string& label, const Change& change) {
   if (gesture_) endGesture();
   Project before;
   if (apply(change, before)) commit(std::move(before), label);
+}
+
+void Document::editUnrecorded(const Change& change) {
+  Project before;
+  apply(change, before);
 }
 
 void Document::validate(const Project& next) {
@@ -116,8 +123,19 @@ bool Document::travel(std::vector<Step>& from, std::vector<Step>& to) {
   Step step = std::move(from.back());
   from.pop_back();
   historyBytes_ -= step.bytes;
+  const double time = project_.time;
   push(to, std::move(project_), step.label);
   project_ = std::move(step.project);
+  if (rule_ && project_.time != time) {
+    // The playhead is not part of the history: the restored project is shown at the current time.
+    Project at = project_;
+    at.time = time;
+    try {
+      project_ = rule_(at, at);
+    } catch (const ModelError&) {
+      // A restored project was valid at its own time; it stays at that time.
+    }
+  }
   validated_ = false;
   changed(to.back().project);
   return true;
@@ -130,6 +148,14 @@ bool Document::redo() { return travel(redo_, undo_); }
 void Document::reset(Project project, std::filesystem::path path) {
   gesture_.reset();
   project_ = std::move(project);
+  if (rule_) {
+    // A file's stored values of animated parameters give way to their tracks at its time.
+    try {
+      project_ = rule_(project_, project_);
+    } catch (const ModelError&) {
+      // The file was checked when it was read; what the rule cannot apply stays as stored.
+    }
+  }
   saved_ = project_;
   validated_ = false;
   path_ = std::move(path);
@@ -145,8 +171,8 @@ void Document::changed(const Project& before) {
   ++revision_;
   const Project& now = project_;
   if (now.functions != before.functions || now.final_function != before.final_function ||
-      now.transitions != before.transitions)
-    revisions_.geometry = revision_;
+      now.transitions != before.transitions || now.time != before.time)
+    revisions_.geometry = revision_;  // operations may read the time
   if (now.camera != before.camera) revisions_.camera = revision_;
   if (!sameRenderInput(now.render, before.render)) revisions_.render = revision_;
   if (!sameDisplay(now.render, before.render)) revisions_.display = revision_;

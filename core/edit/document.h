@@ -52,6 +52,16 @@ class Document {
   /// Applies `change` as one undo step. The result is validated first: an invalid
   /// project throws ModelError and leaves the document untouched. No-op changes push nothing.
   void edit(const std::string& label, const Change& change);
+  /// Applies `change` like edit(), validated, but records no undo step (the modeller's playhead:
+  /// artists scrub and play without filling the history). Undo and redo keep such a change.
+  void editUnrecorded(const Change& change);
+
+  /// A rule applied to every change after it is made and before it is validated, given the
+  /// project before and after (the modeller's keyframing: io/animation_io.h
+  /// keyEditedParameters). Undo and redo apply it with `before` equal to the restored project
+  /// whose time is set to the current one, so unrecorded time changes survive them.
+  using Rule = std::function<Project(const Project& before, Project next)>;
+  void setRule(Rule rule) { rule_ = std::move(rule); }
 
   /// A gesture (slider drag, node drag) previews live and commits one undo step on end.
   void beginGesture(const std::string& label);
@@ -115,6 +125,7 @@ class Document {
   std::vector<Step> undo_, redo_;
   std::size_t historyBytes_ = 0;  // of undo_ and redo_
   std::optional<Step> gesture_;
+  Rule rule_;
   EvaluationCache evaluation_;
   bool validated_ = false;  // project_ passed validation (edits then re-check changed functions only)
 };

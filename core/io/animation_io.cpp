@@ -162,4 +162,21 @@ Project projectAtTime(const Project& project, double t) {
   }
 }
 
+Project keyEditedParameters(const Project& before, Project next) {
+  if (next.tracks.empty()) return next;
+  const json was = json::parse(serializeProject(before));
+  const json now = json::parse(serializeProject(next));
+  for (auto& [path, track] : next.tracks) {
+    const json::json_pointer pointer = resolve(now, path);
+    if (!was.contains(pointer) || !was.at(pointer).is_number()) continue;
+    const double value = now.at(pointer).get<double>();
+    if (value == was.at(pointer).get<double>()) continue;
+    Keyframe key{next.time, value, KeyInterpolation::Linear};
+    for (const Keyframe& k : track.keys)
+      if (std::abs(k.t - next.time) <= 1e-9) key.interp = k.interp;
+    track.setKey(key);
+  }
+  return projectAtTime(next, next.time);
+}
+
 }  // namespace gridifs

@@ -14,4 +14,11 @@ void checkTrackPaths(const Project& project);
 /// accept is reported with that parameter's path and the time).
 Project projectAtTime(const Project& project, double t);
 
+/// The modeller's keyframing rule for an edit that turned `before` into `next`: a tracked
+/// parameter whose value the edit changed gets a key at next.time holding its new value (a key
+/// already there keeps its interpolation), then every tracked parameter takes its track's value
+/// at next.time, so what panels show is always the animation at the current time. Returns `next`
+/// unchanged when it has no tracks. Throws ModelError like projectAtTime.
+Project keyEditedParameters(const Project& before, Project next);
+
 }  // namespace gridifs

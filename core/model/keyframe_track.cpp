@@ -111,4 +111,21 @@ void AnimationSettings::validate() const {
   if (end < start) throw ModelError("end", "the animation must not end before it starts");
 }
 
+void remapTrackIndices(KeyframeTracks& tracks, const std::string& listPath, const std::function<int(int)>& newIndex) {
+  const std::string prefix = listPath + "[";
+  KeyframeTracks remapped;
+  for (auto& [path, track] : tracks) {
+    const std::size_t close = path.find(']', prefix.size());
+    if (path.compare(0, prefix.size(), prefix) != 0 || close == std::string::npos || close == prefix.size() ||
+        close - prefix.size() > 6 || path.find_first_not_of("0123456789", prefix.size()) != close) {
+      remapped.emplace(path, std::move(track));
+      continue;
+    }
+    const int to = newIndex(std::stoi(path.substr(prefix.size(), close - prefix.size())));
+    if (to < 0) continue;
+    remapped.emplace(prefix + std::to_string(to) + path.substr(close), std::move(track));
+  }
+  tracks = std::move(remapped);
+}
+
 }  // namespace gridifs

@@ -7,6 +7,7 @@
 // key and after the last the end value holds.
 //
 // Thread-safety: plain values; evaluate from any thread.
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -43,6 +44,11 @@ struct KeyframeTrack {
 
 /// All tracks of a project, by JSON path (ordered, so files save in a stable order).
 using KeyframeTracks = std::map<std::string, KeyframeTrack>;
+
+/// Keeps the tracks on the elements of the list at `listPath` ("functions",
+/// "functions[2].ops") when that list is reordered: the tracks of the element at old index i
+/// move to `newIndex(i)`, or are dropped with it when that is negative.
+void remapTrackIndices(KeyframeTracks& tracks, const std::string& listPath, const std::function<int(int)>& newIndex);
 
 /// The project's timeline: "animation": {"fps", "start", "end", "loop"} (seconds).
 struct AnimationSettings {

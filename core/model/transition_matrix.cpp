@@ -115,6 +115,8 @@ std::vector<std::vector<std::size_t>> transitionComponents(const Project& projec
 void insertFunction(Project& project, std::size_t index, Function function) {
   index = std::min(index, project.functions.size());
   project.functions.insert(project.functions.begin() + std::ptrdiff_t(index), std::move(function));
+  const int at = int(index);
+  remapTrackIndices(project.tracks, "functions", [at](int i) { return i >= at ? i + 1 : i; });
   auto& t = project.transitions;
   if (t.empty()) return;
   for (auto& row : t) row.insert(row.begin() + std::ptrdiff_t(std::min(index, row.size())), 1.0);
@@ -124,6 +126,8 @@ void insertFunction(Project& project, std::size_t index, Function function) {
 void eraseFunction(Project& project, std::size_t index) {
   if (index >= project.functions.size()) return;
   project.functions.erase(project.functions.begin() + std::ptrdiff_t(index));
+  const int at = int(index);
+  remapTrackIndices(project.tracks, "functions", [at](int i) { return i == at ? -1 : i > at ? i - 1 : i; });
   auto& t = project.transitions;
   if (t.empty()) return;
   if (index < t.size()) t.erase(t.begin() + std::ptrdiff_t(index));
@@ -138,6 +142,8 @@ void eraseFunction(Project& project, std::size_t index) {
 void swapFunctions(Project& project, std::size_t a, std::size_t b) {
   if (a >= project.functions.size() || b >= project.functions.size()) return;
   std::swap(project.functions[a], project.functions[b]);
+  const int ia = int(a), ib = int(b);
+  remapTrackIndices(project.tracks, "functions", [ia, ib](int i) { return i == ia ? ib : i == ib ? ia : i; });
   auto& t = project.transitions;
   if (t.size() != project.functions.size()) return;
   std::swap(t[a], t[b]);

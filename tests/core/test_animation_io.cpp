@@ -115,3 +115,29 @@ TEST(AnimationIo, BadTimelineIsAnError) {
   text.insert(text.rfind('}'), ",\n  \"animation\": {\"fps\": 0}\n");
   EXPECT_EQ(errorOf([&] { parseProject(text); }), "animation.fps: frames per second must be in (0, 1000]");
 }
+
+TEST(AnimationIo, EditingAnAnimatedParameterKeysItAtTheCurrentTime) {
+  Project p = sierpinski();
+  p.tracks["camera.yaw"].keys = {{0.0, 10.0, KeyInterpolation::Smooth}, {2.0, 50.0}};
+  p = projectAtTime(p, 1.0);
+  Project edited = p;
+  edited.camera.yaw = 100.0;
+  edited.camera.pitch = p.camera.pitch + 5.0;  // not animated: stays as edited, no track
+  const Project keyed = keyEditedParameters(p, edited);
+  ASSERT_EQ(keyed.tracks.at("camera.yaw").keys.size(), 3u);
+  EXPECT_EQ(keyed.tracks.at("camera.yaw").keys[1], (Keyframe{1.0, 100.0, KeyInterpolation::Linear}));
+  EXPECT_DOUBLE_EQ(keyed.camera.yaw, 100.0);
+  EXPECT_DOUBLE_EQ(keyed.camera.pitch, p.camera.pitch + 5.0);
+  EXPECT_EQ(keyed.tracks.count("camera.pitch"), 0u);
+  // A key already at that time is updated and keeps its interpolation.
+  Project atStart = projectAtTime(keyed, 0.0);
+  Project again = atStart;
+  again.camera.yaw = -20.0;
+  const Project updated = keyEditedParameters(atStart, again);
+  EXPECT_EQ(updated.tracks.at("camera.yaw").keys.front(), (Keyframe{0.0, -20.0, KeyInterpolation::Smooth}));
+  // Moving the time alone sets every animated parameter from its track.
+  Project later = updated;
+  later.time = 2.0;
+  EXPECT_DOUBLE_EQ(keyEditedParameters(updated, later).camera.yaw, 50.0);
+  EXPECT_EQ(keyEditedParameters(updated, later).tracks, updated.tracks);
+}

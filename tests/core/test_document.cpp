@@ -1,7 +1,10 @@
 // Document edits, gestures and undo/redo over random edit sequences.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+
 #include "edit/document.h"
+#include "io/animation_io.h"
 #include "io/project_io.h"
 #include "project_samples.h"
 
@@ -124,4 +127,27 @@ TEST(Document, UndoHistoryStaysUnderItsMemoryCapByDroppingTheOldestSteps) {
   EXPECT_LE(doc.historyBytes(), Document::kMaxHistoryBytes);
   EXPECT_TRUE(doc.redo());  // the dropped steps are gone, the kept ones redo
   EXPECT_EQ(doc.project().functions[0].weight, 1.0 + edits - undone + 1);
+}
+
+TEST(Document, UnrecordedTimeChangesSurviveUndoAndKeyedEditsUndo) {
+  Document d(loadProject(std::filesystem::path(GRIDIFS_ASSETS) / "sierpinski_tetrahedron.gridifs"));
+  d.setRule(keyEditedParameters);
+  d.edit("Set key", [](Project& p) { p.tracks["camera.yaw"].keys = {{0.0, p.camera.yaw}}; });
+  ASSERT_TRUE(d.canUndo());
+  d.editUnrecorded([](Project& p) { p.time = 1.0; });
+  EXPECT_EQ(d.undoLabel(), "Set key");  // the playhead made no undo step
+  d.edit("Yaw", [](Project& p) { p.camera.yaw += 30.0; });
+  ASSERT_EQ(d.project().tracks.at("camera.yaw").keys.size(), 2u);
+  const double keyedYaw = d.project().camera.yaw;
+  d.editUnrecorded([](Project& p) { p.time = 0.0; });
+  EXPECT_DOUBLE_EQ(d.project().camera.yaw, keyedYaw - 30.0);
+  d.editUnrecorded([](Project& p) { p.time = 1.0; });
+  EXPECT_DOUBLE_EQ(d.project().camera.yaw, keyedYaw);
+  ASSERT_TRUE(d.undo());
+  EXPECT_EQ(d.project().tracks.at("camera.yaw").keys.size(), 1u);
+  EXPECT_DOUBLE_EQ(d.project().time, 1.0);  // undo keeps the playhead
+  EXPECT_DOUBLE_EQ(d.project().camera.yaw, keyedYaw - 30.0);
+  ASSERT_TRUE(d.undo());
+  EXPECT_TRUE(d.project().tracks.empty());
+  EXPECT_DOUBLE_EQ(d.project().time, 1.0);
 }

@@ -100,3 +100,22 @@ TEST(AnimationSettings, Validates) {
   a.end = -1.0;
   EXPECT_THROW(a.validate(), ModelError);
 }
+
+TEST(KeyframeTrack, TracksFollowTheirListWhenItIsReordered) {
+  KeyframeTracks tracks;
+  for (const char* path : {"functions[0].ops[0].k", "functions[0].ops[1].k", "functions[0].ops[2].strength[1]",
+                           "functions[1].ops[1].k", "functions[0].weight", "camera.yaw"})
+    tracks[path].keys = {{0.0, 1.0}};
+  // The op at index 1 of function 0 is deleted.
+  remapTrackIndices(tracks, "functions[0].ops", [](int i) { return i == 1 ? -1 : i > 1 ? i - 1 : i; });
+  std::vector<std::string> paths;
+  for (const auto& [path, track] : tracks) paths.push_back(path);
+  EXPECT_EQ(paths, (std::vector<std::string>{"camera.yaw", "functions[0].ops[0].k", "functions[0].ops[1].strength[1]",
+                                             "functions[0].weight", "functions[1].ops[1].k"}));
+  // Functions 0 and 1 swap.
+  remapTrackIndices(tracks, "functions", [](int i) { return 1 - i; });
+  EXPECT_EQ(tracks.count("functions[1].ops[0].k"), 1u);
+  EXPECT_EQ(tracks.count("functions[0].ops[1].k"), 1u);
+  EXPECT_EQ(tracks.count("functions[1].weight"), 1u);
+  EXPECT_EQ(tracks.count("camera.yaw"), 1u);
+}

@@ -1,0 +1,243 @@
+#include "ui/render_animation_dialog.h"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "base/errors.h"
+#include "render/chaos_renderer.h"
+#include "ui/animation_frames.h"
+#include "ui/timeline_panel.h"
+#include "ui/widgets.h"
+
+namespace gridifs::ui {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kMaxFrames = 100000;
+
+}  // namespace
+
+RenderAnimationDialog::~RenderAnimationDialog() {
+  cancel_ = true;
+  if (worker_.joinable()) worker_.join();
+}
+
+void RenderAnimationDialog::openFor(const ModellerState& state) {
+  const Project& project = state.document.project();
+  const AnimationSettings a = timelineOf(project);
+  if (!running()) {
+    first_ = int(std::lround(a.start * a.fps));
+    last_ = int(std::lround(a.end * a.fps));
+    width_ = project.render.width;
+    height_ = project.render.height;
+    samples_ = project.render.samples;
+    if (!state.document.path().empty()) {
+      const fs::path folder = state.document.path().parent_path() / (state.document.path().stem().string() + "_frames");
+      pattern_ = (folder / (state.document.path().stem().string() + "_%04d.png")).string();
+    }
+    phase_ = Phase::Options;
+    message_.clear();
+  }
+  open_ = justOpened_ = true;
+}
+
+void RenderAnimationDialog::finish(Phase phase, std::string message) {
+  std::lock_guard lock(mutex_);
+  result_ = phase;
+  resultMessage_ = std::move(message);
+  haveResult_ = true;
+  running_ = false;
+}
+
+void RenderAnimationDialog::start(ModellerState& state) {
+  if (worker_.joinable()) worker_.join();
+  message_.clear();
+  // What can fail fast fails here, inline, before the thread starts.
+  if (auto problem = checkFramePattern(pattern_)) {
+    message_ = "Cannot render: " + *problem + ".";
+    return;
+  }
+  if (last_ < first_) {
+    message_ = "Cannot render: the last frame comes before the first.";
+    return;
+  }
+  if (last_ - first_ + 1 > kMaxFrames) {
+    message_ = "Cannot render: more than 100000 frames.";
+    return;
+  }
+  const fs::path firstFile = frameFileName(pattern_, first_);
+  const fs::path folder = firstFile.parent_path().empty() ? fs::path(".") : firstFile.parent_path();
+  std::error_code ec;
+  fs::create_directories(folder, ec);
+  if (!fs::is_directory(folder, ec)) {
+    message_ = "Cannot render: the folder " + folder.string() + " cannot be made.";
+    return;
+  }
+  Project project = state.document.project();
+  project.render.width = width_;
+  project.render.height = height_;
+  project.render.samples = samples_;
+  try {
+    validateRenderJob(RenderJob::fromProject(project, 1));
+  } catch (const ModelError& e) {
+    message_ = std::string("Cannot render: ") + e.what();
+    return;
+  }
+  const std::string pattern = pattern_;
+  const long first = first_, last = last_;
+  const fs::path projectFolder = state.document.path().parent_path();
+  const int threads = state.renderThreads;
+  cancel_ = false;
+  progress_ = 0.0;
+  framesDone_ = 0;
+  frameCount_ = int(last - first + 1);
+  phase_ = Phase::Running;
+  running_ = true;
+  worker_ = std::thread([this, project, pattern, first, last, projectFolder, threads] {
+    const double count = double(last - first + 1);
+    long frame = first;
+    try {
+      for (; frame <= last; ++frame) {
+        const double done = double(frame - first);
+        renderAnimationFrame(project, frame, frameFileName(pattern, frame), threads, projectFolder, [&](double f) {
+          progress_ = (done + f) / count;
+          return !cancel_.load();
+        });
+        ++framesDone_;
+      }
+      finish(Phase::Done, "Rendered " + std::to_string(last - first + 1) + " frames: " + frameFileName(pattern, first) +
+                              " … " + fs::path(frameFileName(pattern, last)).filename().string() + ".");
+    } catch (const RenderCancelled&) {
+      finish(Phase::Cancelled, "Cancelled at frame " + std::to_string(frame) + "; " + std::to_string(frame - first) +
+                                   " frames were written, frame " + std::to_string(frame) + " was not.");
+    } catch (const std::exception& e) {
+      finish(Phase::Failed, "Frame " + std::to_string(frame) + ": " + e.what());
+    }
+  });
+}
+
+void RenderAnimationDialog::draw(ModellerState& state) {
+  {
+    std::lock_guard lock(mutex_);
+    if (haveResult_) {
+      haveResult_ = false;
+      phase_ = result_;
+      message_ = resultMessage_;
+      if (phase_ == Phase::Done)
+        state.info(message_);
+      else
+        state.error(message_);
+    }
+  }
+  if (!running() && worker_.joinable()) worker_.join();
+  if (state.showRenderAnimation) {
+    state.showRenderAnimation = false;
+    openFor(state);
+  }
+  if (!open_) return;
+  const char* title = "Render animation###renderanimation";
+  if (justOpened_) {
+    ImGui::OpenPopup(title);
+    justOpened_ = false;
+  }
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  const float em = ImGui::GetFontSize();
+  ImGui::SetNextWindowPos(ImVec2(vp->WorkPos.x + vp->WorkSize.x * 0.5f, vp->WorkPos.y + vp->WorkSize.y * 0.5f),
+                          ImGuiCond_Always, ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowSizeConstraints(ImVec2(em * 36.0f, 0), ImVec2(em * 36.0f, vp->WorkSize.y * 0.9f));
+  bool keepOpen = true;
+  if (!ImGui::BeginPopupModal(title, running() ? nullptr : &keepOpen, ImGuiWindowFlags_AlwaysAutoResize)) {
+    if (!running()) open_ = false;
+    return;
+  }
+  const bool busy = running();
+  const AnimationSettings a = timelineOf(state.document.project());
+  ImGui::BeginDisabled(busy);
+  ImGui::SetNextItemWidth(-em * 6.0f);
+  ImGui::InputText("Output", &pattern_);
+  state.probe.item("animation.output");
+  contextHelp(state, "Numbered image files: %04d becomes the frame number (frame_0000.png, frame_0001.png, ...)");
+  ImGui::SetNextItemWidth(em * 10.0f);
+  int range[2] = {first_, last_};
+  if (ImGui::InputInt2("Frames", range)) {
+    first_ = range[0];
+    last_ = range[1];
+  }
+  state.probe.item("animation.frames");
+  ImGui::SetNextItemWidth(em * 10.0f);
+  int size[2] = {width_, height_};
+  if (ImGui::InputInt2("Size", size)) {
+    width_ = std::clamp(size[0], 1, 8192);
+    height_ = std::clamp(size[1], 1, 8192);
+  }
+  state.probe.item("animation.size");
+  ImGui::SetNextItemWidth(em * 10.0f);
+  const std::int64_t step = 100'000, fast = 1'000'000;
+  ImGui::InputScalar("Samples per frame", ImGuiDataType_S64, &samples_, &step, &fast);
+  samples_ = std::clamp<std::int64_t>(samples_, 1, std::int64_t(1) << 40);
+  state.probe.item("animation.samples");
+  ImGui::EndDisabled();
+
+  // The plan.
+  const long frames = long(last_) - long(first_) + 1;
+  ImGui::Spacing();
+  if (frames >= 1) {
+    ImGui::TextWrapped("%ld frame%s at %.3g fps: t = %.3f s to %.3f s, %d x %d, %.3g M samples each (%.3g M in all).",
+                       frames, frames == 1 ? "" : "s", a.fps, first_ / a.fps, last_ / a.fps, width_, height_,
+                       double(samples_) / 1e6, double(samples_) * double(frames) / 1e6);
+    if (!checkFramePattern(pattern_))
+      ImGui::TextDisabled("%s",
+                          (frameFileName(pattern_, first_) +
+                           (frames > 1 ? " ... " + fs::path(frameFileName(pattern_, last_)).filename().string() : ""))
+                              .c_str());
+  } else {
+    ImGui::TextWrapped("The last frame comes before the first.");
+  }
+  ImGui::TextDisabled("Display mode: %s (as the preview).", displayModeName(state.document.project().render.mode));
+
+  if (busy) {
+    char overlay[64];
+    std::snprintf(overlay, sizeof overlay, "frame %d of %d", std::min(framesDone_.load() + 1, frameCount_),
+                  frameCount_);
+    ImGui::ProgressBar(float(progress_.load()), ImVec2(-em * 7.0f, 0), overlay);
+    state.probe.item("animation.progress");
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel", ImVec2(-1, 0))) cancel_ = true;
+    state.probe.item("animation.cancel");
+  } else {
+    if (ImGui::Button("Render", ImVec2(em * 7.0f, 0))) start(state);
+    state.probe.item("animation.render");
+    ImGui::SameLine();
+    if (ImGui::Button("Close", ImVec2(em * 7.0f, 0))) {
+      open_ = false;
+      ImGui::CloseCurrentPopup();
+    }
+    state.probe.item("animation.close");
+  }
+  if (!message_.empty()) {
+    const bool bad = phase_ == Phase::Failed || message_.rfind("Cannot", 0) == 0;
+    if (bad) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.35f, 1.0f));
+    ImGui::TextWrapped("%s", message_.c_str());
+    if (bad) ImGui::PopStyleColor();
+  }
+  ImGui::EndPopup();
+  if (!keepOpen) open_ = false;
+}
+
+nlohmann::json RenderAnimationDialog::probeJson() const {
+  static const char* phases[] = {"options", "running", "done", "failed", "cancelled"};
+  return {{"open", open_},
+          {"running", running()},
+          {"phase", phases[int(phase_)]},
+          {"progress", progress_.load()},
+          {"frames_done", framesDone_.load()},
+          {"message", message_}};
+}
+
+}  // namespace gridifs::ui
