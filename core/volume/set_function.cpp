@@ -47,6 +47,8 @@ struct NearestVoxel {
   }
 };
 
+constexpr std::uint32_t kUnknown = 0xFFFFFFFFu;
+
 /// Marks voxel v; returns whether it was new.
 inline bool mark(std::vector<std::uint64_t>& marks, std::uint32_t v) {
   std::uint64_t& word = marks[v >> 6];
@@ -74,6 +76,10 @@ struct SetFunction::Impl {
   VoxelSet set;
   double rotate = 0.0;
   std::unique_ptr<NearestVoxel> nearest;  // median: the k-d tree of `set`
+  /// Median: the answer of `nearest` per lattice voxel once asked (kUnknown before). The sets of
+  /// the iteration keep revisiting the same region, so most left-median queries become one load.
+  /// Only up to 256³ (64 MiB); larger lattices ask the tree every time.
+  mutable std::vector<std::uint32_t> memo;
   Vec3 centroid{0.0};
   CompiledFunction map;
   VoxelLattice lattice;
@@ -92,6 +98,7 @@ SetFunction SetFunction::median(VoxelSet condensation, double rotateDegreesPerUn
   impl->rotate = rotateDegreesPerUnit;
   impl->nearest = std::make_unique<NearestVoxel>(impl->set);
   impl->centroid = latticeCentroid(impl->set);
+  if (impl->lattice.n <= 256) impl->memo.assign(impl->lattice.voxelCount(), kUnknown);
   return SetFunction(std::move(impl));
 }
 
@@ -189,7 +196,17 @@ void SetFunction::apply(const VoxelSet& in, VoxelSet& out, SetScratch& scratch, 
       const std::uint32_t from = isLeft ? in.voxels[q] : c.voxels[q - left];
       const Index3 a = lattice.coordinates(from);
       const float p[3] = {float(a[0]), float(a[1]), float(a[2])};
-      const std::uint32_t to = isLeft ? c.voxels[f.nearest->nearest(p)] : in.voxels[other.nearest(p)];
+      std::uint32_t to;
+      if (!isLeft) {
+        to = in.voxels[other.nearest(p)];
+      } else if (!f.memo.empty()) {
+        // Distinct voxels of `in` write distinct entries, so the chunks never share one.
+        std::uint32_t& known = f.memo[from];
+        if (known == kUnknown) known = c.voxels[f.nearest->nearest(p)];
+        to = known;
+      } else {
+        to = c.voxels[f.nearest->nearest(p)];
+      }
       const Index3 b = lattice.coordinates(to);
       candidates[q] = midpoint(a, b, std::uint32_t(splitmix64((std::uint64_t(from) << 32) | to)));
     }

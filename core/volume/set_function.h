@@ -33,6 +33,8 @@ class SetFunction {
   ~SetFunction();
 
   /// out = f(in) (in must be non-empty, on the same lattice). Runs on up to `threads` threads.
+  /// Not thread-safe with respect to other calls of the same function (a median memoises its
+  /// nearest-voxel answers).
   void apply(const VoxelSet& in, VoxelSet& out, SetScratch& scratch, int threads) const;
 
   /// The condensation set (empty for a point map).
