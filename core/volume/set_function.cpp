@@ -23,27 +23,52 @@ struct VoxelCloud {
 
 using VoxelTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<float, VoxelCloud>, VoxelCloud, 3, std::uint32_t>;
 
-/// A k-d tree over a voxel set: nearest-voxel queries without a scan of the set.
+/// Nearest-voxel queries on a voxel set without a scan: a voxel of the set is its own nearest;
+/// for any other voxel the nearest one lies on the set's boundary (a set voxel with a 6-neighbour
+/// outside it: from an interior voxel, one step towards the query along its largest offset is
+/// closer), so the k-d tree holds the boundary only, about N² voxels of a solid instead of N³.
 struct NearestVoxel {
+  std::vector<std::uint64_t> members;  // one bit per lattice voxel
+  std::vector<std::uint32_t> boundary;
   VoxelCloud cloud;
   std::unique_ptr<VoxelTree> tree;
 
-  explicit NearestVoxel(const VoxelSet& set) {
-    cloud.xyz.resize(set.size() * 3);
-    for (std::size_t v = 0; v < set.size(); ++v) {
-      const Index3 c = set.lattice.coordinates(set.voxels[v]);
-      for (int d = 0; d < 3; ++d) cloud.xyz[3 * v + std::size_t(d)] = float(c[std::size_t(d)]);
+  bool contains(std::uint32_t v) const { return (members[v >> 6] >> (v & 63)) & 1u; }
+
+  NearestVoxel(const VoxelSet& set, int threads) {
+    const VoxelLattice& lattice = set.lattice;
+    members.assign((lattice.voxelCount() + 63) / 64, 0);
+    for (std::uint32_t v : set.voxels) members[v >> 6] |= std::uint64_t(1) << (v & 63);
+    std::vector<std::uint8_t> onBoundary(set.size(), 0);
+    const int last = lattice.n - 1;
+    const std::uint32_t strideJ = std::uint32_t(lattice.n), strideK = strideJ * strideJ;
+    parallelFor(set.size(), threads, 1 << 14, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t i = begin; i < end; ++i) {
+        const std::uint32_t v = set.voxels[i];
+        const Index3 c = lattice.coordinates(v);
+        onBoundary[i] = c[0] == 0 || c[1] == 0 || c[2] == 0 || c[0] == last || c[1] == last || c[2] == last ||
+                        !contains(v - 1) || !contains(v + 1) || !contains(v - strideJ) || !contains(v + strideJ) ||
+                        !contains(v - strideK) || !contains(v + strideK);
+      }
+    });
+    for (std::size_t i = 0; i < set.size(); ++i)
+      if (onBoundary[i]) boundary.push_back(set.voxels[i]);
+    cloud.xyz.resize(boundary.size() * 3);
+    for (std::size_t b = 0; b < boundary.size(); ++b) {
+      const Index3 c = lattice.coordinates(boundary[b]);
+      for (int d = 0; d < 3; ++d) cloud.xyz[3 * b + std::size_t(d)] = float(c[std::size_t(d)]);
     }
     tree = std::make_unique<VoxelTree>(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
   }
-  /// The position in the set of the voxel nearest to `q`.
-  std::uint32_t nearest(const float q[3]) const {
+  /// The voxel of the set nearest to voxel `v` (whose lattice coordinates are `q`).
+  std::uint32_t nearest(std::uint32_t v, const float q[3]) const {
+    if (contains(v)) return v;
     std::uint32_t index = 0;
     float distance = 0.0f;
     nanoflann::KNNResultSet<float, std::uint32_t> result(1);
     result.init(&index, &distance);
     tree->findNeighbors(result, q, nanoflann::SearchParams());
-    return index;
+    return boundary[index];
   }
 };
 
@@ -96,7 +121,7 @@ SetFunction SetFunction::median(VoxelSet condensation, double rotateDegreesPerUn
   impl->lattice = condensation.lattice;
   impl->set = std::move(condensation);
   impl->rotate = rotateDegreesPerUnit;
-  impl->nearest = std::make_unique<NearestVoxel>(impl->set);
+  impl->nearest = std::make_unique<NearestVoxel>(impl->set, 0);
   impl->centroid = latticeCentroid(impl->set);
   if (impl->lattice.n <= 256) impl->memo.assign(impl->lattice.voxelCount(), kUnknown);
   return SetFunction(std::move(impl));
@@ -158,7 +183,7 @@ void SetFunction::apply(const VoxelSet& in, VoxelSet& out, SetScratch& scratch, 
     return;
   }
   // The median (§3.2): for every voxel of one set, the midpoint to the nearest voxel of the other.
-  const NearestVoxel other(in);  // B's tree; C's is built once
+  const NearestVoxel other(in, threads);  // B's tree; C's is built once
   const VoxelSet& c = f.set;
   const std::size_t left = in.size();
   candidates.assign(left + c.size(), kNone);
@@ -198,14 +223,14 @@ void SetFunction::apply(const VoxelSet& in, VoxelSet& out, SetScratch& scratch, 
       const float p[3] = {float(a[0]), float(a[1]), float(a[2])};
       std::uint32_t to;
       if (!isLeft) {
-        to = in.voxels[other.nearest(p)];
+        to = other.nearest(from, p);
       } else if (!f.memo.empty()) {
         // Distinct voxels of `in` write distinct entries, so the chunks never share one.
         std::uint32_t& known = f.memo[from];
-        if (known == kUnknown) known = c.voxels[f.nearest->nearest(p)];
+        if (known == kUnknown) known = f.nearest->nearest(from, p);
         to = known;
       } else {
-        to = c.voxels[f.nearest->nearest(p)];
+        to = f.nearest->nearest(from, p);
       }
       const Index3 b = lattice.coordinates(to);
       candidates[q] = midpoint(a, b, std::uint32_t(splitmix64((std::uint64_t(from) << 32) | to)));
