@@ -60,14 +60,25 @@ struct NearestVoxel {
     }
     tree = std::make_unique<VoxelTree>(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
   }
-  /// The voxel of the set nearest to voxel `v` (whose lattice coordinates are `q`).
-  std::uint32_t nearest(std::uint32_t v, const float q[3]) const {
+  /// The voxel of the set nearest to voxel `v` (whose lattice coordinates are `q`). `hint` is a
+  /// boundary position from the previous query of the caller (or 0xFFFFFFFF): successive queries
+  /// are neighbours, so its distance is a tight starting bound that prunes most of the tree.
+  std::uint32_t nearest(std::uint32_t v, const float q[3], std::uint32_t& hint) const {
     if (contains(v)) return v;
     std::uint32_t index = 0;
     float distance = 0.0f;
     nanoflann::KNNResultSet<float, std::uint32_t> result(1);
     result.init(&index, &distance);
+    if (hint < boundary.size()) {
+      float d2 = 0.0f;
+      for (int d = 0; d < 3; ++d) {
+        const float e = q[d] - cloud.xyz[3 * hint + std::size_t(d)];
+        d2 += e * e;
+      }
+      result.addPoint(d2, hint);
+    }
     tree->findNeighbors(result, q, nanoflann::SearchParams());
+    hint = index;
     return boundary[index];
   }
 };
@@ -216,6 +227,7 @@ void SetFunction::apply(const VoxelSet& in, VoxelSet& out, SetScratch& scratch, 
     return lattice.index(m[0], m[1], m[2]);
   };
   parallelFor(left + c.size(), threads, 2048, [&](std::size_t begin, std::size_t end) {
+    std::uint32_t hintLeft = kUnknown, hintRight = kUnknown;
     for (std::size_t q = begin; q < end; ++q) {
       const bool isLeft = q < left;
       const std::uint32_t from = isLeft ? in.voxels[q] : c.voxels[q - left];
@@ -223,14 +235,14 @@ void SetFunction::apply(const VoxelSet& in, VoxelSet& out, SetScratch& scratch, 
       const float p[3] = {float(a[0]), float(a[1]), float(a[2])};
       std::uint32_t to;
       if (!isLeft) {
-        to = other.nearest(from, p);
+        to = other.nearest(from, p, hintRight);
       } else if (!f.memo.empty()) {
         // Distinct voxels of `in` write distinct entries, so the chunks never share one.
         std::uint32_t& known = f.memo[from];
-        if (known == kUnknown) known = f.nearest->nearest(from, p);
+        if (known == kUnknown) known = f.nearest->nearest(from, p, hintLeft);
         to = known;
       } else {
-        to = f.nearest->nearest(from, p);
+        to = f.nearest->nearest(from, p, hintLeft);
       }
       const Index3 b = lattice.coordinates(to);
       candidates[q] = midpoint(a, b, std::uint32_t(splitmix64((std::uint64_t(from) << 32) | to)));
