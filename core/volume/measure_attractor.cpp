@@ -101,27 +101,54 @@ DensityVolume iterateSets(const Project& project, const VolumeJob& job) {
   return volume;
 }
 
-/// P = hits per voxel, plotted by the chaos kernel.
+/// P = hits per voxel, plotted by the chaos kernel. Like the z-buffer plotter, each hit is
+/// deferred by kDefer samples after a prefetch of its voxel: the volume is far larger than the
+/// caches, so the miss overlaps the next samples' arithmetic instead of stalling the chain.
 struct VoxelBins {
   std::uint32_t* counts;
   float* colors;  // 3 per voxel, or null
   float half;     // N / 2
   float n;
-  std::uint32_t stride;
+  std::size_t stride;
+
+  static constexpr unsigned kDefer = 8;
+  struct Pending {
+    std::size_t voxel = ~std::size_t(0);
+    kernel::v4f color{};
+  };
+  Pending pending[kDefer] = {};
+  unsigned next = 0;
+
+  void commit(const Pending& p) {
+    std::atomic_ref<std::uint32_t>(counts[p.voxel]).fetch_add(1, std::memory_order_relaxed);
+    if (colors) {
+      // Relaxed read-modify-write: concurrent plots of one voxel may drop a colour sample, which
+      // changes a mean by a negligible amount (the counts themselves are exact).
+      for (int d = 0; d < 3; ++d) {
+        std::atomic_ref<float> sum(colors[3 * p.voxel + std::size_t(d)]);
+        sum.store(sum.load(std::memory_order_relaxed) + p.color[d], std::memory_order_relaxed);
+      }
+    }
+  }
+
+  void flush() {
+    for (unsigned k = 0; k < kDefer; ++k) {
+      Pending& p = pending[(next + k) % kDefer];
+      if (p.voxel != ~std::size_t(0)) commit(p);
+      p.voxel = ~std::size_t(0);
+    }
+  }
 
   [[gnu::always_inline]] int operator()(kernel::v4f q, kernel::v4f col) {
     const kernel::v4f s = (q + 1.0f) * half;
     if (!(s[0] >= 0.0f && s[0] < n && s[1] >= 0.0f && s[1] < n && s[2] >= 0.0f && s[2] < n)) return 0;  // NaN fails
     const std::size_t v = std::size_t(std::uint32_t(s[0])) + stride * (std::size_t(std::uint32_t(s[1])) + stride * std::size_t(std::uint32_t(s[2])));
-    std::atomic_ref<std::uint32_t>(counts[v]).fetch_add(1, std::memory_order_relaxed);
-    if (colors) {
-      // Relaxed read-modify-write: concurrent plots of one voxel may drop a colour sample, which
-      // changes a mean by a negligible amount (the counts themselves are exact).
-      for (int d = 0; d < 3; ++d) {
-        std::atomic_ref<float> sum(colors[3 * v + std::size_t(d)]);
-        sum.store(sum.load(std::memory_order_relaxed) + col[d], std::memory_order_relaxed);
-      }
-    }
+    __builtin_prefetch(counts + v, 1);
+    if (colors) __builtin_prefetch(colors + 3 * v, 1);
+    Pending& slot = pending[next++ % kDefer];
+    if (slot.voxel != ~std::size_t(0)) commit(slot);
+    slot.voxel = v;
+    slot.color = col;
     return 1;
   }
 };
@@ -164,7 +191,7 @@ DensityVolume binPoints(const Project& project, const VolumeJob& job) {
       kernel::ChainState chain = kernel::ChainState::start(settings.seed, std::uint64_t(w), ifs.skip);
       kernel::ChainCounters counters;
       VoxelBins bins{counts.data(), colors.empty() ? nullptr : colors.data(), 0.5f * float(lattice.n), float(lattice.n),
-                     std::uint32_t(lattice.n)};
+                     std::size_t(lattice.n)};
       std::int64_t left = settings.samples / threads + (w < settings.samples % threads ? 1 : 0);
       while (left > 0 && !cancelled(job)) {
         const std::int64_t batch = std::min(left, kBatch);
