@@ -85,13 +85,15 @@ const VerbRegistration kVolume{
      [](CLI::App& app) {
        auto a = std::make_shared<VolumeArgs>();
        app.add_option("FILE", a->file, "project file (.gridifs)")->required();
-       app.add_option("-o,--output", a->out, "output volume (.vdb): a fog-volume float grid \"density\", and a "
-                                             "vector grid \"color\" when the functions have different colours")
+       app.add_option("-o,--output", a->out,
+                      "output volume (.vdb): a fog-volume float grid \"density\", and a "
+                      "vector grid \"color\" when the functions have different colours")
            ->required();
        app.add_option("--resolution", a->resolution, "voxels per axis, 16 to 512 (default: the project's, or 128)");
        app.add_option("--iterations", a->iterations,
                       "set iterations for an IFS with median functions (default: the project's, or 300)");
-       app.add_option("--samples", a->samples, "chaos-game points for any other IFS, e.g. 2e7 (default: the project's)");
+       app.add_option("--samples", a->samples,
+                      "chaos-game points for any other IFS, e.g. 2e7 (default: the project's)");
        app.add_option("--seed", a->seed, "random seed (default: the project's)");
        app.add_option("--threads", a->threads, "worker threads (default: all cores)");
        app.add_option("--time", a->time, "the time in seconds at which keyframed parameters are read");

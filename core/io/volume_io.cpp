@@ -16,7 +16,8 @@ double readFinite(const json& obj, const char* key, const std::string& path, dou
   const std::string p = path + "." + key;
   if (!it->is_number()) fail(p, "expected a number");
   const double v = it->get<double>();
-  if (!std::isfinite(v) || std::abs(v) > limits::kMaxCoordinate) fail(p, "expected a finite number of magnitude at most 1e6");
+  if (!std::isfinite(v) || std::abs(v) > limits::kMaxCoordinate)
+    fail(p, "expected a finite number of magnitude at most 1e6");
   return v;
 }
 
@@ -92,9 +93,12 @@ CondensationSet readSet(const json& s, const std::string& path) {
     set.path = readText(*mesh, path + ".mesh");
     if (auto fill = s.find("fill"); fill != s.end()) {
       const std::string word = readText(*fill, path + ".fill");
-      if (word == "solid") set.fill = SetFill::Solid;
-      else if (word == "surface") set.fill = SetFill::Surface;
-      else fail(path + ".fill", "expected \"solid\" or \"surface\"");
+      if (word == "solid")
+        set.fill = SetFill::Solid;
+      else if (word == "surface")
+        set.fill = SetFill::Surface;
+      else
+        fail(path + ".fill", "expected \"solid\" or \"surface\"");
     }
     if (auto pl = s.find("placement"); pl != s.end()) {
       const std::string p = path + ".placement";
@@ -156,17 +160,21 @@ void readSetFunctionFields(const json& f, const std::string& path, Function& fn)
   if (!isSetKind(fn.kind)) {
     for (const char* key : {"set", "rotate"})
       if (f.contains(key))
-        fail(path + "." + key, "only a function of kind \"condensation\" or \"median\" has a \"" + std::string(key) + "\"");
+        fail(path + "." + key,
+             "only a function of kind \"condensation\" or \"median\" has a \"" + std::string(key) + "\"");
     return;
   }
   for (const char* gridField : {"resolution", "placement", "ops"})
     if (f.contains(gridField))
-      fail(path + "." + gridField, "a function with a condensation set has no grid, so no \"" + std::string(gridField) + "\"");
+      fail(path + "." + gridField,
+           "a function with a condensation set has no grid, so no \"" + std::string(gridField) + "\"");
   auto it = f.find("set");
   if (it == f.end()) fail(path + ".set", "a \"" + std::string(functionKindName(fn.kind)) + "\" function needs its set");
   fn.set = readSet(*it, path + ".set");
-  if (fn.kind == FunctionKind::Median) fn.rotate = readFinite(f, "rotate", path, 0.0);
-  else if (f.contains("rotate")) fail(path + ".rotate", "only a \"median\" function is rotated");
+  if (fn.kind == FunctionKind::Median)
+    fn.rotate = readFinite(f, "rotate", path, 0.0);
+  else if (f.contains("rotate"))
+    fail(path + ".rotate", "only a \"median\" function is rotated");
 }
 
 ordered_json writeSetFunction(const Function& fn) {
@@ -188,7 +196,8 @@ std::optional<VolumeSettings> readVolume(const json& root) {
   if (it == root.end() || it->is_null()) return std::nullopt;
   if (!it->is_object()) fail("volume", "expected an object");
   VolumeSettings v;
-  v.resolution = int(readInteger(*it, "resolution", "volume", v.resolution, kMinVolumeResolution, kMaxVolumeResolution));
+  v.resolution =
+      int(readInteger(*it, "resolution", "volume", v.resolution, kMinVolumeResolution, kMaxVolumeResolution));
   v.iterations = int(readInteger(*it, "iterations", "volume", v.iterations, 1, 1'000'000));
   v.skip = int(readInteger(*it, "skip", "volume", v.skip, 0, 1'000'000));
   v.seed = std::uint64_t(readInteger(*it, "seed", "volume", std::int64_t(v.seed), 0, INT64_MAX));
@@ -199,8 +208,11 @@ std::optional<VolumeSettings> readVolume(const json& root) {
 void writeVolume(const Project& project, ordered_json& root) {
   if (!project.volume) return;
   const VolumeSettings& v = *project.volume;
-  root["volume"] = {{"resolution", v.resolution}, {"iterations", v.iterations}, {"skip", v.skip},
-                    {"seed", v.seed}, {"samples", v.samples}};
+  root["volume"] = {{"resolution", v.resolution},
+                    {"iterations", v.iterations},
+                    {"skip", v.skip},
+                    {"seed", v.seed},
+                    {"samples", v.samples}};
 }
 
 }  // namespace gridifs::volume_io

@@ -16,11 +16,16 @@ bool finite(const Vec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && 
 
 const char* setShapeName(SetShape shape) {
   switch (shape) {
-    case SetShape::Sphere: return "sphere";
-    case SetShape::Box: return "box";
-    case SetShape::Torus: return "torus";
-    case SetShape::Mesh: return "mesh";
-    case SetShape::Vdb: return "vdb";
+    case SetShape::Sphere:
+      return "sphere";
+    case SetShape::Box:
+      return "box";
+    case SetShape::Torus:
+      return "torus";
+    case SetShape::Mesh:
+      return "mesh";
+    case SetShape::Vdb:
+      return "vdb";
   }
   return "sphere";
 }
@@ -49,7 +54,8 @@ void checkCondensationSet(const CondensationSet& set, const std::string& path) {
     case SetShape::Vdb:
       if (set.path.empty()) fail(path + (set.shape == SetShape::Mesh ? ".mesh" : ".vdb"), "expected a file name");
       if (set.shape == SetShape::Vdb && set.grid.empty()) fail(path + ".grid", "expected a grid name");
-      if (set.shape == SetShape::Vdb && !std::isfinite(set.threshold)) fail(path + ".threshold", "expected a finite number");
+      if (set.shape == SetShape::Vdb && !std::isfinite(set.threshold))
+        fail(path + ".threshold", "expected a finite number");
       if (set.shape == SetShape::Mesh) {
         const Placement& p = set.placement;
         if (!finite(p.translate) || !finite(p.rotate) || !finite(p.scale))
@@ -64,9 +70,11 @@ void checkCondensationSet(const CondensationSet& set, const std::string& path) {
 bool primitiveContains(const CondensationSet& set, const Vec3& p) {
   const Vec3 d = p - set.center;
   switch (set.shape) {
-    case SetShape::Sphere: return glm::dot(d, d) <= set.radius * set.radius;
+    case SetShape::Sphere:
+      return glm::dot(d, d) <= set.radius * set.radius;
     case SetShape::Box:
-      return std::abs(d.x) <= 0.5 * set.size.x && std::abs(d.y) <= 0.5 * set.size.y && std::abs(d.z) <= 0.5 * set.size.z;
+      return std::abs(d.x) <= 0.5 * set.size.x && std::abs(d.y) <= 0.5 * set.size.y &&
+             std::abs(d.z) <= 0.5 * set.size.z;
     case SetShape::Torus: {
       const Vec3 a = glm::normalize(set.axis);
       const double h = glm::dot(d, a);
@@ -74,7 +82,8 @@ bool primitiveContains(const CondensationSet& set, const Vec3& p) {
       return r * r + h * h <= set.minor * set.minor;
     }
     case SetShape::Mesh:
-    case SetShape::Vdb: break;
+    case SetShape::Vdb:
+      break;
   }
   return false;
 }
@@ -83,11 +92,18 @@ std::vector<Vec3> samplePrimitive(const CondensationSet& set, std::size_t count,
   std::vector<Vec3> out;
   Vec3 half{0.0};
   switch (set.shape) {
-    case SetShape::Sphere: half = Vec3{set.radius}; break;
-    case SetShape::Box: half = 0.5 * set.size; break;
-    case SetShape::Torus: half = Vec3{set.major + set.minor}; break;
+    case SetShape::Sphere:
+      half = Vec3{set.radius};
+      break;
+    case SetShape::Box:
+      half = 0.5 * set.size;
+      break;
+    case SetShape::Torus:
+      half = Vec3{set.major + set.minor};
+      break;
     case SetShape::Mesh:
-    case SetShape::Vdb: return out;
+    case SetShape::Vdb:
+      return out;
   }
   out.reserve(count);
   std::uint64_t state = seed;

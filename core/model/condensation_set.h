@@ -17,14 +17,14 @@ enum class SetFill { Solid, Surface };
 struct CondensationSet {
   SetShape shape = SetShape::Sphere;
   Vec3 center{0.0};
-  double radius = 0.5;      // sphere
-  Vec3 size{1.0};           // box: full edge lengths
-  double major = 0.5;       // torus: distance from the centre to the tube's centre line
-  double minor = 0.15;      // torus: tube radius
-  Vec3 axis{0.0, 0.0, 1.0}; // torus: the axis of revolution
-  std::string path;         // mesh or VDB file, relative to the project file
+  double radius = 0.5;       // sphere
+  Vec3 size{1.0};            // box: full edge lengths
+  double major = 0.5;        // torus: distance from the centre to the tube's centre line
+  double minor = 0.15;       // torus: tube radius
+  Vec3 axis{0.0, 0.0, 1.0};  // torus: the axis of revolution
+  std::string path;          // mesh or VDB file, relative to the project file
   SetFill fill = SetFill::Solid;
-  Placement placement;      // mesh: placement(q) = T + R·(S·q)
+  Placement placement;           // mesh: placement(q) = T + R·(S·q)
   std::string grid = "density";  // VDB: the grid's name
   double threshold = 0.5;        // VDB: voxels whose value is at least this belong to the set
   bool operator==(const CondensationSet&) const = default;

@@ -5,9 +5,9 @@
 namespace gridifs {
 
 struct VolumeSettings {
-  int resolution = 128;       // N: the volume is N³ voxels covering X
-  int iterations = 300;       // set iterations (projects with median functions)
-  int skip = 20;              // set iterations before P accumulates
+  int resolution = 128;  // N: the volume is N³ voxels covering X
+  int iterations = 300;  // set iterations (projects with median functions)
+  int skip = 20;         // set iterations before P accumulates
   std::uint64_t seed = 1;
   std::int64_t samples = 20'000'000;  // chaos-game points (projects without median functions)
   bool operator==(const VolumeSettings&) const = default;

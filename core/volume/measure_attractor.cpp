@@ -40,7 +40,8 @@ DensityVolume iterateSets(const Project& project, const VolumeJob& job) {
     const std::string path = "functions[" + std::to_string(i) + "]";
     switch (f.kind) {
       case FunctionKind::Median:
-        functions.push_back(SetFunction::median(voxelizeSet(f.set, lattice, job.projectFolder, path + ".set"), f.rotate));
+        functions.push_back(
+            SetFunction::median(voxelizeSet(f.set, lattice, job.projectFolder, path + ".set"), f.rotate));
         break;
       case FunctionKind::Condensation:
         functions.push_back(SetFunction::constant(voxelizeSet(f.set, lattice, job.projectFolder, path + ".set")));
@@ -73,7 +74,8 @@ DensityVolume iterateSets(const Project& project, const VolumeJob& job) {
   const int skip = std::min(settings.skip, settings.iterations - 1);
   for (int k = 0; k < settings.iterations && !cancelled(job); ++k) {
     const double r = double(next() >> 11) * (total / 9007199254740992.0);
-    const std::size_t pick = std::size_t(std::upper_bound(cumulative.begin(), cumulative.end(), r) - cumulative.begin());
+    const std::size_t pick =
+        std::size_t(std::upper_bound(cumulative.begin(), cumulative.end(), r) - cumulative.begin());
     const std::size_t i = std::min(pick, functions.size() - 1);
     functions[i].apply(current, image, scratch, threads);
     std::swap(current, image);
@@ -142,7 +144,8 @@ struct VoxelBins {
   [[gnu::always_inline]] int operator()(kernel::v4f q, kernel::v4f col) {
     const kernel::v4f s = (q + 1.0f) * half;
     if (!(s[0] >= 0.0f && s[0] < n && s[1] >= 0.0f && s[1] < n && s[2] >= 0.0f && s[2] < n)) return 0;  // NaN fails
-    const std::size_t v = std::size_t(std::uint32_t(s[0])) + stride * (std::size_t(std::uint32_t(s[1])) + stride * std::size_t(std::uint32_t(s[2])));
+    const std::size_t v = std::size_t(std::uint32_t(s[0])) +
+                          stride * (std::size_t(std::uint32_t(s[1])) + stride * std::size_t(std::uint32_t(s[2])));
     __builtin_prefetch(counts + v, 1);
     if (colors) __builtin_prefetch(colors + 3 * v, 1);
     Pending& slot = pending[next++ % kDefer];
@@ -153,8 +156,8 @@ struct VoxelBins {
   }
 };
 
-GRIDIFS_KERNEL_CLONES void runBins(kernel::ChainState& chain, const kernel::HotIfs& ifs, std::int64_t count, VoxelBins& bins,
-                                   kernel::ChainCounters& counters) {
+GRIDIFS_KERNEL_CLONES void runBins(kernel::ChainState& chain, const kernel::HotIfs& ifs, std::int64_t count,
+                                   VoxelBins& bins, kernel::ChainCounters& counters) {
   kernel::runChain(chain, ifs, count, bins, counters);
 }
 
@@ -226,8 +229,10 @@ bool hasColorVolume(const Project& project) {
   const Function* first = nullptr;
   for (const Function& f : project.functions) {
     if (f.muted || !(f.weight > 0.0)) continue;
-    if (!first) first = &f;
-    else if (f.color != first->color) return true;
+    if (!first)
+      first = &f;
+    else if (f.color != first->color)
+      return true;
   }
   return false;
 }

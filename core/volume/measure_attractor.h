@@ -14,7 +14,7 @@ namespace gridifs {
 
 struct VolumeJob {
   VolumeSettings settings;
-  int threads = 0;  // ≤ 0: every hardware thread
+  int threads = 0;                      // ≤ 0: every hardware thread
   std::filesystem::path projectFolder;  // mesh and VDB set paths are relative to it
   /// Called on the calling thread with the fraction done, now and then.
   std::function<void(double)> progress;

@@ -21,7 +21,8 @@ struct VoxelCloud {
   }
 };
 
-using VoxelTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<float, VoxelCloud>, VoxelCloud, 3, std::uint32_t>;
+using VoxelTree =
+    nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<float, VoxelCloud>, VoxelCloud, 3, std::uint32_t>;
 
 /// Nearest-voxel queries on a voxel set without a scan: a voxel of the set is its own nearest;
 /// for any other voxel the nearest one lies on the set's boundary (a set voxel with a 6-neighbour

@@ -1,12 +1,13 @@
 #include "volume/set_voxelizer.h"
 
-#include <algorithm>
-#include <cmath>
-#include <mutex>
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/Interpolation.h>
 #include <openvdb/tools/LevelSetUtil.h>
 #include <openvdb/tools/MeshToVolume.h>
+
+#include <algorithm>
+#include <cmath>
+#include <mutex>
 
 #include "mesh/mesh_io.h"
 #include "model/stack_evaluator.h"
@@ -21,10 +22,17 @@ namespace {
 std::vector<std::uint32_t> primitiveVoxels(const CondensationSet& set, const VoxelLattice& lattice) {
   Vec3 half{0.0};
   switch (set.shape) {
-    case SetShape::Sphere: half = Vec3{set.radius}; break;
-    case SetShape::Box: half = 0.5 * set.size; break;
-    case SetShape::Torus: half = Vec3{set.major + set.minor}; break;
-    default: break;
+    case SetShape::Sphere:
+      half = Vec3{set.radius};
+      break;
+    case SetShape::Box:
+      half = 0.5 * set.size;
+      break;
+    case SetShape::Torus:
+      half = Vec3{set.major + set.minor};
+      break;
+    default:
+      break;
   }
   Index3 lo, hi;
   for (int d = 0; d < 3; ++d) {
@@ -76,7 +84,8 @@ std::vector<std::uint32_t> meshVoxels(const CondensationSet& set, const VoxelLat
   for (auto f : mesh.faces()) {
     std::vector<unsigned> ids;
     for (auto v : mesh.fv_range(f)) ids.push_back(unsigned(v.idx()));
-    if (ids.size() == 4) quads.emplace_back(ids[0], ids[1], ids[2], ids[3]);
+    if (ids.size() == 4)
+      quads.emplace_back(ids[0], ids[1], ids[2], ids[3]);
     else
       for (std::size_t t = 1; t + 1 < ids.size(); ++t) triangles.emplace_back(ids[0], ids[t], ids[t + 1]);
   }
@@ -87,15 +96,19 @@ std::vector<std::uint32_t> meshVoxels(const CondensationSet& set, const VoxelLat
   std::vector<std::uint32_t> out;
   if (set.fill == SetFill::Solid) {
     if (!closed)
-      fail(jsonPath + ".fill", "the mesh " + file.string() +
-                                   " is not closed (it has boundary edges), so it has no inside; use \"fill\": \"surface\"");
+      fail(jsonPath + ".fill",
+           "the mesh " + file.string() +
+               " is not closed (it has boundary edges), so it has no inside; use \"fill\": \"surface\"");
     const auto sdf = openvdb::tools::meshToLevelSet<openvdb::FloatGrid>(*xform, points, triangles, quads, 2.0f);
     const auto interior = openvdb::tools::sdfInteriorMask(*sdf);
-    collectActive(*interior, lattice, [](bool on) { return on; }, out);
+    collectActive(
+        *interior, lattice, [](bool on) { return on; }, out);
   } else {
     const float halfDiagonal = float(0.5 * std::sqrt(3.0) * lattice.voxelSize());
-    const auto udf = openvdb::tools::meshToUnsignedDistanceField<openvdb::FloatGrid>(*xform, points, triangles, quads, 2.0f);
-    collectActive(*udf, lattice, [&](float d) { return d <= halfDiagonal; }, out);
+    const auto udf =
+        openvdb::tools::meshToUnsignedDistanceField<openvdb::FloatGrid>(*xform, points, triangles, quads, 2.0f);
+    collectActive(
+        *udf, lattice, [&](float d) { return d <= halfDiagonal; }, out);
   }
   return out;
 }
@@ -112,7 +125,8 @@ std::vector<std::uint32_t> vdbVoxels(const CondensationSet& set, const VoxelLatt
   const float threshold = float(set.threshold);
   for (auto it = grid->cbeginValueOn(); it; ++it) {
     const openvdb::CoordBBox b = it.getBoundingBox();
-    const openvdb::BBoxd world = grid->transform().indexToWorld(openvdb::BBoxd(b.min().asVec3d() - 0.5, b.max().asVec3d() + 0.5));
+    const openvdb::BBoxd world =
+        grid->transform().indexToWorld(openvdb::BBoxd(b.min().asVec3d() - 0.5, b.max().asVec3d() + 0.5));
     const openvdb::BBoxd idx = latt->worldToIndex(world);
     openvdb::CoordBBox cover(openvdb::Coord::floor(idx.min()), openvdb::Coord::ceil(idx.max()));
     cover.intersect(lattBox);
@@ -129,8 +143,8 @@ std::vector<std::uint32_t> vdbVoxels(const CondensationSet& set, const VoxelLatt
 
 }  // namespace
 
-VoxelSet voxelizeSet(const CondensationSet& set, const VoxelLattice& lattice, const std::filesystem::path& projectFolder,
-                     const std::string& jsonPath) {
+VoxelSet voxelizeSet(const CondensationSet& set, const VoxelLattice& lattice,
+                     const std::filesystem::path& projectFolder, const std::string& jsonPath) {
   initializeOpenVdb();
   checkCondensationSet(set, jsonPath);
   VoxelSet out{lattice, {}};
@@ -138,15 +152,20 @@ VoxelSet voxelizeSet(const CondensationSet& set, const VoxelLattice& lattice, co
   switch (set.shape) {
     case SetShape::Sphere:
     case SetShape::Box:
-    case SetShape::Torus: out.voxels = primitiveVoxels(set, lattice); break;
-    case SetShape::Mesh: out.voxels = meshVoxels(set, lattice, file, jsonPath); break;
-    case SetShape::Vdb: out.voxels = vdbVoxels(set, lattice, file, jsonPath); break;
+    case SetShape::Torus:
+      out.voxels = primitiveVoxels(set, lattice);
+      break;
+    case SetShape::Mesh:
+      out.voxels = meshVoxels(set, lattice, file, jsonPath);
+      break;
+    case SetShape::Vdb:
+      out.voxels = vdbVoxels(set, lattice, file, jsonPath);
+      break;
   }
   normalizeVoxels(out.voxels);
   if (out.voxels.empty())
-    fail(jsonPath, std::string("the ") + setShapeName(set.shape) +
-                       " set has no voxel inside X at resolution " + std::to_string(lattice.n) +
-                       " (it lies outside [-1, 1]³ or is thinner than a voxel)");
+    fail(jsonPath, std::string("the ") + setShapeName(set.shape) + " set has no voxel inside X at resolution " +
+                       std::to_string(lattice.n) + " (it lies outside [-1, 1]³ or is thinner than a voxel)");
   return out;
 }
 

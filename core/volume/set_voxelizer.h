@@ -16,7 +16,7 @@ namespace gridifs {
 /// Throws ModelError (a path under `jsonPath`, one sentence naming the file where there is one)
 /// when the file is missing or unreadable, a solid mesh is not closed, the VDB has no such float
 /// grid, or the set has no voxel inside X.
-VoxelSet voxelizeSet(const CondensationSet& set, const VoxelLattice& lattice, const std::filesystem::path& projectFolder,
-                     const std::string& jsonPath);
+VoxelSet voxelizeSet(const CondensationSet& set, const VoxelLattice& lattice,
+                     const std::filesystem::path& projectFolder, const std::string& jsonPath);
 
 }  // namespace gridifs

@@ -1,7 +1,8 @@
 #include "volume/vdb_support.h"
 
-#include <mutex>
 #include <openvdb/io/File.h>
+
+#include <mutex>
 
 namespace gridifs {
 
@@ -17,7 +18,8 @@ openvdb::math::Transform::Ptr latticeTransform(const VoxelLattice& lattice) {
   return xform;
 }
 
-openvdb::FloatGrid::Ptr readFloatGrid(const std::filesystem::path& file, const std::string& name, const std::string& jsonPath) {
+openvdb::FloatGrid::Ptr readFloatGrid(const std::filesystem::path& file, const std::string& name,
+                                      const std::string& jsonPath) {
   initializeOpenVdb();
   std::error_code ec;
   if (!std::filesystem::is_regular_file(file, ec))
@@ -28,7 +30,8 @@ openvdb::FloatGrid::Ptr readFloatGrid(const std::filesystem::path& file, const s
     vdb.open(false);
     if (!vdb.hasGrid(name)) {
       vdb.close();
-      throw ModelError(jsonPath + ".grid", "the VDB file " + file.string() + " has no grid named \"" + name.substr(0, 64) + "\"");
+      throw ModelError(jsonPath + ".grid",
+                       "the VDB file " + file.string() + " has no grid named \"" + name.substr(0, 64) + "\"");
     }
     base = vdb.readGrid(name);
     vdb.close();
@@ -37,7 +40,8 @@ openvdb::FloatGrid::Ptr readFloatGrid(const std::filesystem::path& file, const s
   }
   auto grid = openvdb::gridPtrCast<openvdb::FloatGrid>(base);
   if (!grid)
-    throw ModelError(jsonPath + ".grid", "the grid \"" + name.substr(0, 64) + "\" of " + file.string() + " is not a float grid");
+    throw ModelError(jsonPath + ".grid",
+                     "the grid \"" + name.substr(0, 64) + "\" of " + file.string() + " is not a float grid");
   return grid;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // Internal to volume/: OpenVDB set-up shared by the voxelizer and the file writer.
-#include <filesystem>
 #include <openvdb/openvdb.h>
+
+#include <filesystem>
 #include <string>
 
 #include "volume/voxel_set.h"
@@ -16,6 +17,7 @@ openvdb::math::Transform::Ptr latticeTransform(const VoxelLattice& lattice);
 
 /// The float grid `name` of the VDB file. Throws ModelError under `jsonPath` naming the file when
 /// it is missing or unreadable or has no float grid of that name.
-openvdb::FloatGrid::Ptr readFloatGrid(const std::filesystem::path& file, const std::string& name, const std::string& jsonPath);
+openvdb::FloatGrid::Ptr readFloatGrid(const std::filesystem::path& file, const std::string& name,
+                                      const std::string& jsonPath);
 
 }  // namespace gridifs

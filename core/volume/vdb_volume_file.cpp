@@ -31,8 +31,8 @@ void writeVdbVolume(const DensityVolume& volume, const std::filesystem::path& fi
           if (d <= 0.0f) continue;
           densityAccess.setValue(openvdb::Coord(i, j, k), d);
           if (color)
-            color->tree().setValue(openvdb::Coord(i, j, k),
-                                   openvdb::Vec3s(volume.color[3 * v], volume.color[3 * v + 1], volume.color[3 * v + 2]));
+            color->tree().setValue(openvdb::Coord(i, j, k), openvdb::Vec3s(volume.color[3 * v], volume.color[3 * v + 1],
+                                                                           volume.color[3 * v + 2]));
         }
   }
   openvdb::GridPtrVec grids{density};

@@ -12,7 +12,9 @@ namespace gridifs {
 struct VoxelLattice {
   int n = 64;
 
-  std::uint32_t index(int i, int j, int k) const { return std::uint32_t(i) + std::uint32_t(n) * (std::uint32_t(j) + std::uint32_t(n) * std::uint32_t(k)); }
+  std::uint32_t index(int i, int j, int k) const {
+    return std::uint32_t(i) + std::uint32_t(n) * (std::uint32_t(j) + std::uint32_t(n) * std::uint32_t(k));
+  }
   Index3 coordinates(std::uint32_t index) const {
     const std::uint32_t un = std::uint32_t(n);
     return {int(index % un), int((index / un) % un), int(index / (un * un))};

@@ -2,11 +2,11 @@
 // lattice transform and (coloured IFS) the colour grid; bad input → exit 2, one sentence naming
 // the file, nothing written.
 #include <gtest/gtest.h>
-
-#include <fstream>
 #include <openvdb/io/File.h>
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/Count.h>
+
+#include <fstream>
 
 #include "run_command.h"
 
@@ -25,7 +25,8 @@ void writeText(const fs::path& file, const std::string& text) { std::ofstream(fi
 
 void writeCube(const fs::path& file) {
   std::ofstream out(file);
-  for (int v = 0; v < 8; ++v) out << "v " << ((v & 1) ? 1 : -1) << " " << ((v & 2) ? 1 : -1) << " " << ((v & 4) ? 1 : -1) << "\n";
+  for (int v = 0; v < 8; ++v)
+    out << "v " << ((v & 1) ? 1 : -1) << " " << ((v & 2) ? 1 : -1) << " " << ((v & 4) ? 1 : -1) << "\n";
   out << "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n";
 }
 
@@ -36,8 +37,8 @@ TEST(VolumeCli, WritesAFogVolumeWithTheLatticeTransform) {
   writeCube(dir.path / "cube.obj");
   writeText(dir.path / "two.gridifs", kMedians);
   const fs::path out = dir.path / "two.vdb";
-  const CommandResult r = runGridifs("volume " + quote((dir.path / "two.gridifs").string()) + " -o " + quote(out.string()) +
-                                     " --resolution 48 --iterations 60 --seed 2 --threads 2");
+  const CommandResult r = runGridifs("volume " + quote((dir.path / "two.gridifs").string()) + " -o " +
+                                     quote(out.string()) + " --resolution 48 --iterations 60 --seed 2 --threads 2");
   ASSERT_EQ(r.exitCode, 0) << r.err;
   openvdb::initialize();
   openvdb::io::File vdb(out.string());
@@ -58,8 +59,9 @@ TEST(VolumeCli, WritesAFogVolumeWithTheLatticeTransform) {
 TEST(VolumeCli, PointIfsIsBinned) {
   ScratchDir dir("volume-cli-points");
   const fs::path out = dir.path / "s.vdb";
-  const CommandResult r = runGridifs("volume " + quote(std::string(GRIDIFS_ASSETS) + "/sierpinski_tetrahedron.gridifs") +
-                                     " -o " + quote(out.string()) + " --resolution 32 --samples 2e5");
+  const CommandResult r =
+      runGridifs("volume " + quote(std::string(GRIDIFS_ASSETS) + "/sierpinski_tetrahedron.gridifs") + " -o " +
+                 quote(out.string()) + " --resolution 32 --samples 2e5");
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_TRUE(fs::exists(out));
 }

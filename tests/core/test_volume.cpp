@@ -2,14 +2,14 @@
 // format, voxelization, the median's fixed point, the set iteration's mass, the chaos game with a
 // constant condensation, point binning and the OpenVDB file.
 #include <gtest/gtest.h>
+#include <openvdb/io/File.h>
+#include <openvdb/openvdb.h>
+#include <openvdb/tools/Count.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <openvdb/io/File.h>
-#include <openvdb/openvdb.h>
-#include <openvdb/tools/Count.h>
 
 #include "io/project_io.h"
 #include "model/project.h"
@@ -49,7 +49,8 @@ struct TempFolder {
 /// A closed cube [-h, h]³ as an OBJ, optionally without its top face (open).
 void writeCube(const fs::path& file, double h, bool open = false) {
   std::ofstream out(file);
-  for (int v = 0; v < 8; ++v) out << "v " << ((v & 1) ? h : -h) << " " << ((v & 2) ? h : -h) << " " << ((v & 4) ? h : -h) << "\n";
+  for (int v = 0; v < 8; ++v)
+    out << "v " << ((v & 1) ? h : -h) << " " << ((v & 2) ? h : -h) << " " << ((v & 4) ? h : -h) << "\n";
   out << "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\n";
   if (!open) out << "f 2 4 8 6\n";
 }
@@ -128,14 +129,18 @@ TEST(VolumeIo, BadSetsAreRejectedWithTheirPath) {
     return std::string("no error");
   };
   EXPECT_NE(error(R"({"kind": "median"})").find("functions[0].set"), std::string::npos);
-  EXPECT_NE(error(R"({"kind": "median", "set": {"primitive": "cone"}})").find("functions[0].set.primitive"), std::string::npos);
-  EXPECT_NE(error(R"({"kind": "median", "set": {"primitive": "sphere", "radius": -1}})").find("radius"), std::string::npos);
+  EXPECT_NE(error(R"({"kind": "median", "set": {"primitive": "cone"}})").find("functions[0].set.primitive"),
+            std::string::npos);
+  EXPECT_NE(error(R"({"kind": "median", "set": {"primitive": "sphere", "radius": -1}})").find("radius"),
+            std::string::npos);
   EXPECT_NE(error(R"({"set": {"primitive": "sphere"}})").find("functions[0].set"), std::string::npos);
   EXPECT_NE(error(R"({"kind": "median", "resolution": [2, 2, 2], "set": {"primitive": "sphere"}})").find("resolution"),
             std::string::npos);
-  EXPECT_NE(error(R"({"kind": "condensation", "rotate": 3, "set": {"primitive": "sphere"}})").find("rotate"), std::string::npos);
+  EXPECT_NE(error(R"({"kind": "condensation", "rotate": 3, "set": {"primitive": "sphere"}})").find("rotate"),
+            std::string::npos);
   EXPECT_NE(error(R"({"kind": "median", "set": {"mesh": "a.obj", "fill": "hollow"}})").find("fill"), std::string::npos);
-  EXPECT_NE(error(R"({"name": "g"})", R"(, "volume": {"resolution": 1024})").find("volume.resolution"), std::string::npos);
+  EXPECT_NE(error(R"({"name": "g"})", R"(, "volume": {"resolution": 1024})").find("volume.resolution"),
+            std::string::npos);
 }
 
 TEST(VolumeSets, PrimitivesKeepTheVoxelsWhoseCentresLieInside) {
@@ -346,8 +351,8 @@ TEST(MeasureAttractor, SierpinskiDensityIsZeroAwayFromTheAttractor) {
     const Vec3 q = v.lattice.centre(voxel);
     const double l1 = std::abs(q.x) + std::abs(q.y) + std::abs(q.z);
     // Outside the hull: some face plane x+y+z ≥ -1 style inequality is violated.
-    const bool outsideHull = q.x + q.y + q.z < -1.1 || q.x - q.y - q.z < -1.1 || -q.x + q.y - q.z < -1.1 ||
-                             -q.x - q.y + q.z < -1.1;
+    const bool outsideHull =
+        q.x + q.y + q.z < -1.1 || q.x - q.y - q.z < -1.1 || -q.x + q.y - q.z < -1.1 || -q.x - q.y + q.z < -1.1;
     if (l1 < 0.9 || outsideHull) {
       EXPECT_EQ(v.density[voxel], 0.0f) << q.x << " " << q.y << " " << q.z;
     }
