@@ -10,6 +10,7 @@
 #include "app/cli.h"
 #include "model/contractivity.h"
 #include "model/free_form.h"
+#include "volume/condensation_sampler.h"
 
 namespace gridifs::cli {
 
@@ -69,7 +70,9 @@ RenderSetup prepareRender(const std::filesystem::path& file, const RenderOverrid
   }
   Document document(setup.project);
   try {
-    setup.ifs = compileIfs(document.project(), document.evaluation());
+    // Condensation sets read from files (meshes, VDB grids) are found beside the project.
+    setup.ifs = compileIfs(document.project(), document.evaluation(),
+                           makeCondensationSampler(setup.project, file.parent_path().empty() ? "." : file.parent_path()));
   } catch (const ModelError& e) {
     throw CliError(kBadInput, file.string() + ": " + e.what());
   }
@@ -77,6 +80,7 @@ RenderSetup prepareRender(const std::filesystem::path& file, const RenderOverrid
   // bounded), so this is a warning, as in `gridifs info`.
   for (const CompiledFunction& f : setup.ifs->functions) {
     const Function& source = setup.project.functions[f.sourceIndex];
+    if (isSetKind(source.kind)) continue;  // a constant map: contraction factor 0
     const ContractivityEstimate c = source.kind == FunctionKind::Matrix
                                         ? ContractivityEstimate{simplexContraction(source.matrix), Index3{0, 0, 0}}
                                         : estimateContractivity(*document.evaluatedGrid(f.sourceIndex));

@@ -31,6 +31,14 @@ std::vector<FunctionReport> analyse(const Document& document, const std::filesys
       reports.push_back({&f, probability, {simplexContraction(f.matrix), Index3{-1, -1, -1}}});
       continue;
     }
+    if (isSetKind(f.kind)) {
+      // Barnsley's condensation map has contractivity factor 0 (Sokolov & Gentil, §3.1); the median
+      // moves every point of either set half way to the other, so d_H(M(B, C), C) ≤ d_H(B, C) / 2
+      // (§3.2; the rotated median of §4.1 has no such bound).
+      const double bound = f.kind == FunctionKind::Condensation ? 0.0 : (f.rotate == 0.0 ? 0.5 : 1.0);
+      reports.push_back({&f, probability, {bound, Index3{-1, -1, -1}}});
+      continue;
+    }
     const auto grid = evaluateForVerb(document, i, file);
     reports.push_back({&f, probability, estimateContractivity(*grid)});
   }
@@ -65,8 +73,8 @@ int runInfo(const std::string& file, bool asJson, const std::optional<std::strin
                       {"contractivity", r.contractivity.bound},
                       {"contractive", r.contractivity.bound < 1.0}});
       if (r.function->sampling_error) list.back()["sampling_error"] = *r.function->sampling_error;
-      if (r.function->kind == FunctionKind::Matrix) {
-        list.back()["kind"] = "matrix";
+      if (r.function->kind != FunctionKind::Grid) {
+        list.back()["kind"] = functionKindName(r.function->kind);
         list.back().erase("resolution");
         list.back().erase("ops");
       }
@@ -89,6 +97,8 @@ int runInfo(const std::string& file, bool asJson, const std::optional<std::strin
       char res[32];
       if (r.function->kind == FunctionKind::Matrix)
         std::snprintf(res, sizeof res, "matrix %zu", r.function->matrix.size());
+      else if (isSetKind(r.function->kind))
+        std::snprintf(res, sizeof res, "%s", r.function->kind == FunctionKind::Median ? "median" : "condensation");
       else
         std::snprintf(res, sizeof res, "%dx%dx%d", r.function->resolution[0], r.function->resolution[1],
                       r.function->resolution[2]);

@@ -109,6 +109,9 @@ void ChaosCompute::setup(const CompiledIfs& ifs, const RenderJob& job, std::uint
     throw GpuUnavailable("the GPU renderer does not run free-form (control point) IFSs; the CPU renderer does");
   if (!ifs.transitionAlias.empty())
     throw GpuUnavailable("the GPU renderer does not follow transition matrices; the CPU renderer does");
+  for (const CompiledFunction& f : ifs.functions)
+    if (!f.points.empty())
+      throw GpuUnavailable("the GPU renderer does not run condensation functions; the CPU renderer does");
   job_ = job;
   chains_ = chains;
   count_ = std::uint32_t(ifs.functions.size());

@@ -2,6 +2,7 @@
 
 #include "render/compiled_ifs.h"
 #include "render/shaded_image.h"
+#include "volume/condensation_sampler.h"
 #if GRIDIFS_HAVE_GPU
 #include "gpu/render_device.h"
 #endif
@@ -55,7 +56,10 @@ void PreviewRenderer::publish(const Document& document, int width, int height, i
   published_ = now;
   if (havePublished_ && sameInput && width == width_ && height == height_ && threads == threads_) return;
   try {
-    auto ifs = compileIfs(document.project(), document.evaluation());
+    // Condensation sets read from files are sampled from 128³ voxels beside the project: coarser
+    // than the CLI's 256³, so an edit restarts the preview quickly.
+    const std::filesystem::path folder = document.path().parent_path().empty() ? "." : document.path().parent_path();
+    auto ifs = compileIfs(document.project(), document.evaluation(), makeCondensationSampler(document.project(), folder, 128));
     RenderJob job = RenderJob::fromProject(project, threads);
     job.width = width;
     job.height = height;

@@ -58,8 +58,12 @@ void readFunctionFields(const json& f, const std::string& path, Function& fn) {
       fn.kind = FunctionKind::Grid;
     else if (kind == "matrix")
       fn.kind = FunctionKind::Matrix;
+    else if (kind == "condensation")
+      fn.kind = FunctionKind::Condensation;
+    else if (kind == "median")
+      fn.kind = FunctionKind::Median;
     else
-      fail(path + ".kind", "expected \"grid\" or \"matrix\", found \"" + kind + "\"");
+      fail(path + ".kind", "expected \"grid\", \"matrix\", \"condensation\" or \"median\", found \"" + kind + "\"");
   }
   if (auto it = f.find("interpolation"); it != f.end()) {
     const std::string word = readWord(*it, path + ".interpolation");

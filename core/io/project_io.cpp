@@ -11,6 +11,7 @@
 #include "io/animation_json.h"
 #include "io/free_form_io.h"
 #include "io/shading_io.h"
+#include "io/volume_io.h"
 #include "model/operation_table.h"
 #include "model/palette_reference.h"
 #include "model/validation.h"
@@ -335,6 +336,7 @@ Function readFunction(const json& f, const std::string& path, std::size_t index)
     for (std::size_t o = 0; o < it->size(); ++o) fn.ops.push_back(readOperation((*it)[o], item(p, o)));
   }
   free_form_io::readFunctionFields(f, path, fn);
+  volume_io::readSetFunctionFields(f, path, fn);
   return fn;
 }
 
@@ -413,6 +415,7 @@ ordered_json writeOperation(const Operation& op) {
 
 ordered_json writeFunction(const Function& f) {
   if (free_form_io::isMatrixFunction(f)) return free_form_io::writeMatrixFunction(f);
+  if (isSetKind(f.kind)) return volume_io::writeSetFunction(f);
   ordered_json o;
   o["name"] = f.name;
   o["resolution"] = {f.resolution[0], f.resolution[1], f.resolution[2]};
@@ -528,6 +531,7 @@ Project parseProject(const std::string& text) {
   }
   readAnimation(root, project);
   project.space = free_form_io::readSpace(root);
+  project.volume = volume_io::readVolume(root);
   validateProject(project);
   checkTrackPaths(project);
   return project;
@@ -560,6 +564,7 @@ std::string serializeProject(const Project& project) {
   root["functions"] = functions;
   if (project.final_function) root["final"] = writeFunction(*project.final_function);
   if (!project.transitions.empty()) root["transitions"] = project.transitions;
+  volume_io::writeVolume(project, root);
   writeAnimation(project, root);
   return root.dump(2) + "\n";
 }

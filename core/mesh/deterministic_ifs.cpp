@@ -38,6 +38,10 @@ DeterministicIfs snapshotWith(const Project& project, GridOf gridOf, FinalOf fin
   for (std::size_t i = 0; i < project.functions.size(); ++i) {
     const Function& f = project.functions[i];
     if (f.muted || !(f.weight > 0.0)) continue;
+    if (isSetKind(f.kind))
+      throw ModelError("functions[" + std::to_string(i) + "].kind",
+                       "the deterministic algorithm does not build condensation or median functions yet; "
+                       "their density volume exports with the volume verb");
     auto grid = gridOf(i);
     if (!allFinite(*grid)) throw ModelError("functions[" + std::to_string(i) + "]", "a grid node is not finite");
     ifs.maps.push_back({std::move(grid), f.color, f.color_speed, i});

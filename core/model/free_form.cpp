@@ -35,7 +35,15 @@ void checkMatrix(const BarycentricMatrix& t, std::size_t m, const std::string& p
 
 }  // namespace
 
-const char* functionKindName(FunctionKind kind) { return kind == FunctionKind::Matrix ? "matrix" : "grid"; }
+const char* functionKindName(FunctionKind kind) {
+  switch (kind) {
+    case FunctionKind::Matrix: return "matrix";
+    case FunctionKind::Condensation: return "condensation";
+    case FunctionKind::Median: return "median";
+    case FunctionKind::Grid: break;
+  }
+  return "grid";
+}
 
 const char* latticeInterpolationName(LatticeInterpolation interpolation) {
   return interpolation == LatticeInterpolation::Bezier ? "bezier" : "trilinear";
@@ -60,6 +68,7 @@ void checkFreeForm(const Project& project) {
     const std::string path = item("functions", f);
     if (fn.interpolation != LatticeInterpolation::Trilinear)
       fail(path + ".interpolation", "only the final function's lattice may be interpolated as \"bezier\"");
+    if (isSetKind(fn.kind)) continue;  // checked by checkCondensationSets
     if (project.space && fn.kind != FunctionKind::Matrix)
       fail(path + ".kind", "a project with control points (\"space\") needs \"matrix\" functions");
     if (!project.space && fn.kind == FunctionKind::Matrix)

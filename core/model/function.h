@@ -4,17 +4,12 @@
 #include <string>
 #include <vector>
 
+#include "model/condensation_set.h"
 #include "model/function_kind.h"
 #include "model/operation.h"
+#include "model/placement.h"
 
 namespace gridifs {
-
-/// How the function's grid sits in the common initial grid (Gröller & Wegenkittl 1994, §4.5):
-/// placement(q) = T + R·(S·q), R with the rotate op's Euler convention.
-struct Placement {
-  Vec3 translate{0.0}, rotate{0.0}, scale{1.0};
-  bool operator==(const Placement&) const = default;
-};
 
 struct Function {
   std::string name = "f1";
@@ -33,6 +28,11 @@ struct Function {
   FunctionKind kind = FunctionKind::Grid;
   /// "matrix" of a Matrix function: m×m, rows summing to 1; λ ← λ·matrix (Thollot et al. 1997, §3.1).
   std::vector<std::vector<double>> matrix;
+  /// "set" of a Condensation or Median function (Sokolov & Gentil, §3.1–3.2); unused by the others.
+  CondensationSet set;
+  /// "rotate" of a Median function: degrees per unit of distance between the sets' centres, about z
+  /// (Sokolov & Gentil, §4.1: the rotated median).
+  double rotate = 0.0;
   /// "interpolation": how the final function's lattice maps points (ignored in the loop).
   LatticeInterpolation interpolation = LatticeInterpolation::Trilinear;
   bool operator==(const Function&) const = default;

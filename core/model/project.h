@@ -8,6 +8,7 @@
 #include "model/function.h"
 #include "model/keyframe_track.h"
 #include "model/shading_settings.h"
+#include "model/volume_settings.h"
 
 namespace gridifs {
 
@@ -48,6 +49,8 @@ struct Project {
   KeyframeTracks tracks;
   /// "space": control points of a free-form IFS (model/free_form.h); its functions are Matrix ones.
   std::optional<FreeFormSpace> space;
+  /// "volume": the density volume's settings (Sokolov & Gentil, §3.4); absent until first set.
+  std::optional<VolumeSettings> volume;
   bool operator==(const Project&) const = default;
 };
 

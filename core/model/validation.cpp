@@ -86,6 +86,31 @@ void validateRenderSettings(const RenderSettings& r, const std::string& path) {
 
 namespace {
 
+// Condensation and median functions (Sokolov & Gentil, §3.1–3.2) and the "volume" block.
+void checkCondensationFunctions(const Project& project) {
+  for (std::size_t f = 0; f < project.functions.size(); ++f) {
+    const Function& fn = project.functions[f];
+    if (!isSetKind(fn.kind)) continue;
+    const std::string path = item("functions", f);
+    if (project.space) fail(join(path, "kind"), "a project with control points (\"space\") needs \"matrix\" functions");
+    if (!fn.ops.empty()) fail(join(path, "ops"), "a function with a condensation set has no grid, so no grid operations");
+    checkCondensationSet(fn.set, join(path, "set"));
+    if (!std::isfinite(fn.rotate) || std::abs(fn.rotate) > 1e5)
+      fail(join(path, "rotate"), "expected degrees per unit distance between -100000 and 100000");
+  }
+  if (project.final_function && isSetKind(project.final_function->kind))
+    fail("final.kind", "the final function must be a grid (a lattice)");
+  if (project.volume) {
+    const VolumeSettings& v = *project.volume;
+    if (v.resolution < kMinVolumeResolution || v.resolution > kMaxVolumeResolution)
+      fail("volume.resolution", "expected an integer between " + std::to_string(kMinVolumeResolution) + " and " +
+                                    std::to_string(kMaxVolumeResolution));
+    if (v.iterations < 1 || v.iterations > 1'000'000) fail("volume.iterations", "expected an integer between 1 and 1000000");
+    if (v.skip < 0 || v.skip >= v.iterations) fail("volume.skip", "expected fewer skipped iterations than iterations");
+    if (v.samples < 1 || v.samples > 100'000'000'000LL) fail("volume.samples", "expected between 1 and 1e11 samples");
+  }
+}
+
 // Checks `project`; a function equal to the one at the same place of `trusted` (a project that
 // passed these checks) keeps its verdict, so its operations are not checked again.
 void validate(const Project& project, const Project* trusted) {
@@ -130,6 +155,7 @@ void validate(const Project& project, const Project* trusted) {
     fail("functions", "every active function has weight 0 (weights must not all be zero)");
   checkTransitions(project);
   checkFreeForm(project);
+  checkCondensationFunctions(project);
 }
 
 }  // namespace

@@ -87,6 +87,8 @@ struct alignas(64) HotFunction {
   const NodePair* pairs;
   std::uint32_t strideJ, strideK;
   const float* matrix;  // a free-form IFS's matrix rows (CompiledFunction::matrix), else null
+  const float* points;  // a condensation function's samples of its set (x y z 0 each), else null
+  std::uint32_t pointCount;
 };
 
 inline HotFunction makeHot(const CompiledFunction& f) {
@@ -101,6 +103,8 @@ inline HotFunction makeHot(const CompiledFunction& f) {
   h.strideJ = f.pairStrideJ;
   h.strideK = f.pairStrideK;
   h.matrix = f.matrix.empty() ? nullptr : f.matrix.data();
+  h.points = f.points.empty() ? nullptr : f.points.data();
+  h.pointCount = std::uint32_t(f.points.size() / 4);
   return h;
 }
 
@@ -214,6 +218,9 @@ struct HotIfs {
   /// Free-form IFS (barycentric_kernel.h): m coordinates and the padded size in blocks of 8
   /// floats; 0 blocks for a grid IFS.
   std::uint32_t barycentricSize = 0, barycentricBlocks = 0;
+  /// Whether some function is a constant condensation (HotFunction::points): the loop with the
+  /// jump to a set is a separate instantiation, so grid-only IFSs run the loop they always ran.
+  bool condensation = false;
 
   [[gnu::always_inline]] std::uint32_t choose(std::uint64_t r) const {
     const std::uint32_t column = std::uint32_t((std::uint64_t(std::uint32_t(r >> 32)) * count) >> 32);
@@ -235,7 +242,9 @@ struct ChainCounters {
 
 /// One iteration of one lane; returns 1 when a point was plotted. kRestricted: walk the
 /// transition matrix's Markov chain (Thollot et al. §3.2) instead of independent choices.
-template <bool kRestricted, bool kRestarts, class Plot>
+/// kCondensation: a function with points is Barnsley's condensation map (Sokolov & Gentil, §3.1):
+/// the point jumps to a uniformly random sample of its set.
+template <bool kRestricted, bool kRestarts, bool kCondensation = false, class Plot>
 [[gnu::always_inline]] inline int stepLane(ChainState& st, int lane, const HotIfs& ifs, Plot& plot, std::int64_t& bad) {
   if constexpr (kRestarts)
     if (++st.age[lane] > ifs.restartInterval) st.restartLane(lane, ifs.skip);
@@ -243,7 +252,17 @@ template <bool kRestricted, bool kRestarts, class Plot>
   if constexpr (kRestricted) index = ifs.chooseAfter(st.last[lane], st.rng.next());
   else index = ifs.choose(st.rng.next());
   const HotFunction& f = ifs.functions[index];
-  const v4f p = apply(f, st.p[lane]);
+  v4f p;
+  if constexpr (kCondensation) {
+    if (f.points) {
+      const std::uint64_t r = std::uint32_t(st.rng.next());
+      p = load4(f.points + 4 * ((r * f.pointCount) >> 32));
+    } else {
+      p = apply(f, st.p[lane]);
+    }
+  } else {
+    p = apply(f, st.p[lane]);
+  }
   const v4f col = st.color[lane] + (f.color - st.color[lane]) * f.speed;  // Draves & Reckase 2003, §5: c = mix(c, c_i, speed)
   if (!inBounds(p, ifs.escapeBound)) [[unlikely]] {
     ++bad;
@@ -279,8 +298,18 @@ template <class Plot>
   ChainState local = st;
   const std::int64_t rounds = count / kLanes;
   static_assert(kLanes == 4);
-  // The restricted loop is a separate instantiation, so the unrestricted one is unchanged.
-  if (ifs.transitionRows && ifs.restartInterval) {
+  if (ifs.condensation) [[unlikely]] {
+    // Condensation maps (Sokolov & Gentil, §3.1) in their own instantiations.
+    auto lanes = [&]<bool kRestricted, bool kRestarts>() {
+      for (std::int64_t n = 0; n < rounds; ++n)
+        for (int l = 0; l < kLanes; ++l) plotted += stepLane<kRestricted, kRestarts, true>(local, l, ifs, plot, bad);
+      for (int l = 0; l < int(count % kLanes); ++l) plotted += stepLane<kRestricted, kRestarts, true>(local, l, ifs, plot, bad);
+    };
+    if (ifs.transitionRows && ifs.restartInterval) lanes.template operator()<true, true>();
+    else if (ifs.transitionRows) lanes.template operator()<true, false>();
+    else lanes.template operator()<false, false>();
+  } else if (ifs.transitionRows && ifs.restartInterval) {
+    // The restricted loop is a separate instantiation, so the unrestricted one is unchanged.
     for (std::int64_t n = 0; n < rounds; ++n)
       for (int l = 0; l < kLanes; ++l) plotted += stepLane<true, true>(local, l, ifs, plot, bad);
     for (int l = 0; l < int(count % kLanes); ++l) plotted += stepLane<true, true>(local, l, ifs, plot, bad);

@@ -73,6 +73,7 @@ struct PreparedJob {
     hotIfs.skip = job.skip;
     hotIfs.escapeBound = limits::kEscapeBound;
     hotIfs.restartInterval = ifs->restartInterval;
+    for (const CompiledFunction& f : ifs->functions) hotIfs.condensation |= !f.points.empty();
     if (ifs->barycentricSize > 0) {
       if (ifs->barycentricPad % 8 != 0 || ifs->barycentricPad > std::uint32_t(kernel::kMaxBarycentricPad) ||
           ifs->barycentricSize > ifs->barycentricPad)

@@ -5,6 +5,7 @@
 #include <functional>
 #include <string>
 
+#include "base/hash.h"
 #include "model/bezier_lattice.h"
 #include "model/stack_evaluator.h"
 #include "model/transition_matrix.h"
@@ -150,9 +151,32 @@ std::vector<AliasEntry> buildAliasTable(const std::vector<double>& weights) {
 
 namespace {
 
+/// Samples in the condensation table: enough that the chaos game's picks look continuous.
+constexpr std::size_t kCondensationSamples = 1 << 16;
+
+CompiledFunction compileCondensationFunction(const Function& f, const CondensationSampler& sampler, std::size_t index) {
+  std::vector<Vec3> samples;
+  if (f.set.shape == SetShape::Mesh || f.set.shape == SetShape::Vdb) {
+    if (!sampler) throw ModelError("set", "a set read from a file needs its project folder to be sampled");
+    samples = sampler(index);
+  } else {
+    samples = samplePrimitive(f.set, kCondensationSamples, splitmix64(index + 1));
+  }
+  if (samples.empty()) throw ModelError("set", "the set is empty");
+  CompiledFunction c;
+  c.sourceIndex = index;
+  c.weight = f.weight;
+  for (int d = 0; d < 3; ++d) c.color[d] = float(f.color[d]);
+  c.color[3] = float(f.palette_index);
+  c.colorSpeed = float(f.color_speed);
+  c.points.reserve(samples.size() * 4);
+  for (const Vec3& p : samples) c.points.insert(c.points.end(), {float(p.x), float(p.y), float(p.z), 0.0f});
+  return c;
+}
+
 std::shared_ptr<const CompiledIfs> compileWith(
     const Project& project, const std::function<std::shared_ptr<const Grid>(std::size_t)>& gridOf,
-    const std::function<std::shared_ptr<const Grid>()>& finalGrid) {
+    const std::function<std::shared_ptr<const Grid>()>& finalGrid, const CondensationSampler& sampler) {
   auto ifs = std::make_shared<CompiledIfs>();
   if (project.space) {
     ifs->barycentricSize = std::uint32_t(project.space->control_points.size());
@@ -164,6 +188,13 @@ std::shared_ptr<const CompiledIfs> compileWith(
     if (f.muted || !(f.weight > 0.0)) continue;
     const std::string path = "functions[" + std::to_string(i) + "]";
     try {
+      if (f.kind == FunctionKind::Median)
+        throw ModelError("kind", "a median function maps sets, not points: compute its density volume (gridifs volume)");
+      if (f.kind == FunctionKind::Condensation) {
+        ifs->functions.push_back(compileCondensationFunction(f, sampler, i));
+        weights.push_back(f.weight);
+        continue;
+      }
       if (f.kind == FunctionKind::Matrix) {
         if (!project.space) throw ModelError("kind", "a \"matrix\" function needs control points");
         ifs->functions.push_back(compileMatrixFunction(f, *project.space, ifs->barycentricPad, i));
@@ -206,17 +237,18 @@ std::shared_ptr<const CompiledIfs> compileWith(
 
 }  // namespace
 
-std::shared_ptr<const CompiledIfs> compileIfs(const Project& project, const EvaluationCache& evaluation) {
+std::shared_ptr<const CompiledIfs> compileIfs(const Project& project, const EvaluationCache& evaluation,
+                                              const CondensationSampler& sampler) {
   return compileWith(
       project, [&](std::size_t i) { return evaluation.function(project, i); },
-      [&] { return evaluation.finalFunction(project); });
+      [&] { return evaluation.finalFunction(project); }, sampler);
 }
 
-std::shared_ptr<const CompiledIfs> compileIfs(const Project& project) {
+std::shared_ptr<const CompiledIfs> compileIfs(const Project& project, const CondensationSampler& sampler) {
   return compileWith(
       project,
       [&](std::size_t i) { return evaluateFunctionAt(project.functions[i], "functions[" + std::to_string(i) + "]"); },
-      [&] { return evaluateFunctionAt(*project.final_function, "final"); });
+      [&] { return evaluateFunctionAt(*project.final_function, "final"); }, sampler);
 }
 
 }  // namespace gridifs

@@ -3,6 +3,7 @@
 // arrays). Built once per edit on the UI thread, then shared read-only by all chaos-game workers.
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -39,6 +40,9 @@ struct CompiledFunction {
   /// then (T·P)_i as x y z 0 (P the control points) and 4 zeros, so one pass over the rows gives
   /// both λ·T and the plotted point P·(λ·T).
   std::vector<float> matrix;
+  /// A constant condensation function (Sokolov & Gentil, §3.1; `pairs` is then empty): uniform
+  /// random samples of its set as x y z 0, of which the chaos game picks one at random.
+  std::vector<float> points;
 
   /// Reference (scalar) evaluation, identical in result to the renderer's inner loop:
   /// clamp p to X (NaN → -1), locate the cell, interpolate trilinearly in float.
@@ -92,13 +96,19 @@ CompiledFunction compileMatrixFunction(const Function& function, const FreeFormS
 /// Builds the alias table for `weights` (all ≥ 0, at least one > 0). Exposed for tests.
 std::vector<AliasEntry> buildAliasTable(const std::vector<double>& weights);
 
+/// Samples of the set of condensation function `functionIndex` (Project::functions), uniform over
+/// its volume or surface. compileIfs samples primitive sets itself; a sampler is needed for sets
+/// read from files (volume/condensation_sampler.h makes one).
+using CondensationSampler = std::function<std::vector<Vec3>(std::size_t functionIndex)>;
+
 /// Compiles `project` reading evaluated grids through `evaluation` (the Document's cache). Call on
 /// the thread that owns the cache. Throws ModelError (with a JSON path) when a stack fails to evaluate or when no
 /// unmuted function has a positive weight.
-std::shared_ptr<const CompiledIfs> compileIfs(const Project& project, const EvaluationCache& evaluation);
+std::shared_ptr<const CompiledIfs> compileIfs(const Project& project, const EvaluationCache& evaluation,
+                                              const CondensationSampler& sampler = {});
 
 /// The same from a bare project (evaluates every stack; no cache). Thread-safe for distinct
 /// projects. Throws ModelError as above.
-std::shared_ptr<const CompiledIfs> compileIfs(const Project& project);
+std::shared_ptr<const CompiledIfs> compileIfs(const Project& project, const CondensationSampler& sampler = {});
 
 }  // namespace gridifs

@@ -1,0 +1,218 @@
+#include "io/volume_io.h"
+
+#include <cmath>
+
+namespace gridifs::volume_io {
+namespace {
+
+using json = nlohmann::json;
+using ordered_json = nlohmann::ordered_json;
+
+[[noreturn]] void fail(const std::string& path, const std::string& message) { throw ModelError(path, message); }
+
+double readFinite(const json& obj, const char* key, const std::string& path, double fallback) {
+  auto it = obj.find(key);
+  if (it == obj.end()) return fallback;
+  const std::string p = path + "." + key;
+  if (!it->is_number()) fail(p, "expected a number");
+  const double v = it->get<double>();
+  if (!std::isfinite(v) || std::abs(v) > limits::kMaxCoordinate)
+    fail(p, "expected a finite number of magnitude at most 1e6");
+  return v;
+}
+
+Vec3 readVec3(const json& obj, const char* key, const std::string& path, Vec3 fallback) {
+  auto it = obj.find(key);
+  if (it == obj.end()) return fallback;
+  const std::string p = path + "." + key;
+  if (!it->is_array() || it->size() != 3) fail(p, "expected an array of 3 numbers");
+  Vec3 v;
+  for (int d = 0; d < 3; ++d) {
+    const json& c = (*it)[std::size_t(d)];
+    if (!c.is_number() || !std::isfinite(c.get<double>()) || std::abs(c.get<double>()) > limits::kMaxCoordinate)
+      fail(p + "[" + std::to_string(d) + "]", "expected a finite number of magnitude at most 1e6");
+    v[d] = c.get<double>();
+  }
+  return v;
+}
+
+std::string readText(const json& j, const std::string& path) {
+  if (!j.is_string() || j.get_ref<const std::string&>().size() > 4096) fail(path, "expected a string");
+  return j.get<std::string>();
+}
+
+std::int64_t readInteger(const json& obj, const char* key, const std::string& path, std::int64_t fallback,
+                         std::int64_t lo, std::int64_t hi) {
+  auto it = obj.find(key);
+  if (it == obj.end()) return fallback;
+  const std::string p = path + "." + key;
+  const std::string range = "expected an integer between " + std::to_string(lo) + " and " + std::to_string(hi);
+  if (!it->is_number()) fail(p, range);
+  const double v = it->get<double>();
+  if (!std::isfinite(v) || v != std::floor(v) || v < double(lo) || v > double(hi)) fail(p, range);
+  return it->is_number_float() ? std::int64_t(v) : it->get<std::int64_t>();
+}
+
+ordered_json vec(const Vec3& v) { return ordered_json::array({v.x, v.y, v.z}); }
+
+CondensationSet readSet(const json& s, const std::string& path) {
+  if (!s.is_object()) fail(path, "expected an object with \"primitive\", \"mesh\" or \"vdb\"");
+  CondensationSet set;
+  const int sources = int(s.contains("primitive")) + int(s.contains("mesh")) + int(s.contains("vdb"));
+  if (sources != 1) fail(path, "expected exactly one of \"primitive\", \"mesh\" or \"vdb\"");
+  auto allowOnly = [&](std::initializer_list<const char*> keys) {
+    for (auto it = s.begin(); it != s.end(); ++it) {
+      bool known = false;
+      for (const char* k : keys) known |= it.key() == k;
+      if (!known) fail(path + "." + it.key().substr(0, 32), "this set has no such field");
+    }
+  };
+  if (auto it = s.find("primitive"); it != s.end()) {
+    const std::string name = readText(*it, path + ".primitive");
+    set.center = readVec3(s, "center", path, Vec3{0.0});
+    if (name == "sphere") {
+      set.shape = SetShape::Sphere;
+      allowOnly({"primitive", "center", "radius"});
+      set.radius = readFinite(s, "radius", path, set.radius);
+    } else if (name == "box") {
+      set.shape = SetShape::Box;
+      allowOnly({"primitive", "center", "size"});
+      set.size = readVec3(s, "size", path, set.size);
+    } else if (name == "torus") {
+      set.shape = SetShape::Torus;
+      allowOnly({"primitive", "center", "major", "minor", "axis"});
+      set.major = readFinite(s, "major", path, set.major);
+      set.minor = readFinite(s, "minor", path, set.minor);
+      set.axis = readVec3(s, "axis", path, set.axis);
+    } else {
+      fail(path + ".primitive", "expected \"sphere\", \"box\" or \"torus\", found \"" + name.substr(0, 32) + "\"");
+    }
+  } else if (auto mesh = s.find("mesh"); mesh != s.end()) {
+    set.shape = SetShape::Mesh;
+    allowOnly({"mesh", "fill", "placement"});
+    set.path = readText(*mesh, path + ".mesh");
+    if (auto fill = s.find("fill"); fill != s.end()) {
+      const std::string word = readText(*fill, path + ".fill");
+      if (word == "solid")
+        set.fill = SetFill::Solid;
+      else if (word == "surface")
+        set.fill = SetFill::Surface;
+      else
+        fail(path + ".fill", "expected \"solid\" or \"surface\"");
+    }
+    if (auto pl = s.find("placement"); pl != s.end()) {
+      const std::string p = path + ".placement";
+      if (!pl->is_object()) fail(p, "expected an object with translate, rotate and scale");
+      set.placement.translate = readVec3(*pl, "translate", p, Vec3{0.0});
+      set.placement.rotate = readVec3(*pl, "rotate", p, Vec3{0.0});
+      set.placement.scale = readVec3(*pl, "scale", p, Vec3{1.0});
+    }
+  } else {
+    set.shape = SetShape::Vdb;
+    allowOnly({"vdb", "grid", "threshold"});
+    set.path = readText(s["vdb"], path + ".vdb");
+    if (auto g = s.find("grid"); g != s.end()) set.grid = readText(*g, path + ".grid");
+    set.threshold = readFinite(s, "threshold", path, set.threshold);
+  }
+  checkCondensationSet(set, path);
+  return set;
+}
+
+ordered_json writeSet(const CondensationSet& set) {
+  ordered_json o;
+  switch (set.shape) {
+    case SetShape::Sphere:
+      o["primitive"] = "sphere";
+      o["center"] = vec(set.center);
+      o["radius"] = set.radius;
+      break;
+    case SetShape::Box:
+      o["primitive"] = "box";
+      o["center"] = vec(set.center);
+      o["size"] = vec(set.size);
+      break;
+    case SetShape::Torus:
+      o["primitive"] = "torus";
+      o["center"] = vec(set.center);
+      o["major"] = set.major;
+      o["minor"] = set.minor;
+      o["axis"] = vec(set.axis);
+      break;
+    case SetShape::Mesh:
+      o["mesh"] = set.path;
+      o["fill"] = setFillName(set.fill);
+      o["placement"] = {{"translate", vec(set.placement.translate)},
+                        {"rotate", vec(set.placement.rotate)},
+                        {"scale", vec(set.placement.scale)}};
+      break;
+    case SetShape::Vdb:
+      o["vdb"] = set.path;
+      o["grid"] = set.grid;
+      o["threshold"] = set.threshold;
+      break;
+  }
+  return o;
+}
+
+}  // namespace
+
+void readSetFunctionFields(const json& f, const std::string& path, Function& fn) {
+  if (!isSetKind(fn.kind)) {
+    for (const char* key : {"set", "rotate"})
+      if (f.contains(key))
+        fail(path + "." + key,
+             "only a function of kind \"condensation\" or \"median\" has a \"" + std::string(key) + "\"");
+    return;
+  }
+  for (const char* gridField : {"resolution", "placement", "ops"})
+    if (f.contains(gridField))
+      fail(path + "." + gridField,
+           "a function with a condensation set has no grid, so no \"" + std::string(gridField) + "\"");
+  auto it = f.find("set");
+  if (it == f.end()) fail(path + ".set", "a \"" + std::string(functionKindName(fn.kind)) + "\" function needs its set");
+  fn.set = readSet(*it, path + ".set");
+  if (fn.kind == FunctionKind::Median)
+    fn.rotate = readFinite(f, "rotate", path, 0.0);
+  else if (f.contains("rotate"))
+    fail(path + ".rotate", "only a \"median\" function is rotated");
+}
+
+ordered_json writeSetFunction(const Function& fn) {
+  ordered_json o;
+  o["name"] = fn.name;
+  o["kind"] = functionKindName(fn.kind);
+  o["weight"] = fn.weight;
+  if (fn.kind == FunctionKind::Median) o["rotate"] = fn.rotate;
+  o["set"] = writeSet(fn.set);
+  o["color"] = vec(fn.color);
+  o["palette_index"] = fn.palette_index;
+  o["color_speed"] = fn.color_speed;
+  o["muted"] = fn.muted;
+  return o;
+}
+
+std::optional<VolumeSettings> readVolume(const json& root) {
+  auto it = root.find("volume");
+  if (it == root.end() || it->is_null()) return std::nullopt;
+  if (!it->is_object()) fail("volume", "expected an object");
+  VolumeSettings v;
+  v.resolution =
+      int(readInteger(*it, "resolution", "volume", v.resolution, kMinVolumeResolution, kMaxVolumeResolution));
+  v.iterations = int(readInteger(*it, "iterations", "volume", v.iterations, 1, 1'000'000));
+  v.skip = int(readInteger(*it, "skip", "volume", v.skip, 0, 1'000'000));
+  v.seed = std::uint64_t(readInteger(*it, "seed", "volume", std::int64_t(v.seed), 0, INT64_MAX));
+  v.samples = readInteger(*it, "samples", "volume", v.samples, 1, 100'000'000'000LL);
+  return v;
+}
+
+void writeVolume(const Project& project, ordered_json& root) {
+  if (!project.volume) return;
+  const VolumeSettings& v = *project.volume;
+  root["volume"] = {{"resolution", v.resolution},
+                    {"iterations", v.iterations},
+                    {"skip", v.skip},
+                    {"seed", v.seed},
+                    {"samples", v.samples}};
+}
+
+}  // namespace gridifs::volume_io

@@ -1,0 +1,244 @@
+#include "volume/measure_attractor.h"
+
+#include <algorithm>
+#include <chrono>
+#include <thread>
+
+#include "base/hash.h"
+#include "base/parallel.h"
+#include "model/stack_evaluator.h"
+#include "render/chaos_kernel.h"
+#include "render/chaos_renderer.h"
+#include "volume/condensation_sampler.h"
+#include "volume/set_function.h"
+#include "volume/set_voxelizer.h"
+
+namespace gridifs {
+namespace {
+
+bool cancelled(const VolumeJob& job) { return job.cancel && job.cancel->load(std::memory_order_relaxed); }
+
+std::vector<std::size_t> activeFunctions(const Project& project) {
+  std::vector<std::size_t> out;
+  for (std::size_t i = 0; i < project.functions.size(); ++i)
+    if (!project.functions[i].muted && project.functions[i].weight > 0.0) out.push_back(i);
+  if (out.empty()) throw ModelError("functions", "no unmuted function has a positive weight");
+  return out;
+}
+
+/// Sokolov & Gentil, §3.4: the random iteration algorithm over sets.
+DensityVolume iterateSets(const Project& project, const VolumeJob& job) {
+  const VolumeSettings& settings = job.settings;
+  const VoxelLattice lattice{settings.resolution};
+  const int threads = resolveThreadCount(job.threads);
+  const std::vector<std::size_t> active = activeFunctions(project);
+  std::vector<SetFunction> functions;
+  std::vector<double> cumulative;
+  double total = 0.0;
+  for (std::size_t i : active) {
+    const Function& f = project.functions[i];
+    const std::string path = "functions[" + std::to_string(i) + "]";
+    switch (f.kind) {
+      case FunctionKind::Median:
+        functions.push_back(
+            SetFunction::median(voxelizeSet(f.set, lattice, job.projectFolder, path + ".set"), f.rotate));
+        break;
+      case FunctionKind::Condensation:
+        functions.push_back(SetFunction::constant(voxelizeSet(f.set, lattice, job.projectFolder, path + ".set")));
+        break;
+      case FunctionKind::Grid:
+        functions.push_back(SetFunction::pointMap(compileFunction(f, *evaluateFunctionAt(f, path), i), lattice));
+        break;
+      case FunctionKind::Matrix:
+        throw ModelError(path + ".kind", "a \"matrix\" function cannot map voxel sets");
+    }
+    total += f.weight;
+    cumulative.push_back(total);
+  }
+  const bool colored = hasColorVolume(project);
+  DensityVolume volume{lattice, std::vector<float>(lattice.voxelCount(), 0.0f), {}, 0.0};
+  if (colored) volume.color.assign(lattice.voxelCount() * 3, 0.0f);
+  std::uint64_t state = splitmix64(settings.seed ^ 0x9E3779B97F4A7C15ull);
+  auto next = [&] { return splitmix64(state++); };
+  // "draw a random non-empty binary image I_0": a few random voxels.
+  auto randomSet = [&] {
+    VoxelSet s{lattice, {}};
+    const int count = 1 + int(next() % 64);
+    for (int v = 0; v < count; ++v) s.voxels.push_back(std::uint32_t(next() % lattice.voxelCount()));
+    normalizeVoxels(s.voxels);
+    return s;
+  };
+  VoxelSet current = randomSet(), image;
+  SetScratch scratch;
+  Vec3 color{0.5};
+  const int skip = std::min(settings.skip, settings.iterations - 1);
+  for (int k = 0; k < settings.iterations && !cancelled(job); ++k) {
+    const double r = double(next() >> 11) * (total / 9007199254740992.0);
+    const std::size_t pick =
+        std::size_t(std::upper_bound(cumulative.begin(), cumulative.end(), r) - cumulative.begin());
+    const std::size_t i = std::min(pick, functions.size() - 1);
+    functions[i].apply(current, image, scratch, threads);
+    std::swap(current, image);
+    // A point map may send the whole set out of X; the iteration needs a non-empty set.
+    if (current.empty()) current = randomSet();
+    const Function& f = project.functions[active[i]];
+    color += (f.color - color) * f.color_speed;  // Draves & Reckase 2003, §5, for the whole set
+    if (k >= skip) {
+      float* density = volume.density.data();
+      float* sums = volume.color.empty() ? nullptr : volume.color.data();
+      const Vec3 c = color;
+      parallelFor(current.size(), threads, 1 << 14, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t v = begin; v < end; ++v) {
+          const std::uint32_t voxel = current.voxels[v];
+          density[voxel] += 1.0f;
+          if (sums)
+            for (int d = 0; d < 3; ++d) sums[3 * std::size_t(voxel) + std::size_t(d)] += float(c[d]);
+        }
+      });
+      if (job.partial) job.partial(volume);
+    }
+    if (job.progress) job.progress(double(k + 1) / settings.iterations);
+  }
+  normalizeDensity(volume);
+  return volume;
+}
+
+/// P = hits per voxel, plotted by the chaos kernel. Like the z-buffer plotter, each hit is
+/// deferred by kDefer samples after a prefetch of its voxel: the volume is far larger than the
+/// caches, so the miss overlaps the next samples' arithmetic instead of stalling the chain.
+struct VoxelBins {
+  std::uint32_t* counts;
+  float* colors;  // 3 per voxel, or null
+  float half;     // N / 2
+  float n;
+  std::size_t stride;
+
+  static constexpr unsigned kDefer = 8;
+  struct Pending {
+    std::size_t voxel = ~std::size_t(0);
+    kernel::v4f color{};
+  };
+  Pending pending[kDefer] = {};
+  unsigned next = 0;
+
+  void commit(const Pending& p) {
+    std::atomic_ref<std::uint32_t>(counts[p.voxel]).fetch_add(1, std::memory_order_relaxed);
+    if (colors) {
+      // Relaxed read-modify-write: concurrent plots of one voxel may drop a colour sample, which
+      // changes a mean by a negligible amount (the counts themselves are exact).
+      for (int d = 0; d < 3; ++d) {
+        std::atomic_ref<float> sum(colors[3 * p.voxel + std::size_t(d)]);
+        sum.store(sum.load(std::memory_order_relaxed) + p.color[d], std::memory_order_relaxed);
+      }
+    }
+  }
+
+  void flush() {
+    for (unsigned k = 0; k < kDefer; ++k) {
+      Pending& p = pending[(next + k) % kDefer];
+      if (p.voxel != ~std::size_t(0)) commit(p);
+      p.voxel = ~std::size_t(0);
+    }
+  }
+
+  [[gnu::always_inline]] int operator()(kernel::v4f q, kernel::v4f col) {
+    const kernel::v4f s = (q + 1.0f) * half;
+    if (!(s[0] >= 0.0f && s[0] < n && s[1] >= 0.0f && s[1] < n && s[2] >= 0.0f && s[2] < n)) return 0;  // NaN fails
+    const std::size_t v = std::size_t(std::uint32_t(s[0])) +
+                          stride * (std::size_t(std::uint32_t(s[1])) + stride * std::size_t(std::uint32_t(s[2])));
+    __builtin_prefetch(counts + v, 1);
+    if (colors) __builtin_prefetch(colors + 3 * v, 1);
+    Pending& slot = pending[next++ % kDefer];
+    if (slot.voxel != ~std::size_t(0)) commit(slot);
+    slot.voxel = v;
+    slot.color = col;
+    return 1;
+  }
+};
+
+GRIDIFS_KERNEL_CLONES void runBins(kernel::ChainState& chain, const kernel::HotIfs& ifs, std::int64_t count,
+                                   VoxelBins& bins, kernel::ChainCounters& counters) {
+  kernel::runChain(chain, ifs, count, bins, counters);
+}
+
+DensityVolume binPoints(const Project& project, const VolumeJob& job) {
+  const VolumeSettings& settings = job.settings;
+  const VoxelLattice lattice{settings.resolution};
+  const auto compiled = compileIfs(project, makeCondensationSampler(project, job.projectFolder));
+  if (compiled->barycentricSize > 0)
+    throw ModelError("space", "density volumes of free-form (control point) IFSs are not supported yet");
+  std::vector<kernel::HotFunction> hot;
+  for (const CompiledFunction& f : compiled->functions) hot.push_back(kernel::makeHot(f));
+  if (compiled->finalFunction) hot.push_back(kernel::makeHot(*compiled->finalFunction));
+  kernel::HotIfs ifs;
+  ifs.functions = hot.data();
+  ifs.alias = compiled->alias.data();
+  ifs.transitionRows = compiled->transitionAlias.empty() ? nullptr : compiled->transitionAlias.data();
+  ifs.count = std::uint32_t(compiled->functions.size());
+  ifs.finalFunction = compiled->finalFunction ? &hot.back() : nullptr;
+  ifs.skip = settings.skip;
+  ifs.escapeBound = limits::kEscapeBound;
+  ifs.restartInterval = compiled->restartInterval;
+  for (const CompiledFunction& f : compiled->functions) ifs.condensation |= !f.points.empty();
+
+  std::vector<std::uint32_t> counts(lattice.voxelCount(), 0);
+  std::vector<float> colors;
+  if (hasColorVolume(project)) colors.assign(lattice.voxelCount() * 3, 0.0f);
+  const int threads = resolveThreadCount(job.threads);
+  std::atomic<std::int64_t> done{0};
+  constexpr std::int64_t kBatch = 1 << 18;
+  std::vector<std::thread> workers;
+  for (int w = 0; w < threads; ++w) {
+    workers.emplace_back([&, w] {
+      kernel::DenormalsAreZero daz;
+      kernel::ChainState chain = kernel::ChainState::start(settings.seed, std::uint64_t(w), ifs.skip);
+      kernel::ChainCounters counters;
+      VoxelBins bins{counts.data(), colors.empty() ? nullptr : colors.data(), 0.5f * float(lattice.n), float(lattice.n),
+                     std::size_t(lattice.n)};
+      std::int64_t left = settings.samples / threads + (w < settings.samples % threads ? 1 : 0);
+      while (left > 0 && !cancelled(job)) {
+        const std::int64_t batch = std::min(left, kBatch);
+        runBins(chain, ifs, batch, bins, counters);
+        left -= batch;
+        done.fetch_add(batch, std::memory_order_relaxed);
+      }
+    });
+  }
+  if (job.progress) {
+    while (done.load(std::memory_order_relaxed) < settings.samples && !cancelled(job)) {
+      job.progress(double(done.load(std::memory_order_relaxed)) / double(settings.samples));
+      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+  }
+  for (std::thread& t : workers) t.join();
+  if (job.progress) job.progress(1.0);
+  DensityVolume volume{lattice, std::vector<float>(counts.begin(), counts.end()), std::move(colors), 0.0};
+  normalizeDensity(volume);
+  return volume;
+}
+
+}  // namespace
+
+bool usesSetIteration(const Project& project) {
+  for (const Function& f : project.functions)
+    if (f.kind == FunctionKind::Median && !f.muted && f.weight > 0.0) return true;
+  return false;
+}
+
+bool hasColorVolume(const Project& project) {
+  const Function* first = nullptr;
+  for (const Function& f : project.functions) {
+    if (f.muted || !(f.weight > 0.0)) continue;
+    if (!first)
+      first = &f;
+    else if (f.color != first->color)
+      return true;
+  }
+  return false;
+}
+
+DensityVolume computeDensityVolume(const Project& project, const VolumeJob& job) {
+  return usesSetIteration(project) ? iterateSets(project, job) : binPoints(project, job);
+}
+
+}  // namespace gridifs
