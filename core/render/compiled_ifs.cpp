@@ -215,8 +215,9 @@ std::shared_ptr<const CompiledIfs> compileIfs(const Project& project, const Eval
 std::shared_ptr<const CompiledIfs> compileIfs(const Project& project) {
   return compileWith(
       project,
-      [&](std::size_t i) { return evaluateFunctionAt(project.functions[i], "functions[" + std::to_string(i) + "]"); },
-      [&] { return evaluateFunctionAt(*project.final_function, "final"); });
+      [&](std::size_t i) { return evaluateFunctionAt(project.functions[i], "functions[" + std::to_string(i) + "]", project.time);
+      },
+      [&] { return evaluateFunctionAt(*project.final_function, "final", project.time); });
 }
 
 }  // namespace gridifs
