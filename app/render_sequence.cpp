@@ -50,11 +50,10 @@ FrameRange parseFrameRange(const std::string& text) {
   if (colon == std::string::npos || !parseWhole(text.substr(0, colon), r.first) ||
       !parseWhole(text.substr(colon + 1), r.last))
     throw CliError(kBadInput, "--frames must be two whole frame numbers A:B such as 0:23, not \"" + text + "\"");
-  if (r.last < r.first)
-    throw CliError(kBadInput, "--frames " + text + " ends before it starts (B must be at least A)");
+  if (r.last < r.first) throw CliError(kBadInput, "--frames " + text + " ends before it starts (B must be at least A)");
   if (r.count() > kMaxSequenceFrames)
-    throw CliError(kBadInput, "--frames " + text + " is " + std::to_string(r.count()) + " frames, more than the limit of " +
-                                  std::to_string(kMaxSequenceFrames));
+    throw CliError(kBadInput, "--frames " + text + " is " + std::to_string(r.count()) +
+                                  " frames, more than the limit of " + std::to_string(kMaxSequenceFrames));
   return r;
 }
 
@@ -75,9 +74,10 @@ void checkFramePattern(const std::string& pattern) {
     i = j;
   }
   if (conversions != 1)
-    throw CliError(kBadInput, "the output name " + pattern +
-                                  (conversions == 0 ? " has no frame number: a sequence needs a pattern such as out_%04d.png"
-                                                    : " has more than one frame number; use one such as %04d"));
+    throw CliError(kBadInput,
+                   "the output name " + pattern +
+                       (conversions == 0 ? " has no frame number: a sequence needs a pattern such as out_%04d.png"
+                                         : " has more than one frame number; use one such as %04d"));
 }
 
 std::string frameFileName(const std::string& pattern, std::int64_t frame) {
@@ -113,19 +113,20 @@ void assembleVideo(const std::string& pattern, const FrameRange& frames, double 
   const std::filesystem::path target(video);
   // The temporary keeps the extension: ffmpeg picks the container by it.
   const std::filesystem::path temporary =
-      target.parent_path() / (".~" + target.stem().string() + "." + std::to_string(::getpid()) + target.extension().string());
+      target.parent_path() /
+      (".~" + target.stem().string() + "." + std::to_string(::getpid()) + target.extension().string());
   char rate[32];
   std::snprintf(rate, sizeof rate, "%.17g", fps);
   const bool webm = lowerExtension(target) == "webm";
-  std::vector<std::string> args = {"ffmpeg", "-loglevel", "error", "-y", "-framerate", rate, "-start_number",
-                                   std::to_string(frames.first), "-i", pattern, "-frames:v",
-                                   std::to_string(frames.count())};
+  std::vector<std::string> args = {"ffmpeg",     "-loglevel", "error",         "-y",
+                                   "-framerate", rate,        "-start_number", std::to_string(frames.first),
+                                   "-i",         pattern,     "-frames:v",     std::to_string(frames.count())};
   if (webm) {
     args.insert(args.end(), {"-c:v", "libvpx-vp9", "-b:v", "0", "-crf", "30"});
   } else {
     // Even sizes for 4:2:0 chroma, which every player expects.
-    args.insert(args.end(), {"-c:v", "libx264", "-pix_fmt", "yuv420p", "-crf", "18", "-vf",
-                             "pad=ceil(iw/2)*2:ceil(ih/2)*2"});
+    args.insert(args.end(),
+                {"-c:v", "libx264", "-pix_fmt", "yuv420p", "-crf", "18", "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2"});
   }
   args.push_back(temporary.string());
   std::vector<char*> argv;

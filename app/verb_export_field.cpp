@@ -22,10 +22,12 @@ const FieldOp& findFieldOp(const Project& project, const std::string& path, cons
   static const std::regex kPath(R"(^(?:functions\[(\d{1,6})\]|(final))\.ops\[(\d{1,6})\]$)");
   std::smatch m;
   if (!std::regex_match(path, m, kPath))
-    throw CliError(kBadInput, "--op must name an operation like functions[0].ops[1] or final.ops[0], not \"" + path + "\"");
+    throw CliError(kBadInput,
+                   "--op must name an operation like functions[0].ops[1] or final.ops[0], not \"" + path + "\"");
   const Function* function = nullptr;
   if (m[2].matched) {
-    if (!project.final_function) throw CliError(kBadInput, file + " has no final function, so " + path + " does not exist");
+    if (!project.final_function)
+      throw CliError(kBadInput, file + " has no final function, so " + path + " does not exist");
     function = &*project.final_function;
   } else {
     const std::size_t index = std::stoul(m[1].str());
@@ -40,8 +42,8 @@ const FieldOp& findFieldOp(const Project& project, const std::string& path, cons
                                   std::to_string(function->ops.size()) + " operations)");
   const auto* field = std::get_if<FieldOp>(&function->ops[op].params);
   if (!field)
-    throw CliError(kBadInput, file + ": " + path + " is a " + opTypeName(function->ops[op].params) +
-                                  " operation, not a field");
+    throw CliError(kBadInput,
+                   file + ": " + path + " is a " + opTypeName(function->ops[op].params) + " operation, not a field");
   return *field;
 }
 

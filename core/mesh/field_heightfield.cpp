@@ -29,8 +29,8 @@ IfsMesh fieldHeightfield(const FractalField& field, double t, int size) {
   }
   for (std::size_t j = 0; j + 1 < n; ++j)
     for (std::size_t i = 0; i + 1 < n; ++i)
-      mesh.add_face({vertices[j * n + i], vertices[j * n + i + 1], vertices[(j + 1) * n + i + 1],
-                     vertices[(j + 1) * n + i]});
+      mesh.add_face(
+          {vertices[j * n + i], vertices[j * n + i + 1], vertices[(j + 1) * n + i + 1], vertices[(j + 1) * n + i]});
   return mesh;
 }
 

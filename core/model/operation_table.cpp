@@ -208,7 +208,8 @@ std::vector<OperationSpec> buildTable() {
            }});
 
   const char* const kExpressionHelp =
-      "Variables x y z (node), cx cy cz (center), i j k (indices), v1 v2 v3, t (time); sin cos tan asin acos atan sinh cosh "
+      "Variables x y z (node), cx cy cz (center), i j k (indices), v1 v2 v3, t (time); sin cos tan asin acos atan sinh "
+      "cosh "
       "tanh log exp sqrt abs min max pow rand(), pi, e";
   table.push_back(
       {.type = "calculator",
@@ -281,19 +282,21 @@ std::vector<OperationSpec> buildTable() {
                                       .sliderMin = 1,
                                       .sliderMax = FractalFieldParams::kMaxOctaves,
                                       .format = "%.0f"}),
-            param<&FieldOp::gain>({.key = "gain",
-                                   .label = "Gain",
-                                   .tooltip = "Weight of mesh k is proportional to gain^k: small gains give smooth fields",
-                                   .min = 1e-6,
-                                   .max = 1e3,
-                                   .sliderMin = 0.05,
-                                   .sliderMax = 1.5}),
+            param<&FieldOp::gain>(
+                {.key = "gain",
+                 .label = "Gain",
+                 .tooltip = "Weight of mesh k is proportional to gain^k: small gains give smooth fields",
+                 .min = 1e-6,
+                 .max = 1e3,
+                 .sliderMin = 0.05,
+                 .sliderMax = 1.5}),
             param<&FieldOp::interpolation>({.key = "interpolation",
                                             .label = "Interpolation",
                                             .tooltip = "linear: quadrilinear; cubic: Colonna's pseudo n-cubic (smooth)",
                                             .choices = &kFieldInterpolations}),
-            param<&FieldOp::seed>(
-                {.key = "seed", .label = "Seed", .tooltip = "Random values of the meshes; axes use seed, seed+1, seed+2"}),
+            param<&FieldOp::seed>({.key = "seed",
+                                   .label = "Seed",
+                                   .tooltip = "Random values of the meshes; axes use seed, seed+1, seed+2"}),
             param<&FieldOp::wind>({.key = "wind",
                                    .label = "Wind",
                                    .tooltip = "Drift of the field per unit of time (x, y, z)",
@@ -301,8 +304,9 @@ std::vector<OperationSpec> buildTable() {
                                    .sliderMax = 2.0}),
             param<&FieldOp::period>({.key = "period",
                                      .label = "Period",
-                                     .tooltip = "Lx, Ly, Lz, Lt: the field repeats with these periods; 0 = none. A period "
-                                                "in t makes a seamless loop",
+                                     .tooltip =
+                                         "Lx, Ly, Lz, Lt: the field repeats with these periods; 0 = none. A period "
+                                         "in t makes a seamless loop",
                                      .min = 0.0,
                                      .sliderMin = 0.0,
                                      .sliderMax = 10.0})},

@@ -59,12 +59,12 @@ TEST(AnimationCli, AFrameRenderedAloneEqualsThatFrameOfASequence) {
   EXPECT_FALSE(fs::exists(dir.path / "f_001.png"));
   EXPECT_FALSE(fs::exists(dir.path / "f_005.png"));
   // Frame 3 at t = 3/24 = 0.125, alone.
-  const auto alone = runGridifs("render " + quote(project.string()) + " -o " + quote((dir.path / "alone.png").string()) +
-                                " --time 0.125" + common);
+  const auto alone = runGridifs("render " + quote(project.string()) + " -o " +
+                                quote((dir.path / "alone.png").string()) + " --time 0.125" + common);
   ASSERT_EQ(alone.exitCode, 0) << alone.err;
   EXPECT_EQ(slurp(dir.path / "alone.png"), slurp(dir.path / "f_003.png"));
-  const auto single = runGridifs("render " + quote(project.string()) + " -o " + quote((dir.path / "one_%d.png").string()) +
-                                 " --frames 3:3" + common);
+  const auto single = runGridifs("render " + quote(project.string()) + " -o " +
+                                 quote((dir.path / "one_%d.png").string()) + " --frames 3:3" + common);
   ASSERT_EQ(single.exitCode, 0) << single.err;
   EXPECT_EQ(slurp(dir.path / "one_3.png"), slurp(dir.path / "f_003.png"));
   // The field moves with the wind: another frame is another image.
@@ -75,18 +75,19 @@ TEST(AnimationCli, MotionBlurMergesTimeSamples) {
   ScratchDir dir("anim-blur");
   const fs::path project = writeFieldProject(dir.path);
   const std::string common = " --threads 2 --seed 5 -q --time 0.5";
-  const auto sharp = runGridifs("render " + quote(project.string()) + " -o " + quote((dir.path / "sharp.png").string()) + common);
+  const auto sharp =
+      runGridifs("render " + quote(project.string()) + " -o " + quote((dir.path / "sharp.png").string()) + common);
   const auto blur = runGridifs("render " + quote(project.string()) + " -o " + quote((dir.path / "blur.png").string()) +
                                common + " --motion-blur 4");
-  const auto again = runGridifs("render " + quote(project.string()) + " -o " + quote((dir.path / "again.png").string()) +
-                                common + " --motion-blur 4");
+  const auto again = runGridifs("render " + quote(project.string()) + " -o " +
+                                quote((dir.path / "again.png").string()) + common + " --motion-blur 4");
   ASSERT_EQ(sharp.exitCode, 0) << sharp.err;
   ASSERT_EQ(blur.exitCode, 0) << blur.err;
   ASSERT_EQ(again.exitCode, 0) << again.err;
   EXPECT_NE(slurp(dir.path / "sharp.png"), slurp(dir.path / "blur.png"));
   EXPECT_EQ(slurp(dir.path / "blur.png"), slurp(dir.path / "again.png"));
-  const auto flame = runGridifs("render " + quote(project.string()) + " -o " + quote((dir.path / "flame.png").string()) +
-                                common + " --motion-blur 3 --mode flame");
+  const auto flame = runGridifs("render " + quote(project.string()) + " -o " +
+                                quote((dir.path / "flame.png").string()) + common + " --motion-blur 3 --mode flame");
   EXPECT_EQ(flame.exitCode, 0) << flame.err;
 }
 
