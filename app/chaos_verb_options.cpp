@@ -1,5 +1,6 @@
 #include "app/chaos_verb_options.h"
 
+#include "app/cli.h"
 #include "app/render_device_option.h"
 
 namespace gridifs::cli {
@@ -13,6 +14,7 @@ std::shared_ptr<ChaosVerbArgs> addChaosVerbOptions(CLI::App& app, const std::str
   app.add_option("--seed", a->overrides.seed, "random seed (default: the project's)");
   app.add_option("--threads", a->overrides.threads, threadsHelp);
   addDeviceOption(app, a->overrides.device);
+  addTimeOption(app, a->overrides.time);
   app.add_flag("-q,--quiet", a->quiet, "no progress bar");
   return a;
 }

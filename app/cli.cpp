@@ -6,6 +6,7 @@
 #include <iostream>
 #include <map>
 
+#include "io/animation_io.h"
 #include "io/project_io.h"
 
 namespace gridifs::cli {
@@ -66,6 +67,24 @@ Project loadForVerb(const std::filesystem::path& file) {
   } catch (const IoError& e) {
     throw CliError(kBadInput, "cannot read " + file.string() + ": " + e.what());
   }
+}
+
+void addTimeOption(CLI::App& app, std::optional<double>& time) {
+  app.add_option("--time", time,
+                 "the time in seconds at which to take the project: fields move and keyframed parameters "
+                 "take their values (default: the project's time)");
+}
+
+Project projectForVerbAt(const Project& loaded, const std::filesystem::path& file, std::optional<double> time) {
+  try {
+    return projectAtTime(loaded, time.value_or(loaded.time));
+  } catch (const ModelError& e) {
+    throw CliError(kBadInput, file.string() + ": " + e.what());
+  }
+}
+
+Project loadForVerbAt(const std::filesystem::path& file, std::optional<double> time) {
+  return projectForVerbAt(loadForVerb(file), file, time);
 }
 
 std::size_t resolveFunction(const Project& project, const std::string& which, const std::filesystem::path& file) {

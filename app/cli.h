@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -40,6 +41,16 @@ int run(int argc, char** argv);
 /// Loads a project for a verb; bad content → CliError(2), unreadable → CliError(2) too
 /// (an unreadable input file is bad input), each naming the file.
 Project loadForVerb(const std::filesystem::path& file);
+
+/// Declares `--time T` (seconds) on a verb that reads a project: the project as it stands at T.
+void addTimeOption(CLI::App& app, std::optional<double>& time);
+
+/// loadForVerb, then the project at `time` (default: its stored "time") with every keyframe track
+/// evaluated there, as the modeller shows it. A track that no longer fits → CliError(2).
+Project loadForVerbAt(const std::filesystem::path& file, std::optional<double> time);
+
+/// The project `loaded` from `file` at `time` (default: its stored time), tracks evaluated.
+Project projectForVerbAt(const Project& loaded, const std::filesystem::path& file, std::optional<double> time);
 
 /// Resolves "--function" (an index 0..n-1 as in JSON paths, or a function name).
 std::size_t resolveFunction(const Project& project, const std::string& which, const std::filesystem::path& file);

@@ -48,8 +48,13 @@ void checkOutputPath(const std::filesystem::path& out, const std::vector<std::st
 
 RenderSetup prepareRender(const std::filesystem::path& file, const RenderOverrides& overrides,
                           std::int64_t maxSamples) {
+  return prepareRenderOf(loadForVerb(file), file, overrides, maxSamples);
+}
+
+RenderSetup prepareRenderOf(const Project& loaded, const std::filesystem::path& file,
+                            const RenderOverrides& overrides, std::int64_t maxSamples, bool warn) {
   RenderSetup setup;
-  setup.project = loadForVerb(file);
+  setup.project = projectForVerbAt(loaded, file, overrides.time);
   RenderJob& job = setup.job;
   job = RenderJob::fromProject(setup.project, overrides.threads.value_or(0));
   if (overrides.width) job.width = *overrides.width;
@@ -79,6 +84,7 @@ RenderSetup prepareRender(const std::filesystem::path& file, const RenderOverrid
   // The chaos game still draws something for an expanding function (clamping to X keeps the chain
   // bounded), so this is a warning, as in `gridifs info`.
   for (const CompiledFunction& f : setup.ifs->functions) {
+    if (!warn) break;
     const Function& source = setup.project.functions[f.sourceIndex];
     if (isSetKind(source.kind)) continue;  // a constant map: contraction factor 0
     const ContractivityEstimate c = source.kind == FunctionKind::Matrix

@@ -18,6 +18,7 @@ struct RenderOverrides {
   std::optional<std::string> samples;  // parsed by parseSamples (accepts 2e7)
   std::optional<std::uint64_t> seed;
   std::optional<std::string> device;  // --device auto|gpu|cpu (app/render_device_option.h)
+  std::optional<double> time;         // --time: the project at this time (default: its stored time)
 };
 
 struct RenderSetup {
@@ -33,6 +34,12 @@ std::int64_t parseSamples(const std::string& text, std::int64_t maximum);
 /// a function may not be contractive. Bad input → CliError(2) naming the file.
 RenderSetup prepareRender(const std::filesystem::path& file, const RenderOverrides& overrides,
                           std::int64_t maxSamples);
+
+/// prepareRender for a project already loaded from `file` (a frame of a sequence): the project at
+/// overrides.time with its tracks evaluated, then the same checks and compilation. `warn` prints
+/// the contractivity warnings (once per sequence, not once per frame).
+RenderSetup prepareRenderOf(const Project& loaded, const std::filesystem::path& file,
+                            const RenderOverrides& overrides, std::int64_t maxSamples, bool warn = true);
 
 /// Refuses an output path whose extension is not in `allowed` or whose folder does not exist or is
 /// not writable (CliError(2), one sentence naming the path).

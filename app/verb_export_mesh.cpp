@@ -19,6 +19,7 @@ struct ExportMeshArgs {
   int depth = 0, subdivide = 0, threads = 0;
   bool smooth = false, fit = false, ascii = false;
   std::uint64_t maxFaces = DeterministicLimits{}.maxFaces;
+  std::optional<double> time;
 };
 
 BaseMeshSpec baseSpec(const ExportMeshArgs& a, MeshFormat format) {
@@ -47,7 +48,7 @@ int runExportMesh(const ExportMeshArgs& a) {
     throw CliError(kBadInput, e.what());
   }
   const MeshFormat format = *meshFormatFromPath(output);
-  Document document(loadForVerb(a.file));
+  Document document(loadForVerbAt(a.file, a.time));
   DeterministicIfs ifs;
   try {
     ifs = snapshotDeterministicIfs(document.project(), document.evaluation());
@@ -112,6 +113,7 @@ const VerbRegistration kExportMesh{
                       "mesh to write: .ply (binary, vertex colors and a per-face 'address'), .off (colors), "
                       ".obj or .stl (triangulated)")
            ->required();
+       addTimeOption(app, a->time);
        app.add_option("--depth", a->depth, "n in F^n(A): N^n copies of the base mesh")
            ->required()
            ->check(CLI::Range(0, kMaxDeterministicDepth));

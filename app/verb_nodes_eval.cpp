@@ -8,8 +8,8 @@
 namespace gridifs::cli {
 namespace {
 
-int runNodes(const std::string& file, const std::string& which) {
-  Document document(loadForVerb(file));
+int runNodes(const std::string& file, const std::string& which, std::optional<double> time) {
+  Document document(loadForVerbAt(file, time));
   const std::size_t index = resolveFunction(document.project(), which, file);
   const auto grid = evaluateForVerb(document, index, file);
   const Index3& n = grid->resolution();
@@ -22,8 +22,8 @@ int runNodes(const std::string& file, const std::string& which) {
   return kSuccess;
 }
 
-int runEval(const std::string& file, const std::string& which) {
-  Document document(loadForVerb(file));
+int runEval(const std::string& file, const std::string& which, std::optional<double> time) {
+  Document document(loadForVerbAt(file, time));
   const std::size_t index = resolveFunction(document.project(), which, file);
   const auto grid = evaluateForVerb(document, index, file);
   std::string line;
@@ -52,17 +52,20 @@ int runEval(const std::string& file, const std::string& which) {
   return kSuccess;
 }
 
-std::function<int()> setupFunctionVerb(CLI::App& app, int (*action)(const std::string&, const std::string&)) {
+std::function<int()> setupFunctionVerb(CLI::App& app,
+                                       int (*action)(const std::string&, const std::string&, std::optional<double>)) {
   auto file = std::make_shared<std::string>();
   auto which = std::make_shared<std::string>();
+  auto time = std::make_shared<std::optional<double>>();
   app.add_option("FILE", *file, "project file (.gridifs)")->required();
   app.add_option("--function", *which, "function index 0..n-1 (as in functions[I]) or name")->required();
-  return [=] { return action(*file, *which); };
+  addTimeOption(app, *time);
+  return [=] { return action(*file, *which, *time); };
 }
 
-const VerbRegistration kNodes{{"nodes", "FILE --function I: print every distorted node as \"i j k x y z\"",
+const VerbRegistration kNodes{{"nodes", "FILE --function I [--time T]: print every distorted node as \"i j k x y z\"",
                                [](CLI::App& app) { return setupFunctionVerb(app, runNodes); }}};
-const VerbRegistration kEval{{"eval", "FILE --function I: read \"x y z\" lines, print f_I(p)",
+const VerbRegistration kEval{{"eval", "FILE --function I [--time T]: read \"x y z\" lines, print f_I(p)",
                               [](CLI::App& app) { return setupFunctionVerb(app, runEval); }}};
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include "app/progress_bar.h"
 #include "app/render_device_option.h"
 #include "app/render_setup.h"
+#include "app/render_sequence.h"
 #include "app/shaded_image_output.h"
 #include "base/atomic_file.h"
 #include "base/color_space.h"
@@ -70,25 +71,86 @@ void writeImage(const RenderImage& image, const std::filesystem::path& out, cons
   }
 }
 
+/// Where one frame's samples sit in the progress of a whole sequence (one bar over all frames).
+struct FrameProgress {
+  ProgressBar* bar = nullptr;  // null: the frame draws its own bar
+  std::int64_t before = 0;     // samples of the frames already rendered
+  std::int64_t total = 0;      // samples of every frame of the sequence
+};
+
+/// Adds `part` (one time sample of a motion-blurred frame) into `sum`: hit counts and colour sums
+/// add up, as in Draves & Reckase's motion blur (one histogram over all time samples); the
+/// z-buffer colours are averaged later (divide by the count), the nearest depth kept.
+void accumulate(RenderImage& sum, std::vector<std::uint32_t>& rgbaSum, const RenderImage& part) {
+  if (rgbaSum.empty()) {
+    sum = part;
+    rgbaSum.assign(part.rgba.begin(), part.rgba.end());
+    return;
+  }
+  for (std::size_t i = 0; i < part.rgba.size(); ++i) rgbaSum[i] += part.rgba[i];
+  for (std::size_t i = 0; i < part.depth.size(); ++i) sum.depth[i] = std::min(sum.depth[i], part.depth[i]);
+  for (std::size_t i = 0; i < part.density.size(); ++i)
+    sum.density[i] = std::uint32_t(std::min<std::uint64_t>(std::uint64_t(sum.density[i]) + part.density[i], UINT32_MAX));
+  for (std::size_t i = 0; i < part.colorSums.size(); ++i) sum.colorSums[i] += part.colorSums[i];
+  sum.stats.samples += part.stats.samples;
+  sum.stats.badSamples += part.stats.badSamples;
+  sum.stats.plotted += part.stats.plotted;
+  sum.stats.budget += part.stats.budget;
+}
+
 /// Runs `job` to completion on `device` (app/render_device_option.h) with a progress bar (interruptible with Ctrl-C).
+/// With several setups (the time samples of one motion-blurred frame) the job's samples are split
+/// among them, each with its own seed, and the results merged.
 /// Throws CliError when interrupted or when at least half of the points were unusable (nothing is written then).
-RenderImage renderWithProgress(const RenderSetup& setup, const RenderJob& job, const std::string& file,
+RenderImage renderWithProgress(const std::vector<RenderSetup>& setups, const RenderJob& job, const std::string& file,
                                const std::string& out, bool quiet, const std::string& device,
-                               const DisplaySettings* displayOverride = nullptr) {
-  ProgressBar bar("render", quiet);
+                               const DisplaySettings* displayOverride = nullptr, FrameProgress progress = {}) {
+  ProgressBar ownBar("render", quiet);
+  ProgressBar& bar = progress.bar ? *progress.bar : ownBar;
+  if (!progress.bar) progress.total = job.samples;
   InterruptGuard interrupt;
   RenderImage image;
-  try {
-    std::string used;
-    image = renderOnDevice(
-        device, setup.ifs, job, displayOverride ? *displayOverride : DisplaySettings::fromProject(setup.project),
-        [&](const RenderStats& s) { return bar.report(s) && !gInterrupted.load(); },
-        used);
-  } catch (const RenderCancelled&) {
-    bar.finish();
-    throw CliError(kFailure, "render of " + file + " interrupted; " + out + " was not written");
+  std::vector<std::uint32_t> rgbaSum;
+  const auto count = std::int64_t(setups.size());
+  std::int64_t done = 0;
+  for (std::int64_t i = 0; i < count; ++i) {
+    const RenderSetup& setup = setups[std::size_t(i)];
+    RenderJob part = job;
+    part.samples = job.samples / count + (i < job.samples % count ? 1 : 0);
+    part.seed = job.seed + std::uint64_t(i);
+    RenderImage sample;
+    try {
+      std::string used;
+      sample = renderOnDevice(
+          device, setup.ifs, part,
+          displayOverride ? *displayOverride : DisplaySettings::fromProject(setup.project),
+          [&](const RenderStats& s) {
+            bar.update(progress.before + done + s.samples, progress.total, s.pointsPerSecond);
+            return !gInterrupted.load();
+          },
+          used);
+    } catch (const RenderCancelled&) {
+      bar.finish();
+      throw CliError(kFailure, "render of " + file + " interrupted; " + out + " was not written");
+    }
+    done += part.samples;
+    if (count == 1) {
+      image = std::move(sample);
+    } else {
+      accumulate(image, rgbaSum, sample);
+    }
   }
-  bar.finish();
+  if (count > 1) {
+    image.hitPixels = 0;
+    for (std::size_t i = 0; i < rgbaSum.size(); ++i) {
+      image.rgba[i] = std::uint8_t((rgbaSum[i] + std::uint32_t(count / 2)) / std::uint32_t(count));
+      if (i % 4 == 3 && rgbaSum[i] > 0) {
+        image.rgba[i] = 255;  // plotted in at least one time sample
+        ++image.hitPixels;
+      }
+    }
+  }
+  if (!progress.bar) bar.finish();
   const RenderStats& s = image.stats;
   if (s.badFraction() >= 0.5)
     throw CliError(kBadInput, file + ": " + std::to_string(int(std::lround(100 * s.badFraction()))) +
@@ -108,8 +170,9 @@ struct FlameOptions {
 /// `--mode flame` (Draves & Reckase 2003, §4–8): the same chaos game at supersample× the size with
 /// palette colour sums, developed by log-density tone mapping and the filters. PNG/TIFF: RGB over
 /// the background (RGBA with --transparent), 8 or 16 bits; EXR: premultiplied RGBA, float or half.
-int runFlameRender(const std::string& file, const std::string& out, const RenderSetup& setup,
-                   const FlameOptions& options, bool quiet, const std::string& device) {
+int runFlameRender(const std::string& file, const std::string& out, const std::vector<RenderSetup>& setups,
+                   const FlameOptions& options, bool quiet, const std::string& device, FrameProgress progress) {
+  const RenderSetup& setup = setups.front();
   FlameSettings settings = setup.project.render.flame;
   if (options.palette) settings.palette = *options.palette;
   std::shared_ptr<const Palette> palette;
@@ -132,7 +195,7 @@ int runFlameRender(const std::string& file, const std::string& out, const Render
   } catch (const ModelError& e) {
     throw CliError(kBadInput, file + ": with supersample " + std::to_string(ss) + ", " + e.message());
   }
-  const RenderImage image = renderWithProgress(setup, job, file, out, quiet, device);
+  const RenderImage image = renderWithProgress(setups, job, file, out, quiet, device, nullptr, progress);
   if (image.hitPixels == 0)
     std::fprintf(stderr, "warning: %s: no point landed in the %dx%d frame; check the camera.\n", file.c_str(),
                  setup.job.width, setup.job.height);
@@ -154,8 +217,11 @@ int runFlameRender(const std::string& file, const std::string& out, const Render
 /// light (with depth of field when the aperture is above 0), then the image is developed with the
 /// lights, occlusion and fog (core/render/shaded_image.h). Shadow maps and depth of field are
 /// CPU chaos-game effects, so this mode always renders on the CPU.
-int runShadedRender(const std::string& file, const std::string& out, const RenderSetup& setup, bool quiet,
-                    const std::string& device) {
+int runShadedRender(const std::string& file, const std::string& out, const std::vector<RenderSetup>& setups,
+                    bool quiet, const std::string& device, FrameProgress progress) {
+  if (setups.size() > 1)
+    throw CliError(kBadInput, "--motion-blur applies to the zbuffer and flame modes, not to shaded renders");
+  const RenderSetup& setup = setups.front();
   const ShadingSettings& shading = setup.project.render.shading;
   RenderJob job;
   try {
@@ -169,7 +235,7 @@ int runShadedRender(const std::string& file, const std::string& out, const Rende
                  "note: the shaded display renders on the CPU (its shadow maps and depth of field are "
                  "filled by the CPU chaos game).\n");
   const DisplaySettings display = shadedDisplaySettings(setup.project);
-  const RenderImage image = renderWithProgress(setup, job, file, out, quiet, "cpu", &display);
+  const RenderImage image = renderWithProgress(setups, job, file, out, quiet, "cpu", &display, progress);
   if (image.hitPixels == 0)
     std::fprintf(stderr, "warning: %s: no point landed in the %dx%d frame; check the camera.\n", file.c_str(),
                  image.width, image.height);
@@ -186,20 +252,30 @@ int runShadedRender(const std::string& file, const std::string& out, const Rende
   return kSuccess;
 }
 
-int runRender(const std::string& file, const std::string& out, const RenderOverrides& overrides, bool quiet,
-              const FlameOptions& flame = {}) {
-  checkOutputPath(out, {"png", "exr", "tif", "tiff"}, "the output image");
+/// One image: the project at overrides.time (or its own time), or, with `blur` > 1, at `blur` times
+/// spread evenly over `shutter` seconds centred on that time, merged.
+int renderFrame(const Project& loaded, const std::string& file, const std::string& out, const RenderOverrides& overrides,
+                bool quiet, const FlameOptions& flame, int blur, double shutter, FrameProgress progress, bool warn) {
   const std::string device = checkedDevice(overrides.device);
   DisplayMode mode = DisplayMode::ZBuffer;
   if (flame.mode && !parseDisplayMode(*flame.mode, mode))
     throw CliError(kBadInput, "--mode must be zbuffer, flame or shaded, not \"" + *flame.mode + "\"");
-  const RenderSetup setup = prepareRender(file, overrides, limits::kMaxRenderSamples);
+  std::vector<RenderSetup> setups;
+  const double time = overrides.time.value_or(loaded.time);
+  for (int i = 0; i < blur; ++i) {
+    RenderOverrides at = overrides;
+    // Draves & Reckase, motion blur: time samples spread over the shutter. One sample is the
+    // frame's own time exactly, so an unblurred frame equals a render at --time.
+    at.time = blur == 1 ? time : time + shutter * ((i + 0.5) / blur - 0.5);
+    setups.push_back(prepareRenderOf(loaded, file, at, limits::kMaxRenderSamples, warn && i == 0));
+  }
+  const RenderSetup& setup = setups.front();
   if (!flame.mode) mode = setup.project.render.mode;
-  if (mode == DisplayMode::Flame) return runFlameRender(file, out, setup, flame, quiet, device);
+  if (mode == DisplayMode::Flame) return runFlameRender(file, out, setups, flame, quiet, device, progress);
   if (flame.bitDepth || flame.transparent || flame.palette)
     throw CliError(kBadInput, "--bit-depth, --transparent and --palette apply to --mode flame only");
-  if (mode == DisplayMode::Shaded) return runShadedRender(file, out, setup, quiet, device);
-  const RenderImage image = renderWithProgress(setup, setup.job, file, out, quiet, device);
+  if (mode == DisplayMode::Shaded) return runShadedRender(file, out, setups, quiet, device, progress);
+  const RenderImage image = renderWithProgress(setups, setup.job, file, out, quiet, device, nullptr, progress);
   const RenderStats& s = image.stats;
   if (s.badSamples > 0)
     std::fprintf(stderr, "warning: %s: %.3g%% of the samples were non-finite or escaped (chains restarted).\n",
@@ -208,14 +284,64 @@ int runRender(const std::string& file, const std::string& out, const RenderOverr
     std::fprintf(stderr, "warning: %s: no point landed in the %dx%d frame; check the camera.\n", file.c_str(),
                  image.width, image.height);
   writeImage(image, out, setup, file);
+  if (!progress.bar) printDeviceNote();
+  return kSuccess;
+}
+
+/// `--frames A:B`: frame f at t = f / fps, each written atomically to the pattern formatted with f,
+/// one progress bar over all frames. Everything that can be checked is checked before the first
+/// frame is written: the range, the pattern, ffmpeg for --video, and the project at every frame.
+int renderSequence(const std::string& file, const std::string& pattern, const RenderOverrides& overrides, bool quiet,
+                   const FlameOptions& flame, const SequenceOptions& sequence) {
+  const FrameRange frames = parseFrameRange(*sequence.frames);
+  checkFramePattern(pattern);
+  if (overrides.time) throw CliError(kBadInput, "--time and --frames exclude each other: a frame's time is f/fps");
+  if (sequence.video) checkVideoOutput(*sequence.video);
+  const Project loaded = loadForVerb(file);
+  const AnimationSettings animation = loaded.animation.value_or(AnimationSettings{});
+  auto frameTime = [&](std::int64_t f) { return double(f) / animation.fps; };
+  if (!loaded.tracks.empty())
+    for (std::int64_t f = frames.first; f <= frames.last; ++f) projectForVerbAt(loaded, file, frameTime(f));
+  RenderOverrides first = overrides;
+  first.time = frameTime(frames.first);
+  const std::int64_t samplesPerFrame = prepareRenderOf(loaded, file, first, limits::kMaxRenderSamples, false).job.samples;
+  ProgressBar bar("render " + std::to_string(frames.count()) + " frames", quiet);
+  for (std::int64_t f = frames.first; f <= frames.last; ++f) {
+    RenderOverrides at = overrides;
+    at.time = frameTime(f);
+    const FrameProgress progress{&bar, (f - frames.first) * samplesPerFrame, frames.count() * samplesPerFrame};
+    renderFrame(loaded, file, frameFileName(pattern, f), at, quiet, flame, sequence.motionBlur,
+                animation.shutter / animation.fps, progress, f == frames.first);
+  }
+  bar.finish();
+  if (sequence.video) {
+    if (!quiet) std::fprintf(stderr, "assembling %s with ffmpeg\n", sequence.video->c_str());
+    assembleVideo(pattern, frames, animation.fps, *sequence.video);
+  }
   printDeviceNote();
   return kSuccess;
+}
+
+int runRender(const std::string& file, const std::string& out, const RenderOverrides& overrides, bool quiet,
+              const FlameOptions& flame, const SequenceOptions& sequence) {
+  checkOutputPath(out, {"png", "exr", "tif", "tiff"}, "the output image");
+  if (sequence.motionBlur < 1 || sequence.motionBlur > kMaxMotionBlurSamples)
+    throw CliError(kBadInput, "--motion-blur must be between 1 and " + std::to_string(kMaxMotionBlurSamples) +
+                                  " time samples per frame");
+  if (!sequence.frames) {
+    if (sequence.video) throw CliError(kBadInput, "--video needs a frame sequence: add --frames A:B");
+    const Project loaded = loadForVerb(file);
+    const AnimationSettings animation = loaded.animation.value_or(AnimationSettings{});
+    return renderFrame(loaded, file, out, overrides, quiet, flame, sequence.motionBlur,
+                       animation.shutter / animation.fps, {}, true);
+  }
+  return renderSequence(file, out, overrides, quiet, flame, sequence);
 }
 
 const VerbRegistration kRender{
     {"render",
      "FILE -o OUT.(png|exr|tif) [--width W --height H --samples N --seed S --threads T "
-     "--device auto|gpu|cpu] "
+     "--device auto|gpu|cpu --time T] [--frames A:B --motion-blur N --video OUT.mp4] "
      "[--mode zbuffer|flame|shaded --palette P --bit-depth B --transparent]: render headlessly",
      [](CLI::App& app) {
        const auto a = addChaosVerbOptions(app, "output image: .png or .tif (8-bit RGB) or .exr (float RGBA + Z)",
@@ -235,7 +361,15 @@ const VerbRegistration kRender{
                       "flame mode: 8 or 16 bits for PNG/TIFF, 16 (half) or 32 "
                       "(float) for EXR");
        app.add_flag("--transparent", flame->transparent, "flame mode: PNG/TIFF with alpha instead of the background");
-       return [=] { return runRender(a->file, a->out, a->overrides, a->quiet, *flame); };
+       auto sequence = std::make_shared<SequenceOptions>();
+       app.add_option("--frames", sequence->frames,
+                      "render frames A to B (A:B) as a numbered sequence, frame f at time f/fps; -o needs a "
+                      "printf pattern such as out_%04d.png");
+       app.add_option("--motion-blur", sequence->motionBlur,
+                      "time samples per frame, spread over the animation's shutter (default 0.5 of the frame "
+                      "interval); 1 = none");
+       app.add_option("--video", sequence->video, "with --frames: also assemble the frames into this video with ffmpeg");
+       return [=] { return runRender(a->file, a->out, a->overrides, a->quiet, *flame, *sequence); };
      }}};
 
 }  // namespace

@@ -73,6 +73,7 @@ void readAnimation(const json& root, Project& project) {
     if (auto f = it->find("fps"); f != it->end()) a.fps = finiteNumber(*f, "animation.fps");
     if (auto f = it->find("start"); f != it->end()) a.start = finiteNumber(*f, "animation.start");
     if (auto f = it->find("end"); f != it->end()) a.end = finiteNumber(*f, "animation.end");
+    if (auto f = it->find("shutter"); f != it->end()) a.shutter = finiteNumber(*f, "animation.shutter");
     if (auto f = it->find("loop"); f != it->end()) {
       if (!f->is_boolean()) throw ModelError("animation.loop", "expected true or false");
       a.loop = f->get<bool>();
@@ -125,6 +126,8 @@ void writeAnimation(const Project& project, nlohmann::ordered_json& root) {
   if (project.animation) {
     const AnimationSettings& a = *project.animation;
     root["animation"] = {{"fps", a.fps}, {"start", a.start}, {"end", a.end}, {"loop", a.loop}};
+    // Written only when changed, so files saved before the shutter existed save unchanged.
+    if (a.shutter != AnimationSettings{}.shutter) root["animation"]["shutter"] = a.shutter;
   }
   if (!project.tracks.empty()) {
     nlohmann::ordered_json tracks = nlohmann::ordered_json::object();

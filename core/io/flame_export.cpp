@@ -148,7 +148,7 @@ FlameExport exportFlame(const Project& project, const std::filesystem::path& pro
   for (std::size_t i = 0; i < project.functions.size(); ++i)
     if (!project.functions[i].muted) kept.push_back(i);
   auto xformAttributes = [&](const Function& fn, const std::string& path, const std::string& label) {
-    const auto grid = evaluateFunctionAt(fn, path);
+    const auto grid = evaluateFunctionAt(fn, path, project.time);
     double error = 0.0;
     const FlameAffine fit = fitAffine(*grid, error);
     if (error > 1e-9) {

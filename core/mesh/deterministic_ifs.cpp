@@ -114,8 +114,9 @@ DeterministicIfs snapshotDeterministicIfs(const Project& project, const Evaluati
 DeterministicIfs snapshotDeterministicIfs(const Project& project) {
   return snapshotWith(
       project,
-      [&](std::size_t i) { return evaluateFunctionAt(project.functions[i], "functions[" + std::to_string(i) + "]"); },
-      [&] { return evaluateFunctionAt(*project.final_function, "final"); });
+      [&](std::size_t i) { return evaluateFunctionAt(project.functions[i], "functions[" + std::to_string(i) + "]", project.time);
+      },
+      [&] { return evaluateFunctionAt(*project.final_function, "final", project.time); });
 }
 
 DeterministicPlan planDeterministic(const DeterministicIfs& ifs, const MeshCounts& base,

@@ -4,6 +4,7 @@
 
 #include <muParser.h>
 
+#include <cctype>
 #include <array>
 #include <cmath>
 #include <mutex>
@@ -49,14 +50,15 @@ double calculatorRandom(std::uint64_t seed, int expression, int i, int j, int k,
 }
 
 struct CompiledCalculator::Impl {
-  static constexpr const char* kVariableNames[12] = {"x", "y", "z", "cx", "cy", "cz",
-                                                     "i", "j", "k", "v1", "v2", "v3"};
+  static constexpr int kVariables = 13;
+  static constexpr const char* kVariableNames[kVariables] = {"x", "y", "z", "cx", "cy", "cz", "i",
+                                                             "j", "k", "v1", "v2", "v3", "t"};
   std::array<mu::Parser, 3> parsers;
   std::array<RandomContext, 3> random;
   // The parsers read the variables through these addresses; muparser compiles the
   // expressions to bytecode once, so each node costs one bytecode run per expression
   // (its bulk mode measured no faster here and cannot pass node indices to rand()).
-  std::array<double, 12> variables{};
+  std::array<double, kVariables> variables{};
   // Expressions that are just their own coordinate ("z" for ẑ, as in figure 14) need no
   // bytecode run: -1 when the parser must run, else the coordinate index to copy.
   std::array<int, 3> passThrough{-1, -1, -1};
@@ -88,7 +90,7 @@ CompiledCalculator::CompiledCalculator(const CalculatorOp& op) : impl_(std::make
       p.DefineFun("atan2", atan2Function);
       // Not optimizable: constant folding would turn rand() into one number.
       p.DefineFunUserData("rand", randomCallback, &impl_->random[e], false);
-      for (int v = 0; v < 12; ++v) p.DefineVar(Impl::kVariableNames[v], &impl_->variables[v]);
+      for (int v = 0; v < Impl::kVariables; ++v) p.DefineVar(Impl::kVariableNames[v], &impl_->variables[v]);
       if (expressions[e]->find_first_not_of(" \t") == std::string::npos)
         throw ModelError(kPaths[e], "the expression is empty");
       p.SetExpr(*expressions[e]);
@@ -103,12 +105,13 @@ CompiledCalculator::CompiledCalculator(const CalculatorOp& op) : impl_(std::make
 CompiledCalculator::~CompiledCalculator() = default;
 
 void CompiledCalculator::apply(std::vector<Vec3>& nodes, const Index3& resolution,
-                               const std::vector<unsigned char>& mask, const Vec3& center) {
+                               const std::vector<unsigned char>& mask, const Vec3& center, double time) {
   Impl& s = *impl_;
   static const char* kPaths[3] = {"x", "y", "z"};
   auto& var = s.variables;
   var[3] = center.x, var[4] = center.y, var[5] = center.z;
   for (int v = 0; v < 3; ++v) var[9 + v] = s.op.vars[v].value;
+  var[12] = time;
   // Every expression reads the node's old position, so results go to a copy.
   std::vector<Vec3> out = nodes;
   std::size_t n = 0;
@@ -138,6 +141,21 @@ void CompiledCalculator::apply(std::vector<Vec3>& nodes, const Index3& resolutio
         }
       }
   nodes.swap(out);
+}
+
+bool calculatorUsesTime(const CalculatorOp& op) {
+  // A name token "t" (muparser names are letters, digits and underscores, not starting with a
+  // digit); "tan", "t2" or "pt" are other names.
+  auto isNameChar = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  for (const std::string* e : {&op.x, &op.y, &op.z}) {
+    for (std::size_t i = 0; i < e->size(); ++i) {
+      if ((*e)[i] != 't') continue;
+      const bool startsName = i == 0 || !isNameChar((*e)[i - 1]);
+      const bool endsName = i + 1 == e->size() || !isNameChar((*e)[i + 1]);
+      if (startsName && endsName) return true;
+    }
+  }
+  return false;
 }
 
 std::optional<CalculatorDiagnostic> checkCalculator(const CalculatorOp& op) {

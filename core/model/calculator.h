@@ -27,9 +27,9 @@ class CompiledCalculator {
   CompiledCalculator(const CompiledCalculator&) = delete;
   CompiledCalculator& operator=(const CompiledCalculator&) = delete;
 
-  /// Replaces the selected nodes with (x̂, ŷ, ẑ). `center` feeds cx, cy, cz.
+  /// Replaces the selected nodes with (x̂, ŷ, ẑ). `center` feeds cx, cy, cz; `time` feeds t.
   void apply(std::vector<Vec3>& nodes, const Index3& resolution, const std::vector<unsigned char>& mask,
-             const Vec3& center);
+             const Vec3& center, double time = 0.0);
 
  private:
   struct Impl;
@@ -38,6 +38,9 @@ class CompiledCalculator {
 
 /// Checks the three expressions without evaluating them; empty when they compile.
 std::optional<CalculatorDiagnostic> checkCalculator(const CalculatorOp& op);
+
+/// Whether any of the three expressions reads the time variable t.
+bool calculatorUsesTime(const CalculatorOp& op);
 
 /// The deterministic rand() of the calculator: a hash of the op seed, the expression
 /// (0..2), the node indices and the call's ordinal within that node, mapped to [0, 1).

@@ -19,7 +19,8 @@ namespace gridifs {
 
 class EvaluationCache {
  public:
-  /// The evaluated (distorted and placed) grid of `project.functions[index]`. Throws ModelError
+  /// The evaluated (distorted and placed) grid of `project.functions[index]` at `project.time`
+  /// (a time-independent function is not re-evaluated when only the time changes). Throws ModelError
   /// with a path such as `functions[1].ops[2].x`.
   std::shared_ptr<const Grid> function(const Project& project, std::size_t index) const;
   /// The same for the final function; null when the project has none.
@@ -28,9 +29,11 @@ class EvaluationCache {
  private:
   struct Entry {
     Function function;
+    double time = 0.0;  // compared only for functions whose grid depends on the time
     std::shared_ptr<const Grid> grid;
   };
-  std::shared_ptr<const Grid> cached(const Function& fn, std::size_t slot, const std::string& path) const;
+  std::shared_ptr<const Grid> cached(const Function& fn, std::size_t slot, const std::string& path,
+                                     double time) const;
 
   mutable std::vector<std::optional<Entry>> entries_;  // slot 0: final function; slot i + 1: function i
 };

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "base/hash.h"
+#include "base/parallel.h"
 
 namespace gridifs {
 
@@ -29,8 +30,8 @@ inline double hermite(double f0, double f1, double d0, double d1, double u) {
   return ((a3 * u + a2) * u + d0) * u + f0;
 }
 
-std::uint64_t levelKey(std::int64_t seed, int axis, int level) {
-  return splitmix64(splitmix64(static_cast<std::uint64_t>(seed + axis)) + static_cast<std::uint64_t>(level));
+std::uint64_t levelKey(std::uint64_t seed, int axis, int level) {
+  return splitmix64(splitmix64(seed + static_cast<std::uint64_t>(axis)) + static_cast<std::uint64_t>(level));
 }
 
 }  // namespace
@@ -112,6 +113,14 @@ Vec3 FractalField::displacement(const Vec3& q, double t) const {
     sum += level.weight * Vec3{f[0], f[1], f[2]};
   }
   return params_.amplitude * sum;
+}
+
+void FractalField::displaceNodes(std::vector<Vec3>& nodes, const std::vector<unsigned char>& mask, double t,
+                                 int threads) const {
+  parallelFor(nodes.size(), resolveThreadCount(threads), 512, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t n = begin; n < end; ++n)
+      if (mask[n]) nodes[n] += displacement(nodes[n], t);
+  });
 }
 
 double FractalField::value(int axis, FieldPoint s) const {

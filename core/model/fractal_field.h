@@ -18,6 +18,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "base/types.h"
 
@@ -40,11 +41,12 @@ struct FractalFieldParams {
   int octaves = 6;     // number of meshes m
   double gain = 0.5;   // p(k) ∝ gain^k
   FieldInterpolation interpolation = FieldInterpolation::Cubic;
-  std::int64_t seed = 0;                             // axis a uses seed + a
+  std::uint64_t seed = 0;                            // axis a uses seed + a (modulo 2^64)
   Vec3 wind{0.0, 0.0, 0.0};                          // shift of the sample point per unit time
   std::array<double, 4> period{0.0, 0.0, 0.0, 0.0};  // Lx, Ly, Lz, Lt; 0 = not periodic
 
   static constexpr int kMaxOctaves = 16;
+  bool operator==(const FractalFieldParams&) const = default;
 };
 
 /// One sample point of the four-dimensional field space.
@@ -58,6 +60,11 @@ class FractalField {
 
   /// amplitude ⊙ (F_S(s), F_S+1(s), F_S+2(s)) with s = (q + wind·t, t), wrapped by the periods.
   Vec3 displacement(const Vec3& q, double t) const;
+
+  /// nodes[n] += displacement(nodes[n], t) for every n with mask[n] set. Nodes are independent, so
+  /// large grids are split over `threads` workers (≤ 0: all); no result depends on the split.
+  void displaceNodes(std::vector<Vec3>& nodes, const std::vector<unsigned char>& mask, double t,
+                     int threads = 0) const;
 
   /// F for one axis (seed + axis) at a sample point (wind already applied, not yet wrapped).
   double value(int axis, FieldPoint s) const;

@@ -56,9 +56,14 @@ struct AnimationSettings {
   double start = 0.0;
   double end = 4.0;
   bool loop = true;
+  /// Motion blur (Draves & Reckase, "The fractal flame algorithm", §motion blur): the fraction of
+  /// the frame interval the time samples of one frame spread over, centred on the frame's time.
+  /// 0.5 is film's 180° shutter.
+  double shutter = 0.5;
   bool operator==(const AnimationSettings&) const = default;
 
-  /// Throws ModelError for fps ≤ 0 or > 1000, non-finite values, or end before start.
+  /// Throws ModelError for fps ≤ 0 or > 1000, non-finite values, end before start, or a
+  /// shutter outside [0, 1].
   void validate() const;
 };
 

@@ -6,6 +6,7 @@
 #include <variant>
 #include <vector>
 
+#include "model/fractal_field.h"
 #include "model/selection.h"
 
 namespace gridifs {
@@ -67,9 +68,11 @@ struct NodeMove {
   bool operator==(const NodeMove&) const = default;
 };
 struct NodesOp { std::vector<NodeMove> moves; bool operator==(const NodesOp&) const = default; };
+/// Colonna's fractal field as a displacement, absolute coordinates: q += amplitude ⊙ F(q + wind·t, t).
+using FieldOp = FractalFieldParams;
 
 using OpParams = std::variant<TranslateOp, RotateOp, ScaleOp, TaperOp, TwistOp, BendOp, MagnetOp,
-                              MorphOp, CalculatorOp, NodesOp>;
+                              MorphOp, CalculatorOp, NodesOp, FieldOp>;
 
 /// The file-format name of each alternative, in variant order ("translate", ...).
 const char* opTypeName(const OpParams& params);

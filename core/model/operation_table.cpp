@@ -11,6 +11,7 @@ namespace gridifs {
 namespace {
 
 const ChoiceNames kAxes{{"x", "y", "z"}, {"x", "y", "z"}};
+const ChoiceNames kFieldInterpolations{{"linear", "cubic"}, {"linear", "cubic"}};
 const ChoiceNames kProfiles{{"linear", "sine", "pingpong"}, {"linear", "sine", "ping-pong"}};
 
 const char* const kProfileHelp =
@@ -207,7 +208,8 @@ std::vector<OperationSpec> buildTable() {
            }});
 
   const char* const kExpressionHelp =
-      "Variables x y z (node), cx cy cz (center), i j k (indices), v1 v2 v3; sin cos tan asin acos atan sinh cosh "
+      "Variables x y z (node), cx cy cz (center), i j k (indices), v1 v2 v3, t (time); sin cos tan asin acos atan sinh "
+      "cosh "
       "tanh log exp sqrt abs min max pow rand(), pi, e";
   table.push_back(
       {.type = "calculator",
@@ -245,6 +247,81 @@ std::vector<OperationSpec> buildTable() {
          const std::size_t n = std::get<NodesOp>(o).moves.size();
          return format("%zu move%s", n, n == 1 ? "" : "s");
        }});
+
+  // Colonna, "Animation of fractal objects", §2 (fractal fields) and §3.2 (wind, periodic loops).
+  table.push_back(
+      {.type = "field",
+       .title = "Field",
+       .heading = "Fractal field (Colonna 1994, §2 and §3.2)",
+       .defaults = FieldOp{},
+       .params =
+           {param<&FieldOp::amplitude>({.key = "amplitude",
+                                        .label = "Amplitude",
+                                        .tooltip = "The largest displacement along x, y and z",
+                                        .sliderMin = 0.0,
+                                        .sliderMax = 1.0}),
+            param<&FieldOp::scale>({.key = "scale",
+                                    .label = "Scale",
+                                    .tooltip = "Cell size of the coarsest mesh: the size of the largest features",
+                                    .min = 1e-6,
+                                    .max = 1e6,
+                                    .sliderMin = 0.01,
+                                    .sliderMax = 4.0}),
+            param<&FieldOp::ratio>({.key = "ratio",
+                                    .label = "Ratio",
+                                    .tooltip = "Each finer mesh's cell size is the previous one's times this (0 to 1)",
+                                    .min = 0.0,
+                                    .max = 1.0,
+                                    .sliderMin = 0.05,
+                                    .sliderMax = 0.95}),
+            param<&FieldOp::octaves>({.key = "octaves",
+                                      .label = "Octaves",
+                                      .tooltip = "Number of superposed meshes (1 to 16)",
+                                      .min = 1,
+                                      .max = FractalFieldParams::kMaxOctaves,
+                                      .sliderMin = 1,
+                                      .sliderMax = FractalFieldParams::kMaxOctaves,
+                                      .format = "%.0f"}),
+            param<&FieldOp::gain>(
+                {.key = "gain",
+                 .label = "Gain",
+                 .tooltip = "Weight of mesh k is proportional to gain^k: small gains give smooth fields",
+                 .min = 1e-6,
+                 .max = 1e3,
+                 .sliderMin = 0.05,
+                 .sliderMax = 1.5}),
+            param<&FieldOp::interpolation>({.key = "interpolation",
+                                            .label = "Interpolation",
+                                            .tooltip = "linear: quadrilinear; cubic: Colonna's pseudo n-cubic (smooth)",
+                                            .choices = &kFieldInterpolations}),
+            param<&FieldOp::seed>({.key = "seed",
+                                   .label = "Seed",
+                                   .tooltip = "Random values of the meshes; axes use seed, seed+1, seed+2"}),
+            param<&FieldOp::wind>({.key = "wind",
+                                   .label = "Wind",
+                                   .tooltip = "Drift of the field per unit of time (x, y, z)",
+                                   .sliderMin = -2.0,
+                                   .sliderMax = 2.0}),
+            param<&FieldOp::period>({.key = "period",
+                                     .label = "Period",
+                                     .tooltip =
+                                         "Lx, Ly, Lz, Lt: the field repeats with these periods; 0 = none. A period "
+                                         "in t makes a seamless loop",
+                                     .min = 0.0,
+                                     .sliderMin = 0.0,
+                                     .sliderMax = 10.0})},
+       .absolute = true,
+       .rules =
+           [](const OpParams& o) {
+             const FieldOp& f = std::get<FieldOp>(o);
+             if (!(f.ratio > 0.0 && f.ratio < 1.0))
+               throw ModelError("ratio", "the ratio must lie strictly between 0 and 1, so each mesh is finer");
+           },
+       .summary =
+           [](const OpParams& o) {
+             const FieldOp& f = std::get<FieldOp>(o);
+             return format("%s %d oct s=%.2f", toString(f.interpolation), f.octaves, f.scale);
+           }});
 
   return table;
 }

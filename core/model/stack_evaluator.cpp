@@ -27,6 +27,7 @@ struct OpContext {
   std::vector<Vec3>& nodes;
   const std::vector<unsigned char>& mask;
   const Vec3 center;
+  const double time;  // the project's current time (field ops, the calculator's t)
 };
 
 template <class F>
@@ -125,7 +126,14 @@ void apply(const MorphOp& op, OpContext& ctx, const Index3&) {
 
 void apply(const CalculatorOp& op, OpContext& ctx, const Index3& resolution) {
   CompiledCalculator calculator(op);
-  calculator.apply(ctx.nodes, resolution, ctx.mask, ctx.center);
+  calculator.apply(ctx.nodes, resolution, ctx.mask, ctx.center, ctx.time);
+}
+
+// Colonna, "Animation of fractal objects", §2 and §3.2: each node moves by amplitude ⊙ F at
+// (q + wind·t, t). The field is built once per evaluation, then read for every selected node;
+// nodes are independent, so a grid is split over the worker pool.
+void apply(const FieldOp& op, OpContext& ctx, const Index3&) {
+  FractalField(op).displaceNodes(ctx.nodes, ctx.mask, ctx.time);
 }
 
 void apply(const NodesOp& op, OpContext& ctx, const Index3& resolution) {
@@ -241,13 +249,13 @@ void solveMorph(const MorphOp& morph, std::vector<Vec3>& alpha, std::vector<doub
       throw ModelError("pairs", "the morph system is singular (start points are too close together)");
 }
 
-void applyOperation(const Operation& op, std::vector<Vec3>& nodes, const Index3& resolution) {
+void applyOperation(const Operation& op, std::vector<Vec3>& nodes, const Index3& resolution, double time) {
   const std::vector<unsigned char> mask = selectionMask(op.selection, resolution);
-  OpContext ctx{nodes, mask, operationCenter(op, nodes, mask)};
+  OpContext ctx{nodes, mask, operationCenter(op, nodes, mask), time};
   std::visit([&](const auto& params) { apply(params, ctx, resolution); }, op.params);
 }
 
-Grid evaluateFunction(const Function& function, std::size_t upToOp, bool applyPlacementToo) {
+Grid evaluateFunction(const Function& function, std::size_t upToOp, bool applyPlacementToo, double time) {
   Grid grid(function.resolution);
   const std::size_t end = std::min(upToOp, function.ops.size());
   for (std::size_t o = 0; o < end; ++o) {
@@ -255,7 +263,7 @@ Grid evaluateFunction(const Function& function, std::size_t upToOp, bool applyPl
     if (op.muted) continue;
     const std::string path = "ops[" + std::to_string(o) + "]";
     try {
-      applyOperation(op, grid.nodes(), grid.resolution());
+      applyOperation(op, grid.nodes(), grid.resolution(), time);
     } catch (const ModelError& error) {
       throw error.under(path);
     }
@@ -273,12 +281,21 @@ Grid evaluateFunction(const Function& function, std::size_t upToOp, bool applyPl
   return grid;
 }
 
-std::shared_ptr<const Grid> evaluateFunctionAt(const Function& function, const std::string& path) {
+std::shared_ptr<const Grid> evaluateFunctionAt(const Function& function, const std::string& path, double time) {
   try {
-    return std::make_shared<const Grid>(evaluateFunction(function));
+    return std::make_shared<const Grid>(evaluateFunction(function, std::size_t(-1), true, time));
   } catch (const ModelError& e) {
     throw e.under(path);
   }
+}
+
+bool dependsOnTime(const Function& function) {
+  for (const Operation& op : function.ops) {
+    if (op.muted) continue;
+    if (std::holds_alternative<FieldOp>(op.params)) return true;
+    if (const auto* calc = std::get_if<CalculatorOp>(&op.params); calc && calculatorUsesTime(*calc)) return true;
+  }
+  return false;
 }
 
 }  // namespace gridifs

@@ -28,10 +28,10 @@ double triangleWave(double x);
 Vec3 operationCenter(const Operation& op, const std::vector<Vec3>& nodes,
                      const std::vector<unsigned char>& mask);
 
-/// Applies one operation in place to `nodes` (a grid of `resolution`).
+/// Applies one operation in place to `nodes` (a grid of `resolution`) at project time `time`.
 /// Throws ModelError (path relative to the op, e.g. "pairs" or "x") on a singular
 /// morph, a calculator error or a non-finite result.
-void applyOperation(const Operation& op, std::vector<Vec3>& nodes, const Index3& resolution);
+void applyOperation(const Operation& op, std::vector<Vec3>& nodes, const Index3& resolution, double time = 0.0);
 
 /// Solves the morph's RBF system (Gröller & Wegenkittl 1994, §2.6) and returns α (one Vec3 per pair) and r_i.
 /// Throws ModelError("pairs", ...) for coincident or (numerically) singular start points.
@@ -40,14 +40,19 @@ void solveMorph(const MorphOp& morph, std::vector<Vec3>& alpha, std::vector<doub
 /// placement(q) = T + R·(S·q).
 Vec3 applyPlacement(const Placement& placement, const Vec3& q);
 
-/// Evaluates the whole stack (muted ops skipped) and the placement.
+/// Evaluates the whole stack (muted ops skipped) and the placement at project time `time`.
 /// `upToOp` < ops.size() stops before that op (the UI shows intermediate stages).
 /// Throws ModelError with a path relative to the function ("ops[3].k: ...").
 Grid evaluateFunction(const Function& function, std::size_t upToOp = std::size_t(-1),
-                      bool applyPlacementToo = true);
+                      bool applyPlacementToo = true, double time = 0.0);
 
 /// evaluateFunction with errors located under `path` ("functions[2]", "final"), the form
 /// every caller outside the stack reports (Document cache, compiled snapshots, mesh export).
-std::shared_ptr<const Grid> evaluateFunctionAt(const Function& function, const std::string& path);
+std::shared_ptr<const Grid> evaluateFunctionAt(const Function& function, const std::string& path,
+                                               double time = 0.0);
+
+/// Whether the function's grid changes with the project time: an unmuted field op, or a
+/// calculator whose expressions read t. Caches of evaluated grids key on the time only then.
+bool dependsOnTime(const Function& function);
 
 }  // namespace gridifs

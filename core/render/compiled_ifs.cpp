@@ -247,8 +247,10 @@ std::shared_ptr<const CompiledIfs> compileIfs(const Project& project, const Eval
 std::shared_ptr<const CompiledIfs> compileIfs(const Project& project, const CondensationSampler& sampler) {
   return compileWith(
       project,
-      [&](std::size_t i) { return evaluateFunctionAt(project.functions[i], "functions[" + std::to_string(i) + "]"); },
-      [&] { return evaluateFunctionAt(*project.final_function, "final"); }, sampler);
+      [&](std::size_t i) {
+        return evaluateFunctionAt(project.functions[i], "functions[" + std::to_string(i) + "]", project.time);
+      },
+      [&] { return evaluateFunctionAt(*project.final_function, "final", project.time); }, sampler);
 }
 
 }  // namespace gridifs

@@ -63,7 +63,8 @@ TEST(OperationTable, DescribesEveryOperationOnceInVariantOrder) {
     EXPECT_EQ(errorOf(projectWith(spec.defaults)), "") << "the defaults must be valid";
   }
   EXPECT_EQ(findOperation("warp"), nullptr);
-  EXPECT_EQ(operationTypeList(), "translate, rotate, scale, taper, twist, bend, magnet, morph, calculator or nodes");
+  EXPECT_EQ(operationTypeList(),
+            "translate, rotate, scale, taper, twist, bend, magnet, morph, calculator, nodes or field");
 }
 
 TEST(OperationTable, WritesEveryParameterUnderItsKeyInTableOrder) {

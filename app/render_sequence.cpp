@@ -1,0 +1,152 @@
+#include "app/render_sequence.h"
+
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cctype>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <vector>
+
+#include "app/cli.h"
+#include "app/render_setup.h"
+
+extern char** environ;
+
+namespace gridifs::cli {
+namespace {
+
+bool parseWhole(const std::string& text, std::int64_t& out) {
+  if (text.empty() || text.size() > 12) return false;
+  std::size_t i = text[0] == '-' ? 1 : 0;
+  if (i == text.size()) return false;
+  for (std::size_t c = i; c < text.size(); ++c)
+    if (!std::isdigit(static_cast<unsigned char>(text[c]))) return false;
+  out = std::strtoll(text.c_str(), nullptr, 10);
+  return true;
+}
+
+std::optional<std::filesystem::path> findOnPath(const std::string& program) {
+  const char* path = std::getenv("PATH");
+  if (!path) return std::nullopt;
+  std::string all = path;
+  std::size_t start = 0;
+  while (start <= all.size()) {
+    const std::size_t end = std::min(all.find(':', start), all.size());
+    const std::filesystem::path candidate = std::filesystem::path(all.substr(start, end - start)) / program;
+    if (end > start && ::access(candidate.c_str(), X_OK) == 0) return candidate;
+    start = end + 1;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+FrameRange parseFrameRange(const std::string& text) {
+  const std::size_t colon = text.find(':');
+  FrameRange r;
+  if (colon == std::string::npos || !parseWhole(text.substr(0, colon), r.first) ||
+      !parseWhole(text.substr(colon + 1), r.last))
+    throw CliError(kBadInput, "--frames must be two whole frame numbers A:B such as 0:23, not \"" + text + "\"");
+  if (r.last < r.first) throw CliError(kBadInput, "--frames " + text + " ends before it starts (B must be at least A)");
+  if (r.count() > kMaxSequenceFrames)
+    throw CliError(kBadInput, "--frames " + text + " is " + std::to_string(r.count()) +
+                                  " frames, more than the limit of " + std::to_string(kMaxSequenceFrames));
+  return r;
+}
+
+void checkFramePattern(const std::string& pattern) {
+  int conversions = 0;
+  for (std::size_t i = 0; i < pattern.size(); ++i) {
+    if (pattern[i] != '%') continue;
+    if (i + 1 < pattern.size() && pattern[i + 1] == '%') {
+      ++i;
+      continue;
+    }
+    std::size_t j = i + 1;
+    while (j < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[j])) && j - i <= 2) ++j;
+    if (j >= pattern.size() || pattern[j] != 'd')
+      throw CliError(kBadInput, "the output name " + pattern +
+                                    " has a % that is not a frame number like %04d (write %% for a percent sign)");
+    ++conversions;
+    i = j;
+  }
+  if (conversions != 1)
+    throw CliError(kBadInput,
+                   "the output name " + pattern +
+                       (conversions == 0 ? " has no frame number: a sequence needs a pattern such as out_%04d.png"
+                                         : " has more than one frame number; use one such as %04d"));
+}
+
+std::string frameFileName(const std::string& pattern, std::int64_t frame) {
+  // The pattern passed checkFramePattern: one %Nd conversion, widened here to a 64-bit one.
+  std::string format;
+  for (std::size_t i = 0; i < pattern.size(); ++i) {
+    format += pattern[i];
+    if (pattern[i] != '%') continue;
+    if (pattern[i + 1] == '%') {
+      format += pattern[++i];
+      continue;
+    }
+    while (pattern[i + 1] != 'd') format += pattern[++i];
+    format += "ll";
+  }
+  std::vector<char> name(pattern.size() + 32);
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wformat-nonliteral"
+  std::snprintf(name.data(), name.size(), format.c_str(), static_cast<long long>(frame));
+#pragma GCC diagnostic pop
+  return name.data();
+}
+
+void checkVideoOutput(const std::string& video) {
+  checkOutputPath(video, {"mp4", "mov", "mkv", "webm"}, "the video");
+  if (!findOnPath("ffmpeg"))
+    throw CliError(kBadInput, "cannot write " + video + ": --video needs ffmpeg, and there is no ffmpeg on the PATH");
+}
+
+void assembleVideo(const std::string& pattern, const FrameRange& frames, double fps, const std::string& video) {
+  const auto ffmpeg = findOnPath("ffmpeg");
+  if (!ffmpeg) throw CliError(kFailure, "cannot write " + video + ": ffmpeg is no longer on the PATH");
+  const std::filesystem::path target(video);
+  // The temporary keeps the extension: ffmpeg picks the container by it.
+  const std::filesystem::path temporary =
+      target.parent_path() /
+      (".~" + target.stem().string() + "." + std::to_string(::getpid()) + target.extension().string());
+  char rate[32];
+  std::snprintf(rate, sizeof rate, "%.17g", fps);
+  const bool webm = lowerExtension(target) == "webm";
+  std::vector<std::string> args = {"ffmpeg",     "-loglevel", "error",         "-y",
+                                   "-framerate", rate,        "-start_number", std::to_string(frames.first),
+                                   "-i",         pattern,     "-frames:v",     std::to_string(frames.count())};
+  if (webm) {
+    args.insert(args.end(), {"-c:v", "libvpx-vp9", "-b:v", "0", "-crf", "30"});
+  } else {
+    // Even sizes for 4:2:0 chroma, which every player expects.
+    args.insert(args.end(),
+                {"-c:v", "libx264", "-pix_fmt", "yuv420p", "-crf", "18", "-vf", "pad=ceil(iw/2)*2:ceil(ih/2)*2"});
+  }
+  args.push_back(temporary.string());
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  if (::posix_spawn(&pid, ffmpeg->c_str(), nullptr, nullptr, argv.data(), environ) != 0)
+    throw CliError(kFailure, "cannot write " + video + ": ffmpeg could not be started");
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  std::error_code ec;
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    std::filesystem::remove(temporary, ec);
+    throw CliError(kFailure, "cannot write " + video + ": ffmpeg failed on the frames " + pattern);
+  }
+  std::filesystem::rename(temporary, target, ec);
+  if (ec) {
+    std::filesystem::remove(temporary, ec);
+    throw CliError(kFailure, "cannot write " + video + ": " + ec.message());
+  }
+}
+
+}  // namespace gridifs::cli

@@ -1,0 +1,44 @@
+#pragma once
+// `gridifs render --frames A:B`: frame ranges, the printf pattern that names each frame's file,
+// and assembling the frames into a video with ffmpeg.
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace gridifs::cli {
+
+/// The sequence options of `render`.
+struct SequenceOptions {
+  std::optional<std::string> frames;  // "A:B"
+  int motionBlur = 1;                 // time samples per frame
+  std::optional<std::string> video;   // OUT.mp4, assembled with ffmpeg
+};
+
+constexpr int kMaxMotionBlurSamples = 256;
+constexpr std::int64_t kMaxSequenceFrames = 100000;
+
+/// Frames first..last, both included.
+struct FrameRange {
+  std::int64_t first = 0, last = 0;
+  std::int64_t count() const { return last - first + 1; }
+};
+
+/// Parses "A:B" (whole numbers, B ≥ A, at most kMaxSequenceFrames frames). Throws CliError(2).
+FrameRange parseFrameRange(const std::string& text);
+
+/// Requires exactly one integer conversion (%d, %4d, %04d) in `pattern` and no other % but
+/// "%%". Throws CliError(2) naming the pattern.
+void checkFramePattern(const std::string& pattern);
+
+/// The file name of frame `frame`: the pattern printf-formatted with it.
+std::string frameFileName(const std::string& pattern, std::int64_t frame);
+
+/// Checks before anything is rendered that `video` can be written: ffmpeg on PATH, a known video
+/// extension, an existing writable folder. Throws CliError(2).
+void checkVideoOutput(const std::string& video);
+
+/// Runs ffmpeg on the written frames (H.264 for .mp4/.mov/.mkv, VP9 for .webm) into a temporary file
+/// beside `video`, renamed over it only when ffmpeg succeeds. Throws CliError(1) on failure.
+void assembleVideo(const std::string& pattern, const FrameRange& frames, double fps, const std::string& video);
+
+}  // namespace gridifs::cli
