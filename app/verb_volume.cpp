@@ -6,7 +6,6 @@
 #include "app/cli.h"
 #include "app/progress_bar.h"
 #include "app/render_setup.h"
-#include "io/animation_io.h"
 #include "model/validation.h"
 #include "volume/measure_attractor.h"
 #include "volume/vdb_volume_file.h"
@@ -26,15 +25,7 @@ struct VolumeArgs {
 int runVolume(const VolumeArgs& a) {
   checkOutputPath(a.out, {"vdb"}, "the volume");
   const std::filesystem::path file(a.file);
-  Project project = loadForVerb(file);
-  if (a.time) {
-    if (!std::isfinite(*a.time)) throw CliError(kBadInput, "--time must be a finite number of seconds");
-    try {
-      project = projectAtTime(project, *a.time);
-    } catch (const ModelError& e) {
-      throw CliError(kBadInput, file.string() + ": " + e.what());
-    }
-  }
+  const Project project = loadForVerbAt(file, a.time);
   VolumeJob job;
   job.settings = project.volume.value_or(VolumeSettings{});
   VolumeSettings& s = job.settings;
@@ -96,7 +87,7 @@ const VerbRegistration kVolume{
                       "chaos-game points for any other IFS, e.g. 2e7 (default: the project's)");
        app.add_option("--seed", a->seed, "random seed (default: the project's)");
        app.add_option("--threads", a->threads, "worker threads (default: all cores)");
-       app.add_option("--time", a->time, "the time in seconds at which keyframed parameters are read");
+       addTimeOption(app, a->time);
        app.add_flag("-q,--quiet", a->quiet, "no progress bar");
        return [a] { return runVolume(*a); };
      }}};

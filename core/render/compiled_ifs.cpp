@@ -51,7 +51,8 @@ CompiledFunction compileFunction(const Function& function, const Grid& evaluated
   for (int k = 0; k < n[2]; ++k)
     for (int j = 0; j < n[1]; ++j)
       for (int i = 0; i + 1 < n[0]; ++i) {
-        NodePair& pair = out.pairs[std::size_t(i) + out.pairStrideJ * std::size_t(j) + out.pairStrideK * std::size_t(k)];
+        NodePair& pair =
+            out.pairs[std::size_t(i) + out.pairStrideJ * std::size_t(j) + out.pairStrideK * std::size_t(k)];
         const Vec3 a = evaluated.node(i, j, k), b = evaluated.node(i + 1, j, k);
         for (int d = 0; d < 3; ++d) {
           pair.a[d] = float(a[d]);
@@ -102,7 +103,8 @@ std::array<float, 3> CompiledFunction::evaluate(std::array<float, 3> p) const {
     cell[d] = int(c);
     f[d] = s[d] - c;
   }
-  const std::size_t idx = std::size_t(cell[0]) + pairStrideJ * std::size_t(cell[1]) + pairStrideK * std::size_t(cell[2]);
+  const std::size_t idx =
+      std::size_t(cell[0]) + pairStrideJ * std::size_t(cell[1]) + pairStrideK * std::size_t(cell[2]);
   const NodePair& p00 = pairs[idx];
   const NodePair& p10 = pairs[idx + pairStrideJ];
   const NodePair& p01 = pairs[idx + pairStrideK];
@@ -174,9 +176,10 @@ CompiledFunction compileCondensationFunction(const Function& f, const Condensati
   return c;
 }
 
-std::shared_ptr<const CompiledIfs> compileWith(
-    const Project& project, const std::function<std::shared_ptr<const Grid>(std::size_t)>& gridOf,
-    const std::function<std::shared_ptr<const Grid>()>& finalGrid, const CondensationSampler& sampler) {
+std::shared_ptr<const CompiledIfs> compileWith(const Project& project,
+                                               const std::function<std::shared_ptr<const Grid>(std::size_t)>& gridOf,
+                                               const std::function<std::shared_ptr<const Grid>()>& finalGrid,
+                                               const CondensationSampler& sampler) {
   auto ifs = std::make_shared<CompiledIfs>();
   if (project.space) {
     ifs->barycentricSize = std::uint32_t(project.space->control_points.size());
@@ -189,7 +192,8 @@ std::shared_ptr<const CompiledIfs> compileWith(
     const std::string path = "functions[" + std::to_string(i) + "]";
     try {
       if (f.kind == FunctionKind::Median)
-        throw ModelError("kind", "a median function maps sets, not points: compute its density volume (gridifs volume)");
+        throw ModelError("kind",
+                         "a median function maps sets, not points: compute its density volume (gridifs volume)");
       if (f.kind == FunctionKind::Condensation) {
         ifs->functions.push_back(compileCondensationFunction(f, sampler, i));
         weights.push_back(f.weight);

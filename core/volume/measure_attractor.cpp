@@ -47,7 +47,8 @@ DensityVolume iterateSets(const Project& project, const VolumeJob& job) {
         functions.push_back(SetFunction::constant(voxelizeSet(f.set, lattice, job.projectFolder, path + ".set")));
         break;
       case FunctionKind::Grid:
-        functions.push_back(SetFunction::pointMap(compileFunction(f, *evaluateFunctionAt(f, path), i), lattice));
+        functions.push_back(
+            SetFunction::pointMap(compileFunction(f, *evaluateFunctionAt(f, path, project.time), i), lattice));
         break;
       case FunctionKind::Matrix:
         throw ModelError(path + ".kind", "a \"matrix\" function cannot map voxel sets");
