@@ -1,6 +1,7 @@
 #include "edit/document.h"
 
 #include "base/errors.h"
+#include "model/stack_evaluator.h"
 #include "model/validation.h"
 
 namespace gridifs {
@@ -170,9 +171,16 @@ void Document::changed(const Project& before) {
   // Every field of Project belongs to one concern here; a new field must join one.
   ++revision_;
   const Project& now = project_;
+  // A new time changes the geometry only where an operation reads it (a field op, a calculator's
+  // t); keyed parameters already show up as changed functions.
+  auto readsTime = [](const Project& p) {
+    for (const Function& f : p.functions)
+      if (dependsOnTime(f)) return true;
+    return p.final_function && dependsOnTime(*p.final_function);
+  };
   if (now.functions != before.functions || now.final_function != before.final_function ||
-      now.transitions != before.transitions || now.time != before.time)
-    revisions_.geometry = revision_;  // operations may read the time
+      now.transitions != before.transitions || (now.time != before.time && readsTime(now)))
+    revisions_.geometry = revision_;
   if (now.camera != before.camera) revisions_.camera = revision_;
   if (!sameRenderInput(now.render, before.render)) revisions_.render = revision_;
   if (!sameDisplay(now.render, before.render)) revisions_.display = revision_;
