@@ -12,6 +12,7 @@
 
 #include "app/cli.h"
 #include "app/render_setup.h"
+#include "base/text_format.h"
 
 extern char** environ;
 
@@ -58,47 +59,8 @@ FrameRange parseFrameRange(const std::string& text) {
 }
 
 void checkFramePattern(const std::string& pattern) {
-  int conversions = 0;
-  for (std::size_t i = 0; i < pattern.size(); ++i) {
-    if (pattern[i] != '%') continue;
-    if (i + 1 < pattern.size() && pattern[i + 1] == '%') {
-      ++i;
-      continue;
-    }
-    std::size_t j = i + 1;
-    while (j < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[j])) && j - i <= 2) ++j;
-    if (j >= pattern.size() || pattern[j] != 'd')
-      throw CliError(kBadInput, "the output name " + pattern +
-                                    " has a % that is not a frame number like %04d (write %% for a percent sign)");
-    ++conversions;
-    i = j;
-  }
-  if (conversions != 1)
-    throw CliError(kBadInput,
-                   "the output name " + pattern +
-                       (conversions == 0 ? " has no frame number: a sequence needs a pattern such as out_%04d.png"
-                                         : " has more than one frame number; use one such as %04d"));
-}
-
-std::string frameFileName(const std::string& pattern, std::int64_t frame) {
-  // The pattern passed checkFramePattern: one %Nd conversion, widened here to a 64-bit one.
-  std::string format;
-  for (std::size_t i = 0; i < pattern.size(); ++i) {
-    format += pattern[i];
-    if (pattern[i] != '%') continue;
-    if (pattern[i + 1] == '%') {
-      format += pattern[++i];
-      continue;
-    }
-    while (pattern[i + 1] != 'd') format += pattern[++i];
-    format += "ll";
-  }
-  std::vector<char> name(pattern.size() + 32);
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wformat-nonliteral"
-  std::snprintf(name.data(), name.size(), format.c_str(), static_cast<long long>(frame));
-#pragma GCC diagnostic pop
-  return name.data();
+  if (const auto problem = framePatternProblem(pattern))
+    throw CliError(kBadInput, "the output name " + pattern + " " + *problem);
 }
 
 void checkVideoOutput(const std::string& video) {

@@ -27,11 +27,8 @@ struct FrameRange {
 FrameRange parseFrameRange(const std::string& text);
 
 /// Requires exactly one integer conversion (%d, %4d, %04d) in `pattern` and no other % but
-/// "%%". Throws CliError(2) naming the pattern.
+/// "%%" (framePatternProblem, base/text_format.h). Throws CliError(2) naming the pattern.
 void checkFramePattern(const std::string& pattern);
-
-/// The file name of frame `frame`: the pattern printf-formatted with it.
-std::string frameFileName(const std::string& pattern, std::int64_t frame);
 
 /// Checks before anything is rendered that `video` can be written: ffmpeg on PATH, a known video
 /// extension, an existing writable folder. Throws CliError(2).

@@ -8,6 +8,7 @@
 
 #include "base/color_space.h"
 #include "base/errors.h"
+#include "base/text_format.h"
 #include "edit/document.h"
 #include "flame/palette.h"
 #include "io/animation_io.h"
@@ -19,12 +20,6 @@
 namespace gridifs::ui {
 namespace {
 
-std::string lowerExtension(const std::filesystem::path& file) {
-  std::string e = file.extension().string();
-  for (char& c : e) c = char(std::tolower(static_cast<unsigned char>(c)));
-  return e;
-}
-
 /// Writes 8-bit display colour (4 per pixel, over the background) as RGB, or linear float RGB
 /// for EXR.
 void writeDisplayImage(const std::vector<std::uint8_t>& rgba, int width, int height, const std::filesystem::path& out,
@@ -35,7 +30,7 @@ void writeDisplayImage(const std::vector<std::uint8_t>& rgba, int width, int hei
   layout.height = height;
   layout.channels = {"R", "G", "B"};
   layout.description = description;
-  if (lowerExtension(out) == ".exr") {
+  if (lowerExtension(out) == "exr") {
     layout.stored = StoredSample::Float;
     std::vector<float> pixels(n * 3);
     for (std::size_t i = 0; i < n * 3; ++i) pixels[i] = srgbToLinear(float(rgba[i / 3 * 4 + i % 3]) / 255.0f);
@@ -51,47 +46,10 @@ void writeDisplayImage(const std::vector<std::uint8_t>& rgba, int width, int hei
 
 std::optional<std::string> checkFramePattern(const std::string& pattern) {
   if (pattern.empty()) return "the output name is empty";
-  int conversions = 0;
-  for (std::size_t i = 0; i < pattern.size(); ++i) {
-    if (pattern[i] != '%') continue;
-    if (i + 1 < pattern.size() && pattern[i + 1] == '%') {
-      ++i;
-      continue;
-    }
-    std::size_t j = i + 1;
-    while (j < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[j]))) ++j;
-    if (j >= pattern.size() || pattern[j] != 'd' || j - i - 1 > 2)
-      return "the output name may only hold a frame number such as %04d (write %% for a percent sign)";
-    ++conversions;
-    i = j;
-  }
-  if (conversions != 1) return "the output name needs one frame number such as %04d, e.g. frames/shot_%04d.png";
+  if (const auto problem = framePatternProblem(pattern)) return "the output name " + *problem;
   const std::string ext = lowerExtension(std::filesystem::path(pattern));
-  if (ext != ".png" && ext != ".tif" && ext != ".tiff" && ext != ".exr")
-    return "frames are written as .png, .tif or .exr";
+  if (ext != "png" && ext != "tif" && ext != "tiff" && ext != "exr") return "frames are written as .png, .tif or .exr";
   return std::nullopt;
-}
-
-std::string frameFileName(const std::string& pattern, long frame) {
-  std::string out;
-  for (std::size_t i = 0; i < pattern.size(); ++i) {
-    if (pattern[i] != '%') {
-      out += pattern[i];
-      continue;
-    }
-    if (i + 1 < pattern.size() && pattern[i + 1] == '%') {
-      out += '%';
-      ++i;
-      continue;
-    }
-    std::size_t j = i + 1;
-    while (j < pattern.size() && pattern[j] != 'd') ++j;
-    char number[48];
-    std::snprintf(number, sizeof number, ("%" + pattern.substr(i + 1, j - i - 1) + "ld").c_str(), frame);
-    out += number;
-    i = j;
-  }
-  return out;
 }
 
 void renderAnimationFrame(const Project& animated, long frame, const std::filesystem::path& out, int threads,
@@ -114,7 +72,7 @@ void renderAnimationFrame(const Project& animated, long frame, const std::filesy
       const RenderImage image = renderToCompletion(ifs, flameJob, DisplaySettings::fromProject(project), report);
       const FlameImage flame = developFlameSnapshot(image, settings, project.camera, job.width, job.height,
                                                     project.render.background, false, job.threads);
-      writeFlameImage(flame, out, lowerExtension(out) == ".exr" ? 32 : 8, false);
+      writeFlameImage(flame, out, lowerExtension(out) == "exr" ? 32 : 8, false);
       return;
     }
     case DisplayMode::Shaded: {

@@ -17,8 +17,7 @@ namespace gridifs::ui {
 /// a .png, .tif/.tiff or .exr extension), or nothing.
 std::optional<std::string> checkFramePattern(const std::string& pattern);
 
-/// The file of `frame`: the pattern with the frame number formatted in (checkFramePattern first).
-std::string frameFileName(const std::string& pattern, long frame);
+/// A frame's file name is frameFileName (base/text_format.h) once the pattern passes.
 
 /// Renders frame `frame` of `project` to `out`, written atomically (a temporary file renamed
 /// over it). `progress` receives the frame's fraction done and returns false to cancel (then

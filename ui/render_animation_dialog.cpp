@@ -9,6 +9,7 @@
 #include <filesystem>
 
 #include "base/errors.h"
+#include "base/text_format.h"
 #include "render/chaos_renderer.h"
 #include "ui/animation_frames.h"
 #include "ui/timeline_panel.h"

@@ -88,23 +88,25 @@ bool primitiveContains(const CondensationSet& set, const Vec3& p) {
   return false;
 }
 
-std::vector<Vec3> samplePrimitive(const CondensationSet& set, std::size_t count, std::uint64_t seed) {
-  std::vector<Vec3> out;
-  Vec3 half{0.0};
+Vec3 primitiveHalfExtent(const CondensationSet& set) {
   switch (set.shape) {
     case SetShape::Sphere:
-      half = Vec3{set.radius};
-      break;
+      return Vec3{set.radius};
     case SetShape::Box:
-      half = 0.5 * set.size;
-      break;
+      return 0.5 * set.size;
     case SetShape::Torus:
-      half = Vec3{set.major + set.minor};
-      break;
+      return Vec3{set.major + set.minor};
     case SetShape::Mesh:
     case SetShape::Vdb:
-      return out;
+      break;
   }
+  return Vec3{0.0};
+}
+
+std::vector<Vec3> samplePrimitive(const CondensationSet& set, std::size_t count, std::uint64_t seed) {
+  std::vector<Vec3> out;
+  if (set.shape == SetShape::Mesh || set.shape == SetShape::Vdb) return out;
+  const Vec3 half = primitiveHalfExtent(set);
   out.reserve(count);
   std::uint64_t state = seed;
   auto unit = [&] { return double(splitmix64(state++) >> 11) * (2.0 / 9007199254740992.0) - 1.0; };

@@ -37,6 +37,10 @@ const char* setFillName(SetFill fill);
 /// sets). Throws ModelError with a path below `path`.
 void checkCondensationSet(const CondensationSet& set, const std::string& path);
 
+/// Half the edge lengths of the primitive set's bounding box about its centre (a torus's is a
+/// cube: its axis may point anywhere). Zero for file sets.
+Vec3 primitiveHalfExtent(const CondensationSet& set);
+
 /// Whether the primitive set (sphere, box, torus) contains `p`, boundary included. False for file sets.
 bool primitiveContains(const CondensationSet& set, const Vec3& p);
 

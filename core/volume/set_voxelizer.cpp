@@ -20,20 +20,7 @@ namespace {
 
 /// Voxels of the primitive: only the lattice box around it is visited.
 std::vector<std::uint32_t> primitiveVoxels(const CondensationSet& set, const VoxelLattice& lattice) {
-  Vec3 half{0.0};
-  switch (set.shape) {
-    case SetShape::Sphere:
-      half = Vec3{set.radius};
-      break;
-    case SetShape::Box:
-      half = 0.5 * set.size;
-      break;
-    case SetShape::Torus:
-      half = Vec3{set.major + set.minor};
-      break;
-    default:
-      break;
-  }
+  const Vec3 half = primitiveHalfExtent(set);
   Index3 lo, hi;
   for (int d = 0; d < 3; ++d) {
     lo[d] = std::max(0, int(std::floor(lattice.toLattice(set.center[d] - half[d]))));

@@ -4,8 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include "base/text_format.h"
+
+using gridifs::frameFileName;
 using gridifs::ui::checkFramePattern;
-using gridifs::ui::frameFileName;
 
 TEST(AnimationFrames, PatternsNeedOneFrameNumberAndAnImageExtension) {
   EXPECT_FALSE(checkFramePattern("frames/shot_%04d.png"));
