@@ -463,8 +463,6 @@ int ModellerApp::run() {
       slowestFrameMs_ = std::max(slowestFrameMs_, frameMs);
       if (options_.stats) frameMs_.push_back(frameMs);  // kept only for the --stats summary
     }
-    writeProbe(frameMs);
-
     if (capture && frame_ >= options_.frames) {
       const bool enoughPoints = state_.previewStats.samples >= options_.waitPoints || state_.previewStats.done ||
                                 state_.now > 60.0;
@@ -473,10 +471,13 @@ int ModellerApp::run() {
           std::cerr << "gridifs: " << error << "\n";
           exitCode = 1;
         }
+        writeProbe(frameMs);
         break;
       }
     }
     glfwSwapBuffers(window_);
+    // After the swap: a test that reads "done" from the probe then finds that frame on screen.
+    writeProbe(frameMs);
     if (files_.quitConfirmed()) break;
   }
   writeProbe(0.0);

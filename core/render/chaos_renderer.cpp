@@ -283,7 +283,8 @@ void workerMain(std::shared_ptr<ChaosRenderer::Shared> shared, ChaosRenderer::Wo
       else
         runBatchPlain(chain, *job, *w, n, counters);
       remaining -= n;
-      w->samples.store(counters.samples, std::memory_order_relaxed);
+      // Release: a reader that sees this count (stats(), then snapshot()) also sees the batch's points.
+      w->samples.store(counters.samples, std::memory_order_release);
       w->bad.store(counters.bad, std::memory_order_relaxed);
       w->plotted.store(counters.plotted, std::memory_order_relaxed);
     }
@@ -455,7 +456,7 @@ RenderStats ChaosRenderer::stats() const {
       allFinished = false;
       continue;
     }
-    s.samples += w->samples.load(std::memory_order_relaxed);
+    s.samples += w->samples.load(std::memory_order_acquire);
     s.badSamples += w->bad.load(std::memory_order_relaxed);
     s.plotted += w->plotted.load(std::memory_order_relaxed);
     const std::int64_t f = w->finishedNs.load(std::memory_order_acquire);

@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include <OpenImageIO/imagebuf.h>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -239,6 +240,43 @@ inline double meanAbsDifference(const std::vector<float>& a, const std::vector<f
   double sum = 0.0;
   for (std::size_t i = 0; i < a.size(); ++i) sum += std::abs(double(a[i]) - double(b[i]));
   return a.empty() ? 0.0 : sum / double(a.size()) * 255.0;
+}
+
+/// Grabs `r` until two grabs in a row agree (or `tries` run out): a picture that has settled, not
+/// one caught between a frame's probe and its buffer swap.
+inline std::vector<float> grabSettled(const TempFolder& home, const Rect& r, int tries = 8) {
+  std::vector<float> last = grabScreen(home, r);
+  for (int i = 1; i < tries; ++i) {
+    std::this_thread::sleep_for(250ms);
+    std::vector<float> next = grabScreen(home, r);
+    const bool same = meanAbsDifference(last, next) < 0.05;
+    last = std::move(next);
+    if (same) break;
+  }
+  return last;
+}
+
+/// Where two grabs of `r` differ: the count of changed pixels and their bounding box in screen
+/// coordinates, so a failing comparison says what changed.
+inline std::string describeDifference(const std::vector<float>& a, const std::vector<float>& b, const Rect& r) {
+  int x0 = r.w, y0 = r.h, x1 = -1, y1 = -1;
+  std::size_t changed = 0;
+  for (int y = 0; y < r.h; ++y)
+    for (int x = 0; x < r.w; ++x) {
+      const std::size_t i = (std::size_t(y) * r.w + x) * 3;
+      if (i + 2 >= a.size() || i + 2 >= b.size()) continue;
+      const float d = std::abs(a[i] - b[i]) + std::abs(a[i + 1] - b[i + 1]) + std::abs(a[i + 2] - b[i + 2]);
+      if (d < 0.1f) continue;
+      ++changed;
+      x0 = std::min(x0, x);
+      y0 = std::min(y0, y);
+      x1 = std::max(x1, x);
+      y1 = std::max(y1, y);
+    }
+  if (changed == 0) return "no pixel differs by more than 0.1";
+  return std::to_string(changed) + " of " + std::to_string(std::size_t(r.w) * r.h) + " pixels differ, within x " +
+         std::to_string(r.x + x0) + ".." + std::to_string(r.x + x1) + ", y " + std::to_string(r.y + y0) + ".." +
+         std::to_string(r.y + y1);
 }
 
 /// Fraction of pixels brighter than a dark background.

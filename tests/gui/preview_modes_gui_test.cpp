@@ -21,7 +21,7 @@ TEST(PreviewModesGui, FlameModeShowsADifferentPictureWithoutRestart) {
   nlohmann::json probe = app.waitForPreview();  // niced workers: slow on a busy machine
   ASSERT_TRUE(probe["preview"]["done"].get<bool>());
   const Rect image = rectOf(probe, "preview.image");
-  const auto zbuffer = grabScreen(home, image);
+  const auto zbuffer = grabSettled(home, image);
   const std::uint64_t restarts = probe["preview"]["restarts"];
 
   clickRect(rectOf(probe, "preview.mode.flame"));
@@ -66,8 +66,8 @@ TEST(PreviewModesGui, FlameModeShowsADifferentPictureWithoutRestart) {
   clickRect(rectOf(probe, "preview.mode.zbuffer"));
   probe = app.waitFor([](const nlohmann::json& j) { return j["preview_modes"]["mode"] == "zbuffer"; }, 10s);
   ASSERT_EQ(probe["preview_modes"]["mode"], "zbuffer");
-  std::this_thread::sleep_for(400ms);
-  EXPECT_LT(meanAbsDifference(zbuffer, grabScreen(home, image)), 0.5);
+  const auto back = grabSettled(home, image);
+  EXPECT_LT(meanAbsDifference(zbuffer, back), 0.5) << describeDifference(zbuffer, back, image);
   EXPECT_EQ(app.probe()["preview"]["restarts"].get<std::uint64_t>(), restarts);
 }
 

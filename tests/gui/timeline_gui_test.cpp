@@ -39,7 +39,7 @@ TEST(TimelineGui, ScrubbingMovesTheTimeAndThePreviewFollows) {
   EXPECT_EQ(probe["timeline"]["time"].get<double>(), 0.0);
   const Rect previewRect = rectOf(probe, "preview.image");
   const Rect scrub = rectOf(probe, "timeline.scrub");
-  const auto atStart = grabScreen(home, previewRect);
+  const auto atStart = grabSettled(home, previewRect);
 
   // Scrub to the middle and past: many frames in one drag, each a new time for the preview.
   const std::int64_t framesBefore = probe["frame"];
@@ -62,8 +62,8 @@ TEST(TimelineGui, ScrubbingMovesTheTimeAndThePreviewFollows) {
   probe = app.waitFor([](const nlohmann::json& j) { return j["timeline"]["time"].get<double>() == 0.0; }, 10s);
   probe = app.waitForPreview(probe["preview"]["restarts"].get<std::uint64_t>() - 1);
   EXPECT_EQ(probe["timeline"]["time"].get<double>(), 0.0);
-  std::this_thread::sleep_for(300ms);
-  EXPECT_LT(meanAbsDifference(atStart, grabScreen(home, previewRect)), 0.5);
+  const auto again = grabSettled(home, previewRect);
+  EXPECT_LT(meanAbsDifference(atStart, again), 0.5) << describeDifference(atStart, again, previewRect);
 
   // Alt+A plays: the time moves on without any undo step; Alt+A again pauses.
   pressKeys("alt+a");
