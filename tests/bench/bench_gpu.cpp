@@ -20,12 +20,22 @@ const std::shared_ptr<const CompiledIfs>& ifs() {
   return compiled;
 }
 
+gpu::GpuChaosRenderer::Options benchOptions(bool allowAtomic64) {
+  gpu::GpuChaosRenderer::Options options;
+  options.sliceSeconds = 0.05;  // a render to completion: long dispatches
+  options.allowAtomic64 = allowAtomic64;
+  return options;
+}
+
 gpu::GpuChaosRenderer& gpuRenderer() {
-  static gpu::GpuChaosRenderer renderer{[] {
-    gpu::GpuChaosRenderer::Options options;
-    options.sliceSeconds = 0.05;  // a render to completion: long dispatches
-    return options;
-  }()};
+  static gpu::GpuChaosRenderer renderer{benchOptions(true)};
+  return renderer;
+}
+
+/// The same GPU with the 32-bit keys forced: what the quantised z-buffer costs or saves where
+/// 64-bit atomics exist.
+gpu::GpuChaosRenderer& gpuRenderer32() {
+  static gpu::GpuChaosRenderer renderer{benchOptions(false)};
   return renderer;
 }
 
@@ -50,6 +60,13 @@ void BM_GpuZBuffer(benchmark::State& state) {
   run(state, gpuRenderer(), job);
 }
 
+void BM_GpuZBuffer32BitKeys(benchmark::State& state) {
+  RenderJob job = RenderJob::fromProject(canonicalScene(), 1);
+  job.samples = state.range(0);
+  state.SetLabel(gpuRenderer32().info().renderer + ", 32-bit keys forced");
+  run(state, gpuRenderer32(), job);
+}
+
 void BM_GpuFlameColourSums(benchmark::State& state) {
   RenderJob job = RenderJob::fromProject(canonicalScene(), 1);
   job.samples = state.range(0);
@@ -67,7 +84,9 @@ void BM_CpuOneThread(benchmark::State& state) {
 }
 
 // Sample counts: the GPU needs enough chains to fill itself (chainCount: 2^18 chains from
-// 2^18·64·21 ≈ 3.5·10^8 samples); on llvmpipe 5·10^7 is a few seconds.
+// 2^18·64·21 ≈ 3.5·10^8 samples); on llvmpipe 5·10^7 is a few seconds. A hardware GPU also gets
+// 4·10^9 and 1.6·10^10 (registered in main once the device is known), where a render lasts long
+// enough to time at ~10^10 points/s.
 BENCHMARK(BM_GpuZBuffer)
     ->Arg(50'000'000)
     ->Arg(400'000'000)
@@ -82,6 +101,21 @@ BENCHMARK(BM_CpuOneThread)
     ->UseRealTime()
     ->Iterations(1);
 
+void registerHardwareSizes() {
+  bool software = true;
+  try {
+    software = gpuRenderer().info().software;
+  } catch (const std::exception&) {
+    return;  // no GPU: the registered benchmarks report the error themselves
+  }
+  if (software) return;
+  for (const std::int64_t samples : {std::int64_t(4'000'000'000), std::int64_t(16'000'000'000)}) {
+    benchmark::RegisterBenchmark("BM_GpuZBuffer/large", BM_GpuZBuffer)->Arg(samples)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+    benchmark::RegisterBenchmark("BM_GpuZBuffer32BitKeys/large", BM_GpuZBuffer32BitKeys)->Arg(samples)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+    benchmark::RegisterBenchmark("BM_GpuFlameColourSums/large", BM_GpuFlameColourSums)->Arg(samples)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+  }
+}
+
 }  // namespace
 }  // namespace gridifs
 
@@ -92,6 +126,7 @@ int main(int argc, char** argv) {
     gridifs::saveProject(gridifs::canonicalScene(), argv[2]);
     return 0;
   }
+  gridifs::registerHardwareSizes();
   benchmark::Initialize(&argc, argv);
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
