@@ -181,6 +181,44 @@ GridView::Handle GridView::hitHandle(ModellerState& state, dvec2 mouse, int& pai
   return found;
 }
 
+const std::vector<Vec3>& GridView::controlPoints(const ModellerState& state) const {
+  static const std::vector<Vec3> kNone;
+  const Project& project = state.document.project();
+  // A free-form IFS has matrix functions only; every view of it shows the control points.
+  return project.space ? project.space->control_points : kNone;
+}
+
+int GridView::hitControlPoint(const ModellerState& state, dvec2 mouse) const {
+  const auto& points = controlPoints(state);
+  if (points.empty()) return -1;
+  const glm::dmat4 vp = camera(state).viewProjection(size_.x, size_.y);
+  const auto hit = nearestNode(points, vp, size_.x, size_.y, mouse, kPickRadius * state.uiScale);
+  return hit ? int(*hit) : -1;
+}
+
+void GridView::drawControlPoints(ModellerState& state, ImDrawList* draw, dvec2 mouse) {
+  const auto& points = controlPoints(state);
+  if (points.empty()) return;
+  const glm::dmat4 vp = camera(state).viewProjection(size_.x, size_.y);
+  const int ringed = drag_ == Drag::ControlPoint       ? controlPoint_
+                     : hovered_ && drag_ == Drag::None ? hitControlPoint(state, mouse)
+                                                       : -1;
+  const float r = float(kPickRadius * state.uiScale);
+  const std::string probeName =
+      "control_point." + std::string(content_ == Content::Ifs ? "IFS" : viewAxisName(camera_.axis)) + ".";
+  for (std::size_t j = 0; j < points.size(); ++j) {
+    dvec2 px;
+    if (!projectToPixel(vp, size_.x, size_.y, points[j], px)) continue;
+    px += screenOrigin_;
+    if (int(j) == ringed) {
+      draw->AddCircle(ImVec2(float(px.x), float(px.y)), r, IM_COL32(255, 160, 40, 255), 0, 2.0f * state.uiScale);
+      state.contextHelp = "Drag: move control point " + std::to_string(j) + " in the view's plane";
+    }
+    if (state.probe.enabled)  // where a test presses to drag this point
+      state.probe.rects[probeName + std::to_string(j)] = ImVec4(float(px.x) - r, float(px.y) - r, 2 * r, 2 * r);
+  }
+}
+
 void GridView::build(ModellerState& state, EditQueue& edits, glm::vec2 size, float framebufferScale) {
   visible_ = false;
   ImGuiIO& io = ImGui::GetIO();
@@ -229,6 +267,7 @@ void GridView::build(ModellerState& state, EditQueue& edits, glm::vec2 size, flo
     if (ImGui::IsMouseDown(dragButton_)) updateDrag(state, edits, mouse);
     else endDrag(state, edits, mouse);
   }
+  drawControlPoints(state, draw, mouse);
   if (drag_ == Drag::Box && dragMoved_) {
     const ImVec2 a(origin.x + float(dragStart_.x), origin.y + float(dragStart_.y));
     const ImVec2 b(io.MousePos.x, io.MousePos.y);
@@ -265,6 +304,17 @@ void GridView::beginDrag(ModellerState& state, EditQueue& edits, dvec2 mouse) {
   std::vector<int> owner;
   pickableNodes(state, nodes, owner);
   const double radius = kPickRadius * state.uiScale;
+
+  // A free-form IFS's control points are dragged like nodes (Thollot et al. 1997, §5: the
+  // attractor follows its control points as a Bézier curve or patch does).
+  if (!io.KeyAlt && !io.KeyCtrl) {
+    if (const int j = hitControlPoint(state, mouse); j >= 0) {
+      controlPoint_ = j;
+      anchor_ = controlPoints(state)[std::size_t(j)];
+      drag_ = Drag::ControlPoint;
+      return;
+    }
+  }
 
   if (content_ == Content::Ifs) {
     const auto hit = nearestNode(nodes, vp, size_.x, size_.y, mouse, radius);
@@ -387,6 +437,15 @@ void GridView::updateDrag(ModellerState& state, EditQueue& edits, dvec2 mouse) {
       edits.update([f, t](Project& p) { p.functions[std::size_t(f)].placement.translate = t; });
       break;
     }
+    case Drag::ControlPoint: {
+      if (firstMove) edits.begin("Move control point");
+      const Vec3 p = anchor_ + camera(state).dragDelta(delta.x, delta.y, anchor_, size_.y);
+      const std::size_t j = std::size_t(controlPoint_);
+      edits.update([j, p](Project& pr) {
+        if (pr.space && j < pr.space->control_points.size()) pr.space->control_points[j] = p;
+      });
+      break;
+    }
     case Drag::None: break;
   }
 }
@@ -419,6 +478,7 @@ void GridView::endDrag(ModellerState& state, EditQueue& edits, dvec2 mouse) {
     }
   }
   const bool projectGesture = drag == Drag::Nodes || drag == Drag::Handle || drag == Drag::Placement ||
+                              drag == Drag::ControlPoint ||
                               ((drag == Drag::Orbit || drag == Drag::Pan) && usesProjectCamera());
   if (projectGesture && dragMoved_) edits.end();
 }
@@ -443,6 +503,8 @@ void GridView::frame(ModellerState& state, EditQueue& edits) {
   std::vector<Vec3> nodes;
   std::vector<int> owner;
   pickableNodes(state, nodes, owner);
+  const auto& points = controlPoints(state);  // a free-form IFS has no grid nodes: frame its control points
+  nodes.insert(nodes.end(), points.begin(), points.end());
   if (!nodes.empty()) {
     lo = hi = nodes.front();
     for (const Vec3& p : nodes) {
@@ -565,6 +627,8 @@ void GridView::render(ModellerState& state, ViewRenderer& renderer) {
     std::vector<Vec3> nodes;
     std::vector<int> owner;
     pickableNodes(state, nodes, owner);
+    const auto& points = controlPoints(state);
+    nodes.insert(nodes.end(), points.begin(), points.end());
     Vec3 lo(-1.0), hi(1.0);
     for (const Vec3& p : nodes) {
       lo = glm::min(lo, p);

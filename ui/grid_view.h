@@ -15,6 +15,8 @@
 #include "ui/orbit_controller.h"
 #include "ui/view_renderer.h"
 
+struct ImDrawList;
+
 namespace gridifs::ui {
 
 class GridView {
@@ -50,13 +52,19 @@ class GridView {
   const std::string& id() const { return id_; }
 
  private:
-  enum class Drag { None, Orbit, Pan, Box, Nodes, Handle, Placement };
+  enum class Drag { None, Orbit, Pan, Box, Nodes, Handle, Placement, ControlPoint };
   enum class Handle { None, MagnetPoint, MorphFrom, MorphTo, CenterPoint };
 
   ViewCamera camera(const ModellerState& state) const;
   /// The nodes that picking works on (local grid or every placed grid).
   void pickableNodes(ModellerState& state, std::vector<Vec3>& out, std::vector<int>& owner);
   Handle hitHandle(ModellerState& state, glm::dvec2 mouse, int& pairIndex, Vec3& position) const;
+  /// The control points this view shows and picks (a free-form IFS's), empty for a grid IFS.
+  const std::vector<Vec3>& controlPoints(const ModellerState& state) const;
+  /// The control point under `mouse` (view pixels), or -1.
+  int hitControlPoint(const ModellerState& state, glm::dvec2 mouse) const;
+  /// Rings the hovered or dragged control point and records every control point's place for the probe.
+  void drawControlPoints(ModellerState& state, ImDrawList* draw, glm::dvec2 mouse);
   void beginDrag(ModellerState& state, EditQueue& edits, glm::dvec2 mouse);
   void updateDrag(ModellerState& state, EditQueue& edits, glm::dvec2 mouse);
   void endDrag(ModellerState& state, EditQueue& edits, glm::dvec2 mouse);
@@ -103,6 +111,7 @@ class GridView {
   Function dragFunction_;    // the function as it was when a node/handle/placement drag began
   int dragFunctionIndex_ = 0;
   std::size_t pressedNode_ = 0;
+  int controlPoint_ = -1;  // the control point being dragged
   bool pressedWasSelected_ = false;
   OrbitController orbit_;  // orbit, pan and zoom of the user view's project camera or the view's own
 };

@@ -5,6 +5,7 @@
 
 #include "edit/document.h"
 #include "edit/edit_queue.h"
+#include "model/free_form_presets.h"
 #include "render/chaos_renderer.h"
 #include "render/compiled_ifs.h"
 #include "tests/core/renderer_scenes.h"
@@ -53,6 +54,26 @@ TEST(EditPath, DisplayAndCameraEditsLeaveGeometryAlone) {
   EXPECT_GT(r2.camera, r1.camera);
   EXPECT_EQ(r2.geometry, r0.geometry);
   EXPECT_EQ(r2.display, r1.display);
+}
+
+TEST(EditPath, ControlPointDragIsOneUndoStepAndChangesGeometry) {
+  Project project = test::sierpinskiTetrahedron();
+  applyFreeFormPreset(project, FreeFormPreset::BezierCurve);
+  Document document(project);
+  const Revisions before = document.revisions();
+  const Vec3 start = document.project().space->control_points[1];
+  EditQueue edits;
+  edits.begin("Move control point");
+  for (int frame = 1; frame <= 5; ++frame)
+    edits.update([start, frame](Project& p) { p.space->control_points[1] = start + Vec3(0.02 * frame, 0.0, 0.0); });
+  edits.end();
+  EXPECT_EQ(edits.apply(document), "");
+  EXPECT_GT(document.revisions().geometry, before.geometry);  // the preview restarts on this
+  EXPECT_EQ(document.revisions().render, before.render);
+  EXPECT_EQ(document.undoLabel(), "Move control point");
+  EXPECT_TRUE(document.undo());
+  EXPECT_FALSE(document.canUndo());
+  EXPECT_EQ(document.project().space->control_points[1], start);
 }
 
 TEST(EditPath, RejectedEditKeepsTheDocumentAndReportsWhy) {
