@@ -56,6 +56,11 @@ float drawMenuBar(AppCommands& app) {
       app.exporter->drawMenuItems(s);  // Export mesh..., Export points...
       ImGui::Separator();
     }
+    if (ImGui::MenuItem("Combine...")) s.showCombine = true;
+    s.probe.item("menu.combine");
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("Combine the open project with a second one: union, concatenation, product or shuffle");
+    ImGui::Separator();
     if (ImGui::MenuItem("Render animation...")) s.showRenderAnimation = true;
     s.probe.item("menu.render_animation");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("Render the timeline's frames to numbered image files");

@@ -23,6 +23,7 @@
 #include "base/atomic_file.h"
 #include "ui/app_commands.h"
 #include "ui/app_window.h"
+#include "ui/combine_dialog.h"
 #include "ui/export_dialog.h"
 #include "ui/grid_view.h"
 #include "ui/modeller_options.h"
@@ -101,6 +102,7 @@ class ModellerApp {
   PreviewView preview_;
   ExportDialog export_;  // File > Export
   RenderAnimationDialog animation_;  // File > Render animation
+  CombineDialog combine_;            // File > Combine
   std::unique_ptr<AppCommands> commands_;
   std::string iniPath_, title_;
   bool resetLayout_ = false;
@@ -271,6 +273,7 @@ void ModellerApp::buildUi() {
   files_.draw(edits_);
   export_.draw(state_);
   animation_.draw(state_);
+  combine_.draw(state_, edits_);
   if (!state_.gridError.empty() && state_.statusText != state_.gridError) state_.error(state_.gridError);
   drawStatusBar(state_, statusHeight);
 }
@@ -314,6 +317,7 @@ void ModellerApp::writeProbe(double frameMs) {
   j["preview_modes"] = preview_.modes().probeJson();
   j["export"] = export_.probeJson();
   j["render_animation"] = animation_.probeJson();
+  j["combine"] = combine_.probeJson();
   const Project& project = state_.document.project();
   nlohmann::json tracks = nlohmann::json::object();
   for (const auto& [path, track] : project.tracks) {

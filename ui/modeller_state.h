@@ -78,6 +78,7 @@ class ModellerState {
   } playback;
   float timelineHeight = 0.0f;       // what the timeline under the preview took in the last frame
   bool showRenderAnimation = false;  // File > Render animation...
+  bool showCombine = false;          // File > Combine...
   int renderThreads = 1;
   RenderStats previewStats;
   std::string previewDevice = "cpu";  // which renderer fills the preview ("cpu", "gpu (...)")
