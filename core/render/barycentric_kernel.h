@@ -48,11 +48,13 @@ template <int kBlocks, bool kRestricted, class Plot>
   if constexpr (kRestricted)
     if (ifs.restartInterval && ++st.age[lane] > ifs.restartInterval)
       bs.restartLane(st, lane, ifs.skip, ifs.barycentricSize);
-  std::uint32_t index;
-  if constexpr (kRestricted)
-    index = ifs.chooseAfter(st.last[lane], st.rng.next());
-  else
+  std::uint32_t index, nextRow = 0;
+  if constexpr (kRestricted) {
+    nextRow = st.row[lane];
+    index = ifs.chooseAfter(nextRow, st.rng.next());
+  } else {
     index = ifs.choose(st.rng.next());
+  }
   const HotFunction& f = ifs.functions[index];
   float* lambda = bs.lambda[lane];
   v8f next[kBlocks] = {};
@@ -84,7 +86,7 @@ template <int kBlocks, bool kRestricted, class Plot>
   std::memcpy(lambda, next, sizeof next);
   st.p[lane] = q;
   st.color[lane] = col;
-  if constexpr (kRestricted) st.last[lane] = index;
+  if constexpr (kRestricted) st.row[lane] = nextRow;
   if (st.skipLeft[lane] > 0) {
     --st.skipLeft[lane];
     return 0;
@@ -115,7 +117,7 @@ template <int kBlocks, bool kRestricted, class Plot>
 template <int kBlocks, class Plot>
 [[gnu::always_inline]] inline std::int64_t runBarycentricBlocks(ChainState& st, BarycentricState& bs, const HotIfs& ifs,
                                                                 std::int64_t count, Plot& plot, std::int64_t& bad) {
-  return ifs.transitionRows ? runBarycentricLanes<kBlocks, true>(st, bs, ifs, count, plot, bad)
+  return ifs.transitionWalk ? runBarycentricLanes<kBlocks, true>(st, bs, ifs, count, plot, bad)
                             : runBarycentricLanes<kBlocks, false>(st, bs, ifs, count, plot, bad);
 }
 

@@ -179,9 +179,9 @@ struct ChainState {
   v4f p[kLanes] = {};
   v4f color[kLanes] = {};
   int skipLeft[kLanes] = {};
-  /// The function each lane applied last (transition matrix); kNoFunction after a restart.
-  std::uint32_t last[kLanes] = {};
-  static constexpr std::uint32_t kNoFunction = 0xFFFFFFFFu;
+  /// Where in HotIfs::transitionWalk the row picking the lane's next function starts (the row
+  /// after the function it applied last; 0, the first-function row, after a restart).
+  std::uint32_t row[kLanes] = {};
   /// Steps since the lane's last restart (only counted when HotIfs::restartInterval is set).
   std::uint32_t age[kLanes] = {};
 
@@ -192,7 +192,7 @@ struct ChainState {
     // forgotten geometrically, by (1 - color_speed)^skip).
     color[lane] = v4f{0.5f, 0.5f, 0.5f, float(std::uint32_t(b >> 40)) * (1.0f / 16777216.0f)};
     skipLeft[lane] = skip;
-    last[lane] = kNoFunction;
+    row[lane] = 0;
     age[lane] = 0;
   }
   /// A fresh chain set for stream (seed, worker).
@@ -207,8 +207,8 @@ struct ChainState {
 struct HotIfs {
   const HotFunction* functions = nullptr;
   const AliasEntry* alias = nullptr;
-  /// CompiledIfs::transitionAlias ((count + 1) rows of count entries), null when unrestricted.
-  const AliasEntry* transitionRows = nullptr;
+  /// CompiledIfs::transitionWalk ((count + 1) rows of count entries), null when unrestricted.
+  const TransitionStep* transitionWalk = nullptr;
   std::uint32_t count = 0;
   const HotFunction* finalFunction = nullptr;  // null when none
   int skip = 20;
@@ -227,12 +227,15 @@ struct HotIfs {
     const AliasEntry e = alias[column];
     return std::uint32_t(r) < e.threshold ? column : e.alias;
   }
-  /// The next function after `last` (kNoFunction: the first of a chain) by the transition rows.
-  [[gnu::always_inline]] std::uint32_t chooseAfter(std::uint32_t last, std::uint64_t r) const {
-    const std::uint32_t row = last < count ? last : count;
+  /// The next function by the transition row at `row`, which becomes the row after that function.
+  /// The same draws and choices as an alias table per row (choose()), without a multiply or a
+  /// branch on the row: the step's latency stays off the chain of points.
+  [[gnu::always_inline]] std::uint32_t chooseAfter(std::uint32_t& row, std::uint64_t r) const {
     const std::uint32_t column = std::uint32_t((std::uint64_t(std::uint32_t(r >> 32)) * count) >> 32);
-    const AliasEntry e = transitionRows[std::size_t(row) * count + column];
-    return std::uint32_t(r) < e.threshold ? column : e.alias;
+    const TransitionStep e = transitionWalk[row + column];
+    const bool keep = std::uint32_t(r) < e.threshold;
+    row = keep ? e.keepRow : e.aliasRow;
+    return keep ? column : e.alias;
   }
 };
 
@@ -248,9 +251,13 @@ template <bool kRestricted, bool kRestarts, bool kCondensation = false, class Pl
 [[gnu::always_inline]] inline int stepLane(ChainState& st, int lane, const HotIfs& ifs, Plot& plot, std::int64_t& bad) {
   if constexpr (kRestarts)
     if (++st.age[lane] > ifs.restartInterval) st.restartLane(lane, ifs.skip);
-  std::uint32_t index;
-  if constexpr (kRestricted) index = ifs.chooseAfter(st.last[lane], st.rng.next());
-  else index = ifs.choose(st.rng.next());
+  std::uint32_t index, nextRow = 0;
+  if constexpr (kRestricted) {
+    nextRow = st.row[lane];
+    index = ifs.chooseAfter(nextRow, st.rng.next());
+  } else {
+    index = ifs.choose(st.rng.next());
+  }
   const HotFunction& f = ifs.functions[index];
   v4f p;
   if constexpr (kCondensation) {
@@ -271,7 +278,7 @@ template <bool kRestricted, bool kRestarts, bool kCondensation = false, class Pl
   }
   st.p[lane] = p;
   st.color[lane] = col;
-  if constexpr (kRestricted) st.last[lane] = index;
+  if constexpr (kRestricted) st.row[lane] = nextRow;
   if (st.skipLeft[lane] > 0) {
     --st.skipLeft[lane];
     return 0;
@@ -305,15 +312,15 @@ template <class Plot>
         for (int l = 0; l < kLanes; ++l) plotted += stepLane<kRestricted, kRestarts, true>(local, l, ifs, plot, bad);
       for (int l = 0; l < int(count % kLanes); ++l) plotted += stepLane<kRestricted, kRestarts, true>(local, l, ifs, plot, bad);
     };
-    if (ifs.transitionRows && ifs.restartInterval) lanes.template operator()<true, true>();
-    else if (ifs.transitionRows) lanes.template operator()<true, false>();
+    if (ifs.transitionWalk && ifs.restartInterval) lanes.template operator()<true, true>();
+    else if (ifs.transitionWalk) lanes.template operator()<true, false>();
     else lanes.template operator()<false, false>();
-  } else if (ifs.transitionRows && ifs.restartInterval) {
+  } else if (ifs.transitionWalk && ifs.restartInterval) {
     // The restricted loop is a separate instantiation, so the unrestricted one is unchanged.
     for (std::int64_t n = 0; n < rounds; ++n)
       for (int l = 0; l < kLanes; ++l) plotted += stepLane<true, true>(local, l, ifs, plot, bad);
     for (int l = 0; l < int(count % kLanes); ++l) plotted += stepLane<true, true>(local, l, ifs, plot, bad);
-  } else if (ifs.transitionRows) {
+  } else if (ifs.transitionWalk) {
     for (std::int64_t n = 0; n < rounds; ++n) {
       plotted += stepLane<true, false>(local, 0, ifs, plot, bad);
       plotted += stepLane<true, false>(local, 1, ifs, plot, bad);

@@ -64,9 +64,9 @@ struct PreparedJob {
     hotIfs.functions = hot.data();
     hotIfs.alias = ifs->alias.data();
     if (!ifs->transitionAlias.empty()) {
-      if (ifs->transitionAlias.size() != (ifs->functions.size() + 1) * ifs->functions.size())
+      if (ifs->transitionWalk.size() != (ifs->functions.size() + 1) * ifs->functions.size())
         throw ModelError("transitions", "the compiled transition rows do not match the functions");
-      hotIfs.transitionRows = ifs->transitionAlias.data();
+      hotIfs.transitionWalk = ifs->transitionWalk.data();
     }
     hotIfs.count = std::uint32_t(ifs->functions.size());
     hotIfs.finalFunction = ifs->finalFunction ? &hot.back() : nullptr;

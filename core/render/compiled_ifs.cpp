@@ -224,6 +224,15 @@ std::shared_ptr<const CompiledIfs> compileWith(const Project& project,
       ifs->transitionAlias.insert(ifs->transitionAlias.end(), table.begin(), table.end());
     }
     ifs->transitionAlias.insert(ifs->transitionAlias.end(), ifs->alias.begin(), ifs->alias.end());
+    const std::size_t n = ifs->functions.size();
+    auto rowAfter = [n](std::uint32_t function) { return std::uint32_t((std::size_t(function) + 1) * n); };
+    for (std::size_t row = 0; row <= n; ++row) {
+      const std::size_t source = row == 0 ? n : row - 1;  // the first-function row is last in transitionAlias
+      for (std::size_t c = 0; c < n; ++c) {
+        const AliasEntry& e = ifs->transitionAlias[source * n + c];
+        ifs->transitionWalk.push_back({e.threshold, e.alias, rowAfter(std::uint32_t(c)), rowAfter(e.alias)});
+      }
+    }
     if (transitionComponents(project).size() > 1) ifs->restartInterval = kRestartInterval;
   }
   if (project.final_function && !project.final_function->muted) {

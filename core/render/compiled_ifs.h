@@ -55,6 +55,16 @@ struct AliasEntry {
   std::uint32_t alias;      // otherwise take this function
 };
 
+/// One entry of the chaos kernel's transition walk: an alias entry of transitionAlias plus the
+/// offsets (in entries) of the rows that pick the function after each of its two outcomes, so a
+/// Markov step picks the function and its next row with one load and no multiply.
+struct TransitionStep {
+  std::uint32_t threshold;  // as AliasEntry
+  std::uint32_t alias;
+  std::uint32_t keepRow;   // the row after this entry's own column
+  std::uint32_t aliasRow;  // the row after `alias`
+};
+
 /// The whole snapshot. Immutable; share it as shared_ptr<const CompiledIfs> across threads.
 struct CompiledIfs {
   std::vector<CompiledFunction> functions;  // unmuted functions with weight > 0, in project order
@@ -65,6 +75,9 @@ struct CompiledIfs {
   /// row r < n picks the function after function r, row n the first function of a chain (the
   /// usual weights). Empty when the project has no matrix (the unrestricted chaos game).
   std::vector<AliasEntry> transitionAlias;
+  /// transitionAlias as the kernel walks it: row 0 picks a chain's first function, row i + 1 the
+  /// function after function i (offset (i + 1)·n); empty without a matrix.
+  std::vector<TransitionStep> transitionWalk;
   /// With transitions whose graph is not strongly connected, a chain never leaves the closed part
   /// it falls into (a union's half, a concatenation's second IFS) and never revisits transient
   /// parts. Restarting each chain after this many steps samples every part as the first-function

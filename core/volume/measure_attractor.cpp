@@ -174,7 +174,7 @@ DensityVolume binPoints(const Project& project, const VolumeJob& job) {
   kernel::HotIfs ifs;
   ifs.functions = hot.data();
   ifs.alias = compiled->alias.data();
-  ifs.transitionRows = compiled->transitionAlias.empty() ? nullptr : compiled->transitionAlias.data();
+  ifs.transitionWalk = compiled->transitionWalk.empty() ? nullptr : compiled->transitionWalk.data();
   ifs.count = std::uint32_t(compiled->functions.size());
   ifs.finalFunction = compiled->finalFunction ? &hot.back() : nullptr;
   ifs.skip = settings.skip;
