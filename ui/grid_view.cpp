@@ -246,11 +246,14 @@ void GridView::build(ModellerState& state, EditQueue& edits, glm::vec2 size, flo
                   IM_COL32(255, 110, 90, 255), "stack error: see the status bar");
 
   if (hovered_) {
-    state.contextHelp = content_ == Content::Ifs
-                            ? "Drag a grid: move its placement · right-drag: orbit · middle/Shift+right: pan · "
-                              "wheel: zoom · F: frame"
-                            : "Click/drag: select nodes (Shift add, Ctrl remove) · drag a selected node: move · "
-                              "Alt+click: place center · right-drag: orbit/pan · wheel: zoom · F: frame";
+    state.contextHelp =
+        !controlPoints(state).empty()
+            ? "Drag a control point: move it in the view's plane · right-drag: orbit/pan · wheel: zoom · "
+              "F: frame"
+        : content_ == Content::Ifs ? "Drag a grid: move its placement · right-drag: orbit · middle/Shift+right: pan · "
+                                     "wheel: zoom · F: frame"
+                                   : "Click/drag: select nodes (Shift add, Ctrl remove) · drag a selected node: move · "
+                                     "Alt+click: place center · right-drag: orbit/pan · wheel: zoom · F: frame";
     if (io.MouseWheel != 0.0f && drag_ == Drag::None) zoom(state, edits, io.MouseWheel);
   }
   orbit_.settleWheel(edits, state.now);

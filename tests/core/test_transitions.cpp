@@ -91,6 +91,18 @@ TEST(Transitions, ChaosGameVisitsOnlyAllowedLevelTwoCells) {
   const Project p = noRepeatSierpinski();
   const auto ifs = compileIfs(p);
   ASSERT_EQ(ifs->transitionAlias.size(), 5u * 4u);
+  // The kernel's walk: row 0 is the first-function row (last in transitionAlias), row i + 1 the
+  // row after function i, and each entry points at the row after its outcome.
+  ASSERT_EQ(ifs->transitionWalk.size(), 5u * 4u);
+  for (std::uint32_t c = 0; c < 4; ++c) {
+    EXPECT_EQ(ifs->transitionWalk[c].threshold, ifs->transitionAlias[16 + c].threshold);
+    EXPECT_EQ(ifs->transitionWalk[c].alias, ifs->transitionAlias[16 + c].alias);
+    for (std::uint32_t row = 0; row < 5; ++row) {
+      const TransitionStep& e = ifs->transitionWalk[4 * row + c];
+      EXPECT_EQ(e.keepRow, 4 * (c + 1));
+      EXPECT_EQ(e.aliasRow, 4 * (e.alias + 1));
+    }
+  }
   RenderJob job = RenderJob::fromProject(p, 2);
   job.samples = 400000;
   std::map<std::pair<int, int>, int> cells;
