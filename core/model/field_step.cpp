@@ -1,0 +1,488 @@
+#include "model/field_step.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <limits>
+
+#include "base/parallel.h"
+#include "model/field_lattice.h"
+#include "model/fractal_field.h"
+
+namespace gridifs {
+
+namespace {
+
+using field_lattice::AxisCell;
+using field_lattice::axisCell;
+using field_lattice::hermite;
+using field_lattice::indexContribution;
+using field_lattice::randomsFromSums;
+using Level = FractalField::Level;
+
+constexpr int kAxes = 3;     // displacement axes: seeds S, S+1, S+2
+constexpr int kSpace = 3;    // spatial dimensions of the collapsed mesh
+constexpr int kCorners = 8;  // of a 3D cell; bit d of a corner's number: upper along d
+// A node's hashed vertices per axis without a cache: cubic, the 8 corners at the four time
+// steps around t and their 24 outward neighbours at the two time steps of the cell; linear,
+// the 8 corners at the two time steps of the cell.
+constexpr int kCubicVertices = kCorners * 4 + kCorners * kSpace * 2;
+constexpr int kLinearVertices = kCorners * 2;
+// Above this many vertices a level is hashed per node rather than collapsed into a box.
+constexpr std::size_t kMaxBoxVertices = std::size_t(1) << 21;
+
+// The time dimension of one level at t. By linearity of hermite() in its values and slopes, the
+// appendix's last (time) reduction hermite(V0, V1, S0, S1, u) splits into the spatial reduction
+// of g = value0·f(t0) + value1·f(t1) plus the trilinear interpolation of the time slopes
+// e = slope0·(f(t1) − f(t−1))/2 + slope1·(f(t2) − f(t0))/2 (central differences, as the
+// appendix takes them). Linear interpolation: g = (1 − u)·f(t0) + u·f(t1), no e.
+struct TimeCollapse {
+  std::array<std::uint64_t, 4> index{};  // hash shares of the time steps −1, 0, +1, +2
+  double value0 = 0.0, value1 = 0.0, slope0 = 0.0, slope1 = 0.0;
+};
+
+TimeCollapse timeCollapse(const Level& level, double t, bool cubic) {
+  TimeCollapse c;
+  const AxisCell cell = axisCell(t, level.offset[3], level.cell[3]);
+  for (int step = 0; step < 4; ++step) c.index[step] = indexContribution(cell.base + step - 1, level.wrap[3], 3);
+  const double u = cell.u;
+  if (cubic) {
+    // The Hermite basis of hermite(): value0·f0 + value1·f1 + slope0·d0 + slope1·d1.
+    const double u2 = u * u;
+    const double u3 = u2 * u;
+    c.value0 = 2.0 * u3 - 3.0 * u2 + 1.0;
+    c.value1 = 3.0 * u2 - 2.0 * u3;
+    c.slope0 = u3 - 2.0 * u2 + u;
+    c.slope1 = u3 - u2;
+  } else {
+    c.value0 = 1.0 - u;
+    c.value1 = u;
+  }
+  return c;
+}
+
+// Collapsed values from f at the steps −1, 0, +1, +2 (cubic) or 0, +1 (linear).
+inline double collapsedValue(const TimeCollapse& c, double f0, double f1) { return c.value0 * f0 + c.value1 * f1; }
+inline double collapsedSlope(const TimeCollapse& c, const double* f) {
+  return c.slope0 * (0.5 * (f[2] - f[0])) + c.slope1 * (0.5 * (f[3] - f[1]));
+}
+
+inline double lerp(double a, double b, double u) { return a + u * (b - a); }
+
+// The appendix's reduction in x, then y, then z: cubic in the value along a dimension, linear in
+// the remaining slopes. value: g at the cell's corners; beyond[c][d]: g at corner c's outward
+// neighbour along d; timeSlope: e at the corners, interpolated trilinearly.
+double pseudoCubic(std::array<double, kCorners> value, const std::array<std::array<double, kSpace>, kCorners>& beyond,
+                   std::array<double, kCorners> timeSlope, const std::array<double, kSpace>& u) {
+  std::array<std::array<double, kSpace>, kCorners> slope{};
+  for (int c = 0; c < kCorners; ++c)
+    for (int d = 0; d < kSpace; ++d) {
+      const double partner = value[c ^ (1 << d)];
+      slope[c][d] = ((c >> d) & 1) ? 0.5 * (beyond[c][d] - partner) : 0.5 * (partner - beyond[c][d]);
+    }
+  for (int d = 0; d < kSpace; ++d) {
+    const int stride = 1 << d;
+    for (int c = 0; c < kCorners; c += stride * 2) {
+      const int c1 = c + stride;
+      value[c] = hermite(value[c], value[c1], slope[c][d], slope[c1][d], u[d]);
+      for (int j = d + 1; j < kSpace; ++j) slope[c][j] = lerp(slope[c][j], slope[c1][j], u[d]);
+      timeSlope[c] = lerp(timeSlope[c], timeSlope[c1], u[d]);
+    }
+  }
+  return value[0] + timeSlope[0];
+}
+
+double trilinear(std::array<double, kCorners> value, const std::array<double, kSpace>& u) {
+  for (int d = 0; d < kSpace; ++d) {
+    const int stride = 1 << d;
+    for (int c = 0; c < kCorners; c += stride * 2) value[c] = lerp(value[c], value[c + stride], u[d]);
+  }
+  return value[0];
+}
+
+// The lattice vertices a set of nodes reaches on one level: the box from one below the lowest
+// cell to two above the highest along each spatial dimension.
+struct VertexBox {
+  std::array<std::int64_t, kSpace> lo{};
+  std::array<std::int64_t, kSpace> size{};
+  std::size_t count() const { return std::size_t(size[0]) * std::size_t(size[1]) * std::size_t(size[2]); }
+  std::size_t at(std::int64_t i, std::int64_t j, std::int64_t k) const {
+    return std::size_t(i + size[0] * (j + size[1] * k));
+  }
+};
+
+struct BoxBuilder {
+  std::array<std::int64_t, kSpace> low{std::numeric_limits<std::int64_t>::max(),
+                                       std::numeric_limits<std::int64_t>::max(),
+                                       std::numeric_limits<std::int64_t>::max()};
+  std::array<std::int64_t, kSpace> high{std::numeric_limits<std::int64_t>::min(),
+                                        std::numeric_limits<std::int64_t>::min(),
+                                        std::numeric_limits<std::int64_t>::min()};
+  void add(int d, std::int64_t base) {
+    low[d] = std::min(low[d], base);
+    high[d] = std::max(high[d], base);
+  }
+  VertexBox box() const {
+    VertexBox b;
+    for (int d = 0; d < kSpace; ++d) {
+      b.lo[d] = low[d] - 1;
+      b.size[d] = high[d] - low[d] + 4;
+    }
+    return b;
+  }
+};
+
+// One level's mesh collapsed at t over a box: g and e per displacement axis, x fastest.
+struct CollapsedMesh {
+  VertexBox box;
+  std::array<std::vector<double>, kAxes> g, e;
+};
+
+void collapse(const Level& level, const TimeCollapse& time, bool cubic, const VertexBox& box, int threads,
+              CollapsedMesh& mesh) {
+  mesh.box = box;
+  std::array<std::vector<std::uint64_t>, kSpace> share;
+  for (int d = 0; d < kSpace; ++d) {
+    share[d].resize(std::size_t(box.size[d]));
+    for (std::int64_t i = 0; i < box.size[d]; ++i)
+      share[d][std::size_t(i)] = indexContribution(box.lo[d] + i, level.wrap[d], d);
+  }
+  for (int a = 0; a < kAxes; ++a) {
+    mesh.g[a].assign(box.count(), 0.0);
+    if (cubic) mesh.e[a].assign(box.count(), 0.0);
+  }
+  const int steps = cubic ? 4 : 2;
+  const int first = cubic ? 0 : 1;
+  const std::size_t width = std::size_t(box.size[0]);
+  parallelFor(std::size_t(box.size[1] * box.size[2]), threads, 8, [&](std::size_t begin, std::size_t end) {
+    std::vector<std::uint64_t> sums(width * std::size_t(steps));
+    std::vector<double> f(sums.size());
+    for (std::size_t row = begin; row < end; ++row) {
+      const std::size_t j = row % std::size_t(box.size[1]);
+      const std::size_t k = row / std::size_t(box.size[1]);
+      const std::uint64_t rowShare = share[1][j] + share[2][k];
+      for (std::size_t i = 0; i < width; ++i)
+        for (int step = 0; step < steps; ++step)
+          sums[i * steps + step] = share[0][i] + rowShare + time.index[first + step];
+      for (int a = 0; a < kAxes; ++a) {
+        randomsFromSums(sums.data(), sums.size(), level.keys[a], f.data());
+        double* g = mesh.g[a].data() + row * width;
+        for (std::size_t i = 0; i < width; ++i) {
+          const double* v = &f[i * steps];
+          if (cubic) {
+            g[i] = collapsedValue(time, v[1], v[2]);
+            mesh.e[a][row * width + i] = collapsedSlope(time, v);
+          } else {
+            g[i] = collapsedValue(time, v[0], v[1]);
+          }
+        }
+      }
+    }
+  });
+}
+
+struct NodeCell {
+  std::array<std::int64_t, kSpace> base{};
+  std::array<double, kSpace> u{};
+};
+
+NodeCell nodeCell(const Level& level, const Vec3& s) {
+  NodeCell n;
+  for (int d = 0; d < kSpace; ++d) {
+    const AxisCell c = axisCell(s[d], level.offset[d], level.cell[d]);
+    n.base[d] = c.base;
+    n.u[d] = c.u;
+  }
+  return n;
+}
+
+// One level at one node read from its collapsed mesh, for the three axes.
+void readCollapsed(const CollapsedMesh& mesh, bool cubic, const NodeCell& cell, double* out) {
+  const VertexBox& box = mesh.box;
+  const std::array<std::int64_t, kSpace> stride{1, box.size[0], box.size[0] * box.size[1]};
+  const std::size_t origin = box.at(cell.base[0] - box.lo[0], cell.base[1] - box.lo[1], cell.base[2] - box.lo[2]);
+  std::array<std::size_t, kCorners> corner{};
+  for (int c = 0; c < kCorners; ++c) {
+    std::int64_t offset = 0;
+    for (int d = 0; d < kSpace; ++d) offset += ((c >> d) & 1) * stride[d];
+    corner[c] = origin + std::size_t(offset);
+  }
+  for (int a = 0; a < kAxes; ++a) {
+    const double* g = mesh.g[a].data();
+    std::array<double, kCorners> value{};
+    for (int c = 0; c < kCorners; ++c) value[c] = g[corner[c]];
+    if (!cubic) {
+      out[a] = trilinear(value, cell.u);
+      continue;
+    }
+    const double* e = mesh.e[a].data();
+    std::array<std::array<double, kSpace>, kCorners> beyond{};
+    std::array<double, kCorners> timeSlope{};
+    for (int c = 0; c < kCorners; ++c) {
+      timeSlope[c] = e[corner[c]];
+      for (int d = 0; d < kSpace; ++d)
+        beyond[c][d] = g[((c >> d) & 1) ? corner[c] + std::size_t(stride[d]) : corner[c] - std::size_t(stride[d])];
+    }
+    out[a] = pseudoCubic(value, beyond, timeSlope, cell.u);
+  }
+}
+
+// One level at a block of nodes whose vertices no other node shares: each node's vertices are
+// hashed together, a block at a time.
+constexpr std::size_t kBlock = 32;
+
+void hashDirect(const Level& level, const TimeCollapse& time, bool cubic, const Vec3* samples, std::size_t count,
+                Vec3* total) {
+  const int perNode = cubic ? kCubicVertices : kLinearVertices;
+  std::array<std::uint64_t, kBlock * kCubicVertices> sums{};
+  std::array<std::array<double, kBlock * kCubicVertices>, kAxes> f{};
+  std::array<NodeCell, kBlock> cells{};
+  for (std::size_t n = 0; n < count; ++n) {
+    const NodeCell cell = nodeCell(level, samples[n]);
+    cells[n] = cell;
+    std::array<std::array<std::uint64_t, 4>, kSpace> index{};
+    for (int d = 0; d < kSpace; ++d)
+      for (int step = 0; step < 4; ++step)
+        index[d][step] = indexContribution(cell.base[d] + step - 1, level.wrap[d], d);
+    std::uint64_t* s = &sums[n * std::size_t(perNode)];
+    for (int c = 0; c < kCorners; ++c) {
+      std::uint64_t corner = 0;
+      for (int d = 0; d < kSpace; ++d) corner += index[d][1 + ((c >> d) & 1)];
+      if (!cubic) {
+        s[c * 2] = corner + time.index[1];
+        s[c * 2 + 1] = corner + time.index[2];
+        continue;
+      }
+      for (int step = 0; step < 4; ++step) s[c * 4 + step] = corner + time.index[step];
+      for (int d = 0; d < kSpace; ++d) {
+        const int bit = (c >> d) & 1;
+        const std::uint64_t outward = corner - index[d][1 + bit] + index[d][bit ? 3 : 0];
+        s[kCorners * 4 + (c * kSpace + d) * 2] = outward + time.index[1];
+        s[kCorners * 4 + (c * kSpace + d) * 2 + 1] = outward + time.index[2];
+      }
+    }
+  }
+  const std::size_t used = count * std::size_t(perNode);
+  for (int a = 0; a < kAxes; ++a) randomsFromSums(sums.data(), used, level.keys[a], f[a].data());
+  for (std::size_t n = 0; n < count; ++n) {
+    Vec3 v{0.0, 0.0, 0.0};
+    for (int a = 0; a < kAxes; ++a) {
+      const double* r = &f[a][n * std::size_t(perNode)];
+      std::array<double, kCorners> value{};
+      if (!cubic) {
+        for (int c = 0; c < kCorners; ++c) value[c] = collapsedValue(time, r[c * 2], r[c * 2 + 1]);
+        v[a] = trilinear(value, cells[n].u);
+        continue;
+      }
+      std::array<std::array<double, kSpace>, kCorners> beyond{};
+      std::array<double, kCorners> timeSlope{};
+      for (int c = 0; c < kCorners; ++c) {
+        value[c] = collapsedValue(time, r[c * 4 + 1], r[c * 4 + 2]);
+        timeSlope[c] = collapsedSlope(time, &r[c * 4]);
+        for (int d = 0; d < kSpace; ++d) {
+          const double* o = &r[kCorners * 4 + (c * kSpace + d) * 2];
+          beyond[c][d] = collapsedValue(time, o[0], o[1]);
+        }
+      }
+      v[a] = pseudoCubic(value, beyond, timeSlope, cells[n].u);
+    }
+    total[n] += level.weight * v;
+  }
+}
+
+// Nodes at every (xs[i], ys[j], zs[k]), x fastest: an undistorted grid or a heightfield.
+struct TensorGrid {
+  std::array<std::vector<double>, kSpace> coordinate;
+};
+
+bool findTensorGrid(const std::vector<Vec3>& nodes, TensorGrid& grid) {
+  const std::size_t n = nodes.size();
+  if (n < 64) return false;
+  std::size_t nx = 1;
+  while (nx < n && nodes[nx].y == nodes[0].y && nodes[nx].z == nodes[0].z) ++nx;
+  std::size_t ny = 1;
+  while (ny * nx < n && nodes[ny * nx].z == nodes[0].z) ++ny;
+  if (n % (nx * ny) != 0) return false;
+  const std::size_t nz = n / (nx * ny);
+  for (int d = 0; d < kSpace; ++d) grid.coordinate[d].clear();
+  for (std::size_t i = 0; i < nx; ++i) grid.coordinate[0].push_back(nodes[i].x);
+  for (std::size_t j = 0; j < ny; ++j) grid.coordinate[1].push_back(nodes[j * nx].y);
+  for (std::size_t k = 0; k < nz; ++k) grid.coordinate[2].push_back(nodes[k * nx * ny].z);
+  std::size_t m = 0;
+  for (std::size_t k = 0; k < nz; ++k)
+    for (std::size_t j = 0; j < ny; ++j)
+      for (std::size_t i = 0; i < nx; ++i, ++m)
+        if (nodes[m].x != grid.coordinate[0][i] || nodes[m].y != grid.coordinate[1][j] ||
+            nodes[m].z != grid.coordinate[2][k])
+          return false;
+  return true;
+}
+
+// One level over a tensor grid of samples (coordinates already shifted and wrapped), one
+// dimension at a time: the same reduction as pseudoCubic(), with each pass shared by every node
+// that shares the remaining coordinates. The slopes along y and z are central differences of
+// values already interpolated along x (and y): the same numbers by linearity.
+void separable(const CollapsedMesh& mesh, bool cubic, double weight,
+               const std::array<std::vector<AxisCell>, kSpace>& cells, int threads, std::vector<Vec3>& total) {
+  const VertexBox& box = mesh.box;
+  const std::size_t nx = cells[0].size(), ny = cells[1].size(), nz = cells[2].size();
+  const std::size_t bx = std::size_t(box.size[0]), by = std::size_t(box.size[1]), bz = std::size_t(box.size[2]);
+  std::array<std::vector<std::size_t>, kSpace> at;  // each sample's lower vertex, in box coordinates
+  for (int d = 0; d < kSpace; ++d)
+    for (const AxisCell& c : cells[d]) at[d].push_back(std::size_t(c.base - box.lo[d]));
+  // x pass: per sample column and box row (j, k): the value (cubic along x) and the plain lerps
+  // of g and e that carry the y and z slopes.
+  std::vector<double> xValue(nx * by * bz), xLerp, xSlope, yValue(nx * ny * bz), yLerp, ySlope;
+  if (cubic) {
+    xLerp.resize(xValue.size());
+    xSlope.resize(xValue.size());
+    yLerp.resize(yValue.size());
+    ySlope.resize(yValue.size());
+  }
+  for (int a = 0; a < kAxes; ++a) {
+    const double* g = mesh.g[a].data();
+    const double* e = cubic ? mesh.e[a].data() : nullptr;
+    parallelFor(by * bz, threads, 16, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t row = begin; row < end; ++row) {
+        const double* r = g + row * bx;
+        for (std::size_t i = 0; i < nx; ++i) {
+          const std::size_t c = at[0][i];
+          const double u = cells[0][i].u;
+          const std::size_t o = i + nx * row;
+          if (!cubic) {
+            xValue[o] = lerp(r[c], r[c + 1], u);
+            continue;
+          }
+          xValue[o] = hermite(r[c], r[c + 1], 0.5 * (r[c + 1] - r[c - 1]), 0.5 * (r[c + 2] - r[c]), u);
+          xLerp[o] = lerp(r[c], r[c + 1], u);
+          xSlope[o] = lerp(e[row * bx + c], e[row * bx + c + 1], u);
+        }
+      }
+    });
+    // y pass: per sample column (i, j) and box layer k.
+    parallelFor(bz, threads, 1, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t k = begin; k < end; ++k)
+        for (std::size_t j = 0; j < ny; ++j) {
+          const std::size_t c = at[1][j];
+          const double u = cells[1][j].u;
+          for (std::size_t i = 0; i < nx; ++i) {
+            const auto x = [&](std::size_t row) { return i + nx * (row + by * k); };
+            const std::size_t o = i + nx * (j + ny * k);
+            if (!cubic) {
+              yValue[o] = lerp(xValue[x(c)], xValue[x(c + 1)], u);
+              continue;
+            }
+            const double low = 0.5 * (xLerp[x(c + 1)] - xLerp[x(c - 1)]);
+            const double high = 0.5 * (xLerp[x(c + 2)] - xLerp[x(c)]);
+            yValue[o] = hermite(xValue[x(c)], xValue[x(c + 1)], low, high, u);
+            yLerp[o] = lerp(xLerp[x(c)], xLerp[x(c + 1)], u);
+            ySlope[o] = lerp(xSlope[x(c)], xSlope[x(c + 1)], u);
+          }
+        }
+    });
+    // z pass: every node.
+    parallelFor(nz, threads, 1, [&](std::size_t begin, std::size_t end) {
+      for (std::size_t k = begin; k < end; ++k) {
+        const std::size_t c = at[2][k];
+        const double u = cells[2][k].u;
+        for (std::size_t j = 0; j < ny; ++j)
+          for (std::size_t i = 0; i < nx; ++i) {
+            const auto y = [&](std::size_t layer) { return i + nx * (j + ny * layer); };
+            double v = 0.0;
+            if (!cubic) {
+              v = lerp(yValue[y(c)], yValue[y(c + 1)], u);
+            } else {
+              const double low = 0.5 * (yLerp[y(c + 1)] - yLerp[y(c - 1)]);
+              const double high = 0.5 * (yLerp[y(c + 2)] - yLerp[y(c)]);
+              v = hermite(yValue[y(c)], yValue[y(c + 1)], low, high, u) + lerp(ySlope[y(c)], ySlope[y(c + 1)], u);
+            }
+            total[i + nx * (j + ny * k)][a] += weight * v;
+          }
+      }
+    });
+  }
+}
+
+}  // namespace
+
+void fieldStepDisplace(const FractalField& field, std::vector<Vec3>& nodes, const std::vector<unsigned char>& mask,
+                       double t, int threads) {
+  const FractalFieldParams& p = field.params();
+  const bool cubic = p.interpolation == FieldInterpolation::Cubic;
+  const int workers = resolveThreadCount(threads);
+  std::vector<std::size_t> selected;
+  for (std::size_t n = 0; n < nodes.size(); ++n)
+    if (mask[n]) selected.push_back(n);
+  if (selected.empty()) return;
+
+  // The sample points s = (q + wind·t, t), wrapped (Colonna §3.2).
+  const auto sampleOf = [&](const Vec3& q) {
+    const FieldPoint s = field.wrapped({q.x + p.wind.x * t, q.y + p.wind.y * t, q.z + p.wind.z * t, t});
+    return Vec3{s[0], s[1], s[2]};
+  };
+  const double time = field.wrapped({0.0, 0.0, 0.0, t})[3];
+  TensorGrid grid;
+  const bool tensor = selected.size() == nodes.size() && findTensorGrid(nodes, grid);
+  std::array<std::vector<double>, kSpace> axisSamples;  // tensor grids: the samples per dimension
+  if (tensor)
+    for (int d = 0; d < kSpace; ++d)
+      for (double coordinate : grid.coordinate[d]) {
+        Vec3 q{0.0, 0.0, 0.0};
+        q[d] = coordinate;
+        axisSamples[d].push_back(sampleOf(q)[d]);
+      }
+  std::vector<Vec3> samples(selected.size());
+  parallelFor(selected.size(), workers, 4096, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t n = begin; n < end; ++n) samples[n] = sampleOf(nodes[selected[n]]);
+  });
+
+  std::vector<Vec3> total(selected.size(), Vec3{0.0, 0.0, 0.0});
+  CollapsedMesh mesh;
+  for (int k = 0; k < field.levelCount(); ++k) {
+    const Level& level = field.level(k);
+    const TimeCollapse collapsed = timeCollapse(level, time, cubic);
+    BoxBuilder bounds;
+    std::array<std::vector<AxisCell>, kSpace> axisCells;
+    if (tensor) {
+      for (int d = 0; d < kSpace; ++d)
+        for (double s : axisSamples[d]) {
+          axisCells[d].push_back(axisCell(s, level.offset[d], level.cell[d]));
+          bounds.add(d, axisCells[d].back().base);
+        }
+    } else {
+      for (const Vec3& s : samples) {
+        const NodeCell cell = nodeCell(level, s);
+        for (int d = 0; d < kSpace; ++d) bounds.add(d, cell.base[d]);
+      }
+    }
+    const VertexBox box = bounds.box();
+    // Collapse the box when that hashes fewer vertices than hashing each node's own.
+    const std::size_t boxHashes = box.count() * (cubic ? 4 : 2);
+    const std::size_t nodeHashes = selected.size() * std::size_t(cubic ? kCubicVertices : kLinearVertices);
+    if (box.count() <= kMaxBoxVertices && boxHashes <= nodeHashes) {
+      collapse(level, collapsed, cubic, box, workers, mesh);
+      if (tensor) {
+        separable(mesh, cubic, level.weight, axisCells, workers, total);
+      } else {
+        parallelFor(selected.size(), workers, 512, [&](std::size_t begin, std::size_t end) {
+          for (std::size_t n = begin; n < end; ++n) {
+            double v[kAxes];
+            readCollapsed(mesh, cubic, nodeCell(level, samples[n]), v);
+            total[n] += level.weight * Vec3{v[0], v[1], v[2]};
+          }
+        });
+      }
+    } else {
+      parallelFor((selected.size() + kBlock - 1) / kBlock, workers, 16, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t b = begin; b < end; ++b) {
+          const std::size_t first = b * kBlock;
+          hashDirect(level, collapsed, cubic, &samples[first], std::min(kBlock, selected.size() - first),
+                     &total[first]);
+        }
+      });
+    }
+  }
+  for (std::size_t n = 0; n < selected.size(); ++n) nodes[selected[n]] += p.amplitude * total[n];
+}
+
+}  // namespace gridifs
