@@ -138,45 +138,69 @@ struct CollapsedMesh {
   std::array<std::vector<double>, kAxes> g, e;
 };
 
-void collapse(const Level& level, const TimeCollapse& time, bool cubic, const VertexBox& box, int threads,
-              CollapsedMesh& mesh) {
-  mesh.box = box;
+// The hash shares of a box's vertex indices per spatial dimension (wrapped where periodic).
+std::array<std::vector<std::uint64_t>, kSpace> boxShares(const Level& level, const VertexBox& box) {
   std::array<std::vector<std::uint64_t>, kSpace> share;
   for (int d = 0; d < kSpace; ++d) {
     share[d].resize(std::size_t(box.size[d]));
     for (std::int64_t i = 0; i < box.size[d]; ++i)
       share[d][std::size_t(i)] = indexContribution(box.lo[d] + i, level.wrap[d], d);
   }
-  for (int a = 0; a < kAxes; ++a) {
-    mesh.g[a].assign(box.count(), 0.0);
-    if (cubic) mesh.e[a].assign(box.count(), 0.0);
-  }
+  return share;
+}
+
+// Scratch for collapsing one row of a box, reused along a worker's rows.
+struct RowScratch {
+  std::vector<std::uint64_t> sums;
+  std::vector<double> f;
+};
+
+// g (and e, cubic) of the box row (j, k) for the three axes into g[a][0..width), e[a][0..width).
+void collapseRow(const Level& level, const TimeCollapse& time, bool cubic,
+                 const std::array<std::vector<std::uint64_t>, kSpace>& share, std::size_t j, std::size_t k,
+                 RowScratch& scratch, const std::array<double*, kAxes>& g, const std::array<double*, kAxes>& e) {
   const int steps = cubic ? 4 : 2;
   const int first = cubic ? 0 : 1;
+  const std::size_t width = share[0].size();
+  scratch.sums.resize(width * std::size_t(steps));
+  scratch.f.resize(scratch.sums.size());
+  const std::uint64_t rowShare = share[1][j] + share[2][k];
+  for (std::size_t i = 0; i < width; ++i)
+    for (int step = 0; step < steps; ++step)
+      scratch.sums[i * steps + step] = share[0][i] + rowShare + time.index[first + step];
+  for (int a = 0; a < kAxes; ++a) {
+    randomsFromSums(scratch.sums.data(), scratch.sums.size(), level.keys[a], scratch.f.data());
+    for (std::size_t i = 0; i < width; ++i) {
+      const double* v = &scratch.f[i * steps];
+      if (cubic) {
+        g[a][i] = collapsedValue(time, v[1], v[2]);
+        e[a][i] = collapsedSlope(time, v);
+      } else {
+        g[a][i] = collapsedValue(time, v[0], v[1]);
+      }
+    }
+  }
+}
+
+void collapse(const Level& level, const TimeCollapse& time, bool cubic, const VertexBox& box, int threads,
+              CollapsedMesh& mesh) {
+  mesh.box = box;
+  const auto share = boxShares(level, box);
+  for (int a = 0; a < kAxes; ++a) {
+    mesh.g[a].resize(box.count());
+    mesh.e[a].resize(cubic ? box.count() : 0);
+  }
   const std::size_t width = std::size_t(box.size[0]);
   parallelFor(std::size_t(box.size[1] * box.size[2]), threads, 8, [&](std::size_t begin, std::size_t end) {
-    std::vector<std::uint64_t> sums(width * std::size_t(steps));
-    std::vector<double> f(sums.size());
+    RowScratch scratch;
     for (std::size_t row = begin; row < end; ++row) {
-      const std::size_t j = row % std::size_t(box.size[1]);
-      const std::size_t k = row / std::size_t(box.size[1]);
-      const std::uint64_t rowShare = share[1][j] + share[2][k];
-      for (std::size_t i = 0; i < width; ++i)
-        for (int step = 0; step < steps; ++step)
-          sums[i * steps + step] = share[0][i] + rowShare + time.index[first + step];
+      std::array<double*, kAxes> g{}, e{};
       for (int a = 0; a < kAxes; ++a) {
-        randomsFromSums(sums.data(), sums.size(), level.keys[a], f.data());
-        double* g = mesh.g[a].data() + row * width;
-        for (std::size_t i = 0; i < width; ++i) {
-          const double* v = &f[i * steps];
-          if (cubic) {
-            g[i] = collapsedValue(time, v[1], v[2]);
-            mesh.e[a][row * width + i] = collapsedSlope(time, v);
-          } else {
-            g[i] = collapsedValue(time, v[0], v[1]);
-          }
-        }
+        g[a] = mesh.g[a].data() + row * width;
+        e[a] = cubic ? mesh.e[a].data() + row * width : nullptr;
       }
+      collapseRow(level, time, cubic, share, row % std::size_t(box.size[1]), row / std::size_t(box.size[1]), scratch, g,
+                  e);
     }
   });
 }
@@ -231,12 +255,20 @@ void readCollapsed(const CollapsedMesh& mesh, bool cubic, const NodeCell& cell, 
 // hashed together, a block at a time.
 constexpr std::size_t kBlock = 32;
 
-void hashDirect(const Level& level, const TimeCollapse& time, bool cubic, const Vec3* samples, std::size_t count,
-                Vec3* total) {
-  const int perNode = cubic ? kCubicVertices : kLinearVertices;
-  std::array<std::uint64_t, kBlock * kCubicVertices> sums{};
-  std::array<std::array<double, kBlock * kCubicVertices>, kAxes> f{};
+struct BlockScratch {
+  std::vector<std::uint64_t> sums = std::vector<std::uint64_t>(kBlock * kCubicVertices);
+  std::array<std::vector<double>, kAxes> f{std::vector<double>(kBlock * kCubicVertices),
+                                           std::vector<double>(kBlock* kCubicVertices),
+                                           std::vector<double>(kBlock* kCubicVertices)};
   std::array<NodeCell, kBlock> cells{};
+};
+
+void hashDirect(const Level& level, const TimeCollapse& time, bool cubic, const Vec3* samples, std::size_t count,
+                BlockScratch& scratch, Vec3* total) {
+  const int perNode = cubic ? kCubicVertices : kLinearVertices;
+  std::vector<std::uint64_t>& sums = scratch.sums;
+  std::array<std::vector<double>, kAxes>& f = scratch.f;
+  std::array<NodeCell, kBlock>& cells = scratch.cells;
   for (std::size_t n = 0; n < count; ++n) {
     const NodeCell cell = nodeCell(level, samples[n]);
     cells[n] = cell;
@@ -319,88 +351,108 @@ bool findTensorGrid(const std::vector<Vec3>& nodes, TensorGrid& grid) {
 }
 
 // One level over a tensor grid of samples (coordinates already shifted and wrapped), one
-// dimension at a time: the same reduction as pseudoCubic(), with each pass shared by every node
-// that shares the remaining coordinates. The slopes along y and z are central differences of
-// values already interpolated along x (and y): the same numbers by linearity.
-void separable(const CollapsedMesh& mesh, bool cubic, double weight,
+// dimension at a time: the same reduction as pseudoCubic(), each pass shared by every node that
+// shares the remaining coordinates. The slopes along y and z are central differences of values
+// already interpolated along x (and y): the same numbers by linearity. The box is collapsed one
+// layer of constant z at a time, straight into the x and y passes, so it is never stored whole.
+void separable(const Level& level, const TimeCollapse& time, bool cubic, const VertexBox& box,
                const std::array<std::vector<AxisCell>, kSpace>& cells, int threads, std::vector<Vec3>& total) {
-  const VertexBox& box = mesh.box;
   const std::size_t nx = cells[0].size(), ny = cells[1].size(), nz = cells[2].size();
   const std::size_t bx = std::size_t(box.size[0]), by = std::size_t(box.size[1]), bz = std::size_t(box.size[2]);
+  const auto share = boxShares(level, box);
   std::array<std::vector<std::size_t>, kSpace> at;  // each sample's lower vertex, in box coordinates
   for (int d = 0; d < kSpace; ++d)
     for (const AxisCell& c : cells[d]) at[d].push_back(std::size_t(c.base - box.lo[d]));
-  // x pass: per sample column and box row (j, k): the value (cubic along x) and the plain lerps
-  // of g and e that carry the y and z slopes.
-  std::vector<double> xValue(nx * by * bz), xLerp, xSlope, yValue(nx * ny * bz), yLerp, ySlope;
-  if (cubic) {
-    xLerp.resize(xValue.size());
-    xSlope.resize(xValue.size());
-    yLerp.resize(yValue.size());
-    ySlope.resize(yValue.size());
-  }
+  // Per axis, after the y pass: the value (cubic along x and y), the lerp of g along x and y
+  // (whose central differences along z are the z slopes) and the lerp of e.
+  std::array<std::vector<double>, kAxes> yValue, yLerp, ySlope;
   for (int a = 0; a < kAxes; ++a) {
-    const double* g = mesh.g[a].data();
-    const double* e = cubic ? mesh.e[a].data() : nullptr;
-    parallelFor(by * bz, threads, 16, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t row = begin; row < end; ++row) {
-        const double* r = g + row * bx;
-        for (std::size_t i = 0; i < nx; ++i) {
-          const std::size_t c = at[0][i];
-          const double u = cells[0][i].u;
-          const std::size_t o = i + nx * row;
-          if (!cubic) {
-            xValue[o] = lerp(r[c], r[c + 1], u);
-            continue;
+    yValue[a].resize(nx * ny * bz);
+    if (cubic) {
+      yLerp[a].resize(nx * ny * bz);
+      ySlope[a].resize(nx * ny * bz);
+    }
+  }
+  parallelFor(bz, threads, 1, [&](std::size_t begin, std::size_t end) {
+    RowScratch scratch;
+    std::vector<double> gRow(kAxes * bx), eRow(kAxes * bx);
+    // The x pass of one layer: per sample column i and box row j, the value (cubic along x),
+    // and the lerps of g and e along x that carry the y and z slopes.
+    std::array<std::vector<double>, kAxes> xValue, xLerp, xSlope;
+    for (int a = 0; a < kAxes; ++a) {
+      xValue[a].resize(nx * by);
+      xLerp[a].resize(cubic ? nx * by : 0);
+      xSlope[a].resize(cubic ? nx * by : 0);
+    }
+    for (std::size_t k = begin; k < end; ++k) {
+      for (std::size_t j = 0; j < by; ++j) {
+        std::array<double*, kAxes> g{}, e{};
+        for (int a = 0; a < kAxes; ++a) {
+          g[a] = gRow.data() + a * bx;
+          e[a] = eRow.data() + a * bx;
+        }
+        collapseRow(level, time, cubic, share, j, k, scratch, g, e);
+        for (int a = 0; a < kAxes; ++a) {
+          const double* r = g[a];
+          const double* re = e[a];
+          for (std::size_t i = 0; i < nx; ++i) {
+            const std::size_t c = at[0][i];
+            const double u = cells[0][i].u;
+            const std::size_t o = i + nx * j;
+            if (!cubic) {
+              xValue[a][o] = lerp(r[c], r[c + 1], u);
+              continue;
+            }
+            xValue[a][o] = hermite(r[c], r[c + 1], 0.5 * (r[c + 1] - r[c - 1]), 0.5 * (r[c + 2] - r[c]), u);
+            xLerp[a][o] = lerp(r[c], r[c + 1], u);
+            xSlope[a][o] = lerp(re[c], re[c + 1], u);
           }
-          xValue[o] = hermite(r[c], r[c + 1], 0.5 * (r[c + 1] - r[c - 1]), 0.5 * (r[c + 2] - r[c]), u);
-          xLerp[o] = lerp(r[c], r[c + 1], u);
-          xSlope[o] = lerp(e[row * bx + c], e[row * bx + c + 1], u);
         }
       }
-    });
-    // y pass: per sample column (i, j) and box layer k.
-    parallelFor(bz, threads, 1, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t k = begin; k < end; ++k)
+      // The y pass of the layer: per sample column (i, j).
+      for (int a = 0; a < kAxes; ++a)
         for (std::size_t j = 0; j < ny; ++j) {
           const std::size_t c = at[1][j];
           const double u = cells[1][j].u;
           for (std::size_t i = 0; i < nx; ++i) {
-            const auto x = [&](std::size_t row) { return i + nx * (row + by * k); };
+            const auto x = [&](std::size_t row) { return i + nx * row; };
             const std::size_t o = i + nx * (j + ny * k);
             if (!cubic) {
-              yValue[o] = lerp(xValue[x(c)], xValue[x(c + 1)], u);
+              yValue[a][o] = lerp(xValue[a][x(c)], xValue[a][x(c + 1)], u);
               continue;
             }
-            const double low = 0.5 * (xLerp[x(c + 1)] - xLerp[x(c - 1)]);
-            const double high = 0.5 * (xLerp[x(c + 2)] - xLerp[x(c)]);
-            yValue[o] = hermite(xValue[x(c)], xValue[x(c + 1)], low, high, u);
-            yLerp[o] = lerp(xLerp[x(c)], xLerp[x(c + 1)], u);
-            ySlope[o] = lerp(xSlope[x(c)], xSlope[x(c + 1)], u);
+            const double low = 0.5 * (xLerp[a][x(c + 1)] - xLerp[a][x(c - 1)]);
+            const double high = 0.5 * (xLerp[a][x(c + 2)] - xLerp[a][x(c)]);
+            yValue[a][o] = hermite(xValue[a][x(c)], xValue[a][x(c + 1)], low, high, u);
+            yLerp[a][o] = lerp(xLerp[a][x(c)], xLerp[a][x(c + 1)], u);
+            ySlope[a][o] = lerp(xSlope[a][x(c)], xSlope[a][x(c + 1)], u);
           }
         }
-    });
-    // z pass: every node.
-    parallelFor(nz, threads, 1, [&](std::size_t begin, std::size_t end) {
-      for (std::size_t k = begin; k < end; ++k) {
-        const std::size_t c = at[2][k];
-        const double u = cells[2][k].u;
-        for (std::size_t j = 0; j < ny; ++j)
-          for (std::size_t i = 0; i < nx; ++i) {
-            const auto y = [&](std::size_t layer) { return i + nx * (j + ny * layer); };
-            double v = 0.0;
+    }
+  });
+  // The z pass: every node.
+  parallelFor(nz, threads, 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t k = begin; k < end; ++k) {
+      const std::size_t c = at[2][k];
+      const double u = cells[2][k].u;
+      for (std::size_t j = 0; j < ny; ++j)
+        for (std::size_t i = 0; i < nx; ++i) {
+          const auto y = [&](std::size_t layer) { return i + nx * (j + ny * layer); };
+          Vec3 v{0.0, 0.0, 0.0};
+          for (int a = 0; a < kAxes; ++a) {
             if (!cubic) {
-              v = lerp(yValue[y(c)], yValue[y(c + 1)], u);
-            } else {
-              const double low = 0.5 * (yLerp[y(c + 1)] - yLerp[y(c - 1)]);
-              const double high = 0.5 * (yLerp[y(c + 2)] - yLerp[y(c)]);
-              v = hermite(yValue[y(c)], yValue[y(c + 1)], low, high, u) + lerp(ySlope[y(c)], ySlope[y(c + 1)], u);
+              v[a] = lerp(yValue[a][y(c)], yValue[a][y(c + 1)], u);
+              continue;
             }
-            total[i + nx * (j + ny * k)][a] += weight * v;
+            const double low = 0.5 * (yLerp[a][y(c + 1)] - yLerp[a][y(c - 1)]);
+            const double high = 0.5 * (yLerp[a][y(c + 2)] - yLerp[a][y(c)]);
+            v[a] = hermite(yValue[a][y(c)], yValue[a][y(c + 1)], low, high, u) +
+                   lerp(ySlope[a][y(c)], ySlope[a][y(c + 1)], u);
           }
-      }
-    });
-  }
+          total[i + nx * (j + ny * k)] += level.weight * v;
+        }
+    }
+  });
 }
 
 }  // namespace
@@ -460,10 +512,10 @@ void fieldStepDisplace(const FractalField& field, std::vector<Vec3>& nodes, cons
     const std::size_t boxHashes = box.count() * (cubic ? 4 : 2);
     const std::size_t nodeHashes = selected.size() * std::size_t(cubic ? kCubicVertices : kLinearVertices);
     if (box.count() <= kMaxBoxVertices && boxHashes <= nodeHashes) {
-      collapse(level, collapsed, cubic, box, workers, mesh);
       if (tensor) {
-        separable(mesh, cubic, level.weight, axisCells, workers, total);
+        separable(level, collapsed, cubic, box, axisCells, workers, total);
       } else {
+        collapse(level, collapsed, cubic, box, workers, mesh);
         parallelFor(selected.size(), workers, 512, [&](std::size_t begin, std::size_t end) {
           for (std::size_t n = begin; n < end; ++n) {
             double v[kAxes];
@@ -474,9 +526,10 @@ void fieldStepDisplace(const FractalField& field, std::vector<Vec3>& nodes, cons
       }
     } else {
       parallelFor((selected.size() + kBlock - 1) / kBlock, workers, 16, [&](std::size_t begin, std::size_t end) {
+        BlockScratch scratch;
         for (std::size_t b = begin; b < end; ++b) {
           const std::size_t first = b * kBlock;
-          hashDirect(level, collapsed, cubic, &samples[first], std::min(kBlock, selected.size() - first),
+          hashDirect(level, collapsed, cubic, &samples[first], std::min(kBlock, selected.size() - first), scratch,
                      &total[first]);
         }
       });
