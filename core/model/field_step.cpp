@@ -255,71 +255,120 @@ void readCollapsed(const CollapsedMesh& mesh, bool cubic, const NodeCell& cell, 
 // hashed together, a block at a time.
 constexpr std::size_t kBlock = 32;
 
+// A block's hash inputs and random values are stored vertex-major ([vertex][node]), so each
+// step of the interpolation below is one loop over the block's nodes, which the compiler turns
+// into vector instructions.
 struct BlockScratch {
   std::vector<std::uint64_t> sums = std::vector<std::uint64_t>(kBlock * kCubicVertices);
-  std::array<std::vector<double>, kAxes> f{std::vector<double>(kBlock * kCubicVertices),
-                                           std::vector<double>(kBlock* kCubicVertices),
-                                           std::vector<double>(kBlock* kCubicVertices)};
-  std::array<NodeCell, kBlock> cells{};
+  std::vector<double> f = std::vector<double>(kBlock * kCubicVertices);
+  std::array<std::array<double, kBlock>, kSpace> u{};
+  std::array<std::array<double, kBlock>, kAxes> out{};
 };
 
+// pseudoCubic() (cubic) or trilinear() (linear) of the collapsed values for every node of a
+// block at once, in the same order of operations. f: the random values, vertex-major, in the
+// layout hashDirect writes. The clones for newer processors are built without fused
+// multiply-adds, so every processor rounds alike.
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default"), optimize("fp-contract=off")))
+#endif
+void interpolateBlock(const double* f, bool cubic, const TimeCollapse& time,
+                      const std::array<std::array<double, kBlock>, kSpace>& u, double* out) {
+  const auto at = [&](int vertex) { return f + std::size_t(vertex) * kBlock; };
+  double value[kCorners][kBlock];
+  if (!cubic) {
+    for (int c = 0; c < kCorners; ++c) {
+      const double* f0 = at(c * 2);
+      const double* f1 = at(c * 2 + 1);
+      for (std::size_t n = 0; n < kBlock; ++n) value[c][n] = time.value0 * f0[n] + time.value1 * f1[n];
+    }
+    for (int d = 0; d < kSpace; ++d) {
+      const int stride = 1 << d;
+      for (int c = 0; c < kCorners; c += stride * 2)
+        for (std::size_t n = 0; n < kBlock; ++n)
+          value[c][n] = value[c][n] + u[d][n] * (value[c + stride][n] - value[c][n]);
+    }
+    for (std::size_t n = 0; n < kBlock; ++n) out[n] = value[0][n];
+    return;
+  }
+  double timeSlope[kCorners][kBlock];
+  double slope[kCorners][kSpace][kBlock];
+  for (int c = 0; c < kCorners; ++c) {
+    const double* fm = at(c * 4);
+    const double* f0 = at(c * 4 + 1);
+    const double* f1 = at(c * 4 + 2);
+    const double* f2 = at(c * 4 + 3);
+    for (std::size_t n = 0; n < kBlock; ++n) {
+      value[c][n] = time.value0 * f0[n] + time.value1 * f1[n];
+      timeSlope[c][n] = time.slope0 * (0.5 * (f1[n] - fm[n])) + time.slope1 * (0.5 * (f2[n] - f0[n]));
+    }
+  }
+  for (int c = 0; c < kCorners; ++c)
+    for (int d = 0; d < kSpace; ++d) {
+      const double* o0 = at(kCorners * 4 + (c * kSpace + d) * 2);
+      const double* o1 = at(kCorners * 4 + (c * kSpace + d) * 2 + 1);
+      const double* partner = value[c ^ (1 << d)];
+      const bool upper = (c >> d) & 1;
+      for (std::size_t n = 0; n < kBlock; ++n) {
+        const double beyond = time.value0 * o0[n] + time.value1 * o1[n];
+        slope[c][d][n] = upper ? 0.5 * (beyond - partner[n]) : 0.5 * (partner[n] - beyond);
+      }
+    }
+  for (int d = 0; d < kSpace; ++d) {
+    const int stride = 1 << d;
+    for (int c = 0; c < kCorners; c += stride * 2) {
+      const int c1 = c + stride;
+      for (std::size_t n = 0; n < kBlock; ++n) {
+        value[c][n] = hermite(value[c][n], value[c1][n], slope[c][d][n], slope[c1][d][n], u[d][n]);
+        timeSlope[c][n] = timeSlope[c][n] + u[d][n] * (timeSlope[c1][n] - timeSlope[c][n]);
+      }
+      for (int j = d + 1; j < kSpace; ++j)
+        for (std::size_t n = 0; n < kBlock; ++n)
+          slope[c][j][n] = slope[c][j][n] + u[d][n] * (slope[c1][j][n] - slope[c][j][n]);
+    }
+  }
+  for (std::size_t n = 0; n < kBlock; ++n) out[n] = value[0][n] + timeSlope[0][n];
+}
+
+// One level at a block of up to kBlock nodes whose vertices no other node shares: each node's
+// vertices are hashed, then interpolated, the whole block at a time. A short block repeats its
+// last node to fill the vectors; those values are not used.
 void hashDirect(const Level& level, const TimeCollapse& time, bool cubic, const Vec3* samples, std::size_t count,
                 BlockScratch& scratch, Vec3* total) {
   const int perNode = cubic ? kCubicVertices : kLinearVertices;
-  std::vector<std::uint64_t>& sums = scratch.sums;
-  std::array<std::vector<double>, kAxes>& f = scratch.f;
-  std::array<NodeCell, kBlock>& cells = scratch.cells;
-  for (std::size_t n = 0; n < count; ++n) {
-    const NodeCell cell = nodeCell(level, samples[n]);
-    cells[n] = cell;
+  std::uint64_t* sums = scratch.sums.data();
+  const auto put = [&](int vertex, std::size_t n, std::uint64_t sum) { sums[std::size_t(vertex) * kBlock + n] = sum; };
+  for (std::size_t n = 0; n < kBlock; ++n) {
+    const NodeCell cell = nodeCell(level, samples[std::min(n, count - 1)]);
+    for (int d = 0; d < kSpace; ++d) scratch.u[d][n] = cell.u[d];
     std::array<std::array<std::uint64_t, 4>, kSpace> index{};
     for (int d = 0; d < kSpace; ++d)
       for (int step = 0; step < 4; ++step)
         index[d][step] = indexContribution(cell.base[d] + step - 1, level.wrap[d], d);
-    std::uint64_t* s = &sums[n * std::size_t(perNode)];
     for (int c = 0; c < kCorners; ++c) {
       std::uint64_t corner = 0;
       for (int d = 0; d < kSpace; ++d) corner += index[d][1 + ((c >> d) & 1)];
       if (!cubic) {
-        s[c * 2] = corner + time.index[1];
-        s[c * 2 + 1] = corner + time.index[2];
+        put(c * 2, n, corner + time.index[1]);
+        put(c * 2 + 1, n, corner + time.index[2]);
         continue;
       }
-      for (int step = 0; step < 4; ++step) s[c * 4 + step] = corner + time.index[step];
+      for (int step = 0; step < 4; ++step) put(c * 4 + step, n, corner + time.index[step]);
       for (int d = 0; d < kSpace; ++d) {
         const int bit = (c >> d) & 1;
         const std::uint64_t outward = corner - index[d][1 + bit] + index[d][bit ? 3 : 0];
-        s[kCorners * 4 + (c * kSpace + d) * 2] = outward + time.index[1];
-        s[kCorners * 4 + (c * kSpace + d) * 2 + 1] = outward + time.index[2];
+        put(kCorners * 4 + (c * kSpace + d) * 2, n, outward + time.index[1]);
+        put(kCorners * 4 + (c * kSpace + d) * 2 + 1, n, outward + time.index[2]);
       }
     }
   }
-  const std::size_t used = count * std::size_t(perNode);
-  for (int a = 0; a < kAxes; ++a) randomsFromSums(sums.data(), used, level.keys[a], f[a].data());
-  for (std::size_t n = 0; n < count; ++n) {
-    Vec3 v{0.0, 0.0, 0.0};
-    for (int a = 0; a < kAxes; ++a) {
-      const double* r = &f[a][n * std::size_t(perNode)];
-      std::array<double, kCorners> value{};
-      if (!cubic) {
-        for (int c = 0; c < kCorners; ++c) value[c] = collapsedValue(time, r[c * 2], r[c * 2 + 1]);
-        v[a] = trilinear(value, cells[n].u);
-        continue;
-      }
-      std::array<std::array<double, kSpace>, kCorners> beyond{};
-      std::array<double, kCorners> timeSlope{};
-      for (int c = 0; c < kCorners; ++c) {
-        value[c] = collapsedValue(time, r[c * 4 + 1], r[c * 4 + 2]);
-        timeSlope[c] = collapsedSlope(time, &r[c * 4]);
-        for (int d = 0; d < kSpace; ++d) {
-          const double* o = &r[kCorners * 4 + (c * kSpace + d) * 2];
-          beyond[c][d] = collapsedValue(time, o[0], o[1]);
-        }
-      }
-      v[a] = pseudoCubic(value, beyond, timeSlope, cells[n].u);
-    }
-    total[n] += level.weight * v;
+  const std::size_t used = kBlock * std::size_t(perNode);
+  for (int a = 0; a < kAxes; ++a) {
+    randomsFromSums(sums, used, level.keys[a], scratch.f.data());
+    interpolateBlock(scratch.f.data(), cubic, time, scratch.u, scratch.out[a].data());
   }
+  for (std::size_t n = 0; n < count; ++n)
+    total[n] += level.weight * Vec3{scratch.out[0][n], scratch.out[1][n], scratch.out[2][n]};
 }
 
 // Nodes at every (xs[i], ys[j], zs[k]), x fastest: an undistorted grid or a heightfield.
