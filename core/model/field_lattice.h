@@ -12,6 +12,15 @@
 
 #include "base/hash.h"
 
+// Loops over many vertices or nodes are also compiled for AVX2 and AVX-512, and the loader
+// picks what the processor runs. Without fused multiply-adds, so every processor rounds alike.
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+#define GRIDIFS_FIELD_VECTOR_CLONES \
+  __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default"), optimize("fp-contract=off")))
+#else
+#define GRIDIFS_FIELD_VECTOR_CLONES
+#endif
+
 namespace gridifs::field_lattice {
 
 constexpr int kDims = 4;

@@ -269,9 +269,7 @@ struct BlockScratch {
 // block at once, in the same order of operations. f: the random values, vertex-major, in the
 // layout hashDirect writes. The clones for newer processors are built without fused
 // multiply-adds, so every processor rounds alike.
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
-__attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default"), optimize("fp-contract=off")))
-#endif
+GRIDIFS_FIELD_VECTOR_CLONES
 void interpolateBlock(const double* f, bool cubic, const TimeCollapse& time,
                       const std::array<std::array<double, kBlock>, kSpace>& u, double* out) {
   const auto at = [&](int vertex) { return f + std::size_t(vertex) * kBlock; };
@@ -399,6 +397,40 @@ bool findTensorGrid(const std::vector<Vec3>& nodes, TensorGrid& grid) {
   return true;
 }
 
+// The passes over tensor grids, a row of samples at a time.
+
+// out[i] = lerp(low[i], high[i], u).
+GRIDIFS_FIELD_VECTOR_CLONES
+void lerpRow(const double* low, const double* high, double u, std::size_t n, double* out) {
+  for (std::size_t i = 0; i < n; ++i) out[i] = low[i] + u * (high[i] - low[i]);
+}
+
+// The cubic along one dimension between the rows v0 and v1, its end slopes the central
+// differences of the rows of lerps around them (below, at 0, at 1, above).
+GRIDIFS_FIELD_VECTOR_CLONES
+void hermiteRow(const double* v0, const double* v1, const double* below, const double* at0, const double* at1,
+                const double* above, double u, std::size_t n, double* out) {
+  for (std::size_t i = 0; i < n; ++i)
+    out[i] = hermite(v0[i], v1[i], 0.5 * (at1[i] - below[i]), 0.5 * (above[i] - at0[i]), u);
+}
+
+// The x pass of one box row: per sample i (lower vertex at[i], position u[i]) the value, cubic
+// along x, and the lerps of g and e along x. Linear: the lerp of g only.
+GRIDIFS_FIELD_VECTOR_CLONES
+void xPassRow(const double* g, const double* e, const std::size_t* at, const double* u, std::size_t n, bool cubic,
+              double* value, double* lerped, double* slope) {
+  if (!cubic) {
+    for (std::size_t i = 0; i < n; ++i) value[i] = g[at[i]] + u[i] * (g[at[i] + 1] - g[at[i]]);
+    return;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t c = at[i];
+    value[i] = hermite(g[c], g[c + 1], 0.5 * (g[c + 1] - g[c - 1]), 0.5 * (g[c + 2] - g[c]), u[i]);
+    lerped[i] = g[c] + u[i] * (g[c + 1] - g[c]);
+    slope[i] = e[c] + u[i] * (e[c + 1] - e[c]);
+  }
+}
+
 // One level over a tensor grid of samples (coordinates already shifted and wrapped), one
 // dimension at a time: the same reduction as pseudoCubic(), each pass shared by every node that
 // shares the remaining coordinates. The slopes along y and z are central differences of values
@@ -422,6 +454,8 @@ void separable(const Level& level, const TimeCollapse& time, bool cubic, const V
       ySlope[a].resize(nx * ny * bz);
     }
   }
+  std::vector<double> xu;
+  for (const AxisCell& c : cells[0]) xu.push_back(c.u);
   parallelFor(bz, threads, 1, [&](std::size_t begin, std::size_t end) {
     RowScratch scratch;
     std::vector<double> gRow(kAxes * bx), eRow(kAxes * bx);
@@ -441,65 +475,61 @@ void separable(const Level& level, const TimeCollapse& time, bool cubic, const V
           e[a] = eRow.data() + a * bx;
         }
         collapseRow(level, time, cubic, share, j, k, scratch, g, e);
-        for (int a = 0; a < kAxes; ++a) {
-          const double* r = g[a];
-          const double* re = e[a];
-          for (std::size_t i = 0; i < nx; ++i) {
-            const std::size_t c = at[0][i];
-            const double u = cells[0][i].u;
-            const std::size_t o = i + nx * j;
-            if (!cubic) {
-              xValue[a][o] = lerp(r[c], r[c + 1], u);
-              continue;
-            }
-            xValue[a][o] = hermite(r[c], r[c + 1], 0.5 * (r[c + 1] - r[c - 1]), 0.5 * (r[c + 2] - r[c]), u);
-            xLerp[a][o] = lerp(r[c], r[c + 1], u);
-            xSlope[a][o] = lerp(re[c], re[c + 1], u);
-          }
-        }
+        for (int a = 0; a < kAxes; ++a)
+          xPassRow(g[a], e[a], at[0].data(), xu.data(), nx, cubic, xValue[a].data() + nx * j,
+                   cubic ? xLerp[a].data() + nx * j : nullptr, cubic ? xSlope[a].data() + nx * j : nullptr);
       }
       // The y pass of the layer: per sample column (i, j).
       for (int a = 0; a < kAxes; ++a)
         for (std::size_t j = 0; j < ny; ++j) {
           const std::size_t c = at[1][j];
           const double u = cells[1][j].u;
-          for (std::size_t i = 0; i < nx; ++i) {
-            const auto x = [&](std::size_t row) { return i + nx * row; };
-            const std::size_t o = i + nx * (j + ny * k);
-            if (!cubic) {
-              yValue[a][o] = lerp(xValue[a][x(c)], xValue[a][x(c + 1)], u);
-              continue;
-            }
-            const double low = 0.5 * (xLerp[a][x(c + 1)] - xLerp[a][x(c - 1)]);
-            const double high = 0.5 * (xLerp[a][x(c + 2)] - xLerp[a][x(c)]);
-            yValue[a][o] = hermite(xValue[a][x(c)], xValue[a][x(c + 1)], low, high, u);
-            yLerp[a][o] = lerp(xLerp[a][x(c)], xLerp[a][x(c + 1)], u);
-            ySlope[a][o] = lerp(xSlope[a][x(c)], xSlope[a][x(c + 1)], u);
+          const std::size_t o = nx * (j + ny * k);
+          const double* v = xValue[a].data();
+          if (!cubic) {
+            lerpRow(v + nx * c, v + nx * (c + 1), u, nx, yValue[a].data() + o);
+            continue;
           }
+          const double* l = xLerp[a].data();
+          const double* sl = xSlope[a].data();
+          hermiteRow(v + nx * c, v + nx * (c + 1), l + nx * (c - 1), l + nx * c, l + nx * (c + 1), l + nx * (c + 2), u,
+                     nx, yValue[a].data() + o);
+          lerpRow(l + nx * c, l + nx * (c + 1), u, nx, yLerp[a].data() + o);
+          lerpRow(sl + nx * c, sl + nx * (c + 1), u, nx, ySlope[a].data() + o);
         }
     }
   });
   // The z pass: every node.
   parallelFor(nz, threads, 1, [&](std::size_t begin, std::size_t end) {
+    std::array<std::vector<double>, kAxes> value, slope;
+    for (int a = 0; a < kAxes; ++a) {
+      value[a].resize(nx);
+      slope[a].resize(nx);
+    }
     for (std::size_t k = begin; k < end; ++k) {
       const std::size_t c = at[2][k];
       const double u = cells[2][k].u;
-      for (std::size_t j = 0; j < ny; ++j)
-        for (std::size_t i = 0; i < nx; ++i) {
-          const auto y = [&](std::size_t layer) { return i + nx * (j + ny * layer); };
-          Vec3 v{0.0, 0.0, 0.0};
-          for (int a = 0; a < kAxes; ++a) {
-            if (!cubic) {
-              v[a] = lerp(yValue[a][y(c)], yValue[a][y(c + 1)], u);
-              continue;
-            }
-            const double low = 0.5 * (yLerp[a][y(c + 1)] - yLerp[a][y(c - 1)]);
-            const double high = 0.5 * (yLerp[a][y(c + 2)] - yLerp[a][y(c)]);
-            v[a] = hermite(yValue[a][y(c)], yValue[a][y(c + 1)], low, high, u) +
-                   lerp(ySlope[a][y(c)], ySlope[a][y(c + 1)], u);
+      for (std::size_t j = 0; j < ny; ++j) {
+        const auto y = [&](std::size_t layer) { return nx * (j + ny * layer); };
+        for (int a = 0; a < kAxes; ++a) {
+          const double* v = yValue[a].data();
+          if (!cubic) {
+            lerpRow(v + y(c), v + y(c + 1), u, nx, value[a].data());
+            continue;
           }
-          total[i + nx * (j + ny * k)] += level.weight * v;
+          const double* l = yLerp[a].data();
+          const double* sl = ySlope[a].data();
+          hermiteRow(v + y(c), v + y(c + 1), l + y(c - 1), l + y(c), l + y(c + 1), l + y(c + 2), u, nx,
+                     value[a].data());
+          lerpRow(sl + y(c), sl + y(c + 1), u, nx, slope[a].data());
         }
+        Vec3* row = &total[nx * (j + ny * k)];
+        for (std::size_t i = 0; i < nx; ++i) {
+          const Vec3 v = cubic ? Vec3{value[0][i] + slope[0][i], value[1][i] + slope[1][i], value[2][i] + slope[2][i]}
+                               : Vec3{value[0][i], value[1][i], value[2][i]};
+          row[i] += level.weight * v;
+        }
+      }
     }
   });
 }
