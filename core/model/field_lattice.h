@@ -47,7 +47,10 @@ struct AxisCell {
 };
 
 inline AxisCell axisCell(double s, double offset, double cell) {
-  const double x = (s + offset) / cell;
+  double x = (s + offset) / cell;
+  // A coordinate that is not finite, or beyond 2^62 cells, has no meaningful cell; cell 0 keeps
+  // the integer index arithmetic defined (the node itself stays infinite or undefined).
+  if (!(std::abs(x) < 0x1p62)) x = 0.0;
   const double lower = std::floor(x);
   return {static_cast<std::int64_t>(lower), x - lower};
 }

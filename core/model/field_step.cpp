@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <limits>
 
@@ -121,6 +122,13 @@ struct BoxBuilder {
   void add(int d, std::int64_t base) {
     low[d] = std::min(low[d], base);
     high[d] = std::max(high[d], base);
+  }
+  /// Whether the box is small enough to hold (spans compared in double: far-apart nodes must
+  /// not overflow the index arithmetic).
+  bool fits() const {
+    double count = 1.0;
+    for (int d = 0; d < kSpace; ++d) count *= double(high[d]) - double(low[d]) + 4.0;
+    return count <= double(kMaxBoxVertices);
   }
   VertexBox box() const {
     VertexBox b;
@@ -553,7 +561,11 @@ void fieldStepDisplace(const FractalField& field, std::vector<Vec3>& nodes, cons
   };
   const double time = field.wrapped({0.0, 0.0, 0.0, t})[3];
   TensorGrid grid;
-  const bool tensor = selected.size() == nodes.size() && findTensorGrid(nodes, grid);
+  // Nodes that are not finite (a previous op blew up) keep the per-node path: no box holds them.
+  bool finite = true;
+  for (std::size_t n : selected)
+    if (!std::isfinite(nodes[n].x) || !std::isfinite(nodes[n].y) || !std::isfinite(nodes[n].z)) finite = false;
+  const bool tensor = finite && selected.size() == nodes.size() && findTensorGrid(nodes, grid);
   std::array<std::vector<double>, kSpace> axisSamples;  // tensor grids: the samples per dimension
   if (tensor)
     for (int d = 0; d < kSpace; ++d)
@@ -586,11 +598,12 @@ void fieldStepDisplace(const FractalField& field, std::vector<Vec3>& nodes, cons
         for (int d = 0; d < kSpace; ++d) bounds.add(d, cell.base[d]);
       }
     }
-    const VertexBox box = bounds.box();
+    const bool fits = finite && bounds.fits();
+    const VertexBox box = fits ? bounds.box() : VertexBox{};
     // Collapse the box when that hashes fewer vertices than hashing each node's own.
     const std::size_t boxHashes = box.count() * (cubic ? 4 : 2);
     const std::size_t nodeHashes = selected.size() * std::size_t(cubic ? kCubicVertices : kLinearVertices);
-    if (box.count() <= kMaxBoxVertices && boxHashes <= nodeHashes) {
+    if (fits && boxHashes <= nodeHashes) {
       if (tensor) {
         separable(level, collapsed, cubic, box, axisCells, workers, total);
       } else {

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include "model/fractal_field.h"
@@ -92,5 +93,25 @@ TEST(FieldStep, DistortedGridsTakeTheGeneralPath) {
   for (FieldInterpolation interpolation : kBoth) {
     const FractalField field(windyField(interpolation));
     EXPECT_LE(largestDeviation(field, grid.nodes(), mask, 2.2, 1), 1e-12) << toString(interpolation);
+  }
+}
+
+TEST(FieldStep, NodesThatBlewUpDoNotDisturbTheOthers) {
+  // A previous op may leave infinite or undefined nodes, or nodes very far away.
+  Grid grid({12, 12, 12});
+  std::vector<Vec3> points = grid.nodes();
+  points[5] = {std::numeric_limits<double>::infinity(), 0.0, 0.0};
+  points[77] = {0.0, std::nan(""), 0.0};
+  points[300] = {1e15, -1e15, 3.0};
+  const std::vector<unsigned char> mask(points.size(), 1);
+  for (FieldInterpolation interpolation : kBoth) {
+    const FractalField field(windyField(interpolation));
+    std::vector<Vec3> fast = points;
+    field.displaceNodes(fast, mask, 0.4, 2);
+    for (std::size_t n = 0; n < points.size(); ++n) {
+      if (n == 5 || n == 77 || n == 300) continue;
+      const Vec3 expected = points[n] + field.displacement(points[n], 0.4);
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(fast[n][c], expected[c], 1e-12) << n;
+    }
   }
 }
