@@ -1,5 +1,6 @@
 #include "app/render_sequence.h"
 
+#include <fcntl.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -41,6 +42,21 @@ std::optional<std::filesystem::path> findOnPath(const std::string& program) {
     start = end + 1;
   }
   return std::nullopt;
+}
+
+// The last non-empty line of a small log file, without its line end ("" if none).
+std::string lastLine(const std::filesystem::path& file) {
+  std::FILE* in = std::fopen(file.c_str(), "r");
+  if (!in) return {};
+  std::string last;
+  char buffer[512];
+  while (std::fgets(buffer, sizeof buffer, in)) {
+    std::string line = buffer;
+    while (!line.empty() && (line.back() == '\n' || line.back() == '\r')) line.pop_back();
+    if (!line.empty()) last = line;
+  }
+  std::fclose(in);
+  return last;
 }
 
 }  // namespace
@@ -94,15 +110,29 @@ void assembleVideo(const std::string& pattern, const FrameRange& frames, double 
   std::vector<char*> argv;
   for (std::string& a : args) argv.push_back(a.data());
   argv.push_back(nullptr);
+  // ffmpeg's own complaint goes to a log beside the video, so the user reads one sentence that
+  // ends with ffmpeg's reason; the frames stay whatever happens.
+  std::filesystem::path log = temporary;
+  log += ".log";
+  posix_spawn_file_actions_t actions;
+  ::posix_spawn_file_actions_init(&actions);
+  ::posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
   pid_t pid = 0;
-  if (::posix_spawn(&pid, ffmpeg->c_str(), nullptr, nullptr, argv.data(), environ) != 0)
+  const int spawned = ::posix_spawn(&pid, ffmpeg->c_str(), &actions, nullptr, argv.data(), environ);
+  ::posix_spawn_file_actions_destroy(&actions);
+  std::error_code ec;
+  if (spawned != 0) {
+    std::filesystem::remove(log, ec);
     throw CliError(kFailure, "cannot write " + video + ": ffmpeg could not be started");
+  }
   int status = 0;
   ::waitpid(pid, &status, 0);
-  std::error_code ec;
+  const std::string reason = lastLine(log);
+  std::filesystem::remove(log, ec);
   if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
     std::filesystem::remove(temporary, ec);
-    throw CliError(kFailure, "cannot write " + video + ": ffmpeg failed on the frames " + pattern);
+    throw CliError(kFailure, "cannot write " + video + ": ffmpeg failed on the frames " + pattern +
+                                 (reason.empty() ? std::string() : " (" + reason + ")") + "; the frames are kept");
   }
   std::filesystem::rename(temporary, target, ec);
   if (ec) {

@@ -4,31 +4,17 @@
 #include <cmath>
 
 #include "base/hash.h"
-#include "base/parallel.h"
+#include "model/field_lattice.h"
+#include "model/field_step.h"
 
 namespace gridifs {
 
 namespace {
 
-constexpr int kDims = 4;
+using field_lattice::hermite;
+using field_lattice::kDims;
+using field_lattice::randomFromSum;
 constexpr int kCorners = 1 << kDims;
-
-// Odd 64-bit multipliers that spread a vertex's four indices over the hash input.
-constexpr std::array<std::uint64_t, kDims> kIndexMix{0x9E3779B97F4A7C15ull, 0xC2B2AE3D27D4EB4Full,
-                                                     0x165667B19E3779F9ull, 0xD6E8FEB86659FD93ull};
-
-inline std::int64_t wrapIndex(std::int64_t i, std::int64_t cells) {
-  if (cells <= 0) return i;
-  i %= cells;
-  return i < 0 ? i + cells : i;
-}
-
-// Colonna, second appendix: the cubic through f0, f1 with end slopes d0, d1 (per cell).
-inline double hermite(double f0, double f1, double d0, double d1, double u) {
-  const double a3 = (d0 + d1) - 2.0 * (f1 - f0);
-  const double a2 = 3.0 * (f1 - f0) - (2.0 * d0 + d1);
-  return ((a3 * u + a2) * u + d0) * u + f0;
-}
 
 std::uint64_t levelKey(std::uint64_t seed, int axis, int level) {
   return splitmix64(splitmix64(seed + static_cast<std::uint64_t>(axis)) + static_cast<std::uint64_t>(level));
@@ -117,10 +103,7 @@ Vec3 FractalField::displacement(const Vec3& q, double t) const {
 
 void FractalField::displaceNodes(std::vector<Vec3>& nodes, const std::vector<unsigned char>& mask, double t,
                                  int threads) const {
-  parallelFor(nodes.size(), resolveThreadCount(threads), 512, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t n = begin; n < end; ++n)
-      if (mask[n]) nodes[n] += displacement(nodes[n], t);
-  });
+  fieldStepDisplace(*this, nodes, mask, t, threads);
 }
 
 double FractalField::value(int axis, FieldPoint s) const {
@@ -150,19 +133,12 @@ template <typename Level>
 static CellStencil stencilFor(const Level& level, const FieldPoint& s) {
   CellStencil st;
   for (int d = 0; d < kDims; ++d) {
-    const double x = (s[d] + level.offset[d]) / level.cell[d];
-    const double cell = std::floor(x);
-    st.u[d] = x - cell;
-    const auto base = static_cast<std::int64_t>(cell);
+    const field_lattice::AxisCell cell = field_lattice::axisCell(s[d], level.offset[d], level.cell[d]);
+    st.u[d] = cell.u;
     for (int step = 0; step < 4; ++step)
-      st.index[d][step] = static_cast<std::uint64_t>(wrapIndex(base + step - 1, level.wrap[d])) * kIndexMix[d];
+      st.index[d][step] = field_lattice::indexContribution(cell.base + step - 1, level.wrap[d], d);
   }
   return st;
-}
-
-// RDN from a vertex's summed index contributions and a (seed, axis, level) key, in [-1, 1).
-static inline double randomFromSum(std::uint64_t indexSum, std::uint64_t key) {
-  return static_cast<double>(splitmix64(indexSum + key) >> 11) * 0x1.0p-52 - 1.0;
 }
 
 void FractalField::levelValues(const Level& level, const std::array<std::uint64_t, 3>& keys, int axes,

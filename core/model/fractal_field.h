@@ -61,10 +61,11 @@ class FractalField {
   /// amplitude ⊙ (F_S(s), F_S+1(s), F_S+2(s)) with s = (q + wind·t, t), wrapped by the periods.
   Vec3 displacement(const Vec3& q, double t) const;
 
-  /// nodes[n] += displacement(nodes[n], t) for every n with mask[n] set. Nodes are independent, so
-  /// large grids are split over `threads` workers (≤ 0: all); no result depends on the split.
-  void displaceNodes(std::vector<Vec3>& nodes, const std::vector<unsigned char>& mask, double t,
-                     int threads = 0) const;
+  /// nodes[n] += displacement(nodes[n], t) for every n with mask[n] set, up to rounding: many
+  /// nodes share the lattice vertices of the coarse meshes, so this evaluates the field for the
+  /// whole time step at once (see field_step.h). Work is split over `threads` workers (≤ 0: all);
+  /// no result depends on the split.
+  void displaceNodes(std::vector<Vec3>& nodes, const std::vector<unsigned char>& mask, double t, int threads = 0) const;
 
   /// F for one axis (seed + axis) at a sample point (wind already applied, not yet wrapped).
   double value(int axis, FieldPoint s) const;
@@ -86,7 +87,7 @@ class FractalField {
   };
   MeshGeometry mesh(int level) const;
 
- private:
+  /// One mesh as the evaluation reads it.
   struct Level {
     std::array<double, 4> cell{};         // cell size per dimension (periodic ones rounded to fit)
     std::array<double, 4> offset{};       // this level's shift of the mesh, within one cell
@@ -94,8 +95,13 @@ class FractalField {
     double weight = 0.0;                  // p(k)
     std::array<std::uint64_t, 3> keys{};  // the hash keys of seeds S, S+1, S+2 at this level
   };
-
+  int levelCount() const { return levelCount_; }
+  /// Mesh `index` (0-based, < levelCount()).
+  const Level& level(int index) const { return levels_[index]; }
+  /// s with each coordinate wrapped modulo its period where the period is > 0.
   FieldPoint wrapped(FieldPoint s) const;
+
+ private:
   /// One level's interpolated RDN for the first `axes` keys at s (already wrapped) into out.
   void levelValues(const Level& level, const std::array<std::uint64_t, 3>& keys, int axes, const FieldPoint& s,
                    double* out) const;

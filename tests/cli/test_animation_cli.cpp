@@ -2,6 +2,10 @@
 // input of sequences (nothing is written then).
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+
 #include "io/project_io.h"
 #include "tests/cli/run_command.h"
 
@@ -126,8 +130,70 @@ TEST(AnimationCli, BadSequencesWriteNothing) {
   const auto video = runGridifs(render + pattern + " --frames 0:2 --video " + quote((dir.path / "v.mp4").string()), "",
                                 "PATH=" + quote(bin.path.string()));
   EXPECT_EQ(video.exitCode, 2) << video.err;
-  EXPECT_NE(video.err.find("ffmpeg"), std::string::npos) << video.err;
+  EXPECT_NE(video.err.find("no ffmpeg on the PATH"), std::string::npos) << video.err;
+  EXPECT_EQ(std::count(video.err.begin(), video.err.end(), '\n'), 1) << video.err;
   EXPECT_EQ(fileCount(dir.path), before);
+}
+
+/// What ffprobe says of a video's first stream: "width,height,frames", or "" when it cannot run.
+std::string probeVideo(const fs::path& video) {
+  const std::string cmd =
+      "ffprobe -v error -select_streams v:0 -count_frames -show_entries "
+      "stream=width,height,nb_read_frames -of csv=p=0 " +
+      quote(video.string()) + " 2>/dev/null";
+  std::string out;
+  if (FILE* pipe = ::popen(cmd.c_str(), "r")) {
+    char buffer[256];
+    while (std::fgets(buffer, sizeof buffer, pipe)) out += buffer;
+    ::pclose(pipe);
+  }
+  while (!out.empty() && (out.back() == '\n' || out.back() == '\r')) out.pop_back();
+  return out;
+}
+
+TEST(AnimationCli, VideoAssemblesTheFrames) {
+  // ffmpeg is a declared dependency (scripts/deps.sh): its absence fails here rather than skips.
+  ASSERT_EQ(std::system("command -v ffmpeg >/dev/null && command -v ffprobe >/dev/null"), 0)
+      << "ffmpeg and ffprobe must be installed (scripts/deps.sh)";
+  ScratchDir dir("anim-video");
+  const fs::path project = writeFieldProject(dir.path);
+  const fs::path video = dir.path / "clip.mp4";
+  const auto r =
+      runGridifs("render " + quote(project.string()) + " -q --threads 1 --device cpu -o " +
+                 quote((dir.path / "f_%04d.png").string()) + " --frames 2:6 --video " + quote(video.string()));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  // Five frames of 48 × 40 (the project's size), and the frames stay beside the video.
+  EXPECT_EQ(probeVideo(video), "48,40,5");
+  for (int f = 2; f <= 6; ++f) EXPECT_TRUE(fs::exists(dir.path / ("f_000" + std::to_string(f) + ".png"))) << f;
+  for (const auto& e : fs::directory_iterator(dir.path))
+    EXPECT_NE(e.path().filename().string().rfind(".~", 0), 0u) << "temporary left behind: " << e.path();
+}
+
+TEST(AnimationCli, AFailedVideoKeepsTheFrames) {
+  // An ffmpeg that fails (as on a full disk or a missing encoder) after every frame is written.
+  ScratchDir dir("anim-video-fail");
+  ScratchDir bin("anim-video-bin");
+  fs::create_symlink("/usr/bin/timeout", bin.path / "timeout");
+  {
+    std::ofstream script(bin.path / "ffmpeg");
+    script << "#!/bin/sh\necho 'encoder not found' >&2\nexit 1\n";
+  }
+  fs::permissions(bin.path / "ffmpeg", fs::perms::owner_all);
+  const fs::path project = writeFieldProject(dir.path);
+  const fs::path video = dir.path / "clip.mp4";
+  const auto r =
+      runGridifs("render " + quote(project.string()) + " -q --threads 1 --device cpu -o " +
+                     quote((dir.path / "f_%04d.png").string()) + " --frames 0:2 --video " + quote(video.string()),
+                 "", "PATH=" + quote(bin.path.string()));
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  EXPECT_NE(r.err.find("ffmpeg failed"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("clip.mp4"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("encoder not found"), std::string::npos) << r.err;  // ffmpeg's reason
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  for (int f = 0; f <= 2; ++f) EXPECT_TRUE(fs::exists(dir.path / ("f_000" + std::to_string(f) + ".png"))) << f;
+  EXPECT_FALSE(fs::exists(video));
+  for (const auto& e : fs::directory_iterator(dir.path))
+    EXPECT_NE(e.path().filename().string().rfind(".~", 0), 0u) << "temporary left behind: " << e.path();
 }
 
 TEST(AnimationCli, TimeMovesTheNodes) {

@@ -1,0 +1,633 @@
+#include "model/field_step.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+
+#include "base/parallel.h"
+#include "model/field_lattice.h"
+#include "model/fractal_field.h"
+
+namespace gridifs {
+
+namespace {
+
+using field_lattice::AxisCell;
+using field_lattice::axisCell;
+using field_lattice::hermite;
+using field_lattice::indexContribution;
+using field_lattice::randomsFromSums;
+using Level = FractalField::Level;
+
+constexpr int kAxes = 3;     // displacement axes: seeds S, S+1, S+2
+constexpr int kSpace = 3;    // spatial dimensions of the collapsed mesh
+constexpr int kCorners = 8;  // of a 3D cell; bit d of a corner's number: upper along d
+// A node's hashed vertices per axis without a cache: cubic, the 8 corners at the four time
+// steps around t and their 24 outward neighbours at the two time steps of the cell; linear,
+// the 8 corners at the two time steps of the cell.
+constexpr int kCubicVertices = kCorners * 4 + kCorners * kSpace * 2;
+constexpr int kLinearVertices = kCorners * 2;
+// Above this many vertices a level is hashed per node rather than collapsed into a box.
+constexpr std::size_t kMaxBoxVertices = std::size_t(1) << 21;
+
+// The time dimension of one level at t. By linearity of hermite() in its values and slopes, the
+// appendix's last (time) reduction hermite(V0, V1, S0, S1, u) splits into the spatial reduction
+// of g = value0·f(t0) + value1·f(t1) plus the trilinear interpolation of the time slopes
+// e = slope0·(f(t1) − f(t−1))/2 + slope1·(f(t2) − f(t0))/2 (central differences, as the
+// appendix takes them). Linear interpolation: g = (1 − u)·f(t0) + u·f(t1), no e.
+struct TimeCollapse {
+  std::array<std::uint64_t, 4> index{};  // hash shares of the time steps −1, 0, +1, +2
+  double value0 = 0.0, value1 = 0.0, slope0 = 0.0, slope1 = 0.0;
+};
+
+TimeCollapse timeCollapse(const Level& level, double t, bool cubic) {
+  TimeCollapse c;
+  const AxisCell cell = axisCell(t, level.offset[3], level.cell[3]);
+  for (int step = 0; step < 4; ++step) c.index[step] = indexContribution(cell.base + step - 1, level.wrap[3], 3);
+  const double u = cell.u;
+  if (cubic) {
+    // The Hermite basis of hermite(): value0·f0 + value1·f1 + slope0·d0 + slope1·d1.
+    const double u2 = u * u;
+    const double u3 = u2 * u;
+    c.value0 = 2.0 * u3 - 3.0 * u2 + 1.0;
+    c.value1 = 3.0 * u2 - 2.0 * u3;
+    c.slope0 = u3 - 2.0 * u2 + u;
+    c.slope1 = u3 - u2;
+  } else {
+    c.value0 = 1.0 - u;
+    c.value1 = u;
+  }
+  return c;
+}
+
+// Collapsed values from f at the steps −1, 0, +1, +2 (cubic) or 0, +1 (linear).
+inline double collapsedValue(const TimeCollapse& c, double f0, double f1) { return c.value0 * f0 + c.value1 * f1; }
+inline double collapsedSlope(const TimeCollapse& c, const double* f) {
+  return c.slope0 * (0.5 * (f[2] - f[0])) + c.slope1 * (0.5 * (f[3] - f[1]));
+}
+
+inline double lerp(double a, double b, double u) { return a + u * (b - a); }
+
+// The appendix's reduction in x, then y, then z: cubic in the value along a dimension, linear in
+// the remaining slopes. value: g at the cell's corners; beyond[c][d]: g at corner c's outward
+// neighbour along d; timeSlope: e at the corners, interpolated trilinearly.
+double pseudoCubic(std::array<double, kCorners> value, const std::array<std::array<double, kSpace>, kCorners>& beyond,
+                   std::array<double, kCorners> timeSlope, const std::array<double, kSpace>& u) {
+  std::array<std::array<double, kSpace>, kCorners> slope{};
+  for (int c = 0; c < kCorners; ++c)
+    for (int d = 0; d < kSpace; ++d) {
+      const double partner = value[c ^ (1 << d)];
+      slope[c][d] = ((c >> d) & 1) ? 0.5 * (beyond[c][d] - partner) : 0.5 * (partner - beyond[c][d]);
+    }
+  for (int d = 0; d < kSpace; ++d) {
+    const int stride = 1 << d;
+    for (int c = 0; c < kCorners; c += stride * 2) {
+      const int c1 = c + stride;
+      value[c] = hermite(value[c], value[c1], slope[c][d], slope[c1][d], u[d]);
+      for (int j = d + 1; j < kSpace; ++j) slope[c][j] = lerp(slope[c][j], slope[c1][j], u[d]);
+      timeSlope[c] = lerp(timeSlope[c], timeSlope[c1], u[d]);
+    }
+  }
+  return value[0] + timeSlope[0];
+}
+
+double trilinear(std::array<double, kCorners> value, const std::array<double, kSpace>& u) {
+  for (int d = 0; d < kSpace; ++d) {
+    const int stride = 1 << d;
+    for (int c = 0; c < kCorners; c += stride * 2) value[c] = lerp(value[c], value[c + stride], u[d]);
+  }
+  return value[0];
+}
+
+// The lattice vertices a set of nodes reaches on one level: the box from one below the lowest
+// cell to two above the highest along each spatial dimension.
+struct VertexBox {
+  std::array<std::int64_t, kSpace> lo{};
+  std::array<std::int64_t, kSpace> size{};
+  std::size_t count() const { return std::size_t(size[0]) * std::size_t(size[1]) * std::size_t(size[2]); }
+  std::size_t at(std::int64_t i, std::int64_t j, std::int64_t k) const {
+    return std::size_t(i + size[0] * (j + size[1] * k));
+  }
+};
+
+struct BoxBuilder {
+  std::array<std::int64_t, kSpace> low{std::numeric_limits<std::int64_t>::max(),
+                                       std::numeric_limits<std::int64_t>::max(),
+                                       std::numeric_limits<std::int64_t>::max()};
+  std::array<std::int64_t, kSpace> high{std::numeric_limits<std::int64_t>::min(),
+                                        std::numeric_limits<std::int64_t>::min(),
+                                        std::numeric_limits<std::int64_t>::min()};
+  void add(int d, std::int64_t base) {
+    low[d] = std::min(low[d], base);
+    high[d] = std::max(high[d], base);
+  }
+  /// Whether the box is small enough to hold (spans compared in double: far-apart nodes must
+  /// not overflow the index arithmetic).
+  bool fits() const {
+    double count = 1.0;
+    for (int d = 0; d < kSpace; ++d) count *= double(high[d]) - double(low[d]) + 4.0;
+    return count <= double(kMaxBoxVertices);
+  }
+  VertexBox box() const {
+    VertexBox b;
+    for (int d = 0; d < kSpace; ++d) {
+      b.lo[d] = low[d] - 1;
+      b.size[d] = high[d] - low[d] + 4;
+    }
+    return b;
+  }
+};
+
+// One level's mesh collapsed at t over a box: g and e per displacement axis, x fastest.
+struct CollapsedMesh {
+  VertexBox box;
+  std::array<std::vector<double>, kAxes> g, e;
+};
+
+// The hash shares of a box's vertex indices per spatial dimension (wrapped where periodic).
+std::array<std::vector<std::uint64_t>, kSpace> boxShares(const Level& level, const VertexBox& box) {
+  std::array<std::vector<std::uint64_t>, kSpace> share;
+  for (int d = 0; d < kSpace; ++d) {
+    share[d].resize(std::size_t(box.size[d]));
+    for (std::int64_t i = 0; i < box.size[d]; ++i)
+      share[d][std::size_t(i)] = indexContribution(box.lo[d] + i, level.wrap[d], d);
+  }
+  return share;
+}
+
+// Scratch for collapsing one row of a box, reused along a worker's rows.
+struct RowScratch {
+  std::vector<std::uint64_t> sums;
+  std::vector<double> f;
+};
+
+// g (and e, cubic) of the box row (j, k) for the three axes into g[a][0..width), e[a][0..width).
+void collapseRow(const Level& level, const TimeCollapse& time, bool cubic,
+                 const std::array<std::vector<std::uint64_t>, kSpace>& share, std::size_t j, std::size_t k,
+                 RowScratch& scratch, const std::array<double*, kAxes>& g, const std::array<double*, kAxes>& e) {
+  const int steps = cubic ? 4 : 2;
+  const int first = cubic ? 0 : 1;
+  const std::size_t width = share[0].size();
+  scratch.sums.resize(width * std::size_t(steps));
+  scratch.f.resize(scratch.sums.size());
+  const std::uint64_t rowShare = share[1][j] + share[2][k];
+  for (std::size_t i = 0; i < width; ++i)
+    for (int step = 0; step < steps; ++step)
+      scratch.sums[i * steps + step] = share[0][i] + rowShare + time.index[first + step];
+  for (int a = 0; a < kAxes; ++a) {
+    randomsFromSums(scratch.sums.data(), scratch.sums.size(), level.keys[a], scratch.f.data());
+    for (std::size_t i = 0; i < width; ++i) {
+      const double* v = &scratch.f[i * steps];
+      if (cubic) {
+        g[a][i] = collapsedValue(time, v[1], v[2]);
+        e[a][i] = collapsedSlope(time, v);
+      } else {
+        g[a][i] = collapsedValue(time, v[0], v[1]);
+      }
+    }
+  }
+}
+
+void collapse(const Level& level, const TimeCollapse& time, bool cubic, const VertexBox& box, int threads,
+              CollapsedMesh& mesh) {
+  mesh.box = box;
+  const auto share = boxShares(level, box);
+  for (int a = 0; a < kAxes; ++a) {
+    mesh.g[a].resize(box.count());
+    mesh.e[a].resize(cubic ? box.count() : 0);
+  }
+  const std::size_t width = std::size_t(box.size[0]);
+  parallelFor(std::size_t(box.size[1] * box.size[2]), threads, 8, [&](std::size_t begin, std::size_t end) {
+    RowScratch scratch;
+    for (std::size_t row = begin; row < end; ++row) {
+      std::array<double*, kAxes> g{}, e{};
+      for (int a = 0; a < kAxes; ++a) {
+        g[a] = mesh.g[a].data() + row * width;
+        e[a] = cubic ? mesh.e[a].data() + row * width : nullptr;
+      }
+      collapseRow(level, time, cubic, share, row % std::size_t(box.size[1]), row / std::size_t(box.size[1]), scratch, g,
+                  e);
+    }
+  });
+}
+
+struct NodeCell {
+  std::array<std::int64_t, kSpace> base{};
+  std::array<double, kSpace> u{};
+};
+
+NodeCell nodeCell(const Level& level, const Vec3& s) {
+  NodeCell n;
+  for (int d = 0; d < kSpace; ++d) {
+    const AxisCell c = axisCell(s[d], level.offset[d], level.cell[d]);
+    n.base[d] = c.base;
+    n.u[d] = c.u;
+  }
+  return n;
+}
+
+// One level at one node read from its collapsed mesh, for the three axes.
+void readCollapsed(const CollapsedMesh& mesh, bool cubic, const NodeCell& cell, double* out) {
+  const VertexBox& box = mesh.box;
+  const std::array<std::int64_t, kSpace> stride{1, box.size[0], box.size[0] * box.size[1]};
+  const std::size_t origin = box.at(cell.base[0] - box.lo[0], cell.base[1] - box.lo[1], cell.base[2] - box.lo[2]);
+  std::array<std::size_t, kCorners> corner{};
+  for (int c = 0; c < kCorners; ++c) {
+    std::int64_t offset = 0;
+    for (int d = 0; d < kSpace; ++d) offset += ((c >> d) & 1) * stride[d];
+    corner[c] = origin + std::size_t(offset);
+  }
+  for (int a = 0; a < kAxes; ++a) {
+    const double* g = mesh.g[a].data();
+    std::array<double, kCorners> value{};
+    for (int c = 0; c < kCorners; ++c) value[c] = g[corner[c]];
+    if (!cubic) {
+      out[a] = trilinear(value, cell.u);
+      continue;
+    }
+    const double* e = mesh.e[a].data();
+    std::array<std::array<double, kSpace>, kCorners> beyond{};
+    std::array<double, kCorners> timeSlope{};
+    for (int c = 0; c < kCorners; ++c) {
+      timeSlope[c] = e[corner[c]];
+      for (int d = 0; d < kSpace; ++d)
+        beyond[c][d] = g[((c >> d) & 1) ? corner[c] + std::size_t(stride[d]) : corner[c] - std::size_t(stride[d])];
+    }
+    out[a] = pseudoCubic(value, beyond, timeSlope, cell.u);
+  }
+}
+
+// One level at a block of nodes whose vertices no other node shares: each node's vertices are
+// hashed together, a block at a time.
+constexpr std::size_t kBlock = 32;
+
+// A block's hash inputs and random values are stored vertex-major ([vertex][node]), so each
+// step of the interpolation below is one loop over the block's nodes, which the compiler turns
+// into vector instructions.
+struct BlockScratch {
+  std::vector<std::uint64_t> sums = std::vector<std::uint64_t>(kBlock * kCubicVertices);
+  std::vector<double> f = std::vector<double>(kBlock * kCubicVertices);
+  std::array<std::array<double, kBlock>, kSpace> u{};
+  std::array<std::array<double, kBlock>, kAxes> out{};
+};
+
+// pseudoCubic() (cubic) or trilinear() (linear) of the collapsed values for every node of a
+// block at once, in the same order of operations. f: the random values, vertex-major, in the
+// layout hashDirect writes. The clones for newer processors are built without fused
+// multiply-adds, so every processor rounds alike.
+GRIDIFS_FIELD_VECTOR_CLONES
+void interpolateBlock(const double* f, bool cubic, const TimeCollapse& time,
+                      const std::array<std::array<double, kBlock>, kSpace>& u, double* out) {
+  const auto at = [&](int vertex) { return f + std::size_t(vertex) * kBlock; };
+  double value[kCorners][kBlock];
+  if (!cubic) {
+    for (int c = 0; c < kCorners; ++c) {
+      const double* f0 = at(c * 2);
+      const double* f1 = at(c * 2 + 1);
+      for (std::size_t n = 0; n < kBlock; ++n) value[c][n] = time.value0 * f0[n] + time.value1 * f1[n];
+    }
+    for (int d = 0; d < kSpace; ++d) {
+      const int stride = 1 << d;
+      for (int c = 0; c < kCorners; c += stride * 2)
+        for (std::size_t n = 0; n < kBlock; ++n)
+          value[c][n] = value[c][n] + u[d][n] * (value[c + stride][n] - value[c][n]);
+    }
+    for (std::size_t n = 0; n < kBlock; ++n) out[n] = value[0][n];
+    return;
+  }
+  double timeSlope[kCorners][kBlock];
+  double slope[kCorners][kSpace][kBlock];
+  for (int c = 0; c < kCorners; ++c) {
+    const double* fm = at(c * 4);
+    const double* f0 = at(c * 4 + 1);
+    const double* f1 = at(c * 4 + 2);
+    const double* f2 = at(c * 4 + 3);
+    for (std::size_t n = 0; n < kBlock; ++n) {
+      value[c][n] = time.value0 * f0[n] + time.value1 * f1[n];
+      timeSlope[c][n] = time.slope0 * (0.5 * (f1[n] - fm[n])) + time.slope1 * (0.5 * (f2[n] - f0[n]));
+    }
+  }
+  for (int c = 0; c < kCorners; ++c)
+    for (int d = 0; d < kSpace; ++d) {
+      const double* o0 = at(kCorners * 4 + (c * kSpace + d) * 2);
+      const double* o1 = at(kCorners * 4 + (c * kSpace + d) * 2 + 1);
+      const double* partner = value[c ^ (1 << d)];
+      const bool upper = (c >> d) & 1;
+      for (std::size_t n = 0; n < kBlock; ++n) {
+        const double beyond = time.value0 * o0[n] + time.value1 * o1[n];
+        slope[c][d][n] = upper ? 0.5 * (beyond - partner[n]) : 0.5 * (partner[n] - beyond);
+      }
+    }
+  for (int d = 0; d < kSpace; ++d) {
+    const int stride = 1 << d;
+    for (int c = 0; c < kCorners; c += stride * 2) {
+      const int c1 = c + stride;
+      for (std::size_t n = 0; n < kBlock; ++n) {
+        value[c][n] = hermite(value[c][n], value[c1][n], slope[c][d][n], slope[c1][d][n], u[d][n]);
+        timeSlope[c][n] = timeSlope[c][n] + u[d][n] * (timeSlope[c1][n] - timeSlope[c][n]);
+      }
+      for (int j = d + 1; j < kSpace; ++j)
+        for (std::size_t n = 0; n < kBlock; ++n)
+          slope[c][j][n] = slope[c][j][n] + u[d][n] * (slope[c1][j][n] - slope[c][j][n]);
+    }
+  }
+  for (std::size_t n = 0; n < kBlock; ++n) out[n] = value[0][n] + timeSlope[0][n];
+}
+
+// One level at a block of up to kBlock nodes whose vertices no other node shares: each node's
+// vertices are hashed, then interpolated, the whole block at a time. A short block repeats its
+// last node to fill the vectors; those values are not used.
+void hashDirect(const Level& level, const TimeCollapse& time, bool cubic, const Vec3* samples, std::size_t count,
+                BlockScratch& scratch, Vec3* total) {
+  const int perNode = cubic ? kCubicVertices : kLinearVertices;
+  std::uint64_t* sums = scratch.sums.data();
+  const auto put = [&](int vertex, std::size_t n, std::uint64_t sum) { sums[std::size_t(vertex) * kBlock + n] = sum; };
+  for (std::size_t n = 0; n < kBlock; ++n) {
+    const NodeCell cell = nodeCell(level, samples[std::min(n, count - 1)]);
+    for (int d = 0; d < kSpace; ++d) scratch.u[d][n] = cell.u[d];
+    std::array<std::array<std::uint64_t, 4>, kSpace> index{};
+    for (int d = 0; d < kSpace; ++d)
+      for (int step = 0; step < 4; ++step)
+        index[d][step] = indexContribution(cell.base[d] + step - 1, level.wrap[d], d);
+    for (int c = 0; c < kCorners; ++c) {
+      std::uint64_t corner = 0;
+      for (int d = 0; d < kSpace; ++d) corner += index[d][1 + ((c >> d) & 1)];
+      if (!cubic) {
+        put(c * 2, n, corner + time.index[1]);
+        put(c * 2 + 1, n, corner + time.index[2]);
+        continue;
+      }
+      for (int step = 0; step < 4; ++step) put(c * 4 + step, n, corner + time.index[step]);
+      for (int d = 0; d < kSpace; ++d) {
+        const int bit = (c >> d) & 1;
+        const std::uint64_t outward = corner - index[d][1 + bit] + index[d][bit ? 3 : 0];
+        put(kCorners * 4 + (c * kSpace + d) * 2, n, outward + time.index[1]);
+        put(kCorners * 4 + (c * kSpace + d) * 2 + 1, n, outward + time.index[2]);
+      }
+    }
+  }
+  const std::size_t used = kBlock * std::size_t(perNode);
+  for (int a = 0; a < kAxes; ++a) {
+    randomsFromSums(sums, used, level.keys[a], scratch.f.data());
+    interpolateBlock(scratch.f.data(), cubic, time, scratch.u, scratch.out[a].data());
+  }
+  for (std::size_t n = 0; n < count; ++n)
+    total[n] += level.weight * Vec3{scratch.out[0][n], scratch.out[1][n], scratch.out[2][n]};
+}
+
+// Nodes at every (xs[i], ys[j], zs[k]), x fastest: an undistorted grid or a heightfield.
+struct TensorGrid {
+  std::array<std::vector<double>, kSpace> coordinate;
+};
+
+bool findTensorGrid(const std::vector<Vec3>& nodes, TensorGrid& grid) {
+  const std::size_t n = nodes.size();
+  if (n < 64) return false;
+  std::size_t nx = 1;
+  while (nx < n && nodes[nx].y == nodes[0].y && nodes[nx].z == nodes[0].z) ++nx;
+  std::size_t ny = 1;
+  while (ny * nx < n && nodes[ny * nx].z == nodes[0].z) ++ny;
+  if (n % (nx * ny) != 0) return false;
+  const std::size_t nz = n / (nx * ny);
+  for (int d = 0; d < kSpace; ++d) grid.coordinate[d].clear();
+  for (std::size_t i = 0; i < nx; ++i) grid.coordinate[0].push_back(nodes[i].x);
+  for (std::size_t j = 0; j < ny; ++j) grid.coordinate[1].push_back(nodes[j * nx].y);
+  for (std::size_t k = 0; k < nz; ++k) grid.coordinate[2].push_back(nodes[k * nx * ny].z);
+  std::size_t m = 0;
+  for (std::size_t k = 0; k < nz; ++k)
+    for (std::size_t j = 0; j < ny; ++j)
+      for (std::size_t i = 0; i < nx; ++i, ++m)
+        if (nodes[m].x != grid.coordinate[0][i] || nodes[m].y != grid.coordinate[1][j] ||
+            nodes[m].z != grid.coordinate[2][k])
+          return false;
+  return true;
+}
+
+// The passes over tensor grids, a row of samples at a time.
+
+// out[i] = lerp(low[i], high[i], u).
+GRIDIFS_FIELD_VECTOR_CLONES
+void lerpRow(const double* low, const double* high, double u, std::size_t n, double* out) {
+  for (std::size_t i = 0; i < n; ++i) out[i] = low[i] + u * (high[i] - low[i]);
+}
+
+// The cubic along one dimension between the rows v0 and v1, its end slopes the central
+// differences of the rows of lerps around them (below, at 0, at 1, above).
+GRIDIFS_FIELD_VECTOR_CLONES
+void hermiteRow(const double* v0, const double* v1, const double* below, const double* at0, const double* at1,
+                const double* above, double u, std::size_t n, double* out) {
+  for (std::size_t i = 0; i < n; ++i)
+    out[i] = hermite(v0[i], v1[i], 0.5 * (at1[i] - below[i]), 0.5 * (above[i] - at0[i]), u);
+}
+
+// The x pass of one box row: per sample i (lower vertex at[i], position u[i]) the value, cubic
+// along x, and the lerps of g and e along x. Linear: the lerp of g only.
+GRIDIFS_FIELD_VECTOR_CLONES
+void xPassRow(const double* g, const double* e, const std::size_t* at, const double* u, std::size_t n, bool cubic,
+              double* value, double* lerped, double* slope) {
+  if (!cubic) {
+    for (std::size_t i = 0; i < n; ++i) value[i] = g[at[i]] + u[i] * (g[at[i] + 1] - g[at[i]]);
+    return;
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t c = at[i];
+    value[i] = hermite(g[c], g[c + 1], 0.5 * (g[c + 1] - g[c - 1]), 0.5 * (g[c + 2] - g[c]), u[i]);
+    lerped[i] = g[c] + u[i] * (g[c + 1] - g[c]);
+    slope[i] = e[c] + u[i] * (e[c + 1] - e[c]);
+  }
+}
+
+// One level over a tensor grid of samples (coordinates already shifted and wrapped), one
+// dimension at a time: the same reduction as pseudoCubic(), each pass shared by every node that
+// shares the remaining coordinates. The slopes along y and z are central differences of values
+// already interpolated along x (and y): the same numbers by linearity. The box is collapsed one
+// layer of constant z at a time, straight into the x and y passes, so it is never stored whole.
+void separable(const Level& level, const TimeCollapse& time, bool cubic, const VertexBox& box,
+               const std::array<std::vector<AxisCell>, kSpace>& cells, int threads, std::vector<Vec3>& total) {
+  const std::size_t nx = cells[0].size(), ny = cells[1].size(), nz = cells[2].size();
+  const std::size_t bx = std::size_t(box.size[0]), by = std::size_t(box.size[1]), bz = std::size_t(box.size[2]);
+  const auto share = boxShares(level, box);
+  std::array<std::vector<std::size_t>, kSpace> at;  // each sample's lower vertex, in box coordinates
+  for (int d = 0; d < kSpace; ++d)
+    for (const AxisCell& c : cells[d]) at[d].push_back(std::size_t(c.base - box.lo[d]));
+  // Per axis, after the y pass: the value (cubic along x and y), the lerp of g along x and y
+  // (whose central differences along z are the z slopes) and the lerp of e.
+  std::array<std::vector<double>, kAxes> yValue, yLerp, ySlope;
+  for (int a = 0; a < kAxes; ++a) {
+    yValue[a].resize(nx * ny * bz);
+    if (cubic) {
+      yLerp[a].resize(nx * ny * bz);
+      ySlope[a].resize(nx * ny * bz);
+    }
+  }
+  std::vector<double> xu;
+  for (const AxisCell& c : cells[0]) xu.push_back(c.u);
+  parallelFor(bz, threads, 1, [&](std::size_t begin, std::size_t end) {
+    RowScratch scratch;
+    std::vector<double> gRow(kAxes * bx), eRow(kAxes * bx);
+    // The x pass of one layer: per sample column i and box row j, the value (cubic along x),
+    // and the lerps of g and e along x that carry the y and z slopes.
+    std::array<std::vector<double>, kAxes> xValue, xLerp, xSlope;
+    for (int a = 0; a < kAxes; ++a) {
+      xValue[a].resize(nx * by);
+      xLerp[a].resize(cubic ? nx * by : 0);
+      xSlope[a].resize(cubic ? nx * by : 0);
+    }
+    for (std::size_t k = begin; k < end; ++k) {
+      for (std::size_t j = 0; j < by; ++j) {
+        std::array<double*, kAxes> g{}, e{};
+        for (int a = 0; a < kAxes; ++a) {
+          g[a] = gRow.data() + a * bx;
+          e[a] = eRow.data() + a * bx;
+        }
+        collapseRow(level, time, cubic, share, j, k, scratch, g, e);
+        for (int a = 0; a < kAxes; ++a)
+          xPassRow(g[a], e[a], at[0].data(), xu.data(), nx, cubic, xValue[a].data() + nx * j,
+                   cubic ? xLerp[a].data() + nx * j : nullptr, cubic ? xSlope[a].data() + nx * j : nullptr);
+      }
+      // The y pass of the layer: per sample column (i, j).
+      for (int a = 0; a < kAxes; ++a)
+        for (std::size_t j = 0; j < ny; ++j) {
+          const std::size_t c = at[1][j];
+          const double u = cells[1][j].u;
+          const std::size_t o = nx * (j + ny * k);
+          const double* v = xValue[a].data();
+          if (!cubic) {
+            lerpRow(v + nx * c, v + nx * (c + 1), u, nx, yValue[a].data() + o);
+            continue;
+          }
+          const double* l = xLerp[a].data();
+          const double* sl = xSlope[a].data();
+          hermiteRow(v + nx * c, v + nx * (c + 1), l + nx * (c - 1), l + nx * c, l + nx * (c + 1), l + nx * (c + 2), u,
+                     nx, yValue[a].data() + o);
+          lerpRow(l + nx * c, l + nx * (c + 1), u, nx, yLerp[a].data() + o);
+          lerpRow(sl + nx * c, sl + nx * (c + 1), u, nx, ySlope[a].data() + o);
+        }
+    }
+  });
+  // The z pass: every node.
+  parallelFor(nz, threads, 1, [&](std::size_t begin, std::size_t end) {
+    std::array<std::vector<double>, kAxes> value, slope;
+    for (int a = 0; a < kAxes; ++a) {
+      value[a].resize(nx);
+      slope[a].resize(nx);
+    }
+    for (std::size_t k = begin; k < end; ++k) {
+      const std::size_t c = at[2][k];
+      const double u = cells[2][k].u;
+      for (std::size_t j = 0; j < ny; ++j) {
+        const auto y = [&](std::size_t layer) { return nx * (j + ny * layer); };
+        for (int a = 0; a < kAxes; ++a) {
+          const double* v = yValue[a].data();
+          if (!cubic) {
+            lerpRow(v + y(c), v + y(c + 1), u, nx, value[a].data());
+            continue;
+          }
+          const double* l = yLerp[a].data();
+          const double* sl = ySlope[a].data();
+          hermiteRow(v + y(c), v + y(c + 1), l + y(c - 1), l + y(c), l + y(c + 1), l + y(c + 2), u, nx,
+                     value[a].data());
+          lerpRow(sl + y(c), sl + y(c + 1), u, nx, slope[a].data());
+        }
+        Vec3* row = &total[nx * (j + ny * k)];
+        for (std::size_t i = 0; i < nx; ++i) {
+          const Vec3 v = cubic ? Vec3{value[0][i] + slope[0][i], value[1][i] + slope[1][i], value[2][i] + slope[2][i]}
+                               : Vec3{value[0][i], value[1][i], value[2][i]};
+          row[i] += level.weight * v;
+        }
+      }
+    }
+  });
+}
+
+}  // namespace
+
+void fieldStepDisplace(const FractalField& field, std::vector<Vec3>& nodes, const std::vector<unsigned char>& mask,
+                       double t, int threads) {
+  const FractalFieldParams& p = field.params();
+  const bool cubic = p.interpolation == FieldInterpolation::Cubic;
+  const int workers = resolveThreadCount(threads);
+  std::vector<std::size_t> selected;
+  for (std::size_t n = 0; n < nodes.size(); ++n)
+    if (mask[n]) selected.push_back(n);
+  if (selected.empty()) return;
+
+  // The sample points s = (q + wind·t, t), wrapped (Colonna §3.2).
+  const auto sampleOf = [&](const Vec3& q) {
+    const FieldPoint s = field.wrapped({q.x + p.wind.x * t, q.y + p.wind.y * t, q.z + p.wind.z * t, t});
+    return Vec3{s[0], s[1], s[2]};
+  };
+  const double time = field.wrapped({0.0, 0.0, 0.0, t})[3];
+  TensorGrid grid;
+  // Nodes that are not finite (a previous op blew up) keep the per-node path: no box holds them.
+  bool finite = true;
+  for (std::size_t n : selected)
+    if (!std::isfinite(nodes[n].x) || !std::isfinite(nodes[n].y) || !std::isfinite(nodes[n].z)) finite = false;
+  const bool tensor = finite && selected.size() == nodes.size() && findTensorGrid(nodes, grid);
+  std::array<std::vector<double>, kSpace> axisSamples;  // tensor grids: the samples per dimension
+  if (tensor)
+    for (int d = 0; d < kSpace; ++d)
+      for (double coordinate : grid.coordinate[d]) {
+        Vec3 q{0.0, 0.0, 0.0};
+        q[d] = coordinate;
+        axisSamples[d].push_back(sampleOf(q)[d]);
+      }
+  std::vector<Vec3> samples(selected.size());
+  parallelFor(selected.size(), workers, 4096, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t n = begin; n < end; ++n) samples[n] = sampleOf(nodes[selected[n]]);
+  });
+
+  std::vector<Vec3> total(selected.size(), Vec3{0.0, 0.0, 0.0});
+  CollapsedMesh mesh;
+  for (int k = 0; k < field.levelCount(); ++k) {
+    const Level& level = field.level(k);
+    const TimeCollapse collapsed = timeCollapse(level, time, cubic);
+    BoxBuilder bounds;
+    std::array<std::vector<AxisCell>, kSpace> axisCells;
+    if (tensor) {
+      for (int d = 0; d < kSpace; ++d)
+        for (double s : axisSamples[d]) {
+          axisCells[d].push_back(axisCell(s, level.offset[d], level.cell[d]));
+          bounds.add(d, axisCells[d].back().base);
+        }
+    } else {
+      for (const Vec3& s : samples) {
+        const NodeCell cell = nodeCell(level, s);
+        for (int d = 0; d < kSpace; ++d) bounds.add(d, cell.base[d]);
+      }
+    }
+    const bool fits = finite && bounds.fits();
+    const VertexBox box = fits ? bounds.box() : VertexBox{};
+    // Collapse the box when that hashes fewer vertices than hashing each node's own.
+    const std::size_t boxHashes = box.count() * (cubic ? 4 : 2);
+    const std::size_t nodeHashes = selected.size() * std::size_t(cubic ? kCubicVertices : kLinearVertices);
+    if (fits && boxHashes <= nodeHashes) {
+      if (tensor) {
+        separable(level, collapsed, cubic, box, axisCells, workers, total);
+      } else {
+        collapse(level, collapsed, cubic, box, workers, mesh);
+        parallelFor(selected.size(), workers, 512, [&](std::size_t begin, std::size_t end) {
+          for (std::size_t n = begin; n < end; ++n) {
+            double v[kAxes];
+            readCollapsed(mesh, cubic, nodeCell(level, samples[n]), v);
+            total[n] += level.weight * Vec3{v[0], v[1], v[2]};
+          }
+        });
+      }
+    } else {
+      parallelFor((selected.size() + kBlock - 1) / kBlock, workers, 16, [&](std::size_t begin, std::size_t end) {
+        BlockScratch scratch;
+        for (std::size_t b = begin; b < end; ++b) {
+          const std::size_t first = b * kBlock;
+          hashDirect(level, collapsed, cubic, &samples[first], std::min(kBlock, selected.size() - first), scratch,
+                     &total[first]);
+        }
+      });
+    }
+  }
+  for (std::size_t n = 0; n < selected.size(); ++n) nodes[selected[n]] += p.amplitude * total[n];
+}
+
+}  // namespace gridifs
