@@ -14,7 +14,9 @@
 
 // Loops over many vertices or nodes are also compiled for AVX2 and AVX-512, and the loader
 // picks what the processor runs. Without fused multiply-adds, so every processor rounds alike.
-#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__)
+// Sanitized builds (GRIDIFS_NO_KERNEL_CLONES) compile one version: the clones' IFUNC resolver runs
+// during relocation, before a sanitizer runtime is up.
+#if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(GRIDIFS_NO_KERNEL_CLONES)
 #define GRIDIFS_FIELD_VECTOR_CLONES \
   __attribute__((target_clones("arch=x86-64-v4", "arch=x86-64-v3", "default"), optimize("fp-contract=off")))
 #else
