@@ -58,7 +58,7 @@ void PreviewView::build(ModellerState& state, EditQueue& edits, float framebuffe
   gestureItem(edits, background.label, changed, [bg](Project& p) { p.render.background = Vec3(bg[0], bg[1], bg[2]); });
   contextHelp(state, background.tooltip);
 
-  // Display mode and its controls (issues 5, 6: ui/preview_modes.cpp).
+  // Display mode and its controls (ui/preview_modes.cpp).
   modes_.buildToolbar(state, edits);
 
   // Progress.
