@@ -345,22 +345,12 @@ void GpuChaosRenderer::snapshot(RenderImage& out, const DisplaySettings& display
 }
 
 bool GpuChaosRenderer::waitUntilDone(const std::function<bool(const RenderStats&)>& progress, double intervalSeconds) {
-  const auto interval = std::chrono::duration<double>(std::max(0.001, intervalSeconds));
-  for (;;) {
-    RenderStats s = stats();
-    if (s.done) {
-      if (progress) progress(s);
-      return true;
-    }
-    if (s.budget <= 0 || s.paused) return false;
-    if (progress && !progress(s)) {
-      pause();
-      return false;
-    }
+  return waitForBudget(progress, intervalSeconds, [this](double seconds) {
     std::unique_lock lock(shared_->mutex);
-    shared_->finished.wait_for(lock, interval, [&] { return shared_->done || !shared_->hasJob; });
-    if (!shared_->hasJob) return false;
-  }
+    shared_->finished.wait_for(lock, std::chrono::duration<double>(seconds),
+                               [&] { return shared_->done || !shared_->hasJob; });
+    return shared_->hasJob;
+  });
 }
 
 }  // namespace gridifs::gpu

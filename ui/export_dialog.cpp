@@ -45,15 +45,6 @@ std::string defaultOutput(const ModellerState& state, const char* suffix) {
 
 }  // namespace
 
-ExportDialog::~ExportDialog() {
-  cancel_ = true;
-  join();
-}
-
-void ExportDialog::join() {
-  if (worker_.joinable()) worker_.join();
-}
-
 void ExportDialog::drawMenuItems(ModellerState& state) {
   if (ImGui::MenuItem("Export mesh...", nullptr, false, !running())) open(Kind::Mesh, state);
   state.probe.item("menu.export_mesh");
@@ -66,7 +57,7 @@ void ExportDialog::open(Kind kind, const ModellerState& state) {
   kind_ = kind;
   open_ = true;
   justOpened_ = true;
-  phase_ = Phase::Options;
+  phase_ = TaskPhase::Options;
   message_.clear();
   if (meshOutput_.empty()) meshOutput_ = defaultOutput(state, "-mesh.ply");
   if (pointsOutput_.empty()) pointsOutput_ = defaultOutput(state, "-points.ply");
@@ -169,17 +160,11 @@ void ExportDialog::drawPointsOptions(ModellerState& state) {
 }
 
 void ExportDialog::start(ModellerState& state) {
-  join();
+  task_.join();
   const bool mesh = kind_ == Kind::Mesh;
   const fs::path output = mesh ? meshOutput_ : pointsOutput_;
   message_.clear();
-  cancel_ = false;
-  progress_ = 0.0;
   stage_ = 0;
-  {
-    std::lock_guard lock(mutex_);
-    haveResult_ = false;
-  }
   // Everything that can fail fast fails here, inline, before the thread starts.
   try {
     if (mesh) {
@@ -192,26 +177,25 @@ void ExportDialog::start(ModellerState& state) {
       options.depth = depth_;
       const MeshWriteOptions writeOptions{!ascii_, true};
       auto ifs = std::make_shared<DeterministicIfs>(snapshotDeterministicIfs(state.document.project(), state.document.evaluation()));
-      running_ = true;
-      worker_ = std::thread([this, ifs, spec, options, writeOptions, output] {
+      task_.start([this, ifs, spec, options, writeOptions, output] {
         try {
           // Built where it lives: OpenMesh meshes copy on move (deterministic_ifs.h).
           auto result = std::make_unique<DeterministicMesh>();
           runDeterministic(
               *ifs, spec, options, *result,
               [this](double f) {
-                progress_ = f;
-                return !cancel_.load();
+                task_.setProgress(f);
+                return !task_.cancelled();
               },
-              &cancel_);
+              task_.cancelFlag());
           stage_ = 1;
           writeMeshFile(result->mesh, output, writeOptions);  // temporary + rename (mesh_io.h)
-          finish(Phase::Done, "Wrote " + output.string() + ": " + withThousands(result->plan.total.faces) + " faces, " +
+          task_.finish(TaskPhase::Done, "Wrote " + output.string() + ": " + withThousands(result->plan.total.faces) + " faces, " +
                                   withThousands(result->plan.total.vertices) + " vertices.");
         } catch (const DeterministicCancelled&) {
-          finish(Phase::Cancelled, "Cancelled; " + output.filename().string() + " was not written.");
+          task_.finish(TaskPhase::Cancelled, "Cancelled; " + output.filename().string() + " was not written.");
         } catch (const std::exception& e) {
-          finish(Phase::Failed, e.what());
+          task_.finish(TaskPhase::Failed, e.what());
         }
       });
     } else {
@@ -229,67 +213,37 @@ void ExportDialog::start(ModellerState& state) {
           (state.document.path().empty() ? std::string("untitled") : state.document.path().filename().string()) + ": " +
           std::to_string(job.samples) + " samples, seed " + std::to_string(job.seed) + ", " +
           std::to_string(job.threads) + " streams";
-      running_ = true;
-      worker_ = std::thread([this, ifs, job, output, description] {
+      task_.start([this, ifs, job, output, description] {
         try {
           const PointCloudResult written = writePointCloud(*ifs, job, output, description, [&](const RenderStats& s) {
-            progress_ = s.progress();
-            return !cancel_.load();
+            task_.setProgress(s.progress());
+            return !task_.cancelled();
           });
           if (written.cancelled) throw DeterministicCancelled();
           const std::uint64_t n = written.written;
-          finish(Phase::Done, "Wrote " + output.string() + ": " + withThousands(n) + " points.");
+          task_.finish(TaskPhase::Done, "Wrote " + output.string() + ": " + withThousands(n) + " points.");
         } catch (const DeterministicCancelled&) {
-          finish(Phase::Cancelled, "Cancelled; " + output.filename().string() + " was not written.");
+          task_.finish(TaskPhase::Cancelled, "Cancelled; " + output.filename().string() + " was not written.");
         } catch (const std::exception& e) {
-          finish(Phase::Failed, e.what());
+          task_.finish(TaskPhase::Failed, e.what());
         }
       });
     }
-    phase_ = Phase::Running;
+    phase_ = TaskPhase::Running;
     startedAt_ = state.now;
   } catch (const std::exception& e) {
-    phase_ = Phase::Failed;
+    phase_ = TaskPhase::Failed;
     message_ = e.what();
   }
 }
 
-void ExportDialog::finish(Phase phase, std::string message) {
-  std::lock_guard lock(mutex_);
-  result_ = phase;
-  resultMessage_ = std::move(message);
-  haveResult_ = true;
-  running_ = false;
-}
-
 void ExportDialog::draw(ModellerState& state) {
-  {
-    std::lock_guard lock(mutex_);
-    if (haveResult_) {
-      haveResult_ = false;
-      phase_ = result_;
-      message_ = resultMessage_;
-      if (phase_ == Phase::Done) state.info(message_);
-    }
-  }
-  if (!running() && worker_.joinable()) worker_.join();
+  if (task_.poll(phase_, message_) && phase_ == TaskPhase::Done) state.info(message_);
   if (!open_) return;
   const char* title = kind_ == Kind::Mesh ? "Export mesh F^n(A)###export" : "Export points###export";
-  if (justOpened_) {
-    ImGui::OpenPopup(title);
-    justOpened_ = false;
-  }
-  const ImGuiViewport* vp = ImGui::GetMainViewport();
-  const float em = ImGui::GetFontSize();
-  ImGui::SetNextWindowPos(ImVec2(vp->WorkPos.x + vp->WorkSize.x * 0.5f, vp->WorkPos.y + vp->WorkSize.y * 0.5f),
-                          ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-  // Fixed width, height fitted to the contents (the plan and the messages wrap).
-  ImGui::SetNextWindowSizeConstraints(ImVec2(em * 38.0f, 0), ImVec2(em * 38.0f, vp->WorkSize.y * 0.9f));
   bool keepOpen = true;
-  if (!ImGui::BeginPopupModal(title, running() ? nullptr : &keepOpen, ImGuiWindowFlags_AlwaysAutoResize)) {
-    if (!running()) open_ = false;
-    return;
-  }
+  if (!beginTaskModal(title, 38.0f, running(), open_, justOpened_, keepOpen)) return;
+  const float em = ImGui::GetFontSize();
   const bool busy = running();
   std::string& output = kind_ == Kind::Mesh ? meshOutput_ : pointsOutput_;
   ImGui::BeginDisabled(busy);
@@ -322,13 +276,13 @@ void ExportDialog::draw(ModellerState& state) {
       std::snprintf(overlay, sizeof overlay, "writing the file...  (%.1f s)", seconds);
     else
       std::snprintf(overlay, sizeof overlay, "%s %.0f%%  (%.1f s)", kind_ == Kind::Mesh ? "building" : "walking",
-                    100.0 * progress_.load(), seconds);
-    ImGui::ProgressBar(float(progress_.load()), ImVec2(-em * 7.0f, 0), overlay);
+                    100.0 * task_.progress(), seconds);
+    ImGui::ProgressBar(float(task_.progress()), ImVec2(-em * 7.0f, 0), overlay);
     state.probe.item("export.progress");
     ImGui::SameLine();
     // The mesh file itself is written in one OpenMesh call, which cannot be interrupted.
-    ImGui::BeginDisabled(stage_.load() == 1 || cancel_.load());
-    if (ImGui::Button("Cancel", ImVec2(-1, 0))) cancel_ = true;
+    ImGui::BeginDisabled(stage_.load() == 1 || task_.cancelled());
+    if (ImGui::Button("Cancel", ImVec2(-1, 0))) task_.cancel();
     ImGui::EndDisabled();
     state.probe.item("export.cancel");
   } else {
@@ -345,8 +299,8 @@ void ExportDialog::draw(ModellerState& state) {
     state.probe.item("export.close");
   }
   if (!message_.empty()) {
-    const ImVec4 color = phase_ == Phase::Failed ? ImVec4(1.0f, 0.45f, 0.35f, 1.0f)
-                         : phase_ == Phase::Done ? ImVec4(0.55f, 0.85f, 0.55f, 1.0f)
+    const ImVec4 color = phase_ == TaskPhase::Failed ? ImVec4(1.0f, 0.45f, 0.35f, 1.0f)
+                         : phase_ == TaskPhase::Done ? ImVec4(0.55f, 0.85f, 0.55f, 1.0f)
                                                  : ImVec4(0.8f, 0.8f, 0.8f, 1.0f);
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextColored(color, "%s", message_.c_str());
@@ -360,17 +314,15 @@ void ExportDialog::draw(ModellerState& state) {
       baseFile_ = chosen->string();
     browsing_ = Browsing::None;
   }
-  ImGui::EndPopup();
-  if (!keepOpen) open_ = false;
+  endTaskModal(keepOpen, open_);
 }
 
 nlohmann::json ExportDialog::probeJson() const {
-  static const char* phases[] = {"options", "running", "done", "failed", "cancelled"};
   return {{"open", open_},
           {"kind", kind_ == Kind::Mesh ? "mesh" : "points"},
-          {"phase", phases[int(phase_)]},
+          {"phase", taskPhaseName(phase_)},
           {"running", running()},
-          {"progress", progress_.load()},
+          {"progress", task_.progress()},
           {"output", kind_ == Kind::Mesh ? meshOutput_ : pointsOutput_},
           {"message", message_}};
 }

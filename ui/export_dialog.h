@@ -5,14 +5,13 @@
 // output written atomically (a temporary file renamed over the target).
 #include <atomic>
 #include <filesystem>
-#include <mutex>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
-#include <thread>
 
 #include "mesh/base_mesh.h"
 #include "mesh/deterministic_ifs.h"
+#include "ui/dialog_task.h"
 #include "ui/file_browser.h"
 #include "ui/modeller_state.h"
 
@@ -22,7 +21,6 @@ class ExportDialog {
  public:
   enum class Kind { Mesh, Points };
   ExportDialog() = default;
-  ~ExportDialog();  // cancels and joins a running export
   ExportDialog(const ExportDialog&) = delete;
   ExportDialog& operator=(const ExportDialog&) = delete;
 
@@ -32,20 +30,17 @@ class ExportDialog {
   void open(Kind kind, const ModellerState& state);
   /// Draws the dialog while open; call every frame at top level.
   void draw(ModellerState& state);
-  bool running() const { return running_.load(); }
+  bool running() const { return task_.running(); }
   bool isOpen() const { return open_; }
   nlohmann::json probeJson() const;
 
  private:
-  enum class Phase { Options, Running, Done, Failed, Cancelled };
   void drawMeshOptions(ModellerState& state);
   /// The base-mesh spec of the dialog's options for an output of `outputFormat`.
   BaseMeshSpec meshSpec(std::optional<MeshFormat> outputFormat) const;
   void drawPointsOptions(ModellerState& state);
   void updatePlan(const ModellerState& state);
   void start(ModellerState& state);
-  void finish(Phase phase, std::string message);
-  void join();
 
   Kind kind_ = Kind::Mesh;
   bool open_ = false, justOpened_ = false;
@@ -68,17 +63,11 @@ class ExportDialog {
   FileBrowser browser_;
   enum class Browsing { None, Output, Base } browsing_ = Browsing::None;
   // The running export.
-  Phase phase_ = Phase::Options;
-  std::thread worker_;
-  std::atomic<bool> running_{false}, cancel_{false};
-  std::atomic<double> progress_{0.0};
+  TaskPhase phase_ = TaskPhase::Options;
   std::atomic<int> stage_{0};  // 0 building / walking, 1 writing
-  mutable std::mutex mutex_;
-  Phase result_ = Phase::Options;
-  std::string resultMessage_;
-  bool haveResult_ = false;
-  std::string message_;  // shown inline: the result or the error
+  std::string message_;        // shown inline: the result or the error
   double startedAt_ = 0.0;
+  DialogTask task_;  // last: destroyed first, it cancels and joins the worker that uses the rest
 };
 
 }  // namespace gridifs::ui

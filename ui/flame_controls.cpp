@@ -2,12 +2,13 @@
 // swatch strips (flam3's collection and ours) and the tone-mapping settings of Draves & Reckase 2003, §4–8 as
 // edits of render.flame, one undo step per slider drag.
 #include <algorithm>
-#include <cctype>
 #include <cstdio>
 
 #include "flame/palette.h"
+#include "model/settings_tables.h"
 #include "ui/key_button.h"
 #include "ui/preview_modes.h"
+#include "ui/setting_slider.h"
 #include "ui/widgets.h"
 
 namespace gridifs::ui {
@@ -32,20 +33,15 @@ void drawSwatch(ImDrawList* draw, ImVec2 min, ImVec2 max, const std::vector<ImU3
   draw->AddRect(min, max, IM_COL32(0, 0, 0, 160));
 }
 
-/// A double slider that edits one field of render.flame as one gesture.
-void flameSlider(ModellerState& state, EditQueue& edits, const char* label, const char* undoLabel, double value,
-                 double min, double max, const char* format, bool logarithmic, double FlameSettings::*field,
-                 const char* help) {
-  // The file's name of the field: "Gamma threshold" → render.flame.gamma_threshold.
-  std::string key = undoLabel;
-  for (char& c : key) c = c == ' ' ? '_' : char(std::tolower(static_cast<unsigned char>(c)));
-  keyButton(state, edits, "render.flame." + key, &value);
-  const bool changed =
-      ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &min, &max, format,
-                          ImGuiSliderFlags_AlwaysClamp | (logarithmic ? ImGuiSliderFlags_Logarithmic : 0));
-  state.probe.frame(std::string("flame.") + undoLabel);
-  gestureItem(edits, undoLabel, changed, [field, value](Project& p) { p.render.flame.*field = value; });
-  contextHelp(state, help);
+/// The slider of render.flame's field `key` (range, format, label and tooltip from its table), with
+/// its keyframe button, as one gesture. `min` < `max` replaces the table's slider range.
+void flameSlider(ModellerState& state, EditQueue& edits, const FlameSettings& f, const char* key, double min = 0.0,
+                 double max = 0.0) {
+  const SettingSpec& spec = flameSettingsTable().field(key);
+  double value = spec.number(&f);
+  keyButton(state, edits, std::string("render.flame.") + key, &value);
+  settingSlider(state, edits, spec, value, [](Project& p) -> void* { return &p.render.flame; },
+                {.probe = "flame", .min = min, .max = max});
 }
 
 }  // namespace
@@ -141,17 +137,8 @@ void PreviewModes::drawFlameControls(ModellerState& state, EditQueue& edits) {
   if (ImGui::BeginPopup("##tonemapping")) {
     sectionTitle("Tone mapping (Draves & Reckase 2003, §4, §6)");
     ImGui::PushItemWidth(em * 14.0f);
-    flameSlider(state, edits, "Brightness", "Brightness", f.brightness, 0.05, 100.0, "%.2f", true,
-                &FlameSettings::brightness, "flam3 brightness (k1): exposure of the log-density image");
-    flameSlider(state, edits, "Gamma", "Gamma", f.gamma, 0.5, 10.0, "%.2f", false, &FlameSettings::gamma,
-                "Gamma of the log-density image (Draves & Reckase 2003, §6)");
-    flameSlider(state, edits, "Gamma threshold", "Gamma threshold", f.gamma_threshold, 0.0, 1.0, "%.4f", false,
-                &FlameSettings::gamma_threshold,
-                "Below this density the gamma curve is linear (less noise in thin areas)");
-    flameSlider(state, edits, "Vibrancy", "Vibrancy", f.vibrancy, 0.0, 1.0, "%.2f", false, &FlameSettings::vibrancy,
-                "0: gamma per channel (washed out); 1: gamma through alpha (saturated colors)");
-    flameSlider(state, edits, "Highlight power", "Highlight power", f.highlight_power, -1.0, 10.0, "%.2f", false,
-                &FlameSettings::highlight_power, "How saturated highlights turn white; negative clips instead");
+    for (const char* key : {"brightness", "gamma", "gamma_threshold", "vibrancy", "highlight_power"})
+      flameSlider(state, edits, f, key);
     ImGui::Spacing();
     sectionTitle("Density estimation (Draves & Reckase 2003, §8)");
     bool estimate = f.estimator_radius > 0.0;
@@ -162,10 +149,10 @@ void PreviewModes::drawFlameControls(ModellerState& state, EditQueue& edits) {
     }
     state.probe.item("flame.estimation");
     contextHelp(state, "Blur thin areas with a kernel that shrinks as density grows (off: faster, noisier)");
-    if (estimate)
-      flameSlider(state, edits, "Estimator radius", "Estimator radius", f.estimator_radius,
-                  std::max(0.5, f.estimator_minimum), 20.0, "%.1f px", false, &FlameSettings::estimator_radius,
-                  "Widest kernel radius in pixels, used where the density is lowest");
+    if (estimate) {
+      const SettingSpec& radius = flameSettingsTable().field("estimator_radius");
+      flameSlider(state, edits, f, "estimator_radius", std::max(radius.sliderMin, f.estimator_minimum), radius.sliderMax);
+    }
     ImGui::PopItemWidth();
     ImGui::Spacing();
     if (ImGui::Button("Defaults")) {

@@ -8,7 +8,9 @@
 #include <cstdio>
 
 #include "edit/view_camera.h"
+#include "model/settings_tables.h"
 #include "render/camera.h"
+#include "ui/setting_slider.h"
 #include "ui/timeline_panel.h"
 #include "ui/widgets.h"
 
@@ -46,18 +48,17 @@ void PreviewView::build(ModellerState& state, EditQueue& edits, float framebuffe
   }
   contextHelp(state, "Sample budget: how many chaos-game points the preview renders before it stops");
   ImGui::SameLine();
-  double cue = project.render.depth_cue;
   ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.0f);
-  bool changed = sliderDouble("##cue", cue, 0.0, 1.0, "depth cue %.2f");
-  gestureItem(edits, "Depth cue", changed, [cue](Project& p) { p.render.depth_cue = cue; });
-  contextHelp(state, "Depth cueing (Gröller & Wegenkittl 1994, §3.1): 0 keeps colors, 1 fades the farthest points to black");
+  settingSlider(state, edits, renderSettingsTable(), "depth_cue", project.render,
+                +[](Project& p) -> RenderSettings& { return p.render; }, {.id = "##cue", .probe = "preview"});
   ImGui::SameLine();
+  const SettingSpec& background = renderSettingsTable().field("background");
   float bg[3] = {float(project.render.background.x), float(project.render.background.y), float(project.render.background.z)};
-  changed = ImGui::ColorEdit3("Background", bg, ImGuiColorEditFlags_NoInputs);
-  gestureItem(edits, "Background", changed, [bg](Project& p) { p.render.background = Vec3(bg[0], bg[1], bg[2]); });
-  contextHelp(state, "Background color of the preview and of renders");
+  const bool changed = ImGui::ColorEdit3(background.label, bg, ImGuiColorEditFlags_NoInputs);
+  gestureItem(edits, background.label, changed, [bg](Project& p) { p.render.background = Vec3(bg[0], bg[1], bg[2]); });
+  contextHelp(state, background.tooltip);
 
-  // Display mode and its controls (issues 5, 6: ui/preview_modes.cpp).
+  // Display mode and its controls (ui/preview_modes.cpp).
   modes_.buildToolbar(state, edits);
 
   // Progress.

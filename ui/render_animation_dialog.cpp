@@ -24,11 +24,6 @@ constexpr int kMaxFrames = 100000;
 
 }  // namespace
 
-RenderAnimationDialog::~RenderAnimationDialog() {
-  cancel_ = true;
-  if (worker_.joinable()) worker_.join();
-}
-
 void RenderAnimationDialog::openFor(const ModellerState& state) {
   const Project& project = state.document.project();
   const AnimationSettings a = timelineOf(project);
@@ -42,22 +37,14 @@ void RenderAnimationDialog::openFor(const ModellerState& state) {
       const fs::path folder = state.document.path().parent_path() / (state.document.path().stem().string() + "_frames");
       pattern_ = (folder / (state.document.path().stem().string() + "_%04d.png")).string();
     }
-    phase_ = Phase::Options;
+    phase_ = TaskPhase::Options;
     message_.clear();
   }
   open_ = justOpened_ = true;
 }
 
-void RenderAnimationDialog::finish(Phase phase, std::string message) {
-  std::lock_guard lock(mutex_);
-  result_ = phase;
-  resultMessage_ = std::move(message);
-  haveResult_ = true;
-  running_ = false;
-}
-
 void RenderAnimationDialog::start(ModellerState& state) {
-  if (worker_.joinable()) worker_.join();
+  task_.join();
   message_.clear();
   // What can fail fast fails here, inline, before the thread starts.
   if (auto problem = checkFramePattern(pattern_)) {
@@ -94,69 +81,47 @@ void RenderAnimationDialog::start(ModellerState& state) {
   const long first = first_, last = last_;
   const fs::path projectFolder = state.document.path().parent_path();
   const int threads = state.renderThreads;
-  cancel_ = false;
-  progress_ = 0.0;
   framesDone_ = 0;
   frameCount_ = int(last - first + 1);
-  phase_ = Phase::Running;
-  running_ = true;
-  worker_ = std::thread([this, project, pattern, first, last, projectFolder, threads] {
+  phase_ = TaskPhase::Running;
+  task_.start([this, project, pattern, first, last, projectFolder, threads] {
     const double count = double(last - first + 1);
     long frame = first;
     try {
       for (; frame <= last; ++frame) {
         const double done = double(frame - first);
         renderAnimationFrame(project, frame, frameFileName(pattern, frame), threads, projectFolder, [&](double f) {
-          progress_ = (done + f) / count;
-          return !cancel_.load();
+          task_.setProgress((done + f) / count);
+          return !task_.cancelled();
         });
         ++framesDone_;
       }
-      finish(Phase::Done, "Rendered " + std::to_string(last - first + 1) + " frames: " + frameFileName(pattern, first) +
+      task_.finish(TaskPhase::Done, "Rendered " + std::to_string(last - first + 1) + " frames: " + frameFileName(pattern, first) +
                               " … " + fs::path(frameFileName(pattern, last)).filename().string() + ".");
     } catch (const RenderCancelled&) {
-      finish(Phase::Cancelled, "Cancelled at frame " + std::to_string(frame) + "; " + std::to_string(frame - first) +
+      task_.finish(TaskPhase::Cancelled, "Cancelled at frame " + std::to_string(frame) + "; " + std::to_string(frame - first) +
                                    " frames were written, frame " + std::to_string(frame) + " was not.");
     } catch (const std::exception& e) {
-      finish(Phase::Failed, "Frame " + std::to_string(frame) + ": " + e.what());
+      task_.finish(TaskPhase::Failed, "Frame " + std::to_string(frame) + ": " + e.what());
     }
   });
 }
 
 void RenderAnimationDialog::draw(ModellerState& state) {
-  {
-    std::lock_guard lock(mutex_);
-    if (haveResult_) {
-      haveResult_ = false;
-      phase_ = result_;
-      message_ = resultMessage_;
-      if (phase_ == Phase::Done)
-        state.info(message_);
-      else
-        state.error(message_);
-    }
+  if (task_.poll(phase_, message_)) {
+    if (phase_ == TaskPhase::Done)
+      state.info(message_);
+    else
+      state.error(message_);
   }
-  if (!running() && worker_.joinable()) worker_.join();
   if (state.showRenderAnimation) {
     state.showRenderAnimation = false;
     openFor(state);
   }
   if (!open_) return;
-  const char* title = "Render animation###renderanimation";
-  if (justOpened_) {
-    ImGui::OpenPopup(title);
-    justOpened_ = false;
-  }
-  const ImGuiViewport* vp = ImGui::GetMainViewport();
-  const float em = ImGui::GetFontSize();
-  ImGui::SetNextWindowPos(ImVec2(vp->WorkPos.x + vp->WorkSize.x * 0.5f, vp->WorkPos.y + vp->WorkSize.y * 0.5f),
-                          ImGuiCond_Always, ImVec2(0.5f, 0.5f));
-  ImGui::SetNextWindowSizeConstraints(ImVec2(em * 36.0f, 0), ImVec2(em * 36.0f, vp->WorkSize.y * 0.9f));
   bool keepOpen = true;
-  if (!ImGui::BeginPopupModal(title, running() ? nullptr : &keepOpen, ImGuiWindowFlags_AlwaysAutoResize)) {
-    if (!running()) open_ = false;
-    return;
-  }
+  if (!beginTaskModal("Render animation###renderanimation", 36.0f, running(), open_, justOpened_, keepOpen)) return;
+  const float em = ImGui::GetFontSize();
   const bool busy = running();
   const AnimationSettings a = timelineOf(state.document.project());
   ImGui::BeginDisabled(busy);
@@ -206,10 +171,10 @@ void RenderAnimationDialog::draw(ModellerState& state) {
     char overlay[64];
     std::snprintf(overlay, sizeof overlay, "frame %d of %d", std::min(framesDone_.load() + 1, frameCount_),
                   frameCount_);
-    ImGui::ProgressBar(float(progress_.load()), ImVec2(-em * 7.0f, 0), overlay);
+    ImGui::ProgressBar(float(task_.progress()), ImVec2(-em * 7.0f, 0), overlay);
     state.probe.item("animation.progress");
     ImGui::SameLine();
-    if (ImGui::Button("Cancel", ImVec2(-1, 0))) cancel_ = true;
+    if (ImGui::Button("Cancel", ImVec2(-1, 0))) task_.cancel();
     state.probe.item("animation.cancel");
   } else {
     if (ImGui::Button("Render", ImVec2(em * 7.0f, 0))) start(state);
@@ -222,21 +187,19 @@ void RenderAnimationDialog::draw(ModellerState& state) {
     state.probe.item("animation.close");
   }
   if (!message_.empty()) {
-    const bool bad = phase_ == Phase::Failed || message_.rfind("Cannot", 0) == 0;
+    const bool bad = phase_ == TaskPhase::Failed || message_.rfind("Cannot", 0) == 0;
     if (bad) ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.45f, 0.35f, 1.0f));
     ImGui::TextWrapped("%s", message_.c_str());
     if (bad) ImGui::PopStyleColor();
   }
-  ImGui::EndPopup();
-  if (!keepOpen) open_ = false;
+  endTaskModal(keepOpen, open_);
 }
 
 nlohmann::json RenderAnimationDialog::probeJson() const {
-  static const char* phases[] = {"options", "running", "done", "failed", "cancelled"};
   return {{"open", open_},
           {"running", running()},
-          {"phase", phases[int(phase_)]},
-          {"progress", progress_.load()},
+          {"phase", taskPhaseName(phase_)},
+          {"progress", task_.progress()},
           {"frames_done", framesDone_.load()},
           {"message", message_}};
 }

@@ -6,31 +6,25 @@
 #include <cmath>
 #include <cstdio>
 
+#include "model/settings_tables.h"
 #include "ui/panels.h"
+#include "ui/setting_slider.h"
 #include "ui/widgets.h"
 
 namespace gridifs::ui {
 namespace {
 
-using ShadingChange = std::function<void(ShadingSettings&)>;
+const double kAzimuthMin = -180.0, kAzimuthMax = 180.0, kElevationMin = -89.0, kElevationMax = 90.0;
 
-const double kZero = 0.0, kAzimuthMin = -180.0, kAzimuthMax = 180.0, kElevationMin = -89.0, kElevationMax = 90.0,
-             kIntensityMax = 4.0, kApertureMax = 0.5, kFocusMin = 0.05, kFocusMax = 100.0;
+ShadingSettings& shadingOf(Project& p) { return p.render.shading; }
+AmbientOcclusionSettings& occlusionOf(Project& p) { return p.render.shading.ao; }
+FogSettings& fogOf(Project& p) { return p.render.shading.fog; }
+DepthOfFieldSettings& depthOfFieldOf(Project& p) { return p.render.shading.dof; }
 
-/// One gesture on the item just submitted, editing a copy of render.shading.
-void shadingGesture(EditQueue& edits, const char* label, bool changed, ShadingChange change) {
-  gestureItem(edits, label, changed, [change](Project& p) { change(p.render.shading); });
-}
-
-void slider(ModellerState& state, EditQueue& edits, const char* id, const char* undoLabel, double value, double min,
-            double max, const char* format, ShadingChange (*make)(double), const char* help, bool logarithmic = false) {
+/// A full-width slider with its label hidden: the format names the value ("ambient %.2f").
+SettingSliderPlace fullWidth(const char* id) {
   ImGui::SetNextItemWidth(-ImGui::GetFontSize() * 0.5f);
-  const bool changed =
-      ImGui::SliderScalar(id, ImGuiDataType_Double, &value, &min, &max, format,
-                          ImGuiSliderFlags_AlwaysClamp | (logarithmic ? ImGuiSliderFlags_Logarithmic : 0));
-  state.probe.frame(std::string("shading.") + undoLabel);
-  shadingGesture(edits, undoLabel, changed, make(value));
-  contextHelp(state, help);
+  return {.id = id, .probe = "shading"};
 }
 
 /// Azimuth (degrees from +x towards +y) and elevation (degrees above the xy plane) of a direction.
@@ -70,27 +64,26 @@ void drawLight(ModellerState& state, EditQueue& edits, std::size_t index, const 
     p.render.shading.lights.at(index).direction = fromAngles(azimuth, elevation);
   });
   contextHelp(state, "How high the light stands above the horizon (90°: straight above)");
+  const SettingTableOf<ShadingLight>& table = shadingLightTable();
+  const SettingSpec& colorSpec = table.field("color");
   float color[3] = {float(light.color.x), float(light.color.y), float(light.color.z)};
   changed = ImGui::ColorEdit3("##color", color, ImGuiColorEditFlags_NoInputs);
-  gestureItem(edits, "Light colour", changed, [index, color](Project& p) {
+  gestureItem(edits, colorSpec.label, changed, [index, color](Project& p) {
     p.render.shading.lights.at(index).color = Vec3(color[0], color[1], color[2]);
   });
-  contextHelp(state, "The light's colour");
+  contextHelp(state, colorSpec.tooltip);
   ImGui::SameLine();
-  double intensity = light.intensity;
   ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.0f);
-  changed = ImGui::SliderScalar("##intensity", ImGuiDataType_Double, &intensity, &kZero, &kIntensityMax,
-                                "intensity %.2f", ImGuiSliderFlags_AlwaysClamp);
-  state.probe.frame("shading.light" + std::to_string(index) + ".intensity");
-  gestureItem(edits, "Light intensity", changed,
-              [index, intensity](Project& p) { p.render.shading.lights.at(index).intensity = intensity; });
-  contextHelp(state, "How bright the light is");
+  settingSlider(state, edits, table.field("intensity"), light.intensity,
+                [index](Project& p) -> void* { return &p.render.shading.lights.at(index); },
+                {.id = "##intensity", .probe = "shading.light" + std::to_string(index)});
   bool shadows = light.shadows;
-  if (ImGui::Checkbox("Shadows", &shadows))
+  const SettingSpec& shadowSpec = table.field("shadows");
+  if (ImGui::Checkbox(shadowSpec.label, &shadows))
     edits.commit(shadows ? "Light casts shadows" : "Light casts no shadows",
                  [index, shadows](Project& p) { p.render.shading.lights.at(index).shadows = shadows; });
   state.probe.item("shading.light" + std::to_string(index) + ".shadows");
-  contextHelp(state, "Shadows: the chaos game also fills a depth buffer seen from this light (re-renders)");
+  contextHelp(state, shadowSpec.tooltip);
   ImGui::SameLine();
   if (ImGui::SmallButton("Remove light"))
     edits.commit("Remove light", [index](Project& p) {
@@ -119,69 +112,40 @@ void drawShadingPanel(ModellerState& state, EditQueue& edits) {
   }
 
   sectionTitle("Surface");
-  slider(
-      state, edits, "##ambient", "Ambient", s.ambient, 0.0, 1.0, "ambient %.2f",
-      [](double v) -> ShadingChange { return [v](ShadingSettings& x) { x.ambient = v; }; },
-      "Light that reaches every point, scaled by the ambient occlusion");
-  slider(
-      state, edits, "##specular", "Specular", s.specular, 0.0, 2.0, "specular %.2f",
-      [](double v) -> ShadingChange { return [v](ShadingSettings& x) { x.specular = v; }; },
-      "Strength of the highlights (Blinn-Phong)");
-  slider(
-      state, edits, "##shininess", "Shininess", s.shininess, 1.0, 512.0, "shininess %.0f",
-      [](double v) -> ShadingChange { return [v](ShadingSettings& x) { x.shininess = v; }; },
-      "How small and sharp the highlights are", true);
+  for (const auto& [key, id] : {std::pair{"ambient", "##ambient"}, {"specular", "##specular"}, {"shininess", "##shininess"}})
+    settingSlider(state, edits, shadingSettingsTable(), key, s, shadingOf, fullWidth(id));
 
   sectionTitle("Ambient occlusion");
-  slider(
-      state, edits, "##aoradius", "Occlusion radius", s.ao.radius, 0.0, 64.0, "radius %.0f px",
-      [](double v) -> ShadingChange { return [v](ShadingSettings& x) { x.ao.radius = v; }; },
-      "How far (in pixels) the occlusion looks for surrounding surfaces");
-  slider(
-      state, edits, "##aostrength", "Occlusion strength", s.ao.strength, 0.0, 1.0, "strength %.2f",
-      [](double v) -> ShadingChange { return [v](ShadingSettings& x) { x.ao.strength = v; }; },
-      "How much creases and corners darken (0: off)");
-  int directions = s.ao.directions;
-  ImGui::SetNextItemWidth(-ImGui::GetFontSize() * 0.5f);
-  const bool dirChanged = ImGui::SliderInt("##aodirs", &directions, 1, limits::kMaxAoDirections, "%d directions",
-                                           ImGuiSliderFlags_AlwaysClamp);
-  state.probe.frame("shading.Occlusion directions");
-  gestureItem(edits, "Occlusion directions", dirChanged,
-              [directions](Project& p) { p.render.shading.ao.directions = directions; });
-  contextHelp(state, "Screen directions searched for the horizon (more: smoother, slower)");
+  for (const auto& [key, id] : {std::pair{"radius", "##aoradius"}, {"strength", "##aostrength"}, {"directions", "##aodirs"}})
+    settingSlider(state, edits, ambientOcclusionTable(), key, s.ao, occlusionOf, fullWidth(id));
 
   sectionTitle("Fog");
+  const SettingSpec& fogColor = fogTable().field("color");
   float fog[3] = {float(s.fog.color.x), float(s.fog.color.y), float(s.fog.color.z)};
-  const bool fogColor = ImGui::ColorEdit3("##fogcolor", fog, ImGuiColorEditFlags_NoInputs);
-  gestureItem(edits, "Fog colour", fogColor,
+  const bool fogChanged = ImGui::ColorEdit3("##fogcolor", fog, ImGuiColorEditFlags_NoInputs);
+  gestureItem(edits, fogColor.label, fogChanged,
               [fog](Project& p) { p.render.shading.fog.color = Vec3(fog[0], fog[1], fog[2]); });
-  contextHelp(state, "The colour distant points fade to");
+  contextHelp(state, fogColor.tooltip);
   ImGui::SameLine();
-  slider(
-      state, edits, "##fogdensity", "Fog density", s.fog.density, 0.0, 2.0, "density %.3f",
-      [](double v) -> ShadingChange { return [v](ShadingSettings& x) { x.fog.density = v; }; },
-      "How quickly points fade with distance (0: no fog)");
+  settingSlider(state, edits, fogTable(), "density", s.fog, fogOf, fullWidth("##fogdensity"));
 
   sectionTitle("Depth of field");
   // An aperture needs a focus distance; the first one is the camera's distance to its target.
   const double focus = s.dof.focus.value_or(state.document.project().camera.distance);
+  const SettingSpec& apertureSpec = depthOfFieldTable().field("aperture");
   double aperture = s.dof.aperture;
   ImGui::SetNextItemWidth(-ImGui::GetFontSize() * 0.5f);
-  bool changed = ImGui::SliderScalar("##aperture", ImGuiDataType_Double, &aperture, &kZero, &kApertureMax,
-                                     "aperture %.3f", ImGuiSliderFlags_AlwaysClamp);
-  state.probe.frame("shading.Aperture");
-  gestureItem(edits, "Aperture", changed, [aperture, focus](Project& p) {
+  const bool changed =
+      settingSliderWidget("##aperture", apertureSpec, aperture, apertureSpec.sliderMin, apertureSpec.sliderMax);
+  state.probe.frame(std::string("shading.") + apertureSpec.label);
+  gestureItem(edits, apertureSpec.label, changed, [aperture, focus](Project& p) {
     p.render.shading.dof.aperture = aperture;
     p.render.shading.dof.focus = focus;
   });
-  contextHelp(state, "Blur away from the focus distance (0: everything sharp; re-renders the chaos game)");
-  double focusValue = focus;
+  contextHelp(state, apertureSpec.tooltip);
   ImGui::SetNextItemWidth(-ImGui::GetFontSize() * 0.5f);
-  changed = ImGui::SliderScalar("##focus", ImGuiDataType_Double, &focusValue, &kFocusMin, &kFocusMax, "focus %.2f",
-                                ImGuiSliderFlags_AlwaysClamp | ImGuiSliderFlags_Logarithmic);
-  state.probe.frame("shading.Focus");
-  gestureItem(edits, "Focus distance", changed, [focusValue](Project& p) { p.render.shading.dof.focus = focusValue; });
-  contextHelp(state, "The view depth that stays sharp (the camera's distance puts the target in focus)");
+  settingSlider(state, edits, depthOfFieldTable().field("focus"), focus,
+                [](Project& p) -> void* { return &depthOfFieldOf(p); }, {.id = "##focus", .probe = "shading"});
 }
 
 }  // namespace gridifs::ui

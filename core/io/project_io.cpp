@@ -10,11 +10,12 @@
 #include "io/animation_io.h"
 #include "io/animation_json.h"
 #include "io/free_form_io.h"
+#include "io/json_read.h"
+#include "io/settings_json.h"
 #include "io/shading_io.h"
 #include "io/volume_io.h"
 #include "model/operation_table.h"
-#include "model/palette_reference.h"
-#include "model/validation.h"
+#include "model/settings_tables.h"
 #include "model/transition_matrix.h"
 #include "model/validation.h"
 
@@ -24,40 +25,7 @@ namespace {
 using json = nlohmann::json;
 using ordered_json = nlohmann::ordered_json;
 
-[[noreturn]] void fail(const std::string& path, const std::string& message) { throw ModelError(path, message); }
-
-std::string join(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
-std::string item(const std::string& path, std::size_t index) { return path + "[" + std::to_string(index) + "]"; }
-
-const char* typeName(const json& j) {
-  switch (j.type()) {
-    case json::value_t::null: return "null";
-    case json::value_t::object: return "an object";
-    case json::value_t::array: return "an array";
-    case json::value_t::string: return "a string";
-    case json::value_t::boolean: return "a boolean";
-    case json::value_t::number_integer:
-    case json::value_t::number_unsigned:
-    case json::value_t::number_float: return "a number";
-    default: return "an unsupported value";
-  }
-}
-
-void requireObject(const json& j, const std::string& path) {
-  if (!j.is_object()) fail(path.empty() ? "(root)" : path, std::string("expected an object, found ") + typeName(j));
-}
-
-double readNumber(const json& j, const std::string& path, double lo, double hi) {
-  if (!j.is_number()) fail(path, std::string("expected a number, found ") + typeName(j));
-  const double v = j.get<double>();
-  if (!std::isfinite(v)) fail(path, "expected a finite number");
-  if (v < lo || v > hi) {
-    std::ostringstream s;
-    s << "expected a number between " << lo << " and " << hi << ", found " << v;
-    fail(path, s.str());
-  }
-  return v;
-}
+using namespace json_read;
 
 double number(const json& obj, const char* key, const std::string& path, double fallback,
               double lo = -limits::kMaxCoordinate, double hi = limits::kMaxCoordinate) {
@@ -66,54 +34,14 @@ double number(const json& obj, const char* key, const std::string& path, double 
   return readNumber(*it, join(path, key), lo, hi);
 }
 
-std::int64_t readInteger(const json& j, const std::string& path, std::int64_t lo, std::int64_t hi) {
-  if (!j.is_number()) fail(path, std::string("expected an integer, found ") + typeName(j));
-  if (j.is_number_float()) {
-    const double v = j.get<double>();
-    if (!std::isfinite(v) || v != std::floor(v)) fail(path, "expected an integer");
-    if (v < double(lo) || v > double(hi))
-      fail(path, "expected an integer between " + std::to_string(lo) + " and " + std::to_string(hi));
-    return std::int64_t(v);
-  }
-  if (j.is_number_unsigned() && j.get<std::uint64_t>() > std::uint64_t(INT64_MAX))
-    fail(path, "expected an integer between " + std::to_string(lo) + " and " + std::to_string(hi));
-  const std::int64_t v = j.get<std::int64_t>();
-  if (v < lo || v > hi) fail(path, "expected an integer between " + std::to_string(lo) + " and " + std::to_string(hi));
-  return v;
-}
-
-std::int64_t integer(const json& obj, const char* key, const std::string& path, std::int64_t fallback,
-                     std::int64_t lo, std::int64_t hi) {
-  auto it = obj.find(key);
-  if (it == obj.end()) return fallback;
-  return readInteger(*it, join(path, key), lo, hi);
-}
-
 std::uint64_t unsignedInteger(const json& obj, const char* key, const std::string& path, std::uint64_t fallback) {
   auto it = obj.find(key);
-  if (it == obj.end()) return fallback;
-  const std::string p = join(path, key);
-  if (it->is_number_unsigned()) return it->get<std::uint64_t>();
-  if (it->is_number_integer() && it->get<std::int64_t>() >= 0) return std::uint64_t(it->get<std::int64_t>());
-  if (it->is_number_float()) {
-    const double v = it->get<double>();
-    if (std::isfinite(v) && v >= 0 && v == std::floor(v) && v < 1.8e19) return std::uint64_t(v);
-  }
-  fail(p, std::string("expected a non-negative integer, found ") + typeName(*it));
+  return it == obj.end() ? fallback : readSeed(*it, join(path, key));
 }
 
 bool boolean(const json& obj, const char* key, const std::string& path, bool fallback) {
   auto it = obj.find(key);
-  if (it == obj.end()) return fallback;
-  if (!it->is_boolean()) fail(join(path, key), std::string("expected true or false, found ") + typeName(*it));
-  return it->get<bool>();
-}
-
-std::string readString(const json& j, const std::string& path, std::size_t maxLength) {
-  if (!j.is_string()) fail(path, std::string("expected a string, found ") + typeName(j));
-  const std::string& s = j.get_ref<const std::string&>();
-  if (s.size() > maxLength) fail(path, "the string is longer than " + std::to_string(maxLength) + " characters");
-  return s;
+  return it == obj.end() ? fallback : readBoolean(*it, join(path, key));
 }
 
 std::string string(const json& obj, const char* key, const std::string& path, const std::string& fallback,
@@ -121,12 +49,6 @@ std::string string(const json& obj, const char* key, const std::string& path, co
   auto it = obj.find(key);
   if (it == obj.end()) return fallback;
   return readString(*it, join(path, key), maxLength);
-}
-
-Vec3 readVec3(const json& j, const std::string& path, double lo, double hi) {
-  if (!j.is_array() || j.size() != 3) fail(path, "expected an array of 3 numbers");
-  return {readNumber(j[0], item(path, 0), lo, hi), readNumber(j[1], item(path, 1), lo, hi),
-          readNumber(j[2], item(path, 2), lo, hi)};
 }
 
 Vec3 vec3(const json& obj, const char* key, const std::string& path, Vec3 fallback,
@@ -280,28 +202,6 @@ Operation readOperation(const json& o, const std::string& path) {
   op.selection = readSelection(o, path);
   op.muted = boolean(o, "muted", path, false);
   return op;
-}
-
-/// "render.flame": every field optional, defaults from FlameSettings.
-FlameSettings readFlame(const json& o, const std::string& path) {
-  requireObject(o, path);
-  FlameSettings f;
-  f.palette = string(o, "palette", path, f.palette, limits::kMaxNameLength);
-  if (!isPaletteReferenceSyntax(f.palette))
-    fail(join(path, "palette"), "expected a built-in palette name, \"flam3:NUMBER\", \"flam3:NAME\" or \"file:PATH\"");
-  f.brightness = number(o, "brightness", path, f.brightness, 0.0, 1e4);
-  f.gamma = number(o, "gamma", path, f.gamma, 0.05, 100.0);
-  f.gamma_threshold = number(o, "gamma_threshold", path, f.gamma_threshold, 0.0, 1.0);
-  f.vibrancy = number(o, "vibrancy", path, f.vibrancy, 0.0, 1.0);
-  f.highlight_power = number(o, "highlight_power", path, f.highlight_power, -1.0, 100.0);
-  f.supersample = int(integer(o, "supersample", path, f.supersample, 1, 8));
-  f.estimator_radius = number(o, "estimator_radius", path, f.estimator_radius, 0.0, 64.0);
-  f.estimator_minimum = number(o, "estimator_minimum", path, f.estimator_minimum, 0.0, 64.0);
-  f.estimator_curve = number(o, "estimator_curve", path, f.estimator_curve, 0.05, 10.0);
-  f.filter_radius = number(o, "filter_radius", path, f.filter_radius, 0.0, 10.0);
-  f.density_unit = number(o, "density_unit", path, f.density_unit, 1e-6, 1e6);
-  validateFlameSettings(f, path);
-  return f;
 }
 
 Function readFunction(const json& f, const std::string& path, std::size_t index) {
@@ -475,31 +375,15 @@ Project parseProject(const std::string& text) {
                         std::to_string(kProjectFormatVersion) + ")");
   }
   Project project;
-  if (auto it = root.find("camera"); it != root.end()) {
-    requireObject(*it, "camera");
-    Camera& c = project.camera;
-    c.yaw = number(*it, "yaw", "camera", c.yaw, -1e6, 1e6);
-    c.pitch = number(*it, "pitch", "camera", c.pitch, -90.0, 90.0);
-    c.distance = number(*it, "distance", "camera", c.distance, 1e-3, 1e4);
-    c.target = vec3(*it, "target", "camera", c.target, -1e4, 1e4);
-    c.fov = number(*it, "fov", "camera", c.fov, 1.0, 170.0);
-    c.ortho = boolean(*it, "ortho", "camera", c.ortho);
-  }
+  if (auto it = root.find("camera"); it != root.end()) project.camera = readSettings(cameraTable(), *it, "camera");
   if (auto it = root.find("render"); it != root.end()) {
-    requireObject(*it, "render");
     RenderSettings& r = project.render;
-    r.width = int(integer(*it, "width", "render", r.width, 1, 16384));
-    r.height = int(integer(*it, "height", "render", r.height, 1, 16384));
-    r.samples = integer(*it, "samples", "render", r.samples, 1, 100'000'000'000LL);
-    r.seed = unsignedInteger(*it, "seed", "render", r.seed);
-    r.skip = int(integer(*it, "skip", "render", r.skip, 0, 100000));
-    r.background = vec3(*it, "background", "render", r.background, 0.0, 1.0);
-    r.depth_cue = number(*it, "depth_cue", "render", r.depth_cue, 0.0, 1.0);
+    readSettingFields(renderSettingsTable(), *it, "render", &r);
     if (auto m = it->find("mode"); m != it->end()) {
       if (!parseDisplayMode(readString(*m, "render.mode", 32), r.mode))
         fail("render.mode", "expected \"zbuffer\", \"flame\" or \"shaded\"");
     }
-    if (auto fl = it->find("flame"); fl != it->end()) r.flame = readFlame(*fl, "render.flame");
+    if (auto fl = it->find("flame"); fl != it->end()) r.flame = readSettings(flameSettingsTable(), *fl, "render.flame");
     if (auto sh = it->find("shading"); sh != it->end()) r.shading = readShadingSettings(*sh, "render.shading");
   }
   auto functions = root.find("functions");
@@ -541,20 +425,11 @@ std::string serializeProject(const Project& project) {
   ordered_json root;
   root["format"] = "gridifs";
   root["version"] = kProjectFormatVersion;
-  const Camera& c = project.camera;
-  root["camera"] = {{"yaw", c.yaw}, {"pitch", c.pitch}, {"distance", c.distance},
-                    {"target", writeVec3(c.target)}, {"fov", c.fov}, {"ortho", c.ortho}};
+  root["camera"] = writeSettings(cameraTable(), project.camera);
   const RenderSettings& r = project.render;
-  root["render"] = {{"width", r.width}, {"height", r.height}, {"samples", r.samples}, {"seed", r.seed},
-                    {"skip", r.skip}, {"background", writeVec3(r.background)}, {"depth_cue", r.depth_cue}};
+  root["render"] = writeSettings(renderSettingsTable(), r);
   root["render"]["mode"] = displayModeName(r.mode);
-  const FlameSettings& fl = r.flame;
-  root["render"]["flame"] = {{"palette", fl.palette}, {"brightness", fl.brightness}, {"gamma", fl.gamma},
-                             {"gamma_threshold", fl.gamma_threshold}, {"vibrancy", fl.vibrancy},
-                             {"highlight_power", fl.highlight_power}, {"supersample", fl.supersample},
-                             {"estimator_radius", fl.estimator_radius}, {"estimator_minimum", fl.estimator_minimum},
-                             {"estimator_curve", fl.estimator_curve}, {"filter_radius", fl.filter_radius}};
-  if (fl.density_unit != 1.0) root["render"]["flame"]["density_unit"] = fl.density_unit;
+  root["render"]["flame"] = writeSettings(flameSettingsTable(), r.flame);
   // Written when it says something: files that never used shading save as they always have.
   if (r.mode == DisplayMode::Shaded || !(r.shading == ShadingSettings{}))
     root["render"]["shading"] = writeShadingSettings(r.shading);

@@ -5,8 +5,8 @@
 
 #include "model/calculator.h"
 #include "model/free_form.h"
-#include "model/palette_reference.h"
 #include "model/operation_table.h"
+#include "model/settings_tables.h"
 #include "model/transition_matrix.h"
 
 namespace gridifs {
@@ -20,68 +20,13 @@ std::string item(const std::string& path, std::size_t index) { return path + "["
 }  // namespace
 
 void validateFlameSettings(const FlameSettings& f, const std::string& path) {
-  auto range = [&](double v, const char* key, double lo, double hi) {
-    if (!(v >= lo && v <= hi)) {
-      std::ostringstream s;
-      s << "expected a number between " << lo << " and " << hi << ", found " << v;
-      fail(join(path, key), s.str());
-    }
-  };
-  if (f.palette.size() > limits::kMaxNameLength || !isPaletteReferenceSyntax(f.palette))
-    fail(join(path, "palette"), "expected a built-in palette name, \"flam3:NUMBER\", \"flam3:NAME\" or \"file:PATH\"");
-  range(f.brightness, "brightness", 0.0, 1e4);
-  range(f.gamma, "gamma", 0.05, 100.0);
-  range(f.gamma_threshold, "gamma_threshold", 0.0, 1.0);
-  range(f.vibrancy, "vibrancy", 0.0, 1.0);
-  range(f.highlight_power, "highlight_power", -1.0, 100.0);
-  if (f.supersample < 1 || f.supersample > 8) fail(join(path, "supersample"), "expected an integer between 1 and 8");
-  range(f.estimator_radius, "estimator_radius", 0.0, 64.0);
-  range(f.estimator_minimum, "estimator_minimum", 0.0, 64.0);
-  range(f.estimator_curve, "estimator_curve", 0.05, 10.0);
-  range(f.filter_radius, "filter_radius", 0.0, 10.0);
-  range(f.density_unit, "density_unit", 1e-6, 1e6);
-  if (f.estimator_radius > 0.0) {
-    if (f.estimator_minimum > f.estimator_radius)
-      fail(join(path, "estimator_minimum"), "the estimator minimum is larger than its radius");
-    // The density estimator builds ((radius·ss + 1)/(minimum·ss + 1))^(1/curve) kernels.
-    const double kernels =
-        std::pow((f.estimator_radius * f.supersample + 1.0) / (f.estimator_minimum * f.supersample + 1.0),
-                 1.0 / f.estimator_curve);
-    if (!(kernels <= 1e7))
-      fail(join(path, "estimator_curve"), "the curve is too small for this radius (too many kernels)");
-  }
+  validateSettings(flameSettingsTable(), f, path);
 }
 
-void validateCamera(const Camera& c, const std::string& path) {
-  auto range = [&](double v, const std::string& key, double lo, double hi) {
-    if (!(v >= lo && v <= hi)) {
-      std::ostringstream s;
-      s << "expected a number between " << lo << " and " << hi << ", found " << v;
-      fail(join(path, key), s.str());
-    }
-  };
-  // The same ranges the project reader accepts, so whatever validates also loads back.
-  range(c.yaw, "yaw", -1e6, 1e6);
-  range(c.pitch, "pitch", -90.0, 90.0);
-  range(c.distance, "distance", 1e-3, 1e4);
-  for (int d = 0; d < 3; ++d) range(c.target[d], "target[" + std::to_string(d) + "]", -1e4, 1e4);
-  range(c.fov, "fov", 1.0, 170.0);
-}
+void validateCamera(const Camera& c, const std::string& path) { validateSettings(cameraTable(), c, path); }
 
 void validateRenderSettings(const RenderSettings& r, const std::string& path) {
-  auto range = [&](double v, const std::string& key, double lo, double hi) {
-    if (!(v >= lo && v <= hi)) {
-      std::ostringstream s;
-      s << "expected a number between " << lo << " and " << hi << ", found " << v;
-      fail(join(path, key), s.str());
-    }
-  };
-  range(r.width, "width", 1, 16384);
-  range(r.height, "height", 1, 16384);
-  range(double(r.samples), "samples", 1, 1e11);
-  range(r.skip, "skip", 0, 100000);
-  for (int d = 0; d < 3; ++d) range(r.background[d], "background[" + std::to_string(d) + "]", 0.0, 1.0);
-  range(r.depth_cue, "depth_cue", 0.0, 1.0);
+  validateSettings(renderSettingsTable(), r, path);
 }
 
 namespace {

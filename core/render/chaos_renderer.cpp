@@ -601,21 +601,11 @@ RenderImage ChaosRenderer::snapshot(const DisplaySettings& display) const {
 }
 
 bool ChaosRenderer::waitUntilDone(const std::function<bool(const RenderStats&)>& progress, double intervalSeconds) {
-  const auto interval = std::chrono::duration<double>(std::max(0.001, intervalSeconds));
-  for (;;) {
-    RenderStats s = stats();
-    if (s.done) {
-      if (progress) progress(s);
-      return true;
-    }
-    if (s.budget <= 0 || s.paused || !shared_->job) return false;
-    if (progress && !progress(s)) {
-      pause();
-      return false;
-    }
+  return waitForBudget(progress, intervalSeconds, [this](double seconds) {
     std::unique_lock lock(shared_->mutex);
-    shared_->finished.wait_for(lock, interval, [&] { return stats().done; });
-  }
+    shared_->finished.wait_for(lock, std::chrono::duration<double>(seconds), [&] { return stats().done; });
+    return true;  // the next stats() have no budget once the job is gone
+  });
 }
 
 RenderImage renderToCompletion(std::shared_ptr<const CompiledIfs> ifs, const RenderJob& job,

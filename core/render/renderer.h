@@ -39,6 +39,14 @@ class Renderer {
                              double intervalSeconds = 0.1) = 0;
   /// "cpu (2 threads)", "gpu (NVIDIA H100 ...)": for messages and file metadata.
   virtual const char* deviceName() const = 0;
+
+ protected:
+  /// waitUntilDone's loop, the same for every renderer: reports `progress` every interval until
+  /// the budget is done (true, after a last report), the render is paused or has no budget
+  /// (false), or `progress` returns false (then it pauses; false). `waitForProgress(seconds)`
+  /// blocks until the render is done or `seconds` passed, and returns false when the job is gone.
+  bool waitForBudget(const std::function<bool(const RenderStats&)>& progress, double intervalSeconds,
+                     const std::function<bool(double)>& waitForProgress);
 };
 
 }  // namespace gridifs

@@ -1,0 +1,301 @@
+#include "model/settings_tables.h"
+
+#include <cmath>
+
+#include "model/palette_reference.h"
+
+namespace gridifs {
+namespace {
+
+[[noreturn]] void fail(const std::string& path, const std::string& message) { throw ModelError(path, message); }
+
+void flameRules(const void* group, const std::string& path) {
+  const FlameSettings& f = *static_cast<const FlameSettings*>(group);
+  if (f.estimator_radius <= 0.0) return;
+  if (f.estimator_minimum > f.estimator_radius)
+    fail(settingPath(path, "estimator_minimum"), "the estimator minimum is larger than its radius");
+  // The density estimator builds ((radius·ss + 1)/(minimum·ss + 1))^(1/curve) kernels.
+  const double kernels =
+      std::pow((f.estimator_radius * f.supersample + 1.0) / (f.estimator_minimum * f.supersample + 1.0),
+               1.0 / f.estimator_curve);
+  if (!(kernels <= 1e7))
+    fail(settingPath(path, "estimator_curve"), "the curve is too small for this radius (too many kernels)");
+}
+
+void lightRules(const void* group, const std::string& path) {
+  const Vec3& d = static_cast<const ShadingLight*>(group)->direction;
+  if (d.x * d.x + d.y * d.y + d.z * d.z < 1e-12)
+    fail(settingPath(path, "direction"), "the light direction has zero length, so the light points nowhere");
+}
+
+void depthOfFieldRules(const void* group, const std::string& path) {
+  const DepthOfFieldSettings& dof = *static_cast<const DepthOfFieldSettings*>(group);
+  if (dof.aperture > 0.0 && !dof.focus)
+    fail(settingPath(path, "focus"), "an aperture above 0 needs a focus distance (the view depth that stays sharp)");
+}
+
+}  // namespace
+
+const SettingTableOf<Camera>& cameraTable() {
+  static const SettingTableOf<Camera> table{{{
+      setting<&Camera::yaw>({.key = "yaw", .min = -1e6, .max = 1e6}),
+      setting<&Camera::pitch>({.key = "pitch", .min = -90.0, .max = 90.0}),
+      setting<&Camera::distance>({.key = "distance", .min = 1e-3, .max = 1e4}),
+      setting<&Camera::target>({.key = "target", .min = -1e4, .max = 1e4}),
+      setting<&Camera::fov>({.key = "fov", .min = 1.0, .max = 170.0}),
+      setting<&Camera::ortho>({.key = "ortho"}),
+  }}};
+  return table;
+}
+
+const SettingTableOf<RenderSettings>& renderSettingsTable() {
+  static const SettingTableOf<RenderSettings> table{{{
+      setting<&RenderSettings::width>({.key = "width", .min = 1, .max = 16384}),
+      setting<&RenderSettings::height>({.key = "height", .min = 1, .max = 16384}),
+      setting<&RenderSettings::samples>({.key = "samples", .min = 1, .max = 1e11}),
+      setting<&RenderSettings::seed>({.key = "seed"}),
+      setting<&RenderSettings::skip>({.key = "skip", .min = 0, .max = 100000}),
+      setting<&RenderSettings::background>({.key = "background",
+                                            .label = "Background",
+                                            .tooltip = "Background color of the preview and of renders",
+                                            .min = 0.0,
+                                            .max = 1.0}),
+      setting<&RenderSettings::depth_cue>(
+          {.key = "depth_cue",
+           .label = "Depth cue",
+           .tooltip = "Depth cueing (Gröller & Wegenkittl 1994, §3.1): 0 keeps colors, 1 fades the farthest points "
+                      "to black",
+           .min = 0.0,
+           .max = 1.0,
+           .sliderMin = 0.0,
+           .sliderMax = 1.0,
+           .format = "depth cue %.2f"}),
+  }}};
+  return table;
+}
+
+const SettingTableOf<FlameSettings>& flameSettingsTable() {
+  static const SettingTableOf<FlameSettings> table{
+      {{
+           setting<&FlameSettings::palette>(
+               {.key = "palette",
+                .label = "Palette",
+                .accepts = isPaletteReferenceSyntax,
+                .expected = "expected a built-in palette name, \"flam3:NUMBER\", \"flam3:NAME\" or \"file:PATH\""}),
+           setting<&FlameSettings::brightness>({.key = "brightness",
+                                                .label = "Brightness",
+                                                .tooltip = "flam3 brightness (k1): exposure of the log-density image",
+                                                .min = 0.0,
+                                                .max = 1e4,
+                                                .sliderMin = 0.05,
+                                                .sliderMax = 100.0,
+                                                .format = "%.2f",
+                                                .logarithmic = true}),
+           setting<&FlameSettings::gamma>({.key = "gamma",
+                                           .label = "Gamma",
+                                           .tooltip = "Gamma of the log-density image (Draves & Reckase 2003, §6)",
+                                           .min = 0.05,
+                                           .max = 100.0,
+                                           .sliderMin = 0.5,
+                                           .sliderMax = 10.0,
+                                           .format = "%.2f"}),
+           setting<&FlameSettings::gamma_threshold>(
+               {.key = "gamma_threshold",
+                .label = "Gamma threshold",
+                .tooltip = "Below this density the gamma curve is linear (less noise in thin areas)",
+                .min = 0.0,
+                .max = 1.0,
+                .sliderMin = 0.0,
+                .sliderMax = 1.0,
+                .format = "%.4f"}),
+           setting<&FlameSettings::vibrancy>(
+               {.key = "vibrancy",
+                .label = "Vibrancy",
+                .tooltip = "0: gamma per channel (washed out); 1: gamma through alpha (saturated colors)",
+                .min = 0.0,
+                .max = 1.0,
+                .sliderMin = 0.0,
+                .sliderMax = 1.0,
+                .format = "%.2f"}),
+           setting<&FlameSettings::highlight_power>(
+               {.key = "highlight_power",
+                .label = "Highlight power",
+                .tooltip = "How saturated highlights turn white; negative clips instead",
+                .min = -1.0,
+                .max = 100.0,
+                .sliderMin = -1.0,
+                .sliderMax = 10.0,
+                .format = "%.2f"}),
+           setting<&FlameSettings::supersample>({.key = "supersample", .label = "Supersample", .min = 1, .max = 8}),
+           setting<&FlameSettings::estimator_radius>(
+               {.key = "estimator_radius",
+                .label = "Estimator radius",
+                .tooltip = "Widest kernel radius in pixels, used where the density is lowest",
+                .min = 0.0,
+                .max = 64.0,
+                .sliderMin = 0.5,  // the panel never goes below the estimator minimum either
+                .sliderMax = 20.0,
+                .format = "%.1f px"}),
+           setting<&FlameSettings::estimator_minimum>(
+               {.key = "estimator_minimum", .label = "Estimator minimum", .min = 0.0, .max = 64.0}),
+           setting<&FlameSettings::estimator_curve>(
+               {.key = "estimator_curve", .label = "Estimator curve", .min = 0.05, .max = 10.0}),
+           setting<&FlameSettings::filter_radius>(
+               {.key = "filter_radius", .label = "Filter radius", .min = 0.0, .max = 10.0}),
+           setting<&FlameSettings::density_unit>({.key = "density_unit", .min = 1e-6, .max = 1e6, .omitDefault = true}),
+       },
+       flameRules}};
+  return table;
+}
+
+const SettingTableOf<ShadingSettings>& shadingSettingsTable() {
+  static const SettingTableOf<ShadingSettings> table{{{
+      setting<&ShadingSettings::ambient>({.key = "ambient",
+                                          .label = "Ambient",
+                                          .tooltip = "Light that reaches every point, scaled by the ambient occlusion",
+                                          .min = 0.0,
+                                          .max = 10.0,
+                                          .sliderMin = 0.0,
+                                          .sliderMax = 1.0,
+                                          .format = "ambient %.2f",
+                                          .noun = "ambient term"}),
+      setting<&ShadingSettings::specular>({.key = "specular",
+                                           .label = "Specular",
+                                           .tooltip = "Strength of the highlights (Blinn-Phong)",
+                                           .min = 0.0,
+                                           .max = 10.0,
+                                           .sliderMin = 0.0,
+                                           .sliderMax = 2.0,
+                                           .format = "specular %.2f",
+                                           .noun = "specular strength"}),
+      setting<&ShadingSettings::shininess>({.key = "shininess",
+                                            .label = "Shininess",
+                                            .tooltip = "How small and sharp the highlights are",
+                                            .min = 1.0,
+                                            .max = 4096.0,
+                                            .sliderMin = 1.0,
+                                            .sliderMax = 512.0,
+                                            .format = "shininess %.0f",
+                                            .logarithmic = true,
+                                            .noun = "shininess"}),
+  }}};
+  return table;
+}
+
+const SettingTableOf<ShadingLight>& shadingLightTable() {
+  static const SettingTableOf<ShadingLight> table{
+      {{
+           setting<&ShadingLight::direction>({.key = "direction",
+                                              .label = "Light direction",
+                                              .tooltip = "Where the light comes from",
+                                              .noun = "light direction"}),
+           setting<&ShadingLight::color>({.key = "color",
+                                          .label = "Light colour",
+                                          .tooltip = "The light's colour",
+                                          .min = 0.0,
+                                          .max = 1.0,
+                                          .noun = "colour"}),
+           setting<&ShadingLight::intensity>({.key = "intensity",
+                                              .label = "Light intensity",
+                                              .tooltip = "How bright the light is",
+                                              .min = 0.0,
+                                              .max = 1e3,
+                                              .sliderMin = 0.0,
+                                              .sliderMax = 4.0,
+                                              .format = "intensity %.2f",
+                                              .noun = "light intensity"}),
+           setting<&ShadingLight::shadows>(
+               {.key = "shadows",
+                .label = "Shadows",
+                .tooltip = "Shadows: the chaos game also fills a depth buffer seen from this light (re-renders)"}),
+       },
+       lightRules}};
+  return table;
+}
+
+const SettingTableOf<AmbientOcclusionSettings>& ambientOcclusionTable() {
+  static const SettingTableOf<AmbientOcclusionSettings> table{{{
+      setting<&AmbientOcclusionSettings::radius>(
+          {.key = "radius",
+           .label = "Occlusion radius",
+           .tooltip = "How far (in pixels) the occlusion looks for surrounding surfaces",
+           .min = 0.0,
+           .max = limits::kMaxAoRadius,
+           .sliderMin = 0.0,
+           .sliderMax = 64.0,
+           .format = "radius %.0f px",
+           .noun = "occlusion radius"}),
+      setting<&AmbientOcclusionSettings::strength>({.key = "strength",
+                                                    .label = "Occlusion strength",
+                                                    .tooltip = "How much creases and corners darken (0: off)",
+                                                    .min = 0.0,
+                                                    .max = 1.0,
+                                                    .sliderMin = 0.0,
+                                                    .sliderMax = 1.0,
+                                                    .format = "strength %.2f",
+                                                    .noun = "occlusion strength"}),
+      setting<&AmbientOcclusionSettings::directions>(
+          {.key = "directions",
+           .label = "Occlusion directions",
+           .tooltip = "Screen directions searched for the horizon (more: smoother, slower)",
+           .min = 1,
+           .max = limits::kMaxAoDirections,
+           .sliderMin = 1,
+           .sliderMax = limits::kMaxAoDirections,
+           .format = "%d directions",
+           .noun = "occlusion directions"}),
+  }}};
+  return table;
+}
+
+const SettingTableOf<FogSettings>& fogTable() {
+  static const SettingTableOf<FogSettings> table{{{
+      setting<&FogSettings::color>({.key = "color",
+                                    .label = "Fog colour",
+                                    .tooltip = "The colour distant points fade to",
+                                    .min = 0.0,
+                                    .max = 1.0,
+                                    .noun = "colour"}),
+      setting<&FogSettings::density>({.key = "density",
+                                      .label = "Fog density",
+                                      .tooltip = "How quickly points fade with distance (0: no fog)",
+                                      .min = 0.0,
+                                      .max = 1e3,
+                                      .sliderMin = 0.0,
+                                      .sliderMax = 2.0,
+                                      .format = "density %.3f",
+                                      .noun = "fog density"}),
+  }}};
+  return table;
+}
+
+const SettingTableOf<DepthOfFieldSettings>& depthOfFieldTable() {
+  static const SettingTableOf<DepthOfFieldSettings> table{
+      {{
+           setting<&DepthOfFieldSettings::aperture>(
+               {.key = "aperture",
+                .label = "Aperture",
+                .tooltip = "Blur away from the focus distance (0: everything sharp; re-renders the chaos game)",
+                .min = 0.0,
+                .max = 10.0,
+                .sliderMin = 0.0,
+                .sliderMax = 0.5,
+                .format = "aperture %.3f",
+                .noun = "aperture"}),
+           setting<&DepthOfFieldSettings::focus>(
+               {.key = "focus",
+                .label = "Focus distance",
+                .tooltip = "The view depth that stays sharp (the camera's distance puts the target in focus)",
+                .min = 0.0,
+                .max = 1e4,
+                .sliderMin = 0.05,
+                .sliderMax = 100.0,
+                .format = "focus %.2f",
+                .logarithmic = true,
+                .noun = "focus distance"}),
+       },
+       depthOfFieldRules}};
+  return table;
+}
+
+}  // namespace gridifs

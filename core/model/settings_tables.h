@@ -1,0 +1,31 @@
+#pragma once
+// The settings groups of a project, one table each (model/settings_table.h): the camera, "render",
+// "render.flame" and the parts of "render.shading". Reading, writing, validation and the panels'
+// sliders all take their keys, ranges, labels and tooltips from here.
+//
+// Thread-safety: each table is built once (thread-safe static) and never changes.
+#include "model/project.h"
+#include "model/settings_table.h"
+
+namespace gridifs {
+
+/// "camera": yaw, pitch, distance, target, fov, ortho.
+const SettingTableOf<Camera>& cameraTable();
+/// "render": size, sample budget, seed, skipped iterations, background, depth cue. The display
+/// mode and the "flame" and "shading" blocks are written after these fields.
+const SettingTableOf<RenderSettings>& renderSettingsTable();
+/// "render.flame": palette, tone mapping and density estimation (Draves & Reckase 2003, §4–8).
+const SettingTableOf<FlameSettings>& flameSettingsTable();
+/// "render.shading": ambient, specular and shininess; the lights, "ao", "fog" and "dof" blocks
+/// have tables of their own.
+const SettingTableOf<ShadingSettings>& shadingSettingsTable();
+/// One entry of "render.shading.lights".
+const SettingTableOf<ShadingLight>& shadingLightTable();
+/// "render.shading.ao".
+const SettingTableOf<AmbientOcclusionSettings>& ambientOcclusionTable();
+/// "render.shading.fog".
+const SettingTableOf<FogSettings>& fogTable();
+/// "render.shading.dof".
+const SettingTableOf<DepthOfFieldSettings>& depthOfFieldTable();
+
+}  // namespace gridifs

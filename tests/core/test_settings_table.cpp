@@ -1,0 +1,166 @@
+// The settings tables: every field of every group is read, written and validated from its entry,
+// the defaults are valid, and the panels' slider ranges stay inside what validation accepts.
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "io/project_io.h"
+#include "io/settings_json.h"
+#include "model/settings_tables.h"
+#include "model_error_text.h"
+
+using namespace gridifs;
+
+namespace {
+
+struct Group {
+  const char* path;  // where the group stands in the project file
+  const SettingTable* table;
+  std::function<void*(Project&)> locate;
+};
+
+std::vector<Group> groups() {
+  return {
+      {"camera", &cameraTable(), [](Project& p) -> void* { return &p.camera; }},
+      {"render", &renderSettingsTable(), [](Project& p) -> void* { return &p.render; }},
+      {"render.flame", &flameSettingsTable(), [](Project& p) -> void* { return &p.render.flame; }},
+      {"render.shading", &shadingSettingsTable(), [](Project& p) -> void* { return &p.render.shading; }},
+      {"render.shading.lights[0]", &shadingLightTable(),
+       [](Project& p) -> void* { return &p.render.shading.lights.at(0); }},
+      {"render.shading.ao", &ambientOcclusionTable(), [](Project& p) -> void* { return &p.render.shading.ao; }},
+      {"render.shading.fog", &fogTable(), [](Project& p) -> void* { return &p.render.shading.fog; }},
+      {"render.shading.dof", &depthOfFieldTable(), [](Project& p) -> void* { return &p.render.shading.dof; }},
+  };
+}
+
+/// A valid project with one function (built out of line: GCC 12 warns about the inlined default
+/// light list otherwise).
+Project oneFunction() { return defaultNewProject(); }
+
+bool isNumber(const SettingSpec& s) {
+  return s.type == SettingType::Number || s.type == SettingType::Integer || s.type == SettingType::Count ||
+         s.type == SettingType::OptionalNumber;
+}
+
+/// The JSON object at `path` ("render.shading.lights[0]") inside `root`.
+nlohmann::json& at(nlohmann::json& root, const std::string& path) {
+  nlohmann::json* node = &root;
+  std::size_t start = 0;
+  while (start <= path.size()) {
+    const std::size_t dot = path.find('.', start);
+    std::string part = path.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+    const std::size_t bracket = part.find('[');
+    if (bracket == std::string::npos) {
+      node = &(*node)[part];
+    } else {
+      node = &(*node)[part.substr(0, bracket)][std::stoul(part.substr(bracket + 1))];
+    }
+    if (dot == std::string::npos) break;
+    start = dot + 1;
+  }
+  return *node;
+}
+
+}  // namespace
+
+TEST(SettingsTable, KeysAreUniqueAndNumbersHaveSaneRanges) {
+  for (const Group& g : groups()) {
+    SCOPED_TRACE(g.path);
+    std::set<std::string> keys;
+    for (const SettingSpec& s : g.table->fields) {
+      EXPECT_TRUE(keys.insert(s.key).second) << s.key;
+      EXPECT_EQ(&g.table->field(s.key), &s);
+      if (isNumber(s) || s.type == SettingType::Vector) {
+        EXPECT_LT(s.min, s.max) << s.key;
+      }
+      // A slider never offers a value that validation would refuse.
+      if (s.sliderMin < s.sliderMax) {
+        EXPECT_GE(s.sliderMin, s.min) << s.key;
+        EXPECT_LE(s.sliderMax, s.max) << s.key;
+        EXPECT_NE(std::string(s.label), "") << s.key;
+        EXPECT_NE(std::string(s.tooltip), "") << s.key;
+      }
+    }
+  }
+  EXPECT_THROW(flameSettingsTable().field("no_such_field"), std::logic_error);
+}
+
+TEST(SettingsTable, DefaultsAreValidAndEveryFieldIsWritten) {
+  Project p = oneFunction();
+  p.render.shading.dof.focus = 2.0;   // an unset optional is not written
+  p.render.flame.density_unit = 2.0;  // the default is omitted
+  EXPECT_NO_THROW(validateProject(p));
+  p.render.mode = DisplayMode::Shaded;  // writes render.shading
+  nlohmann::json root = nlohmann::json::parse(serializeProject(p));
+  for (const Group& g : groups()) {
+    SCOPED_TRACE(g.path);
+    const nlohmann::json& object = at(root, g.path);
+    for (const SettingSpec& s : g.table->fields) EXPECT_TRUE(object.contains(s.key)) << s.key;
+  }
+}
+
+TEST(SettingsTable, EveryNumberOutsideItsRangeIsRefusedWithItsPath) {
+  for (const Group& g : groups()) {
+    for (const SettingSpec& s : g.table->fields) {
+      if (!isNumber(s) || s.min <= -limits::kMaxCoordinate) continue;
+      const std::string path = std::string(g.path) + "." + s.key;
+      SCOPED_TRACE(path);
+      // In memory: validation names the field.
+      Project p = oneFunction();
+      s.setNumber(g.locate(p), s.min - 1.0);
+      try {
+        validateProject(p);
+        ADD_FAILURE() << "no error";
+      } catch (const ModelError& e) {
+        EXPECT_EQ(e.path(), path) << e.what();
+      }
+      // In a file: reading names it too.
+      p = oneFunction();
+      p.render.mode = DisplayMode::Shaded;
+      nlohmann::json root = nlohmann::json::parse(serializeProject(p));
+      at(root, g.path)[s.key] = s.max + 1.0;
+      try {
+        parseProject(root.dump());
+        ADD_FAILURE() << "no error";
+      } catch (const ModelError& e) {
+        EXPECT_EQ(e.path(), path) << e.what();
+      }
+    }
+  }
+}
+
+TEST(SettingsTable, MessagesNameTheMeaningWhereTheTableHasANoun) {
+  Project p = oneFunction();
+  p.render.shading.fog.density = -1.0;
+  EXPECT_EQ(test_support::modelErrorText([&] { validateProject(p); }),
+            "render.shading.fog.density: the fog density must not be negative, found -1");
+  p = oneFunction();
+  p.render.shading.ao.directions = 40;
+  EXPECT_EQ(test_support::modelErrorText([&] { validateProject(p); }),
+            "render.shading.ao.directions: expected between 1 and 32 occlusion directions, found 40");
+  p = oneFunction();
+  p.render.shading.lights[0].color = Vec3(0.5, 1.5, 0.5);
+  EXPECT_EQ(test_support::modelErrorText([&] { validateProject(p); }),
+            "render.shading.lights[0].color[1]: expected a colour component between 0 and 1, found 1.5");
+  p = oneFunction();
+  p.render.flame.gamma = 0.0;
+  EXPECT_EQ(test_support::modelErrorText([&] { validateProject(p); }),
+            "render.flame.gamma: expected a number between 0.05 and 100, found 0");
+}
+
+TEST(SettingsTable, ReadingStartsFromTheGivenDefaultsAndRoundTrips) {
+  FlameSettings f;
+  f.gamma = 2.5;
+  f.supersample = 3;
+  f.palette = "flam3:27";
+  const nlohmann::ordered_json written = writeSettings(flameSettingsTable(), f);
+  EXPECT_FALSE(written.contains("density_unit"));
+  const FlameSettings back = readSettings(flameSettingsTable(), nlohmann::json::parse(written.dump()), "render.flame");
+  EXPECT_EQ(back, f);
+  const FlameSettings partial =
+      readSettings(flameSettingsTable(), nlohmann::json::parse(R"({"vibrancy": 0.25})"), "render.flame", f);
+  EXPECT_EQ(partial.gamma, 2.5);
+  EXPECT_EQ(partial.vibrancy, 0.25);
+}

@@ -1,0 +1,40 @@
+#pragma once
+// The slider of one number in a settings table (model/settings_tables.h): its range, format,
+// logarithmic flag, label (the undo step and the probe id) and tooltip all come from the table,
+// so the Tone popup and the Shading panel draw what reading and validation accept.
+#include <functional>
+#include <string>
+
+#include "model/settings_table.h"
+#include "ui/edit_queue.h"
+#include "ui/modeller_state.h"
+
+namespace gridifs::ui {
+
+/// The clamped ImGui slider of `spec` over [min, max] (a Number, Integer or Count field); `id` is
+/// the widget's label ("##ambient" to hide it). Returns whether `value` changed.
+bool settingSliderWidget(const char* id, const SettingSpec& spec, double& value, double min, double max);
+
+/// Where the slider stands and what it edits.
+struct SettingSliderPlace {
+  const char* id = nullptr;     // the widget's label; nullptr: the table's label, shown beside it
+  std::string probe;            // the probe prefix: "flame" records "flame.Brightness"
+  double min = 0.0, max = 0.0;  // the slider's range when min < max; else the table's
+};
+
+/// A slider that edits one number field of a settings group as one gesture (one undo step named
+/// by the table's label; its tooltip on hover). `value` is the field's current value; `locate`
+/// finds the group inside the project the edit changes.
+void settingSlider(ModellerState& state, EditQueue& edits, const SettingSpec& spec, double value,
+                   std::function<void*(Project&)> locate, const SettingSliderPlace& place);
+
+/// The same for field `key` of `table`, read from `current`.
+template <class Group>
+void settingSlider(ModellerState& state, EditQueue& edits, const SettingTableOf<Group>& table, const char* key,
+                   const Group& current, Group& (*locate)(Project&), const SettingSliderPlace& place) {
+  const SettingSpec& spec = table.field(key);
+  settingSlider(
+      state, edits, spec, spec.number(&current), [locate](Project& p) -> void* { return &locate(p); }, place);
+}
+
+}  // namespace gridifs::ui
