@@ -76,7 +76,7 @@ bool ProjectFiles::load(const fs::path& file) {
   try {
     Project project = loadProject(file);
     state_.document.reset(std::move(project), fs::absolute(file));
-    state_.activeFunction = 0;
+    state_.activeFunction = FunctionRef(0);
     state_.activeOp = -1;
     state_.selections.clear();
     state_.clampIndices();
@@ -124,7 +124,7 @@ void ProjectFiles::request(Action action) {
 void ProjectFiles::perform(const Action& action) {
   if (std::holds_alternative<New>(action)) {
     state_.document.reset(defaultNewProject());
-    state_.activeFunction = 0;
+    state_.activeFunction = FunctionRef(0);
     state_.activeOp = -1;
     state_.selections.clear();
     state_.clampIndices();
@@ -155,7 +155,7 @@ bool ProjectFiles::importFlame(const fs::path& file, const std::string& genome) 
     FlameFileImport imported = importFlameFile(file, genome, folders_.state / "palettes");
     state_.document.reset(defaultNewProject());
     state_.document.edit("Import flame", [&](Project& p) { p = std::move(imported.project); });
-    state_.activeFunction = 0;
+    state_.activeFunction = FunctionRef(0);
     state_.activeOp = -1;
     state_.selections.clear();
     state_.clampIndices();
@@ -362,7 +362,7 @@ void ProjectFiles::draw(EditQueue& edits) {
           }
         }
         state_.document.reset(base, original);
-        state_.activeFunction = 0;
+        state_.activeFunction = FunctionRef(0);
         state_.activeOp = -1;
         state_.selections.clear();
         edits.commit("Recover unsaved work", [recovered](Project& p) { p = recovered; });
