@@ -34,6 +34,54 @@ Vec3 newFunctionColor(std::size_t index) {
 
 const ImVec4 kFinalColor{0.80f, 0.62f, 1.0f, 1.0f};  // the final function's row and lattice: violet
 
+void setupColumns() {
+  ImGui::TableSetupColumn("on", ImGuiTableColumnFlags_WidthFixed, ImGui::GetFrameHeight());
+  ImGui::TableSetupColumn("color", ImGuiTableColumnFlags_WidthFixed, ImGui::GetFrameHeight());
+  ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthStretch);
+  ImGui::TableSetupColumn("weight", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("w 0.000").x);
+}
+
+/// One row of the list: mute, colour, name (picks it), weight. The final function's row is violet
+/// and shows its interpolation where the others show their weight.
+void drawFunctionRow(ModellerState& state, EditQueue& edits, FunctionRef ref) {
+  const Function& f = ref.in(state.document.project());
+  const bool last = ref.isFinal();
+  const std::string probeName = last ? "final" : std::to_string(ref.index());
+  ImGui::PushID(last ? -1 : ref.index());
+  ImGui::TableNextRow();
+  if (last) ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg0, ImGui::GetColorU32(ImVec4(0.45f, 0.30f, 0.65f, 0.22f)));
+  ImGui::TableNextColumn();
+  bool on = !f.muted;
+  if (ImGui::Checkbox("##on", &on)) {
+    const std::string what = last ? " final function" : " function";
+    edits.commit((on ? "Unmute" : "Mute") + what, [ref, on](Project& p) { ref.in(p).muted = !on; });
+  }
+  state.probe.item("functions.mute." + probeName);
+  contextHelp(state, last ? "A muted final function stays in the file; points are plotted as the IFS makes them"
+                          : "Muted functions stay in the file but leave the IFS");
+  ImGui::TableNextColumn();
+  if (last)
+    ImGui::TextColored(kFinalColor, " #");  // a lattice, not a colour of its own
+  else
+    ImGui::ColorButton("##c", ImVec4(float(f.color.x), float(f.color.y), float(f.color.z), 1.0f),
+                       ImGuiColorEditFlags_NoTooltip, ImVec2(ImGui::GetFrameHeight(), ImGui::GetFrameHeight()));
+  ImGui::TableNextColumn();
+  if (last) ImGui::PushStyleColor(ImGuiCol_Text, kFinalColor);
+  const std::string label = last ? "Final: " + f.name : f.name;
+  const bool picked =
+      ImGui::Selectable(label.c_str(), ref == state.activeFunction, ImGuiSelectableFlags_SpanAllColumns);
+  if (last) ImGui::PopStyleColor();
+  state.probe.item("functions.row." + probeName);
+  if (last) contextHelp(state, "The final function: a lattice applied once more to every point before it is plotted");
+  if (picked) state.activate(ref);
+  ImGui::TableNextColumn();
+  if (last)
+    ImGui::TextDisabled("%s", f.interpolation == LatticeInterpolation::Bezier ? "Bézier" : "last");
+  else
+    ImGui::TextDisabled("w %.3g", f.weight);
+  ImGui::PopID();
+}
+
 /// Name, resolution and placement: what every function has, the final one included.
 void drawName(ModellerState& state, EditQueue& edits, FunctionRef ref, const Function& f) {
   std::string name = f.name;
@@ -145,7 +193,9 @@ void drawFinalSettings(ModellerState& state, EditQueue& edits, const Function& f
                 [ref, color](Project& p) { ref.in(p).color = Vec3(color[0], color[1], color[2]); });
     contextHelp(state, "Each point's colour moves towards this one by the function's color speed");
   } else {
-    ImGui::TextDisabled("Keeps each point's colour; weight and transitions do not apply.");
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
+    ImGui::TextWrapped("Keeps each point's colour; weight and transitions do not apply.");
+    ImGui::PopStyleColor();
   }
 }
 
@@ -253,62 +303,26 @@ void drawFunctionsPanel(ModellerState& state, EditQueue& edits) {
   }
   ImGui::EndDisabled();
 
-  // The list: mute, color, name, weight; the final function below the functions, in violet.
-  const bool haveFinal = project.final_function.has_value();
-  const int rows = count + (haveFinal ? 1 : 0);
+  // The list: mute, color, name, weight. The final function sits below it in a row of its own,
+  // in violet, always in sight however long the list.
   const float rowHeight = ImGui::GetFrameHeightWithSpacing();
-  const float listHeight = std::clamp(rowHeight * float(rows) + 8.0f, rowHeight * 2.2f, rowHeight * 4.2f);
-  if (ImGui::BeginTable("functions", 4,
-                        ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersOuter | ImGuiTableFlags_ScrollY,
-                        ImVec2(0, listHeight))) {
-    ImGui::TableSetupColumn("on", ImGuiTableColumnFlags_WidthFixed, ImGui::GetFrameHeight());
-    ImGui::TableSetupColumn("color", ImGuiTableColumnFlags_WidthFixed, ImGui::GetFrameHeight());
-    ImGui::TableSetupColumn("name", ImGuiTableColumnFlags_WidthStretch);
-    ImGui::TableSetupColumn("weight", ImGuiTableColumnFlags_WidthFixed, ImGui::CalcTextSize("w 0.000").x);
-    for (int row = 0; row < rows; ++row) {
-      const FunctionRef ref = row < count ? FunctionRef(row) : FunctionRef::finalFunction();
-      const Function& f = ref.in(project);
-      const std::string probeName = ref.isFinal() ? "final" : std::to_string(row);
-      ImGui::PushID(row);
-      ImGui::TableNextRow();
-      if (ref.isFinal())
-        ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg0, ImGui::GetColorU32(ImVec4(0.45f, 0.30f, 0.65f, 0.22f)));
-      ImGui::TableNextColumn();
-      bool on = !f.muted;
-      if (ImGui::Checkbox("##on", &on)) {
-        const std::string what = ref.isFinal() ? " final function" : " function";
-        edits.commit((on ? "Unmute" : "Mute") + what, [ref, on](Project& p) { ref.in(p).muted = !on; });
-      }
-      state.probe.item("functions.mute." + probeName);
-      contextHelp(state, ref.isFinal()
-                             ? "A muted final function stays in the file; points are plotted as the IFS makes them"
-                             : "Muted functions stay in the file but leave the IFS");
-      ImGui::TableNextColumn();
-      if (ref.isFinal()) {
-        ImGui::TextColored(kFinalColor, " #");  // a lattice, not a colour of its own
-      } else {
-        ImGui::ColorButton("##c", ImVec4(float(f.color.x), float(f.color.y), float(f.color.z), 1.0f),
-                           ImGuiColorEditFlags_NoTooltip, ImVec2(ImGui::GetFrameHeight(), ImGui::GetFrameHeight()));
-      }
-      ImGui::TableNextColumn();
-      if (ref.isFinal()) ImGui::PushStyleColor(ImGuiCol_Text, kFinalColor);
-      const std::string label = ref.isFinal() ? "Final: " + f.name : f.name;
-      const bool picked = ImGui::Selectable(label.c_str(), ref == activeRef, ImGuiSelectableFlags_SpanAllColumns);
-      if (ref.isFinal()) ImGui::PopStyleColor();
-      state.probe.item("functions.row." + probeName);
-      if (ref.isFinal())
-        contextHelp(state, "The final function: a lattice applied once more to every point before it is plotted");
-      if (picked) state.activate(ref);
-      ImGui::TableNextColumn();
-      if (ref.isFinal())
-        ImGui::TextDisabled("%s", f.interpolation == LatticeInterpolation::Bezier ? "Bézier" : "last");
-      else
-        ImGui::TextDisabled("w %.3g", f.weight);
-      ImGui::PopID();
-    }
+  const float listHeight = std::clamp(rowHeight * float(count) + 8.0f, rowHeight * 2.2f, rowHeight * 4.2f);
+  const ImGuiTableFlags tableFlags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersOuter;
+  if (ImGui::BeginTable("functions", 4, tableFlags | ImGuiTableFlags_ScrollY, ImVec2(0, listHeight))) {
+    setupColumns();
+    for (int i = 0; i < count; ++i) drawFunctionRow(state, edits, FunctionRef(i));
     ImGui::EndTable();
   }
-  if (!haveFinal) {
+  if (project.final_function) {
+    if (ImGui::BeginTable("final", 4, tableFlags)) {
+      setupColumns();
+      drawFunctionRow(state, edits, FunctionRef::finalFunction());
+      ImGui::EndTable();
+    }
+    if (ImGui::SmallButton("Remove final function")) deleteFinalFunction(state, edits);
+    state.probe.item("functions.remove_final");
+    contextHelp(state, "Remove the final function: points are plotted as the IFS makes them (Ctrl+Z brings it back)");
+  } else {
     if (ImGui::SmallButton("Add final function")) addFinalFunction(state, edits);
     state.probe.item("functions.add_final");
     contextHelp(state,
@@ -318,16 +332,14 @@ void drawFunctionsPanel(ModellerState& state, EditQueue& edits) {
 
   const Function& f = state.function();
   ImGui::Spacing();
-  ImGui::PushItemWidth(-ImGui::CalcTextSize("Palette idx").x - ImGui::GetStyle().ItemInnerSpacing.x * 2);
+  ImGui::PushItemWidth(-ImGui::CalcTextSize(finalActive ? "Interpolation" : "Palette idx").x -
+                       ImGui::GetStyle().ItemInnerSpacing.x * 2);
   drawName(state, edits, activeRef, f);
   if (finalActive) {
     drawFinalSettings(state, edits, f);
     drawResolution(state, edits, activeRef, f);
     drawPlacement(state, edits, activeRef, f);
     ImGui::PopItemWidth();
-    if (ImGui::Button("Remove final function")) deleteFinalFunction(state, edits);
-    state.probe.item("functions.remove_final");
-    contextHelp(state, "Remove the final function: points are plotted as the IFS makes them");
     return;
   }
   const int fi = active;

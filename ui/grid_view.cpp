@@ -646,7 +646,7 @@ void GridView::buildIfsScene(ModellerState& state) {
   if (lattice) {
     const bool active = state.activeFunction.isFinal();
     const bool muted = state.document.project().final_function->muted;
-    const float alpha = muted ? 0.25f : active ? 1.0f : 0.6f;
+    const float alpha = muted ? 0.2f : active ? 0.95f : 0.4f;  // the functions stay the main content
     appendGridLines(*lattice, {glm::vec3(kFinalLatticeColor), alpha}, scene_.lines);
     if (lattice->nodeCount() <= 30000)
       for (const Vec3& p : lattice->nodes())
