@@ -79,6 +79,8 @@ bool ProjectFiles::load(const fs::path& file) {
     state_.activeFunction = FunctionRef(0);
     state_.activeOp = -1;
     state_.selections.clear();
+    state_.finalSelection.clear();
+    state_.finalFunctionMessage.clear();
     state_.clampIndices();
     addRecent(fs::absolute(file));
     state_.info("Opened " + file.string());
@@ -127,6 +129,8 @@ void ProjectFiles::perform(const Action& action) {
     state_.activeFunction = FunctionRef(0);
     state_.activeOp = -1;
     state_.selections.clear();
+    state_.finalSelection.clear();
+    state_.finalFunctionMessage.clear();
     state_.clampIndices();
     state_.info("New project");
   } else if (const auto* open = std::get_if<Open>(&action)) {
@@ -158,6 +162,8 @@ bool ProjectFiles::importFlame(const fs::path& file, const std::string& genome) 
     state_.activeFunction = FunctionRef(0);
     state_.activeOp = -1;
     state_.selections.clear();
+    state_.finalSelection.clear();
+    state_.finalFunctionMessage.clear();
     state_.clampIndices();
     std::string message = "Imported " + imported.description;
     for (const std::string& w : imported.warnings) message += "; " + w;
@@ -365,6 +371,8 @@ void ProjectFiles::draw(EditQueue& edits) {
         state_.activeFunction = FunctionRef(0);
         state_.activeOp = -1;
         state_.selections.clear();
+        state_.finalSelection.clear();
+        state_.finalFunctionMessage.clear();
         edits.commit("Recover unsaved work", [recovered](Project& p) { p = recovered; });
         state_.info("Recovered unsaved work from " + r.when + "; save it to keep it.");
       } catch (const std::exception& e) {
