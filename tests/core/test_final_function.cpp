@@ -6,6 +6,7 @@
 #include "base/errors.h"
 #include "edit/document.h"
 #include "edit/edit_queue.h"
+#include "io/animation_io.h"
 #include "io/project_io.h"
 #include "model/final_function.h"
 #include "model/function_ref.h"
@@ -120,6 +121,26 @@ TEST(FinalFunction, EditingItsLatticeIsGeometryAndUndoRestoresIt) {
   EXPECT_EQ(serializeProject(document.project()), serializeProject(added));
   EXPECT_TRUE(document.undo());
   EXPECT_FALSE(document.project().final_function);
+}
+
+TEST(FinalFunction, ItsParametersAreKeyedLikeAFunction) {
+  // The diamond beside a parameter keys it by its path; for the final function that is "final.…".
+  Project p = test::sierpinskiTetrahedron();
+  p.final_function = identityFinalFunction();
+  KeyframeTrack track;
+  track.setKey({0.0, 1.0});
+  track.setKey({1.0, 0.5});
+  const std::string path = FunctionRef::finalFunction().path() + ".placement.scale[0]";
+  p.tracks[path] = track;
+  Document document(p);
+  document.setRule(keyEditedParameters);
+  document.editUnrecorded([](Project& q) { q.time = 1.0; });
+  EXPECT_DOUBLE_EQ(document.project().final_function->placement.scale.x, 0.5);
+  // Editing the keyed value at another time adds a key there.
+  document.editUnrecorded([](Project& q) { q.time = 0.5; });
+  document.edit("Scale placement", [](Project& q) { q.final_function->placement.scale.x = 2.0; });
+  EXPECT_EQ(document.project().tracks.at(path).keys.size(), 3u);
+  EXPECT_DOUBLE_EQ(document.project().final_function->placement.scale.x, 2.0);
 }
 
 TEST(FinalFunction, RemovingItDropsItsKeyframeTracks) {
