@@ -92,7 +92,7 @@ void drawHelpWindow(ModellerState& state) {
        "Edit it like a function: operations, selection, node drags, mute; weight and "
        "transitions do not apply"},
       {"Interpolation", "Trilinear cells, or a smooth Bézier free-form deformation (at most 8 nodes per axis)"},
-      {"Delete, Remove final function", "Remove it (Ctrl+Z brings it back)"},
+      {"Functions › Delete (final row active), Remove final function", "Remove it (Ctrl+Z brings it back)"},
   };
   ImGui::Spacing();
   ImGui::TextDisabled("The final function");
