@@ -118,38 +118,47 @@ void readSettingFields(const SettingTable& table, const json& object, const std:
   }
 }
 
-void writeSettingFields(const SettingTable& table, const void* group, ordered_json& object) {
-  for (const SettingSpec& s : table.fields) {
-    if (s.omitDefault && s.isDefault(group)) continue;
-    switch (s.type) {
-      case SettingType::Number:
-        object[s.key] = s.value<double>(group);
-        break;
-      case SettingType::Integer:
-        object[s.key] = s.value<int>(group);
-        break;
-      case SettingType::Count:
-        object[s.key] = s.value<std::int64_t>(group);
-        break;
-      case SettingType::Seed:
-        object[s.key] = s.value<std::uint64_t>(group);
-        break;
-      case SettingType::Vector: {
-        const Vec3& v = s.value<Vec3>(group);
-        object[s.key] = ordered_json::array({v.x, v.y, v.z});
-        break;
-      }
-      case SettingType::Boolean:
-        object[s.key] = s.value<bool>(group);
-        break;
-      case SettingType::Text:
-        object[s.key] = s.value<std::string>(group);
-        break;
-      case SettingType::OptionalNumber:
-        if (const auto& v = s.value<std::optional<double>>(group)) object[s.key] = *v;
-        break;
+namespace {
+
+void writeSettingField(const SettingSpec& s, const void* group, ordered_json& object) {
+  switch (s.type) {
+    case SettingType::Number:
+      object[s.key] = s.value<double>(group);
+      break;
+    case SettingType::Integer:
+      object[s.key] = s.value<int>(group);
+      break;
+    case SettingType::Count:
+      object[s.key] = s.value<std::int64_t>(group);
+      break;
+    case SettingType::Seed:
+      object[s.key] = s.value<std::uint64_t>(group);
+      break;
+    case SettingType::Vector: {
+      const Vec3& v = s.value<Vec3>(group);
+      object[s.key] = ordered_json::array({v.x, v.y, v.z});
+      break;
     }
+    case SettingType::Boolean:
+      object[s.key] = s.value<bool>(group);
+      break;
+    case SettingType::Text:
+      object[s.key] = s.value<std::string>(group);
+      break;
+    case SettingType::OptionalNumber:
+      if (const auto& v = s.value<std::optional<double>>(group)) object[s.key] = *v;
+      break;
   }
+}
+
+}  // namespace
+
+void writeSettingFields(const SettingTable& table, const void* group, ordered_json& object) {
+  // Fields written only when changed come after the others, in table order, so a file that never
+  // changed them saves as it always has and one that did keeps them at the end.
+  for (bool optional : {false, true})
+    for (const SettingSpec& s : table.fields)
+      if (s.omitDefault == optional && !(optional && s.isDefault(group))) writeSettingField(s, group, object);
 }
 
 }  // namespace gridifs

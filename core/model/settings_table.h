@@ -46,8 +46,8 @@ struct SettingInfo {
   /// numbers and validation names the meaning ("the ambient term must not be negative, found -1");
   /// without one, reading checks the range ("expected a number between 0 and 1, found 2").
   const char* noun = nullptr;
-  /// Written only when it differs from the group's default, so files that never used it save as
-  /// they always have.
+  /// Written only when it differs from the group's default, after the fields that are always
+  /// written, so files that never used it save as they always have.
   bool omitDefault = false;
   std::size_t maxLength = limits::kMaxNameLength;  // Text only
   bool (*accepts)(const std::string&) = nullptr;   // Text only: the syntax check
@@ -96,8 +96,8 @@ enum class SettingWords {
                  // is "expected an integer between MIN and MAX"
 };
 
-/// The fields of one settings group, in the order they are read, validated and written, plus its
-/// rules across fields.
+/// The fields of one settings group, in the order they are read, validated and written (fields
+/// with omitDefault last), plus its rules across fields.
 struct SettingTable {
   std::vector<SettingSpec> fields;
   /// Rules across fields or beyond ranges (an aperture needs a focus distance). Throws ModelError

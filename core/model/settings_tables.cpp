@@ -346,11 +346,9 @@ const SettingTableOf<AnimationSettings>& animationSettingsTable() {
                                              .format = "to %.2f",
                                              .invalid = "the end time must be a finite number",
                                              .rule = animationEndRule}),
-           setting<&AnimationSettings::loop>(
-               {.key = "loop", .label = "Loop", .tooltip = "Play the range over and over"}),
            // Draves & Reckase, motion blur: the time samples of a frame spread over this fraction
-           // of the frame interval. Written only when changed, so files saved before it existed
-           // save unchanged.
+           // of the frame interval. Written only when changed (after loop), so files saved before
+           // it existed save unchanged.
            setting<&AnimationSettings::shutter>(
                {.key = "shutter",
                 .label = "Shutter",
@@ -362,6 +360,8 @@ const SettingTableOf<AnimationSettings>& animationSettingsTable() {
                 .format = "shutter %.2f",
                 .omitDefault = true,
                 .invalid = "the shutter must be a fraction of the frame interval between 0 and 1"}),
+           setting<&AnimationSettings::loop>(
+               {.key = "loop", .label = "Loop", .tooltip = "Play the range over and over"}),
        },
        nullptr,
        SettingWords::FiniteOnly}};

@@ -182,6 +182,13 @@ TEST(SettingsTable, AnimationAndVolumeKeepTheirWords) {
   EXPECT_EQ(readingMessage("animation", R"({"shutter": 1.5})"),
             "animation.shutter: the shutter must be a fraction of the frame interval between 0 and 1");
   EXPECT_EQ(readingMessage("animation", R"({"start": 2e6, "end": 1e300})"), "");  // any finite time
+  // Read in table order (the shutter before the loop); written with the shutter, only written
+  // when changed, last.
+  EXPECT_EQ(readingMessage("animation", R"({"loop": 1, "shutter": "x"})"), "animation.shutter: expected a number");
+  AnimationSettings blurred;
+  blurred.shutter = 0.25;
+  EXPECT_EQ(writeSettings(animationSettingsTable(), blurred).dump(),
+            R"({"fps":24.0,"start":0.0,"end":4.0,"loop":true,"shutter":0.25})");
   EXPECT_EQ(readingMessage("volume", "[]"), "volume: expected an object");
   EXPECT_EQ(readingMessage("volume", R"({"seed": "x"})"),
             "volume.seed: expected an integer between 0 and 9223372036854775807");
