@@ -8,6 +8,7 @@
 #include <limits>
 #include <string>
 
+#include "gl_common/shader_build.h"
 #include "gpu/embedded_compute_shaders.h"
 
 namespace gridifs::gpu {
@@ -58,28 +59,11 @@ ChaosCompute::ChaosCompute(const GpuInfo& info, bool accumulateColor, bool emitP
   source += std::string("#define ATOMIC64 ") + (atomic64_ ? "1" : "0") + "\n#define ACCUMULATE_COLOR " +
             (color_ ? "1" : "0") + "\n#define EMIT_POINTS " + (points_ ? "1" : "0") + "\n#line 1\n";
   source += shaderSource("chaos_game.comp.glsl");
-  const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
-  const char* text = source.c_str();
-  glShaderSource(shader, 1, &text, nullptr);
-  glCompileShader(shader);
-  GLint ok = 0;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[2048] = {};
-    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-    glDeleteShader(shader);
-    throw GpuUnavailable(std::string("the GPU driver rejected the chaos-game shader: ") + log);
-  }
-  program_ = glCreateProgram();
-  glAttachShader(program_, shader);
-  glLinkProgram(program_);
-  glDeleteShader(shader);
-  glGetProgramiv(program_, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    char log[2048] = {};
-    glGetProgramInfoLog(program_, sizeof log, nullptr, log);
-    throw GpuUnavailable(std::string("the GPU driver could not link the chaos-game shader: ") + log);
-  }
+  const gl::ShaderBuild shader = gl::compileShader(GL_COMPUTE_SHADER, source.c_str());
+  if (!shader.id) throw GpuUnavailable("the GPU driver rejected the chaos-game shader: " + shader.log);
+  const gl::ShaderBuild program = gl::linkProgram({shader.id});
+  if (!program.id) throw GpuUnavailable("the GPU driver could not link the chaos-game shader: " + program.log);
+  program_ = program.id;
   glGenBuffers(9, buffers_);
 }
 

@@ -110,7 +110,7 @@ void CombineDialog::combine(ModellerState& state, EditQueue& edits) {
   const std::string name = loadedPath_.filename().string();
   edits.commit(std::string("Combine (") + combineOpName(op) + ")",
                [result = std::move(result)](Project& p) { p = result; });
-  state.activeFunction = 0;
+  state.activeFunction = FunctionRef(0);
   state.activeOp = -1;
   state.info("Combined with " + name + " (" + combineOpName(op) + "): " + std::to_string(count) + " functions");
   open_ = false;

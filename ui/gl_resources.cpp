@@ -5,25 +5,16 @@
 #include <stdexcept>
 #include <utility>
 
+#include "gl_common/shader_build.h"
 #include "ui/embedded_shaders.h"
 
 namespace gridifs::ui {
 namespace {
 
-GLuint compile(GLenum type, const std::string& name) {
-  const char* source = embeddedShader(name);
-  GLuint shader = glCreateShader(type);
-  glShaderSource(shader, 1, &source, nullptr);
-  glCompileShader(shader);
-  GLint ok = 0;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-  if (!ok) {
-    char log[2048] = {};
-    glGetShaderInfoLog(shader, sizeof log, nullptr, log);
-    glDeleteShader(shader);
-    throw std::runtime_error("shader " + name + " does not compile: " + log);
-  }
-  return shader;
+GLuint compile(GLenum stage, const std::string& name) {
+  const gl::ShaderBuild shader = gl::compileShader(stage, embeddedShader(name));
+  if (!shader.id) throw std::runtime_error("shader " + name + " does not compile: " + shader.log);
+  return shader.id;
 }
 
 }  // namespace
@@ -37,21 +28,10 @@ const char* embeddedShader(const std::string& name) {
 ShaderProgram::ShaderProgram(const std::string& vertexName, const std::string& fragmentName) {
   const GLuint vs = compile(GL_VERTEX_SHADER, vertexName);
   const GLuint fs = compile(GL_FRAGMENT_SHADER, fragmentName);
-  program_ = glCreateProgram();
-  glAttachShader(program_, vs);
-  glAttachShader(program_, fs);
-  glLinkProgram(program_);
-  glDeleteShader(vs);
-  glDeleteShader(fs);
-  GLint ok = 0;
-  glGetProgramiv(program_, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    char log[2048] = {};
-    glGetProgramInfoLog(program_, sizeof log, nullptr, log);
-    glDeleteProgram(program_);
-    program_ = 0;
-    throw std::runtime_error("shaders " + vertexName + " + " + fragmentName + " do not link: " + log);
-  }
+  const gl::ShaderBuild program = gl::linkProgram({vs, fs});
+  if (!program.id)
+    throw std::runtime_error("shaders " + vertexName + " + " + fragmentName + " do not link: " + program.log);
+  program_ = program.id;
 }
 
 ShaderProgram::~ShaderProgram() {

@@ -23,6 +23,7 @@ constexpr glm::vec4 kSelectedColor{1.0f, 0.62f, 0.12f, 1.0f};
 constexpr glm::vec4 kCenterColor{0.25f, 0.85f, 0.95f, 1.0f};
 constexpr glm::vec4 kHandleColor{0.95f, 0.30f, 0.85f, 1.0f};
 constexpr glm::vec4 kMorphColor{1.0f, 0.90f, 0.25f, 1.0f};
+constexpr glm::vec4 kFinalLatticeColor{0.80f, 0.62f, 1.0f, 1.0f};  // violet, as the final function's row
 constexpr double kPickRadius = 8.0;   // logical pixels
 constexpr double kDragThreshold = 3.0;
 
@@ -135,7 +136,7 @@ ViewCamera GridView::camera(const ModellerState& state) const {
   return camera_;
 }
 
-void GridView::pickableNodes(ModellerState& state, std::vector<Vec3>& out, std::vector<int>& owner) {
+void GridView::pickableNodes(ModellerState& state, std::vector<Vec3>& out, std::vector<FunctionRef>& owner) {
   out.clear();
   owner.clear();
   if (content_ == Content::FunctionGrid) {
@@ -148,9 +149,17 @@ void GridView::pickableNodes(ModellerState& state, std::vector<Vec3>& out, std::
     try {
       const auto grid = state.document.evaluatedGrid(f);
       out.insert(out.end(), grid->nodes().begin(), grid->nodes().end());
-      owner.insert(owner.end(), grid->nodeCount(), int(f));
+      owner.insert(owner.end(), grid->nodeCount(), FunctionRef(int(f)));
     } catch (const ModelError&) {
     }
+  }
+  // The final function's lattice last: where its nodes sit on a function's, that function wins.
+  try {
+    if (const auto grid = state.document.evaluatedFinal()) {
+      out.insert(out.end(), grid->nodes().begin(), grid->nodes().end());
+      owner.insert(owner.end(), grid->nodeCount(), FunctionRef::finalFunction());
+    }
+  } catch (const ModelError&) {
   }
 }
 
@@ -254,6 +263,15 @@ void GridView::build(ModellerState& state, EditQueue& edits, glm::vec2 size, flo
                                      "wheel: zoom · F: frame"
                                    : "Click/drag: select nodes (Shift add, Ctrl remove) · drag a selected node: move · "
                                      "Alt+click: place center · right-drag: orbit/pan · wheel: zoom · F: frame";
+    // The final function is edited like any function; say so, since it bends the whole picture.
+    const bool finalLattice = state.document.project().final_function.has_value();
+    if (content_ == Content::Ifs && finalLattice && controlPoints(state).empty())
+      state.contextHelp =
+          "Violet: the final function's lattice around the attractor, applied to every point before "
+          "plotting; click one of its nodes to edit it · " +
+          state.contextHelp;
+    else if (content_ == Content::FunctionGrid && state.activeFunction.isFinal())
+      state.contextHelp = "Final function: moving its nodes bends the whole attractor · " + state.contextHelp;
     if (io.MouseWheel != 0.0f && drag_ == Drag::None) zoom(state, edits, io.MouseWheel);
   }
   orbit_.settleWheel(edits, state.now);
@@ -304,7 +322,7 @@ void GridView::beginDrag(ModellerState& state, EditQueue& edits, dvec2 mouse) {
   const ViewCamera cam = camera(state);
   const glm::dmat4 vp = cam.viewProjection(size_.x, size_.y);
   std::vector<Vec3> nodes;
-  std::vector<int> owner;
+  std::vector<FunctionRef> owner;
   pickableNodes(state, nodes, owner);
   const double radius = kPickRadius * state.uiScale;
 
@@ -322,27 +340,25 @@ void GridView::beginDrag(ModellerState& state, EditQueue& edits, dvec2 mouse) {
   if (content_ == Content::Ifs) {
     const auto hit = nearestNode(nodes, vp, size_.x, size_.y, mouse, radius);
     if (!hit) return;
-    const int f = owner[*hit];
-    if (f != state.activeFunction) {
-      state.activeFunction = f;
-      state.activeOp = -1;
-    }
-    dragFunctionIndex_ = f;
-    dragFunction_ = state.document.project().functions[std::size_t(f)];
+    const FunctionRef f = owner[*hit];
+    state.activate(f);
+    dragFunctionRef_ = f;
+    dragFunction_ = f.in(state.document.project());
     anchor_ = nodes[*hit];
     drag_ = Drag::Placement;
     return;
   }
 
-  dragFunctionIndex_ = state.activeFunction;
+  dragFunctionRef_ = state.activeFunction;
   dragFunction_ = state.function();
   if (io.KeyAlt) {  // place the point center of transformation (Gröller & Wegenkittl 1994, §4.3)
     const Vec3 p = cam.orbit.target + cam.dragDelta(mouse.x - size_.x * 0.5, mouse.y - size_.y * 0.5,
                                                     cam.orbit.target, size_.y);
     state.pointCenter = p;
     if (const Operation* op = state.op(); op && op->center.kind == Center::Kind::Point) {
-      const int f = state.activeFunction, o = state.activeOp;
-      edits.commit("Place center", [=](Project& pr) { pr.functions[std::size_t(f)].ops[std::size_t(o)].center.point = p; });
+      const FunctionRef f = state.activeFunction;
+      const int o = state.activeOp;
+      edits.commit("Place center", [=](Project& pr) { f.in(pr).ops[std::size_t(o)].center.point = p; });
     }
     state.info("Center point placed at (" + std::to_string(p.x).substr(0, 6) + ", " + std::to_string(p.y).substr(0, 6) +
                ", " + std::to_string(p.z).substr(0, 6) + ")");
@@ -380,7 +396,7 @@ void GridView::updateDrag(ModellerState& state, EditQueue& edits, dvec2 mouse) {
   if (firstMove) dragMoved_ = true;
   if (!dragMoved_ || mouse == dragLast_) return;
   dragLast_ = mouse;
-  const int f = dragFunctionIndex_;
+  const FunctionRef f = dragFunctionRef_;
   switch (drag_) {
     case Drag::Orbit:
     case Drag::Pan: {
@@ -412,7 +428,7 @@ void GridView::updateDrag(ModellerState& state, EditQueue& edits, dvec2 mouse) {
         else moves.push_back({idx, d});
       }
       const int opIndex = int(fn.ops.size()) - 1;
-      edits.update([f, fn](Project& p) { p.functions[std::size_t(f)] = fn; });
+      edits.update([f, fn](Project& p) { f.in(p) = fn; });
       state.activeOp = opIndex;
       break;
     }
@@ -431,13 +447,13 @@ void GridView::updateDrag(ModellerState& state, EditQueue& edits, dvec2 mouse) {
         op.center.point = p;
         state.pointCenter = p;
       }
-      edits.update([f, fn](Project& pr) { pr.functions[std::size_t(f)] = fn; });
+      edits.update([f, fn](Project& pr) { f.in(pr) = fn; });
       break;
     }
     case Drag::Placement: {
       if (firstMove) edits.begin("Move placement");
       const Vec3 t = dragFunction_.placement.translate + camera(state).dragDelta(delta.x, delta.y, anchor_, size_.y);
-      edits.update([f, t](Project& p) { p.functions[std::size_t(f)].placement.translate = t; });
+      edits.update([f, t](Project& p) { f.in(p).placement.translate = t; });
       break;
     }
     case Drag::ControlPoint: {
@@ -462,7 +478,7 @@ void GridView::endDrag(ModellerState& state, EditQueue& edits, dvec2 mouse) {
     if (drag == Drag::Box) {
       if (dragMoved_) {
         std::vector<Vec3> nodes;
-        std::vector<int> owner;
+        std::vector<FunctionRef> owner;
         pickableNodes(state, nodes, owner);
         const auto picked = nodesInRect(nodes, camera(state).viewProjection(size_.x, size_.y), size_.x, size_.y,
                                         dragStart_, mouse);
@@ -490,7 +506,7 @@ std::vector<dvec2> GridView::screenNodes(ModellerState& state) {
   std::vector<dvec2> out;
   if (!visible_) return out;
   std::vector<Vec3> nodes;
-  std::vector<int> owner;
+  std::vector<FunctionRef> owner;
   pickableNodes(state, nodes, owner);
   const glm::dmat4 vp = camera(state).viewProjection(size_.x, size_.y);
   for (const Vec3& p : nodes) {
@@ -504,7 +520,7 @@ std::vector<dvec2> GridView::screenNodes(ModellerState& state) {
 void GridView::frame(ModellerState& state, EditQueue& edits) {
   Vec3 lo(-1.0), hi(1.0);
   std::vector<Vec3> nodes;
-  std::vector<int> owner;
+  std::vector<FunctionRef> owner;
   pickableNodes(state, nodes, owner);
   const auto& points = controlPoints(state);  // a free-form IFS has no grid nodes: frame its control points
   nodes.insert(nodes.end(), points.begin(), points.end());
@@ -598,7 +614,7 @@ void GridView::buildIfsScene(ModellerState& state) {
         for (std::size_t j = 0; j < cp.size() && j < row.size(); ++j) q += row[j] * cp[j];
         image.push_back(q);
       }
-      const bool active = int(f) == state.activeFunction;
+      const bool active = state.activeFunction == FunctionRef(int(f));
       const glm::vec4 color = lineColor(fn.color, fn.muted ? 0.2f : active ? 0.95f : 0.5f);
       for (std::size_t j = 0; j + 1 < image.size(); ++j) line(scene_.lines, image[j], image[j + 1], color);
       if (active)
@@ -614,11 +630,27 @@ void GridView::buildIfsScene(ModellerState& state) {
     } catch (const ModelError&) {
       continue;
     }
-    const bool active = int(f) == state.activeFunction;
+    const bool active = state.activeFunction == FunctionRef(int(f));
     const float alpha = functions[f].muted ? 0.2f : active ? 0.95f : 0.45f;
     appendGridLines(*grid, lineColor(functions[f].color, alpha), scene_.lines);
     if (active && grid->nodeCount() <= 30000)
       for (const Vec3& p : grid->nodes()) scene_.points.push_back(vertex(p, {glm::vec3(functions[f].color), 1.0f}, 4.5f));
+  }
+  // The final function: its control lattice around the attractor, in its own colour, with its
+  // nodes always shown (they are what bends the picture, Sederberg & Parry 1986).
+  std::shared_ptr<const Grid> lattice;
+  try {
+    lattice = state.document.evaluatedFinal();
+  } catch (const ModelError&) {
+  }
+  if (lattice) {
+    const bool active = state.activeFunction.isFinal();
+    const bool muted = state.document.project().final_function->muted;
+    const float alpha = muted ? 0.2f : active ? 0.95f : 0.4f;  // the functions stay the main content
+    appendGridLines(*lattice, {glm::vec3(kFinalLatticeColor), alpha}, scene_.lines);
+    if (lattice->nodeCount() <= 30000)
+      for (const Vec3& p : lattice->nodes())
+        scene_.points.push_back(vertex(p, {glm::vec3(kFinalLatticeColor), alpha}, active ? 5.5f : 3.5f));
   }
 }
 
@@ -628,7 +660,7 @@ void GridView::render(ModellerState& state, ViewRenderer& renderer) {
   if (!framedOnce_ && !usesProjectCamera()) {
     // Start with the common initial grid and everything the view shows in the picture.
     std::vector<Vec3> nodes;
-    std::vector<int> owner;
+    std::vector<FunctionRef> owner;
     pickableNodes(state, nodes, owner);
     const auto& points = controlPoints(state);
     nodes.insert(nodes.end(), points.begin(), points.end());

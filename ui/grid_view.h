@@ -1,6 +1,7 @@
 #pragma once
 // One grid view (Gröller & Wegenkittl 1994, §4.2): the active function's grid from the top, side, front or an
-// orbiting user view, or the IFS view with every function placed in the common initial grid.
+// orbiting user view, or the IFS view with every function placed in the common initial grid and
+// the final function's lattice around them.
 // build() runs while the UI is built (input → edits); render() draws into the view's target
 // after the edits are applied (the fixed frame order of ui/modeller_app.cpp).
 #include <cstdint>
@@ -57,7 +58,7 @@ class GridView {
 
   ViewCamera camera(const ModellerState& state) const;
   /// The nodes that picking works on (local grid or every placed grid).
-  void pickableNodes(ModellerState& state, std::vector<Vec3>& out, std::vector<int>& owner);
+  void pickableNodes(ModellerState& state, std::vector<Vec3>& out, std::vector<FunctionRef>& owner);
   Handle hitHandle(ModellerState& state, glm::dvec2 mouse, int& pairIndex, Vec3& position) const;
   /// The control points this view shows and picks (a free-form IFS's), empty for a grid IFS.
   const std::vector<Vec3>& controlPoints(const ModellerState& state) const;
@@ -76,7 +77,8 @@ class GridView {
   /// Everything a view's picture depends on; equal keys mean the texture is still valid.
   struct Key {
     std::uint64_t revision = 0;  // Document::revisions().geometry
-    int function = -1, op = -1;
+    FunctionRef function;
+    int op = -1;
     Selection selection;
     Camera camera;
     ViewAxis axis = ViewAxis::User;
@@ -109,7 +111,7 @@ class GridView {
   int handlePair_ = -1;
   Vec3 handleStart_{0.0}, anchor_{0.0};
   Function dragFunction_;    // the function as it was when a node/handle/placement drag began
-  int dragFunctionIndex_ = 0;
+  FunctionRef dragFunctionRef_;  // and which one it is
   std::size_t pressedNode_ = 0;
   int controlPoint_ = -1;  // the control point being dragged
   bool pressedWasSelected_ = false;

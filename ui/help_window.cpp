@@ -1,4 +1,4 @@
-// The shortcuts window: a Help window listing every keyboard shortcut.
+// The shortcuts window: a Help window listing every keyboard shortcut (and the final function's controls).
 #include <imgui.h>
 
 #include <algorithm>
@@ -52,6 +52,9 @@ void drawHelpWindow(ModellerState& state) {
       {"Middle-drag, Shift+right-drag", "Pan"},
       {"Wheel", "Zoom"},
       {"Drag a grid in the IFS view", "Move the function's placement"},
+      {"Click the violet lattice in the IFS view",
+       "Make the final function active: its grid, operations, selection and "
+       "node drags then work as for any function"},
       {"Drag in the preview", "Orbit the preview camera (same as the IFS user view)"},
       {"Drag the timeline", "Scrub through the animation; the preview follows (not an undo step)"},
       {"Click a diamond", "Set a key at the current time, or remove the key there; editing a keyed value keys it"},
@@ -81,6 +84,19 @@ void drawHelpWindow(ModellerState& state) {
       {"gridifs --size WxH", "Open at that size instead of the remembered one"},
       {"gridifs --ui-scale S", "Text and controls at scale S instead of the monitor's (HiDPI) scale"},
   };
+  static const Row finalFunction[] = {
+      {"Functions › Add final function",
+       "A lattice applied to every point before it is plotted, around the attractor; "
+       "undistorted it changes nothing (also in the Function menu)"},
+      {"The violet Final row",
+       "Edit it like a function: operations, selection, node drags, mute; weight and "
+       "transitions do not apply"},
+      {"Interpolation", "Trilinear cells, or a smooth Bézier free-form deformation (at most 8 nodes per axis)"},
+      {"Functions › Delete (final row active), Remove final function", "Remove it (Ctrl+Z brings it back)"},
+  };
+  ImGui::Spacing();
+  ImGui::TextDisabled("The final function");
+  table("final", finalFunction, sizeof finalFunction / sizeof finalFunction[0]);
   ImGui::Spacing();
   ImGui::TextDisabled("Window");
   table("window", window, sizeof window / sizeof window[0]);

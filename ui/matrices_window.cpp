@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <functional>
 
+#include "model/final_function.h"
 #include "model/free_form.h"
 #include "model/free_form_presets.h"
 #include "model/transition_matrix.h"
@@ -138,9 +139,9 @@ void drawPresets(ModellerState& state, EditQueue& edits) {
     const FreeFormPreset preset = presets[which];
     edits.commit(std::string("Preset: ") + labels[which], [preset, options](Project& p) {
       applyFreeFormPreset(p, preset, options);
-      p.final_function.reset();  // the preset's points sit where a lattice around X would not expect them
+      removeFinalFunction(p);  // the preset's points sit where a lattice around X would not expect them
     });
-    state.activeFunction = 0;
+    state.activeFunction = FunctionRef(0);
     state.activeOp = -1;
   }
   if (state.document.project().space && ImGui::Button("Back to a grid IFS")) {
@@ -150,7 +151,7 @@ void drawPresets(ModellerState& state, EditQueue& edits) {
       p.transitions.clear();
       p.functions = fresh.functions;
     });
-    state.activeFunction = 0;
+    state.activeFunction = FunctionRef(0);
     state.activeOp = -1;
   }
 }
@@ -179,7 +180,8 @@ void drawControlPoints(ModellerState& state, EditQueue& edits) {
 
 void drawFunctionMatrix(ModellerState& state, EditQueue& edits) {
   const Project& project = state.document.project();
-  const std::size_t fi = std::size_t(std::clamp(state.activeFunction, 0, int(project.functions.size()) - 1));
+  if (state.activeFunction.isFinal()) return;  // the final function is a lattice, never a matrix
+  const std::size_t fi = std::size_t(std::clamp(state.activeFunction.index(), 0, int(project.functions.size()) - 1));
   const Function& f = project.functions[fi];
   if (f.kind != FunctionKind::Matrix) return;
   const std::size_t m = f.matrix.size();

@@ -83,12 +83,20 @@ float drawMenuBar(AppCommands& app) {
     if (ImGui::MenuItem("Matrices...", "M", s.showMatrices)) s.showMatrices = !s.showMatrices;
     drawSymmetryMenu(s, app.edits);  // ui/symmetry_menu.cpp
     ImGui::Separator();
+    const bool haveFinal = d.project().final_function.has_value();
+    if (ImGui::MenuItem(haveFinal ? "Remove final function" : "Add final function")) {
+      if (haveFinal)
+        deleteFinalFunction(s, app.edits);
+      else
+        addFinalFunction(s, app.edits);
+    }
+    ImGui::Separator();
     const auto& functions = d.project().functions;
     for (int i = 0; i < int(functions.size()); ++i)
-      if (ImGui::MenuItem(functions[std::size_t(i)].name.c_str(), nullptr, i == s.activeFunction)) {
-        s.activeFunction = i;
-        s.activeOp = -1;
-      }
+      if (ImGui::MenuItem(functions[std::size_t(i)].name.c_str(), nullptr, s.activeFunction == FunctionRef(i)))
+        s.activate(FunctionRef(i));
+    if (haveFinal && ImGui::MenuItem("Final function", nullptr, s.activeFunction.isFinal()))
+      s.activate(FunctionRef::finalFunction());
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Operation")) {

@@ -156,8 +156,10 @@ void ModellerApp::drawIfsView(float fbScale) {
   if (ImGui::Combo("##ifsaxis", &current, names, 4)) ifsView_.setAxis(axes[current]);
   if (ImGui::IsItemHovered()) state_.contextHelp = "Which way the IFS view looks; the user view is the preview's camera";
   ImGui::SameLine();
-  ImGui::TextDisabled("%zu function%s in the common initial grid", state_.document.project().functions.size(),
-                      state_.document.project().functions.size() == 1 ? "" : "s");
+  const Project& project = state_.document.project();
+  ImGui::TextDisabled("%zu function%s in the common initial grid%s", project.functions.size(),
+                      project.functions.size() == 1 ? "" : "s",
+                      project.final_function ? "; the final lattice in violet" : "");
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   ifsView_.build(state_, edits_, {avail.x, avail.y}, fbScale);
   state_.probe.item("view.ifs");
@@ -301,7 +303,11 @@ void ModellerApp::writeProbe(double frameMs) {
   j["path"] = state_.document.path().string();
   j["undo"] = state_.document.undoLabel();
   j["functions"] = state_.document.project().functions.size();
-  j["active_function"] = state_.activeFunction;
+  if (state_.activeFunction.isFinal())
+    j["active_function"] = "final";
+  else
+    j["active_function"] = state_.activeFunction.index();
+  j["final_message"] = state_.finalFunctionMessage;
   j["active_op"] = state_.activeOp;
   j["ops"] = state_.function().ops.size();
   j["status"] = state_.statusText;

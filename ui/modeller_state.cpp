@@ -17,12 +17,23 @@ ModellerState::ModellerState() : document(defaultNewProject()) {
 }
 
 void ModellerState::clampIndices() {
-  const auto& functions = document.project().functions;
-  activeFunction = std::clamp(activeFunction, 0, int(functions.size()) - 1);
-  selections.resize(functions.size());
-  const int ops = int(functions[std::size_t(activeFunction)].ops.size());
+  const Project& project = document.project();
+  const int last = int(project.functions.size()) - 1;
+  if (activeFunction.isFinal() ? !project.final_function : activeFunction.index() > last) {
+    activeFunction = FunctionRef(last);
+    activeOp = -1;
+  }
+  if (!project.final_function) finalSelection.clear();
+  selections.resize(project.functions.size());
+  const int ops = int(function().ops.size());
   if (activeOp >= ops) activeOp = ops - 1;
   if (activeOp < -1) activeOp = -1;
+}
+
+void ModellerState::activate(FunctionRef function) {
+  if (!(function == activeFunction)) activeOp = -1;
+  activeFunction = function;
+  clampIndices();
 }
 
 const Operation* ModellerState::op() const {
@@ -33,7 +44,7 @@ const Operation* ModellerState::op() const {
 
 Selection& ModellerState::selection() {
   clampIndices();
-  return selections[std::size_t(activeFunction)];
+  return activeFunction.isFinal() ? finalSelection : selections[std::size_t(activeFunction.index())];
 }
 
 const std::vector<unsigned char>& ModellerState::selectionMask() {

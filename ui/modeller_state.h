@@ -8,9 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "render/chaos_renderer.h"
 #include "edit/document.h"
+#include "model/function_ref.h"
 #include "model/grid.h"
+#include "render/chaos_renderer.h"
 #include "ui/widgets.h"
 
 namespace gridifs::ui {
@@ -23,18 +24,24 @@ class ModellerState {
   ModellerState();
 
   Document document;
-  int activeFunction = 0;
+  /// The function every panel and grid view edits: one of the IFS's, or the final function.
+  FunctionRef activeFunction;
   int activeOp = -1;  // index in the active function's stack, -1 when none
   /// The artist's node selection for each function (empty: nothing selected).
   std::vector<Selection> selections;
+  Selection finalSelection;  // the same for the final function
   /// The center of transformation placed in a view (Alt+click), used by ops whose center is a point.
   Vec3 pointCenter{0.0};
   /// Which center new operations get.
   Center::Kind newOpCenter = Center::Kind::Grid;
 
-  /// Keeps the indices valid after any document change (undo can remove functions or ops).
+  /// Keeps the indices valid after any document change (undo can remove functions or ops, or
+  /// the final function: the last function is then active).
   void clampIndices();
-  const Function& function() const { return document.project().functions.at(std::size_t(activeFunction)); }
+  /// The active function (call clampIndices() first after a document change).
+  const Function& function() const { return activeFunction.in(document.project()); }
+  /// Makes `function` active, with no active op when it was not already.
+  void activate(FunctionRef function);
   const Operation* op() const;
   Selection& selection();
   /// Per-node membership of the current selection (all zero when nothing is selected).
@@ -52,6 +59,9 @@ class ModellerState {
   void error(const std::string& text);
   std::string statusText;
   bool statusIsError = false;
+  /// Why the Functions panel refused a change of the final function (a Bézier lattice with too
+  /// many nodes); shown there until the artist changes its resolution or interpolation.
+  std::string finalFunctionMessage;
   double statusTime = 0.0;
   /// Context help for the status line (Gröller & Wegenkittl 1994, §4.2), set each frame by the hovered widget or view.
   std::string contextHelp;
@@ -94,13 +104,14 @@ class ModellerState {
   /// An operation's expression fields keep what the artist typed, even when it does not
   /// parse yet (the op itself only ever holds valid expressions).
   struct {
-    int function = -1, op = -1;
+    FunctionRef function;
+    int op = -1;
     std::vector<std::string> text, base;
   } expressionEdit;
   /// Display cache of the active function's contractivity bound (Gröller & Wegenkittl 1994, §1.1).
   struct {
     std::uint64_t revision = 0;
-    int function = -1;
+    int function = -1;  // of the IFS (the final function is outside the loop: no bound)
     double bound = 0.0;
     bool valid = false;
   } contractivity;

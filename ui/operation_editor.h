@@ -15,7 +15,8 @@ namespace gridifs::ui {
 struct OpEditor {
   ModellerState& state;
   EditQueue& edits;
-  int function, index;
+  FunctionRef function;  // the edited function (the final one included)
+  int index;
   Operation op;  // the local copy widgets edit
 
   /// The gesture of the item just submitted: `changed` hands the local copy to the Document.

@@ -80,8 +80,7 @@ void drawParams(OpEditor& e, const OperationSpec& spec) {
       double values[4] = {0, 0, 0, 0};
       const int n = std::min(s.type == ParamType::Vector ? s.components : 1, 4);
       for (int c = 0; c < n; ++c) values[c] = s.number(e.op.params, c);
-      keyButton(e.state, e.edits, "functions[" + std::to_string(e.function) + "].ops[" + std::to_string(e.index) + "]." + s.key,
-                values, n);
+      keyButton(e.state, e.edits, e.function.path() + ".ops[" + std::to_string(e.index) + "]." + s.key, values, n);
     }
     const bool changed = scalarWidget(s, e.op.params);
     e.state.probe.item(id);
@@ -127,8 +126,9 @@ void centerAndSelection(OpEditor& e) {
                              e.op.selection.size() == 1 ? "" : "es");
     if (ImGui::Button("Use current selection")) {
       const Selection s = e.state.selection();
-      const int f = e.function, o = e.index;
-      e.edits.commit("Set operation selection", [f, o, s](Project& p) { p.functions[std::size_t(f)].ops[std::size_t(o)].selection = s; });
+      const FunctionRef f = e.function;
+      const int o = e.index;
+      e.edits.commit("Set operation selection", [f, o, s](Project& p) { f.in(p).ops[std::size_t(o)].selection = s; });
     }
     contextHelp(e.state, "Apply this operation to the nodes selected now (all nodes when nothing is selected)");
     ImGui::SameLine();

@@ -13,16 +13,17 @@
 namespace gridifs::ui {
 
 void OpEditor::item(const std::string& label, bool changed) {
-  const int f = function, o = index;
+  const FunctionRef f = function;
+  const int o = index;
   const Operation copy = op;
-  gestureItem(edits, label, changed,
-              [f, o, copy](Project& p) { p.functions[std::size_t(f)].ops[std::size_t(o)] = copy; });
+  gestureItem(edits, label, changed, [f, o, copy](Project& p) { f.in(p).ops[std::size_t(o)] = copy; });
 }
 
 void OpEditor::commit(const std::string& label) {
-  const int f = function, o = index;
+  const FunctionRef f = function;
+  const int o = index;
   const Operation copy = op;
-  edits.commit(label, [f, o, copy](Project& p) { p.functions[std::size_t(f)].ops[std::size_t(o)] = copy; });
+  edits.commit(label, [f, o, copy](Project& p) { f.in(p).ops[std::size_t(o)] = copy; });
 }
 
 namespace {
@@ -58,7 +59,7 @@ void drawExpressionParams(OpEditor& e, const OperationSpec& spec) {
   auto& buffer = e.state.expressionEdit;
   std::vector<std::string> current;
   for (const ParamSpec* s : expressions) current.push_back(s->value<std::string>(e.op.params));
-  if (buffer.function != e.function || buffer.op != e.index || buffer.base != current) {
+  if (!(buffer.function == e.function) || buffer.op != e.index || buffer.base != current) {
     buffer.function = e.function;
     buffer.op = e.index;
     buffer.text = buffer.base = current;

@@ -19,9 +19,9 @@ std::string summary(const Operation& op) {
 }
 
 /// The keyframe tracks follow the operations when the stack changes order.
-std::string opsPath(int function) { return "functions[" + std::to_string(function) + "].ops"; }
+std::string opsPath(FunctionRef function) { return function.path() + ".ops"; }
 
-void swapTracks(Project& p, int function, int a, int b) {
+void swapTracks(Project& p, FunctionRef function, int a, int b) {
   remapTrackIndices(p.tracks, opsPath(function), [a, b](int i) { return i == a ? b : i == b ? a : i; });
 }
 
@@ -55,10 +55,10 @@ void addOperation(ModellerState& state, EditQueue& edits, const OperationSpec& s
   }
   op.params = spec.defaults;
   if (spec.placeAt) spec.placeAt(op.params, anchor);
-  const int fi = state.activeFunction;
+  const FunctionRef fi = state.activeFunction;
   const int at = state.activeOp < 0 ? int(f.ops.size()) : state.activeOp + 1;
   edits.commit(std::string("Add ") + spec.title, [fi, at, op](Project& p) {
-    auto& ops = p.functions[std::size_t(fi)].ops;
+    auto& ops = fi.in(p).ops;
     ops.insert(ops.begin() + at, op);
     remapTrackIndices(p.tracks, opsPath(fi), [at](int i) { return i >= at ? i + 1 : i; });
   });
@@ -67,9 +67,10 @@ void addOperation(ModellerState& state, EditQueue& edits, const OperationSpec& s
 
 void deleteActiveOperation(ModellerState& state, EditQueue& edits) {
   if (!state.op()) return;
-  const int fi = state.activeFunction, oi = state.activeOp;
+  const FunctionRef fi = state.activeFunction;
+  const int oi = state.activeOp;
   edits.commit("Delete operation", [fi, oi](Project& p) {
-    auto& ops = p.functions[std::size_t(fi)].ops;
+    auto& ops = fi.in(p).ops;
     ops.erase(ops.begin() + oi);
     remapTrackIndices(p.tracks, opsPath(fi), [oi](int i) { return i == oi ? -1 : i > oi ? i - 1 : i; });
   });
@@ -118,7 +119,7 @@ float operationStackPanelMinHeight(float panelWidth) {
 void drawOperationStackPanel(ModellerState& state, EditQueue& edits) {
   state.clampIndices();
   const Function& f = state.function();
-  const int fi = state.activeFunction;
+  const FunctionRef fi = state.activeFunction;
   const int count = int(f.ops.size());
 
   // Toolbar: one button per op kind, wrapping to the panel width; where the panel is too short
@@ -166,9 +167,8 @@ void drawOperationStackPanel(ModellerState& state, EditQueue& edits) {
       ImGui::PushID(o);
       bool on = !op.muted;
       if (ImGui::Checkbox("##on", &on))
-        edits.commit(on ? "Unmute operation" : "Mute operation", [fi, o, on](Project& p) {
-          p.functions[std::size_t(fi)].ops[std::size_t(o)].muted = !on;
-        });
+        edits.commit(on ? "Unmute operation" : "Mute operation",
+                     [fi, o, on](Project& p) { fi.in(p).ops[std::size_t(o)].muted = !on; });
       contextHelp(state, "Mute: skip this operation when evaluating the stack");
       ImGui::SameLine();
       char label[64];
@@ -190,7 +190,7 @@ void drawOperationStackPanel(ModellerState& state, EditQueue& edits) {
   ImGui::BeginDisabled(active <= 0);
   if (ImGui::ArrowButton("##up", ImGuiDir_Up)) {
     edits.commit("Move operation up", [fi, active](Project& p) {
-      auto& ops = p.functions[std::size_t(fi)].ops;
+      auto& ops = fi.in(p).ops;
       std::swap(ops[std::size_t(active)], ops[std::size_t(active - 1)]);
       swapTracks(p, fi, active, active - 1);
     });
@@ -201,7 +201,7 @@ void drawOperationStackPanel(ModellerState& state, EditQueue& edits) {
   ImGui::BeginDisabled(active < 0 || active + 1 >= count);
   if (ImGui::ArrowButton("##down", ImGuiDir_Down)) {
     edits.commit("Move operation down", [fi, active](Project& p) {
-      auto& ops = p.functions[std::size_t(fi)].ops;
+      auto& ops = fi.in(p).ops;
       std::swap(ops[std::size_t(active)], ops[std::size_t(active + 1)]);
       swapTracks(p, fi, active, active + 1);
     });
@@ -213,7 +213,7 @@ void drawOperationStackPanel(ModellerState& state, EditQueue& edits) {
   if (ImGui::Button("Duplicate") && count < limits::kMaxOpsPerFunction) {
     const Operation copy = f.ops[std::size_t(active)];
     edits.commit("Duplicate operation", [fi, active, copy](Project& p) {
-      auto& ops = p.functions[std::size_t(fi)].ops;
+      auto& ops = fi.in(p).ops;
       ops.insert(ops.begin() + active + 1, copy);
       remapTrackIndices(p.tracks, opsPath(fi), [active](int i) { return i > active ? i + 1 : i; });
     });

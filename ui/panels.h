@@ -8,7 +8,8 @@
 namespace gridifs::ui {
 
 /// functions_panel.cpp: the IFS's functions — add, duplicate, delete, reorder, mute, rename,
-/// weight, color, palette index, resolution, placement (Gröller & Wegenkittl 1994, §4.5).
+/// weight, color, palette index, resolution, placement (Gröller & Wegenkittl 1994, §4.5) — and
+/// the final function below them: add, remove, mute, interpolation, resolution, placement.
 void drawFunctionsPanel(ModellerState& state, EditQueue& edits);
 /// operation_stack_panel.cpp: add operations (with the current selection) and reorder, mute,
 /// delete and pick them in the active function's stack.
@@ -37,5 +38,8 @@ void addOperation(ModellerState& state, EditQueue& edits, const OperationSpec& s
 void deleteActiveOperation(ModellerState& state, EditQueue& edits);
 /// Adds a new 6×6×6 function (functions_panel.cpp).
 void addFunction(ModellerState& state, EditQueue& edits);
+/// Adds an undistorted final function and makes it active; removes it (functions_panel.cpp).
+void addFinalFunction(ModellerState& state, EditQueue& edits);
+void deleteFinalFunction(ModellerState& state, EditQueue& edits);
 
 }  // namespace gridifs::ui

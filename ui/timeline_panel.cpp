@@ -8,6 +8,7 @@
 #include <set>
 
 #include "base/errors.h"
+#include "model/settings_tables.h"
 #include "ui/key_button.h"
 #include "ui/widgets.h"
 
@@ -195,27 +196,29 @@ void drawTimelinePanel(ModellerState& state, EditQueue& edits) {
     if (edited.end < edited.start) edited.end = edited.start;
     gestureItem(edits, label, changed, [edited](Project& p) { p.animation = edited; });
   };
-  ImGui::SetNextItemWidth(em * 3.6f);
-  commit("Timeline start", dragDouble("##start", edited.start, 0.05, -1e6, 1e6, "from %.2f"));
-  state.probe.item("timeline.start");
-  contextHelp(state, "First moment of the animation, in seconds");
+  // Ranges, formats, undo names and help come from the animation's settings table.
+  const SettingTableOf<AnimationSettings>& timeline = animationSettingsTable();
+  auto drag = [&](const char* key, double& value, double speed, float width) {
+    const SettingSpec& spec = timeline.field(key);
+    ImGui::SetNextItemWidth(em * width);
+    commit(spec.label,
+           dragDouble((std::string("##") + key).c_str(), value, speed, spec.sliderMin, spec.sliderMax, spec.format));
+    state.probe.item(std::string("timeline.") + key);
+    contextHelp(state, spec.tooltip);
+  };
+  drag("start", edited.start, 0.05, 3.6f);
   ImGui::SameLine(0, 2);
-  ImGui::SetNextItemWidth(em * 3.6f);
-  commit("Timeline end", dragDouble("##end", edited.end, 0.05, -1e6, 1e6, "to %.2f"));
-  state.probe.item("timeline.end");
-  contextHelp(state, "Last moment of the animation, in seconds");
+  drag("end", edited.end, 0.05, 3.6f);
   ImGui::SameLine(0, 2);
-  ImGui::SetNextItemWidth(em * 3.4f);
-  commit("Frame rate", dragDouble("##fps", edited.fps, 0.1, 1.0, 240.0, "%.3g fps"));
-  state.probe.item("timeline.fps");
-  contextHelp(state, "Frames per second: frame f is at time f / fps");
+  drag("fps", edited.fps, 0.1, 3.4f);
+  const SettingSpec& loopSpec = timeline.field("loop");
   bool loop = edited.loop;
-  sameLineIfRoom(ImGui::GetFrameHeight() + ImGui::CalcTextSize("Loop").x + em);
-  if (ImGui::Checkbox("Loop", &loop)) {
+  sameLineIfRoom(ImGui::GetFrameHeight() + ImGui::CalcTextSize(loopSpec.label).x + em);
+  if (ImGui::Checkbox(loopSpec.label, &loop)) {
     edited.loop = loop;
     edits.commit(loop ? "Loop playback" : "Play once", [edited](Project& p) { p.animation = edited; });
   }
-  contextHelp(state, "Play the range over and over");
+  contextHelp(state, loopSpec.tooltip);
   sameLineIfRoom(ImGui::GetFrameHeight() + ImGui::CalcTextSize("Camera").x + em);
   const Camera& cam = project.camera;
   keyButton(state, edits, "camera",

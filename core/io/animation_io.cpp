@@ -6,6 +6,8 @@
 #include "base/errors.h"
 #include "io/animation_json.h"
 #include "io/project_io.h"
+#include "io/settings_json.h"
+#include "model/settings_tables.h"
 
 namespace gridifs {
 namespace {
@@ -69,21 +71,7 @@ void readAnimation(const json& root, Project& project) {
   }
   if (auto it = root.find("animation"); it != root.end() && !it->is_null()) {
     if (!it->is_object()) throw ModelError("animation", "expected an object with fps, start, end and loop");
-    AnimationSettings a;
-    if (auto f = it->find("fps"); f != it->end()) a.fps = finiteNumber(*f, "animation.fps");
-    if (auto f = it->find("start"); f != it->end()) a.start = finiteNumber(*f, "animation.start");
-    if (auto f = it->find("end"); f != it->end()) a.end = finiteNumber(*f, "animation.end");
-    if (auto f = it->find("shutter"); f != it->end()) a.shutter = finiteNumber(*f, "animation.shutter");
-    if (auto f = it->find("loop"); f != it->end()) {
-      if (!f->is_boolean()) throw ModelError("animation.loop", "expected true or false");
-      a.loop = f->get<bool>();
-    }
-    try {
-      a.validate();
-    } catch (const ModelError& e) {
-      throw e.under("animation");
-    }
-    project.animation = a;
+    project.animation = readSettings(animationSettingsTable(), *it, "animation");
   }
   if (auto it = root.find("tracks"); it != root.end() && !it->is_null()) {
     if (!it->is_object()) throw ModelError("tracks", "expected an object from parameter paths to lists of keys");
@@ -123,12 +111,7 @@ void readAnimation(const json& root, Project& project) {
 
 void writeAnimation(const Project& project, nlohmann::ordered_json& root) {
   if (project.time != 0.0) root["time"] = project.time;
-  if (project.animation) {
-    const AnimationSettings& a = *project.animation;
-    root["animation"] = {{"fps", a.fps}, {"start", a.start}, {"end", a.end}, {"loop", a.loop}};
-    // Written only when changed, so files saved before the shutter existed save unchanged.
-    if (a.shutter != AnimationSettings{}.shutter) root["animation"]["shutter"] = a.shutter;
-  }
+  if (project.animation) root["animation"] = writeSettings(animationSettingsTable(), *project.animation);
   if (!project.tracks.empty()) {
     nlohmann::ordered_json tracks = nlohmann::ordered_json::object();
     for (const auto& [path, track] : project.tracks) {

@@ -2,6 +2,9 @@
 
 #include <cmath>
 
+#include "io/settings_json.h"
+#include "model/settings_tables.h"
+
 namespace gridifs::volume_io {
 namespace {
 
@@ -39,18 +42,6 @@ Vec3 readVec3(const json& obj, const char* key, const std::string& path, Vec3 fa
 std::string readText(const json& j, const std::string& path) {
   if (!j.is_string() || j.get_ref<const std::string&>().size() > 4096) fail(path, "expected a string");
   return j.get<std::string>();
-}
-
-std::int64_t readInteger(const json& obj, const char* key, const std::string& path, std::int64_t fallback,
-                         std::int64_t lo, std::int64_t hi) {
-  auto it = obj.find(key);
-  if (it == obj.end()) return fallback;
-  const std::string p = path + "." + key;
-  const std::string range = "expected an integer between " + std::to_string(lo) + " and " + std::to_string(hi);
-  if (!it->is_number()) fail(p, range);
-  const double v = it->get<double>();
-  if (!std::isfinite(v) || v != std::floor(v) || v < double(lo) || v > double(hi)) fail(p, range);
-  return it->is_number_float() ? std::int64_t(v) : it->get<std::int64_t>();
 }
 
 ordered_json vec(const Vec3& v) { return ordered_json::array({v.x, v.y, v.z}); }
@@ -195,24 +186,14 @@ std::optional<VolumeSettings> readVolume(const json& root) {
   auto it = root.find("volume");
   if (it == root.end() || it->is_null()) return std::nullopt;
   if (!it->is_object()) fail("volume", "expected an object");
+  // Validated with the rest of the project (validateProject), after the functions.
   VolumeSettings v;
-  v.resolution =
-      int(readInteger(*it, "resolution", "volume", v.resolution, kMinVolumeResolution, kMaxVolumeResolution));
-  v.iterations = int(readInteger(*it, "iterations", "volume", v.iterations, 1, 1'000'000));
-  v.skip = int(readInteger(*it, "skip", "volume", v.skip, 0, 1'000'000));
-  v.seed = std::uint64_t(readInteger(*it, "seed", "volume", std::int64_t(v.seed), 0, INT64_MAX));
-  v.samples = readInteger(*it, "samples", "volume", v.samples, 1, 100'000'000'000LL);
+  readSettingFields(volumeSettingsTable(), *it, "volume", &v);
   return v;
 }
 
 void writeVolume(const Project& project, ordered_json& root) {
-  if (!project.volume) return;
-  const VolumeSettings& v = *project.volume;
-  root["volume"] = {{"resolution", v.resolution},
-                    {"iterations", v.iterations},
-                    {"skip", v.skip},
-                    {"seed", v.seed},
-                    {"samples", v.samples}};
+  if (project.volume) root["volume"] = writeSettings(volumeSettingsTable(), *project.volume);
 }
 
 }  // namespace gridifs::volume_io

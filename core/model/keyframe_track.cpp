@@ -103,16 +103,6 @@ bool KeyframeTrack::removeKey(double t, double tolerance) {
   return true;
 }
 
-void AnimationSettings::validate() const {
-  if (!std::isfinite(fps) || fps <= 0.0 || fps > 1000.0)
-    throw ModelError("fps", "frames per second must be in (0, 1000]");
-  if (!std::isfinite(start)) throw ModelError("start", "the start time must be a finite number");
-  if (!std::isfinite(end)) throw ModelError("end", "the end time must be a finite number");
-  if (end < start) throw ModelError("end", "the animation must not end before it starts");
-  if (!std::isfinite(shutter) || shutter < 0.0 || shutter > 1.0)
-    throw ModelError("shutter", "the shutter must be a fraction of the frame interval between 0 and 1");
-}
-
 void remapTrackIndices(KeyframeTracks& tracks, const std::string& listPath, const std::function<int(int)>& newIndex) {
   const std::string prefix = listPath + "[";
   KeyframeTracks remapped;

@@ -50,21 +50,18 @@ using KeyframeTracks = std::map<std::string, KeyframeTrack>;
 /// move to `newIndex(i)`, or are dropped with it when that is negative.
 void remapTrackIndices(KeyframeTracks& tracks, const std::string& listPath, const std::function<int(int)>& newIndex);
 
-/// The project's timeline: "animation": {"fps", "start", "end", "loop"} (seconds).
+/// The project's timeline: "animation": {"fps", "start", "end", "loop"} (seconds). Its ranges,
+/// file reading and validation are the table model/settings_tables.h animationSettingsTable().
 struct AnimationSettings {
-  double fps = 24.0;
+  double fps = 24.0;  // in (0, 1000]
   double start = 0.0;
-  double end = 4.0;
+  double end = 4.0;  // not before start
   bool loop = true;
   /// Motion blur (Draves & Reckase, "The fractal flame algorithm", §motion blur): the fraction of
   /// the frame interval the time samples of one frame spread over, centred on the frame's time.
   /// 0.5 is film's 180° shutter.
   double shutter = 0.5;
   bool operator==(const AnimationSettings&) const = default;
-
-  /// Throws ModelError for fps ≤ 0 or > 1000, non-finite values, end before start, or a
-  /// shutter outside [0, 1].
-  void validate() const;
 };
 
 }  // namespace gridifs

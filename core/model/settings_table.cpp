@@ -19,9 +19,18 @@ std::string integerRange(const SettingSpec& s) {
   return std::to_string(std::int64_t(s.min)) + " and " + std::to_string(std::int64_t(s.max));
 }
 
-/// A number against its range: "expected a number between 0 and 1, found 2", or with a noun
-/// "the fog density must not be negative, found -1".
+/// Whether `v` is finite and in the field's range (above `min` when the range is open there).
+bool inRange(const SettingSpec& s, double v) {
+  return std::isfinite(v) && (s.openMin ? v > s.min : v >= s.min) && v <= s.max;
+}
+
+/// A number against its range: the field's own message, "expected a number between 0 and 1,
+/// found 2", or with a noun "the fog density must not be negative, found -1".
 void checkNumber(const SettingSpec& s, double v, const std::string& path) {
+  if (s.invalid) {
+    if (!inRange(s, v)) fail(path, s.invalid);
+    return;
+  }
   if (!s.noun) {
     if (!(v >= s.min && v <= s.max))
       fail(path, "expected a number between " + show(s.min) + " and " + show(s.max) + ", found " + show(v));
@@ -38,6 +47,10 @@ void checkNumber(const SettingSpec& s, double v, const std::string& path) {
 }
 
 void checkInteger(const SettingSpec& s, double v, const std::string& path) {
+  if (s.invalid) {
+    if (!inRange(s, v)) fail(path, s.invalid);
+    return;
+  }
   if (v >= s.min && v <= s.max) return;
   if (s.noun) fail(path, "expected between " + integerRange(s) + " " + s.noun + ", found " + show(v));
   fail(path, "expected an integer between " + integerRange(s));
@@ -128,6 +141,7 @@ void validateSettingFields(const SettingTable& table, const void* group, const s
       case SettingType::Boolean:
         break;
     }
+    if (s.rule) s.rule(group, p);
   }
   if (table.rules) table.rules(group, path);
 }

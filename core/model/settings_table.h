@@ -26,7 +26,7 @@ enum class SettingType {
   Number,          // double
   Integer,         // int
   Count,           // std::int64_t (sample counts)
-  Seed,            // std::uint64_t: any non-negative JSON integer, no range
+  Seed,            // std::uint64_t: any non-negative JSON integer (in [min, max] with SettingWords::IntegerRange)
   Vector,          // Vec3: an array of 3 numbers, each in [min, max] (a colour: [0, 1])
   Boolean,         // bool
   Text,            // std::string, checked by `accepts`
@@ -46,12 +46,19 @@ struct SettingInfo {
   /// numbers and validation names the meaning ("the ambient term must not be negative, found -1");
   /// without one, reading checks the range ("expected a number between 0 and 1, found 2").
   const char* noun = nullptr;
-  /// Written only when it differs from the group's default, so files that never used it save as
-  /// they always have.
+  /// Written only when it differs from the group's default, after the fields that are always
+  /// written, so files that never used it save as they always have.
   bool omitDefault = false;
   std::size_t maxLength = limits::kMaxNameLength;  // Text only
   bool (*accepts)(const std::string&) = nullptr;   // Text only: the syntax check
   const char* expected = "";                       // Text only: the message when `accepts` refuses
+  /// The whole message when validation finds the value out of range or not finite, for groups
+  /// whose messages were written before the tables ("frames per second must be in (0, 1000]").
+  const char* invalid = nullptr;
+  bool openMin = false;  // the range excludes `min` (a frame rate above 0)
+  /// A rule of this field beyond its range (an end not before the start), checked right after the
+  /// range; throws ModelError at `path`, the field's path.
+  void (*rule)(const void* group, const std::string& path) = nullptr;
 };
 
 /// One setting: the author's SettingInfo plus its type and accessors, deduced from the struct
@@ -79,12 +86,24 @@ struct SettingSpec : SettingInfo {
 template <auto Member>
 SettingSpec setting(SettingInfo info);
 
-/// The fields of one settings group, in the order they are written, plus its rules across fields.
+/// How reading words a value of the wrong type or out of range. Groups that had readers of their
+/// own before the tables keep those readers' words, so what a bad file is told stays the same.
+enum class SettingWords {
+  Standard,      // io/json_read: "expected a number, found a string"; ranges checked while reading
+  FiniteOnly,    // numbers: "expected a number", "expected a finite number", any finite magnitude,
+                 // ranges left to validation; booleans: "expected true or false"
+  IntegerRange,  // integers, counts and seeds: any bad value (wrong type, fraction, out of range)
+                 // is "expected an integer between MIN and MAX"
+};
+
+/// The fields of one settings group, in the order they are read, validated and written (fields
+/// with omitDefault last), plus its rules across fields.
 struct SettingTable {
   std::vector<SettingSpec> fields;
   /// Rules across fields or beyond ranges (an aperture needs a focus distance). Throws ModelError
   /// with a path under `path`.
   void (*rules)(const void* group, const std::string& path) = nullptr;
+  SettingWords words = SettingWords::Standard;
   /// The field whose key is `key`; throws std::logic_error when there is none (a programming error).
   const SettingSpec& field(std::string_view key) const;
 };

@@ -1,6 +1,8 @@
 #include "model/settings_tables.h"
 
 #include <cmath>
+#include <cstdint>
+#include <limits>
 
 #include "model/palette_reference.h"
 
@@ -33,6 +35,20 @@ void depthOfFieldRules(const void* group, const std::string& path) {
   if (dof.aperture > 0.0 && !dof.focus)
     fail(settingPath(path, "focus"), "an aperture above 0 needs a focus distance (the view depth that stays sharp)");
 }
+
+void animationEndRule(const void* group, const std::string& path) {
+  const AnimationSettings& a = *static_cast<const AnimationSettings*>(group);
+  if (a.end < a.start) fail(path, "the animation must not end before it starts");
+}
+
+constexpr const char* kFewerSkipped = "expected fewer skipped iterations than iterations";
+
+void volumeSkipRule(const void* group, const std::string& path) {
+  const VolumeSettings& v = *static_cast<const VolumeSettings*>(group);
+  if (v.skip >= v.iterations) fail(path, kFewerSkipped);
+}
+
+constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 
 }  // namespace
 
@@ -295,6 +311,77 @@ const SettingTableOf<DepthOfFieldSettings>& depthOfFieldTable() {
                 .noun = "focus distance"}),
        },
        depthOfFieldRules}};
+  return table;
+}
+
+const SettingTableOf<AnimationSettings>& animationSettingsTable() {
+  static const SettingTableOf<AnimationSettings> table{
+      {{
+           setting<&AnimationSettings::fps>({.key = "fps",
+                                             .label = "Frame rate",
+                                             .tooltip = "Frames per second: frame f is at time f / fps",
+                                             .min = 0.0,
+                                             .max = 1000.0,
+                                             .sliderMin = 1.0,
+                                             .sliderMax = 240.0,
+                                             .format = "%.3g fps",
+                                             .invalid = "frames per second must be in (0, 1000]",
+                                             .openMin = true}),
+           setting<&AnimationSettings::start>({.key = "start",
+                                               .label = "Timeline start",
+                                               .tooltip = "First moment of the animation, in seconds",
+                                               .min = -kUnbounded,
+                                               .max = kUnbounded,
+                                               .sliderMin = -limits::kMaxCoordinate,
+                                               .sliderMax = limits::kMaxCoordinate,
+                                               .format = "from %.2f",
+                                               .invalid = "the start time must be a finite number"}),
+           setting<&AnimationSettings::end>({.key = "end",
+                                             .label = "Timeline end",
+                                             .tooltip = "Last moment of the animation, in seconds",
+                                             .min = -kUnbounded,
+                                             .max = kUnbounded,
+                                             .sliderMin = -limits::kMaxCoordinate,
+                                             .sliderMax = limits::kMaxCoordinate,
+                                             .format = "to %.2f",
+                                             .invalid = "the end time must be a finite number",
+                                             .rule = animationEndRule}),
+           // Draves & Reckase, motion blur: the time samples of a frame spread over this fraction
+           // of the frame interval. Written only when changed (after loop), so files saved before
+           // it existed save unchanged.
+           setting<&AnimationSettings::shutter>(
+               {.key = "shutter",
+                .label = "Shutter",
+                .tooltip = "Motion blur: the fraction of the frame interval a frame's time samples spread over",
+                .min = 0.0,
+                .max = 1.0,
+                .sliderMin = 0.0,
+                .sliderMax = 1.0,
+                .format = "shutter %.2f",
+                .omitDefault = true,
+                .invalid = "the shutter must be a fraction of the frame interval between 0 and 1"}),
+           setting<&AnimationSettings::loop>(
+               {.key = "loop", .label = "Loop", .tooltip = "Play the range over and over"}),
+       },
+       nullptr,
+       SettingWords::FiniteOnly}};
+  return table;
+}
+
+const SettingTableOf<VolumeSettings>& volumeSettingsTable() {
+  static const SettingTableOf<VolumeSettings> table{
+      {{
+           setting<&VolumeSettings::resolution>(
+               {.key = "resolution", .min = kMinVolumeResolution, .max = kMaxVolumeResolution}),
+           setting<&VolumeSettings::iterations>({.key = "iterations", .min = 1, .max = 1'000'000}),
+           setting<&VolumeSettings::skip>(
+               {.key = "skip", .min = 0, .max = 1'000'000, .invalid = kFewerSkipped, .rule = volumeSkipRule}),
+           setting<&VolumeSettings::seed>({.key = "seed", .min = 0, .max = double(INT64_MAX)}),
+           setting<&VolumeSettings::samples>(
+               {.key = "samples", .min = 1, .max = 1e11, .invalid = "expected between 1 and 1e11 samples"}),
+       },
+       nullptr,
+       SettingWords::IntegerRange}};
   return table;
 }
 

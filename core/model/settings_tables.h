@@ -1,6 +1,6 @@
 #pragma once
 // The settings groups of a project, one table each (model/settings_table.h): the camera, "render",
-// "render.flame" and the parts of "render.shading". Reading, writing, validation and the panels'
+// "render.flame", the parts of "render.shading", "animation" and "volume". Reading, writing, validation and the panels'
 // sliders all take their keys, ranges, labels and tooltips from here.
 //
 // Thread-safety: each table is built once (thread-safe static) and never changes.
@@ -27,5 +27,10 @@ const SettingTableOf<AmbientOcclusionSettings>& ambientOcclusionTable();
 const SettingTableOf<FogSettings>& fogTable();
 /// "render.shading.dof".
 const SettingTableOf<DepthOfFieldSettings>& depthOfFieldTable();
+
+/// "animation": the timeline (fps, start, end, loop) and the motion-blur shutter.
+const SettingTableOf<AnimationSettings>& animationSettingsTable();
+/// "volume": how the measure attractor becomes a density volume (Sokolov & Gentil, §3.4).
+const SettingTableOf<VolumeSettings>& volumeSettingsTable();
 
 }  // namespace gridifs

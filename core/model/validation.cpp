@@ -45,15 +45,7 @@ void checkCondensationFunctions(const Project& project) {
   }
   if (project.final_function && isSetKind(project.final_function->kind))
     fail("final.kind", "the final function must be a grid (a lattice)");
-  if (project.volume) {
-    const VolumeSettings& v = *project.volume;
-    if (v.resolution < kMinVolumeResolution || v.resolution > kMaxVolumeResolution)
-      fail("volume.resolution", "expected an integer between " + std::to_string(kMinVolumeResolution) + " and " +
-                                    std::to_string(kMaxVolumeResolution));
-    if (v.iterations < 1 || v.iterations > 1'000'000) fail("volume.iterations", "expected an integer between 1 and 1000000");
-    if (v.skip < 0 || v.skip >= v.iterations) fail("volume.skip", "expected fewer skipped iterations than iterations");
-    if (v.samples < 1 || v.samples > 100'000'000'000LL) fail("volume.samples", "expected between 1 and 1e11 samples");
-  }
+  if (project.volume) validateSettings(volumeSettingsTable(), *project.volume, "volume");
 }
 
 // Checks `project`; a function equal to the one at the same place of `trusted` (a project that

@@ -11,6 +11,20 @@ namespace gridifs::kernel {
 
 inline constexpr int kMaxBarycentricPad = 64;
 
+/// Copies a free-form IFS's space into `hot` (nothing for a grid IFS). Throws ModelError when the
+/// compiled space does not fit this kernel.
+inline void attachBarycentric(HotIfs& hot, const CompiledIfs& compiled) {
+  if (compiled.barycentricSize == 0) return;
+  if (compiled.barycentricPad % 8 != 0 || compiled.barycentricPad > std::uint32_t(kMaxBarycentricPad) ||
+      compiled.barycentricSize > compiled.barycentricPad)
+    throw ModelError("space", "the compiled free-form space does not fit the renderer");
+  for (const CompiledFunction& f : compiled.functions)
+    if (f.matrix.size() != std::size_t(compiled.barycentricSize) * compiled.barycentricStride())
+      throw ModelError("functions", "a compiled matrix does not match the control points");
+  hot.barycentricSize = compiled.barycentricSize;
+  hot.barycentricBlocks = compiled.barycentricPad / 8;
+}
+
 /// The barycentric coordinates of one worker's kLanes chains (padded entries stay 0).
 struct BarycentricState {
   alignas(32) float lambda[kLanes][kMaxBarycentricPad] = {};

@@ -74,16 +74,7 @@ struct PreparedJob {
     hotIfs.escapeBound = limits::kEscapeBound;
     hotIfs.restartInterval = ifs->restartInterval;
     for (const CompiledFunction& f : ifs->functions) hotIfs.condensation |= !f.points.empty();
-    if (ifs->barycentricSize > 0) {
-      if (ifs->barycentricPad % 8 != 0 || ifs->barycentricPad > std::uint32_t(kernel::kMaxBarycentricPad) ||
-          ifs->barycentricSize > ifs->barycentricPad)
-        throw ModelError("space", "the compiled free-form space does not fit the renderer");
-      for (const CompiledFunction& f : ifs->functions)
-        if (f.matrix.size() != std::size_t(ifs->barycentricSize) * ifs->barycentricStride())
-          throw ModelError("functions", "a compiled matrix does not match the control points");
-      hotIfs.barycentricSize = ifs->barycentricSize;
-      hotIfs.barycentricBlocks = ifs->barycentricPad / 8;
-    }
+    kernel::attachBarycentric(hotIfs, *ifs);
     camera = kernel::makeHotCamera(OrbitCamera(job.camera, job.width, job.height));
     if (job.dofAperture > 0.0) {
       const OrbitCamera orbit(job.camera, job.width, job.height);

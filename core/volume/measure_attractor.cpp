@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <chrono>
+#include <memory>
 #include <thread>
 
 #include "base/hash.h"
 #include "base/parallel.h"
 #include "model/stack_evaluator.h"
+#include "render/barycentric_kernel.h"
 #include "render/chaos_kernel.h"
 #include "render/chaos_renderer.h"
 #include "volume/condensation_sampler.h"
@@ -162,12 +164,17 @@ GRIDIFS_KERNEL_CLONES void runBins(kernel::ChainState& chain, const kernel::HotI
   kernel::runChain(chain, ifs, count, bins, counters);
 }
 
+/// The same for a free-form IFS: Thollot et al. 1997, §3.1, λ ← λ·T, binned at P·λ.
+GRIDIFS_KERNEL_CLONES void runBarycentricBins(kernel::ChainState& chain, kernel::BarycentricState& bary,
+                                              const kernel::HotIfs& ifs, std::int64_t count, VoxelBins& bins,
+                                              kernel::ChainCounters& counters) {
+  kernel::runBarycentricChain(chain, bary, ifs, count, bins, counters);
+}
+
 DensityVolume binPoints(const Project& project, const VolumeJob& job) {
   const VolumeSettings& settings = job.settings;
   const VoxelLattice lattice{settings.resolution};
   const auto compiled = compileIfs(project, makeCondensationSampler(project, job.projectFolder));
-  if (compiled->barycentricSize > 0)
-    throw ModelError("space", "density volumes of free-form (control point) IFSs are not supported yet");
   std::vector<kernel::HotFunction> hot;
   for (const CompiledFunction& f : compiled->functions) hot.push_back(kernel::makeHot(f));
   if (compiled->finalFunction) hot.push_back(kernel::makeHot(*compiled->finalFunction));
@@ -181,6 +188,7 @@ DensityVolume binPoints(const Project& project, const VolumeJob& job) {
   ifs.escapeBound = limits::kEscapeBound;
   ifs.restartInterval = compiled->restartInterval;
   for (const CompiledFunction& f : compiled->functions) ifs.condensation |= !f.points.empty();
+  kernel::attachBarycentric(ifs, *compiled);
 
   std::vector<std::uint32_t> counts(lattice.voxelCount(), 0);
   std::vector<float> colors;
@@ -194,12 +202,20 @@ DensityVolume binPoints(const Project& project, const VolumeJob& job) {
       kernel::DenormalsAreZero daz;
       kernel::ChainState chain = kernel::ChainState::start(settings.seed, std::uint64_t(w), ifs.skip);
       kernel::ChainCounters counters;
+      std::unique_ptr<kernel::BarycentricState> bary;  // free-form IFSs only
+      if (ifs.barycentricBlocks) {
+        bary = std::make_unique<kernel::BarycentricState>();
+        bary->start(chain, ifs);
+      }
       VoxelBins bins{counts.data(), colors.empty() ? nullptr : colors.data(), 0.5f * float(lattice.n), float(lattice.n),
                      std::size_t(lattice.n)};
       std::int64_t left = settings.samples / threads + (w < settings.samples % threads ? 1 : 0);
       while (left > 0 && !cancelled(job)) {
         const std::int64_t batch = std::min(left, kBatch);
-        runBins(chain, ifs, batch, bins, counters);
+        if (bary)
+          runBarycentricBins(chain, *bary, ifs, batch, bins, counters);
+        else
+          runBins(chain, ifs, batch, bins, counters);
         left -= batch;
         done.fetch_add(batch, std::memory_order_relaxed);
       }

@@ -11,6 +11,7 @@
 #include "model/free_form_presets.h"
 #include "render/chaos_renderer.h"
 #include "render/compiled_ifs.h"
+#include "volume/measure_attractor.h"
 
 using namespace gridifs;
 
@@ -105,6 +106,42 @@ TEST(FreeForm, BezierPresetAttractorLiesOnTheCurveAndCoversIt) {
   }
   EXPECT_LT(worst, 2e-5);        // float arithmetic in the kernel
   EXPECT_EQ(bins.size(), 100u);  // every 1% of the parameter range is reached
+}
+
+TEST(FreeForm, BezierPresetDensityVolumeLiesOnTheCurveAndCoversIt) {
+  const Project p = preset(FreeFormPreset::BezierCurve);
+  const auto& cp = p.space->control_points;
+  VolumeJob job;
+  job.settings.resolution = 48;
+  job.settings.samples = 400000;
+  job.threads = 2;
+  const DensityVolume v = computeDensityVolume(p, job);
+  ASSERT_EQ(v.density.size(), 48u * 48u * 48u);
+  // Every visited voxel holds a point of the curve (its centre is within half a diagonal).
+  const double halfDiagonal = 0.5 * std::sqrt(3.0) * v.lattice.voxelSize();
+  std::size_t visited = 0;
+  for (std::uint32_t i = 0; i < v.density.size(); ++i) {
+    if (v.density[i] <= 0.0f) continue;
+    ++visited;
+    EXPECT_LT(nearestOnCurve(cp, v.lattice.centre(i)).first, halfDiagonal + 1e-6) << "voxel " << i;
+  }
+  // And the voxels the curve passes through are visited (points near a voxel's faces are left
+  // out: the curve may only graze that voxel, which few of the samples then reach).
+  std::size_t missed = 0, onCurve = 0;
+  for (int i = 0; i <= 400; ++i) {
+    const Vec3 q = (bezier(cp, i / 400.0) + 1.0) * (0.5 * 48.0);
+    const int x = int(q.x), y = int(q.y), z = int(q.z);
+    if (x < 0 || y < 0 || z < 0 || x >= 48 || y >= 48 || z >= 48) continue;
+    const Vec3 inside = q - glm::floor(q);
+    if (glm::any(glm::lessThan(inside, Vec3(0.15))) || glm::any(glm::greaterThan(inside, Vec3(0.85)))) continue;
+    ++onCurve;
+    if (v.at(x, y, z) <= 0.0f) ++missed;
+  }
+  EXPECT_GT(onCurve, 50u);
+  EXPECT_EQ(missed, 0u);
+  EXPECT_GT(visited, 48u);
+  // The same seed gives the same volume.
+  EXPECT_EQ(computeDensityVolume(p, job).density, v.density);
 }
 
 TEST(FreeForm, BicubicPatchPresetLiesOnThePatch) {

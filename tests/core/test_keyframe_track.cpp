@@ -6,6 +6,7 @@
 
 #include "base/errors.h"
 #include "model/keyframe_track.h"
+#include "model/settings_tables.h"
 
 using namespace gridifs;
 
@@ -92,13 +93,14 @@ TEST(KeyframeTrack, RejectsKeysOutOfOrderDuplicatedOrNotFinite) {
 }
 
 TEST(AnimationSettings, Validates) {
+  auto validate = [](const AnimationSettings& a) { validateSettings(animationSettingsTable(), a, "animation"); };
   AnimationSettings a;
-  EXPECT_NO_THROW(a.validate());
+  EXPECT_NO_THROW(validate(a));
   a.fps = 0.0;
-  EXPECT_THROW(a.validate(), ModelError);
+  EXPECT_THROW(validate(a), ModelError);
   a = {};
   a.end = -1.0;
-  EXPECT_THROW(a.validate(), ModelError);
+  EXPECT_THROW(validate(a), ModelError);
 }
 
 TEST(KeyframeTrack, TracksFollowTheirListWhenItIsReordered) {

@@ -2,6 +2,7 @@
 // the defaults are valid, and the panels' slider ranges stay inside what validation accepts.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -19,6 +20,8 @@ struct Group {
   const char* path;  // where the group stands in the project file
   const SettingTable* table;
   std::function<void*(Project&)> locate;
+  /// Validation in memory (the animation is validated when it is read, not with the project).
+  std::function<void(const Project&)> validate = [](const Project& p) { validateProject(p); };
 };
 
 std::vector<Group> groups() {
@@ -32,12 +35,24 @@ std::vector<Group> groups() {
       {"render.shading.ao", &ambientOcclusionTable(), [](Project& p) -> void* { return &p.render.shading.ao; }},
       {"render.shading.fog", &fogTable(), [](Project& p) -> void* { return &p.render.shading.fog; }},
       {"render.shading.dof", &depthOfFieldTable(), [](Project& p) -> void* { return &p.render.shading.dof; }},
+      {"animation", &animationSettingsTable(),
+       [](Project& p) -> void* { return &p.animation.emplace(p.animation.value_or(AnimationSettings{})); },
+       [](const Project& p) { validateSettings(animationSettingsTable(), *p.animation, "animation"); }},
+      {"volume", &volumeSettingsTable(),
+       [](Project& p) -> void* { return &p.volume.emplace(p.volume.value_or(VolumeSettings{})); }},
   };
 }
 
 /// A valid project with one function (built out of line: GCC 12 warns about the inlined default
 /// light list otherwise).
 Project oneFunction() { return defaultNewProject(); }
+
+/// The message reading a project with `block` set to `text` gives ("" when it reads).
+std::string readingMessage(const char* block, const char* text) {
+  nlohmann::json root = nlohmann::json::parse(serializeProject(oneFunction()));
+  root[block] = nlohmann::json::parse(text);
+  return test_support::modelErrorText([&] { parseProject(root.dump()); });
+}
 
 bool isNumber(const SettingSpec& s) {
   return s.type == SettingType::Number || s.type == SettingType::Integer || s.type == SettingType::Count ||
@@ -91,6 +106,9 @@ TEST(SettingsTable, DefaultsAreValidAndEveryFieldIsWritten) {
   Project p = oneFunction();
   p.render.shading.dof.focus = 2.0;   // an unset optional is not written
   p.render.flame.density_unit = 2.0;  // the default is omitted
+  p.animation = AnimationSettings{};
+  p.animation->shutter = 0.25;  // the default is omitted
+  p.volume = VolumeSettings{};
   EXPECT_NO_THROW(validateProject(p));
   p.render.mode = DisplayMode::Shaded;  // writes render.shading
   nlohmann::json root = nlohmann::json::parse(serializeProject(p));
@@ -111,7 +129,7 @@ TEST(SettingsTable, EveryNumberOutsideItsRangeIsRefusedWithItsPath) {
       Project p = oneFunction();
       s.setNumber(g.locate(p), s.min - 1.0);
       try {
-        validateProject(p);
+        g.validate(p);
         ADD_FAILURE() << "no error";
       } catch (const ModelError& e) {
         EXPECT_EQ(e.path(), path) << e.what();
@@ -119,6 +137,7 @@ TEST(SettingsTable, EveryNumberOutsideItsRangeIsRefusedWithItsPath) {
       // In a file: reading names it too.
       p = oneFunction();
       p.render.mode = DisplayMode::Shaded;
+      g.locate(p);
       nlohmann::json root = nlohmann::json::parse(serializeProject(p));
       at(root, g.path)[s.key] = s.max + 1.0;
       try {
@@ -148,6 +167,57 @@ TEST(SettingsTable, MessagesNameTheMeaningWhereTheTableHasANoun) {
   p.render.flame.gamma = 0.0;
   EXPECT_EQ(test_support::modelErrorText([&] { validateProject(p); }),
             "render.flame.gamma: expected a number between 0.05 and 100, found 0");
+}
+
+// The animation and volume blocks had readers of their own before the tables; their files are told
+// what they were always told.
+TEST(SettingsTable, AnimationAndVolumeKeepTheirWords) {
+  EXPECT_EQ(readingMessage("animation", "[]"), "animation: expected an object with fps, start, end and loop");
+  EXPECT_EQ(readingMessage("animation", R"({"fps": "x"})"), "animation.fps: expected a number");
+  EXPECT_EQ(readingMessage("animation", R"({"loop": 1})"), "animation.loop: expected true or false");
+  EXPECT_EQ(readingMessage("animation", R"({"fps": 0})"), "animation.fps: frames per second must be in (0, 1000]");
+  EXPECT_EQ(readingMessage("animation", R"({"fps": 1000})"), "");
+  EXPECT_EQ(readingMessage("animation", R"({"start": 5, "end": 1})"),
+            "animation.end: the animation must not end before it starts");
+  EXPECT_EQ(readingMessage("animation", R"({"shutter": 1.5})"),
+            "animation.shutter: the shutter must be a fraction of the frame interval between 0 and 1");
+  EXPECT_EQ(readingMessage("animation", R"({"start": 2e6, "end": 1e300})"), "");  // any finite time
+  // Read in table order (the shutter before the loop); written with the shutter, only written
+  // when changed, last.
+  EXPECT_EQ(readingMessage("animation", R"({"loop": 1, "shutter": "x"})"), "animation.shutter: expected a number");
+  AnimationSettings blurred;
+  blurred.shutter = 0.25;
+  EXPECT_EQ(writeSettings(animationSettingsTable(), blurred).dump(),
+            R"({"fps":24.0,"start":0.0,"end":4.0,"loop":true,"shutter":0.25})");
+  EXPECT_EQ(readingMessage("volume", "[]"), "volume: expected an object");
+  EXPECT_EQ(readingMessage("volume", R"({"seed": "x"})"),
+            "volume.seed: expected an integer between 0 and 9223372036854775807");
+  EXPECT_EQ(readingMessage("volume", R"({"resolution": 16.5})"),
+            "volume.resolution: expected an integer between 16 and 512");
+  EXPECT_EQ(readingMessage("volume", R"({"samples": true})"),
+            "volume.samples: expected an integer between 1 and 100000000000");
+  EXPECT_EQ(readingMessage("volume", R"({"iterations": 300, "skip": 300})"),
+            "volume.skip: expected fewer skipped iterations than iterations");
+
+  // In memory, validation keeps its words too.
+  Project p = oneFunction();
+  p.volume = VolumeSettings{};
+  p.volume->samples = 0;
+  EXPECT_EQ(test_support::modelErrorText([&] { validateProject(p); }),
+            "volume.samples: expected between 1 and 1e11 samples");
+  p.volume = VolumeSettings{};
+  p.volume->skip = -1;
+  EXPECT_EQ(test_support::modelErrorText([&] { validateProject(p); }),
+            "volume.skip: expected fewer skipped iterations than iterations");
+  AnimationSettings a;
+  a.start = std::nan("");
+  EXPECT_EQ(test_support::modelErrorText([&] { validateSettings(animationSettingsTable(), a, "animation"); }),
+            "animation.start: the start time must be a finite number");
+
+  // A seed spelled as a float of 2^63 reads as that seed.
+  nlohmann::json root = nlohmann::json::parse(serializeProject(oneFunction()));
+  root["volume"] = nlohmann::json::parse(R"({"seed": 9223372036854775808.0})");
+  EXPECT_EQ(parseProject(root.dump()).volume->seed, std::uint64_t(1) << 63);
 }
 
 TEST(SettingsTable, ReadingStartsFromTheGivenDefaultsAndRoundTrips) {
