@@ -155,10 +155,12 @@ def projects():
     def volume(resolution=128, iterations=300, samples=20000000):
         return {"resolution": resolution, "iterations": iterations, "skip": 20, "seed": 1, "samples": samples}
 
-    def write(name, functions, vol):
+    def write(name, functions, vol, animation=None):
         p = dict(base)
         p["functions"] = functions
         p["volume"] = vol
+        if animation:
+            p["animation"] = animation
         with open(os.path.join(HERE, name), "w") as out:
             out.write(json.dumps(p, indent=2, ensure_ascii=False) + "\n")
 
@@ -181,6 +183,16 @@ def projects():
         fn("sketch", "median", 2.0 / 3.0, [0.95, 0.95, 1.0], mesh("creature_sketch.obj", (0.0, 0.0, 0.1), (1.0, 1.0, 1.0))),
         fn("balls", "median", 1.0 / 3.0, [0.7, 0.75, 0.9], mesh("creature_balls.obj", (0.0, 0.0, 0.1), (1.0, 1.0, 1.0)),
            palette_index=1.0)], volume())
+    # The creature as a cloud that drifts (Colonna's cloud dynamics): a fractal field weights its
+    # density, the wind carries the field along x, and the periods close the loop after 4 s
+    # (wind 0.25 × 4 s = one period of 1 along x).
+    drifting = volume()
+    drifting["field"] = {"strength": 1.5, "scale": 0.3, "ratio": 0.5, "octaves": 5, "gain": 0.7,
+                         "interpolation": "cubic", "seed": 7, "wind": [0.25, 0.0, 0.0], "period": [1.0, 0.0, 0.0, 4.0]}
+    write("drifting_cloud.gridifs", [
+        fn("sketch", "median", 2.0 / 3.0, [0.95, 0.95, 1.0], mesh("creature_sketch.obj", (0.0, 0.0, 0.1), (1.0, 1.0, 1.0))),
+        fn("balls", "median", 1.0 / 3.0, [0.7, 0.75, 0.9], mesh("creature_balls.obj", (0.0, 0.0, 0.1), (1.0, 1.0, 1.0)),
+           palette_index=1.0)], drifting, animation={"fps": 24.0, "start": 0.0, "end": 4.0, "loop": True})
 
 
 if __name__ == "__main__":

@@ -2,7 +2,10 @@
 
 #include <cmath>
 
+#include "io/json_read.h"
+#include "io/operation_json.h"
 #include "io/settings_json.h"
+#include "model/operation_table.h"
 #include "model/settings_tables.h"
 
 namespace gridifs::volume_io {
@@ -182,6 +185,34 @@ ordered_json writeSetFunction(const Function& fn) {
   return o;
 }
 
+namespace {
+
+// The field operation's parameters that a density field carries: all but the amplitude.
+bool isDensityFieldParam(const ParamSpec& spec) { return std::string_view(spec.key) != "amplitude"; }
+
+VolumeDensityField readDensityField(const json& object, const std::string& path) {
+  json_read::requireObject(object, path);
+  VolumeDensityField field;
+  if (auto it = object.find("strength"); it != object.end())
+    field.strength = json_read::readNumber(*it, path + ".strength", 0.0, kMaxDensityFieldStrength);
+  OpParams params = field.field;
+  for (const ParamSpec& spec : findOperation("field")->params)
+    if (isDensityFieldParam(spec)) operation_json::readParam(spec, object, path, params);
+  field.field = std::get<FieldOp>(params);
+  return field;
+}
+
+ordered_json writeDensityField(const VolumeDensityField& field) {
+  ordered_json o;
+  o["strength"] = field.strength;
+  const OpParams params = field.field;
+  for (const ParamSpec& spec : findOperation("field")->params)
+    if (isDensityFieldParam(spec)) o[spec.key] = operation_json::writeParam(spec, params);
+  return o;
+}
+
+}  // namespace
+
 std::optional<VolumeSettings> readVolume(const json& root) {
   auto it = root.find("volume");
   if (it == root.end() || it->is_null()) return std::nullopt;
@@ -189,11 +220,16 @@ std::optional<VolumeSettings> readVolume(const json& root) {
   // Validated with the rest of the project (validateProject), after the functions.
   VolumeSettings v;
   readSettingFields(volumeSettingsTable(), *it, "volume", &v);
+  if (auto field = it->find("field"); field != it->end() && !field->is_null())
+    v.field = readDensityField(*field, "volume.field");
   return v;
 }
 
 void writeVolume(const Project& project, ordered_json& root) {
-  if (project.volume) root["volume"] = writeSettings(volumeSettingsTable(), *project.volume);
+  if (!project.volume) return;
+  ordered_json volume = writeSettings(volumeSettingsTable(), *project.volume);
+  if (project.volume->field) volume["field"] = writeDensityField(*project.volume->field);
+  root["volume"] = volume;
 }
 
 }  // namespace gridifs::volume_io

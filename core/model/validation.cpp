@@ -45,7 +45,18 @@ void checkCondensationFunctions(const Project& project) {
   }
   if (project.final_function && isSetKind(project.final_function->kind))
     fail("final.kind", "the final function must be a grid (a lattice)");
-  if (project.volume) validateSettings(volumeSettingsTable(), *project.volume, "volume");
+  if (project.volume) {
+    validateSettings(volumeSettingsTable(), *project.volume, "volume");
+    if (const auto& field = project.volume->field) {
+      if (!std::isfinite(field->strength) || field->strength < 0.0 || field->strength > kMaxDensityFieldStrength)
+        fail("volume.field.strength", "expected a number between 0 and 100");
+      try {
+        validateOperationParams(OpParams{field->field});
+      } catch (const ModelError& e) {
+        throw e.under("volume.field");
+      }
+    }
+  }
 }
 
 // Checks `project`; a function equal to the one at the same place of `trusted` (a project that

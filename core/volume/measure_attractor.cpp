@@ -12,6 +12,7 @@
 #include "render/chaos_kernel.h"
 #include "render/chaos_renderer.h"
 #include "volume/condensation_sampler.h"
+#include "volume/density_field.h"
 #include "volume/set_function.h"
 #include "volume/set_voxelizer.h"
 
@@ -255,7 +256,9 @@ bool hasColorVolume(const Project& project) {
 }
 
 DensityVolume computeDensityVolume(const Project& project, const VolumeJob& job) {
-  return usesSetIteration(project) ? iterateSets(project, job) : binPoints(project, job);
+  DensityVolume volume = usesSetIteration(project) ? iterateSets(project, job) : binPoints(project, job);
+  if (job.settings.field && !cancelled(job)) modulateDensity(volume, *job.settings.field, project.time, job.threads);
+  return volume;
 }
 
 }  // namespace gridifs
