@@ -325,6 +325,8 @@ int renderSequence(const std::string& file, const std::string& pattern, const Re
 int runRender(const std::string& file, const std::string& out, const RenderOverrides& overrides, bool quiet,
               const FlameOptions& flame, const SequenceOptions& sequence) {
   checkOutputPath(out, {"png", "exr", "tif", "tiff"}, "the output image");
+  // The image library loads on a second core while the project loads and the chaos game runs.
+  startLoadingImageWriter();
   if (sequence.motionBlur < 1 || sequence.motionBlur > kMaxMotionBlurSamples)
     throw CliError(kBadInput, "--motion-blur must be between 1 and " + std::to_string(kMaxMotionBlurSamples) +
                                   " time samples per frame");

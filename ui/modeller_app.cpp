@@ -31,6 +31,7 @@
 #include "ui/panels.h"
 #include "ui/preview_view.h"
 #include "ui/project_files.h"
+#include "render/image_file.h"
 #include "ui/screenshot.h"
 #include "ui/theme.h"
 #include "ui/timeline_panel.h"
@@ -362,6 +363,7 @@ int ModellerApp::run() {
   if (!options_.file.empty()) files_.openAtStartup(options_.file);
   state_.clampIndices();
   const bool capture = !options_.screenshot.empty();
+  if (capture) startLoadingImageWriter();  // on a helper thread, while the picture fills
   const auto start = std::chrono::steady_clock::now();
   int quietFrames = 0;
   int exitCode = 0;

@@ -11,6 +11,7 @@
 #include "base/errors.h"
 #include "base/text_format.h"
 #include "render/chaos_renderer.h"
+#include "render/image_file.h"
 #include "ui/animation_frames.h"
 #include "ui/timeline_panel.h"
 #include "ui/widgets.h"
@@ -25,6 +26,7 @@ constexpr int kMaxFrames = 100000;
 }  // namespace
 
 void RenderAnimationDialog::openFor(const ModellerState& state) {
+  startLoadingImageWriter();  // the frames are written through it; load it while the artist decides
   const Project& project = state.document.project();
   const AnimationSettings a = timelineOf(project);
   if (!running()) {

@@ -2,10 +2,11 @@
 
 #include <epoxy/gl.h>
 
-#include <OpenImageIO/imageio.h>
-
 #include <cstring>
 #include <vector>
+
+#include "base/errors.h"
+#include "render/image_file.h"
 
 namespace gridifs::ui {
 
@@ -21,11 +22,15 @@ std::string writeFramebuffer(const std::string& file, int width, int height) {
   std::vector<unsigned char> flipped(pixels.size());
   for (int y = 0; y < height; ++y)
     std::memcpy(flipped.data() + std::size_t(y) * row, pixels.data() + std::size_t(height - 1 - y) * row, row);
-  auto out = OIIO::ImageOutput::create(file);
-  if (!out) return "cannot write " + file + ": " + OIIO::geterror();
-  const OIIO::ImageSpec spec(width, height, 3, OIIO::TypeDesc::UINT8);
-  if (!out->open(file, spec) || !out->write_image(OIIO::TypeDesc::UINT8, flipped.data()) || !out->close())
-    return "cannot write " + file + ": " + out->geterror();
+  ImageFileLayout layout;
+  layout.width = width;
+  layout.height = height;
+  layout.channels = {"R", "G", "B"};
+  try {
+    writeImageFile(file, layout, flipped.data());
+  } catch (const IoError& e) {
+    return e.what();
+  }
   return {};
 }
 

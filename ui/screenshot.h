@@ -1,6 +1,6 @@
 #pragma once
-// Reads the window's framebuffer back and writes it as an image through OpenImageIO
-// (`--screenshot`). Call after ImGui has rendered and before the buffers are swapped.
+// Reads the window's framebuffer back and writes it as an image (render/image_file:
+// OpenImageIO; `--screenshot`). Call after ImGui has rendered and before the buffers are swapped.
 #include <string>
 
 namespace gridifs::ui {

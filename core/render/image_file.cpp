@@ -1,60 +1,123 @@
 #include "render/image_file.h"
 
-#include <OpenImageIO/imageio.h>
+#include <dlfcn.h>
+
+#include <cstdlib>
+#include <future>
+#include <mutex>
 
 #include "base/atomic_file.h"
 #include "base/errors.h"
-#include "base/text_format.h"
+#include "image_writer_abi.h"
 
 namespace gridifs {
 namespace {
 
-OIIO::TypeDesc typeOf(StoredSample s) {
-  switch (s) {
-    case StoredSample::UInt8:
-      return OIIO::TypeDesc::UINT8;
-    case StoredSample::UInt16:
-      return OIIO::TypeDesc::UINT16;
-    case StoredSample::Half:
-      return OIIO::TypeDesc::HALF;
-    case StoredSample::Float:
-      return OIIO::TypeDesc::FLOAT;
-  }
-  return OIIO::TypeDesc::UINT8;
+constexpr const char* kPluginFile = "libgridifs_image_io.so";
+
+using WriteFunction = int (*)(const GridifsImageRequest*, char*, size_t);
+using VersionFunction = int (*)();
+
+struct ImageWriter {
+  WriteFunction write = nullptr;
+  std::string problem;  // why it could not be loaded
+};
+
+// Where the plugin may be: only where GRIDIFS_IMAGE_IO names it, when it is set; else beside the
+// running executable (the gridifs binary), in the build tree it was built in (test and benchmark
+// binaries), or on the loader's search path.
+std::vector<std::string> candidates() {
+  std::vector<std::string> paths;
+  if (const char* named = std::getenv("GRIDIFS_IMAGE_IO"); named && *named) return {named};
+  std::error_code error;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
+  if (!error) paths.push_back((self.parent_path() / kPluginFile).string());
+  paths.push_back(std::string(GRIDIFS_IMAGE_IO_BUILD_DIR) + "/" + kPluginFile);
+  paths.emplace_back(kPluginFile);
+  return paths;
 }
 
-void write(const std::filesystem::path& file, const ImageFileLayout& layout, OIIO::TypeDesc given, const void* pixels) {
-  OIIO::ImageSpec spec(layout.width, layout.height, int(layout.channels.size()), typeOf(layout.stored));
-  spec.channelnames = layout.channels;
-  spec.alpha_channel = layout.alphaChannel;
-  spec.z_channel = layout.zChannel;
-  spec.attribute("Software", "GridIFS");
-  if (!layout.description.empty()) spec.attribute("ImageDescription", layout.description);
-  const std::string ext = lowerExtension(file);
-  if (ext == "exr" || ext == "tif" || ext == "tiff") spec.attribute("compression", "zip");
+ImageWriter load() {
+  std::string firstError;
+  for (const std::string& path : candidates()) {
+    if (path.find('/') != std::string::npos && !std::filesystem::exists(path)) {
+      if (firstError.empty()) firstError = path + " does not exist";
+      continue;
+    }
+    void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!handle) {
+      if (firstError.empty()) firstError = dlerror();
+      continue;
+    }
+    const auto version = reinterpret_cast<VersionFunction>(dlsym(handle, "gridifs_image_io_abi_version"));
+    const auto write = reinterpret_cast<WriteFunction>(dlsym(handle, "gridifs_image_io_write"));
+    if (version && write && version() == GRIDIFS_IMAGE_IO_ABI_VERSION) return {write, {}};
+    if (firstError.empty()) firstError = path + " is from another version of GridIFS";
+    dlclose(handle);
+  }
+  return {nullptr, "the image library (" + std::string(kPluginFile) + ") could not be loaded" +
+                       (firstError.empty() ? std::string() : ": " + firstError)};
+}
+
+struct Loading {
+  std::once_flag started;
+  std::shared_future<ImageWriter> writer;
+};
+
+Loading& loading() {
+  static Loading state;
+  return state;
+}
+
+// Starts loading once: on a helper thread when asked ahead of time, else on first use.
+const ImageWriter& writer(std::launch how) {
+  Loading& state = loading();
+  std::call_once(state.started, [&] { state.writer = std::async(how, load).share(); });
+  return state.writer.get();
+}
+
+int storedCode(StoredSample s) {
+  switch (s) {
+    case StoredSample::UInt8:
+      return GRIDIFS_STORED_UINT8;
+    case StoredSample::UInt16:
+      return GRIDIFS_STORED_UINT16;
+    case StoredSample::Half:
+      return GRIDIFS_STORED_HALF;
+    case StoredSample::Float:
+      return GRIDIFS_STORED_FLOAT;
+  }
+  return GRIDIFS_STORED_UINT8;
+}
+
+void write(const std::filesystem::path& file, const ImageFileLayout& layout, bool isFloat, const void* pixels) {
+  const ImageWriter& plugin = writer(std::launch::deferred);
+  if (!plugin.write) throw IoError("cannot write " + file.string() + ": " + plugin.problem);
+  std::vector<const char*> names;
+  for (const std::string& name : layout.channels) names.push_back(name.c_str());
   AtomicFile atomic(file);
   const std::string temporary = atomic.temporaryPath().string();
-  auto out = OIIO::ImageOutput::create(temporary);
-  if (!out) throw IoError("cannot write " + file.string() + ": " + OIIO::geterror());
-  const bool ok = out->open(temporary, spec) && out->write_image(given, pixels) && out->close();
-  if (!ok) {
-    std::string message = out->geterror();
-    if (message.empty()) message = "the image library reported an error";
-    while (!message.empty() && message.back() == '\n') message.pop_back();
-    throw IoError("cannot write " + file.string() + ": " + message);
-  }
-  out.reset();
+  const GridifsImageRequest request{temporary.c_str(), layout.width,     layout.height,     int(names.size()),
+                                    names.data(),      layout.alphaChannel, layout.zChannel, storedCode(layout.stored),
+                                    isFloat ? 1 : 0,   pixels,           layout.description.c_str()};
+  char message[1024] = {};
+  if (!plugin.write(&request, message, sizeof message)) throw IoError("cannot write " + file.string() + ": " + message);
   atomic.commit();
 }
 
 }  // namespace
 
+void startLoadingImageWriter() {
+  Loading& state = loading();
+  std::call_once(state.started, [&] { state.writer = std::async(std::launch::async, load).share(); });
+}
+
 void writeImageFile(const std::filesystem::path& file, const ImageFileLayout& layout, const std::uint8_t* pixels) {
-  write(file, layout, OIIO::TypeDesc::UINT8, pixels);
+  write(file, layout, false, pixels);
 }
 
 void writeImageFile(const std::filesystem::path& file, const ImageFileLayout& layout, const float* pixels) {
-  write(file, layout, OIIO::TypeDesc::FLOAT, pixels);
+  write(file, layout, true, pixels);
 }
 
 }  // namespace gridifs

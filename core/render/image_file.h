@@ -1,7 +1,8 @@
 #pragma once
-// One writer for every image file GridIFS produces (z-buffer, flame and shaded renders):
-// OpenImageIO picks the format from the extension, the file is written atomically (a temporary
-// renamed over the target), and a failure names the file.
+// One writer for every image file GridIFS produces (z-buffer, flame and shaded renders, the
+// modeller's screenshots): OpenImageIO picks the format from the extension, the file is written
+// atomically (a temporary renamed over the target), and a failure names the file. OpenImageIO
+// lives in a plugin loaded on first use (image_io/image_writer_abi.h says why).
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -24,6 +25,10 @@ struct ImageFileLayout {
 /// `layout.stored`). Throws IoError("cannot write FILE: …") and leaves an existing file as it was.
 void writeImageFile(const std::filesystem::path& file, const ImageFileLayout& layout, const std::uint8_t* pixels);
 void writeImageFile(const std::filesystem::path& file, const ImageFileLayout& layout, const float* pixels);
+
+/// Starts loading the image library on a helper thread, so that a later write does not wait for
+/// it (call as soon as it is known that an image will be written). Safe to call more than once.
+void startLoadingImageWriter();
 
 /// The Z value of pixels without points in EXR files (Blender's convention for "background").
 inline constexpr float kEmptyPixelDepth = 1e10f;

@@ -1,0 +1,34 @@
+#pragma once
+// The C interface between GridIFS and its image-writer plugin (libgridifs_image_io.so), which is
+// the only code linked to OpenImageIO. Plain C types only: the plugin is loaded with dlopen by
+// core/render/image_file.cpp, and a stale plugin from an older build is refused by its version.
+#include <stddef.h>
+
+#define GRIDIFS_IMAGE_IO_ABI_VERSION 1
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+enum GridifsStoredSample { GRIDIFS_STORED_UINT8 = 0, GRIDIFS_STORED_UINT16 = 1, GRIDIFS_STORED_HALF = 2, GRIDIFS_STORED_FLOAT = 3 };
+
+struct GridifsImageRequest {
+  const char* path;  // the file to create; its extension picks the format
+  int width, height, channelCount;
+  const char* const* channelNames;  // channelCount names ("R", "G", "B", "A", "Z", ...)
+  int alphaChannel, zChannel;       // -1: none
+  int stored;                       // a GridifsStoredSample
+  int pixelsAreFloat;               // pixels hold floats (else bytes), interleaved
+  const void* pixels;
+  const char* description;  // ImageDescription metadata; "" for none
+};
+
+/// The plugin's GRIDIFS_IMAGE_IO_ABI_VERSION.
+int gridifs_image_io_abi_version(void);
+
+/// Writes the image. Returns 1 on success; 0 with a message (no trailing newline) in `error`.
+int gridifs_image_io_write(const struct GridifsImageRequest* request, char* error, size_t errorSize);
+
+#ifdef __cplusplus
+}
+#endif

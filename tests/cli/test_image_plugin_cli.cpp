@@ -1,0 +1,56 @@
+// The image writer is a plugin (image_io/): gridifs itself does not link OpenImageIO, so verbs
+// that write no image start without loading its ~260 libraries; a missing plugin is one sentence.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+
+#include "tests/cli/run_command.h"
+
+namespace gridifs {
+namespace {
+
+using test_support::quote;
+using test_support::runGridifs;
+using test_support::ScratchDir;
+namespace fs = std::filesystem;
+
+std::string asset(const std::string& name) { return (fs::path(GRIDIFS_ASSETS) / name).string(); }
+
+TEST(ImagePlugin, GridifsDoesNotLinkOpenImageIO) {
+  ScratchDir dir("image-plugin-needed");
+  const fs::path listing = dir.path / "dynamic.txt";
+  ASSERT_EQ(std::system(("objdump -p " + quote(GRIDIFS_EXE) + " > " + quote(listing.string())).c_str()), 0);
+  const std::string text = test_support::slurp(listing.string());
+  EXPECT_NE(text.find("NEEDED"), std::string::npos) << "objdump listed no dynamic section";
+  EXPECT_EQ(text.find("libOpenImageIO"), std::string::npos)
+      << "gridifs links OpenImageIO again: every start pays for loading it";
+}
+
+TEST(ImagePlugin, ImagesAreWrittenThroughThePlugin) {
+  ScratchDir dir("image-plugin-write");
+  for (const char* ext : {"png", "exr", "tif"}) {
+    const fs::path out = dir.path / (std::string("out.") + ext);
+    const auto r = runGridifs("render " + quote(asset("sierpinski_tetrahedron.gridifs")) + " -o " + quote(out.string()) +
+                              " --width 64 --height 48 --samples 20000 --device cpu -q");
+    EXPECT_EQ(r.exitCode, 0) << ext << ": " << r.err;
+    EXPECT_GT(fs::exists(out) ? fs::file_size(out) : 0u, 100u) << ext;
+  }
+}
+
+TEST(ImagePlugin, AMissingPluginIsOneSentenceAndWritesNothing) {
+  ScratchDir dir("image-plugin-missing");
+  const fs::path out = dir.path / "out.png";
+  const auto r = runGridifs("render " + quote(asset("sierpinski_tetrahedron.gridifs")) + " -o " + quote(out.string()) +
+                                " --width 64 --height 48 --samples 20000 --device cpu -q",
+                            "", "GRIDIFS_IMAGE_IO=" + quote((dir.path / "libmissing.so").string()));
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  EXPECT_NE(r.err.find("could not be loaded"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_TRUE(fs::is_empty(dir.path)) << "no temporary file is left behind";
+}
+
+}  // namespace
+}  // namespace gridifs
