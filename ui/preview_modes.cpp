@@ -16,6 +16,8 @@ const char* modeName(PreviewMode mode) {
       return "mesh";
     case PreviewMode::Shaded:
       return "shaded";
+    case PreviewMode::Volume:
+      return "volume";
     default:
       return "zbuffer";
   }
@@ -28,7 +30,7 @@ void PreviewModes::syncFromProject(ModellerState& state) {
   // undo, open and the menu all agree with the toolbar; the mesh mode is a view of the UI only.
   const DisplayMode pm = state.document.project().render.mode;
   if (!synced_ || pm != projectMode_) {
-    if (state.previewMode != PreviewMode::Mesh)
+    if (state.previewMode != PreviewMode::Mesh && state.previewMode != PreviewMode::Volume)
       state.previewMode = pm == DisplayMode::Flame    ? PreviewMode::Flame
                           : pm == DisplayMode::Shaded ? PreviewMode::Shaded
                                                       : PreviewMode::ZBuffer;
@@ -56,9 +58,13 @@ void PreviewModes::buildToolbar(ModellerState& state, EditQueue& edits) {
   ImGui::SameLine();
   modeButton("Mesh F^n(A)", PreviewMode::Mesh, "preview.mode.mesh",
              "The deterministic algorithm (Gröller & Wegenkittl 1994, §3.2): n levels of the IFS applied to a cube or sphere");
+  ImGui::SameLine();
+  modeButton("Volume", PreviewMode::Volume, "preview.mode.volume",
+             "The measure attractor (Sokolov & Gentil, §3.4) as a density volume, ray-marched with one light and "
+             "self-shadowing; it fills while the iteration runs and starts again on every edit");
   // Menu (View > Preview mode) and toolbar both land here: z-buffer/flame become one undo step
   // on render.mode.
-  if (state.previewMode != PreviewMode::Mesh) {
+  if (state.previewMode != PreviewMode::Mesh && state.previewMode != PreviewMode::Volume) {
     const DisplayMode want = state.previewMode == PreviewMode::Flame    ? DisplayMode::Flame
                              : state.previewMode == PreviewMode::Shaded ? DisplayMode::Shaded
                                                                         : DisplayMode::ZBuffer;
@@ -76,6 +82,12 @@ void PreviewModes::buildToolbar(ModellerState& state, EditQueue& edits) {
   } else if (state.previewMode == PreviewMode::Mesh) {
     ImGui::SameLine(0.0f, ImGui::GetFontSize());
     drawMeshControls(state);
+  } else if (state.previewMode == PreviewMode::Volume) {
+    // On the same row when the controls fit, else on their own row under the mode switch.
+    const float em = ImGui::GetFontSize();
+    ImGui::SameLine(0.0f, em);
+    if (ImGui::GetContentRegionAvail().x < em * 20.0f) ImGui::NewLine();
+    drawVolumeControls(state);
   }
 }
 
@@ -118,6 +130,9 @@ bool PreviewModes::updateTexture(ModellerState& state, const RenderImage& image,
   switch (state.previewMode) {
     case PreviewMode::Mesh:
       if (modeChanged) meshDirty_ = true;
+      return false;
+    case PreviewMode::Volume:
+      if (modeChanged) volumeDirty_ = true;
       return false;
     case PreviewMode::Shaded: {
       // Developing is a pass over the z-buffer (core/render/shaded_image.h): light, occlusion and
@@ -173,9 +188,47 @@ bool PreviewModes::drawMesh(ModellerState& state, RenderTarget& target, int widt
   return true;
 }
 
+bool PreviewModes::drawVolume(ModellerState& state, RenderTarget& target, int width, int height, bool visible) {
+  if (state.previewMode != PreviewMode::Volume) {
+    state.volumeStatus.clear();
+    return false;
+  }
+  volume_.update(state.document, state.renderThreads);
+  if (volume_.upload()) volumeDirty_ = true;
+  char status[96];
+  if (!volume_.error().empty())
+    std::snprintf(status, sizeof status, "volume: failed");
+  else if (volume_.setIteration())
+    std::snprintf(status, sizeof status, "volume %lld/%lld iterations", static_cast<long long>(volume_.done()),
+                  static_cast<long long>(volume_.total()));
+  else
+    std::snprintf(status, sizeof status, "volume %.3gM/%.3gM points", double(volume_.done()) / 1e6,
+                  double(volume_.total()) / 1e6);
+  state.volumeStatus = status;
+  const Project& p = state.document.project();
+  const glm::ivec2 size(width, height);
+  if (!visible) return true;
+  if (!volumeDirty_ && size == volumeSize_ && state.document.revision() == volumeRevision_ &&
+      volume_.view.densityScale == volumeScale_)
+    return true;
+  target.resize(width, height);
+  volume_.draw(target, p);
+  volumeSize_ = size;
+  volumeRevision_ = state.document.revision();
+  volumeScale_ = volume_.view.densityScale;
+  volumeDirty_ = false;
+  return true;
+}
+
+std::string PreviewModes::overlayMessage(const ModellerState& state) const {
+  if (state.previewMode == PreviewMode::Volume && !volume_.error().empty()) return "Volume: " + volume_.error();
+  return {};
+}
+
 bool PreviewModes::busy() const {
   if (shownMode_ == PreviewMode::Flame) return flame_.developer().busy();
   if (shownMode_ == PreviewMode::Mesh) return mesh_.building();
+  if (shownMode_ == PreviewMode::Volume) return volume_.computing();
   return false;
 }
 
@@ -192,7 +245,15 @@ nlohmann::json PreviewModes::probeJson() const {
           {"mesh_building", mesh_.building()},
           {"mesh_error", mesh_.error()},
           {"shaded_develops", shadedDevelops_},
-          {"shaded_error", shadedError_}};
+          {"shaded_error", shadedError_},
+          {"volume_computing", volume_.computing()},
+          {"volume_finished", volume_.finished()},
+          {"volume_done", volume_.done()},
+          {"volume_total", volume_.total()},
+          {"volume_resolution", volume_.resolution()},
+          {"volume_restarts", volume_.restarts()},
+          {"volume_uploads", volume_.uploads()},
+          {"volume_error", volume_.error()}};
 }
 
 }  // namespace gridifs::ui

@@ -45,8 +45,8 @@ bool nearDensity(const float* density, int n, int i, int j, int k) {
 std::vector<float> lightOpticalDepth(const std::vector<float>& density, int n, const Vec3& towardLight, int threads) {
   const std::size_t count = std::size_t(n) * std::size_t(n) * std::size_t(n);
   std::vector<float> depth(count, 0.0f);
-  const double length = std::sqrt(towardLight.x * towardLight.x + towardLight.y * towardLight.y +
-                                   towardLight.z * towardLight.z);
+  const double length =
+      std::sqrt(towardLight.x * towardLight.x + towardLight.y * towardLight.y + towardLight.z * towardLight.z);
   if (n <= 0 || density.size() != count || !(length > 0.0)) return depth;
   // Half a voxel per step along the light, midpoint rule: with trilinear interpolation this
   // is close to the exact integral of the interpolated field (the shadow has no stair steps).

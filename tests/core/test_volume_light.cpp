@@ -10,7 +10,9 @@
 namespace gridifs {
 namespace {
 
-std::size_t at(int n, int i, int j, int k) { return std::size_t(i) + std::size_t(n) * (std::size_t(j) + std::size_t(n) * std::size_t(k)); }
+std::size_t at(int n, int i, int j, int k) {
+  return std::size_t(i) + std::size_t(n) * (std::size_t(j) + std::size_t(n) * std::size_t(k));
+}
 
 TEST(VolumeLight, UniformDensityGivesThePathLengthToTheBoundary) {
   const int n = 16;
