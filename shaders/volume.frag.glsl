@@ -23,7 +23,9 @@ out vec4 fragColor;
 float jitter(vec2 p) { return fract(sin(dot(p, vec2(12.9898, 78.233))) * 43758.5453); }
 
 void main() {
-  vec2 ndc = vec2(vUv.x * 2.0 - 1.0, 1.0 - 2.0 * vUv.y);
+  // Rows run bottom-up here: the picture is then shown through the preview's image blit, which
+  // takes row 0 as the top.
+  vec2 ndc = vUv * 2.0 - 1.0;
   vec4 nearPoint = uInverseViewProjection * vec4(ndc, -1.0, 1.0);
   vec4 farPoint = uInverseViewProjection * vec4(ndc, 1.0, 1.0);
   vec3 origin = nearPoint.xyz / nearPoint.w;

@@ -188,7 +188,8 @@ bool PreviewModes::drawMesh(ModellerState& state, RenderTarget& target, int widt
   return true;
 }
 
-bool PreviewModes::drawVolume(ModellerState& state, RenderTarget& target, int width, int height, bool visible) {
+bool PreviewModes::drawVolume(ModellerState& state, RenderTarget& target, ViewRenderer& renderer, int width, int height,
+                              bool visible, bool moving) {
   if (state.previewMode != PreviewMode::Volume) {
     state.volumeStatus.clear();
     return false;
@@ -209,10 +210,24 @@ bool PreviewModes::drawVolume(ModellerState& state, RenderTarget& target, int wi
   const glm::ivec2 size(width, height);
   if (!visible) return true;
   if (!volumeDirty_ && size == volumeSize_ && state.document.revision() == volumeRevision_ &&
-      volume_.view.densityScale == volumeScale_)
+      volume_.view.densityScale == volumeScale_ && moving == volumeMoving_)
     return true;
+  // An N³ volume has no detail finer than a few pixels per voxel: the ray march runs at most
+  // 8 pixels per voxel across (4 while the camera moves) and is scaled up, which keeps software
+  // GL responsive and costs nothing visible.
+  const int side = std::max({width, height, 1});
+  const int cap = std::max(volume_.resolution(), kVolumePreviewResolutions[0]) * (moving ? 4 : 8);
+  const double scale = std::min(1.0, double(cap) / double(side));
+  const int lw = std::max(1, int(std::lround(width * scale))), lh = std::max(1, int(std::lround(height * scale)));
+  volumeTarget_.resize(lw, lh);
+  glBindTexture(GL_TEXTURE_2D, volumeTarget_.texture());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  volume_.draw(volumeTarget_, p);
   target.resize(width, height);
-  volume_.draw(target, p);
+  renderer.drawImage(target, volumeTarget_.texture(), lw, lh, glm::vec3(p.render.background));
+  volumeMoving_ = moving;
   volumeSize_ = size;
   volumeRevision_ = state.document.revision();
   volumeScale_ = volume_.view.densityScale;

@@ -15,6 +15,7 @@
 #include "ui/gl_resources.h"
 #include "ui/mesh_preview.h"
 #include "ui/modeller_state.h"
+#include "ui/view_renderer.h"
 #include "ui/volume_preview.h"
 
 namespace gridifs::ui {
@@ -47,7 +48,9 @@ class PreviewModes {
   bool drawMesh(ModellerState& state, RenderTarget& target, int width, int height, bool visible);
   /// In volume mode, uploads the newest partial volume and ray-marches it into `target`.
   /// Returns false when the current mode is not the volume.
-  bool drawVolume(ModellerState& state, RenderTarget& target, int width, int height, bool visible);
+  /// `moving`: the camera is being dragged (a coarser picture keeps the orbit fluid).
+  bool drawVolume(ModellerState& state, RenderTarget& target, ViewRenderer& renderer, int width, int height,
+                  bool visible, bool moving);
   /// A message to show over the preview image ("" when none): why the volume cannot be shown.
   std::string overlayMessage(const ModellerState& state) const;
   /// Whether a develop or a mesh build is under way (the window keeps animating).
@@ -68,6 +71,8 @@ class PreviewModes {
   std::uint64_t volumeRevision_ = 0;  // Document::revision(): any edit redraws (light, background, palette)
   glm::ivec2 volumeSize_{0, 0};
   float volumeScale_ = -1.0f;
+  bool volumeMoving_ = false;
+  RenderTarget volumeTarget_;  // the ray march at a resolution fitted to the volume's, then scaled up
   bool volumeDirty_ = true;
   PaletteCatalog palettes_;
   std::string paletteError_;

@@ -199,7 +199,7 @@ void PreviewView::render(ModellerState& state, ViewRenderer& renderer) {
     needsDraw_ = true;  // the image is drawn again when the mode changes back
     return;
   }
-  if (modes_.drawVolume(state, target_, w, h, visible_)) {  // the ray-marched measure attractor
+  if (modes_.drawVolume(state, target_, renderer, w, h, visible_, dragging())) {  // the ray-marched measure attractor
     needsDraw_ = true;
     return;
   }
