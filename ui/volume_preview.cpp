@@ -84,14 +84,14 @@ void VolumePreview::update(const Document& document, int threads) {
     wake_.notify_all();
   }
   const int resolution = effectiveResolution(project, view.resolution);
-  // The measure depends on the functions (and their sets), on the time (animated fields) and on
-  // the volume settings; camera, display and light changes only redraw.
-  if (haveRequest_ && document.revisions().geometry == geometryRevision_ && project.time == time_ &&
-      project.volume == volumeSettings_ && resolution == requestedResolution_)
+  // The measure depends on the functions (and their sets) and on the volume settings; the Document
+  // bumps the geometry revision when a new time changes a function (keys, fields, calculators).
+  // Camera, display and light changes only redraw.
+  if (haveRequest_ && document.revisions().geometry == geometryRevision_ && project.volume == volumeSettings_ &&
+      resolution == requestedResolution_)
     return;
   haveRequest_ = true;
   geometryRevision_ = document.revisions().geometry;
-  time_ = project.time;
   volumeSettings_ = project.volume;
   requestedResolution_ = resolution;
   ++restarts_;

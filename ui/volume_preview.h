@@ -3,7 +3,7 @@
 // resolution on a worker thread and ray-marched as a 3D texture with emission and absorption,
 // lit by one directional light with self-shadowing. The worker publishes the partial volume now
 // and then while the iteration runs, so the picture fills progressively; an edit of the
-// functions or of the time cancels it and starts again. The UI thread only uploads and draws.
+// functions (or a new time that changes them) cancels it and starts again. The UI thread only uploads and draws.
 #include <atomic>
 #include <condition_variable>
 #include <cstdint>
@@ -40,8 +40,8 @@ class VolumePreview {
 
   VolumeView view;
 
-  /// UI thread, every frame in volume mode: restarts the worker when the functions, the time,
-  /// the volume settings or the resolution changed, and hands it the light direction. Never waits.
+  /// UI thread, every frame in volume mode: restarts the worker when the geometry revision, the
+  /// volume settings or the resolution changed, and hands it the light direction. Never waits.
   void update(const Document& document, int threads);
   /// UI thread with the GL context: uploads the newest published volume; true when there was one.
   bool upload();
@@ -89,7 +89,6 @@ class VolumePreview {
 
   // UI-thread state.
   std::uint64_t geometryRevision_ = 0;
-  double time_ = 0.0;
   std::optional<VolumeSettings> volumeSettings_;
   int requestedResolution_ = 0;
   bool haveRequest_ = false;
