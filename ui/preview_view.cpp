@@ -89,7 +89,9 @@ void PreviewView::build(ModellerState& state, EditQueue& edits, float framebuffe
   }
 
   ImGuiIO& io = ImGui::GetIO();
-  const bool shaded = state.previewMode == PreviewMode::Shaded && !project.render.shading.lights.empty();
+  // The volume mode is lit by the same key light: Alt+drag turns it there too.
+  const bool shaded = (state.previewMode == PreviewMode::Shaded || state.previewMode == PreviewMode::Volume) &&
+                      !project.render.shading.lights.empty();
   if (shaded) drawLightGizmo(state, origin);
   if (hovered)
     state.contextHelp = shaded ? "Drag: orbit · middle/Shift+drag: pan · wheel: zoom · Alt+drag: move the key light"
