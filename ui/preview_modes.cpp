@@ -76,19 +76,17 @@ void PreviewModes::buildToolbar(ModellerState& state, EditQueue& edits) {
       projectMode_ = want;
     }
   }
-  if (state.previewMode == PreviewMode::Flame) {
-    ImGui::SameLine(0.0f, ImGui::GetFontSize());
+  // The mode's controls on a row of their own under the switch, kept (empty) in the modes without
+  // controls: the image below keeps its size when the mode changes, so the chaos game does not
+  // restart, and five modes and their controls do not fit one row of a narrow preview.
+  if (state.previewMode == PreviewMode::Flame)
     drawFlameControls(state, edits);
-  } else if (state.previewMode == PreviewMode::Mesh) {
-    ImGui::SameLine(0.0f, ImGui::GetFontSize());
+  else if (state.previewMode == PreviewMode::Mesh)
     drawMeshControls(state);
-  } else if (state.previewMode == PreviewMode::Volume) {
-    // On the same row when the controls fit, else on their own row under the mode switch.
-    const float em = ImGui::GetFontSize();
-    ImGui::SameLine(0.0f, em);
-    if (ImGui::GetContentRegionAvail().x < em * 20.0f) ImGui::NewLine();
+  else if (state.previewMode == PreviewMode::Volume)
     drawVolumeControls(state);
-  }
+  else
+    ImGui::Dummy(ImVec2(1.0f, ImGui::GetFrameHeight()));
 }
 
 void PreviewModes::drawMeshControls(ModellerState& state) {
@@ -192,6 +190,7 @@ bool PreviewModes::drawVolume(ModellerState& state, RenderTarget& target, ViewRe
                               bool visible, bool moving) {
   if (state.previewMode != PreviewMode::Volume) {
     state.volumeStatus.clear();
+    volume_.suspend();
     return false;
   }
   volume_.update(state.document, state.renderThreads);

@@ -125,6 +125,16 @@ void VolumePreview::update(const Document& document, int threads) {
   wake_.notify_all();
 }
 
+void VolumePreview::suspend() {
+  std::lock_guard lock(mutex_);
+  if (!computing_.load()) return;
+  if (currentCancel_) currentCancel_->store(true);
+  currentCancel_.reset();
+  pending_.reset();
+  computing_ = false;
+  haveRequest_ = false;
+}
+
 void VolumePreview::run() {
   for (;;) {
     std::unique_lock lock(mutex_);

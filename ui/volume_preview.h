@@ -43,6 +43,9 @@ class VolumePreview {
   /// UI thread, every frame in volume mode: restarts the worker when the geometry revision, the
   /// volume settings or the resolution changed, and hands it the light direction. Never waits.
   void update(const Document& document, int threads);
+  /// UI thread, when the preview leaves the volume mode: stops a computation under way (the chaos
+  /// game gets the cores back); the next update() starts it again. A finished volume is kept.
+  void suspend();
   /// UI thread with the GL context: uploads the newest published volume; true when there was one.
   bool upload();
   /// Ray-marches the current volume into `target` with the project camera over `background`.
