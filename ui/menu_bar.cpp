@@ -128,6 +128,8 @@ float drawMenuBar(AppCommands& app) {
         s.previewMode = PreviewMode::Shaded;
       if (ImGui::MenuItem("Mesh F^n(A) (deterministic)", nullptr, s.previewMode == PreviewMode::Mesh))
         s.previewMode = PreviewMode::Mesh;
+      if (ImGui::MenuItem("Volume (measure attractor, ray-marched)", nullptr, s.previewMode == PreviewMode::Volume))
+        s.previewMode = PreviewMode::Volume;
       ImGui::EndMenu();
     }
     if (ImGui::MenuItem(s.previewPaused ? "Resume preview" : "Pause preview", "Space")) s.previewPaused = !s.previewPaused;

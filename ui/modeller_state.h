@@ -17,7 +17,7 @@
 namespace gridifs::ui {
 
 /// What the preview shows; later modes (flame display, deterministic mesh) join this list.
-enum class PreviewMode { ZBuffer, Flame, Mesh, Shaded };  // Mesh: F^n(A)
+enum class PreviewMode { ZBuffer, Flame, Mesh, Shaded, Volume };  // Mesh: F^n(A); Volume: the measure attractor
 
 class ModellerState {
  public:
@@ -93,6 +93,8 @@ class ModellerState {
   RenderStats previewStats;
   std::string previewDevice = "cpu";  // which renderer fills the preview ("cpu", "gpu (...)")
   std::string previewError;
+  /// The volume mode's progress for the status line ("" in the other modes).
+  std::string volumeStatus;
   /// Key presses since the last frame, recorded by a GLFW callback: ImGui 1.86 has no input
   /// queue, so a press and release within one frame would otherwise be lost.
   struct KeyPress {

@@ -16,6 +16,8 @@ const char* modeName(PreviewMode mode) {
       return "mesh";
     case PreviewMode::Shaded:
       return "shaded";
+    case PreviewMode::Volume:
+      return "volume";
     default:
       return "zbuffer";
   }
@@ -28,7 +30,7 @@ void PreviewModes::syncFromProject(ModellerState& state) {
   // undo, open and the menu all agree with the toolbar; the mesh mode is a view of the UI only.
   const DisplayMode pm = state.document.project().render.mode;
   if (!synced_ || pm != projectMode_) {
-    if (state.previewMode != PreviewMode::Mesh)
+    if (state.previewMode != PreviewMode::Mesh && state.previewMode != PreviewMode::Volume)
       state.previewMode = pm == DisplayMode::Flame    ? PreviewMode::Flame
                           : pm == DisplayMode::Shaded ? PreviewMode::Shaded
                                                       : PreviewMode::ZBuffer;
@@ -56,9 +58,13 @@ void PreviewModes::buildToolbar(ModellerState& state, EditQueue& edits) {
   ImGui::SameLine();
   modeButton("Mesh F^n(A)", PreviewMode::Mesh, "preview.mode.mesh",
              "The deterministic algorithm (Gröller & Wegenkittl 1994, §3.2): n levels of the IFS applied to a cube or sphere");
+  ImGui::SameLine();
+  modeButton("Volume", PreviewMode::Volume, "preview.mode.volume",
+             "The measure attractor (Sokolov & Gentil, §3.4) as a density volume, ray-marched with one light and "
+             "self-shadowing; it fills while the iteration runs and starts again on every edit");
   // Menu (View > Preview mode) and toolbar both land here: z-buffer/flame become one undo step
   // on render.mode.
-  if (state.previewMode != PreviewMode::Mesh) {
+  if (state.previewMode != PreviewMode::Mesh && state.previewMode != PreviewMode::Volume) {
     const DisplayMode want = state.previewMode == PreviewMode::Flame    ? DisplayMode::Flame
                              : state.previewMode == PreviewMode::Shaded ? DisplayMode::Shaded
                                                                         : DisplayMode::ZBuffer;
@@ -70,13 +76,17 @@ void PreviewModes::buildToolbar(ModellerState& state, EditQueue& edits) {
       projectMode_ = want;
     }
   }
-  if (state.previewMode == PreviewMode::Flame) {
-    ImGui::SameLine(0.0f, ImGui::GetFontSize());
+  // The mode's controls on a row of their own under the switch, kept (empty) in the modes without
+  // controls: the image below keeps its size when the mode changes, so the chaos game does not
+  // restart, and five modes and their controls do not fit one row of a narrow preview.
+  if (state.previewMode == PreviewMode::Flame)
     drawFlameControls(state, edits);
-  } else if (state.previewMode == PreviewMode::Mesh) {
-    ImGui::SameLine(0.0f, ImGui::GetFontSize());
+  else if (state.previewMode == PreviewMode::Mesh)
     drawMeshControls(state);
-  }
+  else if (state.previewMode == PreviewMode::Volume)
+    drawVolumeControls(state);
+  else
+    ImGui::Dummy(ImVec2(1.0f, ImGui::GetFrameHeight()));
 }
 
 void PreviewModes::drawMeshControls(ModellerState& state) {
@@ -118,6 +128,9 @@ bool PreviewModes::updateTexture(ModellerState& state, const RenderImage& image,
   switch (state.previewMode) {
     case PreviewMode::Mesh:
       if (modeChanged) meshDirty_ = true;
+      return false;
+    case PreviewMode::Volume:
+      if (modeChanged) volumeDirty_ = true;
       return false;
     case PreviewMode::Shaded: {
       // Developing is a pass over the z-buffer (core/render/shaded_image.h): light, occlusion and
@@ -173,9 +186,63 @@ bool PreviewModes::drawMesh(ModellerState& state, RenderTarget& target, int widt
   return true;
 }
 
+bool PreviewModes::drawVolume(ModellerState& state, RenderTarget& target, ViewRenderer& renderer, int width, int height,
+                              bool visible, bool moving) {
+  if (state.previewMode != PreviewMode::Volume) {
+    state.volumeStatus.clear();
+    volume_.suspend();
+    return false;
+  }
+  volume_.update(state.document, state.renderThreads);
+  if (volume_.upload()) volumeDirty_ = true;
+  char status[96];
+  if (!volume_.error().empty())
+    std::snprintf(status, sizeof status, "volume: failed");
+  else if (volume_.setIteration())
+    std::snprintf(status, sizeof status, "volume %lld/%lld iterations", static_cast<long long>(volume_.done()),
+                  static_cast<long long>(volume_.total()));
+  else
+    std::snprintf(status, sizeof status, "volume %.3gM/%.3gM points", double(volume_.done()) / 1e6,
+                  double(volume_.total()) / 1e6);
+  state.volumeStatus = status;
+  const Project& p = state.document.project();
+  const glm::ivec2 size(width, height);
+  if (!visible) return true;
+  if (!volumeDirty_ && size == volumeSize_ && state.document.revision() == volumeRevision_ &&
+      volume_.view.densityScale == volumeScale_ && moving == volumeMoving_)
+    return true;
+  // An N³ volume has no detail finer than a few pixels per voxel: the ray march runs at most
+  // 8 pixels per voxel across (4 while the camera moves) and is scaled up, which keeps software
+  // GL responsive and costs nothing visible.
+  const int side = std::max({width, height, 1});
+  const int cap = std::max(volume_.resolution(), kVolumePreviewResolutions[0]) * (moving ? 4 : 8);
+  const double scale = std::min(1.0, double(cap) / double(side));
+  const int lw = std::max(1, int(std::lround(width * scale))), lh = std::max(1, int(std::lround(height * scale)));
+  volumeTarget_.resize(lw, lh);
+  glBindTexture(GL_TEXTURE_2D, volumeTarget_.texture());
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  volume_.draw(volumeTarget_, p);
+  target.resize(width, height);
+  renderer.drawImage(target, volumeTarget_.texture(), lw, lh, glm::vec3(p.render.background));
+  volumeMoving_ = moving;
+  volumeSize_ = size;
+  volumeRevision_ = state.document.revision();
+  volumeScale_ = volume_.view.densityScale;
+  volumeDirty_ = false;
+  return true;
+}
+
+std::string PreviewModes::overlayMessage(const ModellerState& state) const {
+  if (state.previewMode == PreviewMode::Volume && !volume_.error().empty()) return "Volume: " + volume_.error();
+  return {};
+}
+
 bool PreviewModes::busy() const {
   if (shownMode_ == PreviewMode::Flame) return flame_.developer().busy();
   if (shownMode_ == PreviewMode::Mesh) return mesh_.building();
+  if (shownMode_ == PreviewMode::Volume) return volume_.computing();
   return false;
 }
 
@@ -192,7 +259,15 @@ nlohmann::json PreviewModes::probeJson() const {
           {"mesh_building", mesh_.building()},
           {"mesh_error", mesh_.error()},
           {"shaded_develops", shadedDevelops_},
-          {"shaded_error", shadedError_}};
+          {"shaded_error", shadedError_},
+          {"volume_computing", volume_.computing()},
+          {"volume_finished", volume_.finished()},
+          {"volume_done", volume_.done()},
+          {"volume_total", volume_.total()},
+          {"volume_resolution", volume_.resolution()},
+          {"volume_restarts", volume_.restarts()},
+          {"volume_uploads", volume_.uploads()},
+          {"volume_error", volume_.error()}};
 }
 
 }  // namespace gridifs::ui

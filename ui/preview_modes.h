@@ -1,6 +1,6 @@
 #pragma once
 // The preview's display modes (z-buffer | flame | shaded over the same chaos game |
-// the deterministic mesh F^n(A)), owned by PreviewView: a second toolbar row with the mode switch
+// the deterministic mesh F^n(A) | the ray-marched measure attractor), owned by PreviewView: a second toolbar row with the mode switch
 // and the mode's controls, and what the preview texture shows in each mode.
 #include <imgui.h>
 
@@ -15,6 +15,8 @@
 #include "ui/gl_resources.h"
 #include "ui/mesh_preview.h"
 #include "ui/modeller_state.h"
+#include "ui/view_renderer.h"
+#include "ui/volume_preview.h"
 
 namespace gridifs::ui {
 
@@ -44,6 +46,13 @@ class PreviewModes {
   /// In mesh mode, builds (on the worker) and draws F^n(A) into `target`; `force` redraws.
   /// Returns false when the current mode is not the mesh.
   bool drawMesh(ModellerState& state, RenderTarget& target, int width, int height, bool visible);
+  /// In volume mode, uploads the newest partial volume and ray-marches it into `target`.
+  /// Returns false when the current mode is not the volume.
+  /// `moving`: the camera is being dragged (a coarser picture keeps the orbit fluid).
+  bool drawVolume(ModellerState& state, RenderTarget& target, ViewRenderer& renderer, int width, int height,
+                  bool visible, bool moving);
+  /// A message to show over the preview image ("" when none): why the volume cannot be shown.
+  std::string overlayMessage(const ModellerState& state) const;
   /// Whether a develop or a mesh build is under way (the window keeps animating).
   bool busy() const;
   /// State for the GUI tests' probe file.
@@ -53,9 +62,18 @@ class PreviewModes {
   void syncFromProject(ModellerState& state);
   void drawFlameControls(ModellerState& state, EditQueue& edits);  // flame_controls.cpp
   void drawMeshControls(ModellerState& state);
+  void drawVolumeControls(ModellerState& state);  // volume_controls.cpp
 
   FlameDisplay flame_;
   MeshPreview mesh_;
+  VolumePreview volume_;
+  // What the volume target shows, to redraw only on change.
+  std::uint64_t volumeRevision_ = 0;  // Document::revision(): any edit redraws (light, background, palette)
+  glm::ivec2 volumeSize_{0, 0};
+  float volumeScale_ = -1.0f;
+  bool volumeMoving_ = false;
+  RenderTarget volumeTarget_;  // the ray march at a resolution fitted to the volume's, then scaled up
+  bool volumeDirty_ = true;
   PaletteCatalog palettes_;
   std::string paletteError_;
   std::string checkedPalette_;

@@ -78,12 +78,20 @@ void PreviewView::build(ModellerState& state, EditQueue& edits, float framebuffe
                          ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight | ImGuiButtonFlags_MouseButtonMiddle);
   state.probe.item("preview.image");
   const bool hovered = ImGui::IsItemHovered();
-  if (!state.previewError.empty())
+  // The volume mode does not show the chaos game (which cannot run a median function's sets).
+  if (!state.previewError.empty() && state.previewMode != PreviewMode::Volume)
     ImGui::GetWindowDrawList()->AddText(ImVec2(origin.x + 8, origin.y + 8), IM_COL32(255, 120, 100, 255),
                                         state.previewError.c_str());
+  if (const std::string message = modes_.overlayMessage(state); !message.empty()) {
+    ImGui::GetWindowDrawList()->AddText(nullptr, 0.0f, ImVec2(origin.x + 8, origin.y + 8 + ImGui::GetFontSize() * 1.4f),
+                                        IM_COL32(255, 120, 100, 255), message.c_str(), nullptr, float(size_.x) - 16.0f);
+    state.probe.item("preview.message");
+  }
 
   ImGuiIO& io = ImGui::GetIO();
-  const bool shaded = state.previewMode == PreviewMode::Shaded && !project.render.shading.lights.empty();
+  // The volume mode is lit by the same key light: Alt+drag turns it there too.
+  const bool shaded = (state.previewMode == PreviewMode::Shaded || state.previewMode == PreviewMode::Volume) &&
+                      !project.render.shading.lights.empty();
   if (shaded) drawLightGizmo(state, origin);
   if (hovered)
     state.contextHelp = shaded ? "Drag: orbit · middle/Shift+drag: pan · wheel: zoom · Alt+drag: move the key light"
@@ -166,8 +174,10 @@ void PreviewView::drawLightGizmo(ModellerState& state, ImVec2 origin) const {
 }
 
 void PreviewView::publish(ModellerState& state) {
-  // The mesh mode shows F^n(A) instead: the chaos game waits (same generation) so the mesh builds faster.
-  renderer_.setPaused(state.previewPaused || state.previewMode == PreviewMode::Mesh);
+  // The mesh and volume modes show F^n(A) or the measure attractor instead: the chaos game waits
+  // (same generation) so that their own workers have the cores.
+  renderer_.setPaused(state.previewPaused || state.previewMode == PreviewMode::Mesh ||
+                      state.previewMode == PreviewMode::Volume);
   const int w = int(std::lround(size_.x * framebufferScale_)), h = int(std::lround(size_.y * framebufferScale_));
   renderer_.publish(state.document, w, h, state.renderThreads);
   state.previewError = renderer_.error().empty() ? std::string() : "Preview stopped: " + renderer_.error();
@@ -189,6 +199,10 @@ void PreviewView::render(ModellerState& state, ViewRenderer& renderer) {
   const int w = int(std::lround(size_.x * framebufferScale_)), h = int(std::lround(size_.y * framebufferScale_));
   if (modes_.drawMesh(state, target_, w, h, visible_)) {  // F^n(A) drawn into the view's target
     needsDraw_ = true;  // the image is drawn again when the mode changes back
+    return;
+  }
+  if (modes_.drawVolume(state, target_, renderer, w, h, visible_, dragging())) {  // the ray-marched measure attractor
+    needsDraw_ = true;
     return;
   }
   const Vec3 bg = state.document.project().render.background;
