@@ -18,10 +18,10 @@
 #include <thread>
 #include <vector>
 
+#include "flame/palette.h"
 #include "render/camera.h"
 #include "render/compiled_ifs.h"
 #include "render/light_view.h"
-#include "flame/palette.h"
 #include "render/renderer.h"
 
 namespace gridifs {
@@ -97,7 +97,10 @@ struct RenderStats {
   double seconds = 0.0;          // wall time since the generation started (excluding pauses)
   double pointsPerSecond = 0.0;  // samples / seconds
   bool paused = false;
-  bool done = false;             // the budget is exhausted (never for an unlimited job)
+  bool done = false;  // the budget is exhausted (never for an unlimited job)
+  /// This generation kept the camera's buffers of the one before (only shadowed lights changed)
+  /// and re-fills only the changed lights' buffers; `samples` counts the camera's samples.
+  bool keptCamera = false;
   double badFraction() const { return samples > 0 ? double(badSamples) / double(samples) : 0.0; }
   double progress() const { return budget > 0 ? double(samples) / double(budget) : 0.0; }
 };
@@ -106,12 +109,12 @@ struct RenderStats {
 /// reallocating.
 struct RenderImage {
   int width = 0, height = 0;
-  std::vector<std::uint8_t> rgba;        // 4 per pixel: depth-cued colour over the background;
-                                         // alpha 255 where a point was plotted, else 0
-  std::vector<float> depth;              // view depth of the nearest point; +inf where none
-  std::vector<std::uint32_t> density;    // hits per pixel (saturating)
-  std::vector<float> colorSums;          // 4 per pixel (Σr, Σg, Σb, Σc) when job.accumulateColor, else empty
-  std::int64_t hitPixels = 0;            // pixels with at least one point
+  std::vector<std::uint8_t> rgba;          // 4 per pixel: depth-cued colour over the background;
+                                           // alpha 255 where a point was plotted, else 0
+  std::vector<float> depth;                // view depth of the nearest point; +inf where none
+  std::vector<std::uint32_t> density;      // hits per pixel (saturating)
+  std::vector<float> colorSums;            // 4 per pixel (Σr, Σg, Σb, Σc) when job.accumulateColor, else empty
+  std::int64_t hitPixels = 0;              // pixels with at least one point
   float minDepth = 0.0f, maxDepth = 0.0f;  // depth range of the hit pixels
   std::uint64_t generation = 0;
   RenderStats stats;
@@ -142,7 +145,11 @@ class ChaosRenderer : public Renderer {
   ChaosRenderer& operator=(const ChaosRenderer&) = delete;
 
   /// Starts rendering `ifs` with `job` as a new generation and returns its number. Points of older
-  /// generations never reach an image of this one. Throws ModelError when the job is invalid
+  /// generations never reach an image of this one, with one exception that changes no pixel: when
+  /// only job.shadowLights differ from the current generation's job (same `ifs` object), the
+  /// workers keep the camera's buffers and the unchanged lights' buffers and replay their chains
+  /// into the changed lights' buffers only (stats().keptCamera); the result is the same, bit for
+  /// bit, as a render from scratch. Throws ModelError when the job is invalid
   /// (validateRenderJob) or `ifs` is null; the previous generation keeps running in that case.
   std::uint64_t restart(std::shared_ptr<const CompiledIfs> ifs, const RenderJob& job) override;
   /// Stops the workers (joins them) and forgets the current generation's buffers' validity.
