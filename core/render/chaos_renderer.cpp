@@ -102,10 +102,12 @@ struct PreparedJob {
   PreparedJob& operator=(const PreparedJob&) = delete;
 };
 
-/// Whether `next` plots the same camera buffers as `previous` (everything but the shadowed lights
-/// equal), so that a restart can keep them. Free-form IFSs plot no light buffers.
+/// Whether `next` plots the same camera buffers as `previous` and differs only in the shadowed
+/// lights, so that a restart can keep the camera's buffers. Free-form IFSs plot no light buffers.
+/// An identical job is rendered again (a benchmark's or a caller's explicit restart).
 bool sameCameraPass(const PreparedJob& previous, const PreparedJob& next) {
   const RenderJob &a = previous.job, &b = next.job;
+  if (a.shadowLights == b.shadowLights) return false;
   const bool samePalette = a.palette == b.palette || (a.palette && b.palette && *a.palette == *b.palette);
   return previous.ifs == next.ifs && !next.hotIfs.barycentricBlocks && a.camera == b.camera && a.width == b.width &&
          a.height == b.height && a.samples == b.samples && a.seed == b.seed && a.skip == b.skip &&
