@@ -1,6 +1,6 @@
 #pragma once
 // Internal to the renderer: the plotter of the shaded display. Each chaos-game sample is plotted
-// into the camera's z-buffer as ZBufferPlot does and, in the same step, into one depth buffer per
+// into the camera's z-buffer as ZBufferPlot does and, a chunk of samples later, into one depth buffer per
 // shadowed light (one extra projection per sample and light: Williams 1978, shadow maps filled by
 // the samples themselves). Depth of field moves each sample, before the camera plot, by a random
 // point of a disc of radius aperture · |depth − focus| in the image plane — a chaos-game effect
@@ -44,59 +44,61 @@ struct HotLens {
   float aperture = 0.0f, focus = 0.0f;
 };
 
-/// The light half of the shaded plotter: one projection and one depth minimum per sample and
-/// light. On its own it is the plotter of a light-only pass (the chaos game replayed to re-fill
-/// the buffers of lights that moved, the camera's buffers kept).
+/// The light half of the shaded plotter. Samples are collected in chunks and projected into each
+/// light's map a chunk at a time, away from the chaos game's loop: the loop only stores the point,
+/// and the projection runs as a tight loop per light that prefetches every texel of the chunk before
+/// it writes any (the maps are larger than the caches; a minimum does not depend on the order, so
+/// the maps are those of plotting sample by sample). On its own it is the plotter of a light-only
+/// pass (the chaos game replayed to re-fill the maps of lights that moved, the camera's buffers kept).
 struct LightPlot {
   HotLight lights[kMaxShadowLights] = {};
   int lightCount = 0;
   float lightSize = 0.0f;  // texels per side
   std::uint32_t lightStride = 0;
 
-  /// Light-buffer writes are deferred behind a prefetch as the camera's are (the maps are larger
-  /// than the caches); the minimum does not depend on the order.
-  static constexpr unsigned kDefer = 8;
-  struct Pending {
-    std::uint16_t* texel = nullptr;
-    std::uint16_t key = 0;
-  };
-  Pending pending[kDefer] = {};
-  unsigned next = 0;
+  static constexpr int kChunk = 256;
+  v4f points[kChunk];
+  int count = 0;
 
-  [[gnu::always_inline]] static void commit(std::uint16_t* texel, std::uint16_t key) {
-    std::atomic_ref<std::uint16_t> z(*texel);
-    if (key < z.load(std::memory_order_relaxed)) z.store(key, std::memory_order_relaxed);
-  }
-
-  void flush() {
-    for (Pending& p : pending)
-      if (p.texel) {
-        commit(p.texel, p.key);
-        p.texel = nullptr;
-      }
-  }
-
-  [[gnu::always_inline]] void plotLight(const HotLight& light, v4f q) {
-    const v4f r = light.cx * splat<0>(q) + light.cy * splat<1>(q) + light.cz * splat<2>(q) + light.c1;
+  /// Projects the collected points into every light's map.
+  void drain() {
+    std::uint32_t texels[kChunk];
+    std::uint16_t keys[kChunk];
     const v4f size = {lightSize, lightSize, 1.0f, 1.0f};
-    if ((laneMask((r >= v4f{}) & (r < size)) & 3) != 3) return;  // NaN fails too
-    const v4i iuv = __builtin_convertvector(r, v4i);
-    std::uint16_t* texel = light.depth + std::size_t(std::uint32_t(iuv[1])) * lightStride + std::uint32_t(iuv[0]);
-    // Clamped for rounding at the sphere's edges; truncation stores a step nearer the light.
-    const float depth = std::min(std::max(r[2], 0.0f), kLightSteps);
-    __builtin_prefetch(texel, 1);
-    Pending& slot = pending[next++ % kDefer];
-    if (slot.texel) commit(slot.texel, slot.key);
-    slot = {texel, std::uint16_t(depth)};
+    for (int l = 0; l < lightCount; ++l) {
+      const HotLight& light = lights[l];
+      int m = 0;
+      for (int i = 0; i < count; ++i) {
+        const v4f q = points[i];
+        const v4f r = light.cx * splat<0>(q) + light.cy * splat<1>(q) + light.cz * splat<2>(q) + light.c1;
+        const bool inside = (laneMask((r >= v4f{}) & (r < size)) & 3) == 3;  // NaN fails too
+        const v4i iuv = __builtin_convertvector(inside ? r : v4f{}, v4i);
+        texels[m] = std::uint32_t(iuv[1]) * lightStride + std::uint32_t(iuv[0]);
+        // Clamped for rounding at the sphere's edges; truncation stores a step nearer the light.
+        keys[m] = std::uint16_t(std::min(std::max(r[2], 0.0f), kLightSteps));
+        __builtin_prefetch(light.depth + texels[m], 1);
+        m += inside;
+      }
+      for (int i = 0; i < m; ++i) {
+        std::atomic_ref<std::uint16_t> z(light.depth[texels[i]]);
+        if (keys[i] < z.load(std::memory_order_relaxed)) z.store(keys[i], std::memory_order_relaxed);
+      }
+    }
+    count = 0;
   }
 
-  [[gnu::always_inline]] void plotAll(v4f q) {
-    for (int l = 0; l < lightCount; ++l) plotLight(lights[l], q);
+  void flush() { drain(); }
+
+  [[gnu::always_inline]] void add(v4f q) {
+    if (lightCount == 0) return;
+    points[count++] = q;
+    if (count == kChunk) [[unlikely]]
+      drain();
   }
 
   /// As a plotter of its own (the light-only pass): every sample counts as plotted.
   [[gnu::always_inline]] int operator()(v4f q, v4f) {
-    plotAll(q);
+    add(q);
     return 1;
   }
 };
@@ -115,7 +117,7 @@ struct ShadedPlot {
   }
 
   [[gnu::always_inline]] int operator()(v4f q, v4f col) {
-    light.plotAll(q);  // before the lens: the light buffers do not depend on it
+    light.add(q);  // before the lens: the light buffers do not depend on it
     if (jitter) {
       const v4f d = lens.depthRow * q;
       const float depth = d[0] + d[1] + d[2] + lens.depthRow[3];
