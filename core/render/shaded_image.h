@@ -56,7 +56,7 @@ void developShaded(const RenderImage& snapshot, const ShadingSettings& settings,
 /// The display settings a shaded snapshot must be taken with: the background, no depth cueing.
 DisplaySettings shadedDisplaySettings(const Project& project);
 
-/// The shadow map size for an image: its longer side, between 256 and 2048 texels.
+/// The shadow map size for an image: half its longer side, between 256 and 2048 texels.
 int shadowMapSize(int width, int height);
 
 /// Adds the shaded display's chaos-game inputs to `job`: one light view per light with shadows
