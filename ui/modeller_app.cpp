@@ -316,6 +316,7 @@ void ModellerApp::writeProbe(double frameMs) {
   j["modal"] = files_.modalOpen();
   const RenderStats& s = state_.previewStats;
   j["preview"] = {{"samples", s.samples}, {"generation", s.generation}, {"done", s.done}, {"paused", s.paused},
+                  {"kept_camera", s.keptCamera},
                   {"restarts", preview_.restarts()}, {"hit_pixels", preview_.image().hitPixels},
                   {"image_generation", preview_.image().generation}, {"device", state_.previewDevice}};
   nlohmann::json rects = nlohmann::json::object();

@@ -140,7 +140,8 @@ bool PreviewModes::updateTexture(ModellerState& state, const RenderImage& image,
                                    !(p.render.background == developedBackground_);
       if ((fetched || modeChanged || settingsChanged) && image.width > 0) {
         try {
-          developShaded(image, p.render.shading, p.camera, p.render.background, state.renderThreads, shaded_);
+          developShaded(image, p.render.shading, p.camera, p.render.background, state.renderThreads, shaded_,
+                        ShadedChannels::Display);
           shadedError_.clear();
         } catch (const std::exception& e) {
           shadedError_ = e.what();

@@ -53,13 +53,18 @@ void PreviewRenderer::publish(const Document& document, int width, int height, i
   // looked up per sample, so it is a render input.
   const bool sameInput =
       now.geometry == published_.geometry && now.render == published_.render && now.camera == published_.camera;
+  const bool sameGeometry = havePublished_ && ifs_ && now.geometry == published_.geometry;
   published_ = now;
   if (havePublished_ && sameInput && width == width_ && height == height_ && threads == threads_) return;
   try {
     // Condensation sets read from files are sampled from 128³ voxels beside the project: coarser
     // than the CLI's 256³, so an edit restarts the preview quickly.
     const std::filesystem::path folder = document.path().parent_path().empty() ? "." : document.path().parent_path();
-    auto ifs = compileIfs(document.project(), document.evaluation(), makeCondensationSampler(document.project(), folder, 128));
+    // The same compiled IFS while the functions are unchanged: a restart that then changes only
+    // the shadowed lights keeps the camera's buffers (ChaosRenderer::restart).
+    auto ifs = sameGeometry ? ifs_
+                            : compileIfs(document.project(), document.evaluation(),
+                                         makeCondensationSampler(document.project(), folder, 128));
     RenderJob job = RenderJob::fromProject(project, threads);
     job.width = width;
     job.height = height;
@@ -79,12 +84,15 @@ void PreviewRenderer::publish(const Document& document, int width, int height, i
 #else
     renderer_->restart(ifs, job);
 #endif
+    ifs_ = ifs;
     if (paused_) renderer_->pause();
     ++restarts_;
     running_ = true;
     error_.clear();
   } catch (const ModelError& e) {
-    // Keep showing the last image; the artist sees why in the status bar.
+    // Keep showing the last image; the artist sees why in the status bar. The next restart
+    // compiles again (this one may have failed to compile what is now published).
+    ifs_.reset();
     havePublished_ = true;
     width_ = width;
     height_ = height;

@@ -40,6 +40,7 @@ class PreviewRenderer {
 
  private:
   std::unique_ptr<Renderer> renderer_;
+  std::shared_ptr<const CompiledIfs> ifs_;  // the last one restarted with
   std::string device_ = "cpu";
   std::uint64_t revision_ = 0;
   Revisions published_{0, 0, 0, 0};  // the document's revisions at the last publish

@@ -52,6 +52,10 @@ struct PreparedJob {
   RenderJob job;
   std::vector<kernel::v4f> palette;  // 257 entries when job.palette is set
   kernel::HotLens lens;
+  /// Generations with the same epoch share the camera's buffers: a restart that changes only the
+  /// shadowed lights keeps the epoch (ChaosRenderer::restart), and a worker that holds that epoch's
+  /// buffers keeps them and re-fills only the light buffers that changed.
+  std::uint64_t cameraEpoch = 0;
 
   bool shaded() const { return !job.shadowLights.empty() || job.dofAperture > 0.0; }
 
@@ -98,6 +102,19 @@ struct PreparedJob {
   PreparedJob& operator=(const PreparedJob&) = delete;
 };
 
+/// Whether `next` plots the same camera buffers as `previous` and differs only in the shadowed
+/// lights, so that a restart can keep the camera's buffers. Free-form IFSs plot no light buffers.
+/// An identical job is rendered again (a benchmark's or a caller's explicit restart).
+bool sameCameraPass(const PreparedJob& previous, const PreparedJob& next) {
+  const RenderJob &a = previous.job, &b = next.job;
+  if (a.shadowLights == b.shadowLights) return false;
+  const bool samePalette = a.palette == b.palette || (a.palette && b.palette && *a.palette == *b.palette);
+  return previous.ifs == next.ifs && !next.hotIfs.barycentricBlocks && a.camera == b.camera && a.width == b.width &&
+         a.height == b.height && a.samples == b.samples && a.seed == b.seed && a.skip == b.skip &&
+         a.threads == b.threads && a.accumulateColor == b.accumulateColor && samePalette &&
+         a.dofAperture == b.dofAperture && a.dofFocus == b.dofFocus;
+}
+
 }  // namespace
 
 struct ChaosRenderer::Shared {
@@ -116,9 +133,15 @@ struct ChaosRenderer::Worker {
   int index = 0;
   std::vector<kernel::PixelCell> cells;
   std::vector<float> colorSums;
-  /// One depth buffer per shadowed light (float bits, ~0u where empty), and the lens samples.
-  std::vector<std::uint32_t> lightDepth[kernel::kMaxShadowLights];
+  /// One depth buffer per shadowed light (kernel::kLightEmpty where empty), the light view each was
+  /// filled for, and whether it holds every sample the camera's buffers hold; the lens samples.
+  std::vector<std::uint16_t> lightDepth[kernel::kMaxShadowLights];
+  LightView lightViews[kernel::kMaxShadowLights];
+  bool lightComplete[kernel::kMaxShadowLights] = {};
+  int lightCount = 0;
   kernel::Rng lensRng;
+  /// The camera epoch (PreparedJob::cameraEpoch) of `cells` and `colorSums`; 0: none yet.
+  std::uint64_t cameraEpoch = 0;
   /// The generation the buffers and counters belong to; 0 while they are being reset.
   std::atomic<std::uint64_t> bufferGeneration{0};
   alignas(64) std::atomic<std::int64_t> samples{0};
@@ -135,12 +158,50 @@ struct ChaosRenderer::Worker {
     for (int l = 0; l < kernel::kMaxShadowLights; ++l) {
       if (l < int(job.shadowLights.size())) {
         const std::size_t size = std::size_t(job.shadowLights[std::size_t(l)].size());
-        lightDepth[l].assign(size * size, ~0u);
+        lightDepth[l].assign(size * size, kernel::kLightEmpty);
+        lightViews[l] = job.shadowLights[std::size_t(l)];
+        lightComplete[l] = true;  // as complete as the (empty) camera buffers
       } else {
-        std::vector<std::uint32_t>().swap(lightDepth[l]);
+        std::vector<std::uint16_t>().swap(lightDepth[l]);
       }
     }
+    lightCount = int(job.shadowLights.size());
     lensRng = kernel::Rng::forStream(job.seed ^ 0x1E45D0F5A1E7ull, std::uint64_t(index));
+  }
+
+  /// Keeps the camera's buffers for `views`: a buffer whose light view is unchanged moves to its
+  /// new place, every other light gets an empty buffer that is not complete. Returns whether any
+  /// buffer was emptied (the light-only pass must then start over from the chain's beginning).
+  bool adoptLights(const std::vector<LightView>& views) {
+    std::vector<std::uint16_t> oldDepth[kernel::kMaxShadowLights];
+    LightView oldViews[kernel::kMaxShadowLights];
+    bool oldComplete[kernel::kMaxShadowLights] = {}, taken[kernel::kMaxShadowLights] = {};
+    const int oldCount = lightCount;
+    for (int l = 0; l < oldCount; ++l) {
+      oldDepth[l].swap(lightDepth[l]);
+      oldViews[l] = lightViews[l];
+      oldComplete[l] = lightComplete[l];
+    }
+    bool emptied = false;
+    for (int l = 0; l < int(views.size()); ++l) {
+      const LightView& view = views[std::size_t(l)];
+      int match = -1;
+      for (int j = 0; j < oldCount && match < 0; ++j)
+        if (!taken[j] && oldViews[j] == view) match = j;
+      lightViews[l] = view;
+      if (match >= 0) {
+        taken[match] = true;
+        lightDepth[l].swap(oldDepth[match]);
+        lightComplete[l] = oldComplete[match];
+      } else {
+        lightDepth[l].assign(std::size_t(view.size()) * std::size_t(view.size()), kernel::kLightEmpty);
+        lightComplete[l] = false;
+        emptied = true;
+      }
+    }
+    for (int l = int(views.size()); l < kernel::kMaxShadowLights; ++l) std::vector<std::uint16_t>().swap(lightDepth[l]);
+    lightCount = int(views.size());
+    return emptied;
   }
 };
 
@@ -165,6 +226,21 @@ GRIDIFS_KERNEL_CLONES void runBatchColor(kernel::ChainState& chain, const Prepar
   runBatchImpl<true>(chain, job, w, count, counters);
 }
 
+/// The light half of the plotter for the worker's buffers: every light, or (onlyIncomplete) the
+/// lights whose buffers the light-only pass is re-filling.
+kernel::LightPlot lightPlot(const PreparedJob& job, ChaosRenderer::Worker& w, bool onlyIncomplete) {
+  kernel::LightPlot plot;
+  for (int l = 0; l < int(job.job.shadowLights.size()); ++l)
+    if (!onlyIncomplete || !w.lightComplete[l])
+      plot.lights[plot.lightCount++] =
+          kernel::makeHotLight(job.job.shadowLights[std::size_t(l)], w.lightDepth[l].data());
+  if (!job.job.shadowLights.empty()) {
+    plot.lightSize = float(job.job.shadowLights[0].size());
+    plot.lightStride = std::uint32_t(job.job.shadowLights[0].size());
+  }
+  return plot;
+}
+
 template <bool kColor>
 [[gnu::always_inline]] inline void runShadedImpl(kernel::ChainState& chain, const PreparedJob& job,
                                                  ChaosRenderer::Worker& w, std::int64_t count,
@@ -172,13 +248,7 @@ template <bool kColor>
   kernel::ShadedPlot<kColor> plot;
   plot.camera = kernel::ZBufferPlot<kColor>{job.camera, w.cells.data(), w.colorSums.data(),
                                             job.palette.empty() ? nullptr : job.palette.data()};
-  plot.lightCount = int(job.job.shadowLights.size());
-  for (int l = 0; l < plot.lightCount; ++l)
-    plot.lights[l] = kernel::makeHotLight(job.job.shadowLights[std::size_t(l)], w.lightDepth[l].data());
-  if (plot.lightCount > 0) {
-    plot.lightSize = float(job.job.shadowLights[0].size());
-    plot.lightStride = std::uint32_t(job.job.shadowLights[0].size());
-  }
+  plot.light = lightPlot(job, w, false);
   plot.lens = job.lens;
   plot.jitter = job.job.dofAperture > 0.0;
   plot.rng = w.lensRng;
@@ -195,6 +265,13 @@ GRIDIFS_KERNEL_CLONES void runBatchShadedColor(kernel::ChainState& chain, const 
                                                ChaosRenderer::Worker& w, std::int64_t count,
                                                kernel::ChainCounters& counters) {
   runShadedImpl<true>(chain, job, w, count, counters);
+}
+
+/// A batch of the light-only pass: the same chain, projected only into the lights being re-filled.
+GRIDIFS_KERNEL_CLONES void runLightBatch(kernel::ChainState& chain, const PreparedJob& job, ChaosRenderer::Worker& w,
+                                         std::int64_t count, kernel::ChainCounters& counters) {
+  kernel::LightPlot plot = lightPlot(job, w, true);
+  kernel::runChain(chain, job.hotIfs, count, plot, counters);
 }
 
 /// A free-form IFS's batch (barycentric_kernel.h); kept out of the grid kernel's clones.
@@ -227,13 +304,20 @@ void workerMain(std::shared_ptr<ChaosRenderer::Shared> shared, ChaosRenderer::Wo
   kernel::ChainState chain;
   auto bary = std::make_unique<kernel::BarycentricState>();  // used by free-form IFSs only
   kernel::ChainCounters counters;
+  // The light-only pass: the chain replayed from its start up to `replayTarget` (the samples in
+  // the camera's buffers), plotting only into the lights being re-filled; the chain is then where
+  // it was, and the render goes on plotting everywhere. A chain's samples depend only on (seed,
+  // worker, skip) and its batch boundaries, which the replay repeats, so the re-filled buffers are
+  // those of a render from scratch.
+  bool replaying = false;
+  std::int64_t replayed = 0, replayTarget = 0;
   for (;;) {
     bool fresh = false;
     {
       std::unique_lock lock(shared->mutex);
       shared->wake.wait(lock, [&] {
         return shared->quit.load() || shared->generation.load() != myGeneration ||
-               (remaining > 0 && !shared->paused.load());
+               ((remaining > 0 || replaying) && !shared->paused.load());
       });
       if (shared->quit.load()) return;
       if (shared->generation.load() != myGeneration) {
@@ -249,21 +333,45 @@ void workerMain(std::shared_ptr<ChaosRenderer::Shared> shared, ChaosRenderer::Wo
       }
       // Old-generation points stay in buffers that snapshot() ignores from here on.
       w->bufferGeneration.store(0, std::memory_order_release);
-      w->resetBuffers(job->job);
-      w->samples.store(0, std::memory_order_relaxed);
-      w->bad.store(0, std::memory_order_relaxed);
-      w->plotted.store(0, std::memory_order_relaxed);
+      if (job->cameraEpoch == w->cameraEpoch) {
+        // Only shadowed lights changed: keep the camera's buffers, counters and chain.
+        if (w->adoptLights(job->job.shadowLights)) {
+          chain = kernel::ChainState::start(job->job.seed, std::uint64_t(w->index), job->job.skip);
+          replaying = true;
+          replayed = 0;
+          replayTarget = counters.samples;
+        }
+      } else {
+        w->resetBuffers(job->job);
+        w->cameraEpoch = job->cameraEpoch;
+        counters = {};
+        replaying = false;
+        chain = kernel::ChainState::start(job->job.seed, std::uint64_t(w->index), job->job.skip);
+        if (job->hotIfs.barycentricBlocks) bary->start(chain, job->hotIfs);
+      }
+      w->samples.store(counters.samples, std::memory_order_relaxed);
+      w->bad.store(counters.bad, std::memory_order_relaxed);
+      w->plotted.store(counters.plotted, std::memory_order_relaxed);
       w->finishedNs.store(0, std::memory_order_relaxed);
-      counters = {};
-      remaining = workerBudget(job->job, w->index);
-      chain = kernel::ChainState::start(job->job.seed, std::uint64_t(w->index), job->job.skip);
-      if (job->hotIfs.barycentricBlocks) bary->start(chain, job->hotIfs);
+      remaining = workerBudget(job->job, w->index) - counters.samples;
       w->bufferGeneration.store(myGeneration, std::memory_order_release);
     }
-    while (remaining > 0) {
+    while (remaining > 0 || replaying) {
       if (shared->generation.load(std::memory_order_relaxed) != myGeneration ||
           shared->paused.load(std::memory_order_relaxed) || shared->quit.load(std::memory_order_relaxed))
         break;
+      if (replaying) {
+        // The same batch boundaries as the pass that filled the camera's buffers.
+        const std::int64_t n = std::min(replayTarget - replayed, kBatch);
+        kernel::ChainCounters scratch;
+        if (n > 0) runLightBatch(chain, *job, *w, n, scratch);
+        replayed += n;
+        if (replayed >= replayTarget) {
+          replaying = false;
+          for (bool& complete : w->lightComplete) complete = true;
+        }
+        continue;
+      }
       const std::int64_t n = std::min(remaining, kBatch);
       if (job->hotIfs.barycentricBlocks)
         runBarycentricBatch(chain, *bary, *job, *w, n, counters);
@@ -279,7 +387,7 @@ void workerMain(std::shared_ptr<ChaosRenderer::Shared> shared, ChaosRenderer::Wo
       w->bad.store(counters.bad, std::memory_order_relaxed);
       w->plotted.store(counters.plotted, std::memory_order_relaxed);
     }
-    if (remaining == 0 && w->finishedNs.load(std::memory_order_relaxed) == 0) {
+    if (remaining == 0 && !replaying && w->finishedNs.load(std::memory_order_relaxed) == 0) {
       w->finishedNs.store(nowNs(), std::memory_order_release);
       { std::lock_guard lock(shared->mutex); }
       shared->finished.notify_all();
@@ -350,11 +458,11 @@ std::uint64_t renderBufferBytes(const RenderJob& job) {
   const std::uint64_t colour = job.accumulateColor ? 16 : 0;
   const std::uint64_t perWorker = sizeof(kernel::PixelCell) + colour;
   const std::uint64_t snapshot = 4 + 4 + 4 + colour;
-  std::uint64_t lightTexels = 0;  // per worker 4 bytes a texel, and the merged float copy
+  std::uint64_t lightTexels = 0;  // per worker 2 bytes a texel, and the merged float copy
   for (const LightView& light : job.shadowLights)
     lightTexels += std::uint64_t(light.size()) * std::uint64_t(light.size());
   return pixels * (std::uint64_t(std::max(1, job.threads)) * perWorker + 2 * snapshot) +
-         lightTexels * 4 * (std::uint64_t(std::max(1, job.threads)) + 1);
+         lightTexels * (2 * std::uint64_t(std::max(1, job.threads)) + 4);
 }
 
 ChaosRenderer::ChaosRenderer() : shared_(std::make_shared<Shared>()) {}
@@ -384,12 +492,14 @@ void ChaosRenderer::startThreads(int count) {
 std::uint64_t ChaosRenderer::restart(std::shared_ptr<const CompiledIfs> ifs, const RenderJob& job) {
   validateRenderJob(job);
   if (!ifs) throw ModelError("", "there is no compiled IFS to render");
-  auto prepared = std::make_shared<const PreparedJob>(std::move(ifs), job);
+  auto prepared = std::make_shared<PreparedJob>(std::move(ifs), job);
   std::uint64_t generation;
   {
     std::lock_guard lock(shared_->mutex);
-    shared_->job = prepared;
     generation = ++shared_->nextGeneration;
+    const PreparedJob* previous = shared_->job.get();
+    prepared->cameraEpoch = previous && sameCameraPass(*previous, *prepared) ? previous->cameraEpoch : generation;
+    shared_->job = prepared;
     shared_->generation.store(generation);
   }
   if (int(threads_.size()) != job.threads) {
@@ -440,6 +550,7 @@ RenderStats ChaosRenderer::stats() const {
   const PreparedJob* job = shared_->job.get();
   if (!job) return s;
   s.budget = job->job.samples > 0 ? job->job.samples : 0;
+  s.keptCamera = job->cameraEpoch != s.generation;
   bool allFinished = s.budget > 0;
   std::int64_t lastFinish = 0;
   for (const auto& w : workers_) {
@@ -539,11 +650,12 @@ void ChaosRenderer::snapshot(RenderImage& out, const DisplaySettings& display) c
     const std::size_t texels = std::size_t(out.lightViews[l].size()) * std::size_t(out.lightViews[l].size());
     std::vector<float>& merged = out.lightDepth[l];
     merged.assign(texels, std::numeric_limits<float>::infinity());
+    const float step = float(kernel::lightDepthStep(out.lightViews[l]));
     for (const Worker* w : ready) {
-      const std::uint32_t* src = w->lightDepth[l].data();
+      const std::uint16_t* src = w->lightDepth[l].data();
       for (std::size_t i = 0; i < texels; ++i) {
-        const std::uint32_t key = std::atomic_ref<const std::uint32_t>(src[i]).load(std::memory_order_relaxed);
-        if (key != ~0u) merged[i] = std::min(merged[i], std::bit_cast<float>(key));
+        const std::uint16_t key = std::atomic_ref<const std::uint16_t>(src[i]).load(std::memory_order_relaxed);
+        if (key != kernel::kLightEmpty) merged[i] = std::min(merged[i], float(key) * step);
       }
     }
   }

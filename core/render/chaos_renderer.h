@@ -98,6 +98,9 @@ struct RenderStats {
   double pointsPerSecond = 0.0;  // samples / seconds
   bool paused = false;
   bool done = false;             // the budget is exhausted (never for an unlimited job)
+  /// This generation kept the camera's buffers of the one before (only shadowed lights changed)
+  /// and re-fills only the changed lights' buffers; `samples` counts the camera's samples.
+  bool keptCamera = false;
   double badFraction() const { return samples > 0 ? double(badSamples) / double(samples) : 0.0; }
   double progress() const { return budget > 0 ? double(samples) / double(budget) : 0.0; }
 };
@@ -142,7 +145,11 @@ class ChaosRenderer : public Renderer {
   ChaosRenderer& operator=(const ChaosRenderer&) = delete;
 
   /// Starts rendering `ifs` with `job` as a new generation and returns its number. Points of older
-  /// generations never reach an image of this one. Throws ModelError when the job is invalid
+  /// generations never reach an image of this one, with one exception that changes no pixel: when
+  /// only job.shadowLights differ from the current generation's job (same `ifs` object), the
+  /// workers keep the camera's buffers and the unchanged lights' buffers and replay their chains
+  /// into the changed lights' buffers only (stats().keptCamera); the result is the same, bit for
+  /// bit, as a render from scratch. Throws ModelError when the job is invalid
   /// (validateRenderJob) or `ifs` is null; the previous generation keeps running in that case.
   std::uint64_t restart(std::shared_ptr<const CompiledIfs> ifs, const RenderJob& job) override;
   /// Stops the workers (joins them) and forgets the current generation's buffers' validity.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/matrix.hpp>
@@ -86,7 +87,7 @@ struct DevelopContext {
   float* blockDepth = nullptr;                  // per block: the depth it was computed at
   std::array<float, 1025> specularTable;        // x^shininess over [0, 1]
   float fogR, fogG, fogB, fogDensity;
-  float bgR, bgG, bgB;
+  std::uint8_t bgBytes[4];  // the background's display colour, alpha 0
   float viewToWorld[3][3];
 };
 
@@ -95,8 +96,15 @@ float shadowVisibility(const ShadowLight& s, Vec3f p, float bias) {
   const float v = s.rowV[0] * p.x + s.rowV[1] * p.y + s.rowV[2] * p.z + s.rowV[3];
   const float d = s.rowD[0] * p.x + s.rowD[1] * p.y + s.rowD[2] * p.z + s.rowD[3] - bias;
   const int iu = int(std::floor(u)), iv = int(std::floor(v));
-  int lit = 0, taps = 0;
   const float* map = s.depth->data();
+  if (iu >= 1 && iv >= 1 && iu < s.size - 1 && iv < s.size - 1) {
+    // Inside the map (nearly every lookup): all nine taps, no bounds tests.
+    const float* row = map + std::size_t(iv - 1) * std::size_t(s.size) + std::size_t(iu - 1);
+    int lit = 0;
+    for (int dv = 0; dv < 3; ++dv, row += s.size) lit += int(row[0] >= d) + int(row[1] >= d) + int(row[2] >= d);
+    return float(lit) * (1.0f / 9.0f);
+  }
+  int lit = 0, taps = 0;
   for (int dv = -1; dv <= 1; ++dv) {
     const int y = iv + dv;
     if (y < 0 || y >= s.size) continue;
@@ -158,7 +166,7 @@ bool difference(const DevelopContext& c, int x, int y, int dx, int dy, float d, 
 
 float ambientOcclusion(const DevelopContext& c, int x, int y, Vec3f p, Vec3f n, float d) {
   const float worldRadius = c.aoRadius * c.un.footprint(d);
-  const float r2 = worldRadius * worldRadius;
+  const float r2 = worldRadius * worldRadius, inverseR2 = 1.0f / r2;
   const int pattern = (y % kPattern) * kPattern + (x % kPattern);
   const std::array<int, 2>* offsets = &c.aoOffsets[std::size_t(pattern) * std::size_t(c.aoDirections * kAoSteps)];
   float sum = 0.0f;
@@ -168,14 +176,16 @@ float ambientOcclusion(const DevelopContext& c, int x, int y, Vec3f p, Vec3f n, 
       const std::array<int, 2> o = offsets[k * kAoSteps + s];
       const int sx = x + o[0], sy = y + o[1];
       if (unsigned(sx) >= unsigned(c.width) || unsigned(sy) >= unsigned(c.height)) break;
+      // Branch-free over the sample's cases (empty, beyond the radius, below the tangent plane):
+      // they alternate unpredictably on a speckled attractor. An empty pixel's +inf depth makes
+      // l2 infinite or NaN, which fails the test below.
       const float sd = c.depth[std::size_t(sy) * std::size_t(c.width) + std::size_t(sx)];
-      if (sd == kInf) continue;
       const Vec3f v = c.un.at(sx, sy, sd) - p;
-      const float l2 = dot(v, v);
-      if (l2 >= r2 || l2 <= 0.0f) continue;
+      const float l2 = dot(v, v), vn = dot(v, n);
       // Sine of the elevation of the sample above the tangent plane, fading out with distance.
-      const float elevation = dot(v, n) / std::sqrt(l2) - kAoAngleBias;
-      horizon = std::max(horizon, elevation * (1.0f - l2 / r2));
+      const float rise = (vn / std::sqrt(l2) - kAoAngleBias) * (1.0f - l2 * inverseR2);
+      const bool counts = (l2 < r2) & (vn > 0.0f) & (rise > horizon);
+      horizon = counts ? rise : horizon;
     }
     sum += horizon;
   }
@@ -246,21 +256,28 @@ void blockOcclusionRows(DevelopContext& c, std::size_t blockRowBegin, std::size_
     }
 }
 
+template <bool kCompositing>
 void shadeRows(const DevelopContext& c, ShadedImage& out, std::size_t rowBegin, std::size_t rowEnd) {
+  // Raw pointers held in locals: byte stores through out.rgba would otherwise make the compiler
+  // reload every vector's data pointer after each store.
+  std::uint8_t* const rgba = out.rgba.data();
+  float* const linear = out.linear.data();
+  float* const normals = out.normals.data();
+  float* const occlusion = out.occlusion.data();
+  float* const shadow = out.shadow.data();
   for (std::size_t yy = rowBegin; yy < rowEnd; ++yy) {
     const int y = int(yy);
     for (int x = 0; x < c.width; ++x) {
       const std::size_t i = yy * std::size_t(c.width) + std::size_t(x);
       const float d = c.depth[i];
       if (d == kInf) {
-        out.rgba[i * 4 + 0] = std::uint8_t(std::lround(c.bgR * 255.0f));
-        out.rgba[i * 4 + 1] = std::uint8_t(std::lround(c.bgG * 255.0f));
-        out.rgba[i * 4 + 2] = std::uint8_t(std::lround(c.bgB * 255.0f));
-        out.rgba[i * 4 + 3] = 0;
-        for (int k = 0; k < 4; ++k) out.linear[i * 4 + std::size_t(k)] = 0.0f;
-        for (int k = 0; k < 3; ++k) out.normals[i * 3 + std::size_t(k)] = 0.0f;
-        out.occlusion[i] = 1.0f;
-        out.shadow[i] = 1.0f;
+        std::memcpy(rgba + i * 4, c.bgBytes, 4);
+        if constexpr (kCompositing) {
+          for (int k = 0; k < 4; ++k) linear[i * 4 + std::size_t(k)] = 0.0f;
+          for (int k = 0; k < 3; ++k) normals[i * 3 + std::size_t(k)] = 0.0f;
+          occlusion[i] = 1.0f;
+          shadow[i] = 1.0f;
+        }
         continue;
       }
       const Vec3f p = c.un.at(x, y, d);
@@ -322,19 +339,21 @@ void shadeRows(const DevelopContext& c, ShadedImage& out, std::size_t rowBegin, 
         g = c.fogG + (g - c.fogG) * keep;
         b = c.fogB + (b - c.fogB) * keep;
       }
-      out.rgba[i * 4 + 0] = toDisplay8(r);
-      out.rgba[i * 4 + 1] = toDisplay8(g);
-      out.rgba[i * 4 + 2] = toDisplay8(b);
-      out.rgba[i * 4 + 3] = 255;
-      out.linear[i * 4 + 0] = r;
-      out.linear[i * 4 + 1] = g;
-      out.linear[i * 4 + 2] = b;
-      out.linear[i * 4 + 3] = 1.0f;
-      for (int row = 0; row < 3; ++row)
-        out.normals[i * 3 + std::size_t(row)] =
-            c.viewToWorld[row][0] * n.x + c.viewToWorld[row][1] * n.y + c.viewToWorld[row][2] * n.z;
-      out.occlusion[i] = ao;
-      out.shadow[i] = c.shadowWeight > 0.0f ? visibility / c.shadowWeight : 1.0f;
+      rgba[i * 4 + 0] = toDisplay8(r);
+      rgba[i * 4 + 1] = toDisplay8(g);
+      rgba[i * 4 + 2] = toDisplay8(b);
+      rgba[i * 4 + 3] = 255;
+      if constexpr (kCompositing) {
+        linear[i * 4 + 0] = r;
+        linear[i * 4 + 1] = g;
+        linear[i * 4 + 2] = b;
+        linear[i * 4 + 3] = 1.0f;
+        for (int row = 0; row < 3; ++row)
+          normals[i * 3 + std::size_t(row)] =
+              c.viewToWorld[row][0] * n.x + c.viewToWorld[row][1] * n.y + c.viewToWorld[row][2] * n.z;
+        occlusion[i] = ao;
+        shadow[i] = c.shadowWeight > 0.0f ? visibility / c.shadowWeight : 1.0f;
+      }
     }
   }
 }
@@ -345,7 +364,10 @@ DisplaySettings shadedDisplaySettings(const Project& project) {
   return DisplaySettings{project.render.background, 0.0};
 }
 
-int shadowMapSize(int width, int height) { return std::clamp(std::max(width, height), 256, 2048); }
+// Half the longer side: the 3×3 percentage-closer lookup softens a shadow's edge over a few texels
+// anyway, and a 512² map of 16-bit depths (512 KiB at 1024²) stays in a core's L2 cache while
+// every sample writes to a random texel of it.
+int shadowMapSize(int width, int height) { return std::clamp(std::max(width, height) / 2, 256, 2048); }
 
 RenderJob shadedRenderJob(const RenderJob& job, const ShadingSettings& settings, const CompiledIfs& ifs) {
   RenderJob out = job;
@@ -366,16 +388,17 @@ RenderJob shadedRenderJob(const RenderJob& job, const ShadingSettings& settings,
 }
 
 void developShaded(const RenderImage& snapshot, const ShadingSettings& settings, const Camera& camera,
-                   const Vec3& background, int threads, ShadedImage& out) {
+                   const Vec3& background, int threads, ShadedImage& out, ShadedChannels channels) {
   const int width = snapshot.width, height = snapshot.height;
   const std::size_t n = std::size_t(width) * std::size_t(height);
   out.width = width;
   out.height = height;
+  const bool compositing = channels == ShadedChannels::All;
   out.rgba.resize(n * 4);
-  out.linear.resize(n * 4);
-  out.normals.resize(n * 3);
-  out.occlusion.resize(n);
-  out.shadow.resize(n);
+  out.linear.resize(compositing ? n * 4 : 0);
+  out.normals.resize(compositing ? n * 3 : 0);
+  out.occlusion.resize(compositing ? n : 0);
+  out.shadow.resize(compositing ? n : 0);
   if (n == 0) return;
   if (snapshot.depth.size() != n || snapshot.rgba.size() != n * 4)
     throw ModelError("", "the snapshot's buffers do not match its size");
@@ -465,9 +488,8 @@ void developShaded(const RenderImage& snapshot, const ShadingSettings& settings,
   c.fogG = srgbToLinear(float(settings.fog.color.y));
   c.fogB = srgbToLinear(float(settings.fog.color.z));
   c.fogDensity = float(settings.fog.density);
-  c.bgR = float(std::clamp(background.x, 0.0, 1.0));
-  c.bgG = float(std::clamp(background.y, 0.0, 1.0));
-  c.bgB = float(std::clamp(background.z, 0.0, 1.0));
+  for (int k = 0; k < 3; ++k) c.bgBytes[k] = std::uint8_t(std::lround(std::clamp(background[k], 0.0, 1.0) * 255.0));
+  c.bgBytes[3] = 0;
 
   // Empty pixels: the snapshot's alpha is 0 there (its depth is +inf as well).
   // The snapshot's depth is +inf where no point was plotted (RenderImage), which the passes below
@@ -497,7 +519,12 @@ void developShaded(const RenderImage& snapshot, const ShadingSettings& settings,
     parallelFor(std::size_t(c.blocksY), threads, grain / 2,
                 [&](std::size_t b, std::size_t e) { blockOcclusionRows(c, b, e); });
   }
-  parallelFor(std::size_t(height), threads, grain, [&](std::size_t b, std::size_t e) { shadeRows(c, out, b, e); });
+  parallelFor(std::size_t(height), threads, grain, [&](std::size_t b, std::size_t e) {
+    if (compositing)
+      shadeRows<true>(c, out, b, e);
+    else
+      shadeRows<false>(c, out, b, e);
+  });
 }
 
 }  // namespace gridifs

@@ -39,17 +39,24 @@ struct ShadedImage {
   } workspace;
 };
 
+/// What developShaded writes: the display colour only (rgba; the preview, where each light or
+/// occlusion slider step re-develops), or also the compositing channels (linear, normals,
+/// occlusion, shadow: EXR output).
+enum class ShadedChannels { Display, All };
+
 /// Develops `snapshot` (taken with depth cue 0, so that rgba holds the structural colour; see
 /// shadedDisplaySettings) for `camera` into `out`. Light depth buffers in the snapshot are used for
 /// the lights with shadows, in order; a shadowed light without a buffer is unshadowed. Throws
-/// ModelError when the camera is unusable.
+/// ModelError when the camera is unusable. With ShadedChannels::Display the compositing channels
+/// are left empty.
 void developShaded(const RenderImage& snapshot, const ShadingSettings& settings, const Camera& camera,
-                   const Vec3& background, int threads, ShadedImage& out);
+                   const Vec3& background, int threads, ShadedImage& out,
+                   ShadedChannels channels = ShadedChannels::All);
 
 /// The display settings a shaded snapshot must be taken with: the background, no depth cueing.
 DisplaySettings shadedDisplaySettings(const Project& project);
 
-/// The shadow map size for an image: its longer side, between 256 and 2048 texels.
+/// The shadow map size for an image: half its longer side, between 256 and 2048 texels.
 int shadowMapSize(int width, int height);
 
 /// Adds the shaded display's chaos-game inputs to `job`: one light view per light with shadows

@@ -42,6 +42,19 @@ void BM_DevelopShaded(benchmark::State& state) {
 }
 BENCHMARK(BM_DevelopShaded)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
 
+/// The same develop for the preview: the display colour only, without the compositing channels
+/// (linear colour, normals, occlusion, shadow) that only the EXR output reads.
+void BM_DevelopShadedDisplay(benchmark::State& state) {
+  const RenderImage& snapshot = shadedSnapshot();
+  const Project p = canonicalScene();
+  const ShadingSettings settings = twoShadowedLights();
+  ShadedImage out;
+  for (auto _ : state)
+    developShaded(snapshot, settings, p.camera, p.render.background, int(state.range(0)), out, ShadedChannels::Display);
+  state.SetItemsProcessed(state.iterations() * std::int64_t(snapshot.width) * snapshot.height);
+}
+BENCHMARK(BM_DevelopShadedDisplay)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(2.0);
+
 /// The chaos game with `range(0)` shadowed lights on one thread: points_per_second to compare.
 void BM_ChaosShadowLights(benchmark::State& state) {
   const Project p = canonicalScene();

@@ -48,7 +48,8 @@ TEST(ShadedPreviewGui, ShadedModeLightsTheAttractorAndItsSlidersNeedNoRestart) {
   const auto brighter = grabScreen(home, image);
   EXPECT_GT(meanAbsDifference(shaded, brighter), 1.0) << "the ambient drag did not change the picture";
 
-  // Alt+drag on the preview turns the key light (it casts shadows: its depth buffer is re-rendered).
+  // Alt+drag on the preview turns the key light (it casts shadows: its depth buffer is re-rendered,
+  // the camera's buffers are kept).
   const int cx = image.x + image.w / 2, cy = image.y + image.h / 2;
   focusWindow();
   std::string cmd = "mousemove " + std::to_string(cx) + " " + std::to_string(cy) +
@@ -61,6 +62,7 @@ TEST(ShadedPreviewGui, ShadedModeLightsTheAttractorAndItsSlidersNeedNoRestart) {
       [](const nlohmann::json& j) { return j["undo"] == "Move key light" && j["preview"]["done"].get<bool>(); });
   EXPECT_EQ(probe["undo"], "Move key light");
   EXPECT_GT(probe["preview"]["restarts"].get<std::uint64_t>(), restarts);
+  EXPECT_TRUE(probe["preview"]["kept_camera"].get<bool>()) << "moving the light rendered the camera's buffers again";
   std::this_thread::sleep_for(400ms);
   EXPECT_GT(meanAbsDifference(brighter, grabScreen(home, image)), 0.5) << "moving the light changed nothing";
 }
