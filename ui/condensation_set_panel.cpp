@@ -189,6 +189,18 @@ void CondensationSetPanel::draw(ModellerState& state, EditQueue& edits) {
   state.probe.frame("set.shape");
   contextHelp(state, "What the set is: a primitive, a mesh file or a VDB file");
 
+  // The drawing the views show, made (and so checked) by the core voxelizer: its sentence is the
+  // message when the set cannot be used.
+  const SetOutlineCache::Drawing& drawing = state.setOutlines.get(set, state.projectFolder(), ref.path() + ".set");
+  state.setMessage = drawing.error;
+  if (!drawing.error.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.6f, 0.3f, 1.0f));
+    ImGui::TextWrapped("%s", drawing.error.c_str());
+    ImGui::PopStyleColor();
+    state.probe.item("set.message");
+    ImGui::TextDisabled("The preview keeps its last picture; Ctrl+Z returns to the last good set.");
+  }
+
   if (set.shape == SetShape::Mesh || set.shape == SetShape::Vdb)
     drawFile(state, edits, ref, set);
   else
@@ -217,21 +229,6 @@ void CondensationSetPanel::draw(ModellerState& state, EditQueue& edits) {
       target.in(p).set.shape = shape;
       target.in(p).set.path = path;
     });
-  }
-
-  // The drawing the views show, made (and so checked) by the core voxelizer: its sentence is the
-  // message when the set cannot be used.
-  const SetOutlineCache::Drawing& drawing = state.setOutlines.get(set, state.projectFolder(), ref.path() + ".set");
-  state.setMessage = drawing.error;
-  ImGui::Spacing();
-  if (!drawing.error.empty()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.6f, 0.3f, 1.0f));
-    ImGui::TextWrapped("%s", drawing.error.c_str());
-    ImGui::PopStyleColor();
-    state.probe.item("set.message");
-    ImGui::TextDisabled("The preview keeps its last picture; Ctrl+Z returns to the last good set.");
-  } else {
-    ImGui::TextDisabled("%zu lines drawn in the IFS view", drawing.lines.size() / 2);
   }
 }
 
