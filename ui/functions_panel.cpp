@@ -247,6 +247,36 @@ void addFunction(ModellerState& state, EditQueue& edits) {
   edits.after([&state, index] { state.activate(FunctionRef(index)); });
 }
 
+void addSetFunction(ModellerState& state, EditQueue& edits, FunctionKind kind) {
+  const Project& p = state.document.project();
+  if (int(p.functions.size()) >= limits::kMaxFunctions) {
+    state.error("An IFS has at most " + std::to_string(limits::kMaxFunctions) + " functions.");
+    return;
+  }
+  if (p.space) {
+    state.error("A free-form IFS takes matrix functions only.");
+    return;
+  }
+  // A ball of radius 0.3 at the origin: well inside X and visible at once; the artist then moves
+  // it or picks another set in the set editor.
+  Function f;
+  f.kind = kind;
+  f.name = uniqueName(p, kind == FunctionKind::Median ? "median" : "cond");
+  f.set.shape = SetShape::Sphere;
+  f.set.center = Vec3{0.0};
+  f.set.radius = 0.3;
+  // The other shapes start at the ball's size, so switching the shape keeps the set in place.
+  f.set.size = Vec3{0.6};
+  f.set.major = 0.25;
+  f.set.minor = 0.08;
+  f.color = newFunctionColor(p.functions.size());
+  f.palette_index = p.functions.empty() ? 0.0 : std::min(1.0, double(p.functions.size()) / 4.0);
+  const int index = int(p.functions.size());
+  const std::string label = kind == FunctionKind::Median ? "Add median function" : "Add condensation function";
+  edits.commit(label, [f](Project& pr) { insertFunction(pr, pr.functions.size(), f); });
+  edits.after([&state, index] { state.activate(FunctionRef(index)); });
+}
+
 void drawFunctionsPanel(ModellerState& state, EditQueue& edits) {
   state.clampIndices();
   const Project& project = state.document.project();
@@ -258,6 +288,23 @@ void drawFunctionsPanel(ModellerState& state, EditQueue& edits) {
   if (ImGui::Button("Add")) addFunction(state, edits);
   contextHelp(state, "Add a function: a new undistorted 6x6x6 grid placed at half size");
   state.probe.item("functions.add");
+  if (!project.space) {
+    // Set functions (Sokolov & Gentil, §3.1–3.2): Barnsley's constant map onto a set, or the
+    // condensation function M(·, C) of the median images.
+    ImGui::SameLine();
+    if (ImGui::Button("Set...")) ImGui::OpenPopup("add_set");
+    state.probe.item("functions.add_set");
+    contextHelp(state, "Add a condensation or median function: one that acts through a set instead of a grid");
+    if (ImGui::BeginPopup("add_set")) {
+      if (ImGui::Selectable("Condensation function")) addSetFunction(state, edits, FunctionKind::Condensation);
+      state.probe.item("functions.add_set.condensation");
+      contextHelp(state, "When chosen, the point jumps to a random point of its set (Barnsley's condensation)");
+      if (ImGui::Selectable("Median function")) addSetFunction(state, edits, FunctionKind::Median);
+      state.probe.item("functions.add_set.median");
+      contextHelp(state, "Maps a set halfway towards its own set (Sokolov & Gentil's median images); for volumes");
+      ImGui::EndPopup();
+    }
+  }
   ImGui::SameLine();
   ImGui::BeginDisabled(finalActive);
   if (ImGui::Button("Duplicate") && count < limits::kMaxFunctions) {
@@ -362,6 +409,18 @@ void drawFunctionsPanel(ModellerState& state, EditQueue& edits) {
   gestureItem(edits, "Palette index", changed, [fi, paletteIndex](Project& p) { p.functions[std::size_t(fi)].palette_index = paletteIndex; });
   contextHelp(state, "Structural color coordinate c_i for flame-style coloring (Draves & Reckase 2003, §5)");
 
+  if (isSetKind(f.kind)) {
+    // A set function has no grid: its set is edited in the set editor (the Operations panel's place).
+    double colorSpeed = f.color_speed;
+    changed = sliderDouble("Color speed", colorSpeed, 0.0, 1.0);
+    gestureItem(edits, "Color speed", changed,
+                [fi, colorSpeed](Project& p) { p.functions[std::size_t(fi)].color_speed = colorSpeed; });
+    contextHelp(state, "How far each point's colour moves towards this function's palette index");
+    ImGui::PopItemWidth();
+    ImGui::TextWrapped("%s: its set is edited in the set editor below (in place of the operations).",
+                       f.kind == FunctionKind::Median ? "A median function" : "A condensation function");
+    return;
+  }
   if (f.kind == FunctionKind::Matrix) {
     // A free-form IFS's function has no grid: its matrix and the control points are edited in
     // the Matrices window.

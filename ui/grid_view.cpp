@@ -105,6 +105,16 @@ Index3 nodeIndex(std::size_t n, const Index3& r) {
   return {i, j, k};
 }
 
+/// Whether the function has a grid that the grid views show and edit (a matrix function acts
+/// through control points, a set function through its set).
+bool hasGrid(const Function& f) { return f.kind != FunctionKind::Matrix && !isSetKind(f.kind); }
+
+/// The drawing of set function `f`'s set (volume/set_outline.h), kept by the state's cache.
+const SetOutlineCache::Drawing& setDrawing(ModellerState& state, std::size_t f) {
+  const Function& fn = state.document.project().functions[f];
+  return state.setOutlines.get(fn.set, state.projectFolder(), FunctionRef(int(f)).path() + ".set");
+}
+
 Selection normalized(Selection s, const Index3& r) { return selectsNothing(s, r) ? Selection{} : s; }
 
 Vec3 centroid(const std::vector<Vec3>& nodes, const std::vector<unsigned char>* mask) {
@@ -140,11 +150,20 @@ void GridView::pickableNodes(ModellerState& state, std::vector<Vec3>& out, std::
   out.clear();
   owner.clear();
   if (content_ == Content::FunctionGrid) {
-    if (state.function().kind != FunctionKind::Matrix) out = state.localGrid().nodes();
+    if (hasGrid(state.function())) out = state.localGrid().nodes();
     return;
   }
   const auto& functions = state.document.project().functions;
   for (std::size_t f = 0; f < functions.size(); ++f) {
+    if (isSetKind(functions[f].kind)) {
+      // A set is picked (and dragged) by the points of its drawing.
+      const LineSegments& lines = setDrawing(state, f).lines;
+      for (std::size_t s = 0; s < lines.size(); s += 2) {
+        out.push_back(lines[s]);
+        owner.push_back(FunctionRef(int(f)));
+      }
+      continue;
+    }
     if (functions[f].kind == FunctionKind::Matrix) continue;  // no grid to pick or place
     try {
       const auto grid = state.document.evaluatedGrid(f);
@@ -259,7 +278,7 @@ void GridView::build(ModellerState& state, EditQueue& edits, glm::vec2 size, flo
         !controlPoints(state).empty()
             ? "Drag a control point: move it in the view's plane · right-drag: orbit/pan · wheel: zoom · "
               "F: frame"
-        : content_ == Content::Ifs ? "Drag a grid: move its placement · right-drag: orbit · middle/Shift+right: pan · "
+        : content_ == Content::Ifs ? "Drag a grid or a set: move it · right-drag: orbit · middle/Shift+right: pan · "
                                      "wheel: zoom · F: frame"
                                    : "Click/drag: select nodes (Shift add, Ctrl remove) · drag a selected node: move · "
                                      "Alt+click: place center · right-drag: orbit/pan · wheel: zoom · F: frame";
@@ -342,6 +361,8 @@ void GridView::beginDrag(ModellerState& state, EditQueue& edits, dvec2 mouse) {
     if (!hit) return;
     const FunctionRef f = owner[*hit];
     state.activate(f);
+    const Function& picked = f.in(state.document.project());
+    if (isSetKind(picked.kind) && picked.set.shape == SetShape::Vdb) return;  // picked, not moved
     dragFunctionRef_ = f;
     dragFunction_ = f.in(state.document.project());
     anchor_ = nodes[*hit];
@@ -451,8 +472,19 @@ void GridView::updateDrag(ModellerState& state, EditQueue& edits, dvec2 mouse) {
       break;
     }
     case Drag::Placement: {
+      const Vec3 d = camera(state).dragDelta(delta.x, delta.y, anchor_, size_.y);
+      if (isSetKind(dragFunction_.kind)) {
+        // A primitive moves its centre, a mesh its placement; a VDB set stays where its file puts it.
+        const SetShape shape = dragFunction_.set.shape;
+        if (shape == SetShape::Vdb) break;
+        if (firstMove) edits.begin("Move set");
+        CondensationSet set = dragFunction_.set;
+        (shape == SetShape::Mesh ? set.placement.translate : set.center) += d;
+        edits.update([f, set](Project& p) { f.in(p).set = set; });
+        break;
+      }
       if (firstMove) edits.begin("Move placement");
-      const Vec3 t = dragFunction_.placement.translate + camera(state).dragDelta(delta.x, delta.y, anchor_, size_.y);
+      const Vec3 t = dragFunction_.placement.translate + d;
       edits.update([f, t](Project& p) { f.in(p).placement.translate = t; });
       break;
     }
@@ -623,6 +655,15 @@ void GridView::buildIfsScene(ModellerState& state) {
     for (const Vec3& p : cp) scene_.points.push_back(vertex(p, {0.95f, 0.95f, 0.95f, 1.0f}, 7.0f));
   }
   for (std::size_t f = 0; f < functions.size(); ++f) {
+    if (isSetKind(functions[f].kind)) {
+      // Condensation sets in their function's colour: primitives as wireframes, meshes as their
+      // placed edges, VDB sets as voxel outlines.
+      const bool active = state.activeFunction == FunctionRef(int(f));
+      const glm::vec4 color = lineColor(functions[f].color, functions[f].muted ? 0.2f : active ? 0.95f : 0.5f);
+      const LineSegments& lines = setDrawing(state, f).lines;
+      for (std::size_t s = 0; s + 1 < lines.size(); s += 2) line(scene_.lines, lines[s], lines[s + 1], color);
+      continue;
+    }
     if (functions[f].kind == FunctionKind::Matrix) continue;  // drawn above, through the control points
     std::shared_ptr<const Grid> grid;
     try {
@@ -690,7 +731,7 @@ void GridView::render(ModellerState& state, ViewRenderer& renderer) {
   key_ = key;
   scene_.clear();
   // A matrix function has no grid: its views show the control points and the matrices' images.
-  if (content_ == Content::FunctionGrid && state.function().kind != FunctionKind::Matrix)
+  if (content_ == Content::FunctionGrid && hasGrid(state.function()))
     buildFunctionScene(state);
   else buildIfsScene(state);
   const glm::dmat4 vp = camera(state).viewProjection(size_.x, size_.y);

@@ -80,6 +80,10 @@ float drawMenuBar(AppCommands& app) {
   if (ImGui::BeginMenu("Function")) {
     if (ImGui::MenuItem(s.document.project().space ? "Add matrix function" : "Add 6x6x6 grid"))
       addFunction(s, app.edits);
+    if (!s.document.project().space) {
+      if (ImGui::MenuItem("Add condensation function")) addSetFunction(s, app.edits, FunctionKind::Condensation);
+      if (ImGui::MenuItem("Add median function")) addSetFunction(s, app.edits, FunctionKind::Median);
+    }
     if (ImGui::MenuItem("Matrices...", "M", s.showMatrices)) s.showMatrices = !s.showMatrices;
     drawSymmetryMenu(s, app.edits);  // ui/symmetry_menu.cpp
     ImGui::Separator();

@@ -24,6 +24,7 @@
 #include "ui/app_commands.h"
 #include "ui/app_window.h"
 #include "ui/combine_dialog.h"
+#include "ui/condensation_set_panel.h"
 #include "ui/export_dialog.h"
 #include "ui/grid_view.h"
 #include "ui/modeller_options.h"
@@ -104,6 +105,7 @@ class ModellerApp {
   ExportDialog export_;  // File > Export
   RenderAnimationDialog animation_;  // File > Render animation
   CombineDialog combine_;            // File > Combine
+  CondensationSetPanel setPanel_;    // in the Operations panel's place while a set function is active
   std::unique_ptr<AppCommands> commands_;
   std::string iniPath_, title_;
   bool resetLayout_ = false;
@@ -223,7 +225,16 @@ void ModellerApp::buildUi() {
   endPanel(Panel::Functions);
   ImGui::End();
   beginPanel(Panel::Operations, layout, cond);
-  if (ImGui::Begin("Operations", nullptr, panel)) drawOperationStackPanel(state_, edits_);
+  if (ImGui::Begin("Operations", nullptr, panel)) {
+    // A condensation or median function has no operation stack: its set is edited here instead.
+    state_.clampIndices();
+    if (isSetKind(state_.function().kind)) {
+      setPanel_.draw(state_, edits_);
+    } else {
+      state_.setMessage.clear();
+      drawOperationStackPanel(state_, edits_);
+    }
+  }
   endPanel(Panel::Operations);
   ImGui::End();
   beginPanel(Panel::Parameters, layout, cond);
@@ -309,6 +320,7 @@ void ModellerApp::writeProbe(double frameMs) {
   else
     j["active_function"] = state_.activeFunction.index();
   j["final_message"] = state_.finalFunctionMessage;
+  j["set_message"] = state_.setMessage;
   j["active_op"] = state_.activeOp;
   j["ops"] = state_.function().ops.size();
   j["status"] = state_.statusText;

@@ -12,6 +12,7 @@
 #include "model/function_ref.h"
 #include "model/grid.h"
 #include "render/chaos_renderer.h"
+#include "ui/set_outline_cache.h"
 #include "ui/widgets.h"
 
 namespace gridifs::ui {
@@ -117,6 +118,13 @@ class ModellerState {
     double bound = 0.0;
     bool valid = false;
   } contractivity;
+  /// The drawings of the condensation sets (views and set editor) and the set editor's message.
+  SetOutlineCache setOutlines;
+  std::string setMessage;
+  /// The folder that the project's relative file paths (meshes, VDBs) start from.
+  std::filesystem::path projectFolder() const {
+    return document.path().parent_path().empty() ? std::filesystem::path(".") : document.path().parent_path();
+  }
   double now = 0.0;  // seconds since start, set each frame
   float uiScale = 1.0f;
 

@@ -141,6 +141,11 @@ void centerAndSelection(OpEditor& e) {
 
 void drawOperationPanel(ModellerState& state, EditQueue& edits) {
   state.clampIndices();
+  if (isSetKind(state.function().kind)) {
+    ImGui::TextWrapped("%s acts through its set, not a grid: it has no operations. Edit its set in the panel beside.",
+                       state.function().name.c_str());
+    return;
+  }
   const Operation* current = state.op();
   if (!current) {
     ImGui::TextDisabled("Pick an operation in the stack, or add one.");

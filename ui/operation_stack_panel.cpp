@@ -30,6 +30,10 @@ void swapTracks(Project& p, FunctionRef function, int a, int b) {
 void addOperation(ModellerState& state, EditQueue& edits, const OperationSpec& spec) {
   state.clampIndices();
   const Function& f = state.function();
+  if (isSetKind(f.kind)) {
+    state.error(f.name + " is a set function: it has no grid to operate on.");
+    return;
+  }
   if (int(f.ops.size()) >= limits::kMaxOpsPerFunction) {
     state.error("A function has at most " + std::to_string(limits::kMaxOpsPerFunction) + " operations.");
     return;

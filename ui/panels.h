@@ -38,6 +38,9 @@ void addOperation(ModellerState& state, EditQueue& edits, const OperationSpec& s
 void deleteActiveOperation(ModellerState& state, EditQueue& edits);
 /// Adds a new 6×6×6 function (functions_panel.cpp).
 void addFunction(ModellerState& state, EditQueue& edits);
+/// Adds a condensation or median function whose set is a ball of radius 0.3 at the origin
+/// (functions_panel.cpp).
+void addSetFunction(ModellerState& state, EditQueue& edits, FunctionKind kind);
 /// Adds an undistorted final function and makes it active; removes it (functions_panel.cpp).
 void addFinalFunction(ModellerState& state, EditQueue& edits);
 void deleteFinalFunction(ModellerState& state, EditQueue& edits);

@@ -16,6 +16,10 @@ void drawSelectionPanel(ModellerState& state, EditQueue& edits) {
   (void)edits;  // the selection is UI state (not saved), so it needs no undo step
   state.clampIndices();
   const Function& f = state.function();
+  if (isSetKind(f.kind)) {
+    ImGui::TextWrapped("%s has no grid: there are no nodes to select.", f.name.c_str());
+    return;
+  }
   const Index3 res = f.resolution;
   Selection& selection = state.selection();
   const auto& mask = state.selectionMask();
