@@ -7,9 +7,10 @@
 
 #include "app/cli.h"
 #include "app/progress_bar.h"
+#include "io/project_io.h"
 #include "mesh/deterministic_ifs.h"
 #include "mesh/mesh_io.h"
-#include "io/project_io.h"
+#include "volume/condensation_mesh.h"
 
 namespace gridifs::cli {
 namespace {
@@ -55,6 +56,14 @@ int runExportMesh(const ExportMeshArgs& a) {
   } catch (const ModelError& e) {
     throw CliError(kBadInput, a.file + ": " + e.what());
   }
+  try {
+    // Condensation sets enter A_n = C ∪ F(A_{n−1}) as their surface meshes.
+    const std::filesystem::path project = a.file;
+    loadCondensationMeshes(ifs, document.project(),
+                           project.parent_path().empty() ? std::filesystem::path(".") : project.parent_path());
+  } catch (const ModelError& e) {
+    throw CliError(kBadInput, a.file + ": " + e.what());
+  }
 
   const BaseMeshSpec spec = baseSpec(a, format);
   DeterministicOptions options;
@@ -97,10 +106,22 @@ int runExportMesh(const ExportMeshArgs& a) {
   }
   bar.finish();
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::printf("%s: F^%d(%s) = %llu copies x %llu faces = %llu faces, %llu vertices (%.2f s)\n", output.c_str(), a.depth,
-              a.base.c_str(), static_cast<unsigned long long>(plan.copies),
-              static_cast<unsigned long long>(plan.base.faces), static_cast<unsigned long long>(plan.total.faces),
-              static_cast<unsigned long long>(plan.total.vertices), seconds);
+  if (plan.condensationCopies == 0)
+    std::printf("%s: F^%d(%s) = %llu copies x %llu faces = %llu faces, %llu vertices (%.2f s)\n", output.c_str(),
+                a.depth, a.base.c_str(), static_cast<unsigned long long>(plan.copies),
+                static_cast<unsigned long long>(plan.base.faces), static_cast<unsigned long long>(plan.total.faces),
+                static_cast<unsigned long long>(plan.total.vertices), seconds);
+  else
+    std::printf(
+        "%s: A_%d = %llu copies x %llu faces of %s + %llu copies x %llu faces of the condensation sets = %llu "
+        "faces, %llu vertices (%.2f s)\n",
+        output.c_str(), a.depth, static_cast<unsigned long long>(plan.copies),
+        static_cast<unsigned long long>(plan.base.faces), a.base.c_str(),
+        static_cast<unsigned long long>(plan.condensationCopies),
+        static_cast<unsigned long long>(
+            plan.condensationCopies == 0 ? 0 : plan.condensation.faces / plan.condensationCopies),
+        static_cast<unsigned long long>(plan.total.faces), static_cast<unsigned long long>(plan.total.vertices),
+        seconds);
   return kSuccess;
 }
 

@@ -30,11 +30,24 @@ struct DeterministicMap {
   std::size_t functionIndex = 0;  // index in Project::functions
 };
 
+/// A condensation function (Barnsley's constant map onto a set C, Sokolov & Gentil, §3.1): with it
+/// the deterministic algorithm is A_n = C ∪ F(A_{n−1}), and C enters as its surface mesh (the
+/// boundary of a solid set is its surface, so `fill` does not change it).
+struct DeterministicCondensation {
+  /// C's surface in X; null until loadCondensationMeshes (volume/condensation_mesh.h) fills it.
+  std::shared_ptr<const IfsMesh> mesh;
+  Vec3 color{1.0};
+  std::size_t functionIndex = 0;  // index in Project::functions
+};
+
 /// An immutable snapshot of the IFS: safe to share with a worker thread while the Document
 /// keeps changing. `maps` are the unmuted functions with weight > 0 in project order — the
 /// functions the chaos game can pick, so the mesh shows the attractor the preview shows.
 struct DeterministicIfs {
   std::vector<DeterministicMap> maps;
+  /// The unmuted condensation functions with weight > 0, in project order (address digits
+  /// maps.size() + j). Median functions have no mesh meaning and are refused by the snapshot.
+  std::vector<DeterministicCondensation> condensations;
   std::shared_ptr<const Grid> finalGrid;  // applied once to every vertex at the end; may be null
   /// The transition matrix over `maps`: follows[a][b] when map b may be applied right after map a
   /// (Thollot et al. §3.2: only the allowed words are built). Empty: every word.
@@ -68,9 +81,14 @@ struct DeterministicOptions {
 struct DeterministicPlan {
   std::size_t functionCount = 0;  // N
   int depth = 0;
-  std::uint64_t copies = 0;       // allowed words of length depth (N^depth unrestricted), saturated
-  MeshCounts base;                // one copy of the (refined) base mesh
-  MeshCounts total;               // copies × base, saturated
+  std::uint64_t copies = 0;  // allowed words of length depth (N^depth unrestricted), saturated
+  MeshCounts base;           // one copy of the (refined) base mesh
+  /// With condensation functions: copies of each C, Σ_{k<depth} N^k (f_w(C) for every word w
+  /// shorter than the depth), and all of their faces together.
+  std::uint64_t condensationCopies = 0;
+  MeshCounts condensation;
+  /// copies × base + the condensation copies, saturated: |A_n| = |C| + N·|A_{n−1}|, |A_0| = |base|.
+  MeshCounts total;
   double approximateFaces = 0.0;  // the same in floating point, for messages about absurd depths
   std::uint64_t estimatedBytes = 0;
   bool overBudget = false;  // estimatedBytes > limits.memoryBudgetBytes: warn
@@ -79,8 +97,9 @@ struct DeterministicPlan {
   std::string message;
 };
 
-/// Counts for N^depth copies of a base with `base` counts. Throws ModelError when the depth is
-/// outside 0..kMaxDeterministicDepth or `ifs` has no maps. Pure; thread-safe.
+/// Counts for N^depth copies of a base with `base` counts and the condensation copies. Throws
+/// ModelError when the depth is outside 0..kMaxDeterministicDepth, `ifs` has no maps, or a
+/// condensation mesh is not loaded. Pure; thread-safe.
 DeterministicPlan planDeterministic(const DeterministicIfs& ifs, const MeshCounts& base,
                                     const DeterministicOptions& options);
 /// The same for a base spec: loads the coarse base (reads the file) and predicts its refined
@@ -94,10 +113,15 @@ DeterministicPlan planDeterministic(const DeterministicIfs& ifs, const BaseMeshS
 /// Vertex colors (float RGBA in [0, 1], alpha 1) hold each copy's structural color; the face property
 /// `address` (see ifs_mesh.h) holds its address code. Copy c occupies vertices [c·V, (c+1)·V)
 /// and faces [c·F, (c+1)·F) with the base's topology (copies are not welded together).
+/// With condensation functions (T = N + M digits, M condensations) the copies of the base come
+/// first, then for each level k = 0 … n−1 and each condensation j the N^k copies f_w(C_j); the
+/// address of f_{a1}∘…∘f_{ak}(C_j) is the length-n base-T word a1 … ak (N+j) … (N+j) (the
+/// constant map ignores what follows it), so decodeAddress(code, T, n) reads every copy.
 struct DeterministicMesh {
   IfsMesh mesh;
   DeterministicPlan plan;
-  /// digit → index in Project::functions, to decode addresses (decodeAddress in ifs_mesh.h).
+  /// digit → index in Project::functions, to decode addresses (decodeAddress in ifs_mesh.h);
+  /// the grid maps' digits first, then the condensations'.
   std::vector<std::size_t> functionIndices;
 };
 

@@ -14,6 +14,7 @@
 #include "volume/condensation_sampler.h"
 #include "volume/density_field.h"
 #include "volume/set_function.h"
+#include "volume/set_orbit_memo.h"
 #include "volume/set_voxelizer.h"
 
 namespace gridifs {
@@ -72,7 +73,13 @@ DensityVolume iterateSets(const Project& project, const VolumeJob& job) {
     normalizeVoxels(s.voxels);
     return s;
   };
-  VoxelSet current = randomSet(), image;
+  // Every distinct set of the orbit is kept once (up to 256 MiB of voxel indices) with the images
+  // already computed from it: a revisited (set, function) pair costs a look-up. Orbits through a
+  // constant condensation revisit every set; two median functions rarely do.
+  SetOrbitMemo memo(functions.size(), std::size_t(256) << 20);
+  VoxelSet owned = randomSet(), image;  // the current set when the memo is full
+  int id = memo.intern(owned);
+  const VoxelSet* current = id == SetOrbitMemo::kNone ? &owned : &memo.set(id);
   SetScratch scratch;
   Vec3 color{0.5};
   const int skip = std::min(settings.skip, settings.iterations - 1);
@@ -81,19 +88,36 @@ DensityVolume iterateSets(const Project& project, const VolumeJob& job) {
     const std::size_t pick =
         std::size_t(std::upper_bound(cumulative.begin(), cumulative.end(), r) - cumulative.begin());
     const std::size_t i = std::min(pick, functions.size() - 1);
-    functions[i].apply(current, image, scratch, threads);
-    std::swap(current, image);
-    // A point map may send the whole set out of X; the iteration needs a non-empty set.
-    if (current.empty()) current = randomSet();
+    const int known = id == SetOrbitMemo::kNone ? SetOrbitMemo::kNone : memo.image(id, i);
+    if (known != SetOrbitMemo::kNone) {
+      id = known;
+      current = &memo.set(id);
+    } else {
+      functions[i].apply(*current, image, scratch, threads);
+      // A point map may send the whole set out of X; the iteration needs a non-empty set (a
+      // fresh random one, which is not an image of the function, so it is not remembered).
+      const bool restarted = image.empty();
+      if (restarted) image = randomSet();
+      const int imageId = memo.intern(image);
+      if (imageId != SetOrbitMemo::kNone && id != SetOrbitMemo::kNone && !restarted) memo.rememberImage(id, i, imageId);
+      id = imageId;
+      if (id == SetOrbitMemo::kNone) {
+        std::swap(owned, image);
+        current = &owned;
+      } else {
+        current = &memo.set(id);
+      }
+    }
     const Function& f = project.functions[active[i]];
     color += (f.color - color) * f.color_speed;  // Draves & Reckase 2003, §5, for the whole set
     if (k >= skip) {
       float* density = volume.density.data();
       float* sums = volume.color.empty() ? nullptr : volume.color.data();
       const Vec3 c = color;
-      parallelFor(current.size(), threads, 1 << 14, [&](std::size_t begin, std::size_t end) {
+      const std::vector<std::uint32_t>& voxels = current->voxels;
+      parallelFor(voxels.size(), threads, 1 << 14, [&](std::size_t begin, std::size_t end) {
         for (std::size_t v = begin; v < end; ++v) {
-          const std::uint32_t voxel = current.voxels[v];
+          const std::uint32_t voxel = voxels[v];
           density[voxel] += 1.0f;
           if (sums)
             for (int d = 0; d < 3; ++d) sums[3 * std::size_t(voxel) + std::size_t(d)] += float(c[d]);

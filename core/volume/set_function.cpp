@@ -1,8 +1,12 @@
 #include "volume/set_function.h"
 
+#include <atomic>
 #include <cmath>
+#include <functional>
 #include <glm/geometric.hpp>
+#include <limits>
 #include <nanoflann.hpp>
+#include <thread>
 
 #include "base/hash.h"
 #include "base/parallel.h"
@@ -61,30 +65,70 @@ struct NearestVoxel {
     }
     tree = std::make_unique<VoxelTree>(3, cloud, nanoflann::KDTreeSingleIndexAdaptorParams(16));
   }
-  /// The voxel of the set nearest to voxel `v` (whose lattice coordinates are `q`). `hint` is a
-  /// boundary position from the previous query of the caller (or 0xFFFFFFFF): successive queries
-  /// are neighbours, so its distance is a tight starting bound that prunes most of the tree.
+  /// The voxel of the set nearest to voxel `v` (whose lattice coordinates are `q`): of several
+  /// at the same distance, the first in the tree's traversal order for q. `hint` is a boundary
+  /// position from the previous query of the caller (or 0xFFFFFFFF): successive queries are
+  /// neighbours, so its distance is a tight bound that prunes most of the tree. The bound only
+  /// skips subtrees farther than the nearest voxel, so the answer does not depend on the hint,
+  /// nor on how the queries are shared among threads.
   std::uint32_t nearest(std::uint32_t v, const float q[3], std::uint32_t& hint) const {
     if (contains(v)) return v;
-    std::uint32_t index = 0;
-    float distance = 0.0f;
-    nanoflann::KNNResultSet<float, std::uint32_t> result(1);
-    result.init(&index, &distance);
+    NearestResult result;
     if (hint < boundary.size()) {
       float d2 = 0.0f;
       for (int d = 0; d < 3; ++d) {
         const float e = q[d] - cloud.xyz[3 * hint + std::size_t(d)];
         d2 += e * e;
       }
-      result.addPoint(d2, hint);
+      // Squared distances between lattice points are integers, exact in float up to 512³: half
+      // a unit past the hint's distance admits a nearest voxel at that same distance.
+      result.bound = d2 + 0.5f;
     }
     tree->findNeighbors(result, q, nanoflann::SearchParams());
-    hint = index;
-    return boundary[index];
+    hint = result.index;
+    return boundary[result.index];
   }
+
+  /// nanoflann's result set for one neighbour, searched within `bound` until a first point is
+  /// found; a later point replaces it only when strictly nearer (nanoflann's own rule).
+  struct NearestResult {
+    float bound = std::numeric_limits<float>::max();
+    float best = std::numeric_limits<float>::max();
+    std::uint32_t index = 0xFFFFFFFFu;
+    bool full() const { return index != 0xFFFFFFFFu; }
+    float worstDist() const { return full() ? best : bound; }
+    bool addPoint(float d, std::uint32_t i) {
+      if (d < best) {
+        best = d;
+        index = i;
+      }
+      return true;
+    }
+  };
 };
 
 constexpr std::uint32_t kUnknown = 0xFFFFFFFFu;
+
+/// body(begin, end) over chunks of `grain` queries handed out in order to `threads` plain threads
+/// (the caller is one). Measured on a loaded 2-core machine, oneTBB's worker joined the median's
+/// query loops for about 5% of their time (perf), leaving the searches on the calling thread;
+/// threads that take chunks from a counter share them evenly.
+void chunkedLoop(std::size_t count, int threads, std::size_t grain,
+                 const std::function<void(std::size_t, std::size_t)>& body) {
+  std::atomic<std::size_t> next{0};
+  auto work = [&] {
+    while (true) {
+      const std::size_t begin = next.fetch_add(grain);
+      if (begin >= count) return;
+      body(begin, std::min(count, begin + grain));
+    }
+  };
+  std::vector<std::thread> helpers;
+  const std::size_t chunks = (count + grain - 1) / grain;
+  for (std::size_t i = 1; i < std::min(std::size_t(std::max(threads, 1)), chunks); ++i) helpers.emplace_back(work);
+  work();
+  for (auto& t : helpers) t.join();
+}
 
 /// Marks voxel v; returns whether it was new.
 inline bool mark(std::vector<std::uint64_t>& marks, std::uint32_t v) {
@@ -227,26 +271,37 @@ void SetFunction::apply(const VoxelSet& in, VoxelSet& out, SetScratch& scratch, 
     }
     return lattice.index(m[0], m[1], m[2]);
   };
-  parallelFor(left + c.size(), threads, 2048, [&](std::size_t begin, std::size_t end) {
-    std::uint32_t hintLeft = kUnknown, hintRight = kUnknown;
+  // The left median's queries are mostly memo look-ups and the right median's are tree searches:
+  // two loops, so that each shares work of one cost among the threads. A query's answer does not
+  // depend on the chunks, so the image is the same for any number of threads.
+  chunkedLoop(left, threads, 2048, [&](std::size_t begin, std::size_t end) {
+    std::uint32_t hint = kUnknown;
     for (std::size_t q = begin; q < end; ++q) {
-      const bool isLeft = q < left;
-      const std::uint32_t from = isLeft ? in.voxels[q] : c.voxels[q - left];
+      const std::uint32_t from = in.voxels[q];
       const Index3 a = lattice.coordinates(from);
       const float p[3] = {float(a[0]), float(a[1]), float(a[2])};
       std::uint32_t to;
-      if (!isLeft) {
-        to = other.nearest(from, p, hintRight);
-      } else if (!f.memo.empty()) {
+      if (!f.memo.empty()) {
         // Distinct voxels of `in` write distinct entries, so the chunks never share one.
         std::uint32_t& known = f.memo[from];
-        if (known == kUnknown) known = f.nearest->nearest(from, p, hintLeft);
+        if (known == kUnknown) known = f.nearest->nearest(from, p, hint);
         to = known;
       } else {
-        to = f.nearest->nearest(from, p, hintLeft);
+        to = f.nearest->nearest(from, p, hint);
       }
       const Index3 b = lattice.coordinates(to);
       candidates[q] = midpoint(a, b, std::uint32_t(splitmix64((std::uint64_t(from) << 32) | to)));
+    }
+  });
+  chunkedLoop(c.size(), threads, 512, [&](std::size_t begin, std::size_t end) {
+    std::uint32_t hint = kUnknown;
+    for (std::size_t q = begin; q < end; ++q) {
+      const std::uint32_t from = c.voxels[q];
+      const Index3 a = lattice.coordinates(from);
+      const float p[3] = {float(a[0]), float(a[1]), float(a[2])};
+      const std::uint32_t to = other.nearest(from, p, hint);
+      const Index3 b = lattice.coordinates(to);
+      candidates[left + q] = midpoint(a, b, std::uint32_t(splitmix64((std::uint64_t(from) << 32) | to)));
     }
   });
   collect(candidates, scratch, out);

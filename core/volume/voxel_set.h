@@ -30,6 +30,7 @@ struct VoxelLattice {
   /// Continuous lattice coordinate of a point of X: voxel centres are at integers.
   double toLattice(double x) const { return (x + 1.0) * 0.5 * n - 0.5; }
   std::size_t voxelCount() const { return std::size_t(n) * std::size_t(n) * std::size_t(n); }
+  bool operator==(const VoxelLattice&) const = default;
 };
 
 /// A set of voxels as sorted, distinct linear indices.

@@ -17,6 +17,7 @@
 #include "render/compiled_ifs.h"
 #include "volume/measure_attractor.h"
 #include "volume/set_function.h"
+#include "volume/set_orbit_memo.h"
 #include "volume/set_voxelizer.h"
 #include "volume/vdb_volume_file.h"
 
@@ -297,6 +298,60 @@ TEST(MeasureAttractor, TwoMediansPutMoreMassAtTheHeavierSet) {
   EXPECT_GT(v.color[3 * inB + 2], v.color[3 * inB + 0]);
   // The same seed gives the same volume.
   EXPECT_EQ(computeDensityVolume(p, job).density, v.density);
+}
+
+// Nearest-voxel ties are broken the same way however the queries are shared among threads, so
+// the set iteration gives the same volume on one thread and on four.
+TEST(MeasureAttractor, SetIterationIsTheSameOnAnyNumberOfThreads) {
+  const Project p = parseProject(kTwoMedians);
+  VolumeJob job;
+  job.settings = *p.volume;
+  job.settings.resolution = 96;
+  job.settings.iterations = 60;
+  job.threads = 1;
+  const DensityVolume one = computeDensityVolume(p, job);
+  job.threads = 4;
+  EXPECT_EQ(computeDensityVolume(p, job).density, one.density);
+}
+
+// A median function and a constant condensation: every time the constant map is picked the
+// orbit returns to C and repeats sets it has seen (looked up, not recomputed); the volume holds
+// all of C and most of A, the same on every run.
+TEST(MeasureAttractor, MedianAndConstantCondensationCoverBothSets) {
+  Project p = parseProject(R"({"format": "gridifs", "version": 1, "functions": [
+    {"name": "A", "kind": "median", "weight": 1, "set": {"primitive": "sphere", "center": [0.5, 0, 0], "radius": 0.3}},
+    {"name": "C", "kind": "condensation", "weight": 1, "set": {"primitive": "box", "center": [-0.5, 0, 0], "size": [0.4, 0.4, 0.4]}}]})");
+  VolumeJob job;
+  job.settings.resolution = 32;
+  job.settings.iterations = 400;
+  job.settings.skip = 0;
+  job.threads = 2;
+  const DensityVolume v = computeDensityVolume(p, job);
+  const VoxelSet a = voxelizeSet(p.functions[0].set, v.lattice, ".", "a");
+  const VoxelSet c = voxelizeSet(p.functions[1].set, v.lattice, ".", "c");
+  EXPECT_EQ(visitedFraction(v, c), 1.0);
+  EXPECT_GT(visitedFraction(v, a), 0.9);
+  EXPECT_EQ(computeDensityVolume(p, job).density, v.density);
+}
+
+TEST(SetOrbitMemo, InternsEqualSetsOnceAndRemembersImages) {
+  const VoxelLattice lattice{16};
+  SetOrbitMemo memo(2, 1 << 20);
+  const VoxelSet x{lattice, {1, 5, 9}}, y{lattice, {1, 5, 10}};
+  const int ix = memo.intern(x), iy = memo.intern(y);
+  EXPECT_NE(ix, iy);
+  EXPECT_EQ(memo.intern(VoxelSet{lattice, {1, 5, 9}}), ix);
+  EXPECT_EQ(memo.set(iy), y);
+  EXPECT_EQ(memo.image(ix, 1), SetOrbitMemo::kNone);
+  memo.rememberImage(ix, 1, iy);
+  EXPECT_EQ(memo.image(ix, 1), iy);
+  EXPECT_EQ(memo.image(ix, 0), SetOrbitMemo::kNone);
+  EXPECT_EQ(memo.setCount(), 2u);
+  // Past the byte budget new sets are not kept; known ones are still found.
+  SetOrbitMemo small(1, 3 * sizeof(std::uint32_t));
+  EXPECT_EQ(small.intern(x), 0);
+  EXPECT_EQ(small.intern(y), SetOrbitMemo::kNone);
+  EXPECT_EQ(small.intern(x), 0);
 }
 
 // Barnsley's condensation (Sokolov & Gentil, §3.1, fig. 4): f(p) = p/2 and a ball C; every
