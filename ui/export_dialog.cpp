@@ -15,9 +15,17 @@
 #include "io/point_cloud_export.h"
 #include "io/project_io.h"
 #include "ui/widgets.h"
+#include "volume/condensation_mesh.h"
 
 namespace gridifs::ui {
 namespace {
+
+// The deterministic snapshot with the condensation sets' meshes read (A_n = C ∪ F(A_{n−1})).
+DeterministicIfs deterministicSnapshot(const ModellerState& state) {
+  DeterministicIfs ifs = snapshotDeterministicIfs(state.document.project(), state.document.evaluation());
+  loadCondensationMeshes(ifs, state.document.project(), state.projectFolder());
+  return ifs;
+}
 
 namespace fs = std::filesystem;
 
@@ -84,7 +92,7 @@ void ExportDialog::updatePlan(const ModellerState& state) {
     DeterministicOptions options;
     options.depth = depth_;
     if (spec.shape == BaseShape::File && baseFile_.empty()) throw ModelError("", "choose a base mesh file");
-    plan_.plan = planDeterministic(snapshotDeterministicIfs(state.document.project(), state.document.evaluation()), spec, options);
+    plan_.plan = planDeterministic(deterministicSnapshot(state), spec, options);
   } catch (const std::exception& e) {
     plan_.error = e.what();
   }
@@ -176,7 +184,7 @@ void ExportDialog::start(ModellerState& state) {
       DeterministicOptions options;
       options.depth = depth_;
       const MeshWriteOptions writeOptions{!ascii_, true};
-      auto ifs = std::make_shared<DeterministicIfs>(snapshotDeterministicIfs(state.document.project(), state.document.evaluation()));
+      auto ifs = std::make_shared<DeterministicIfs>(deterministicSnapshot(state));
       task_.start([this, ifs, spec, options, writeOptions, output] {
         try {
           // Built where it lives: OpenMesh meshes copy on move (deterministic_ifs.h).

@@ -7,6 +7,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "render/camera.h"
+#include "volume/condensation_mesh.h"
 
 namespace gridifs::ui {
 namespace {
@@ -49,6 +50,9 @@ void MeshPreview::update(const Document& document) {
   request.spec.subdivision = sphere ? 0 : 1;
   try {
     request.ifs = snapshotDeterministicIfs(document.project(), document.evaluation());
+    // Condensation sets enter A_n = C ∪ F(A_{n−1}) as their surface meshes (read here, once per edit).
+    const std::filesystem::path folder = document.path().parent_path();
+    loadCondensationMeshes(request.ifs, document.project(), folder.empty() ? std::filesystem::path(".") : folder);
     // The safe maximum: the deepest n within the preview's face cap and the memory budget.
     DeterministicOptions options;
     const MeshCounts base = predictBaseCounts(loadCoarseBase(request.spec), request.spec);

@@ -10,7 +10,8 @@ CondensationSampler makeCondensationSampler(const Project& project, const std::f
   return [project, projectFolder, resolution](std::size_t index) {
     const Function& f = project.functions.at(index);
     const VoxelLattice lattice{resolution};
-    const VoxelSet set = voxelizeSet(f.set, lattice, projectFolder, "functions[" + std::to_string(index) + "].set");
+    // Relative to the function: compileIfs puts "functions[i]" in front.
+    const VoxelSet set = voxelizeSet(f.set, lattice, projectFolder, "set");
     constexpr std::size_t kSamples = 1 << 16;
     std::vector<Vec3> out;
     out.reserve(kSamples);

@@ -95,4 +95,14 @@ TEST(VolumeCli, BadInputExitsTwoAndWritesNothing) {
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.err.find("none.vdb"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(out));
+  // The chaos game's condensation sampler names the set once, under its function.
+  writeText(dir.path / "c.gridifs", R"({"format": "gridifs", "version": 1, "functions": [
+    {"kind": "condensation", "set": {"mesh": "gone.obj", "fill": "solid"}}]})");
+  const fs::path png = dir.path / "c.png";
+  r = runGridifs("render " + quote((dir.path / "c.gridifs").string()) + " -o " + quote(png.string()) +
+                 " --device cpu -q");
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("functions[0].set.mesh"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("functions[0].functions"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(png));
 }
