@@ -94,6 +94,50 @@ PointGenerator pointGeneratorOn(const std::string& device, std::string& used) {
   };
 }
 
+VoxelBinner voxelBinnerOn(const std::string& device, bool setIteration, std::string& used) {
+  gpu::RenderDevice d = gpu::RenderDevice::Auto;
+  gpu::parseRenderDevice(device, d);
+  used = "cpu";
+  if (d == gpu::RenderDevice::Cpu) return {};
+  const std::string sets = "the GPU renderer does not run the iteration over voxel sets of median functions";
+  if (setIteration) {
+    if (d == gpu::RenderDevice::Gpu) gpuFailed(sets + "; the CPU does");
+    noteFallback(sets);
+    return {};
+  }
+  try {
+    const gpu::DeviceReport report = gpu::reportDevice(d);
+    if (!report.gpu) {
+      noteFallback(report.description.substr(report.description.find(": ") + 2));
+      return {};
+    }
+    used = "gpu (" + report.info.renderer + ")";
+  } catch (const gpu::GpuUnavailable& e) {
+    gpuFailed(e.what());
+  }
+  return [d](const CompiledIfs& ifs, const VolumeJob& job, std::vector<std::uint32_t>& counts,
+             std::vector<float>& colors) {
+    RenderJob chaos;
+    chaos.samples = job.settings.samples;
+    chaos.seed = job.settings.seed;
+    chaos.skip = job.settings.skip;
+    try {
+      gpu::GpuVoxelCounts out =
+          gpu::binVoxelsGpu(ifs, chaos, job.settings.resolution, !colors.empty(), [&](double done) {
+            if (job.progress) job.progress(done);
+            return !(job.cancel && job.cancel->load(std::memory_order_relaxed));
+          });
+      counts = std::move(out.counts);
+      if (!colors.empty()) colors = std::move(out.colorSums);
+      return true;
+    } catch (const gpu::GpuUnavailable& e) {
+      if (d == gpu::RenderDevice::Gpu) gpuFailed(e.what());
+      noteFallback(e.what());
+      return false;
+    }
+  };
+}
+
 std::string deviceReport(const std::string& device, bool& gpuUsed) {
   gpu::RenderDevice d = gpu::RenderDevice::Auto;
   gpu::parseRenderDevice(device, d);
@@ -119,6 +163,13 @@ RenderImage renderOnDevice(const std::string& device, std::shared_ptr<const Comp
 }
 
 PointGenerator pointGeneratorOn(const std::string& device, std::string& used) {
+  if (device == "gpu") gpuFailed("this build of gridifs has no GPU renderer");
+  if (device == "auto") noteFallback("this build of gridifs has no GPU renderer");
+  used = "cpu";
+  return {};
+}
+
+VoxelBinner voxelBinnerOn(const std::string& device, bool, std::string& used) {
   if (device == "gpu") gpuFailed("this build of gridifs has no GPU renderer");
   if (device == "auto") noteFallback("this build of gridifs has no GPU renderer");
   used = "cpu";

@@ -1,5 +1,5 @@
 #pragma once
-// `--device auto|gpu|cpu` for render and export-points, and the device line of `info`: which
+// `--device auto|gpu|cpu` for render, export-points and volume, and the device line of `info`: which
 // renderer runs (the GPU compute renderer or the CPU worker pool), with the CPU as the fallback.
 #include <CLI/CLI.hpp>
 #include <functional>
@@ -9,6 +9,7 @@
 
 #include "render/chaos_renderer.h"
 #include "io/point_cloud_export.h"
+#include "volume/measure_attractor.h"
 
 namespace gridifs::cli {
 
@@ -28,6 +29,11 @@ RenderImage renderOnDevice(const std::string& device, std::shared_ptr<const Comp
 /// The point walk for export-points on `device` (empty: the CPU's generatePoints), with the same
 /// failure and fallback rules.
 PointGenerator pointGeneratorOn(const std::string& device, std::string& used);
+
+/// The density volume's voxel binning on `device` (empty: the CPU workers), with the same failure
+/// and fallback rules. `setIteration`: the project has median functions, whose iteration over
+/// voxel sets only the CPU runs.
+VoxelBinner voxelBinnerOn(const std::string& device, bool setIteration, std::string& used);
 
 /// Prints, once, why `auto` rendered on the CPU (after the output was written, so that a failing
 /// verb still prints one sentence only).

@@ -5,6 +5,7 @@
 
 #include "app/cli.h"
 #include "app/progress_bar.h"
+#include "app/render_device_option.h"
 #include "app/render_setup.h"
 #include "model/validation.h"
 #include "volume/measure_attractor.h"
@@ -16,7 +17,7 @@ namespace {
 struct VolumeArgs {
   std::string file, out;
   std::optional<int> resolution, iterations, threads;
-  std::optional<std::string> samples;
+  std::optional<std::string> samples, device;
   std::optional<std::uint64_t> seed;
   std::optional<double> time;
   bool quiet = false;
@@ -24,6 +25,7 @@ struct VolumeArgs {
 
 int runVolume(const VolumeArgs& a) {
   checkOutputPath(a.out, {"vdb"}, "the volume");
+  const std::string device = checkedDevice(a.device);
   const std::filesystem::path file(a.file);
   const Project project = loadForVerbAt(file, a.time);
   VolumeJob job;
@@ -49,6 +51,8 @@ int runVolume(const VolumeArgs& a) {
     job.threads = *a.threads;
   }
   job.projectFolder = file.parent_path().empty() ? std::filesystem::path(".") : file.parent_path();
+  std::string used;
+  job.binner = voxelBinnerOn(device, usesSetIteration(project), used);
   ProgressBar bar("volume", a.quiet);
   job.progress = [&](double done) { bar.fraction(done); };
   DensityVolume volume;
@@ -66,13 +70,14 @@ int runVolume(const VolumeArgs& a) {
     throw CliError(kFailure, e.what());
   }
   bar.finish();
+  printDeviceNote();
   return kSuccess;
 }
 
 const VerbRegistration kVolume{
     {"volume",
-     "FILE -o OUT.vdb [--resolution N --iterations K --samples S --seed S --threads T --time T]: the measure "
-     "attractor as an OpenVDB density volume",
+     "FILE -o OUT.vdb [--resolution N --iterations K --samples S --seed S --threads T --time T --device D]: the "
+     "measure attractor as an OpenVDB density volume",
      [](CLI::App& app) {
        auto a = std::make_shared<VolumeArgs>();
        app.add_option("FILE", a->file, "project file (.gridifs)")->required();
@@ -88,6 +93,7 @@ const VerbRegistration kVolume{
        app.add_option("--seed", a->seed, "random seed (default: the project's)");
        app.add_option("--threads", a->threads, "worker threads (default: all cores)");
        addTimeOption(app, a->time);
+       addDeviceOption(app, a->device);
        app.add_flag("-q,--quiet", a->quiet, "no progress bar");
        return [a] { return runVolume(*a); };
      }}};

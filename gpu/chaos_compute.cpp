@@ -48,16 +48,18 @@ std::uint32_t chainCount(const RenderJob& job, bool software) {
   return std::uint32_t(std::clamp<std::int64_t>(n, kGroupSize, kMaxChains));
 }
 
-ChaosCompute::ChaosCompute(const GpuInfo& info, bool accumulateColor, bool emitPoints, bool allowAtomic64)
+ChaosCompute::ChaosCompute(const GpuInfo& info, ChaosOutput output, bool accumulateColor, bool allowAtomic64)
     : info_(info),
-      color_(accumulateColor && !emitPoints),
-      points_(emitPoints),
-      atomic64_(allowAtomic64 && info.atomic64 && !emitPoints) {
+      output_(output),
+      color_(accumulateColor && output != ChaosOutput::Points),
+      points_(output == ChaosOutput::Points),
+      atomic64_(allowAtomic64 && info.atomic64 && output == ChaosOutput::Image) {
   std::string source = "#version 430 core\n";
   if (atomic64_)
     source += "#extension GL_ARB_gpu_shader_int64 : require\n#extension GL_NV_shader_atomic_int64 : require\n";
   source += std::string("#define ATOMIC64 ") + (atomic64_ ? "1" : "0") + "\n#define ACCUMULATE_COLOR " +
-            (color_ ? "1" : "0") + "\n#define EMIT_POINTS " + (points_ ? "1" : "0") + "\n#line 1\n";
+            (color_ ? "1" : "0") + "\n#define EMIT_POINTS " + (points_ ? "1" : "0") + "\n#define BIN_VOXELS " +
+            (output == ChaosOutput::Voxels ? "1" : "0") + "\n#line 1\n";
   source += shaderSource("chaos_game.comp.glsl");
   const gl::ShaderBuild shader = gl::compileShader(GL_COMPUTE_SHADER, source.c_str());
   if (!shader.id) throw GpuUnavailable("the GPU driver rejected the chaos-game shader: " + shader.log);
@@ -86,7 +88,7 @@ void ChaosCompute::allocate(unsigned buffer, std::size_t bytes, const std::strin
     throw GpuUnavailable("the GPU is out of memory for " + what + " (" + megabytes(bytes) + ")");
 }
 
-void ChaosCompute::setup(const CompiledIfs& ifs, const RenderJob& job, std::uint32_t chains) {
+void ChaosCompute::setup(const CompiledIfs& ifs, const RenderJob& job, std::uint32_t chains, int voxelResolution) {
   // The compute shader walks grid functions chosen independently; the CPU renderer takes the
   // rest (auto falls back to it).
   if (ifs.barycentricSize > 0)
@@ -151,8 +153,11 @@ void ChaosCompute::setup(const CompiledIfs& ifs, const RenderJob& job, std::uint
   depthMin_ = lo;
   depthScale_ = hi > lo ? 65534.0f / (hi - lo) : 0.0f;  // 0xFFFF.... stays the empty key
 
-  pixels_ = points_ ? 0 : std::size_t(job.width) * std::size_t(job.height);
-  const std::string image = std::to_string(job.width) + "×" + std::to_string(job.height) + " image";
+  voxels_ = output_ == ChaosOutput::Voxels ? voxelResolution : 0;
+  const std::size_t n = std::size_t(voxels_);
+  pixels_ = points_ ? 0 : voxels_ > 0 ? n * n * n : std::size_t(job.width) * std::size_t(job.height);
+  const std::string image = voxels_ > 0 ? std::to_string(voxels_) + "³ volume"
+                                        : std::to_string(job.width) + "×" + std::to_string(job.height) + " image";
   allocate(buffers_[kFunctions], functions.size() * sizeof(GpuFunction), "the IFS");
   glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(functions.size() * sizeof(GpuFunction)), functions.data());
   allocate(buffers_[kNodes], nodes.size() * sizeof(float), "the IFS's grids");
@@ -166,6 +171,13 @@ void ChaosCompute::setup(const CompiledIfs& ifs, const RenderJob& job, std::uint
     // 32 bytes a slot; as many iterations per dispatch as 64 MB of slots hold.
     pointSlots_ = std::size_t(chains) * std::max<std::size_t>(1, (std::size_t(64) << 20) / 32 / chains);
     allocate(buffers_[kKeys], pointSlots_ * 32, "the points");
+  } else if (voxels_ > 0) {
+    allocate(buffers_[kDensity], pixels_ * 4, "the density of a " + image);
+    glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    if (color_) {
+      allocate(buffers_[kColorSums], pixels_ * 24, "the colour sums of a " + image);
+      glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    }
   } else {
     allocate(buffers_[kKeys], pixels_ * (atomic64_ ? 8 : 4), "the z-buffer of a " + image);
     glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &ones);
@@ -207,7 +219,8 @@ void ChaosCompute::setup(const CompiledIfs& ifs, const RenderJob& job, std::uint
   glUniform1f(loc("uNear"), float(camera.nearPlane()));
   glUniform1ui(loc("uStride"), std::uint32_t(job.width));
   glUniform2f(loc("uDepthQuant"), depthMin_, depthScale_);
-  glUniform1i(loc("uPalette"), job.palette ? 1 : 0);
+  glUniform1i(loc("uPalette"), job.palette && voxels_ == 0 ? 1 : 0);
+  glUniform1ui(loc("uVoxels"), std::uint32_t(voxels_));
   glUniform1ui(loc("uMode"), 0);
   glDispatchCompute((chains + kGroupSize - 1) / kGroupSize, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
@@ -253,6 +266,15 @@ void ChaosCompute::readback(ChaosReadback& out) const {
   }
   out.samples = samplesDone();
   if (points_) return;
+  if (voxels_ > 0) {
+    out.keys64.clear();
+    out.keys32.clear();
+    out.density.resize(pixels_);
+    read(buffers_[kDensity], out.density.data(), pixels_ * 4);
+    out.colorSums.resize(color_ ? pixels_ * 6 : 0);
+    if (color_) read(buffers_[kColorSums], out.colorSums.data(), pixels_ * 24);
+    return;
+  }
   if (atomic64_) {
     out.keys64.resize(pixels_);
     out.keys32.clear();

@@ -13,7 +13,12 @@
 
 namespace gridifs::gpu {
 
-/// The buffers as read back: the raw keys, densities and fixed-point colour sums.
+/// What a dispatch writes: a projected image (z-buffer, density, flame colour sums), every plotted
+/// point (export-points), or hits per voxel of a lattice over X (the density volume).
+enum class ChaosOutput { Image, Points, Voxels };
+
+/// The buffers as read back: the raw keys, densities and fixed-point colour sums (Voxels: density
+/// and colorSums per voxel, 6 words a voxel).
 struct ChaosReadback {
   std::uint64_t generation = 0;
   int width = 0, height = 0;
@@ -33,14 +38,16 @@ std::uint32_t chainCount(const RenderJob& job, bool software);
 class ChaosCompute {
  public:
   /// Compiles the program variant. Throws GpuUnavailable when the driver rejects it.
-  ChaosCompute(const GpuInfo& info, bool accumulateColor, bool emitPoints, bool allowAtomic64);
+  /// accumulateColor: colour sums (Image: the flame display's; Voxels: rgb per voxel).
+  ChaosCompute(const GpuInfo& info, ChaosOutput output, bool accumulateColor, bool allowAtomic64);
   ~ChaosCompute();
   ChaosCompute(const ChaosCompute&) = delete;
   ChaosCompute& operator=(const ChaosCompute&) = delete;
 
   /// Uploads the IFS, allocates and clears the buffers and seeds the chains. Throws GpuUnavailable
-  /// when the image or the chains do not fit the device's memory.
-  void setup(const CompiledIfs& ifs, const RenderJob& job, std::uint32_t chains);
+  /// when the image (Voxels: the voxelResolution³ lattice) or the chains do not fit the device's
+  /// memory.
+  void setup(const CompiledIfs& ifs, const RenderJob& job, std::uint32_t chains, int voxelResolution = 0);
   /// Iterates every chain `iterations` more times (fewer where its budget ends). Does not wait.
   void dispatch(std::uint32_t iterations);
   /// Waits for the dispatched work.
@@ -59,7 +66,9 @@ class ChaosCompute {
   void allocate(unsigned buffer, std::size_t bytes, const std::string& what);
 
   GpuInfo info_;
+  ChaosOutput output_ = ChaosOutput::Image;
   bool color_ = false, points_ = false, atomic64_ = false;
+  int voxels_ = 0;
   unsigned program_ = 0;
   unsigned buffers_[9] = {};
   RenderJob job_;

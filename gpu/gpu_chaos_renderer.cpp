@@ -117,7 +117,8 @@ void rendererThread(std::shared_ptr<GpuChaosRenderer::Shared> shared) {
         auto& program = programs[job.accumulateColor];
         if (!program)
           program =
-              std::make_unique<ChaosCompute>(shared->info, job.accumulateColor, false, shared->options.allowAtomic64);
+              std::make_unique<ChaosCompute>(shared->info, ChaosOutput::Image, job.accumulateColor,
+                                             shared->options.allowAtomic64);
         program->setup(*ifs, job, chainCount(job, shared->info.software));
         compute = program.get();
       } catch (const GpuUnavailable& e) {

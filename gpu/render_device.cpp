@@ -1,5 +1,6 @@
 #include "gpu/render_device.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include "gpu/chaos_compute.h"
@@ -89,7 +90,7 @@ RenderStats generatePointsGpu(const CompiledIfs& ifs, const RenderJob& job,
   if (ifs.functions.empty() || ifs.alias.size() != ifs.functions.size())
     throw ModelError("functions", "no unmuted function has a positive weight");
   const auto context = HeadlessGlContext::create();
-  ChaosCompute compute(context->info(), false, true, false);
+  ChaosCompute compute(context->info(), ChaosOutput::Points, false, false);
   RenderJob pointJob = job;
   pointJob.width = pointJob.height = 1;  // no image; the camera is not used
   compute.setup(ifs, pointJob, chainCount(job, context->info().software));
@@ -120,6 +121,41 @@ RenderStats generatePointsGpu(const CompiledIfs& ifs, const RenderJob& job,
     if (!sink(PointBatch{xyz.data(), rgb.data(), xyz.size() / 3}, stats)) return stats;
   }
   return stats;
+}
+
+GpuVoxelCounts binVoxelsGpu(const CompiledIfs& ifs, const RenderJob& job, int resolution, bool color,
+                            const std::function<bool(double)>& progress) {
+  if (job.samples <= 0) throw ModelError("volume.samples", "must be at least 1");
+  if (ifs.functions.empty() || ifs.alias.size() != ifs.functions.size())
+    throw ModelError("functions", "no unmuted function has a positive weight");
+  const auto context = HeadlessGlContext::create();
+  ChaosCompute compute(context->info(), ChaosOutput::Voxels, color, false);
+  RenderJob voxelJob = job;
+  voxelJob.width = voxelJob.height = 1;  // no image; the camera is not used
+  compute.setup(ifs, voxelJob, chainCount(job, context->info().software), resolution);
+  // Slices of a few million samples keep each dispatch short (a driver may reset a GPU whose
+  // dispatch runs for seconds) and let progress and cancelling answer.
+  const std::uint32_t perDispatch =
+      std::uint32_t(std::clamp<std::int64_t>((std::int64_t(1) << 24) / compute.chains(), 1, 4096));
+  while (!compute.finished()) {
+    compute.dispatch(perDispatch);
+    compute.finish();
+    if (progress && !progress(double(compute.samplesDone()) / double(job.samples))) break;
+  }
+  ChaosReadback back;
+  compute.readback(back);
+  GpuVoxelCounts out;
+  out.counts = std::move(back.density);
+  if (color) {
+    // 16 fraction bits in 64-bit sums (two words): exact, whatever order the atomics ran in.
+    out.colorSums.resize(out.counts.size() * 3);
+    for (std::size_t i = 0; i < out.colorSums.size(); ++i)
+      out.colorSums[i] = float((double(back.colorSums[2 * i + 1]) * 4294967296.0 + double(back.colorSums[2 * i])) /
+                               65536.0);
+  }
+  out.samples = back.samples;
+  out.plotted = back.plotted;
+  return out;
 }
 
 }  // namespace gridifs::gpu

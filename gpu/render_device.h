@@ -5,8 +5,11 @@
 // such as Mesa's llvmpipe, which runs the compute shader on the CPU more slowly than the CPU
 // renderer does (and with 32-bit z-buffer keys). `gpu` takes the GPU whatever it is, llvmpipe
 // included, and fails when there is none.
+#include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "render/chaos_renderer.h"
 #include "gpu/headless_gl_context.h"
@@ -49,5 +52,19 @@ DeviceReport reportDevice(RenderDevice device);
 /// chain-interleaved per slice. Deterministic for a seed on one GPU. Throws GpuUnavailable.
 RenderStats generatePointsGpu(const CompiledIfs& ifs, const RenderJob& job,
                               const std::function<bool(const PointBatch&, const RenderStats&)>& sink);
+
+/// The density volume's chaos game on the GPU: the same skip, restart rule and final function as
+/// the CPU's binning, with the GPU's chains (chainCount); every plotted point is counted in its
+/// voxel of the resolution³ lattice over X = [-1, 1]³ (x fastest), and with `color` its rgb is
+/// summed there (3 floats per voxel). Deterministic for a seed on one GPU. `progress` gets the
+/// fraction done between slices and returns false to stop early (the counts so far come back).
+/// Throws GpuUnavailable (no context, an IFS the shader does not run, a lattice too large).
+struct GpuVoxelCounts {
+  std::vector<std::uint32_t> counts;
+  std::vector<float> colorSums;
+  std::int64_t samples = 0, plotted = 0;
+};
+GpuVoxelCounts binVoxelsGpu(const CompiledIfs& ifs, const RenderJob& job, int resolution, bool color,
+                            const std::function<bool(double)>& progress);
 
 }  // namespace gridifs::gpu

@@ -8,6 +8,9 @@
 //                     bits, 64 bits per channel as two 32-bit words with carry, so sums are exact
 //                     and independent of the order of the atomics).
 //   EMIT_POINTS       1: write every plotted point (world xyz, rgb) instead of projecting it.
+//   BIN_VOXELS        1: count every plotted point in its voxel of an n³ lattice over X = [-1, 1]³
+//                     instead of projecting it (the density volume; Sokolov & Gentil §3.4's
+//                     measure binned), with ACCUMULATE_COLOR: fixed-point rgb sums per voxel.
 layout(local_size_x = 64) in;
 
 struct Fn {
@@ -31,6 +34,11 @@ layout(std430, binding = 3) buffer Chains { Chain chains[]; };
 layout(std430, binding = 4) buffer Tallies { uvec2 tallies[]; };  // per chain: bad, plotted
 #if EMIT_POINTS
 layout(std430, binding = 5) writeonly buffer Points { vec4 points[]; };  // xyz valid, rgb 0 per slot
+#elif BIN_VOXELS
+layout(std430, binding = 6) buffer Density { uint density[]; };  // hits per voxel, x fastest
+#if ACCUMULATE_COLOR
+layout(std430, binding = 7) buffer ColorSums { uint sums[]; };  // 6 words per voxel: lo, hi per channel
+#endif
 #else
 #if ATOMIC64
 layout(std430, binding = 5) buffer ZBuffer { uint64_t keys[]; };
@@ -60,6 +68,7 @@ uniform float uNear;
 uniform uint uStride;
 uniform vec2 uDepthQuant;  // 32-bit keys: q = (depth - x) · y in [0, 65535]
 uniform bool uPalette;
+uniform uint uVoxels;      // BIN_VOXELS: voxels per axis
 
 uint rotl(uint x, int k) { return (x << k) | (x >> (32 - k)); }
 
@@ -132,7 +141,23 @@ void addFixed(uint word, float value) {
 }
 #endif
 
-#if !EMIT_POINTS
+#if BIN_VOXELS
+
+// The voxel of q by the same float arithmetic as the CPU's binning: s = (q + 1) · n/2.
+bool plot(vec3 q, vec4 col) {
+  const float n = float(uVoxels);
+  const vec3 s = (q + 1.0) * (0.5 * n);
+  if (!(all(greaterThanEqual(s, vec3(0.0))) && all(lessThan(s, vec3(n))))) return false;  // NaN fails
+  const uvec3 v = uvec3(s);
+  const uint voxel = v.x + uVoxels * (v.y + uVoxels * v.z);
+  if (atomicAdd(density[voxel], 1u) == 0xFFFFFFFFu) atomicMax(density[voxel], 0xFFFFFFFFu);  // saturate
+#if ACCUMULATE_COLOR
+  for (uint k = 0u; k < 3u; ++k) addFixed(voxel * 6u + 2u * k, col[k]);
+#endif
+  return true;
+}
+
+#elif !EMIT_POINTS
 
 bool plot(vec3 q, vec4 col) {
   const vec4 r = uCamX * q.x + uCamY * q.y + uCamZ * q.z + uCam1;

@@ -196,6 +196,13 @@ GRIDIFS_KERNEL_CLONES void runBarycentricBins(kernel::ChainState& chain, kernel:
   kernel::runBarycentricChain(chain, bary, ifs, count, bins, counters);
 }
 
+DensityVolume finishBinning(const VoxelLattice& lattice, const std::vector<std::uint32_t>& counts,
+                            std::vector<float> colors) {
+  DensityVolume volume{lattice, std::vector<float>(counts.begin(), counts.end()), std::move(colors), 0.0};
+  normalizeDensity(volume);
+  return volume;
+}
+
 DensityVolume binPoints(const Project& project, const VolumeJob& job) {
   const VolumeSettings& settings = job.settings;
   const VoxelLattice lattice{settings.resolution};
@@ -218,6 +225,7 @@ DensityVolume binPoints(const Project& project, const VolumeJob& job) {
   std::vector<std::uint32_t> counts(lattice.voxelCount(), 0);
   std::vector<float> colors;
   if (hasColorVolume(project)) colors.assign(lattice.voxelCount() * 3, 0.0f);
+  if (job.binner && job.binner(*compiled, job, counts, colors)) return finishBinning(lattice, counts, std::move(colors));
   const int threads = resolveThreadCount(job.threads);
   std::atomic<std::int64_t> done{0};
   constexpr std::int64_t kBatch = 1 << 18;
@@ -254,9 +262,7 @@ DensityVolume binPoints(const Project& project, const VolumeJob& job) {
   }
   for (std::thread& t : workers) t.join();
   if (job.progress) job.progress(1.0);
-  DensityVolume volume{lattice, std::vector<float>(counts.begin(), counts.end()), std::move(colors), 0.0};
-  normalizeDensity(volume);
-  return volume;
+  return finishBinning(lattice, counts, std::move(colors));
 }
 
 }  // namespace

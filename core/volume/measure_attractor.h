@@ -8,9 +8,19 @@
 #include <functional>
 
 #include "model/project.h"
+#include "render/compiled_ifs.h"
 #include "volume/density_volume.h"
 
 namespace gridifs {
+
+struct VolumeJob;
+
+/// Counts the chaos game's points per voxel somewhere other than the CPU workers (the GPU
+/// renderer's voxel binning): hits per voxel of settings.resolution³ into `counts` (x fastest)
+/// and, when `colors` is not empty on entry, the points' rgb sums (3 per voxel) into it. Returns
+/// false to leave the binning to the CPU workers.
+using VoxelBinner = std::function<bool(const CompiledIfs& ifs, const VolumeJob& job, std::vector<std::uint32_t>& counts,
+                                       std::vector<float>& colors)>;
 
 struct VolumeJob {
   VolumeSettings settings;
@@ -23,6 +33,8 @@ struct VolumeJob {
   /// Called on the calling thread after each accumulated set iteration with the partial volume
   /// (unnormalised visit counts in `density`), for a progressive display. May be empty.
   std::function<void(const DensityVolume&)> partial;
+  /// Bins the chaos game's points (an IFS without median functions) elsewhere when set.
+  VoxelBinner binner;
 };
 
 /// Whether `project` has a median function (and so runs the iteration over voxel sets).

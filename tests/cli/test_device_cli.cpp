@@ -1,4 +1,4 @@
-// `--device auto|gpu|cpu` on render, export-points and info (the GPU path runs on Mesa's llvmpipe
+// `--device auto|gpu|cpu` on render, export-points, volume and info (the GPU path runs on Mesa's llvmpipe
 // where there is no GPU). Failures are forced through the real EGL stack: libglvnd finds no EGL
 // vendor when __EGL_VENDOR_LIBRARY_FILENAMES names none, and Mesa hides compute shaders (and with
 // them OpenGL 4.3) with MESA_EXTENSION_OVERRIDE.
@@ -107,6 +107,52 @@ TEST(DeviceCli, InfoNamesTheDevice) {
   EXPECT_NE(gpu.out.find("\"render_device\": \"gpu\""), std::string::npos) << gpu.out;
   const CommandResult cpu = runGridifs("info " + example() + " --device cpu");
   EXPECT_NE(cpu.out.find("render device (--device cpu): cpu"), std::string::npos) << cpu.out;
+}
+
+TEST(DeviceCli, VolumeOnEachDevice) {
+  ScratchDir dir("device-volume");
+  for (const char* device : {"gpu", "cpu", "auto"}) {
+    SCOPED_TRACE(device);
+    const fs::path out = dir.path / (std::string(device) + ".vdb");
+    const CommandResult r = runGridifs("volume " + example() + " -o " + quote(out.string()) +
+                                       " --resolution 32 --samples 200000 -q --device " + device);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_GT(fs::file_size(out), 1000u);
+    if (std::string(device) != "auto") {
+      EXPECT_EQ(r.err, "");
+    }
+    EXPECT_LE(count(r.err, "note: rendered on the CPU"), 1u) << r.err;
+  }
+  EXPECT_EQ(runGridifs("volume " + example() + " -o " + quote((dir.path / "x.vdb").string()) + " --device npu").exitCode,
+            2);
+  EXPECT_FALSE(fs::exists(dir.path / "x.vdb"));
+}
+
+TEST(DeviceCli, VolumeOfWhatTheGpuDoesNotRunFailsOnGpuAndFallsBackOnAuto) {
+  ScratchDir dir("device-volume-cpu-only");
+  const std::string volumes = std::string(GRIDIFS_ASSETS) + "/volumes/";
+  // Median functions iterate voxel sets (no chaos game); condensation functions sample meshes.
+  for (const auto& [file, why] : {std::pair<std::string, std::string>{"two_sets.gridifs", "median functions"},
+                                  {"pine_trees.gridifs", "condensation functions"}}) {
+    SCOPED_TRACE(file);
+    const fs::path out = dir.path / (file + ".vdb");
+    const std::string args = "volume " + quote(volumes + file) + " -o " + quote(out.string()) +
+                             " --resolution 16 --iterations 20 --samples 100000 -q";
+    const CommandResult gpu = runGridifs(args + " --device gpu");
+    EXPECT_EQ(gpu.exitCode, 1) << gpu.err;
+    EXPECT_EQ(gpu.err.rfind("gridifs: cannot render on the GPU: ", 0), 0u) << gpu.err;
+    EXPECT_NE(gpu.err.find(why), std::string::npos) << gpu.err;
+    EXPECT_EQ(count(gpu.err, "\n"), 1u) << "one sentence: " << gpu.err;
+    EXPECT_FALSE(fs::exists(out));
+    const CommandResult fallback = runGridifs(args + " --device auto");
+    EXPECT_EQ(fallback.exitCode, 0) << fallback.err;
+    EXPECT_EQ(count(fallback.err, "note: rendered on the CPU: "), 1u) << fallback.err;
+    EXPECT_TRUE(fs::exists(out));
+  }
+  const CommandResult noEgl = runWithEnv(kNoEgl, "volume " + example() + " -o " + quote((dir.path / "e.vdb").string()) +
+                                                     " --resolution 16 --samples 10000 -q --device gpu");
+  EXPECT_EQ(noEgl.exitCode, 1) << noEgl.err;
+  EXPECT_FALSE(fs::exists(dir.path / "e.vdb"));
 }
 
 TEST(DeviceCli, ExportPointsOnTheGpu) {
