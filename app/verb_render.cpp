@@ -125,6 +125,11 @@ RenderImage renderWithProgress(const std::vector<RenderSetup>& setups, const Ren
           device, setup.ifs, part,
           displayOverride ? *displayOverride : DisplaySettings::fromProject(setup.project),
           [&](const RenderStats& s) {
+            // The image library loads on a second core while the chaos game runs, started once the
+            // workers run: dlopen holds the dynamic loader's lock while it maps and relocates
+            // OpenImageIO's ~230 libraries (0.2 s), and started earlier it kept the main thread
+            // waiting on that lock before the workers could start.
+            startLoadingImageWriter();
             bar.update(progress.before + done + s.samples, progress.total, s.pointsPerSecond);
             return !gInterrupted.load();
           },
@@ -325,8 +330,6 @@ int renderSequence(const std::string& file, const std::string& pattern, const Re
 int runRender(const std::string& file, const std::string& out, const RenderOverrides& overrides, bool quiet,
               const FlameOptions& flame, const SequenceOptions& sequence) {
   checkOutputPath(out, {"png", "exr", "tif", "tiff"}, "the output image");
-  // The image library loads on a second core while the project loads and the chaos game runs.
-  startLoadingImageWriter();
   if (sequence.motionBlur < 1 || sequence.motionBlur > kMaxMotionBlurSamples)
     throw CliError(kBadInput, "--motion-blur must be between 1 and " + std::to_string(kMaxMotionBlurSamples) +
                                   " time samples per frame");
