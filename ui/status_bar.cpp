@@ -55,16 +55,19 @@ void drawStatusBar(ModellerState& state, float height) {
   for (const Function& f : functions) active += f.muted ? 0 : 1;
   const char* phase = s.paused ? "paused" : s.done ? "done" : "rendering";
   if (!state.volumeStatus.empty()) {
-    // The volume mode computes the measure attractor instead of the chaos game's picture.
+    // The volume mode computes the measure attractor instead of the chaos game's picture, and the
+    // chaos game is paused meanwhile: its point count would read as a stalled render.
     ImGui::TextColored(ImVec4(0.6f, 0.8f, 0.95f, 1.0f), "%s", state.volumeStatus.c_str());
     ImGui::SameLine();
+    ImGui::Text(" ·  %d function%s", active, active == 1 ? "" : "s");
+  } else {
+    ImGui::TextColored(s.done ? ImVec4(0.55f, 0.8f, 0.55f, 1.0f) : ImVec4(0.95f, 0.75f, 0.35f, 1.0f), "%s", phase);
+    ImGui::SameLine();
+    ImGui::Text("%s points  ·  %s pts/s  ·  %s  ·  %d function%s", humanCount(double(s.samples)).c_str(),
+                humanCount(s.pointsPerSecond).c_str(), state.previewDevice.compare(0, 3, "gpu") == 0 ? "GPU" : "CPU",
+                active, active == 1 ? "" : "s");
+    if (ImGui::IsItemHovered()) state.contextHelp = "Preview renderer: " + state.previewDevice;
   }
-  ImGui::TextColored(s.done ? ImVec4(0.55f, 0.8f, 0.55f, 1.0f) : ImVec4(0.95f, 0.75f, 0.35f, 1.0f), "%s", phase);
-  ImGui::SameLine();
-  ImGui::Text("%s points  ·  %s pts/s  ·  %s  ·  %d function%s", humanCount(double(s.samples)).c_str(),
-              humanCount(s.pointsPerSecond).c_str(), state.previewDevice.compare(0, 3, "gpu") == 0 ? "GPU" : "CPU",
-              active, active == 1 ? "" : "s");
-  if (ImGui::IsItemHovered()) state.contextHelp = "Preview renderer: " + state.previewDevice;
   ImGui::SameLine();
   ImGui::TextDisabled("  |  ");
   ImGui::SameLine();
