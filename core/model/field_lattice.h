@@ -10,8 +10,6 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "base/hash.h"
-
 // Loops over many vertices or nodes are also compiled for AVX2 and AVX-512, and the loader
 // picks what the processor runs. Without fused multiply-adds, so every processor rounds alike.
 // Sanitized builds (GRIDIFS_NO_KERNEL_CLONES) compile one version: the clones' IFUNC resolver runs
@@ -27,9 +25,13 @@ namespace gridifs::field_lattice {
 
 constexpr int kDims = 4;
 
-// Odd 64-bit multipliers that spread a vertex's four indices over the hash input.
-constexpr std::array<std::uint64_t, kDims> kIndexMix{0x9E3779B97F4A7C15ull, 0xC2B2AE3D27D4EB4Full,
-                                                     0x165667B19E3779F9ull, 0xD6E8FEB86659FD93ull};
+// The random value RDN of a vertex is a 32-bit integer hash of the sum of one share per
+// dimension and a (seed, level) key: the shares are computed once per index along each
+// dimension, the sum once per vertex for the three axes, and the hash of 32-bit lanes is the
+// cheap part of a vector loop (sixteen lanes per AVX-512 instruction).
+//
+// Odd 32-bit multipliers of each dimension's share.
+constexpr std::array<std::uint32_t, kDims> kIndexMix{0x9E3779B9u, 0x85EBCA77u, 0xC2B2AE3Du, 0x27D4EB2Fu};
 
 inline std::int64_t wrapIndex(std::int64_t i, std::int64_t cells) {
   if (cells <= 0) return i;
@@ -37,10 +39,18 @@ inline std::int64_t wrapIndex(std::int64_t i, std::int64_t cells) {
   return i < 0 ? i + cells : i;
 }
 
-/// A vertex index's share of the hash input along dimension d (wrapped where periodic).
-inline std::uint64_t indexContribution(std::int64_t index, std::int64_t cells, int d) {
-  return static_cast<std::uint64_t>(wrapIndex(index, cells)) * kIndexMix[d];
+/// A vertex index's share of the hash input along dimension d (wrapped where periodic). It is
+/// not linear in the index: with shares index·m_d the sum of four shares modulo 2^32 would take
+/// equal values along a lattice of vertices a few hundred cells apart, and the meshes would
+/// repeat; the xor-shift of the product breaks that lattice. Indices 2^32 cells apart share.
+inline std::uint32_t indexContribution(std::int64_t index, std::int64_t cells, int d) {
+  std::uint32_t x = static_cast<std::uint32_t>(wrapIndex(index, cells)) * kIndexMix[d];
+  x ^= x >> 15;
+  return x * 0x2C1B3C6Du;
 }
+
+/// The 32-bit hash key of a 64-bit (seed, axis, level) mix.
+inline std::uint32_t foldKey(std::uint64_t key) { return static_cast<std::uint32_t>(key ^ (key >> 32)); }
 
 /// The cell of one mesh dimension that holds coordinate s: its lower vertex and the position in it.
 struct AxisCell {
@@ -64,13 +74,28 @@ inline double hermite(double f0, double f1, double d0, double d1, double u) {
   return ((a3 * u + a2) * u + d0) * u + f0;
 }
 
-/// RDN from a vertex's summed index contributions and a (seed, axis, level) key, in [-1, 1).
-inline double randomFromSum(std::uint64_t indexSum, std::uint64_t key) {
-  return static_cast<double>(splitmix64(indexSum + key) >> 11) * 0x1.0p-52 - 1.0;
+/// The 32-bit integer hash of RDN: Wellons' "lowbias32" (hash-prospector), a bijective
+/// xor-shift-multiply mix with low bias; exact integer arithmetic, equal on every machine.
+inline std::uint32_t mix32(std::uint32_t x) {
+  x ^= x >> 16;
+  x *= 0x7FEB352Du;
+  x ^= x >> 15;
+  x *= 0x846CA68Bu;
+  x ^= x >> 16;
+  return x;
+}
+
+/// The scale of RDN's integer: RDN = int32(hash) · 2^-31, in [-1, 1) and exact in double.
+constexpr double kRandomScale = 0x1.0p-31;
+
+/// RDN from a vertex's summed index shares and a (seed, axis, level) key, in [-1, 1).
+inline double randomFromSum(std::uint32_t indexSum, std::uint32_t key) {
+  return static_cast<double>(static_cast<std::int32_t>(mix32(indexSum + key))) * kRandomScale;
 }
 
 /// out[i] = randomFromSum(sums[i], key) for i < count: the same values, many at a time (the
-/// integer hash is exact, so every instruction set gives equal results).
-void randomsFromSums(const std::uint64_t* sums, std::size_t count, std::uint64_t key, double* out);
+/// integer hash and the conversion of a 32-bit integer to double are exact, so every
+/// instruction set gives equal results).
+void randomsFromSums(const std::uint32_t* sums, std::size_t count, std::uint32_t key, double* out);
 
 }  // namespace gridifs::field_lattice

@@ -10,7 +10,9 @@
 //   (trilinear, as the appendix carries slopes linearly through the later dimensions).
 // - Coarse meshes, whose vertices many nodes share, are collapsed once for the box of vertices
 //   the nodes reach and read from there; fine meshes, whose vertices no two nodes share, are
-//   hashed per node, many vertices per call.
+//   hashed per node: the interpolation is linear in the random values, so each node's value is
+//   one weighted sum of them, its weights shared by the three axes and the hashes done in the
+//   same vector loop over a block of nodes.
 // - Nodes that form an axis-aligned tensor grid (an undistorted grid, a heightfield) are
 //   interpolated one dimension at a time over the whole grid.
 // Each node's value depends only on its position, t and the field: not on the thread count.

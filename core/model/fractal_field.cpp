@@ -16,8 +16,9 @@ using field_lattice::kDims;
 using field_lattice::randomFromSum;
 constexpr int kCorners = 1 << kDims;
 
-std::uint64_t levelKey(std::uint64_t seed, int axis, int level) {
-  return splitmix64(splitmix64(seed + static_cast<std::uint64_t>(axis)) + static_cast<std::uint64_t>(level));
+std::uint32_t levelKey(std::uint64_t seed, int axis, int level) {
+  return field_lattice::foldKey(
+      splitmix64(splitmix64(seed + static_cast<std::uint64_t>(axis)) + static_cast<std::uint64_t>(level)));
 }
 
 }  // namespace
@@ -123,7 +124,7 @@ namespace {
 // The cell of one level that holds a sample point: its lower vertex's hash contribution per
 // dimension and step (-1, 0, +1, +2 from it, wrapped where periodic) and the position inside.
 struct CellStencil {
-  std::array<std::array<std::uint64_t, 4>, kDims> index{};  // [dimension][step + 1]
+  std::array<std::array<std::uint32_t, 4>, kDims> index{};  // [dimension][step + 1]
   std::array<double, kDims> u{};
 };
 
@@ -141,14 +142,14 @@ static CellStencil stencilFor(const Level& level, const FieldPoint& s) {
   return st;
 }
 
-void FractalField::levelValues(const Level& level, const std::array<std::uint64_t, 3>& keys, int axes,
+void FractalField::levelValues(const Level& level, const std::array<std::uint32_t, 3>& keys, int axes,
                                const FieldPoint& s, double* out) const {
   const CellStencil st = stencilFor(level, s);
   // The hash inputs of the 2^4 cell corners, and of each corner's outward neighbour along each
   // dimension (step -1 below a lower corner, +2 beyond an upper one).
-  std::array<std::uint64_t, kCorners> corner{};
+  std::array<std::uint32_t, kCorners> corner{};
   for (int c = 0; c < kCorners; ++c) {
-    std::uint64_t sum = 0;
+    std::uint32_t sum = 0;
     for (int d = 0; d < kDims; ++d) sum += st.index[d][1 + ((c >> d) & 1)];
     corner[c] = sum;
   }
@@ -166,7 +167,7 @@ void FractalField::levelValues(const Level& level, const std::array<std::uint64_
     }
     return;
   }
-  std::array<std::array<std::uint64_t, kDims>, kCorners> outward{};
+  std::array<std::array<std::uint32_t, kDims>, kCorners> outward{};
   for (int c = 0; c < kCorners; ++c) {
     for (int d = 0; d < kDims; ++d) {
       const int bit = (c >> d) & 1;

@@ -93,7 +93,7 @@ class FractalField {
     std::array<double, 4> offset{};       // this level's shift of the mesh, within one cell
     std::array<std::int64_t, 4> wrap{};   // cells per period, 0 = not periodic
     double weight = 0.0;                  // p(k)
-    std::array<std::uint64_t, 3> keys{};  // the hash keys of seeds S, S+1, S+2 at this level
+    std::array<std::uint32_t, 3> keys{};  // the hash keys of seeds S, S+1, S+2 at this level
   };
   int levelCount() const { return levelCount_; }
   /// Mesh `index` (0-based, < levelCount()).
@@ -103,7 +103,7 @@ class FractalField {
 
  private:
   /// One level's interpolated RDN for the first `axes` keys at s (already wrapped) into out.
-  void levelValues(const Level& level, const std::array<std::uint64_t, 3>& keys, int axes, const FieldPoint& s,
+  void levelValues(const Level& level, const std::array<std::uint32_t, 3>& keys, int axes, const FieldPoint& s,
                    double* out) const;
 
   FractalFieldParams params_;
