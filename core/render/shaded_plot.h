@@ -47,11 +47,13 @@ struct HotLens {
 /// The light half of the shaded plotter. Samples are collected in chunks and projected into the
 /// lights' maps a chunk at a time, away from the chaos game's loop: the loop only stores the point.
 /// The projection takes eight samples at once into every light in one pass over the chunk (the
-/// light count is a template parameter, so that loop is unrolled) and prefetches every texel of
-/// the chunk, in every map, before it writes any (the maps do not stay in the caches that the
-/// camera's random writes sweep). A minimum does not depend on the order, so the maps are those
-/// of plotting sample by sample. On its own it is the plotter of a light-only pass (the chaos
-/// game replayed to re-fill the maps of lights that moved, the camera's buffers kept).
+/// light count is a template parameter, so that loop is unrolled): one sample at a time, its
+/// arithmetic, not the maps' cache misses, was most of a light's cost (an attractor fills a few
+/// percent of a map's texels, which mostly stay in a core's L2 cache). Every texel of the chunk,
+/// in every map, is prefetched before any is written, for attractors that fill their maps. A
+/// minimum does not depend on the order, so the maps are those of plotting sample by sample. On
+/// its own it is the plotter of a light-only pass (the chaos game replayed to re-fill the maps of
+/// lights that moved, the camera's buffers kept).
 struct LightPlot {
   HotLight lights[kMaxShadowLights] = {};
   int lightCount = 0;
