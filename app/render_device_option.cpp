@@ -20,6 +20,24 @@ void noteFallback(const std::string& reason) {
   throw CliError(kFailure, "cannot render on the GPU: " + reason);
 }
 
+#if GRIDIFS_HAVE_GPU
+/// Whether a walk on `device` (not Cpu) takes the GPU: `used` names it. Gpu without a usable GPU
+/// fails with one sentence; Auto without a hardware GPU notes the fallback and returns false.
+bool gpuChosen(gpu::RenderDevice device, std::string& used) {
+  try {
+    const gpu::DeviceReport report = gpu::reportDevice(device);
+    if (!report.gpu) {
+      noteFallback(report.description.substr(report.description.find(": ") + 2));
+      return false;
+    }
+    used = "gpu (" + report.info.renderer + ")";
+  } catch (const gpu::GpuUnavailable& e) {
+    gpuFailed(e.what());
+  }
+  return true;
+}
+#endif
+
 }  // namespace
 
 void printDeviceNote() {
@@ -72,16 +90,7 @@ PointGenerator pointGeneratorOn(const std::string& device, std::string& used) {
   gpu::parseRenderDevice(device, d);
   used = "cpu";
   if (d == gpu::RenderDevice::Cpu) return {};
-  try {
-    const gpu::DeviceReport report = gpu::reportDevice(d);
-    if (!report.gpu) {
-      noteFallback(report.description.substr(report.description.find(": ") + 2));
-      return {};
-    }
-    used = "gpu (" + report.info.renderer + ")";
-  } catch (const gpu::GpuUnavailable& e) {
-    gpuFailed(e.what());
-  }
+  if (!gpuChosen(d, used)) return {};
   return [d](const CompiledIfs& ifs, const RenderJob& job,
              const std::function<bool(const PointBatch&, const RenderStats&)>& sink) {
     try {
@@ -105,16 +114,7 @@ VoxelBinner voxelBinnerOn(const std::string& device, bool setIteration, std::str
     noteFallback(sets);
     return {};
   }
-  try {
-    const gpu::DeviceReport report = gpu::reportDevice(d);
-    if (!report.gpu) {
-      noteFallback(report.description.substr(report.description.find(": ") + 2));
-      return {};
-    }
-    used = "gpu (" + report.info.renderer + ")";
-  } catch (const gpu::GpuUnavailable& e) {
-    gpuFailed(e.what());
-  }
+  if (!gpuChosen(d, used)) return {};
   return [d](const CompiledIfs& ifs, const VolumeJob& job, std::vector<std::uint32_t>& counts,
              std::vector<float>& colors) {
     RenderJob chaos;

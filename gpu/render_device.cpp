@@ -22,6 +22,14 @@ bool parseRenderDevice(const std::string& text, RenderDevice& device) {
 
 namespace {
 
+/// A walk with a fixed budget needs samples and a function to choose (`samples`: the JSON path
+/// that set the budget).
+void checkWalk(const CompiledIfs& ifs, const RenderJob& job, const char* samples) {
+  if (job.samples <= 0) throw ModelError(samples, "must be at least 1");
+  if (ifs.functions.empty() || ifs.alias.size() != ifs.functions.size())
+    throw ModelError("functions", "no unmuted function has a positive weight");
+}
+
 std::string softwareReason(const GpuInfo& info) {
   return "the only OpenGL here is " + info.renderer + ", a software rasterizer slower than the CPU renderer";
 }
@@ -86,9 +94,7 @@ DeviceReport reportDevice(RenderDevice device) {
 
 RenderStats generatePointsGpu(const CompiledIfs& ifs, const RenderJob& job,
                               const std::function<bool(const PointBatch&, const RenderStats&)>& sink) {
-  if (job.samples <= 0) throw ModelError("render.samples", "must be at least 1");
-  if (ifs.functions.empty() || ifs.alias.size() != ifs.functions.size())
-    throw ModelError("functions", "no unmuted function has a positive weight");
+  checkWalk(ifs, job, "render.samples");
   const auto context = HeadlessGlContext::create();
   ChaosCompute compute(context->info(), ChaosOutput::Points, false, false);
   RenderJob pointJob = job;
@@ -125,9 +131,7 @@ RenderStats generatePointsGpu(const CompiledIfs& ifs, const RenderJob& job,
 
 GpuVoxelCounts binVoxelsGpu(const CompiledIfs& ifs, const RenderJob& job, int resolution, bool color,
                             const std::function<bool(double)>& progress) {
-  if (job.samples <= 0) throw ModelError("volume.samples", "must be at least 1");
-  if (ifs.functions.empty() || ifs.alias.size() != ifs.functions.size())
-    throw ModelError("functions", "no unmuted function has a positive weight");
+  checkWalk(ifs, job, "volume.samples");
   const auto context = HeadlessGlContext::create();
   ChaosCompute compute(context->info(), ChaosOutput::Voxels, color, false);
   RenderJob voxelJob = job;

@@ -8,6 +8,7 @@
 #include "render/compiled_ifs.h"
 #include "gpu/gpu_chaos_renderer.h"
 #include "gpu/render_device.h"
+#include "gpu/correlation.h"
 #include "io/project_io.h"
 #include "core/renderer_scenes.h"
 
@@ -25,19 +26,7 @@ RenderImage renderGpu(GpuChaosRenderer& gpu, std::shared_ptr<const CompiledIfs> 
   return image;
 }
 
-double correlation(const std::vector<double>& a, const std::vector<double>& b) {
-  double ma = 0, mb = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) ma += a[i], mb += b[i];
-  ma /= double(a.size());
-  mb /= double(b.size());
-  double sab = 0, saa = 0, sbb = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    sab += (a[i] - ma) * (b[i] - mb);
-    saa += (a[i] - ma) * (a[i] - ma);
-    sbb += (b[i] - mb) * (b[i] - mb);
-  }
-  return saa > 0 && sbb > 0 ? sab / std::sqrt(saa * sbb) : 0.0;
-}
+using test::correlation;
 
 /// Densities over 2×2 blocks (the sampling noise of single pixels at test sample counts would
 /// dominate the correlation) and the alpha mask.

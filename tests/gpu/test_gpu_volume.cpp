@@ -8,25 +8,14 @@
 #include <filesystem>
 
 #include "gpu/render_device.h"
+#include "gpu/correlation.h"
 #include "io/project_io.h"
 #include "volume/measure_attractor.h"
 
 namespace gridifs {
 namespace {
 
-double correlation(const std::vector<float>& a, const std::vector<float>& b) {
-  double ma = 0, mb = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) ma += a[i], mb += b[i];
-  ma /= double(a.size());
-  mb /= double(b.size());
-  double sab = 0, saa = 0, sbb = 0;
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    sab += (a[i] - ma) * (b[i] - mb);
-    saa += (a[i] - ma) * (a[i] - ma);
-    sbb += (b[i] - mb) * (b[i] - mb);
-  }
-  return saa > 0 && sbb > 0 ? sab / std::sqrt(saa * sbb) : 0.0;
-}
+using test::correlation;
 
 /// Sums over 2×2×2 blocks: single voxels at test sample counts are mostly sampling noise.
 std::vector<float> blocks(const std::vector<float>& v, int n, int channels = 1, int channel = 0) {
