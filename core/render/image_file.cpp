@@ -3,6 +3,7 @@
 #include <dlfcn.h>
 
 #include <cstdlib>
+#include <fstream>
 #include <future>
 #include <mutex>
 
@@ -37,6 +38,25 @@ std::vector<std::string> candidates() {
   return paths;
 }
 
+// Loads the plugin's libraries, listed at build time beside it in load order
+// (image_io/list_dependencies.cmake), in reverse: deepest first. Why: the loader resolves each
+// symbol by walking the scope of the object being loaded, and in the plugin's scope OpenImageIO's
+// heaviest dependencies sit deep (GDAL, with ~48,000 symbol relocations, comes about 130 libraries
+// in), so one dlopen of the plugin spends ~0.2 CPU-seconds walking that list. A library loaded on
+// its own heads its own scope, and the dependencies it needs are already in place. Lazy binding
+// where a library allows it defers the rest to first use. A library that cannot be loaded alone is
+// skipped: the plugin's own dlopen loads it as before, so the list is only a speed-up.
+void preloadDependencies(const std::string& plugin) {
+  const std::size_t dot = plugin.rfind(".so");
+  if (dot == std::string::npos) return;
+  std::ifstream list(plugin.substr(0, dot) + ".deps");
+  std::vector<std::string> libraries;
+  constexpr std::size_t kMaxLibraries = 4096;  // a bound for a damaged list
+  for (std::string line; libraries.size() < kMaxLibraries && std::getline(list, line);)
+    if (!line.empty() && line.front() == '/') libraries.push_back(line);
+  for (auto it = libraries.rbegin(); it != libraries.rend(); ++it) dlopen(it->c_str(), RTLD_LAZY | RTLD_LOCAL);
+}
+
 ImageWriter load() {
   std::string firstError;
   for (const std::string& path : candidates()) {
@@ -44,6 +64,7 @@ ImageWriter load() {
       if (firstError.empty()) firstError = path + " does not exist";
       continue;
     }
+    preloadDependencies(path);
     void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
     if (!handle) {
       if (firstError.empty()) firstError = dlerror();
