@@ -159,6 +159,7 @@ template <class Plot>
       break;
   }
   if constexpr (requires { plot.flush(); }) plot.flush();
+  if constexpr (requires { plot.takePlotted(); }) plotted += plot.takePlotted();  // chunked plotters count late
   st = local;
   counters.samples += count;
   counters.bad += bad;

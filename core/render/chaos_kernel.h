@@ -243,7 +243,7 @@ struct ChainCounters {
   std::int64_t samples = 0, bad = 0, plotted = 0;
 };
 
-/// One iteration of one lane; returns 1 when a point was plotted. kRestricted: walk the
+/// One iteration of one lane; returns what the plotter returned (1 when it plotted the point at once). kRestricted: walk the
 /// transition matrix's Markov chain (Thollot et al. §3.2) instead of independent choices.
 /// kCondensation: a function with points is Barnsley's condensation map (Sokolov & Gentil, §3.1):
 /// the point jumps to a uniformly random sample of its set.
@@ -296,7 +296,8 @@ template <bool kRestricted, bool kRestarts, bool kCondensation = false, class Pl
 }
 
 /// Runs `count` iterations of the worker's chains (lane n % kLanes for the n-th one). `plot(q, color)`
-/// receives each point past `skip` (after the final function) and returns whether it was plotted.
+/// receives each point past `skip` (after the final function) and returns whether it was plotted;
+/// a plotter that plots in chunks returns 0 and reports its count through takePlotted() after flush().
 template <class Plot>
 [[gnu::always_inline]] inline void runChain(ChainState& st, const HotIfs& ifs, std::int64_t count, Plot& plot, ChainCounters& counters) {
   std::int64_t bad = 0, plotted = 0;
@@ -338,6 +339,7 @@ template <class Plot>
     for (int l = 0; l < int(count % kLanes); ++l) plotted += stepLane<false, false>(local, l, ifs, plot, bad);
   }
   if constexpr (requires { plot.flush(); }) plot.flush();
+  if constexpr (requires { plot.takePlotted(); }) plotted += plot.takePlotted();  // chunked plotters count late
   st = local;
   counters.samples += count;
   counters.bad += bad;
@@ -397,6 +399,16 @@ inline HotCamera makeHotCamera(const OrbitCamera& camera) {
 /// the per-pixel minimum independent of sample and worker order. Buffer accesses go through
 /// std::atomic_ref with relaxed order: plain moves on x86, but snapshot() may read them while
 /// the worker writes.
+///
+/// Samples are collected in chunks and plotted a chunk at a time, away from the chaos game's loop,
+/// which only stores the point and its colour. Why: one sample at a time, the projection, the
+/// colour packing and the read-modify-write of a cell far out in the buffers (which are far larger
+/// than the caches) shared the loop's registers and its few cache misses in flight with the
+/// function evaluations. A chunk is projected eight samples at once; every cell it touches is
+/// prefetched before the first is written; then the cells are updated in sample order, so every
+/// pixel still receives its colour additions in sample order and the sums are bit-identical to
+/// plotting at once. The projection is the same float operations, in the same order, as one
+/// sample at a time. runChain calls flush() and takes the plotted count with takePlotted().
 template <bool kAccumulateColor>
 struct ZBufferPlot {
   HotCamera cam;
@@ -407,25 +419,101 @@ struct ZBufferPlot {
   /// the blended RGB; lane 3 still sums c.
   const v4f* palette = nullptr;
 
-  /// Each plot is deferred by kDefer samples: the cell (and the pixel's colour sums) are
-  /// prefetched now and read-modify-written later, so the cache miss (the buffers are far larger
-  /// than the caches) overlaps the next samples' arithmetic instead of stalling it. The z-test is a
-  /// minimum and the density a sum; the pending plots are committed first in, first out, so every
-  /// pixel still receives its colour additions in sample order and the sums are bit-identical to
-  /// plotting at once. runChain calls flush().
-  static constexpr unsigned kDefer = 8;
-  struct PendingCell {
-    PixelCell* cell = nullptr;
-    std::uint64_t key = 0;
-  };
-  struct PendingColor : PendingCell {
-    float* sums = nullptr;
-    v4f add{};
-  };
-  using Pending = std::conditional_t<kAccumulateColor, PendingColor, PendingCell>;
-  Pending pending[kDefer] = {};
-  unsigned next = 0;
+  static constexpr int kChunk = 256;
+  static constexpr int kGroup = 8;  // samples projected at once
+  static_assert(kChunk % kGroup == 0);
+  v4f points[kChunk] = {};
+  v4f colors[kChunk] = {};
+  int count = 0;
+  std::int64_t plotted = 0;  // samples of drained chunks that landed in the image
 
+  /// Collects a sample; it is counted as plotted by takePlotted() once its chunk is drained.
+  [[gnu::always_inline]] int operator()(v4f q, v4f col) {
+    points[count] = q;
+    colors[count] = col;
+    if (++count == kChunk) [[unlikely]]
+      drain();
+    return 0;
+  }
+
+  void flush() {
+    if (count > 0) drain();
+  }
+
+  /// The samples plotted since the last call (after flush(), all of them).
+  std::int64_t takePlotted() {
+    const std::int64_t n = plotted;
+    plotted = 0;
+    return n;
+  }
+
+  /// Plots the collected chunk. Out of line (once per chunk), compiled for the CPU like the
+  /// chaos game's kernel.
+  [[gnu::noinline]] GRIDIFS_KERNEL_CLONES void drain() {
+    typedef std::int32_t v8i __attribute__((vector_size(32)));
+    typedef std::uint32_t v8u __attribute__((vector_size(32)));
+    // A partial chunk is padded with NaN points, which fall outside the image.
+    const int n = (count + kGroup - 1) / kGroup * kGroup;
+    for (int i = count; i < n; ++i) {
+      points[i] = v4f{} + __builtin_nanf("");
+      colors[i] = v4f{};
+    }
+    constexpr std::uint32_t kOutside = ~0u;
+    alignas(32) std::uint32_t pixels[kChunk];
+    alignas(32) std::uint32_t depths[kChunk];
+    alignas(32) std::uint32_t packed[kChunk];
+    v8f rows[4][4];  // rows[r][c]: coefficient c (x, y, z, constant) of row r (x·w, y·w, w, depth)
+    const v4f* columns[4] = {&cam.cx, &cam.cy, &cam.cz, &cam.c1};
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c) rows[r][c] = v8f{} + (*columns[c])[r];
+    const v8f width = v8f{} + cam.size[0], height = v8f{} + cam.size[1], nearPlane = v8f{} + cam.nearPlane;
+    const v8u stride = v8u{} + cam.stride;
+    std::int64_t inImage = 0;
+    for (int i = 0; i < n; i += kGroup) {
+      v8f x, y, z, unused;
+      transpose(points + i, x, y, z, unused);
+      // r = cx·x + cy·y + cz·z + c1 per row, as one sample at a time (no FMA contraction).
+      const v8f px = rows[0][0] * x + rows[0][1] * y + rows[0][2] * z + rows[0][3];
+      const v8f py = rows[1][0] * x + rows[1][1] * y + rows[1][2] * z + rows[1][3];
+      const v8f pw = rows[2][0] * x + rows[2][1] * y + rows[2][2] * z + rows[2][3];
+      const v8f depth = rows[3][0] * x + rows[3][1] * y + rows[3][2] * z + rows[3][3];
+      const v8f reciprocal = 1.0f / pw;
+      const v8f ix = px * reciprocal, iy = py * reciprocal;
+      // NaN fails every comparison, so it falls outside.
+      const v8i inside =
+          (depth > nearPlane) & (ix >= v8f{}) & (ix < width) & (iy >= v8f{}) & (iy < height);
+      const v8u column = v8u(__builtin_convertvector(inside ? ix : v8f{}, v8i));
+      const v8u row = v8u(__builtin_convertvector(inside ? iy : v8f{}, v8i));
+      const v8u pixel = inside ? row * stride + column : v8u{} + kOutside;
+      std::memcpy(pixels + i, &pixel, sizeof pixel);
+      const v8u depthBits = v8u(depth);
+      std::memcpy(depths + i, &depthBits, sizeof depthBits);
+      v8f red, green, blue, c;
+      transpose(colors + i, red, green, blue, c);
+      v8u r8, g8, b8, c8;
+      channelByte(red, r8);
+      channelByte(green, g8);
+      channelByte(blue, b8);
+      channelByte(c, c8);
+      const v8u colour = r8 | g8 << 8 | b8 << 16 | c8 << 24;
+      std::memcpy(packed + i, &colour, sizeof colour);
+      for (int k = 0; k < kGroup; ++k) {
+        if (pixels[i + k] == kOutside) continue;
+        ++inImage;
+        __builtin_prefetch(cells + pixels[i + k], 1);
+        if constexpr (kAccumulateColor) __builtin_prefetch(colorSums + std::size_t(pixels[i + k]) * 4, 1);
+      }
+    }
+    for (int i = 0; i < count; ++i) {
+      if (pixels[i] == kOutside) continue;
+      commit(cells[pixels[i]], (std::uint64_t(depths[i]) << 32) | packed[i]);
+      if constexpr (kAccumulateColor) addColor(colorSums + std::size_t(pixels[i]) * 4, colors[i]);
+    }
+    plotted += inImage;
+    count = 0;
+  }
+
+ private:
   [[gnu::always_inline]] static void commit(PixelCell& cell, std::uint64_t key) {
     std::atomic_ref<std::uint64_t> z(cell.key);
     if (key < z.load(std::memory_order_relaxed)) z.store(key, std::memory_order_relaxed);
@@ -434,60 +522,48 @@ struct ZBufferPlot {
     d.store(n + (n != 0xFFFFFFFFu), std::memory_order_relaxed);  // saturating
   }
 
-  [[gnu::always_inline]] static void commit(const Pending& p) {
-    commit(*p.cell, p.key);
-    if constexpr (kAccumulateColor) {
-      for (int k = 0; k < 4; ++k) {
-        std::atomic_ref<float> s(p.sums[k]);
-        s.store(s.load(std::memory_order_relaxed) + p.add[k], std::memory_order_relaxed);
-      }
+  [[gnu::always_inline]] void addColor(float* sums, v4f col) const {
+    v4f add = col;
+    if (palette) {  // flam3's linear palette mode: index c·256, blend entries i and i+1
+      float x = col[3] * 256.0f;
+      x = x > 0.0f ? (x < 256.0f ? x : 256.0f) : 0.0f;  // NaN → 0
+      const int i = int(x) < 255 ? int(x) : 255;
+      const float frac = x - float(i);
+      add = palette[i] + (palette[i + 1] - palette[i]) * frac;
+      add[3] = col[3];
+    }
+    for (int k = 0; k < 4; ++k) {
+      std::atomic_ref<float> s(sums[k]);
+      s.store(s.load(std::memory_order_relaxed) + add[k], std::memory_order_relaxed);
     }
   }
 
-  void flush() {
-    // Oldest first: the ring's next slot holds the oldest pending plot.
-    for (unsigned k = 0; k < kDefer; ++k) {
-      Pending& p = pending[(next + k) % kDefer];
-      if (p.cell) {
-        commit(p);
-        p.cell = nullptr;
-      }
+  /// Eight 4-lane vectors as four 8-lane rows (lane k of row j is element j of vector k).
+  [[gnu::always_inline]] static void transpose(const v4f* v, v8f& r0, v8f& r1, v8f& r2, v8f& r3) {
+    v4f out[4][2];
+    for (int h = 0; h < 2; ++h) {
+      const v4f a = v[4 * h], b = v[4 * h + 1], c = v[4 * h + 2], d = v[4 * h + 3];
+      const v4f ab01 = __builtin_shufflevector(a, b, 0, 4, 1, 5), cd01 = __builtin_shufflevector(c, d, 0, 4, 1, 5);
+      const v4f ab23 = __builtin_shufflevector(a, b, 2, 6, 3, 7), cd23 = __builtin_shufflevector(c, d, 2, 6, 3, 7);
+      out[0][h] = __builtin_shufflevector(ab01, cd01, 0, 1, 4, 5);
+      out[1][h] = __builtin_shufflevector(ab01, cd01, 2, 3, 6, 7);
+      out[2][h] = __builtin_shufflevector(ab23, cd23, 0, 1, 4, 5);
+      out[3][h] = __builtin_shufflevector(ab23, cd23, 2, 3, 6, 7);
     }
+    r0 = __builtin_shufflevector(out[0][0], out[0][1], 0, 1, 2, 3, 4, 5, 6, 7);
+    r1 = __builtin_shufflevector(out[1][0], out[1][1], 0, 1, 2, 3, 4, 5, 6, 7);
+    r2 = __builtin_shufflevector(out[2][0], out[2][1], 0, 1, 2, 3, 4, 5, 6, 7);
+    r3 = __builtin_shufflevector(out[3][0], out[3][1], 0, 1, 2, 3, 4, 5, 6, 7);
   }
 
-  [[gnu::always_inline]] int operator()(v4f q, v4f col) {
-    const v4f r = cam.cx * splat<0>(q) + cam.cy * splat<1>(q) + cam.cz * splat<2>(q) + cam.c1;
-    const float depth = r[3];
-    if (!(depth > cam.nearPlane)) return 0;
-    const v4f xy = r * (1.0f / r[2]);  // lanes 0, 1: pixel x, y
-    if ((laneMask((xy >= v4f{}) & (xy < cam.size)) & 3) != 3) return 0;  // NaN fails too
-    const v4i ixy = __builtin_convertvector(xy, v4i);
-    const std::size_t pixel = std::size_t(std::uint32_t(ixy[1])) * cam.stride + std::uint32_t(ixy[0]);
-    const std::uint64_t key = (std::uint64_t(std::bit_cast<std::uint32_t>(depth)) << 32) | packColor(col);
-    PixelCell& cell = cells[pixel];
-    __builtin_prefetch(&cell, 1);
-    Pending& slot = pending[next++ % kDefer];
-    if (slot.cell) commit(slot);
-    if constexpr (kAccumulateColor) {
-      v4f add = col;
-      if (palette) {  // flam3's linear palette mode: index c·256, blend entries i and i+1
-        float x = col[3] * 256.0f;
-        x = x > 0.0f ? (x < 256.0f ? x : 256.0f) : 0.0f;  // NaN → 0
-        const int i = int(x) < 255 ? int(x) : 255;
-        const float frac = x - float(i);
-        add = palette[i] + (palette[i + 1] - palette[i]) * frac;
-        add[3] = col[3];
-      }
-      float* sums = colorSums + pixel * 4;
-      __builtin_prefetch(sums, 1);
-      slot.cell = &cell;
-      slot.key = key;
-      slot.sums = sums;
-      slot.add = add;
-    } else {
-      slot = {&cell, key};
-    }
-    return 1;
+  /// packColor's byte for eight values of one channel: round(v·255) in [0, 255], NaN → 0.
+  template <class V8u>
+  [[gnu::always_inline]] static void channelByte(const v8f& v, V8u& out) {
+    typedef std::int32_t v8i __attribute__((vector_size(32)));
+    v8f scaled = v * 255.0f + 0.5f;
+    scaled = scaled > 0.0f ? scaled : v8f{};  // NaN → 0, as maxps(scaled, 0)
+    scaled = scaled < 255.0f ? scaled : v8f{} + 255.0f;
+    out = V8u(__builtin_convertvector(scaled, v8i));
   }
 };
 

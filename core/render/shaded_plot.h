@@ -181,6 +181,7 @@ struct ShadedPlot {
     camera.flush();
     light.flush();
   }
+  std::int64_t takePlotted() { return camera.takePlotted(); }
 
   [[gnu::always_inline]] int operator()(v4f q, v4f col) {
     light.add(q);  // before the lens: the light buffers do not depend on it
