@@ -49,6 +49,9 @@ extern "C" __attribute__((visibility("default"))) int gridifs_image_io_abi_versi
   return GRIDIFS_IMAGE_IO_ABI_VERSION;
 }
 
+// libpng's PNG_FILTER_UP, as OpenImageIO's "png:filter" attribute takes it.
+constexpr int kPngFilterUp = 0x20;
+
 extern "C" __attribute__((visibility("default"))) int gridifs_image_io_write(const GridifsImageRequest* request,
                                                                              char* error, size_t errorSize) {
   try {
@@ -61,6 +64,11 @@ extern "C" __attribute__((visibility("default"))) int gridifs_image_io_write(con
     if (r.description && *r.description) spec.attribute("ImageDescription", r.description);
     const std::string ext = lowerExtensionOf(r.path);
     if (ext == "exr" || ext == "tif" || ext == "tiff") spec.attribute("compression", "zip");
+    // PNG: the "up" filter on every row instead of libpng's default for 8-bit RGBA, which tries all
+    // five filters per row and keeps the best. Measured on 1024² renders at zlib level 6: 56 → 34 ms
+    // for a z-buffer image, 296 → 234 ms for a flame, 63 → 48 ms for a shaded one, and files within
+    // 1-2 % of the size (PNG filters: W3C PNG specification, §9).
+    if (ext == "png") spec.attribute("png:filter", kPngFilterUp);
     auto out = OIIO::ImageOutput::create(r.path);
     if (!out) return failWith(OIIO::geterror(), error, errorSize);
     const OIIO::TypeDesc given = r.pixelsAreFloat ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
