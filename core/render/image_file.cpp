@@ -1,14 +1,12 @@
 #include "render/image_file.h"
 
-#include <dlfcn.h>
-
 #include <cstdlib>
-#include <fstream>
 #include <future>
 #include <mutex>
 
 #include "base/atomic_file.h"
 #include "base/errors.h"
+#include "base/plugin_library.h"
 #include "image_writer_abi.h"
 
 namespace gridifs {
@@ -17,67 +15,20 @@ namespace {
 constexpr const char* kPluginFile = "libgridifs_image_io.so";
 
 using WriteFunction = int (*)(const GridifsImageRequest*, char*, size_t);
-using VersionFunction = int (*)();
 
 struct ImageWriter {
   WriteFunction write = nullptr;
   std::string problem;  // why it could not be loaded
 };
 
-// Where the plugin may be: only where GRIDIFS_IMAGE_IO names it, when it is set; else beside the
-// running executable (the gridifs binary), in the build tree it was built in (test and benchmark
-// binaries), or on the loader's search path.
-std::vector<std::string> candidates() {
-  std::vector<std::string> paths;
-  if (const char* named = std::getenv("GRIDIFS_IMAGE_IO"); named && *named) return {named};
-  std::error_code error;
-  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
-  if (!error) paths.push_back((self.parent_path() / kPluginFile).string());
-  paths.push_back(std::string(GRIDIFS_IMAGE_IO_BUILD_DIR) + "/" + kPluginFile);
-  paths.emplace_back(kPluginFile);
-  return paths;
-}
-
-// Loads the plugin's libraries, listed at build time beside it in load order
-// (image_io/list_dependencies.cmake), in reverse: deepest first. Why: the loader resolves each
-// symbol by walking the scope of the object being loaded, and in the plugin's scope OpenImageIO's
-// heaviest dependencies sit deep (GDAL, with ~48,000 symbol relocations, comes about 130 libraries
-// in), so one dlopen of the plugin spends ~0.2 CPU-seconds walking that list. A library loaded on
-// its own heads its own scope, and the dependencies it needs are already in place. Lazy binding
-// where a library allows it defers the rest to first use. A library that cannot be loaded alone is
-// skipped: the plugin's own dlopen loads it as before, so the list is only a speed-up.
-void preloadDependencies(const std::string& plugin) {
-  const std::size_t dot = plugin.rfind(".so");
-  if (dot == std::string::npos) return;
-  std::ifstream list(plugin.substr(0, dot) + ".deps");
-  std::vector<std::string> libraries;
-  constexpr std::size_t kMaxLibraries = 4096;  // a bound for a damaged list
-  for (std::string line; libraries.size() < kMaxLibraries && std::getline(list, line);)
-    if (!line.empty() && line.front() == '/') libraries.push_back(line);
-  for (auto it = libraries.rbegin(); it != libraries.rend(); ++it) dlopen(it->c_str(), RTLD_LAZY | RTLD_LOCAL);
-}
-
 ImageWriter load() {
-  std::string firstError;
-  for (const std::string& path : candidates()) {
-    if (path.find('/') != std::string::npos && !std::filesystem::exists(path)) {
-      if (firstError.empty()) firstError = path + " does not exist";
-      continue;
-    }
-    preloadDependencies(path);
-    void* handle = dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
-    if (!handle) {
-      if (firstError.empty()) firstError = dlerror();
-      continue;
-    }
-    const auto version = reinterpret_cast<VersionFunction>(dlsym(handle, "gridifs_image_io_abi_version"));
-    const auto write = reinterpret_cast<WriteFunction>(dlsym(handle, "gridifs_image_io_write"));
-    if (version && write && version() == GRIDIFS_IMAGE_IO_ABI_VERSION) return {write, {}};
-    if (firstError.empty()) firstError = path + " is from another version of GridIFS";
-    dlclose(handle);
-  }
-  return {nullptr, "the image library (" + std::string(kPluginFile) + ") could not be loaded" +
-                       (firstError.empty() ? std::string() : ": " + firstError)};
+  const PluginLibrary plugin = loadPluginLibrary(kPluginFile, "GRIDIFS_IMAGE_IO", GRIDIFS_IMAGE_IO_BUILD_DIR,
+                                                 "gridifs_image_io_abi_version", GRIDIFS_IMAGE_IO_ABI_VERSION,
+                                                 "the image library");
+  if (!plugin.handle) return {nullptr, plugin.problem};
+  const auto write = reinterpret_cast<WriteFunction>(plugin.symbol("gridifs_image_io_write"));
+  if (!write) return {nullptr, std::string("the image library (") + kPluginFile + ") is from another version of GridIFS"};
+  return {write, {}};
 }
 
 struct Loading {

@@ -1,14 +1,12 @@
 #include "volume/condensation_mesh.h"
 
-#include <openvdb/tools/VolumeToMesh.h>
-
 #include <cmath>
 #include <glm/geometric.hpp>
 
 #include "mesh/base_mesh.h"
 #include "mesh/mesh_io.h"
 #include "model/stack_evaluator.h"
-#include "volume/vdb_support.h"
+#include "volume/vdb_io.h"
 
 namespace gridifs {
 namespace {
@@ -83,23 +81,25 @@ IfsMesh fileMesh(const CondensationSet& set, const std::filesystem::path& file, 
 }
 
 IfsMesh vdbMesh(const CondensationSet& set, const std::filesystem::path& file, const std::string& jsonPath) {
-  const openvdb::FloatGrid::Ptr grid = readFloatGrid(file, set.grid, jsonPath);
-  std::vector<openvdb::Vec3s> points;
-  std::vector<openvdb::Vec3I> triangles;
-  std::vector<openvdb::Vec4I> quads;
-  openvdb::tools::volumeToMesh(*grid, points, triangles, quads, double(set.threshold));
+  const vdb_io::FaceLists faces = vdb_io::gridIsoSurface(file, set.grid, float(set.threshold), jsonPath);
+  const auto& points = faces.points;
+  const auto& triangles = faces.triangles;
+  const auto& quads = faces.quads;
   if (triangles.empty() && quads.empty())
     throw ModelError(jsonPath + ".threshold", "the grid \"" + set.grid + "\" of " + file.string() +
                                                   " has no iso-surface at the threshold " +
                                                   std::to_string(set.threshold));
   IfsMesh mesh;
   std::vector<IfsMesh::VertexHandle> vs;
-  vs.reserve(points.size());
-  for (const auto& p : points) vs.push_back(mesh.add_vertex(IfsMesh::Point(p.x(), p.y(), p.z())));
+  vs.reserve(points.size() / 3);
+  for (std::size_t p = 0; p + 2 < points.size(); p += 3)
+    vs.push_back(mesh.add_vertex(IfsMesh::Point(points[p], points[p + 1], points[p + 2])));
   // volumeToMesh orients faces for a level set (inside below the iso-value); the set is the
   // region at or above the threshold, so the winding is reversed to face out of it.
-  for (const auto& t : quads) mesh.add_face(vs[t[3]], vs[t[2]], vs[t[1]], vs[t[0]]);
-  for (const auto& t : triangles) mesh.add_face(vs[t[2]], vs[t[1]], vs[t[0]]);
+  for (std::size_t q = 0; q + 3 < quads.size(); q += 4)
+    mesh.add_face(vs[quads[q + 3]], vs[quads[q + 2]], vs[quads[q + 1]], vs[quads[q]]);
+  for (std::size_t t = 0; t + 2 < triangles.size(); t += 3)
+    mesh.add_face(vs[triangles[t + 2]], vs[triangles[t + 1]], vs[triangles[t]]);
   return mesh;
 }
 
@@ -118,7 +118,6 @@ IfsMesh condensationSetMesh(const CondensationSet& set, const std::filesystem::p
     case SetShape::Mesh:
       return fileMesh(set, projectFolder / set.path, jsonPath);
     case SetShape::Vdb:
-      initializeOpenVdb();
       return vdbMesh(set, projectFolder / set.path, jsonPath);
   }
   return sphereMesh(set);

@@ -1,5 +1,6 @@
-// The image writer is a plugin (image_io/): gridifs itself does not link OpenImageIO, so verbs
-// that write no image start without loading its ~260 libraries; a missing plugin is one sentence.
+// The image writer and OpenVDB are plugins (image_io/, vdb_io/): gridifs itself links neither
+// OpenImageIO nor OpenVDB, so verbs that write no image or volume start without loading their
+// libraries; a missing plugin is one sentence.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -45,6 +46,28 @@ TEST(ImagePlugin, AMissingPluginIsOneSentenceAndWritesNothing) {
   const auto r = runGridifs("render " + quote(asset("sierpinski_tetrahedron.gridifs")) + " -o " + quote(out.string()) +
                                 " --width 64 --height 48 --samples 20000 --device cpu -q",
                             "", "GRIDIFS_IMAGE_IO=" + quote((dir.path / "libmissing.so").string()));
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  EXPECT_NE(r.err.find("could not be loaded"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_TRUE(fs::is_empty(dir.path)) << "no temporary file is left behind";
+}
+
+TEST(VdbPlugin, GridifsDoesNotLinkOpenVdb) {
+  ScratchDir dir("vdb-plugin-needed");
+  const fs::path listing = dir.path / "dynamic.txt";
+  ASSERT_EQ(std::system(("objdump -p " + quote(GRIDIFS_EXE) + " > " + quote(listing.string())).c_str()), 0);
+  const std::string text = test_support::slurp(listing.string());
+  EXPECT_NE(text.find("NEEDED"), std::string::npos) << "objdump listed no dynamic section";
+  EXPECT_EQ(text.find("libopenvdb"), std::string::npos) << "gridifs links OpenVDB again: every start pays for loading it";
+}
+
+TEST(VdbPlugin, AMissingPluginIsOneSentenceAndWritesNothing) {
+  ScratchDir dir("vdb-plugin-missing");
+  const fs::path out = dir.path / "out.vdb";
+  const auto r = runGridifs("volume " + quote(asset("volumes/two_sets.gridifs")) + " -o " + quote(out.string()) +
+                                " --resolution 16 --device cpu -q",
+                            "", "GRIDIFS_VDB_IO=" + quote((dir.path / "libmissing.so").string()));
   EXPECT_EQ(r.exitCode, 1) << r.err;
   EXPECT_NE(r.err.find("could not be loaded"), std::string::npos) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
