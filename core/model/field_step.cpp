@@ -177,7 +177,7 @@ void collapseRow(const Level& level, const TimeCollapse& time, bool cubic,
     for (int step = 0; step < steps; ++step)
       scratch.sums[i * steps + step] = share[0][i] + rowShare + time.index[first + step];
   for (int a = 0; a < kAxes; ++a) {
-    randomsFromSums(scratch.sums.data(), scratch.sums.size(), level.keys[a], scratch.f.data());
+    randomsFromSums(scratch.sums.data(), scratch.sums.size(), {level.keys[a], level.shifts[a]}, scratch.f.data());
     for (std::size_t i = 0; i < width; ++i) {
       const double* v = &scratch.f[i * steps];
       if (cubic) {
@@ -399,9 +399,11 @@ void blockWeights(bool cubic, const TimeCollapse& time, const std::array<std::ar
   }
 }
 
-// out[a][n] = Σ_v weight[v][n] · int32(mix32(sum_v,n + key_a)) for the three axes, v in order,
-// where sum_v,n adds node n's shares of vertex v's steps: the hash and the sums in one loop over
-// the block's nodes, the three axes sharing each vertex's index sum.
+// out[a][n] = Σ_v weight[v][n] · RDN integer of axis a at vertex v for node n (v in order),
+// where vertex v's hash input adds node n's shares of v's steps: the hashes and the sums in one
+// loop over the block's nodes. The three axes (seeds S, S+1, S+2) take two hashes per vertex,
+// of the seed pairs holding S and S+2: even S reads the pair (S, S+1) whole and the upper half
+// of the next; odd S the lower half of the first and the next pair whole.
 // GCC's unroll-and-jam fuses two vertices' loops into one it then leaves scalar: keep it off.
 #if defined(__GNUC__) && !defined(__clang__)
 #define GRIDIFS_NO_UNROLL_AND_JAM __attribute__((optimize("no-loop-unroll-and-jam")))
@@ -409,12 +411,14 @@ void blockWeights(bool cubic, const TimeCollapse& time, const std::array<std::ar
 #define GRIDIFS_NO_UNROLL_AND_JAM
 #endif
 
+template <bool OddSeed>
 GRIDIFS_FIELD_VECTOR_CLONES GRIDIFS_NO_UNROLL_AND_JAM
 void hashAndSum(const VertexSteps* vertices, int count, const BlockScratch& in, const std::array<std::uint32_t, 4>& times,
-                const std::array<std::uint32_t, kAxes>& keys, std::array<std::array<double, kBlock>, kAxes>& out) {
+                std::uint32_t firstPairKey, std::uint32_t secondPairKey,
+                std::array<std::array<double, kBlock>, kAxes>& out) {
   using field_lattice::mix32;
+  using field_lattice::randomHalf;
   double sum[kAxes][kBlock] = {};
-  const std::uint32_t k0 = keys[0], k1 = keys[1], k2 = keys[2];
   for (int v = 0; v < count; ++v) {
     const VertexSteps& s = vertices[v];
     const std::uint32_t* x = in.share[0][s.step[0]].data();
@@ -424,13 +428,27 @@ void hashAndSum(const VertexSteps* vertices, int count, const BlockScratch& in, 
     const double* w = in.weight.data() + std::size_t(v) * kBlock;
     for (std::size_t n = 0; n < kBlock; ++n) {
       const std::uint32_t index = x[n] + y[n] + z[n] + t;
-      sum[0][n] += w[n] * double(std::int32_t(mix32(index + k0)));
-      sum[1][n] += w[n] * double(std::int32_t(mix32(index + k1)));
-      sum[2][n] += w[n] * double(std::int32_t(mix32(index + k2)));
+      const std::uint32_t first = mix32(index + firstPairKey);
+      const std::uint32_t second = mix32(index + secondPairKey);
+      const std::int32_t a0 = OddSeed ? randomHalf(first, 16) : randomHalf(first, 0);
+      const std::int32_t a1 = OddSeed ? randomHalf(second, 0) : randomHalf(first, 16);
+      const std::int32_t a2 = OddSeed ? randomHalf(second, 16) : randomHalf(second, 0);
+      sum[0][n] += w[n] * double(a0);
+      sum[1][n] += w[n] * double(a1);
+      sum[2][n] += w[n] * double(a2);
     }
   }
   for (int a = 0; a < kAxes; ++a)
     for (std::size_t n = 0; n < kBlock; ++n) out[a][n] = sum[a][n];
+}
+
+void hashAndSum(const VertexSteps* vertices, int count, const BlockScratch& in, const std::array<std::uint32_t, 4>& times,
+                const Level& level, std::array<std::array<double, kBlock>, kAxes>& out) {
+  // Axes 0 and 2 lie in consecutive seed pairs; axis 0's half says which case this is.
+  if (level.shifts[0] != 0)
+    hashAndSum<true>(vertices, count, in, times, level.keys[0], level.keys[2], out);
+  else
+    hashAndSum<false>(vertices, count, in, times, level.keys[0], level.keys[2], out);
 }
 
 // A sample's cell along one dimension as the hashing reads it: the index shares of the four
@@ -462,9 +480,9 @@ void hashDirect(const Level& level, const TimeCollapse& time, bool cubic, std::s
                 Vec3* total) {
   blockWeights(cubic, time, scratch.u, scratch.weight.data());
   if (cubic)
-    hashAndSum(kCubicSteps.data(), kCubicVertices, scratch, time.index, level.keys, scratch.out);
+    hashAndSum(kCubicSteps.data(), kCubicVertices, scratch, time.index, level, scratch.out);
   else
-    hashAndSum(kLinearSteps.data(), kLinearVertices, scratch, time.index, level.keys, scratch.out);
+    hashAndSum(kLinearSteps.data(), kLinearVertices, scratch, time.index, level, scratch.out);
   for (std::size_t n = 0; n < count; ++n)
     total[n] += level.weight * Vec3{scratch.out[0][n], scratch.out[1][n], scratch.out[2][n]};
 }
@@ -724,13 +742,22 @@ void fieldStepDisplace(const FractalField& field, std::vector<Vec3>& nodes, cons
         for (std::size_t b = begin; b < end; ++b) {
           const std::size_t first = b * kBlock;
           const std::size_t count = std::min(kBlock, selected.size() - first);
-          for (std::size_t n = 0; n < kBlock; ++n) {
-            const std::size_t node = first + std::min(n, count - 1);
-            if (tensor) {
-              putNode(n, lineCells[0][node % nx], lineCells[1][(node / nx) % ny], lineCells[2][node / (nx * ny)],
-                      scratch);
-            } else {
-              const Vec3& q = samples[node];
+          if (tensor) {
+            // The block's grid position found once and stepped, not divided out per node.
+            std::size_t i = first % nx, j = (first / nx) % ny, k = first / (nx * ny);
+            for (std::size_t n = 0; n < kBlock; ++n) {
+              putNode(n, lineCells[0][i], lineCells[1][j], lineCells[2][k], scratch);
+              if (n + 1 < count && ++i == nx) {
+                i = 0;
+                if (++j == ny) {
+                  j = 0;
+                  ++k;
+                }
+              }
+            }
+          } else {
+            for (std::size_t n = 0; n < kBlock; ++n) {
+              const Vec3& q = samples[first + std::min(n, count - 1)];
               putNode(n, sampleCell(level, 0, axisCell(q[0], level.offset[0], level.cell[0])),
                       sampleCell(level, 1, axisCell(q[1], level.offset[1], level.cell[1])),
                       sampleCell(level, 2, axisCell(q[2], level.offset[2], level.cell[2])), scratch);
