@@ -67,7 +67,7 @@ TEST(FieldStep, EqualsThePointByPointFieldOnScatteredPoints) {
 TEST(FieldStep, EqualsThePointByPointFieldOnGrids) {
   for (FieldInterpolation interpolation : kBoth) {
     const FractalField field(windyField(interpolation));
-    for (const Index3& resolution : {Index3{20, 17, 23}, Index3{33, 29, 2}, Index3{40, 3, 40}}) {
+    for (const Index3& resolution : {Index3{20, 17, 23}, Index3{33, 29, 2}, Index3{40, 3, 40}, Index3{64, 6, 5}}) {
       const Grid grid(resolution);
       const std::vector<unsigned char> mask(grid.nodes().size(), 1);
       for (double t : kTimes)
