@@ -4,7 +4,7 @@ namespace gridifs::field_lattice {
 
 // Thirty-two-bit lanes: sixteen hashes per AVX-512 instruction, eight per AVX2 one.
 GRIDIFS_FIELD_VECTOR_CLONES
-void randomsFromSums(const std::uint32_t* sums, std::size_t count, std::uint32_t key, double* out) {
+void randomsFromSums(const std::uint32_t* sums, std::size_t count, RandomKey key, double* out) {
   for (std::size_t i = 0; i < count; ++i) out[i] = randomFromSum(sums[i], key);
 }
 

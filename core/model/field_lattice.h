@@ -25,10 +25,12 @@ namespace gridifs::field_lattice {
 
 constexpr int kDims = 4;
 
-// The random value RDN of a vertex is a 32-bit integer hash of the sum of one share per
-// dimension and a (seed, level) key: the shares are computed once per index along each
+// The random value RDN of a vertex is half of a 32-bit integer hash of the sum of one share per
+// dimension and a (seed pair, level) key: the shares are computed once per index along each
 // dimension, the sum once per vertex for the three axes, and the hash of 32-bit lanes is the
-// cheap part of a vector loop (sixteen lanes per AVX-512 instruction).
+// cheap part of a vector loop (sixteen lanes per AVX-512 instruction). One hash serves two
+// seeds, 2m (its upper 16 bits) and 2m + 1 (its lower 16 bits), so the three axes' seeds S, S+1,
+// S+2 take two hashes per vertex instead of three; 16 bits are ample for a noise field's values.
 //
 // Odd 32-bit multipliers of each dimension's share.
 constexpr std::array<std::uint32_t, kDims> kIndexMix{0x9E3779B9u, 0x85EBCA77u, 0xC2B2AE3Du, 0x27D4EB2Fu};
@@ -49,7 +51,7 @@ inline std::uint32_t indexContribution(std::int64_t index, std::int64_t cells, i
   return x * 0x2C1B3C6Du;
 }
 
-/// The 32-bit hash key of a 64-bit (seed, axis, level) mix.
+/// The 32-bit hash key of a 64-bit (seed pair, level) mix.
 inline std::uint32_t foldKey(std::uint64_t key) { return static_cast<std::uint32_t>(key ^ (key >> 32)); }
 
 /// The cell of one mesh dimension that holds coordinate s: its lower vertex and the position in it.
@@ -74,28 +76,43 @@ inline double hermite(double f0, double f1, double d0, double d1, double u) {
   return ((a3 * u + a2) * u + d0) * u + f0;
 }
 
-/// The 32-bit integer hash of RDN: Wellons' "lowbias32" (hash-prospector), a bijective
-/// xor-shift-multiply mix with low bias; exact integer arithmetic, equal on every machine.
+/// The 32-bit integer hash of RDN: the first round of Wellons' "lowbias32" (hash-prospector), a
+/// bijective xor-shift-multiply-xor-shift mix; exact integer arithmetic, equal on every machine.
+/// One round suffices because its input is already mixed: each dimension's share is a product
+/// passed through an xor-shift and a second product (indexContribution), so neighbouring
+/// vertices differ by unrelated 32-bit steps (the statistics are tested: uniform values,
+/// uncorrelated neighbours, axes, seed pairs and far vertices, also in their magnitudes).
 inline std::uint32_t mix32(std::uint32_t x) {
   x ^= x >> 16;
   x *= 0x7FEB352Du;
   x ^= x >> 15;
-  x *= 0x846CA68Bu;
-  x ^= x >> 16;
   return x;
 }
 
-/// The scale of RDN's integer: RDN = int32(hash) · 2^-31, in [-1, 1) and exact in double.
+/// Which RDN a hash gives: the key of the seed pair (seed >> 1) and level, and the shift that
+/// moves the seed's half of the hash into the upper 16 bits (0 for even seeds, 16 for odd).
+struct RandomKey {
+  std::uint32_t key = 0;
+  std::uint32_t shift = 0;
+};
+
+/// The scale of RDN's integer: RDN = int32(half << 16) · 2^-31 = int16(half) · 2^-15, in [-1, 1)
+/// and exact in double.
 constexpr double kRandomScale = 0x1.0p-31;
 
-/// RDN from a vertex's summed index shares and a (seed, axis, level) key, in [-1, 1).
-inline double randomFromSum(std::uint32_t indexSum, std::uint32_t key) {
-  return static_cast<double>(static_cast<std::int32_t>(mix32(indexSum + key))) * kRandomScale;
+/// A hash's half for one seed, as the upper 16 bits of a 32-bit integer (lower bits zero).
+inline std::int32_t randomHalf(std::uint32_t hash, std::uint32_t shift) {
+  return static_cast<std::int32_t>((hash << shift) & 0xFFFF0000u);
+}
+
+/// RDN from a vertex's summed index shares and its key, in [-1, 1).
+inline double randomFromSum(std::uint32_t indexSum, RandomKey key) {
+  return static_cast<double>(randomHalf(mix32(indexSum + key.key), key.shift)) * kRandomScale;
 }
 
 /// out[i] = randomFromSum(sums[i], key) for i < count: the same values, many at a time (the
 /// integer hash and the conversion of a 32-bit integer to double are exact, so every
 /// instruction set gives equal results).
-void randomsFromSums(const std::uint32_t* sums, std::size_t count, std::uint32_t key, double* out);
+void randomsFromSums(const std::uint32_t* sums, std::size_t count, RandomKey key, double* out);
 
 }  // namespace gridifs::field_lattice

@@ -177,7 +177,7 @@ void collapseRow(const Level& level, const TimeCollapse& time, bool cubic,
     for (int step = 0; step < steps; ++step)
       scratch.sums[i * steps + step] = share[0][i] + rowShare + time.index[first + step];
   for (int a = 0; a < kAxes; ++a) {
-    randomsFromSums(scratch.sums.data(), scratch.sums.size(), level.keys[a], scratch.f.data());
+    randomsFromSums(scratch.sums.data(), scratch.sums.size(), {level.keys[a], level.shifts[a]}, scratch.f.data());
     for (std::size_t i = 0; i < width; ++i) {
       const double* v = &scratch.f[i * steps];
       if (cubic) {
@@ -319,50 +319,69 @@ struct BlockScratch {
 // l(bx)·hs(by)·hv(bz), along z l(bx)·l(by)·hs(bz), its time slope l(bx)·l(by)·l(bz), with
 // hv, hs the Hermite value and slope bases of hermite() and l the linear one; the slopes are
 // the central differences of pseudoCubic(), the collapsed values and time slopes those of
-// TimeCollapse. Built without fused multiply-adds like every clone.
+// TimeCollapse. Each product is taken as x-factor · (y-factor · z-factor), so a block whose
+// nodes share their y and z cells (a row of a tensor grid: SharedYz) forms the y·z products once
+// and gets the same bits as any other block. The slope bases carry the central differences'
+// 1/2 (exact), so a slope's share in a corner is one addition. Built without fused
+// multiply-adds like every clone.
+template <bool SharedYz>
 GRIDIFS_FIELD_VECTOR_CLONES
 void blockWeights(bool cubic, const TimeCollapse& time, const std::array<std::array<double, kBlock>, kSpace>& u,
                   double* weight) {
   constexpr double scale = field_lattice::kRandomScale;
+  constexpr std::size_t kYz = SharedYz ? 1 : kBlock;  // y·z products per block
   const auto at = [&](int vertex) { return weight + std::size_t(vertex) * kBlock; };
-  double lin[kSpace][2][kBlock];
-  for (int d = 0; d < kSpace; ++d)
-    for (std::size_t n = 0; n < kBlock; ++n) {
-      lin[d][0][n] = 1.0 - u[d][n];
-      lin[d][1][n] = u[d][n];
+  const auto yzAt = [](std::size_t n) { return SharedYz ? std::size_t(0) : n; };
+  // The one-dimensional bases: l, and (cubic) hv and hs/2, per dimension, side and node.
+  double lin[kSpace][2][kBlock], hv[kSpace][2][kBlock], hs[kSpace][2][kBlock];
+  for (int d = 0; d < kSpace; ++d) {
+    const std::size_t nodes = d == 0 ? kBlock : kYz;
+    for (std::size_t n = 0; n < nodes; ++n) {
+      const double x = u[d][n], x2 = x * x, x3 = x2 * x;
+      lin[d][0][n] = 1.0 - x;
+      lin[d][1][n] = x;
+      hv[d][0][n] = 2.0 * x3 - 3.0 * x2 + 1.0;
+      hv[d][1][n] = 3.0 * x2 - 2.0 * x3;
+      hs[d][0][n] = 0.5 * (x3 - 2.0 * x2 + x);
+      hs[d][1][n] = 0.5 * (x3 - x2);
     }
+  }
+  // Per (by, bz): the y·z factors of a corner's value (and x slope), y slope, z slope, time slope.
+  double yzValue[4][kYz], yzSlopeY[4][kYz], yzSlopeZ[4][kYz], yzLinear[4][kYz];
+  for (int q = 0; q < 4; ++q) {
+    const int by = q & 1, bz = q >> 1;
+    for (std::size_t n = 0; n < kYz; ++n) {
+      yzValue[q][n] = hv[1][by][n] * hv[2][bz][n];
+      yzSlopeY[q][n] = hs[1][by][n] * hv[2][bz][n];
+      yzSlopeZ[q][n] = lin[1][by][n] * hs[2][bz][n];
+      yzLinear[q][n] = lin[1][by][n] * lin[2][bz][n];
+    }
+  }
   if (!cubic) {
     const double v0 = time.value0 * scale, v1 = time.value1 * scale;
     for (int c = 0; c < kCorners; ++c) {
+      const int bx = c & 1, q = c >> 1;
       double* w0 = at(c * 2);
       double* w1 = at(c * 2 + 1);
       for (std::size_t n = 0; n < kBlock; ++n) {
-        const double l = lin[0][c & 1][n] * lin[1][(c >> 1) & 1][n] * lin[2][(c >> 2) & 1][n];
+        const double l = lin[0][bx][n] * yzLinear[q][yzAt(n)];
         w0[n] = v0 * l;
         w1[n] = v1 * l;
       }
     }
     return;
   }
-  double hv[kSpace][2][kBlock], hs[kSpace][2][kBlock];
-  for (int d = 0; d < kSpace; ++d)
-    for (std::size_t n = 0; n < kBlock; ++n) {
-      const double x = u[d][n], x2 = x * x, x3 = x2 * x;
-      hv[d][0][n] = 2.0 * x3 - 3.0 * x2 + 1.0;
-      hv[d][1][n] = 3.0 * x2 - 2.0 * x3;
-      hs[d][0][n] = x3 - 2.0 * x2 + x;
-      hs[d][1][n] = x3 - x2;
-    }
-  // Per corner: the weight of its value, of its slope along each dimension, of its time slope.
+  // Per corner: the weight of its value, of its half slope along each dimension, of its time slope.
   double value[kCorners][kBlock], slope[kCorners][kSpace][kBlock], timeSlope[kCorners][kBlock];
   for (int c = 0; c < kCorners; ++c) {
-    const int bx = c & 1, by = (c >> 1) & 1, bz = (c >> 2) & 1;
+    const int bx = c & 1, q = c >> 1;
     for (std::size_t n = 0; n < kBlock; ++n) {
-      value[c][n] = hv[0][bx][n] * hv[1][by][n] * hv[2][bz][n];
-      slope[c][0][n] = hs[0][bx][n] * hv[1][by][n] * hv[2][bz][n];
-      slope[c][1][n] = lin[0][bx][n] * hs[1][by][n] * hv[2][bz][n];
-      slope[c][2][n] = lin[0][bx][n] * lin[1][by][n] * hs[2][bz][n];
-      timeSlope[c][n] = lin[0][bx][n] * lin[1][by][n] * lin[2][bz][n];
+      const std::size_t m = yzAt(n);
+      value[c][n] = hv[0][bx][n] * yzValue[q][m];
+      slope[c][0][n] = hs[0][bx][n] * yzValue[q][m];
+      slope[c][1][n] = lin[0][bx][n] * yzSlopeY[q][m];
+      slope[c][2][n] = lin[0][bx][n] * yzSlopeZ[q][m];
+      timeSlope[c][n] = lin[0][bx][n] * yzLinear[q][m];
     }
   }
   // A corner's slope along d is (beyond − partner)/2 at an upper corner, (partner − beyond)/2 at
@@ -374,15 +393,18 @@ void blockWeights(bool cubic, const TimeCollapse& time, const std::array<std::ar
     for (std::size_t n = 0; n < kBlock; ++n) corner[n] = value[c][n];
     for (int d = 0; d < kSpace; ++d) {
       const int partner = c ^ (1 << d);
-      const double sign = ((c >> d) & 1) ? 0.5 : -0.5;  // this corner's share in partner's slope
-      for (std::size_t n = 0; n < kBlock; ++n) corner[n] = corner[n] + sign * slope[partner][d][n];
+      const bool upper = (c >> d) & 1;
+      // This corner's share in its partner's slope, and its outward neighbour's in its own.
+      if (upper)
+        for (std::size_t n = 0; n < kBlock; ++n) corner[n] = corner[n] + slope[partner][d][n];
+      else
+        for (std::size_t n = 0; n < kBlock; ++n) corner[n] = corner[n] - slope[partner][d][n];
       double* o0 = at(kCorners * 4 + (c * kSpace + d) * 2);
       double* o1 = at(kCorners * 4 + (c * kSpace + d) * 2 + 1);
-      const double outward = ((c >> d) & 1) ? 0.5 : -0.5;
+      const double outward0 = upper ? v0 : -v0, outward1 = upper ? v1 : -v1;
       for (std::size_t n = 0; n < kBlock; ++n) {
-        const double b = outward * slope[c][d][n];
-        o0[n] = v0 * b;
-        o1[n] = v1 * b;
+        o0[n] = outward0 * slope[c][d][n];
+        o1[n] = outward1 * slope[c][d][n];
       }
     }
     double* fm = at(c * 4);
@@ -399,9 +421,11 @@ void blockWeights(bool cubic, const TimeCollapse& time, const std::array<std::ar
   }
 }
 
-// out[a][n] = Σ_v weight[v][n] · int32(mix32(sum_v,n + key_a)) for the three axes, v in order,
-// where sum_v,n adds node n's shares of vertex v's steps: the hash and the sums in one loop over
-// the block's nodes, the three axes sharing each vertex's index sum.
+// out[a][n] = Σ_v weight[v][n] · RDN integer of axis a at vertex v for node n (v in order),
+// where vertex v's hash input adds node n's shares of v's steps: the hashes and the sums in one
+// loop over the block's nodes. The three axes (seeds S, S+1, S+2) take two hashes per vertex,
+// of the seed pairs holding S and S+2: even S reads the pair (S, S+1) whole and the upper half
+// of the next; odd S the lower half of the first and the next pair whole.
 // GCC's unroll-and-jam fuses two vertices' loops into one it then leaves scalar: keep it off.
 #if defined(__GNUC__) && !defined(__clang__)
 #define GRIDIFS_NO_UNROLL_AND_JAM __attribute__((optimize("no-loop-unroll-and-jam")))
@@ -409,12 +433,14 @@ void blockWeights(bool cubic, const TimeCollapse& time, const std::array<std::ar
 #define GRIDIFS_NO_UNROLL_AND_JAM
 #endif
 
+template <bool OddSeed>
 GRIDIFS_FIELD_VECTOR_CLONES GRIDIFS_NO_UNROLL_AND_JAM
 void hashAndSum(const VertexSteps* vertices, int count, const BlockScratch& in, const std::array<std::uint32_t, 4>& times,
-                const std::array<std::uint32_t, kAxes>& keys, std::array<std::array<double, kBlock>, kAxes>& out) {
+                std::uint32_t firstPairKey, std::uint32_t secondPairKey,
+                std::array<std::array<double, kBlock>, kAxes>& out) {
   using field_lattice::mix32;
+  using field_lattice::randomHalf;
   double sum[kAxes][kBlock] = {};
-  const std::uint32_t k0 = keys[0], k1 = keys[1], k2 = keys[2];
   for (int v = 0; v < count; ++v) {
     const VertexSteps& s = vertices[v];
     const std::uint32_t* x = in.share[0][s.step[0]].data();
@@ -424,13 +450,27 @@ void hashAndSum(const VertexSteps* vertices, int count, const BlockScratch& in, 
     const double* w = in.weight.data() + std::size_t(v) * kBlock;
     for (std::size_t n = 0; n < kBlock; ++n) {
       const std::uint32_t index = x[n] + y[n] + z[n] + t;
-      sum[0][n] += w[n] * double(std::int32_t(mix32(index + k0)));
-      sum[1][n] += w[n] * double(std::int32_t(mix32(index + k1)));
-      sum[2][n] += w[n] * double(std::int32_t(mix32(index + k2)));
+      const std::uint32_t first = mix32(index + firstPairKey);
+      const std::uint32_t second = mix32(index + secondPairKey);
+      const std::int32_t a0 = OddSeed ? randomHalf(first, 16) : randomHalf(first, 0);
+      const std::int32_t a1 = OddSeed ? randomHalf(second, 0) : randomHalf(first, 16);
+      const std::int32_t a2 = OddSeed ? randomHalf(second, 16) : randomHalf(second, 0);
+      sum[0][n] += w[n] * double(a0);
+      sum[1][n] += w[n] * double(a1);
+      sum[2][n] += w[n] * double(a2);
     }
   }
   for (int a = 0; a < kAxes; ++a)
     for (std::size_t n = 0; n < kBlock; ++n) out[a][n] = sum[a][n];
+}
+
+void hashAndSum(const VertexSteps* vertices, int count, const BlockScratch& in, const std::array<std::uint32_t, 4>& times,
+                const Level& level, std::array<std::array<double, kBlock>, kAxes>& out) {
+  // Axes 0 and 2 lie in consecutive seed pairs; axis 0's half says which case this is.
+  if (level.shifts[0] != 0)
+    hashAndSum<true>(vertices, count, in, times, level.keys[0], level.keys[2], out);
+  else
+    hashAndSum<false>(vertices, count, in, times, level.keys[0], level.keys[2], out);
 }
 
 // A sample's cell along one dimension as the hashing reads it: the index shares of the four
@@ -457,14 +497,18 @@ void putNode(std::size_t n, const SampleCell& x, const SampleCell& y, const Samp
 }
 
 // One level at a block of up to kBlock nodes whose cells are in `scratch` (a short block repeats
-// its last node to fill the vectors; those values are not used).
-void hashDirect(const Level& level, const TimeCollapse& time, bool cubic, std::size_t count, BlockScratch& scratch,
-                Vec3* total) {
-  blockWeights(cubic, time, scratch.u, scratch.weight.data());
-  if (cubic)
-    hashAndSum(kCubicSteps.data(), kCubicVertices, scratch, time.index, level.keys, scratch.out);
+// its last node to fill the vectors; those values are not used). sharedYz: every node of the
+// block has the same y and z cells.
+void hashDirect(const Level& level, const TimeCollapse& time, bool cubic, std::size_t count, bool sharedYz,
+                BlockScratch& scratch, Vec3* total) {
+  if (sharedYz)
+    blockWeights<true>(cubic, time, scratch.u, scratch.weight.data());
   else
-    hashAndSum(kLinearSteps.data(), kLinearVertices, scratch, time.index, level.keys, scratch.out);
+    blockWeights<false>(cubic, time, scratch.u, scratch.weight.data());
+  if (cubic)
+    hashAndSum(kCubicSteps.data(), kCubicVertices, scratch, time.index, level, scratch.out);
+  else
+    hashAndSum(kLinearSteps.data(), kLinearVertices, scratch, time.index, level, scratch.out);
   for (std::size_t n = 0; n < count; ++n)
     total[n] += level.weight * Vec3{scratch.out[0][n], scratch.out[1][n], scratch.out[2][n]};
 }
@@ -642,6 +686,7 @@ void fieldStepDisplace(const FractalField& field, std::vector<Vec3>& nodes, cons
   const bool cubic = p.interpolation == FieldInterpolation::Cubic;
   const int workers = resolveThreadCount(threads);
   std::vector<std::size_t> selected;
+  selected.reserve(nodes.size());
   for (std::size_t n = 0; n < nodes.size(); ++n)
     if (mask[n]) selected.push_back(n);
   if (selected.empty()) return;
@@ -714,29 +759,60 @@ void fieldStepDisplace(const FractalField& field, std::vector<Vec3>& nodes, cons
       }
     } else {
       // Tensor grids: the cells along each dimension, found once per grid line.
+      // Along x also node-minor, so a block inside one grid row copies its x cells whole.
       std::array<std::vector<SampleCell>, kSpace> lineCells;
-      if (tensor)
+      std::array<std::vector<std::uint32_t>, 4> xShares;
+      std::vector<double> xU;
+      if (tensor) {
         for (int d = 0; d < kSpace; ++d)
           for (const AxisCell& c : axisCells[d]) lineCells[d].push_back(sampleCell(level, d, c));
+        for (const SampleCell& c : lineCells[0]) {
+          for (int step = 0; step < 4; ++step) xShares[std::size_t(step)].push_back(c.share[std::size_t(step)]);
+          xU.push_back(c.u);
+        }
+      }
       parallelFor((selected.size() + kBlock - 1) / kBlock, workers, 16, [&](std::size_t begin, std::size_t end) {
         BlockScratch scratch;
         const std::size_t nx = tensor ? lineCells[0].size() : 1, ny = tensor ? lineCells[1].size() : 1;
         for (std::size_t b = begin; b < end; ++b) {
           const std::size_t first = b * kBlock;
           const std::size_t count = std::min(kBlock, selected.size() - first);
-          for (std::size_t n = 0; n < kBlock; ++n) {
-            const std::size_t node = first + std::min(n, count - 1);
-            if (tensor) {
-              putNode(n, lineCells[0][node % nx], lineCells[1][(node / nx) % ny], lineCells[2][node / (nx * ny)],
-                      scratch);
-            } else {
-              const Vec3& q = samples[node];
+          const std::size_t row = first % nx;
+          const bool sharedYz = tensor && count == kBlock && row + kBlock <= nx;
+          if (sharedYz) {
+            // A whole block inside one grid row: its x cells are consecutive, y and z one each.
+            const SampleCell& y = lineCells[1][(first / nx) % ny];
+            const SampleCell& z = lineCells[2][first / (nx * ny)];
+            for (int step = 0; step < 4; ++step) {
+              std::copy_n(xShares[std::size_t(step)].data() + row, kBlock, scratch.share[0][step].data());
+              scratch.share[1][step].fill(y.share[std::size_t(step)]);
+              scratch.share[2][step].fill(z.share[std::size_t(step)]);
+            }
+            std::copy_n(xU.data() + row, kBlock, scratch.u[0].data());
+            scratch.u[1].fill(y.u);
+            scratch.u[2].fill(z.u);
+          } else if (tensor) {
+            // The block's grid position found once and stepped, not divided out per node.
+            std::size_t i = row, j = (first / nx) % ny, k = first / (nx * ny);
+            for (std::size_t n = 0; n < kBlock; ++n) {
+              putNode(n, lineCells[0][i], lineCells[1][j], lineCells[2][k], scratch);
+              if (n + 1 < count && ++i == nx) {
+                i = 0;
+                if (++j == ny) {
+                  j = 0;
+                  ++k;
+                }
+              }
+            }
+          } else {
+            for (std::size_t n = 0; n < kBlock; ++n) {
+              const Vec3& q = samples[first + std::min(n, count - 1)];
               putNode(n, sampleCell(level, 0, axisCell(q[0], level.offset[0], level.cell[0])),
                       sampleCell(level, 1, axisCell(q[1], level.offset[1], level.cell[1])),
                       sampleCell(level, 2, axisCell(q[2], level.offset[2], level.cell[2])), scratch);
             }
           }
-          hashDirect(level, collapsed, cubic, count, scratch, &total[first]);
+          hashDirect(level, collapsed, cubic, count, sharedYz, scratch, &total[first]);
         }
       });
     }

@@ -16,9 +16,11 @@ using field_lattice::kDims;
 using field_lattice::randomFromSum;
 constexpr int kCorners = 1 << kDims;
 
-std::uint32_t levelKey(std::uint64_t seed, int axis, int level) {
-  return field_lattice::foldKey(
-      splitmix64(splitmix64(seed + static_cast<std::uint64_t>(axis)) + static_cast<std::uint64_t>(level)));
+// The hash key and half of seed + axis at a level: seeds 2m and 2m + 1 share the key of pair m.
+field_lattice::RandomKey levelKey(std::uint64_t seed, int axis, int level) {
+  const std::uint64_t axisSeed = seed + static_cast<std::uint64_t>(axis);
+  return {field_lattice::foldKey(splitmix64(splitmix64(axisSeed >> 1) + static_cast<std::uint64_t>(level))),
+          (axisSeed & 1u) ? 16u : 0u};
 }
 
 }  // namespace
@@ -63,7 +65,11 @@ FractalField::FractalField(const FractalFieldParams& params) : params_(params) {
       level.offset[d] = level.cell[d] * (fraction - std::floor(fraction));
     }
     level.weight = std::pow(params.gain, k) / total;
-    for (int axis = 0; axis < 3; ++axis) level.keys[axis] = levelKey(params.seed, axis, k);
+    for (int axis = 0; axis < 3; ++axis) {
+      const field_lattice::RandomKey key = levelKey(params.seed, axis, k);
+      level.keys[axis] = key.key;
+      level.shifts[axis] = key.shift;
+    }
   }
 }
 
@@ -96,7 +102,7 @@ Vec3 FractalField::displacement(const Vec3& q, double t) const {
   for (int k = 0; k < levelCount_; ++k) {
     const Level& level = levels_[k];
     double f[3];
-    levelValues(level, level.keys, 3, s, f);
+    levelValues(level, level.keys, level.shifts, 3, s, f);
     sum += level.weight * Vec3{f[0], f[1], f[2]};
   }
   return params_.amplitude * sum;
@@ -113,7 +119,8 @@ double FractalField::value(int axis, FieldPoint s) const {
   for (int k = 0; k < levelCount_; ++k) {
     const Level& level = levels_[k];
     double f = 0.0;
-    levelValues(level, {levelKey(params_.seed, axis, k + 1), 0, 0}, 1, s, &f);
+    const field_lattice::RandomKey key = levelKey(params_.seed, axis, k + 1);
+    levelValues(level, {key.key, 0, 0}, {key.shift, 0, 0}, 1, s, &f);
     sum += level.weight * f;
   }
   return sum;
@@ -142,8 +149,9 @@ static CellStencil stencilFor(const Level& level, const FieldPoint& s) {
   return st;
 }
 
-void FractalField::levelValues(const Level& level, const std::array<std::uint32_t, 3>& keys, int axes,
-                               const FieldPoint& s, double* out) const {
+void FractalField::levelValues(const Level& level, const std::array<std::uint32_t, 3>& keys,
+                               const std::array<std::uint32_t, 3>& shifts, int axes, const FieldPoint& s,
+                               double* out) const {
   const CellStencil st = stencilFor(level, s);
   // The hash inputs of the 2^4 cell corners, and of each corner's outward neighbour along each
   // dimension (step -1 below a lower corner, +2 beyond an upper one).
@@ -162,7 +170,7 @@ void FractalField::levelValues(const Level& level, const std::array<std::uint32_
     }
     for (int a = 0; a < axes; ++a) {
       double result = 0.0;
-      for (int c = 0; c < kCorners; ++c) result += weight[c] * randomFromSum(corner[c], keys[a]);
+      for (int c = 0; c < kCorners; ++c) result += weight[c] * randomFromSum(corner[c], {keys[a], shifts[a]});
       out[a] = result;
     }
     return;
@@ -179,10 +187,10 @@ void FractalField::levelValues(const Level& level, const std::array<std::uint32_
     // ∂f/∂u = (f(u+1) - f(u-1)) / 2), which reach one node outside the cell.
     std::array<double, kCorners> value{};
     std::array<std::array<double, kDims>, kCorners> slope{};
-    for (int c = 0; c < kCorners; ++c) value[c] = randomFromSum(corner[c], keys[a]);
+    for (int c = 0; c < kCorners; ++c) value[c] = randomFromSum(corner[c], {keys[a], shifts[a]});
     for (int c = 0; c < kCorners; ++c) {
       for (int d = 0; d < kDims; ++d) {
-        const double beyond = randomFromSum(outward[c][d], keys[a]);
+        const double beyond = randomFromSum(outward[c][d], {keys[a], shifts[a]});
         const double partner = value[c ^ (1 << d)];
         slope[c][d] = ((c >> d) & 1) ? 0.5 * (beyond - partner) : 0.5 * (partner - beyond);
       }

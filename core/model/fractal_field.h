@@ -6,7 +6,8 @@
 // wind shift and the modulo wrap of Colonna's §3.2 (cloud dynamics).
 //
 // Choices where the paper leaves them open:
-// - RDN is a hash of (vertex, level, seed) — no stored tables, equal on every machine.
+// - RDN is a hash of (vertex, level, seed) — no stored tables, equal on every machine; one
+//   32-bit hash gives the 16-bit values of two seeds (field_lattice.h).
 // - p(k) ∝ gain^k, normalised to sum 1.
 // - Each level's mesh is shifted by a fraction of its cell (an additive recurrence on the
 //   generalised golden ratio), so vertices of different levels do not coincide.
@@ -93,7 +94,10 @@ class FractalField {
     std::array<double, 4> offset{};       // this level's shift of the mesh, within one cell
     std::array<std::int64_t, 4> wrap{};   // cells per period, 0 = not periodic
     double weight = 0.0;                  // p(k)
-    std::array<std::uint32_t, 3> keys{};  // the hash keys of seeds S, S+1, S+2 at this level
+    // Seeds S, S+1, S+2 at this level: the hash key of each one's seed pair and the shift of
+    // its half of the hash (field_lattice.h). Axes 0 and 2 are always in different pairs.
+    std::array<std::uint32_t, 3> keys{};
+    std::array<std::uint32_t, 3> shifts{};
   };
   int levelCount() const { return levelCount_; }
   /// Mesh `index` (0-based, < levelCount()).
@@ -103,8 +107,8 @@ class FractalField {
 
  private:
   /// One level's interpolated RDN for the first `axes` keys at s (already wrapped) into out.
-  void levelValues(const Level& level, const std::array<std::uint32_t, 3>& keys, int axes, const FieldPoint& s,
-                   double* out) const;
+  void levelValues(const Level& level, const std::array<std::uint32_t, 3>& keys,
+                   const std::array<std::uint32_t, 3>& shifts, int axes, const FieldPoint& s, double* out) const;
 
   FractalFieldParams params_;
   std::array<Level, FractalFieldParams::kMaxOctaves> levels_{};
