@@ -26,6 +26,11 @@ struct VolumeArgs {
 int runVolume(const VolumeArgs& a) {
   checkOutputPath(a.out, {"vdb"}, "the volume");
   const std::string device = checkedDevice(a.device);
+  try {
+    requireVdbVolumeWriter();  // before the work, not after it
+  } catch (const IoError& e) {
+    throw CliError(kFailure, e.what());
+  }
   const std::filesystem::path file(a.file);
   const Project project = loadForVerbAt(file, a.time);
   VolumeJob job;

@@ -75,6 +75,8 @@ void requireFile(const std::filesystem::path& file, const std::string& jsonPath)
 
 }  // namespace
 
+void requirePlugin() { plugin(); }
+
 void writeVolume(const std::filesystem::path& file, const VoxelLattice& lattice, const std::vector<float>& density,
                  const std::vector<float>& color) {
   const Plugin& p = plugin();

@@ -10,6 +10,9 @@
 
 namespace gridifs::vdb_io {
 
+/// Loads the plugin now (it is loaded once, on first use); throws IoError when it cannot be.
+void requirePlugin();
+
 /// Writes an OpenVDB file at `file` (the caller makes it atomic): the density of the N³ lattice
 /// as a fog volume and, when `color` is not empty, its colour (3 per voxel). Throws IoError with
 /// the library's message, or when the plugin cannot be loaded.

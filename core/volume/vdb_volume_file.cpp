@@ -16,4 +16,6 @@ void writeVdbVolume(const DensityVolume& volume, const std::filesystem::path& fi
   out.commit();
 }
 
+void requireVdbVolumeWriter() { vdb_io::requirePlugin(); }
+
 }  // namespace gridifs

@@ -13,4 +13,8 @@ namespace gridifs {
 /// Throws IoError naming the file.
 void writeVdbVolume(const DensityVolume& volume, const std::filesystem::path& file);
 
+/// Throws IoError when VDB files cannot be written here (the OpenVDB plugin cannot be loaded), so
+/// a long computation can fail before it starts rather than at the end.
+void requireVdbVolumeWriter();
+
 }  // namespace gridifs
