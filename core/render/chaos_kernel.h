@@ -394,6 +394,25 @@ inline HotCamera makeHotCamera(const OrbitCamera& camera) {
   return hot;
 }
 
+/// Eight 4-lane vectors as four 8-lane rows (lane k of row j is element j of vector k): points
+/// or colours as x, y, z (, w) rows for the plotters' eight-at-a-time projections.
+[[gnu::always_inline]] inline void transposeEight(const v4f* v, v8f& r0, v8f& r1, v8f& r2, v8f& r3) {
+  v4f out[4][2];
+  for (int h = 0; h < 2; ++h) {
+    const v4f a = v[4 * h], b = v[4 * h + 1], c = v[4 * h + 2], d = v[4 * h + 3];
+    const v4f ab01 = __builtin_shufflevector(a, b, 0, 4, 1, 5), cd01 = __builtin_shufflevector(c, d, 0, 4, 1, 5);
+    const v4f ab23 = __builtin_shufflevector(a, b, 2, 6, 3, 7), cd23 = __builtin_shufflevector(c, d, 2, 6, 3, 7);
+    out[0][h] = __builtin_shufflevector(ab01, cd01, 0, 1, 4, 5);
+    out[1][h] = __builtin_shufflevector(ab01, cd01, 2, 3, 6, 7);
+    out[2][h] = __builtin_shufflevector(ab23, cd23, 0, 1, 4, 5);
+    out[3][h] = __builtin_shufflevector(ab23, cd23, 2, 3, 6, 7);
+  }
+  r0 = __builtin_shufflevector(out[0][0], out[0][1], 0, 1, 2, 3, 4, 5, 6, 7);
+  r1 = __builtin_shufflevector(out[1][0], out[1][1], 0, 1, 2, 3, 4, 5, 6, 7);
+  r2 = __builtin_shufflevector(out[2][0], out[2][1], 0, 1, 2, 3, 4, 5, 6, 7);
+  r3 = __builtin_shufflevector(out[3][0], out[3][1], 0, 1, 2, 3, 4, 5, 6, 7);
+}
+
 /// The z-buffer plotter (Gröller & Wegenkittl 1994, §3.1). Keys are (depth bits << 32 | packed colour): depth is
 /// positive, so unsigned order is depth order and equal depths fall back to the colour, which makes
 /// the per-pixel minimum independent of sample and worker order. Buffer accesses go through
@@ -471,7 +490,7 @@ struct ZBufferPlot {
     std::int64_t inImage = 0;
     for (int i = 0; i < n; i += kGroup) {
       v8f x, y, z, unused;
-      transpose(points + i, x, y, z, unused);
+      transposeEight(points + i, x, y, z, unused);
       // r = cx·x + cy·y + cz·z + c1 per row, as one sample at a time (no FMA contraction).
       const v8f px = rows[0][0] * x + rows[0][1] * y + rows[0][2] * z + rows[0][3];
       const v8f py = rows[1][0] * x + rows[1][1] * y + rows[1][2] * z + rows[1][3];
@@ -489,7 +508,7 @@ struct ZBufferPlot {
       const v8u depthBits = v8u(depth);
       std::memcpy(depths + i, &depthBits, sizeof depthBits);
       v8f red, green, blue, c;
-      transpose(colors + i, red, green, blue, c);
+      transposeEight(colors + i, red, green, blue, c);
       v8u r8, g8, b8, c8;
       channelByte(red, r8);
       channelByte(green, g8);
@@ -536,24 +555,6 @@ struct ZBufferPlot {
       std::atomic_ref<float> s(sums[k]);
       s.store(s.load(std::memory_order_relaxed) + add[k], std::memory_order_relaxed);
     }
-  }
-
-  /// Eight 4-lane vectors as four 8-lane rows (lane k of row j is element j of vector k).
-  [[gnu::always_inline]] static void transpose(const v4f* v, v8f& r0, v8f& r1, v8f& r2, v8f& r3) {
-    v4f out[4][2];
-    for (int h = 0; h < 2; ++h) {
-      const v4f a = v[4 * h], b = v[4 * h + 1], c = v[4 * h + 2], d = v[4 * h + 3];
-      const v4f ab01 = __builtin_shufflevector(a, b, 0, 4, 1, 5), cd01 = __builtin_shufflevector(c, d, 0, 4, 1, 5);
-      const v4f ab23 = __builtin_shufflevector(a, b, 2, 6, 3, 7), cd23 = __builtin_shufflevector(c, d, 2, 6, 3, 7);
-      out[0][h] = __builtin_shufflevector(ab01, cd01, 0, 1, 4, 5);
-      out[1][h] = __builtin_shufflevector(ab01, cd01, 2, 3, 6, 7);
-      out[2][h] = __builtin_shufflevector(ab23, cd23, 0, 1, 4, 5);
-      out[3][h] = __builtin_shufflevector(ab23, cd23, 2, 3, 6, 7);
-    }
-    r0 = __builtin_shufflevector(out[0][0], out[0][1], 0, 1, 2, 3, 4, 5, 6, 7);
-    r1 = __builtin_shufflevector(out[1][0], out[1][1], 0, 1, 2, 3, 4, 5, 6, 7);
-    r2 = __builtin_shufflevector(out[2][0], out[2][1], 0, 1, 2, 3, 4, 5, 6, 7);
-    r3 = __builtin_shufflevector(out[3][0], out[3][1], 0, 1, 2, 3, 4, 5, 6, 7);
   }
 
   /// packColor's byte for eight values of one channel: round(v·255) in [0, 255], NaN → 0.

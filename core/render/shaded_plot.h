@@ -105,20 +105,10 @@ struct LightPlot {
       for (int c = 0; c < 4; ++c) rows[4 * r + c] = v8f{} + (*columns[c])[r];
   }
 
-  /// Points i … i+7 as x, y, z rows (a 4×4 transpose of each half).
+  /// Points i … i+7 as x, y, z rows.
   [[gnu::always_inline]] void transpose(int i, v8f& x, v8f& y, v8f& z) const {
-    v4f xs[2], ys[2], zs[2];
-    for (int h = 0; h < 2; ++h) {
-      const v4f a = points[i + 4 * h], b = points[i + 4 * h + 1], c = points[i + 4 * h + 2], d = points[i + 4 * h + 3];
-      const v4f ab01 = __builtin_shufflevector(a, b, 0, 4, 1, 5), cd01 = __builtin_shufflevector(c, d, 0, 4, 1, 5);
-      const v4f ab23 = __builtin_shufflevector(a, b, 2, 6, 3, 7), cd23 = __builtin_shufflevector(c, d, 2, 6, 3, 7);
-      xs[h] = __builtin_shufflevector(ab01, cd01, 0, 1, 4, 5);
-      ys[h] = __builtin_shufflevector(ab01, cd01, 2, 3, 6, 7);
-      zs[h] = __builtin_shufflevector(ab23, cd23, 0, 1, 4, 5);
-    }
-    x = __builtin_shufflevector(xs[0], xs[1], 0, 1, 2, 3, 4, 5, 6, 7);
-    y = __builtin_shufflevector(ys[0], ys[1], 0, 1, 2, 3, 4, 5, 6, 7);
-    z = __builtin_shufflevector(zs[0], zs[1], 0, 1, 2, 3, 4, 5, 6, 7);
+    v8f unused;
+    transposeEight(points + i, x, y, z, unused);
   }
 
   template <int kLights>

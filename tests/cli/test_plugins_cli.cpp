@@ -19,13 +19,33 @@ namespace fs = std::filesystem;
 
 std::string asset(const std::string& name) { return (fs::path(GRIDIFS_ASSETS) / name).string(); }
 
-TEST(ImagePlugin, GridifsDoesNotLinkOpenImageIO) {
-  ScratchDir dir("image-plugin-needed");
+/// gridifs's dynamic section (objdump -p), for its NEEDED libraries.
+std::string dynamicSection(const std::string& scratchName) {
+  ScratchDir dir(scratchName);
   const fs::path listing = dir.path / "dynamic.txt";
-  ASSERT_EQ(std::system(("objdump -p " + quote(GRIDIFS_EXE) + " > " + quote(listing.string())).c_str()), 0);
+  EXPECT_EQ(std::system(("objdump -p " + quote(GRIDIFS_EXE) + " > " + quote(listing.string())).c_str()), 0);
   const std::string text = test_support::slurp(listing.string());
   EXPECT_NE(text.find("NEEDED"), std::string::npos) << "objdump listed no dynamic section";
-  EXPECT_EQ(text.find("libOpenImageIO"), std::string::npos)
+  return text;
+}
+
+/// Runs `verb INPUT -o OUT options` with `variable` naming a plugin that does not exist: one
+/// sentence, exit 1, nothing written (not even a temporary file).
+void expectMissingPluginFails(const std::string& verb, const std::string& input, const std::string& output,
+                              const std::string& options, const std::string& variable) {
+  ScratchDir dir("plugin-missing-" + verb);
+  const fs::path out = dir.path / output;
+  const auto r = runGridifs(verb + " " + quote(input) + " -o " + quote(out.string()) + " " + options, "",
+                            variable + "=" + quote((dir.path / "libmissing.so").string()));
+  EXPECT_EQ(r.exitCode, 1) << r.err;
+  EXPECT_NE(r.err.find("could not be loaded"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_TRUE(fs::is_empty(dir.path)) << "no temporary file is left behind";
+}
+
+TEST(ImagePlugin, GridifsDoesNotLinkOpenImageIO) {
+  EXPECT_EQ(dynamicSection("image-plugin-needed").find("libOpenImageIO"), std::string::npos)
       << "gridifs links OpenImageIO again: every start pays for loading it";
 }
 
@@ -41,38 +61,18 @@ TEST(ImagePlugin, ImagesAreWrittenThroughThePlugin) {
 }
 
 TEST(ImagePlugin, AMissingPluginIsOneSentenceAndWritesNothing) {
-  ScratchDir dir("image-plugin-missing");
-  const fs::path out = dir.path / "out.png";
-  const auto r = runGridifs("render " + quote(asset("sierpinski_tetrahedron.gridifs")) + " -o " + quote(out.string()) +
-                                " --width 64 --height 48 --samples 20000 --device cpu -q",
-                            "", "GRIDIFS_IMAGE_IO=" + quote((dir.path / "libmissing.so").string()));
-  EXPECT_EQ(r.exitCode, 1) << r.err;
-  EXPECT_NE(r.err.find("could not be loaded"), std::string::npos) << r.err;
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-  EXPECT_FALSE(fs::exists(out));
-  EXPECT_TRUE(fs::is_empty(dir.path)) << "no temporary file is left behind";
+  expectMissingPluginFails("render", asset("sierpinski_tetrahedron.gridifs"), "out.png",
+                           "--width 64 --height 48 --samples 20000 --device cpu -q", "GRIDIFS_IMAGE_IO");
 }
 
 TEST(VdbPlugin, GridifsDoesNotLinkOpenVdb) {
-  ScratchDir dir("vdb-plugin-needed");
-  const fs::path listing = dir.path / "dynamic.txt";
-  ASSERT_EQ(std::system(("objdump -p " + quote(GRIDIFS_EXE) + " > " + quote(listing.string())).c_str()), 0);
-  const std::string text = test_support::slurp(listing.string());
-  EXPECT_NE(text.find("NEEDED"), std::string::npos) << "objdump listed no dynamic section";
-  EXPECT_EQ(text.find("libopenvdb"), std::string::npos) << "gridifs links OpenVDB again: every start pays for loading it";
+  EXPECT_EQ(dynamicSection("vdb-plugin-needed").find("libopenvdb"), std::string::npos)
+      << "gridifs links OpenVDB again: every start pays for loading it";
 }
 
 TEST(VdbPlugin, AMissingPluginIsOneSentenceAndWritesNothing) {
-  ScratchDir dir("vdb-plugin-missing");
-  const fs::path out = dir.path / "out.vdb";
-  const auto r = runGridifs("volume " + quote(asset("volumes/two_sets.gridifs")) + " -o " + quote(out.string()) +
-                                " --resolution 16 --device cpu -q",
-                            "", "GRIDIFS_VDB_IO=" + quote((dir.path / "libmissing.so").string()));
-  EXPECT_EQ(r.exitCode, 1) << r.err;
-  EXPECT_NE(r.err.find("could not be loaded"), std::string::npos) << r.err;
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-  EXPECT_FALSE(fs::exists(out));
-  EXPECT_TRUE(fs::is_empty(dir.path)) << "no temporary file is left behind";
+  expectMissingPluginFails("volume", asset("volumes/two_sets.gridifs"), "out.vdb", "--resolution 16 --device cpu -q",
+                           "GRIDIFS_VDB_IO");
 }
 
 }  // namespace
