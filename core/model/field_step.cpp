@@ -18,7 +18,6 @@ using field_lattice::AxisCell;
 using field_lattice::axisCell;
 using field_lattice::hermite;
 using field_lattice::indexContribution;
-using field_lattice::randomsFromSums;
 using Level = FractalField::Level;
 
 constexpr int kAxes = 3;     // displacement axes: seeds S, S+1, S+2
@@ -60,12 +59,6 @@ TimeCollapse timeCollapse(const Level& level, double t, bool cubic) {
     c.value1 = u;
   }
   return c;
-}
-
-// Collapsed values from f at the steps −1, 0, +1, +2 (cubic) or 0, +1 (linear).
-inline double collapsedValue(const TimeCollapse& c, double f0, double f1) { return c.value0 * f0 + c.value1 * f1; }
-inline double collapsedSlope(const TimeCollapse& c, const double* f) {
-  return c.slope0 * (0.5 * (f[2] - f[0])) + c.slope1 * (0.5 * (f[3] - f[1]));
 }
 
 inline double lerp(double a, double b, double u) { return a + u * (b - a); }
@@ -157,37 +150,71 @@ std::array<std::vector<std::uint32_t>, kSpace> boxShares(const Level& level, con
   return share;
 }
 
-// Scratch for collapsing one row of a box, reused along a worker's rows.
-struct RowScratch {
-  std::vector<std::uint32_t> sums;
-  std::vector<double> f;
-};
+// Scratch for collapsing rows of a box (kept for callers that reuse it along their rows).
+struct RowScratch {};
+
+// g (and e, cubic) of one box row for the three axes: vertex i of the row has the hash input
+// share[i] + rowShare + the time step's share. The three axes take two hashes per vertex and time
+// step, as in hashAndSum below; the values are randomFromSum's, collapsed in time as
+// TimeCollapse says, in one vector loop over the row.
+template <bool Cubic, bool OddSeed>
+GRIDIFS_FIELD_VECTOR_CLONES
+void collapseHashes(const std::uint32_t* share, std::size_t width, std::uint32_t rowShare, const TimeCollapse& time,
+                    std::uint32_t firstPairKey, std::uint32_t secondPairKey, double* g0, double* g1, double* g2,
+                    double* e0, double* e1, double* e2) {
+  using field_lattice::mix32;
+  using field_lattice::randomHalf;
+  constexpr double scale = field_lattice::kRandomScale;
+  constexpr int kSteps = Cubic ? 4 : 2;
+  constexpr int kFirst = Cubic ? 0 : 1;
+  std::uint32_t times[kSteps];
+  for (int step = 0; step < kSteps; ++step) times[step] = rowShare + time.index[std::size_t(kFirst + step)];
+  const double v0 = time.value0, v1 = time.value1, s0 = time.slope0, s1 = time.slope1;
+  // In chunks along the row, one time step at a time, so every loop runs over the row's vertices.
+  constexpr std::size_t kChunk = 64;
+  double f[kSteps][kAxes][kChunk];
+  for (std::size_t begin = 0; begin < width; begin += kChunk) {
+    const std::size_t count = std::min(kChunk, width - begin);
+    const std::uint32_t* row = share + begin;
+    for (int step = 0; step < kSteps; ++step)
+      for (std::size_t i = 0; i < count; ++i) {
+        const std::uint32_t index = row[i] + times[step];
+        const std::uint32_t first = mix32(index + firstPairKey);
+        const std::uint32_t second = mix32(index + secondPairKey);
+        f[step][0][i] = double(OddSeed ? randomHalf(first, 16) : randomHalf(first, 0)) * scale;
+        f[step][1][i] = double(OddSeed ? randomHalf(second, 0) : randomHalf(first, 16)) * scale;
+        f[step][2][i] = double(OddSeed ? randomHalf(second, 16) : randomHalf(second, 0)) * scale;
+      }
+    double* g[kAxes] = {g0 + begin, g1 + begin, g2 + begin};
+    double* e[kAxes] = {e0 + begin, e1 + begin, e2 + begin};
+    for (int a = 0; a < kAxes; ++a) {
+      if constexpr (Cubic) {
+        for (std::size_t i = 0; i < count; ++i) {
+          g[a][i] = v0 * f[1][a][i] + v1 * f[2][a][i];
+          e[a][i] = s0 * (0.5 * (f[2][a][i] - f[0][a][i])) + s1 * (0.5 * (f[3][a][i] - f[1][a][i]));
+        }
+      } else {
+        for (std::size_t i = 0; i < count; ++i) g[a][i] = v0 * f[0][a][i] + v1 * f[1][a][i];
+      }
+    }
+  }
+}
 
 // g (and e, cubic) of the box row (j, k) for the three axes into g[a][0..width), e[a][0..width).
 void collapseRow(const Level& level, const TimeCollapse& time, bool cubic,
                  const std::array<std::vector<std::uint32_t>, kSpace>& share, std::size_t j, std::size_t k,
-                 RowScratch& scratch, const std::array<double*, kAxes>& g, const std::array<double*, kAxes>& e) {
-  const int steps = cubic ? 4 : 2;
-  const int first = cubic ? 0 : 1;
+                 RowScratch&, const std::array<double*, kAxes>& g, const std::array<double*, kAxes>& e) {
   const std::size_t width = share[0].size();
-  scratch.sums.resize(width * std::size_t(steps));
-  scratch.f.resize(scratch.sums.size());
   const std::uint32_t rowShare = share[1][j] + share[2][k];
-  for (std::size_t i = 0; i < width; ++i)
-    for (int step = 0; step < steps; ++step)
-      scratch.sums[i * steps + step] = share[0][i] + rowShare + time.index[first + step];
-  for (int a = 0; a < kAxes; ++a) {
-    randomsFromSums(scratch.sums.data(), scratch.sums.size(), {level.keys[a], level.shifts[a]}, scratch.f.data());
-    for (std::size_t i = 0; i < width; ++i) {
-      const double* v = &scratch.f[i * steps];
-      if (cubic) {
-        g[a][i] = collapsedValue(time, v[1], v[2]);
-        e[a][i] = collapsedSlope(time, v);
-      } else {
-        g[a][i] = collapsedValue(time, v[0], v[1]);
-      }
-    }
-  }
+  // Axes 0 and 2 lie in consecutive seed pairs; axis 0's half says which case this is.
+  const bool odd = level.shifts[0] != 0;
+  const auto run = [&](auto kernel) {
+    kernel(share[0].data(), width, rowShare, time, level.keys[0], level.keys[2], g[0], g[1], g[2], e[0], e[1], e[2]);
+  };
+  if (cubic)
+    odd ? run(collapseHashes<true, true>) : run(collapseHashes<true, false>);
+  else
+    odd ? run(collapseHashes<false, true>) : run(collapseHashes<false, false>);
 }
 
 void collapse(const Level& level, const TimeCollapse& time, bool cubic, const VertexBox& box, int threads,
@@ -541,139 +568,261 @@ bool findTensorGrid(const std::vector<Vec3>& nodes, TensorGrid& grid) {
   return true;
 }
 
-// The passes over tensor grids, a row of samples at a time.
+// Tensor grids: one level over the whole grid, one dimension at a time.
+//
+// The appendix's reduction is linear in g and e, and each of its steps acts along one dimension,
+// so a level's value is a sum of tensor products of one-dimensional operators on the collapsed
+// mesh: with C the cubic along a dimension whose end slopes are central differences (Catmull-Rom),
+// H its value part and D its slope part (C = H + D), and L the linear interpolation,
+//   value = H_z H_y C_x g + H_z D_y L_x g + D_z L_y L_x g + L_z L_y L_x e
+// (x reduced first: cubic in the value, linear in the later slopes; then y; then z), and
+// n-linear interpolation is L_z L_y L_x g. Operators along different dimensions commute, so they
+// are applied in the order that keeps every step a weighted sum of contiguous rows: z first over
+// whole layers of the box, then x over the rows of each layer, then (after a transpose of the
+// small intermediate) y over rows of samples, which lands in the grid's node order.
 
-// out[i] = lerp(low[i], high[i], u).
-GRIDIFS_FIELD_VECTOR_CLONES
-void lerpRow(const double* low, const double* high, double u, std::size_t n, double* out) {
-  for (std::size_t i = 0; i < n; ++i) out[i] = low[i] + u * (high[i] - low[i]);
+// Per sample along one dimension: its lower box vertex and the weights of the four vertices
+// around it (steps −1, 0, +1, +2) in C, D, H and L.
+struct AxisTaps {
+  std::vector<std::size_t> at;             // the lower vertex of the sample's cell, in box indices
+  std::vector<std::array<double, 4>> c, d;  // Catmull-Rom, and its slope part
+  std::vector<std::array<double, 2>> h, l;  // Hermite value part, linear (steps 0, +1)
+};
+
+AxisTaps axisTaps(const std::vector<AxisCell>& cells, std::int64_t lo) {
+  AxisTaps taps;
+  for (const AxisCell& cell : cells) {
+    const double u = cell.u, u2 = u * u, u3 = u2 * u;
+    const double hv0 = 2.0 * u3 - 3.0 * u2 + 1.0, hv1 = 3.0 * u2 - 2.0 * u3;
+    // hermite()'s slope terms hs0·d0 + hs1·d1 with d0 = (f1 − f−1)/2, d1 = (f2 − f0)/2.
+    const double hs0 = 0.5 * (u3 - 2.0 * u2 + u), hs1 = 0.5 * (u3 - u2);
+    taps.at.push_back(std::size_t(cell.base - lo));
+    taps.d.push_back({-hs0, -hs1, hs0, hs1});
+    taps.c.push_back({-hs0, hv0 - hs1, hv1 + hs0, hs1});
+    taps.h.push_back({hv0, hv1});
+    taps.l.push_back({1.0 - u, u});
+  }
+  return taps;
 }
 
-// The cubic along one dimension between the rows v0 and v1, its end slopes the central
-// differences of the rows of lerps around them (below, at 0, at 1, above).
-GRIDIFS_FIELD_VECTOR_CLONES
-void hermiteRow(const double* v0, const double* v1, const double* below, const double* at0, const double* at1,
-                const double* above, double u, std::size_t n, double* out) {
-  for (std::size_t i = 0; i < n; ++i)
-    out[i] = hermite(v0[i], v1[i], 0.5 * (at1[i] - below[i]), 0.5 * (above[i] - at0[i]), u);
-}
+// One axis of one sample layer of a tensor grid: the three passes over the collapsed layers
+// around it. g[0..3], e[0..3]: the box layers at the steps −1, 0, +1, +2 along z from the sample's
+// cell ([i][j], y fastest; e unused when linear); out: the values of the layer's nodes, [j][i].
+struct LayerPasses {
+  std::size_t bx = 0, by = 0, nx = 0, ny = 0;
+  const AxisTaps* x = nullptr;
+  const AxisTaps* y = nullptr;
+  // Scratch: q1, q2 per box layer; x1..x3 per [sample i][j]; t1..t3 their transposes.
+  double *q1 = nullptr, *q2 = nullptr, *x1 = nullptr, *x2 = nullptr, *x3 = nullptr, *t1 = nullptr, *t2 = nullptr,
+         *t3 = nullptr;
+};
 
-// The x pass of one box row: per sample i (lower vertex at[i], position u[i]) the value, cubic
-// along x, and the lerps of g and e along x. Linear: the lerp of g only.
 GRIDIFS_FIELD_VECTOR_CLONES
-void xPassRow(const double* g, const double* e, const std::size_t* at, const double* u, std::size_t n, bool cubic,
-              double* value, double* lerped, double* slope) {
+void layerPasses(const LayerPasses& p, bool cubic, const std::array<const double*, 4>& g,
+                 const std::array<const double*, 4>& e, const std::array<double, 2>& zh, const std::array<double, 4>& zd,
+                 const std::array<double, 2>& zl, double* out) {
+  const std::size_t layer = p.bx * p.by, by = p.by, nx = p.nx;
   if (!cubic) {
-    for (std::size_t i = 0; i < n; ++i) value[i] = g[at[i]] + u[i] * (g[at[i] + 1] - g[at[i]]);
+    // L_y L_x L_z g.
+    {
+      const double l0 = zl[0], l1 = zl[1];
+      const double* __restrict g0 = g[1];
+      const double* __restrict g1 = g[2];
+      double* __restrict q1 = p.q1;
+      for (std::size_t n = 0; n < layer; ++n) q1[n] = l0 * g0[n] + l1 * g1[n];
+    }
+    for (std::size_t i = 0; i < nx; ++i) {
+      const double* __restrict r = p.q1 + p.x->at[i] * by;
+      const double l0 = p.x->l[i][0], l1 = p.x->l[i][1];
+      double* __restrict x1 = p.x1 + i * by;
+      for (std::size_t j = 0; j < by; ++j) x1[j] = l0 * r[j] + l1 * r[by + j];
+    }
+    {
+      const double* __restrict x1 = p.x1;
+      double* __restrict t1 = p.t1;
+      for (std::size_t i = 0; i < nx; ++i)
+        for (std::size_t j = 0; j < by; ++j) t1[j * nx + i] = x1[i * by + j];
+    }
+    for (std::size_t j = 0; j < p.ny; ++j) {
+      const double* __restrict r = p.t1 + p.y->at[j] * nx;
+      const double l0 = p.y->l[j][0], l1 = p.y->l[j][1];
+      double* __restrict row = out + j * nx;
+      for (std::size_t i = 0; i < nx; ++i) row[i] = l0 * r[i] + l1 * r[nx + i];
+    }
     return;
   }
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::size_t c = at[i];
-    value[i] = hermite(g[c], g[c + 1], 0.5 * (g[c + 1] - g[c - 1]), 0.5 * (g[c + 2] - g[c]), u[i]);
-    lerped[i] = g[c] + u[i] * (g[c + 1] - g[c]);
-    slope[i] = e[c] + u[i] * (e[c + 1] - e[c]);
+  // z: q1 = H_z g, q2 = D_z g + L_z e. (Weights in locals and restrict pointers: the vectorizer
+  // must see that no store changes them.)
+  {
+    const double h0 = zh[0], h1 = zh[1], d0 = zd[0], d1 = zd[1], d2 = zd[2], d3 = zd[3], l0 = zl[0], l1 = zl[1];
+    const double* __restrict gm = g[0];
+    const double* __restrict g0 = g[1];
+    const double* __restrict g1 = g[2];
+    const double* __restrict g2 = g[3];
+    const double* __restrict e0 = e[1];
+    const double* __restrict e1 = e[2];
+    double* __restrict q1 = p.q1;
+    double* __restrict q2 = p.q2;
+    for (std::size_t n = 0; n < layer; ++n) {
+      q1[n] = h0 * g0[n] + h1 * g1[n];
+      q2[n] = ((d0 * gm[n] + d1 * g0[n]) + (d2 * g1[n] + d3 * g2[n])) + (l0 * e0[n] + l1 * e1[n]);
+    }
+  }
+  // x: x1 = C_x q1, x2 = L_x q1, x3 = L_x q2, per sample i along the layer's rows.
+  for (std::size_t i = 0; i < nx; ++i) {
+    const std::size_t at = p.x->at[i] * by;
+    const double* __restrict a = p.q1 + at;
+    const double* __restrict b = p.q2 + at;
+    const double c0 = p.x->c[i][0], c1 = p.x->c[i][1], c2 = p.x->c[i][2], c3 = p.x->c[i][3];
+    const double l0 = p.x->l[i][0], l1 = p.x->l[i][1];
+    double* __restrict x1 = p.x1 + i * by;
+    double* __restrict x2 = p.x2 + i * by;
+    double* __restrict x3 = p.x3 + i * by;
+    for (std::size_t j = 0; j < by; ++j) {
+      x1[j] = (c0 * a[j - by] + c1 * a[j]) + (c2 * a[by + j] + c3 * a[2 * by + j]);
+      x2[j] = l0 * a[j] + l1 * a[by + j];
+      x3[j] = l0 * b[j] + l1 * b[by + j];
+    }
+  }
+  {
+    const double* __restrict x1 = p.x1;
+    const double* __restrict x2 = p.x2;
+    const double* __restrict x3 = p.x3;
+    double* __restrict t1 = p.t1;
+    double* __restrict t2 = p.t2;
+    double* __restrict t3 = p.t3;
+    for (std::size_t i = 0; i < nx; ++i)
+      for (std::size_t j = 0; j < by; ++j) {
+        t1[j * nx + i] = x1[i * by + j];
+        t2[j * nx + i] = x2[i * by + j];
+        t3[j * nx + i] = x3[i * by + j];
+      }
+  }
+  // y: H_y x1 + D_y x2 + L_y x3, per sample j along rows of samples i.
+  for (std::size_t j = 0; j < p.ny; ++j) {
+    const std::size_t at = p.y->at[j] * nx;
+    const double* __restrict a = p.t1 + at;
+    const double* __restrict b = p.t2 + at;
+    const double* __restrict c = p.t3 + at;
+    const double h0 = p.y->h[j][0], h1 = p.y->h[j][1];
+    const double d0 = p.y->d[j][0], d1 = p.y->d[j][1], d2 = p.y->d[j][2], d3 = p.y->d[j][3];
+    const double l0 = p.y->l[j][0], l1 = p.y->l[j][1];
+    double* __restrict row = out + j * nx;
+    for (std::size_t i = 0; i < nx; ++i)
+      row[i] = ((h0 * a[i] + h1 * a[nx + i]) + ((d0 * b[i - nx] + d1 * b[i]) + (d2 * b[nx + i] + d3 * b[2 * nx + i]))) +
+               (l0 * c[i] + l1 * c[nx + i]);
   }
 }
 
-// One level over a tensor grid of samples (coordinates already shifted and wrapped), one
-// dimension at a time: the same reduction as pseudoCubic(), each pass shared by every node that
-// shares the remaining coordinates. The slopes along y and z are central differences of values
-// already interpolated along x (and y): the same numbers by linearity. The box is collapsed one
-// layer of constant z at a time, straight into the x and y passes, so it is never stored whole.
+// The collapsed layers (constant z) of one level's box, computed when first asked for and kept
+// while the samples along z still need them (a few at a time: the samples' cells move upward).
+class LayerCache {
+ public:
+  LayerCache(const Level& level, const TimeCollapse& time, bool cubic, const VertexBox& box,
+             const std::array<std::vector<std::uint32_t>, kSpace>& share)
+      : level_(level), time_(time), cubic_(cubic), box_(box),
+        // collapseRow works along its first dimension's shares; a layer is wanted along y, so
+        // its rows are the box's columns: the same vertices and sums, the shares swapped.
+        columnShare_{share[1], share[0], share[2]},
+        layerSize_(std::size_t(box.size[0] * box.size[1])) {}
+
+  // g (quantity 0) or e (quantity 1) of axis a on layer k, in [i][j] order (y fastest).
+  const double* layer(std::size_t k, int a, int quantity) {
+    Slot& slot = find(k);
+    return slot.values.data() + (std::size_t(quantity) * kAxes + std::size_t(a)) * layerSize_;
+  }
+
+ private:
+  struct Slot {
+    std::int64_t k = -1;
+    std::uint64_t used = 0;
+    std::vector<double> values;  // [quantity][axis][i][j]
+  };
+  static constexpr int kSlots = 8;
+
+  Slot& find(std::size_t k) {
+    ++clock_;
+    Slot* oldest = &slots_[0];
+    for (Slot& slot : slots_) {
+      if (slot.k == std::int64_t(k)) {
+        slot.used = clock_;
+        return slot;
+      }
+      if (slot.used < oldest->used) oldest = &slot;
+    }
+    fill(*oldest, k);
+    oldest->used = clock_;
+    return *oldest;
+  }
+
+  void fill(Slot& slot, std::size_t k) {
+    slot.k = std::int64_t(k);
+    slot.values.resize(layerSize_ * kAxes * (cubic_ ? 2 : 1));
+    const std::size_t bx = std::size_t(box_.size[0]), by = std::size_t(box_.size[1]);
+    for (std::size_t i = 0; i < bx; ++i) {
+      std::array<double*, kAxes> g{}, e{};
+      for (int a = 0; a < kAxes; ++a) {
+        g[a] = slot.values.data() + std::size_t(a) * layerSize_ + i * by;
+        e[a] = cubic_ ? slot.values.data() + (kAxes + std::size_t(a)) * layerSize_ + i * by : nullptr;
+      }
+      collapseRow(level_, time_, cubic_, columnShare_, i, k, scratch_, g, e);
+    }
+  }
+
+  const Level& level_;
+  const TimeCollapse& time_;
+  bool cubic_;
+  VertexBox box_;
+  std::array<std::vector<std::uint32_t>, kSpace> columnShare_;
+  std::size_t layerSize_;
+  std::array<Slot, kSlots> slots_{};
+  std::uint64_t clock_ = 0;
+  RowScratch scratch_;
+};
+
 void separable(const Level& level, const TimeCollapse& time, bool cubic, const VertexBox& box,
                const std::array<std::vector<AxisCell>, kSpace>& cells, int threads, std::vector<Vec3>& total) {
   const std::size_t nx = cells[0].size(), ny = cells[1].size(), nz = cells[2].size();
-  const std::size_t bx = std::size_t(box.size[0]), by = std::size_t(box.size[1]), bz = std::size_t(box.size[2]);
+  const std::size_t bx = std::size_t(box.size[0]), by = std::size_t(box.size[1]);
   const auto share = boxShares(level, box);
-  std::array<std::vector<std::size_t>, kSpace> at;  // each sample's lower vertex, in box coordinates
-  for (int d = 0; d < kSpace; ++d)
-    for (const AxisCell& c : cells[d]) at[d].push_back(std::size_t(c.base - box.lo[d]));
-  // Per axis, after the y pass: the value (cubic along x and y), the lerp of g along x and y
-  // (whose central differences along z are the z slopes) and the lerp of e.
-  std::array<std::vector<double>, kAxes> yValue, yLerp, ySlope;
-  for (int a = 0; a < kAxes; ++a) {
-    yValue[a].resize(nx * ny * bz);
-    if (cubic) {
-      yLerp[a].resize(nx * ny * bz);
-      ySlope[a].resize(nx * ny * bz);
-    }
-  }
-  std::vector<double> xu;
-  for (const AxisCell& c : cells[0]) xu.push_back(c.u);
-  parallelFor(bz, threads, 1, [&](std::size_t begin, std::size_t end) {
-    RowScratch scratch;
-    std::vector<double> gRow(kAxes * bx), eRow(kAxes * bx);
-    // The x pass of one layer: per sample column i and box row j, the value (cubic along x),
-    // and the lerps of g and e along x that carry the y and z slopes.
-    std::array<std::vector<double>, kAxes> xValue, xLerp, xSlope;
-    for (int a = 0; a < kAxes; ++a) {
-      xValue[a].resize(nx * by);
-      xLerp[a].resize(cubic ? nx * by : 0);
-      xSlope[a].resize(cubic ? nx * by : 0);
-    }
-    for (std::size_t k = begin; k < end; ++k) {
-      for (std::size_t j = 0; j < by; ++j) {
-        std::array<double*, kAxes> g{}, e{};
-        for (int a = 0; a < kAxes; ++a) {
-          g[a] = gRow.data() + a * bx;
-          e[a] = eRow.data() + a * bx;
-        }
-        collapseRow(level, time, cubic, share, j, k, scratch, g, e);
-        for (int a = 0; a < kAxes; ++a)
-          xPassRow(g[a], e[a], at[0].data(), xu.data(), nx, cubic, xValue[a].data() + nx * j,
-                   cubic ? xLerp[a].data() + nx * j : nullptr, cubic ? xSlope[a].data() + nx * j : nullptr);
-      }
-      // The y pass of the layer: per sample column (i, j).
-      for (int a = 0; a < kAxes; ++a)
-        for (std::size_t j = 0; j < ny; ++j) {
-          const std::size_t c = at[1][j];
-          const double u = cells[1][j].u;
-          const std::size_t o = nx * (j + ny * k);
-          const double* v = xValue[a].data();
-          if (!cubic) {
-            lerpRow(v + nx * c, v + nx * (c + 1), u, nx, yValue[a].data() + o);
-            continue;
-          }
-          const double* l = xLerp[a].data();
-          const double* sl = xSlope[a].data();
-          hermiteRow(v + nx * c, v + nx * (c + 1), l + nx * (c - 1), l + nx * c, l + nx * (c + 1), l + nx * (c + 2), u,
-                     nx, yValue[a].data() + o);
-          lerpRow(l + nx * c, l + nx * (c + 1), u, nx, yLerp[a].data() + o);
-          lerpRow(sl + nx * c, sl + nx * (c + 1), u, nx, ySlope[a].data() + o);
-        }
-    }
-  });
-  // The z pass: every node.
+  std::array<AxisTaps, kSpace> taps;
+  for (int d = 0; d < kSpace; ++d) taps[d] = axisTaps(cells[d], box.lo[d]);
   parallelFor(nz, threads, 1, [&](std::size_t begin, std::size_t end) {
-    std::array<std::vector<double>, kAxes> value, slope;
-    for (int a = 0; a < kAxes; ++a) {
-      value[a].resize(nx);
-      slope[a].resize(nx);
+    LayerCache layers(level, time, cubic, box, share);
+    std::vector<double> scratch(2 * bx * by + 6 * nx * by);
+    LayerPasses passes;
+    passes.bx = bx;
+    passes.by = by;
+    passes.nx = nx;
+    passes.ny = ny;
+    passes.x = &taps[0];
+    passes.y = &taps[1];
+    double* free = scratch.data();
+    for (double** buffer : {&passes.q1, &passes.q2}) {
+      *buffer = free;
+      free += bx * by;
     }
+    for (double** buffer : {&passes.x1, &passes.x2, &passes.x3, &passes.t1, &passes.t2, &passes.t3}) {
+      *buffer = free;
+      free += nx * by;
+    }
+    std::vector<double> value(kAxes * nx * ny);  // [axis][sample j][sample i]
+    const AxisTaps& tz = taps[2];
     for (std::size_t k = begin; k < end; ++k) {
-      const std::size_t c = at[2][k];
-      const double u = cells[2][k].u;
-      for (std::size_t j = 0; j < ny; ++j) {
-        const auto y = [&](std::size_t layer) { return nx * (j + ny * layer); };
-        for (int a = 0; a < kAxes; ++a) {
-          const double* v = yValue[a].data();
-          if (!cubic) {
-            lerpRow(v + y(c), v + y(c + 1), u, nx, value[a].data());
-            continue;
-          }
-          const double* l = yLerp[a].data();
-          const double* sl = ySlope[a].data();
-          hermiteRow(v + y(c), v + y(c + 1), l + y(c - 1), l + y(c), l + y(c + 1), l + y(c + 2), u, nx,
-                     value[a].data());
-          lerpRow(sl + y(c), sl + y(c + 1), u, nx, slope[a].data());
+      const std::size_t z = tz.at[k];
+      for (int a = 0; a < kAxes; ++a) {
+        std::array<const double*, 4> g{}, e{};
+        for (int step = 0; step < 4; ++step) {
+          // Linear interpolation reads the layers at the steps 0 and +1 only.
+          if (!cubic && (step == 0 || step == 3)) continue;
+          g[std::size_t(step)] = layers.layer(z + std::size_t(step) - 1, a, 0);
+          if (cubic && (step == 1 || step == 2)) e[std::size_t(step)] = layers.layer(z + std::size_t(step) - 1, a, 1);
         }
-        Vec3* row = &total[nx * (j + ny * k)];
-        for (std::size_t i = 0; i < nx; ++i) {
-          const Vec3 v = cubic ? Vec3{value[0][i] + slope[0][i], value[1][i] + slope[1][i], value[2][i] + slope[2][i]}
-                               : Vec3{value[0][i], value[1][i], value[2][i]};
-          row[i] += level.weight * v;
-        }
+        layerPasses(passes, cubic, g, e, tz.h[k], tz.d[k], tz.l[k], value.data() + std::size_t(a) * nx * ny);
       }
+      Vec3* layer = &total[nx * ny * k];
+      for (std::size_t n = 0; n < nx * ny; ++n)
+        layer[n] += level.weight * Vec3{value[n], value[nx * ny + n], value[2 * nx * ny + n]};
     }
   });
 }
