@@ -11,7 +11,9 @@
 #include <cstdint>
 
 // Loops over many vertices or nodes are also compiled for AVX2 and AVX-512, and the loader
-// picks what the processor runs. Without fused multiply-adds, so every processor rounds alike.
+// picks what the processor runs. No multiply and add is fused behind the code's back
+// (fp-contract=off), so every processor rounds alike; where a kernel fuses one it says so with
+// std::fma, which rounds once on every processor (in hardware or in the C library).
 // Sanitized builds (GRIDIFS_NO_KERNEL_CLONES) compile one version: the clones' IFUNC resolver runs
 // during relocation, before a sanitizer runtime is up.
 #if defined(__GNUC__) && !defined(__clang__) && defined(__x86_64__) && !defined(GRIDIFS_NO_KERNEL_CLONES)

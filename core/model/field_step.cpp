@@ -4,7 +4,9 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <limits>
+#include <numeric>
 
 #include "base/parallel.h"
 #include "model/field_lattice.h"
@@ -30,6 +32,9 @@ constexpr int kCubicVertices = kCorners * 4 + kCorners * kSpace * 2;
 constexpr int kLinearVertices = kCorners * 2;
 // Above this many vertices a level is hashed per node rather than collapsed into a box.
 constexpr std::size_t kMaxBoxVertices = std::size_t(1) << 21;
+
+// The sum over levels of p(k)·F_k per displacement axis and selected node.
+using Totals = std::array<std::vector<double>, kAxes>;
 
 // The time dimension of one level at t. By linearity of hermite() in its values and slopes, the
 // appendix's last (time) reduction hermite(V0, V1, S0, S1, u) splits into the spatial reduction
@@ -150,29 +155,27 @@ std::array<std::vector<std::uint32_t>, kSpace> boxShares(const Level& level, con
   return share;
 }
 
-// Scratch for collapsing rows of a box (kept for callers that reuse it along their rows).
-struct RowScratch {};
-
 // g (and e, cubic) of one box row for the three axes: vertex i of the row has the hash input
 // share[i] + rowShare + the time step's share. The three axes take two hashes per vertex and time
 // step, as in hashAndSum below; the values are randomFromSum's, collapsed in time as
 // TimeCollapse says, in one vector loop over the row.
-template <bool Cubic, bool OddSeed>
+template <typename Real, bool Cubic, bool OddSeed>
 GRIDIFS_FIELD_VECTOR_CLONES
 void collapseHashes(const std::uint32_t* share, std::size_t width, std::uint32_t rowShare, const TimeCollapse& time,
-                    std::uint32_t firstPairKey, std::uint32_t secondPairKey, double* g0, double* g1, double* g2,
-                    double* e0, double* e1, double* e2) {
+                    std::uint32_t firstPairKey, std::uint32_t secondPairKey, Real* g0, Real* g1, Real* g2, Real* e0,
+                    Real* e1, Real* e2) {
   using field_lattice::mix32;
   using field_lattice::randomHalf;
-  constexpr double scale = field_lattice::kRandomScale;
+  constexpr Real scale = Real(field_lattice::kRandomScale);
   constexpr int kSteps = Cubic ? 4 : 2;
   constexpr int kFirst = Cubic ? 0 : 1;
   std::uint32_t times[kSteps];
   for (int step = 0; step < kSteps; ++step) times[step] = rowShare + time.index[std::size_t(kFirst + step)];
-  const double v0 = time.value0, v1 = time.value1, s0 = time.slope0, s1 = time.slope1;
+  const Real v0 = Real(time.value0), v1 = Real(time.value1), s0 = Real(0.5 * time.slope0),
+             s1 = Real(0.5 * time.slope1);
   // In chunks along the row, one time step at a time, so every loop runs over the row's vertices.
   constexpr std::size_t kChunk = 64;
-  double f[kSteps][kAxes][kChunk];
+  Real f[kSteps][kAxes][kChunk];
   for (std::size_t begin = 0; begin < width; begin += kChunk) {
     const std::size_t count = std::min(kChunk, width - begin);
     const std::uint32_t* row = share + begin;
@@ -181,17 +184,17 @@ void collapseHashes(const std::uint32_t* share, std::size_t width, std::uint32_t
         const std::uint32_t index = row[i] + times[step];
         const std::uint32_t first = mix32(index + firstPairKey);
         const std::uint32_t second = mix32(index + secondPairKey);
-        f[step][0][i] = double(OddSeed ? randomHalf(first, 16) : randomHalf(first, 0)) * scale;
-        f[step][1][i] = double(OddSeed ? randomHalf(second, 0) : randomHalf(first, 16)) * scale;
-        f[step][2][i] = double(OddSeed ? randomHalf(second, 16) : randomHalf(second, 0)) * scale;
+        f[step][0][i] = Real(OddSeed ? randomHalf(first, 16) : randomHalf(first, 0)) * scale;
+        f[step][1][i] = Real(OddSeed ? randomHalf(second, 0) : randomHalf(first, 16)) * scale;
+        f[step][2][i] = Real(OddSeed ? randomHalf(second, 16) : randomHalf(second, 0)) * scale;
       }
-    double* g[kAxes] = {g0 + begin, g1 + begin, g2 + begin};
-    double* e[kAxes] = {e0 + begin, e1 + begin, e2 + begin};
+    Real* g[kAxes] = {g0 + begin, g1 + begin, g2 + begin};
+    Real* e[kAxes] = {e0 + begin, e1 + begin, e2 + begin};
     for (int a = 0; a < kAxes; ++a) {
       if constexpr (Cubic) {
         for (std::size_t i = 0; i < count; ++i) {
           g[a][i] = v0 * f[1][a][i] + v1 * f[2][a][i];
-          e[a][i] = s0 * (0.5 * (f[2][a][i] - f[0][a][i])) + s1 * (0.5 * (f[3][a][i] - f[1][a][i]));
+          e[a][i] = s0 * (f[2][a][i] - f[0][a][i]) + s1 * (f[3][a][i] - f[1][a][i]);
         }
       } else {
         for (std::size_t i = 0; i < count; ++i) g[a][i] = v0 * f[0][a][i] + v1 * f[1][a][i];
@@ -201,9 +204,10 @@ void collapseHashes(const std::uint32_t* share, std::size_t width, std::uint32_t
 }
 
 // g (and e, cubic) of the box row (j, k) for the three axes into g[a][0..width), e[a][0..width).
+template <typename Real>
 void collapseRow(const Level& level, const TimeCollapse& time, bool cubic,
                  const std::array<std::vector<std::uint32_t>, kSpace>& share, std::size_t j, std::size_t k,
-                 RowScratch&, const std::array<double*, kAxes>& g, const std::array<double*, kAxes>& e) {
+                 const std::array<Real*, kAxes>& g, const std::array<Real*, kAxes>& e) {
   const std::size_t width = share[0].size();
   const std::uint32_t rowShare = share[1][j] + share[2][k];
   // Axes 0 and 2 lie in consecutive seed pairs; axis 0's half says which case this is.
@@ -212,9 +216,9 @@ void collapseRow(const Level& level, const TimeCollapse& time, bool cubic,
     kernel(share[0].data(), width, rowShare, time, level.keys[0], level.keys[2], g[0], g[1], g[2], e[0], e[1], e[2]);
   };
   if (cubic)
-    odd ? run(collapseHashes<true, true>) : run(collapseHashes<true, false>);
+    odd ? run(collapseHashes<Real, true, true>) : run(collapseHashes<Real, true, false>);
   else
-    odd ? run(collapseHashes<false, true>) : run(collapseHashes<false, false>);
+    odd ? run(collapseHashes<Real, false, true>) : run(collapseHashes<Real, false, false>);
 }
 
 void collapse(const Level& level, const TimeCollapse& time, bool cubic, const VertexBox& box, int threads,
@@ -227,14 +231,13 @@ void collapse(const Level& level, const TimeCollapse& time, bool cubic, const Ve
   }
   const std::size_t width = std::size_t(box.size[0]);
   parallelFor(std::size_t(box.size[1] * box.size[2]), threads, 8, [&](std::size_t begin, std::size_t end) {
-    RowScratch scratch;
     for (std::size_t row = begin; row < end; ++row) {
       std::array<double*, kAxes> g{}, e{};
       for (int a = 0; a < kAxes; ++a) {
         g[a] = mesh.g[a].data() + row * width;
         e[a] = cubic ? mesh.e[a].data() + row * width : nullptr;
       }
-      collapseRow(level, time, cubic, share, row % std::size_t(box.size[1]), row / std::size_t(box.size[1]), scratch, g,
+      collapseRow(level, time, cubic, share, row % std::size_t(box.size[1]), row / std::size_t(box.size[1]), g,
                   e);
     }
   });
@@ -336,9 +339,51 @@ constexpr std::array<VertexSteps, kLinearVertices> kLinearSteps = linearVertices
 struct BlockScratch {
   std::array<std::array<std::array<std::uint32_t, kBlock>, 4>, kSpace> share{};  // [d][step][node]
   std::array<std::array<double, kBlock>, kSpace> u{};
-  std::vector<double> weight = std::vector<double>(kBlock * kCubicVertices);  // [vertex][node]
+  // Each vertex's weight is Σ_t factor[v][t] · base[term t of v] (see blockWeights): the x bases
+  // per node, and the factors per node or, when the block's nodes share their y and z cells, per
+  // block (index 0).
+  std::array<std::array<float, kBlock>, 6> base{};
+  std::vector<std::array<std::array<float, kBlock>, 3>> factor =
+      std::vector<std::array<std::array<float, kBlock>, 3>>(kCubicVertices);
   std::array<std::array<double, kBlock>, kAxes> out{};
 };
+
+// The x bases: the linear one, the Hermite value one and the Hermite slope one (with the central
+// differences' 1/2), each for the lower (0) and upper (1) side of the cell.
+enum XBase : std::uint8_t { kLinear0, kLinear1, kValue0, kValue1, kSlope0, kSlope1 };
+
+// Which x bases a vertex's weight sums (in the order of kCubicSteps or kLinearSteps).
+struct VertexTerms {
+  std::uint8_t count = 0;
+  std::array<std::uint8_t, 3> base{};
+};
+
+constexpr std::array<VertexTerms, kCubicVertices> cubicTerms() {
+  std::array<VertexTerms, kCubicVertices> v{};
+  for (int c = 0; c < kCorners; ++c) {
+    const int bx = c & 1;
+    const auto l = std::uint8_t(kLinear0 + bx), h = std::uint8_t(kValue0 + bx), x = std::uint8_t(kSlope0 + (1 - bx));
+    v[std::size_t(c * 4 + 0)] = {1, {l, 0, 0}};
+    v[std::size_t(c * 4 + 1)] = {3, {h, x, l}};
+    v[std::size_t(c * 4 + 2)] = {3, {h, x, l}};
+    v[std::size_t(c * 4 + 3)] = {1, {l, 0, 0}};
+    for (int d = 0; d < kSpace; ++d)
+      for (int time = 0; time < 2; ++time)
+        v[std::size_t(kCorners * 4 + (c * kSpace + d) * 2 + time)] = {
+            1, {d == 0 ? std::uint8_t(kSlope0 + bx) : l, 0, 0}};
+  }
+  return v;
+}
+
+constexpr std::array<VertexTerms, kLinearVertices> linearTerms() {
+  std::array<VertexTerms, kLinearVertices> v{};
+  for (int c = 0; c < kCorners; ++c)
+    for (int time = 0; time < 2; ++time) v[std::size_t(c * 2 + time)] = {1, {std::uint8_t(kLinear0 + (c & 1)), 0, 0}};
+  return v;
+}
+
+constexpr std::array<VertexTerms, kCubicVertices> kCubicTerms = cubicTerms();
+constexpr std::array<VertexTerms, kLinearVertices> kLinearTerms = linearTerms();
 
 // The weight of each hashed vertex (in the order of kCubicSteps or kLinearSteps) in a node's
 // value, times RDN's integer scale. Cubic, for corner c with bits (bx, by, bz): its value
@@ -346,104 +391,87 @@ struct BlockScratch {
 // l(bx)·hs(by)·hv(bz), along z l(bx)·l(by)·hs(bz), its time slope l(bx)·l(by)·l(bz), with
 // hv, hs the Hermite value and slope bases of hermite() and l the linear one; the slopes are
 // the central differences of pseudoCubic(), the collapsed values and time slopes those of
-// TimeCollapse. Each product is taken as x-factor · (y-factor · z-factor), so a block whose
-// nodes share their y and z cells (a row of a tensor grid: SharedYz) forms the y·z products once
-// and gets the same bits as any other block. The slope bases carry the central differences'
-// 1/2 (exact), so a slope's share in a corner is one addition. Built without fused
-// multiply-adds like every clone.
+// TimeCollapse. A corner's slope along d is (beyond − partner)/2 at an upper corner,
+// (partner − beyond)/2 at a lower one, so it weighs its outward neighbour and the partner corner
+// across the cell. Every weight is then a sum of at most three x bases (hv, hs, l of the node's
+// x position) times factors of y, z and time, which are formed once per block when its nodes
+// share their y and z cells (a row of a tensor grid: SharedYz) and per node otherwise, in the
+// same way, so a node's weights do not depend on its block. The one-dimensional bases in double,
+// their products and sums in single precision (hashAndSum sums in single precision).
 template <bool SharedYz>
 GRIDIFS_FIELD_VECTOR_CLONES
 void blockWeights(bool cubic, const TimeCollapse& time, const std::array<std::array<double, kBlock>, kSpace>& u,
-                  double* weight) {
+                  BlockScratch& out) {
   constexpr double scale = field_lattice::kRandomScale;
-  constexpr std::size_t kYz = SharedYz ? 1 : kBlock;  // y·z products per block
-  const auto at = [&](int vertex) { return weight + std::size_t(vertex) * kBlock; };
-  const auto yzAt = [](std::size_t n) { return SharedYz ? std::size_t(0) : n; };
-  // The one-dimensional bases: l, and (cubic) hv and hs/2, per dimension, side and node.
-  double lin[kSpace][2][kBlock], hv[kSpace][2][kBlock], hs[kSpace][2][kBlock];
-  for (int d = 0; d < kSpace; ++d) {
-    const std::size_t nodes = d == 0 ? kBlock : kYz;
-    for (std::size_t n = 0; n < nodes; ++n) {
-      const double x = u[d][n], x2 = x * x, x3 = x2 * x;
-      lin[d][0][n] = 1.0 - x;
-      lin[d][1][n] = x;
-      hv[d][0][n] = 2.0 * x3 - 3.0 * x2 + 1.0;
-      hv[d][1][n] = 3.0 * x2 - 2.0 * x3;
-      hs[d][0][n] = 0.5 * (x3 - 2.0 * x2 + x);
-      hs[d][1][n] = 0.5 * (x3 - x2);
+  constexpr std::size_t kYz = SharedYz ? 1 : kBlock;  // y·z factors per block
+  for (std::size_t n = 0; n < kBlock; ++n) {
+    const double x = u[0][n], x2 = x * x, x3 = x2 * x;
+    out.base[kLinear0][n] = float(1.0 - x);
+    out.base[kLinear1][n] = float(x);
+    out.base[kValue0][n] = float(2.0 * x3 - 3.0 * x2 + 1.0);
+    out.base[kValue1][n] = float(3.0 * x2 - 2.0 * x3);
+    out.base[kSlope0][n] = float(0.5 * (x3 - 2.0 * x2 + x));
+    out.base[kSlope1][n] = float(0.5 * (x3 - x2));
+  }
+  // Per (by, bz) = q: the y·z factors of a corner's value (and x slope), y slope, z slope and
+  // time slope, formed in double and rounded once (the factors below are their products with
+  // the time weights in single precision).
+  float yzValue[4][kYz], yzSlopeY[4][kYz], yzSlopeZ[4][kYz], yzLinear[4][kYz];
+  for (std::size_t m = 0; m < kYz; ++m) {
+    double l[2][2], h[2][2], sl[2][2];  // [y or z][side]
+    for (int d = 0; d < 2; ++d) {
+      const double x = u[std::size_t(d + 1)][m], x2 = x * x, x3 = x2 * x;
+      l[d][0] = 1.0 - x;
+      l[d][1] = x;
+      h[d][0] = 2.0 * x3 - 3.0 * x2 + 1.0;
+      h[d][1] = 3.0 * x2 - 2.0 * x3;
+      sl[d][0] = 0.5 * (x3 - 2.0 * x2 + x);
+      sl[d][1] = 0.5 * (x3 - x2);
+    }
+    for (int q = 0; q < 4; ++q) {
+      const int by = q & 1, bz = q >> 1;
+      yzValue[q][m] = float(h[0][by] * h[1][bz]);
+      yzSlopeY[q][m] = float(sl[0][by] * h[1][bz]);
+      yzSlopeZ[q][m] = float(l[0][by] * sl[1][bz]);
+      yzLinear[q][m] = float(l[0][by] * l[1][bz]);
     }
   }
-  // Per (by, bz): the y·z factors of a corner's value (and x slope), y slope, z slope, time slope.
-  double yzValue[4][kYz], yzSlopeY[4][kYz], yzSlopeZ[4][kYz], yzLinear[4][kYz];
-  for (int q = 0; q < 4; ++q) {
-    const int by = q & 1, bz = q >> 1;
-    for (std::size_t n = 0; n < kYz; ++n) {
-      yzValue[q][n] = hv[1][by][n] * hv[2][bz][n];
-      yzSlopeY[q][n] = hs[1][by][n] * hv[2][bz][n];
-      yzSlopeZ[q][n] = lin[1][by][n] * hs[2][bz][n];
-      yzLinear[q][n] = lin[1][by][n] * lin[2][bz][n];
-    }
-  }
+  const auto factor = [&](int vertex, int term) -> float* { return out.factor[std::size_t(vertex)][std::size_t(term)].data(); };
+  const float v0 = float(time.value0 * scale), v1 = float(time.value1 * scale);
   if (!cubic) {
-    const double v0 = time.value0 * scale, v1 = time.value1 * scale;
-    for (int c = 0; c < kCorners; ++c) {
-      const int bx = c & 1, q = c >> 1;
-      double* w0 = at(c * 2);
-      double* w1 = at(c * 2 + 1);
-      for (std::size_t n = 0; n < kBlock; ++n) {
-        const double l = lin[0][bx][n] * yzLinear[q][yzAt(n)];
-        w0[n] = v0 * l;
-        w1[n] = v1 * l;
+    for (int c = 0; c < kCorners; ++c)
+      for (std::size_t m = 0; m < kYz; ++m) {
+        factor(c * 2, 0)[m] = v0 * yzLinear[c >> 1][m];
+        factor(c * 2 + 1, 0)[m] = v1 * yzLinear[c >> 1][m];
       }
-    }
     return;
   }
-  // Per corner: the weight of its value, of its half slope along each dimension, of its time slope.
-  double value[kCorners][kBlock], slope[kCorners][kSpace][kBlock], timeSlope[kCorners][kBlock];
+  const float s0 = float(0.5 * time.slope0 * scale), s1 = float(0.5 * time.slope1 * scale);
   for (int c = 0; c < kCorners; ++c) {
-    const int bx = c & 1, q = c >> 1;
-    for (std::size_t n = 0; n < kBlock; ++n) {
-      const std::size_t m = yzAt(n);
-      value[c][n] = hv[0][bx][n] * yzValue[q][m];
-      slope[c][0][n] = hs[0][bx][n] * yzValue[q][m];
-      slope[c][1][n] = lin[0][bx][n] * yzSlopeY[q][m];
-      slope[c][2][n] = lin[0][bx][n] * yzSlopeZ[q][m];
-      timeSlope[c][n] = lin[0][bx][n] * yzLinear[q][m];
-    }
-  }
-  // A corner's slope along d is (beyond − partner)/2 at an upper corner, (partner − beyond)/2 at
-  // a lower one: it weighs its outward neighbour and the partner corner across the cell.
-  const double v0 = time.value0 * scale, v1 = time.value1 * scale;
-  const double s0 = 0.5 * time.slope0 * scale, s1 = 0.5 * time.slope1 * scale;
-  for (int c = 0; c < kCorners; ++c) {
-    double corner[kBlock];
-    for (std::size_t n = 0; n < kBlock; ++n) corner[n] = value[c][n];
-    for (int d = 0; d < kSpace; ++d) {
-      const int partner = c ^ (1 << d);
-      const bool upper = (c >> d) & 1;
-      // This corner's share in its partner's slope, and its outward neighbour's in its own.
-      if (upper)
-        for (std::size_t n = 0; n < kBlock; ++n) corner[n] = corner[n] + slope[partner][d][n];
-      else
-        for (std::size_t n = 0; n < kBlock; ++n) corner[n] = corner[n] - slope[partner][d][n];
-      double* o0 = at(kCorners * 4 + (c * kSpace + d) * 2);
-      double* o1 = at(kCorners * 4 + (c * kSpace + d) * 2 + 1);
-      const double outward0 = upper ? v0 : -v0, outward1 = upper ? v1 : -v1;
-      for (std::size_t n = 0; n < kBlock; ++n) {
-        o0[n] = outward0 * slope[c][d][n];
-        o1[n] = outward1 * slope[c][d][n];
+    const int bx = c & 1, by = (c >> 1) & 1, bz = c >> 2, q = c >> 1;
+    const float signX = bx ? 1.0f : -1.0f, signY = by ? 1.0f : -1.0f, signZ = bz ? 1.0f : -1.0f;
+    // The corner's value at the time steps 0 and +1 is hv(bx)·V + hs(1 − bx)·X + l(bx)·P (its
+    // value and its shares in the partners' slopes along x, y and z); its time slope l(bx)·T.
+    for (std::size_t m = 0; m < kYz; ++m) {
+      const float value = yzValue[q][m];
+      const float partners = signY * yzSlopeY[q ^ 1][m] + signZ * yzSlopeZ[q ^ 2][m];
+      const float timeSlope = yzLinear[q][m];
+      factor(c * 4, 0)[m] = -s0 * timeSlope;
+      factor(c * 4 + 1, 0)[m] = v0 * value;
+      factor(c * 4 + 1, 1)[m] = signX * (v0 * value);
+      factor(c * 4 + 1, 2)[m] = v0 * partners - s1 * timeSlope;
+      factor(c * 4 + 2, 0)[m] = v1 * value;
+      factor(c * 4 + 2, 1)[m] = signX * (v1 * value);
+      factor(c * 4 + 2, 2)[m] = v1 * partners + s0 * timeSlope;
+      factor(c * 4 + 3, 0)[m] = s1 * timeSlope;
+      // The outward neighbours: ±v times the corner's slope factor along their dimension.
+      for (int step = 0; step < 2; ++step) {
+        const float v = step == 0 ? v0 : v1;
+        const int outward = kCorners * 4 + c * kSpace * 2 + step;
+        factor(outward, 0)[m] = signX * (v * value);
+        factor(outward + 2, 0)[m] = signY * (v * yzSlopeY[q][m]);
+        factor(outward + 4, 0)[m] = signZ * (v * yzSlopeZ[q][m]);
       }
-    }
-    double* fm = at(c * 4);
-    double* f0 = at(c * 4 + 1);
-    double* f1 = at(c * 4 + 2);
-    double* f2 = at(c * 4 + 3);
-    for (std::size_t n = 0; n < kBlock; ++n) {
-      const double e = timeSlope[c][n];
-      fm[n] = -(s0 * e);
-      f0[n] = v0 * corner[n] - s1 * e;
-      f1[n] = v1 * corner[n] + s0 * e;
-      f2[n] = s1 * e;
     }
   }
 }
@@ -460,45 +488,53 @@ void blockWeights(bool cubic, const TimeCollapse& time, const std::array<std::ar
 #define GRIDIFS_NO_UNROLL_AND_JAM
 #endif
 
-template <bool OddSeed>
+template <bool OddSeed, bool SharedYz>
 GRIDIFS_FIELD_VECTOR_CLONES GRIDIFS_NO_UNROLL_AND_JAM
-void hashAndSum(const VertexSteps* vertices, int count, const BlockScratch& in, const std::array<std::uint32_t, 4>& times,
-                std::uint32_t firstPairKey, std::uint32_t secondPairKey,
+void hashAndSum(const VertexSteps* vertices, const VertexTerms* terms, int count, const BlockScratch& in,
+                const std::array<std::uint32_t, 4>& times, std::uint32_t firstPairKey, std::uint32_t secondPairKey,
                 std::array<std::array<double, kBlock>, kAxes>& out) {
   using field_lattice::mix32;
   using field_lattice::randomHalf;
-  double sum[kAxes][kBlock] = {};
+  const auto yzAt = [](std::size_t n) { return SharedYz ? std::size_t(0) : n; };
+  float sum[kAxes][kBlock] = {};
   for (int v = 0; v < count; ++v) {
     const VertexSteps& s = vertices[v];
     const std::uint32_t* x = in.share[0][s.step[0]].data();
     const std::uint32_t* y = in.share[1][s.step[1]].data();
     const std::uint32_t* z = in.share[2][s.step[2]].data();
     const std::uint32_t t = times[s.step[3]];
-    const double* w = in.weight.data() + std::size_t(v) * kBlock;
-    for (std::size_t n = 0; n < kBlock; ++n) {
-      const std::uint32_t index = x[n] + y[n] + z[n] + t;
-      const std::uint32_t first = mix32(index + firstPairKey);
-      const std::uint32_t second = mix32(index + secondPairKey);
+    // Shared y and z cells: the rest of each hash input is one number per vertex and pair.
+    const std::uint32_t firstRest = y[0] + z[0] + t + firstPairKey, secondRest = y[0] + z[0] + t + secondPairKey;
+    const VertexTerms& term = terms[v];
+    const float* b0 = in.base[term.base[0]].data();
+    const float* b1 = in.base[term.base[1]].data();
+    const float* b2 = in.base[term.base[2]].data();
+    const float* f0 = in.factor[std::size_t(v)][0].data();
+    const float* f1 = in.factor[std::size_t(v)][1].data();
+    const float* f2 = in.factor[std::size_t(v)][2].data();
+    const auto accumulate = [&](std::size_t n, float w) {
+      const std::uint32_t index = SharedYz ? 0u : y[n] + z[n] + t;
+      const std::uint32_t first = mix32(SharedYz ? x[n] + firstRest : x[n] + index + firstPairKey);
+      const std::uint32_t second = mix32(SharedYz ? x[n] + secondRest : x[n] + index + secondPairKey);
       const std::int32_t a0 = OddSeed ? randomHalf(first, 16) : randomHalf(first, 0);
       const std::int32_t a1 = OddSeed ? randomHalf(second, 0) : randomHalf(first, 16);
       const std::int32_t a2 = OddSeed ? randomHalf(second, 16) : randomHalf(second, 0);
-      sum[0][n] += w[n] * double(a0);
-      sum[1][n] += w[n] * double(a1);
-      sum[2][n] += w[n] * double(a2);
+      sum[0][n] = std::fma(w, float(a0), sum[0][n]);
+      sum[1][n] = std::fma(w, float(a1), sum[1][n]);
+      sum[2][n] = std::fma(w, float(a2), sum[2][n]);
+    };
+    // The weight formed in the same loop (one product, or a sum of three), never stored.
+    if (term.count == 1) {
+      for (std::size_t n = 0; n < kBlock; ++n) accumulate(n, b0[n] * f0[yzAt(n)]);
+    } else {
+      for (std::size_t n = 0; n < kBlock; ++n)
+        accumulate(n, std::fma(b0[n], f0[yzAt(n)], std::fma(b1[n], f1[yzAt(n)], b2[n] * f2[yzAt(n)])));
     }
   }
   for (int a = 0; a < kAxes; ++a)
-    for (std::size_t n = 0; n < kBlock; ++n) out[a][n] = sum[a][n];
+    for (std::size_t n = 0; n < kBlock; ++n) out[a][n] = double(sum[a][n]);
 }
 
-void hashAndSum(const VertexSteps* vertices, int count, const BlockScratch& in, const std::array<std::uint32_t, 4>& times,
-                const Level& level, std::array<std::array<double, kBlock>, kAxes>& out) {
-  // Axes 0 and 2 lie in consecutive seed pairs; axis 0's half says which case this is.
-  if (level.shifts[0] != 0)
-    hashAndSum<true>(vertices, count, in, times, level.keys[0], level.keys[2], out);
-  else
-    hashAndSum<false>(vertices, count, in, times, level.keys[0], level.keys[2], out);
-}
 
 // A sample's cell along one dimension as the hashing reads it: the index shares of the four
 // steps around it and the position inside.
@@ -527,17 +563,24 @@ void putNode(std::size_t n, const SampleCell& x, const SampleCell& y, const Samp
 // its last node to fill the vectors; those values are not used). sharedYz: every node of the
 // block has the same y and z cells.
 void hashDirect(const Level& level, const TimeCollapse& time, bool cubic, std::size_t count, bool sharedYz,
-                BlockScratch& scratch, Vec3* total) {
+                BlockScratch& scratch, const std::array<double*, kAxes>& total) {
   if (sharedYz)
-    blockWeights<true>(cubic, time, scratch.u, scratch.weight.data());
+    blockWeights<true>(cubic, time, scratch.u, scratch);
   else
-    blockWeights<false>(cubic, time, scratch.u, scratch.weight.data());
-  if (cubic)
-    hashAndSum(kCubicSteps.data(), kCubicVertices, scratch, time.index, level, scratch.out);
+    blockWeights<false>(cubic, time, scratch.u, scratch);
+  const VertexSteps* steps = cubic ? kCubicSteps.data() : kLinearSteps.data();
+  const VertexTerms* terms = cubic ? kCubicTerms.data() : kLinearTerms.data();
+  const int vertices = cubic ? kCubicVertices : kLinearVertices;
+  const bool odd = level.shifts[0] != 0;
+  const auto run = [&](auto kernel) {
+    kernel(steps, terms, vertices, scratch, time.index, level.keys[0], level.keys[2], scratch.out);
+  };
+  if (sharedYz)
+    odd ? run(hashAndSum<true, true>) : run(hashAndSum<false, true>);
   else
-    hashAndSum(kLinearSteps.data(), kLinearVertices, scratch, time.index, level, scratch.out);
+    odd ? run(hashAndSum<true, false>) : run(hashAndSum<false, false>);
   for (std::size_t n = 0; n < count; ++n)
-    total[n] += level.weight * Vec3{scratch.out[0][n], scratch.out[1][n], scratch.out[2][n]};
+    for (int a = 0; a < kAxes; ++a) total[a][n] += level.weight * scratch.out[a][n];
 }
 
 // Nodes at every (xs[i], ys[j], zs[k]), x fastest: an undistorted grid or a heightfield.
@@ -577,141 +620,87 @@ bool findTensorGrid(const std::vector<Vec3>& nodes, TensorGrid& grid) {
 //   value = H_z H_y C_x g + H_z D_y L_x g + D_z L_y L_x g + L_z L_y L_x e
 // (x reduced first: cubic in the value, linear in the later slopes; then y; then z), and
 // n-linear interpolation is L_z L_y L_x g. Operators along different dimensions commute, so they
-// are applied in the order that keeps every step a weighted sum of contiguous rows: z first over
-// whole layers of the box, then x over the rows of each layer, then (after a transpose of the
-// small intermediate) y over rows of samples, which lands in the grid's node order.
+// are applied in the order that keeps each step a weighted sum of contiguous rows: z over whole
+// layers of the box (q1 = H_z g, q2 = D_z g + L_z e), then y over their rows
+// (y1 = H_y q1, y2 = D_y q1 + L_y q2), then x along each row (C_x y1 + L_x y2), which lands in
+// the grid's node order. Along x the samples are taken sixteen at a time as a small dense band
+// of weights over the box vertices they reach, so that pass is vector arithmetic too.
 
-// Per sample along one dimension: its lower box vertex and the weights of the four vertices
-// around it (steps −1, 0, +1, +2) in C, D, H and L.
+// The passes work in single precision, like the per-node sums: a level's values carry a relative
+// rounding error of about 1e-7, far below anything visible, at twice the vector width.
+using Pass = float;
+
+// Per sample along y or z: its lower box vertex and the weights of the four vertices around it
+// (steps −1, 0, +1, +2) in D, and of the two of its cell (steps 0, +1) in H and L.
 struct AxisTaps {
-  std::vector<std::size_t> at;             // the lower vertex of the sample's cell, in box indices
-  std::vector<std::array<double, 4>> c, d;  // Catmull-Rom, and its slope part
-  std::vector<std::array<double, 2>> h, l;  // Hermite value part, linear (steps 0, +1)
+  std::vector<std::size_t> at;
+  std::vector<std::array<Pass, 4>> d;
+  std::vector<std::array<Pass, 2>> h, l;
 };
+
+struct TapWeights {
+  std::array<double, 4> c, d;  // Catmull-Rom and its slope part
+  std::array<double, 2> h, l;  // Hermite value part, linear
+};
+
+TapWeights tapWeights(double u) {
+  const double u2 = u * u, u3 = u2 * u;
+  const double hv0 = 2.0 * u3 - 3.0 * u2 + 1.0, hv1 = 3.0 * u2 - 2.0 * u3;
+  // hermite()'s slope terms hs0·d0 + hs1·d1 with d0 = (f1 − f−1)/2, d1 = (f2 − f0)/2.
+  const double hs0 = 0.5 * (u3 - 2.0 * u2 + u), hs1 = 0.5 * (u3 - u2);
+  return {{-hs0, hv0 - hs1, hv1 + hs0, hs1}, {-hs0, -hs1, hs0, hs1}, {hv0, hv1}, {1.0 - u, u}};
+}
 
 AxisTaps axisTaps(const std::vector<AxisCell>& cells, std::int64_t lo) {
   AxisTaps taps;
   for (const AxisCell& cell : cells) {
-    const double u = cell.u, u2 = u * u, u3 = u2 * u;
-    const double hv0 = 2.0 * u3 - 3.0 * u2 + 1.0, hv1 = 3.0 * u2 - 2.0 * u3;
-    // hermite()'s slope terms hs0·d0 + hs1·d1 with d0 = (f1 − f−1)/2, d1 = (f2 − f0)/2.
-    const double hs0 = 0.5 * (u3 - 2.0 * u2 + u), hs1 = 0.5 * (u3 - u2);
+    const TapWeights w = tapWeights(cell.u);
     taps.at.push_back(std::size_t(cell.base - lo));
-    taps.d.push_back({-hs0, -hs1, hs0, hs1});
-    taps.c.push_back({-hs0, hv0 - hs1, hv1 + hs0, hs1});
-    taps.h.push_back({hv0, hv1});
-    taps.l.push_back({1.0 - u, u});
+    taps.d.push_back({Pass(w.d[0]), Pass(w.d[1]), Pass(w.d[2]), Pass(w.d[3])});
+    taps.h.push_back({Pass(w.h[0]), Pass(w.h[1])});
+    taps.l.push_back({Pass(w.l[0]), Pass(w.l[1])});
   }
   return taps;
 }
 
-// One axis of one sample layer of a tensor grid: the three passes over the collapsed layers
-// around it. g[0..3], e[0..3]: the box layers at the steps −1, 0, +1, +2 along z from the sample's
-// cell ([i][j], y fastest; e unused when linear); out: the values of the layer's nodes, [j][i].
-struct LayerPasses {
-  std::size_t bx = 0, by = 0, nx = 0, ny = 0;
-  const AxisTaps* x = nullptr;
-  const AxisTaps* y = nullptr;
-  // Scratch: q1, q2 per box layer; x1..x3 per [sample i][j]; t1..t3 their transposes.
-  double *q1 = nullptr, *q2 = nullptr, *x1 = nullptr, *x2 = nullptr, *x3 = nullptr, *t1 = nullptr, *t2 = nullptr,
-         *t3 = nullptr;
+// The x pass as bands: samples in groups of kLanes; group q reads the box vertices
+// first[q] .. first[q] + span[q] − 1, with weight c[q][v][lane] (C, or L when linear) and
+// l[q][v][lane] (L) for vertex first[q] + v and sample kLanes·q + lane (zero beyond the samples).
+constexpr std::size_t kLanes = 16;
+struct XBands {
+  std::vector<std::size_t> first, span, offset;  // offset: of group q's rows in c and l
+  std::vector<std::array<Pass, kLanes>> c, l;
 };
 
-GRIDIFS_FIELD_VECTOR_CLONES
-void layerPasses(const LayerPasses& p, bool cubic, const std::array<const double*, 4>& g,
-                 const std::array<const double*, 4>& e, const std::array<double, 2>& zh, const std::array<double, 4>& zd,
-                 const std::array<double, 2>& zl, double* out) {
-  const std::size_t layer = p.bx * p.by, by = p.by, nx = p.nx;
-  if (!cubic) {
-    // L_y L_x L_z g.
-    {
-      const double l0 = zl[0], l1 = zl[1];
-      const double* __restrict g0 = g[1];
-      const double* __restrict g1 = g[2];
-      double* __restrict q1 = p.q1;
-      for (std::size_t n = 0; n < layer; ++n) q1[n] = l0 * g0[n] + l1 * g1[n];
+XBands xBands(const std::vector<AxisCell>& cells, std::int64_t lo, bool cubic) {
+  XBands bands;
+  for (std::size_t begin = 0; begin < cells.size(); begin += kLanes) {
+    const std::size_t count = std::min(kLanes, cells.size() - begin);
+    std::size_t low = std::numeric_limits<std::size_t>::max(), high = 0;
+    for (std::size_t s = begin; s < begin + count; ++s) {
+      const std::size_t at = std::size_t(cells[s].base - lo);
+      low = std::min(low, at - 1);
+      high = std::max(high, at + 2);
     }
-    for (std::size_t i = 0; i < nx; ++i) {
-      const double* __restrict r = p.q1 + p.x->at[i] * by;
-      const double l0 = p.x->l[i][0], l1 = p.x->l[i][1];
-      double* __restrict x1 = p.x1 + i * by;
-      for (std::size_t j = 0; j < by; ++j) x1[j] = l0 * r[j] + l1 * r[by + j];
-    }
-    {
-      const double* __restrict x1 = p.x1;
-      double* __restrict t1 = p.t1;
-      for (std::size_t i = 0; i < nx; ++i)
-        for (std::size_t j = 0; j < by; ++j) t1[j * nx + i] = x1[i * by + j];
-    }
-    for (std::size_t j = 0; j < p.ny; ++j) {
-      const double* __restrict r = p.t1 + p.y->at[j] * nx;
-      const double l0 = p.y->l[j][0], l1 = p.y->l[j][1];
-      double* __restrict row = out + j * nx;
-      for (std::size_t i = 0; i < nx; ++i) row[i] = l0 * r[i] + l1 * r[nx + i];
-    }
-    return;
-  }
-  // z: q1 = H_z g, q2 = D_z g + L_z e. (Weights in locals and restrict pointers: the vectorizer
-  // must see that no store changes them.)
-  {
-    const double h0 = zh[0], h1 = zh[1], d0 = zd[0], d1 = zd[1], d2 = zd[2], d3 = zd[3], l0 = zl[0], l1 = zl[1];
-    const double* __restrict gm = g[0];
-    const double* __restrict g0 = g[1];
-    const double* __restrict g1 = g[2];
-    const double* __restrict g2 = g[3];
-    const double* __restrict e0 = e[1];
-    const double* __restrict e1 = e[2];
-    double* __restrict q1 = p.q1;
-    double* __restrict q2 = p.q2;
-    for (std::size_t n = 0; n < layer; ++n) {
-      q1[n] = h0 * g0[n] + h1 * g1[n];
-      q2[n] = ((d0 * gm[n] + d1 * g0[n]) + (d2 * g1[n] + d3 * g2[n])) + (l0 * e0[n] + l1 * e1[n]);
-    }
-  }
-  // x: x1 = C_x q1, x2 = L_x q1, x3 = L_x q2, per sample i along the layer's rows.
-  for (std::size_t i = 0; i < nx; ++i) {
-    const std::size_t at = p.x->at[i] * by;
-    const double* __restrict a = p.q1 + at;
-    const double* __restrict b = p.q2 + at;
-    const double c0 = p.x->c[i][0], c1 = p.x->c[i][1], c2 = p.x->c[i][2], c3 = p.x->c[i][3];
-    const double l0 = p.x->l[i][0], l1 = p.x->l[i][1];
-    double* __restrict x1 = p.x1 + i * by;
-    double* __restrict x2 = p.x2 + i * by;
-    double* __restrict x3 = p.x3 + i * by;
-    for (std::size_t j = 0; j < by; ++j) {
-      x1[j] = (c0 * a[j - by] + c1 * a[j]) + (c2 * a[by + j] + c3 * a[2 * by + j]);
-      x2[j] = l0 * a[j] + l1 * a[by + j];
-      x3[j] = l0 * b[j] + l1 * b[by + j];
-    }
-  }
-  {
-    const double* __restrict x1 = p.x1;
-    const double* __restrict x2 = p.x2;
-    const double* __restrict x3 = p.x3;
-    double* __restrict t1 = p.t1;
-    double* __restrict t2 = p.t2;
-    double* __restrict t3 = p.t3;
-    for (std::size_t i = 0; i < nx; ++i)
-      for (std::size_t j = 0; j < by; ++j) {
-        t1[j * nx + i] = x1[i * by + j];
-        t2[j * nx + i] = x2[i * by + j];
-        t3[j * nx + i] = x3[i * by + j];
+    bands.first.push_back(low);
+    bands.span.push_back(high - low + 1);
+    bands.offset.push_back(bands.c.size());
+    bands.c.resize(bands.c.size() + high - low + 1, std::array<Pass, kLanes>{});
+    bands.l.resize(bands.c.size(), std::array<Pass, kLanes>{});
+    std::array<Pass, kLanes>* c = bands.c.data() + bands.offset.back();
+    std::array<Pass, kLanes>* l = bands.l.data() + bands.offset.back();
+    for (std::size_t lane = 0; lane < count; ++lane) {
+      const AxisCell& cell = cells[begin + lane];
+      const TapWeights w = tapWeights(cell.u);
+      const std::size_t at = std::size_t(cell.base - lo) - 1 - low;  // the sample's step −1, in the band
+      for (int t = 0; t < 4; ++t) c[at + std::size_t(t)][lane] = Pass(cubic ? w.c[std::size_t(t)] : 0.0);
+      for (int t = 0; t < 2; ++t) {
+        l[at + 1 + std::size_t(t)][lane] = Pass(w.l[std::size_t(t)]);
+        if (!cubic) c[at + 1 + std::size_t(t)][lane] = Pass(w.l[std::size_t(t)]);
       }
+    }
   }
-  // y: H_y x1 + D_y x2 + L_y x3, per sample j along rows of samples i.
-  for (std::size_t j = 0; j < p.ny; ++j) {
-    const std::size_t at = p.y->at[j] * nx;
-    const double* __restrict a = p.t1 + at;
-    const double* __restrict b = p.t2 + at;
-    const double* __restrict c = p.t3 + at;
-    const double h0 = p.y->h[j][0], h1 = p.y->h[j][1];
-    const double d0 = p.y->d[j][0], d1 = p.y->d[j][1], d2 = p.y->d[j][2], d3 = p.y->d[j][3];
-    const double l0 = p.y->l[j][0], l1 = p.y->l[j][1];
-    double* __restrict row = out + j * nx;
-    for (std::size_t i = 0; i < nx; ++i)
-      row[i] = ((h0 * a[i] + h1 * a[nx + i]) + ((d0 * b[i - nx] + d1 * b[i]) + (d2 * b[nx + i] + d3 * b[2 * nx + i]))) +
-               (l0 * c[i] + l1 * c[nx + i]);
-  }
+  return bands;
 }
 
 // The collapsed layers (constant z) of one level's box, computed when first asked for and kept
@@ -720,14 +709,11 @@ class LayerCache {
  public:
   LayerCache(const Level& level, const TimeCollapse& time, bool cubic, const VertexBox& box,
              const std::array<std::vector<std::uint32_t>, kSpace>& share)
-      : level_(level), time_(time), cubic_(cubic), box_(box),
-        // collapseRow works along its first dimension's shares; a layer is wanted along y, so
-        // its rows are the box's columns: the same vertices and sums, the shares swapped.
-        columnShare_{share[1], share[0], share[2]},
+      : level_(level), time_(time), cubic_(cubic), box_(box), share_(share),
         layerSize_(std::size_t(box.size[0] * box.size[1])) {}
 
-  // g (quantity 0) or e (quantity 1) of axis a on layer k, in [i][j] order (y fastest).
-  const double* layer(std::size_t k, int a, int quantity) {
+  // g (quantity 0) or e (quantity 1) of axis a on layer k, in [j][i] order (x fastest).
+  const Pass* layer(std::size_t k, int a, int quantity) {
     Slot& slot = find(k);
     return slot.values.data() + (std::size_t(quantity) * kAxes + std::size_t(a)) * layerSize_;
   }
@@ -736,7 +722,7 @@ class LayerCache {
   struct Slot {
     std::int64_t k = -1;
     std::uint64_t used = 0;
-    std::vector<double> values;  // [quantity][axis][i][j]
+    std::vector<Pass> values;  // [quantity][axis][j][i]
   };
   static constexpr int kSlots = 8;
 
@@ -759,13 +745,13 @@ class LayerCache {
     slot.k = std::int64_t(k);
     slot.values.resize(layerSize_ * kAxes * (cubic_ ? 2 : 1));
     const std::size_t bx = std::size_t(box_.size[0]), by = std::size_t(box_.size[1]);
-    for (std::size_t i = 0; i < bx; ++i) {
-      std::array<double*, kAxes> g{}, e{};
+    for (std::size_t j = 0; j < by; ++j) {
+      std::array<Pass*, kAxes> g{}, e{};
       for (int a = 0; a < kAxes; ++a) {
-        g[a] = slot.values.data() + std::size_t(a) * layerSize_ + i * by;
-        e[a] = cubic_ ? slot.values.data() + (kAxes + std::size_t(a)) * layerSize_ + i * by : nullptr;
+        g[a] = slot.values.data() + std::size_t(a) * layerSize_ + j * bx;
+        e[a] = cubic_ ? slot.values.data() + (kAxes + std::size_t(a)) * layerSize_ + j * bx : nullptr;
       }
-      collapseRow(level_, time_, cubic_, columnShare_, i, k, scratch_, g, e);
+      collapseRow(level_, time_, cubic_, share_, j, k, g, e);
     }
   }
 
@@ -773,56 +759,136 @@ class LayerCache {
   const TimeCollapse& time_;
   bool cubic_;
   VertexBox box_;
-  std::array<std::vector<std::uint32_t>, kSpace> columnShare_;
+  const std::array<std::vector<std::uint32_t>, kSpace>& share_;
   std::size_t layerSize_;
   std::array<Slot, kSlots> slots_{};
   std::uint64_t clock_ = 0;
-  RowScratch scratch_;
 };
 
+// One axis of one sample layer of a tensor grid: the three passes over the collapsed layers
+// around it. g[0..3], e[0..3]: the box layers at the steps −1, 0, +1, +2 along z from the sample
+// layer's cell ([j][i], x fastest; linear reads g[1], g[2] only, cubic e[1], e[2] only); out: the
+// layer's nodes' totals, [j][i], to which weight times their values are added.
+struct LayerPasses {
+  std::size_t bx = 0, by = 0, nx = 0, ny = 0;
+  const AxisTaps* y = nullptr;
+  const XBands* x = nullptr;
+  Pass *q1 = nullptr, *q2 = nullptr, *y1 = nullptr, *y2 = nullptr;  // [j][i]: by × bx, then ny × bx
+};
+
+// The rows of the passes. Each takes restrict pointers as parameters, so that once inlined the
+// vectorizer still knows that no store changes the rows it reads.
+inline void zRowsCubic(const Pass* __restrict gm, const Pass* __restrict g0, const Pass* __restrict g1,
+                       const Pass* __restrict g2, const Pass* __restrict e0, const Pass* __restrict e1, std::size_t n,
+                       const std::array<Pass, 2>& zh, const std::array<Pass, 4>& zd, const std::array<Pass, 2>& zl,
+                       Pass* __restrict q1, Pass* __restrict q2) {
+  const Pass h0 = zh[0], h1 = zh[1], d0 = zd[0], d1 = zd[1], d2 = zd[2], d3 = zd[3], l0 = zl[0], l1 = zl[1];
+  for (std::size_t i = 0; i < n; ++i) {
+    q1[i] = h0 * g0[i] + h1 * g1[i];
+    q2[i] = ((d0 * gm[i] + d1 * g0[i]) + (d2 * g1[i] + d3 * g2[i])) + (l0 * e0[i] + l1 * e1[i]);
+  }
+}
+
+inline void weighRows(const Pass* __restrict r0, const Pass* __restrict r1, Pass w0, Pass w1, std::size_t n,
+                      Pass* __restrict out) {
+  for (std::size_t i = 0; i < n; ++i) out[i] = w0 * r0[i] + w1 * r1[i];
+}
+
+// y1 = H_y q1 and y2 = D_y q1 + L_y q2 for one sample row; a points at q1's row of the cell's lower
+// vertex, b at q2's, rows `stride` apart.
+inline void yRowCubic(const Pass* __restrict a, const Pass* __restrict b, std::size_t stride, std::size_t n,
+                      const std::array<Pass, 2>& h, const std::array<Pass, 4>& d, const std::array<Pass, 2>& l,
+                      Pass* __restrict y1, Pass* __restrict y2) {
+  const Pass h0 = h[0], h1 = h[1], d0 = d[0], d1 = d[1], d2 = d[2], d3 = d[3], l0 = l[0], l1 = l[1];
+  const Pass* __restrict am = a - stride;
+  const Pass* __restrict a1 = a + stride;
+  const Pass* __restrict a2 = a + 2 * stride;
+  const Pass* __restrict b1 = b + stride;
+  for (std::size_t i = 0; i < n; ++i) {
+    y1[i] = h0 * a[i] + h1 * a1[i];
+    y2[i] = ((d0 * am[i] + d1 * a[i]) + (d2 * a1[i] + d3 * a2[i])) + (l0 * b[i] + l1 * b1[i]);
+  }
+}
+
+// Σ over a band of vertices of value · weights, sixteen samples at a time, in a vector of sixteen
+// lanes (GCC's vector extension: one AVX-512 register, two AVX2 ones).
+using PassLanes = Pass __attribute__((vector_size(sizeof(Pass) * kLanes)));
+inline void bandSum(const Pass* __restrict a, const std::array<Pass, kLanes>* __restrict c, std::size_t span,
+                    PassLanes& sum) {
+  for (std::size_t v = 0; v < span; ++v) {
+    PassLanes weights;
+    std::memcpy(&weights, c[v].data(), sizeof weights);
+    sum += a[v] * weights;
+  }
+}
+
+GRIDIFS_FIELD_VECTOR_CLONES
+void layerPasses(const LayerPasses& p, bool cubic, const std::array<const Pass*, 4>& g,
+                 const std::array<const Pass*, 4>& e, const std::array<Pass, 2>& zh, const std::array<Pass, 4>& zd,
+                 const std::array<Pass, 2>& zl, double weight, double* out) {
+  const std::size_t layer = p.bx * p.by, bx = p.bx, nx = p.nx;
+  // z: q1 = H_z g, q2 = D_z g + L_z e (linear: q1 = L_z g).
+  if (cubic)
+    zRowsCubic(g[0], g[1], g[2], g[3], e[1], e[2], layer, zh, zd, zl, p.q1, p.q2);
+  else
+    weighRows(g[1], g[2], zl[0], zl[1], layer, p.q1);
+  // y: y1 = H_y q1, y2 = D_y q1 + L_y q2 (linear: y1 = L_y q1), per sample row j.
+  for (std::size_t j = 0; j < p.ny; ++j) {
+    const std::size_t at = p.y->at[j] * bx;
+    if (cubic)
+      yRowCubic(p.q1 + at, p.q2 + at, bx, bx, p.y->h[j], p.y->d[j], p.y->l[j], p.y1 + j * bx, p.y2 + j * bx);
+    else
+      weighRows(p.q1 + at, p.q1 + at + bx, p.y->l[j][0], p.y->l[j][1], bx, p.y1 + j * bx);
+  }
+  // x: C_x y1 + L_x y2 (linear: L_x y1), sixteen samples at a time over their band of vertices.
+  const XBands& bands = *p.x;
+  for (std::size_t j = 0; j < p.ny; ++j) {
+    double* row = out + j * nx;
+    for (std::size_t q = 0; q < bands.first.size(); ++q) {
+      const std::size_t first = bands.first[q], span = bands.span[q];
+      PassLanes sum{};
+      bandSum(p.y1 + j * bx + first, bands.c.data() + bands.offset[q], span, sum);
+      if (cubic) bandSum(p.y2 + j * bx + first, bands.l.data() + bands.offset[q], span, sum);
+      const std::size_t count = std::min(kLanes, nx - q * kLanes);
+      for (std::size_t lane = 0; lane < count; ++lane) row[q * kLanes + lane] += weight * double(sum[lane]);
+    }
+  }
+}
+
 void separable(const Level& level, const TimeCollapse& time, bool cubic, const VertexBox& box,
-               const std::array<std::vector<AxisCell>, kSpace>& cells, int threads, std::vector<Vec3>& total) {
+               const std::array<std::vector<AxisCell>, kSpace>& cells, int threads, Totals& total) {
   const std::size_t nx = cells[0].size(), ny = cells[1].size(), nz = cells[2].size();
   const std::size_t bx = std::size_t(box.size[0]), by = std::size_t(box.size[1]);
   const auto share = boxShares(level, box);
-  std::array<AxisTaps, kSpace> taps;
-  for (int d = 0; d < kSpace; ++d) taps[d] = axisTaps(cells[d], box.lo[d]);
+  const XBands bands = xBands(cells[0], box.lo[0], cubic);
+  const AxisTaps ty = axisTaps(cells[1], box.lo[1]);
+  const AxisTaps tz = axisTaps(cells[2], box.lo[2]);
   parallelFor(nz, threads, 1, [&](std::size_t begin, std::size_t end) {
     LayerCache layers(level, time, cubic, box, share);
-    std::vector<double> scratch(2 * bx * by + 6 * nx * by);
+    std::vector<Pass> scratch(2 * bx * by + 2 * bx * ny);
     LayerPasses passes;
     passes.bx = bx;
     passes.by = by;
     passes.nx = nx;
     passes.ny = ny;
-    passes.x = &taps[0];
-    passes.y = &taps[1];
-    double* free = scratch.data();
-    for (double** buffer : {&passes.q1, &passes.q2}) {
-      *buffer = free;
-      free += bx * by;
-    }
-    for (double** buffer : {&passes.x1, &passes.x2, &passes.x3, &passes.t1, &passes.t2, &passes.t3}) {
-      *buffer = free;
-      free += nx * by;
-    }
-    std::vector<double> value(kAxes * nx * ny);  // [axis][sample j][sample i]
-    const AxisTaps& tz = taps[2];
+    passes.y = &ty;
+    passes.x = &bands;
+    passes.q1 = scratch.data();
+    passes.q2 = passes.q1 + bx * by;
+    passes.y1 = passes.q2 + bx * by;
+    passes.y2 = passes.y1 + bx * ny;
     for (std::size_t k = begin; k < end; ++k) {
       const std::size_t z = tz.at[k];
       for (int a = 0; a < kAxes; ++a) {
-        std::array<const double*, 4> g{}, e{};
+        std::array<const Pass*, 4> g{}, e{};
         for (int step = 0; step < 4; ++step) {
           // Linear interpolation reads the layers at the steps 0 and +1 only.
           if (!cubic && (step == 0 || step == 3)) continue;
           g[std::size_t(step)] = layers.layer(z + std::size_t(step) - 1, a, 0);
           if (cubic && (step == 1 || step == 2)) e[std::size_t(step)] = layers.layer(z + std::size_t(step) - 1, a, 1);
         }
-        layerPasses(passes, cubic, g, e, tz.h[k], tz.d[k], tz.l[k], value.data() + std::size_t(a) * nx * ny);
+        layerPasses(passes, cubic, g, e, tz.h[k], tz.d[k], tz.l[k], level.weight, total[a].data() + nx * ny * k);
       }
-      Vec3* layer = &total[nx * ny * k];
-      for (std::size_t n = 0; n < nx * ny; ++n)
-        layer[n] += level.weight * Vec3{value[n], value[nx * ny + n], value[2 * nx * ny + n]};
     }
   });
 }
@@ -835,9 +901,14 @@ void fieldStepDisplace(const FractalField& field, std::vector<Vec3>& nodes, cons
   const bool cubic = p.interpolation == FieldInterpolation::Cubic;
   const int workers = resolveThreadCount(threads);
   std::vector<std::size_t> selected;
-  selected.reserve(nodes.size());
-  for (std::size_t n = 0; n < nodes.size(); ++n)
-    if (mask[n]) selected.push_back(n);
+  const bool everyNode = std::find(mask.begin(), mask.end(), 0) == mask.end();
+  if (everyNode) {
+    selected.resize(nodes.size());
+    std::iota(selected.begin(), selected.end(), std::size_t(0));
+  } else {
+    for (std::size_t n = 0; n < nodes.size(); ++n)
+      if (mask[n]) selected.push_back(n);
+  }
   if (selected.empty()) return;
 
   // The sample points s = (q + wind·t, t), wrapped (Colonna §3.2).
@@ -848,10 +919,20 @@ void fieldStepDisplace(const FractalField& field, std::vector<Vec3>& nodes, cons
   const double time = field.wrapped({0.0, 0.0, 0.0, t})[3];
   TensorGrid grid;
   // Nodes that are not finite (a previous op blew up) keep the per-node path: no box holds them.
-  bool finite = true;
-  for (std::size_t n : selected)
-    if (!std::isfinite(nodes[n].x) || !std::isfinite(nodes[n].y) || !std::isfinite(nodes[n].z)) finite = false;
-  const bool tensor = finite && selected.size() == nodes.size() && findTensorGrid(nodes, grid);
+  // A tensor grid's nodes are finite when its coordinates are (NaN never passes its test).
+  const auto finiteCoordinates = [&] {
+    for (int d = 0; d < kSpace; ++d)
+      for (double coordinate : grid.coordinate[d])
+        if (!std::isfinite(coordinate)) return false;
+    return true;
+  };
+  const bool tensor = everyNode && findTensorGrid(nodes, grid) && finiteCoordinates();
+  bool finite = tensor;
+  if (!tensor) {
+    finite = true;
+    for (std::size_t n : selected)
+      if (!std::isfinite(nodes[n].x) || !std::isfinite(nodes[n].y) || !std::isfinite(nodes[n].z)) finite = false;
+  }
   std::array<std::vector<double>, kSpace> axisSamples;  // tensor grids: the samples per dimension
   if (tensor)
     for (int d = 0; d < kSpace; ++d)
@@ -867,7 +948,8 @@ void fieldStepDisplace(const FractalField& field, std::vector<Vec3>& nodes, cons
       for (std::size_t n = begin; n < end; ++n) samples[n] = sampleOf(nodes[selected[n]]);
     });
 
-  std::vector<Vec3> total(selected.size(), Vec3{0.0, 0.0, 0.0});
+  Totals total;
+  for (std::vector<double>& axis : total) axis.assign(selected.size(), 0.0);
   CollapsedMesh mesh;
   for (int k = 0; k < field.levelCount(); ++k) {
     const Level& level = field.level(k);
@@ -902,7 +984,7 @@ void fieldStepDisplace(const FractalField& field, std::vector<Vec3>& nodes, cons
           for (std::size_t n = begin; n < end; ++n) {
             double v[kAxes];
             readCollapsed(mesh, cubic, nodeCell(level, samples[n]), v);
-            total[n] += level.weight * Vec3{v[0], v[1], v[2]};
+            for (int a = 0; a < kAxes; ++a) total[a][n] += level.weight * v[a];
           }
         });
       }
@@ -961,12 +1043,22 @@ void fieldStepDisplace(const FractalField& field, std::vector<Vec3>& nodes, cons
                       sampleCell(level, 2, axisCell(q[2], level.offset[2], level.cell[2])), scratch);
             }
           }
-          hashDirect(level, collapsed, cubic, count, sharedYz, scratch, &total[first]);
+          hashDirect(level, collapsed, cubic, count, sharedYz, scratch,
+                     {total[0].data() + first, total[1].data() + first, total[2].data() + first});
         }
       });
     }
   }
-  for (std::size_t n = 0; n < selected.size(); ++n) nodes[selected[n]] += p.amplitude * total[n];
+  if (everyNode) {
+    for (std::size_t n = 0; n < nodes.size(); ++n) {
+      nodes[n].x += p.amplitude.x * total[0][n];
+      nodes[n].y += p.amplitude.y * total[1][n];
+      nodes[n].z += p.amplitude.z * total[2][n];
+    }
+    return;
+  }
+  for (std::size_t n = 0; n < selected.size(); ++n)
+    nodes[selected[n]] += p.amplitude * Vec3{total[0][n], total[1][n], total[2][n]};
 }
 
 }  // namespace gridifs

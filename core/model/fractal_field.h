@@ -62,9 +62,9 @@ class FractalField {
   /// amplitude ⊙ (F_S(s), F_S+1(s), F_S+2(s)) with s = (q + wind·t, t), wrapped by the periods.
   Vec3 displacement(const Vec3& q, double t) const;
 
-  /// nodes[n] += displacement(nodes[n], t) for every n with mask[n] set, up to rounding: many
-  /// nodes share the lattice vertices of the coarse meshes, so this evaluates the field for the
-  /// whole time step at once (see field_step.h). Work is split over `threads` workers (≤ 0: all);
+  /// nodes[n] += displacement(nodes[n], t) for every n with mask[n] set, up to single-precision
+  /// rounding (about 1e-7 of the amplitude): many nodes share the lattice vertices of the coarse
+  /// meshes, so this evaluates the field for the whole time step at once (see field_step.h). Work is split over `threads` workers (≤ 0: all);
   /// no result depends on the split.
   void displaceNodes(std::vector<Vec3>& nodes, const std::vector<unsigned char>& mask, double t, int threads = 0) const;
 
