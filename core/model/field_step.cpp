@@ -579,8 +579,8 @@ void hashDirect(const Level& level, const TimeCollapse& time, bool cubic, std::s
     odd ? run(hashAndSum<true, true>) : run(hashAndSum<false, true>);
   else
     odd ? run(hashAndSum<true, false>) : run(hashAndSum<false, false>);
-  for (std::size_t n = 0; n < count; ++n)
-    for (int a = 0; a < kAxes; ++a) total[a][n] += level.weight * scratch.out[a][n];
+  for (int a = 0; a < kAxes; ++a)
+    for (std::size_t n = 0; n < count; ++n) total[a][n] += level.weight * scratch.out[a][n];
 }
 
 // Nodes at every (xs[i], ys[j], zs[k]), x fastest: an undistorted grid or a heightfield.
@@ -810,15 +810,24 @@ inline void yRowCubic(const Pass* __restrict a, const Pass* __restrict b, std::s
   }
 }
 
-// Σ over a band of vertices of value · weights, sixteen samples at a time, in a vector of sixteen
-// lanes (GCC's vector extension: one AVX-512 register, two AVX2 ones).
+// Σ over a band of vertices of value · weights, sixteen samples at a time, in vectors of sixteen
+// lanes (GCC's vector extension: one AVX-512 register, two AVX2 ones). Two sums, of the even and
+// the odd vertices, so that each addition need not wait for the one before.
 using PassLanes = Pass __attribute__((vector_size(sizeof(Pass) * kLanes)));
 inline void bandSum(const Pass* __restrict a, const std::array<Pass, kLanes>* __restrict c, std::size_t span,
-                    PassLanes& sum) {
-  for (std::size_t v = 0; v < span; ++v) {
-    PassLanes weights;
-    std::memcpy(&weights, c[v].data(), sizeof weights);
-    sum += a[v] * weights;
+                    PassLanes& even, PassLanes& odd) {
+  std::size_t v = 0;
+  for (; v + 1 < span; v += 2) {
+    PassLanes w0, w1;
+    std::memcpy(&w0, c[v].data(), sizeof w0);
+    std::memcpy(&w1, c[v + 1].data(), sizeof w1);
+    even += a[v] * w0;
+    odd += a[v + 1] * w1;
+  }
+  if (v < span) {
+    PassLanes w0;
+    std::memcpy(&w0, c[v].data(), sizeof w0);
+    even += a[v] * w0;
   }
 }
 
@@ -846,11 +855,15 @@ void layerPasses(const LayerPasses& p, bool cubic, const std::array<const Pass*,
     double* row = out + j * nx;
     for (std::size_t q = 0; q < bands.first.size(); ++q) {
       const std::size_t first = bands.first[q], span = bands.span[q];
-      PassLanes sum{};
-      bandSum(p.y1 + j * bx + first, bands.c.data() + bands.offset[q], span, sum);
-      if (cubic) bandSum(p.y2 + j * bx + first, bands.l.data() + bands.offset[q], span, sum);
+      PassLanes c0{}, c1{}, l0{}, l1{};
+      bandSum(p.y1 + j * bx + first, bands.c.data() + bands.offset[q], span, c0, c1);
+      if (cubic) bandSum(p.y2 + j * bx + first, bands.l.data() + bands.offset[q], span, l0, l1);
+      const PassLanes sum = (c0 + c1) + (l0 + l1);
+      Pass lanes[kLanes];
+      std::memcpy(lanes, &sum, sizeof lanes);
       const std::size_t count = std::min(kLanes, nx - q * kLanes);
-      for (std::size_t lane = 0; lane < count; ++lane) row[q * kLanes + lane] += weight * double(sum[lane]);
+      double* __restrict samples = row + q * kLanes;
+      for (std::size_t lane = 0; lane < count; ++lane) samples[lane] += weight * double(lanes[lane]);
     }
   }
 }
@@ -1014,14 +1027,15 @@ void fieldStepDisplace(const FractalField& field, std::vector<Vec3>& nodes, cons
             // A whole block inside one grid row: its x cells are consecutive, y and z one each.
             const SampleCell& y = lineCells[1][(first / nx) % ny];
             const SampleCell& z = lineCells[2][first / (nx * ny)];
+            // (A shared block's y and z are read from node 0 only.)
             for (int step = 0; step < 4; ++step) {
               std::copy_n(xShares[std::size_t(step)].data() + row, kBlock, scratch.share[0][step].data());
-              scratch.share[1][step].fill(y.share[std::size_t(step)]);
-              scratch.share[2][step].fill(z.share[std::size_t(step)]);
+              scratch.share[1][step][0] = y.share[std::size_t(step)];
+              scratch.share[2][step][0] = z.share[std::size_t(step)];
             }
             std::copy_n(xU.data() + row, kBlock, scratch.u[0].data());
-            scratch.u[1].fill(y.u);
-            scratch.u[2].fill(z.u);
+            scratch.u[1][0] = y.u;
+            scratch.u[2][0] = z.u;
           } else if (tensor) {
             // The block's grid position found once and stepped, not divided out per node.
             std::size_t i = row, j = (first / nx) % ny, k = first / (nx * ny);
