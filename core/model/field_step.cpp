@@ -601,13 +601,16 @@ bool findTensorGrid(const std::vector<Vec3>& nodes, TensorGrid& grid) {
   for (std::size_t i = 0; i < nx; ++i) grid.coordinate[0].push_back(nodes[i].x);
   for (std::size_t j = 0; j < ny; ++j) grid.coordinate[1].push_back(nodes[j * nx].y);
   for (std::size_t k = 0; k < nz; ++k) grid.coordinate[2].push_back(nodes[k * nx * ny].z);
-  std::size_t m = 0;
+  // Row by row, without branching per node, so the comparisons run in vector instructions.
   for (std::size_t k = 0; k < nz; ++k)
-    for (std::size_t j = 0; j < ny; ++j)
-      for (std::size_t i = 0; i < nx; ++i, ++m)
-        if (nodes[m].x != grid.coordinate[0][i] || nodes[m].y != grid.coordinate[1][j] ||
-            nodes[m].z != grid.coordinate[2][k])
-          return false;
+    for (std::size_t j = 0; j < ny; ++j) {
+      const Vec3* row = &nodes[nx * (j + ny * k)];
+      const double y = grid.coordinate[1][j], z = grid.coordinate[2][k];
+      bool differs = false;
+      for (std::size_t i = 0; i < nx; ++i)
+        differs |= (row[i].x != grid.coordinate[0][i]) | (row[i].y != y) | (row[i].z != z);
+      if (differs) return false;
+    }
   return true;
 }
 
