@@ -41,6 +41,18 @@ using Totals = std::array<std::vector<double>, kAxes>;
 // of g = value0·f(t0) + value1·f(t1) plus the trilinear interpolation of the time slopes
 // e = slope0·(f(t1) − f(t−1))/2 + slope1·(f(t2) − f(t0))/2 (central differences, as the
 // appendix takes them). Linear interpolation: g = (1 − u)·f(t0) + u·f(t1), no e.
+// The one-dimensional bases of the appendix's reduction at a position u in a cell: linear
+// (1 − u, u), Hermite value and Hermite slope, so that hermite(f0, f1, d0, d1, u) =
+// value0·f0 + value1·f1 + slope0·d0 + slope1·d1.
+struct CellBases {
+  double linear0, linear1, value0, value1, slope0, slope1;
+};
+
+inline CellBases cellBases(double u) {
+  const double u2 = u * u, u3 = u2 * u;
+  return {1.0 - u, u, 2.0 * u3 - 3.0 * u2 + 1.0, 3.0 * u2 - 2.0 * u3, u3 - 2.0 * u2 + u, u3 - u2};
+}
+
 struct TimeCollapse {
   std::array<std::uint32_t, 4> index{};  // hash shares of the time steps −1, 0, +1, +2
   double value0 = 0.0, value1 = 0.0, slope0 = 0.0, slope1 = 0.0;
@@ -50,19 +62,11 @@ TimeCollapse timeCollapse(const Level& level, double t, bool cubic) {
   TimeCollapse c;
   const AxisCell cell = axisCell(t, level.offset[3], level.cell[3]);
   for (int step = 0; step < 4; ++step) c.index[step] = indexContribution(cell.base + step - 1, level.wrap[3], 3);
-  const double u = cell.u;
-  if (cubic) {
-    // The Hermite basis of hermite(): value0·f0 + value1·f1 + slope0·d0 + slope1·d1.
-    const double u2 = u * u;
-    const double u3 = u2 * u;
-    c.value0 = 2.0 * u3 - 3.0 * u2 + 1.0;
-    c.value1 = 3.0 * u2 - 2.0 * u3;
-    c.slope0 = u3 - 2.0 * u2 + u;
-    c.slope1 = u3 - u2;
-  } else {
-    c.value0 = 1.0 - u;
-    c.value1 = u;
-  }
+  const CellBases b = cellBases(cell.u);
+  c.value0 = cubic ? b.value0 : b.linear0;
+  c.value1 = cubic ? b.value1 : b.linear1;
+  c.slope0 = cubic ? b.slope0 : 0.0;
+  c.slope1 = cubic ? b.slope1 : 0.0;
   return c;
 }
 
@@ -405,13 +409,13 @@ void blockWeights(bool cubic, const TimeCollapse& time, const std::array<std::ar
   constexpr double scale = field_lattice::kRandomScale;
   constexpr std::size_t kYz = SharedYz ? 1 : kBlock;  // y·z factors per block
   for (std::size_t n = 0; n < kBlock; ++n) {
-    const double x = u[0][n], x2 = x * x, x3 = x2 * x;
-    out.base[kLinear0][n] = float(1.0 - x);
-    out.base[kLinear1][n] = float(x);
-    out.base[kValue0][n] = float(2.0 * x3 - 3.0 * x2 + 1.0);
-    out.base[kValue1][n] = float(3.0 * x2 - 2.0 * x3);
-    out.base[kSlope0][n] = float(0.5 * (x3 - 2.0 * x2 + x));
-    out.base[kSlope1][n] = float(0.5 * (x3 - x2));
+    const CellBases b = cellBases(u[0][n]);
+    out.base[kLinear0][n] = float(b.linear0);
+    out.base[kLinear1][n] = float(b.linear1);
+    out.base[kValue0][n] = float(b.value0);
+    out.base[kValue1][n] = float(b.value1);
+    out.base[kSlope0][n] = float(0.5 * b.slope0);
+    out.base[kSlope1][n] = float(0.5 * b.slope1);
   }
   // Per (by, bz) = q: the y·z factors of a corner's value (and x slope), y slope, z slope and
   // time slope, formed in double and rounded once (the factors below are their products with
@@ -420,13 +424,13 @@ void blockWeights(bool cubic, const TimeCollapse& time, const std::array<std::ar
   for (std::size_t m = 0; m < kYz; ++m) {
     double l[2][2], h[2][2], sl[2][2];  // [y or z][side]
     for (int d = 0; d < 2; ++d) {
-      const double x = u[std::size_t(d + 1)][m], x2 = x * x, x3 = x2 * x;
-      l[d][0] = 1.0 - x;
-      l[d][1] = x;
-      h[d][0] = 2.0 * x3 - 3.0 * x2 + 1.0;
-      h[d][1] = 3.0 * x2 - 2.0 * x3;
-      sl[d][0] = 0.5 * (x3 - 2.0 * x2 + x);
-      sl[d][1] = 0.5 * (x3 - x2);
+      const CellBases b = cellBases(u[std::size_t(d + 1)][m]);
+      l[d][0] = b.linear0;
+      l[d][1] = b.linear1;
+      h[d][0] = b.value0;
+      h[d][1] = b.value1;
+      sl[d][0] = 0.5 * b.slope0;
+      sl[d][1] = 0.5 * b.slope1;
     }
     for (int q = 0; q < 4; ++q) {
       const int by = q & 1, bz = q >> 1;
@@ -647,11 +651,11 @@ struct TapWeights {
 };
 
 TapWeights tapWeights(double u) {
-  const double u2 = u * u, u3 = u2 * u;
-  const double hv0 = 2.0 * u3 - 3.0 * u2 + 1.0, hv1 = 3.0 * u2 - 2.0 * u3;
+  const CellBases b = cellBases(u);
+  const double hv0 = b.value0, hv1 = b.value1;
   // hermite()'s slope terms hs0·d0 + hs1·d1 with d0 = (f1 − f−1)/2, d1 = (f2 − f0)/2.
-  const double hs0 = 0.5 * (u3 - 2.0 * u2 + u), hs1 = 0.5 * (u3 - u2);
-  return {{-hs0, hv0 - hs1, hv1 + hs0, hs1}, {-hs0, -hs1, hs0, hs1}, {hv0, hv1}, {1.0 - u, u}};
+  const double hs0 = 0.5 * b.slope0, hs1 = 0.5 * b.slope1;
+  return {{-hs0, hv0 - hs1, hv1 + hs0, hs1}, {-hs0, -hs1, hs0, hs1}, {hv0, hv1}, {b.linear0, b.linear1}};
 }
 
 AxisTaps axisTaps(const std::vector<AxisCell>& cells, std::int64_t lo) {
