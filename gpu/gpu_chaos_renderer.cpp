@@ -1,5 +1,7 @@
 #include "gpu/gpu_chaos_renderer.h"
 
+#include "render/accumulation.h"
+
 #include <algorithm>
 #include <bit>
 #include <chrono>
@@ -204,6 +206,9 @@ std::uint64_t GpuChaosRenderer::restart(std::shared_ptr<const CompiledIfs> ifs, 
   if (!ifs) throw ModelError("", "there is no compiled IFS to render");
   if (ifs->functions.empty() || ifs->alias.size() != ifs->functions.size())
     throw ModelError("functions", "no unmuted function has a positive weight");
+  // The GPU's chains are not the CPU's chunks; a part is rendered where its chunks are defined.
+  if (job.part && job.part->count > 1)
+    throw GpuUnavailable("the GPU renderer does not render parts of a split render; parts render on the CPU");
   std::unique_lock lock(shared_->mutex);
   const std::uint64_t generation = ++shared_->nextGeneration;
   shared_->pendingIfs = std::move(ifs);
@@ -276,60 +281,62 @@ RenderStats GpuChaosRenderer::stats() const {
   return s;
 }
 
-void readbackToImage(const ChaosReadback& r, bool accumulateColor, RenderImage& out, const DisplaySettings& display) {
+void readbackToAccumulation(const ChaosReadback& r, bool accumulateColor, Accumulation& out) {
   const std::size_t n = std::size_t(r.width) * std::size_t(r.height);
+  out = Accumulation{};
   out.width = r.width;
   out.height = r.height;
-  out.rgba.resize(n * 4);
-  out.depth.resize(n);
   out.density = r.density;
   out.density.resize(n, 0);
-  std::uint32_t* packed = reinterpret_cast<std::uint32_t*>(out.rgba.data());
-  float minDepth = std::numeric_limits<float>::infinity(), maxDepth = -minDepth;
-  std::int64_t hits = 0;
-  const bool have = r.atomic64 ? r.keys64.size() == n : r.keys32.size() == n;
-  for (std::size_t i = 0; i < n; ++i) {
-    float depth = std::numeric_limits<float>::infinity();
-    std::uint32_t colour = 0;
-    if (have && r.atomic64 && r.keys64[i] != ~std::uint64_t(0)) {
-      depth = std::bit_cast<float>(std::uint32_t(r.keys64[i] >> 32));
-      colour = std::uint32_t(r.keys64[i]);
-    } else if (have && !r.atomic64 && r.keys32[i] != 0xFFFFFFFFu) {
-      const std::uint32_t key = r.keys32[i];
-      depth = r.depthMin + (r.depthScale > 0.0f ? float(key >> 16) / r.depthScale : 0.0f);
-      const std::uint32_t c5r = (key >> 11) & 31u, c6g = (key >> 5) & 63u, c5b = key & 31u;
-      colour = (c5r * 255u + 15u) / 31u | ((c6g * 255u + 31u) / 63u) << 8 | ((c5b * 255u + 15u) / 31u) << 16;
-    }
-    out.depth[i] = depth;
-    packed[i] = colour;
-    if (depth != std::numeric_limits<float>::infinity()) {
-      minDepth = std::min(minDepth, depth);
-      maxDepth = std::max(maxDepth, depth);
-      ++hits;
-    }
+  if (r.atomic64) {
+    out.keys = r.keys64;
+    out.keys.resize(n, ~std::uint64_t(0));
+  } else {
+    out.keys32 = r.keys32;
+    out.keys32.resize(n, 0xFFFFFFFFu);
+    out.depthMin = r.depthMin;
+    out.depthScale = r.depthScale;
   }
   if (accumulateColor) {
-    out.colorSums.assign(n * 4, 0.0f);
+    out.colorSums.assign(n * 4, 0);
     if (r.colorSums.size() == n * 8)
       for (std::size_t i = 0; i < n * 4; ++i)
-        out.colorSums[i] =
-            float((double(r.colorSums[2 * i + 1]) * 4294967296.0 + double(r.colorSums[2 * i])) * (1.0 / 65536.0));
-  } else {
-    out.colorSums.clear();
+        out.colorSums[i] = std::uint64_t(r.colorSums[2 * i + 1]) << 32 | r.colorSums[2 * i];
   }
-  out.hitPixels = hits;
-  out.minDepth = hits ? minDepth : 0.0f;
-  out.maxDepth = hits ? maxDepth : 0.0f;
-  shadeRenderImage(out, display);
+  out.samples = r.samples;
+  out.badSamples = r.bad;
+  out.plotted = r.plotted;
+}
+
+void readbackToImage(const ChaosReadback& r, bool accumulateColor, RenderImage& out, const DisplaySettings& display) {
+  Accumulation acc;
+  readbackToAccumulation(r, accumulateColor, acc);
+  toRenderImage(acc, display, out);
+}
+
+void GpuChaosRenderer::accumulation(Accumulation& out) const {
+  const RenderStats s = stats();
+  std::lock_guard lock(shared_->mutex);
+  if (!shared_->hasJob) {
+    out = Accumulation{};
+    return;
+  }
+  ChaosReadback empty;
+  const bool current = shared_->staged.generation == s.generation;
+  if (!current) {
+    empty.width = shared_->job.width;
+    empty.height = shared_->job.height;
+  }
+  readbackToAccumulation(current ? shared_->staged : empty, shared_->job.accumulateColor, out);
 }
 
 void GpuChaosRenderer::snapshot(RenderImage& out, const DisplaySettings& display) const {
   const RenderStats s = stats();
   std::lock_guard lock(shared_->mutex);
-  out.generation = s.generation;
-  out.stats = s;
   if (!shared_->hasJob) {
     out.clear();
+    out.generation = s.generation;
+    out.stats = s;
     return;
   }
   if (!shared_->done) {
@@ -343,6 +350,8 @@ void GpuChaosRenderer::snapshot(RenderImage& out, const DisplaySettings& display
     empty.height = shared_->job.height;
   }
   readbackToImage(current ? shared_->staged : empty, shared_->job.accumulateColor, out, display);
+  out.generation = s.generation;
+  out.stats = s;
 }
 
 bool GpuChaosRenderer::waitUntilDone(const std::function<bool(const RenderStats&)>& progress, double intervalSeconds) {

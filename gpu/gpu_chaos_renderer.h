@@ -56,6 +56,8 @@ class GpuChaosRenderer final : public Renderer {
   std::uint64_t generation() const override;
   RenderStats stats() const override;
   void snapshot(RenderImage& out, const DisplaySettings& display) const override;
+  /// The staged read-back, undeveloped (render/accumulation.h); 32-bit keys without 64-bit atomics.
+  void accumulation(Accumulation& out) const override;
   bool waitUntilDone(const std::function<bool(const RenderStats&)>& progress = {},
                      double intervalSeconds = 0.1) override;
   const char* deviceName() const override;

@@ -432,7 +432,7 @@ template <bool kAccumulateColor>
 struct ZBufferPlot {
   HotCamera cam;
   PixelCell* cells;
-  float* colorSums;  // 4 per pixel, only with kAccumulateColor
+  std::uint64_t* colorSums;  // 4 per pixel, fixed point (render/accumulation.h), only with kAccumulateColor
   /// Optional: 257 entries r g b 0 (the last repeats entry 255). When set, colorSums
   /// receive the palette color at c for every sample, as flam3 does (Draves & Reckase 2003, §5), instead of
   /// the blended RGB; lane 3 still sums c.
@@ -541,7 +541,10 @@ struct ZBufferPlot {
     d.store(n + (n != 0xFFFFFFFFu), std::memory_order_relaxed);  // saturating
   }
 
-  [[gnu::always_inline]] void addColor(float* sums, v4f col) const {
+  /// Adds the sample's colour in fixed point, round(v · 2^16) per channel with v clamped to
+  /// [0, 1] (as the GPU does): integer sums do not depend on the order of the samples, so the
+  /// sums are the same for any thread count and any split of the render into parts.
+  [[gnu::always_inline]] void addColor(std::uint64_t* sums, v4f col) const {
     v4f add = col;
     if (palette) {  // flam3's linear palette mode: index c·256, blend entries i and i+1
       float x = col[3] * 256.0f;
@@ -551,9 +554,12 @@ struct ZBufferPlot {
       add = palette[i] + (palette[i + 1] - palette[i]) * frac;
       add[3] = col[3];
     }
+    add = add > 0.0f ? add : v4f{};  // NaN → 0
+    add = add < 1.0f ? add : v4f{} + 1.0f;
+    const v4i fixed = __builtin_convertvector(add * 65536.0f + 0.5f, v4i);
     for (int k = 0; k < 4; ++k) {
-      std::atomic_ref<float> s(sums[k]);
-      s.store(s.load(std::memory_order_relaxed) + add[k], std::memory_order_relaxed);
+      std::atomic_ref<std::uint64_t> s(sums[k]);
+      s.store(s.load(std::memory_order_relaxed) + std::uint32_t(fixed[k]), std::memory_order_relaxed);
     }
   }
 

@@ -14,6 +14,7 @@
 #include <limits>
 
 #include "base/system_memory.h"
+#include "render/accumulation.h"
 #include "render/barycentric_kernel.h"
 #include "render/chaos_kernel.h"
 #include "render/shaded_plot.h"
@@ -36,11 +37,22 @@ std::int64_t nowNs() {
 constexpr std::int64_t kBatch = 8192;
 static_assert(kBatch % kernel::kLanes == 0);
 
-/// Worker w's share of the budget: samples/T, plus one for the first samples%T workers.
-std::int64_t workerBudget(const RenderJob& job, int worker) {
-  if (job.samples <= 0) return std::numeric_limits<std::int64_t>::max();
-  const std::int64_t t = job.threads;
-  return job.samples / t + (worker < job.samples % t ? 1 : 0);
+/// The chunks a job plays: its part's range, or every chunk of the budget (an unlimited job's
+/// chunks never end).
+ChunkRange jobChunks(const RenderJob& job) {
+  if (job.samples <= 0) return ChunkRange{0, std::numeric_limits<std::int64_t>::max()};
+  return chunksOf(job.samples, job.part ? &*job.part : nullptr);
+}
+
+/// The samples of chunk `c` of `job` (every chunk is full in an unlimited job).
+std::int64_t jobChunkSize(const RenderJob& job, std::int64_t c) {
+  return job.samples <= 0 ? kChunkSamples : chunkSize(job.samples, c);
+}
+
+/// The lens samples of depth of field: a stream of their own per chunk, so the chaos game's
+/// sequence is the one without depth of field.
+kernel::Rng lensStream(const RenderJob& job, std::int64_t chunk) {
+  return kernel::Rng::forStream(job.seed ^ 0x1E45D0F5A1E7ull, std::uint64_t(chunk));
 }
 
 /// Everything the workers need for one generation; immutable once published.
@@ -56,11 +68,16 @@ struct PreparedJob {
   /// shadowed lights keeps the epoch (ChaosRenderer::restart), and a worker that holds that epoch's
   /// buffers keeps them and re-fills only the light buffers that changed.
   std::uint64_t cameraEpoch = 0;
+  /// The chunks to play and the next one to hand out; the workers take them in turn. Generations
+  /// that keep the camera's buffers share the counter, so no chunk is played twice.
+  ChunkRange chunks;
+  std::shared_ptr<std::atomic<std::int64_t>> nextChunk;
 
   bool shaded() const { return !job.shadowLights.empty() || job.dofAperture > 0.0; }
 
   PreparedJob(std::shared_ptr<const CompiledIfs> compiled, const RenderJob& renderJob)
-      : ifs(std::move(compiled)), job(renderJob) {
+      : ifs(std::move(compiled)), job(renderJob), chunks(jobChunks(renderJob)) {
+    nextChunk = std::make_shared<std::atomic<std::int64_t>>(chunks.begin);
     if (ifs->functions.empty() || ifs->alias.size() != ifs->functions.size())
       throw ModelError("functions", "no unmuted function has a positive weight");
     for (const CompiledFunction& f : ifs->functions) hot.push_back(kernel::makeHot(f));
@@ -111,7 +128,7 @@ bool sameCameraPass(const PreparedJob& previous, const PreparedJob& next) {
   const bool samePalette = a.palette == b.palette || (a.palette && b.palette && *a.palette == *b.palette);
   return previous.ifs == next.ifs && !next.hotIfs.barycentricBlocks && a.camera == b.camera && a.width == b.width &&
          a.height == b.height && a.samples == b.samples && a.seed == b.seed && a.skip == b.skip &&
-         a.threads == b.threads && a.accumulateColor == b.accumulateColor && samePalette &&
+         a.threads == b.threads && a.part == b.part && a.accumulateColor == b.accumulateColor && samePalette &&
          a.dofAperture == b.dofAperture && a.dofFocus == b.dofFocus;
 }
 
@@ -132,14 +149,20 @@ struct ChaosRenderer::Shared {
 struct ChaosRenderer::Worker {
   int index = 0;
   std::vector<kernel::PixelCell> cells;
-  std::vector<float> colorSums;
+  std::vector<std::uint64_t> colorSums;  // fixed point (render/accumulation.h)
   /// One depth buffer per shadowed light (kernel::kLightEmpty where empty), the light view each was
   /// filled for, and whether it holds every sample the camera's buffers hold; the lens samples.
   std::vector<std::uint16_t> lightDepth[kernel::kMaxShadowLights];
   LightView lightViews[kernel::kMaxShadowLights];
   bool lightComplete[kernel::kMaxShadowLights] = {};
   int lightCount = 0;
-  kernel::Rng lensRng;
+  kernel::Rng lensRng;  // the current chunk's lens stream
+  /// The chunks whose samples are in the buffers (with how many of each, the current one last
+  /// and possibly unfinished): the light-only pass replays exactly these.
+  struct PlayedChunk {
+    std::int64_t chunk, samples;
+  };
+  std::vector<PlayedChunk> played;
   /// The camera epoch (PreparedJob::cameraEpoch) of `cells` and `colorSums`; 0: none yet.
   std::uint64_t cameraEpoch = 0;
   /// The generation the buffers and counters belong to; 0 while they are being reset.
@@ -152,9 +175,9 @@ struct ChaosRenderer::Worker {
     const std::size_t n = std::size_t(job.width) * std::size_t(job.height);
     cells.assign(n, kernel::PixelCell{});
     if (job.accumulateColor)
-      colorSums.assign(n * 4, 0.0f);
+      colorSums.assign(n * 4, 0);
     else
-      std::vector<float>().swap(colorSums);
+      std::vector<std::uint64_t>().swap(colorSums);
     for (int l = 0; l < kernel::kMaxShadowLights; ++l) {
       if (l < int(job.shadowLights.size())) {
         const std::size_t size = std::size_t(job.shadowLights[std::size_t(l)].size());
@@ -166,7 +189,7 @@ struct ChaosRenderer::Worker {
       }
     }
     lightCount = int(job.shadowLights.size());
-    lensRng = kernel::Rng::forStream(job.seed ^ 0x1E45D0F5A1E7ull, std::uint64_t(index));
+    played.clear();
   }
 
   /// Keeps the camera's buffers for `views`: a buffer whose light view is unchanged moves to its
@@ -300,24 +323,28 @@ void workerMain(std::shared_ptr<ChaosRenderer::Shared> shared, ChaosRenderer::Wo
   bool lowered = false;
   std::shared_ptr<const PreparedJob> job;
   std::uint64_t myGeneration = 0;
-  std::int64_t remaining = 0;
   kernel::ChainState chain;
   auto bary = std::make_unique<kernel::BarycentricState>();  // used by free-form IFSs only
   kernel::ChainCounters counters;
-  // The light-only pass: the chain replayed from its start up to `replayTarget` (the samples in
-  // the camera's buffers), plotting only into the lights being re-filled; the chain is then where
-  // it was, and the render goes on plotting everywhere. A chain's samples depend only on (seed,
-  // worker, skip) and its batch boundaries, which the replay repeats, so the re-filled buffers are
-  // those of a render from scratch.
+  // The chunk being played (-1: none yet) and its samples still to play; `exhausted` once the
+  // job has no chunk left for this worker.
+  std::int64_t left = 0;
+  bool exhausted = true;
+  // The light-only pass: the chunks in the camera's buffers (Worker::played) replayed, plotting
+  // only into the lights being re-filled. A chunk's samples depend only on (seed, chunk, skip),
+  // so the re-filled buffers are those of a render from scratch; the chain being played is kept.
   bool replaying = false;
-  std::int64_t replayed = 0, replayTarget = 0;
+  std::vector<ChaosRenderer::Worker::PlayedChunk> replay;
+  std::size_t replayNext = 0;
+  std::int64_t replayLeft = 0;
+  kernel::ChainState replayChain;
   for (;;) {
     bool fresh = false;
     {
       std::unique_lock lock(shared->mutex);
       shared->wake.wait(lock, [&] {
         return shared->quit.load() || shared->generation.load() != myGeneration ||
-               ((remaining > 0 || replaying) && !shared->paused.load());
+               ((!exhausted || replaying) && !shared->paused.load());
       });
       if (shared->quit.load()) return;
       if (shared->generation.load() != myGeneration) {
@@ -334,45 +361,62 @@ void workerMain(std::shared_ptr<ChaosRenderer::Shared> shared, ChaosRenderer::Wo
       // Old-generation points stay in buffers that snapshot() ignores from here on.
       w->bufferGeneration.store(0, std::memory_order_release);
       if (job->cameraEpoch == w->cameraEpoch) {
-        // Only shadowed lights changed: keep the camera's buffers, counters and chain.
+        // Only shadowed lights changed: keep the camera's buffers, counters and chunk.
         if (w->adoptLights(job->job.shadowLights)) {
-          chain = kernel::ChainState::start(job->job.seed, std::uint64_t(w->index), job->job.skip);
           replaying = true;
-          replayed = 0;
-          replayTarget = counters.samples;
+          replay = w->played;
+          replayNext = 0;
+          replayLeft = 0;
         }
       } else {
         w->resetBuffers(job->job);
         w->cameraEpoch = job->cameraEpoch;
         counters = {};
         replaying = false;
-        chain = kernel::ChainState::start(job->job.seed, std::uint64_t(w->index), job->job.skip);
-        if (job->hotIfs.barycentricBlocks) bary->start(chain, job->hotIfs);
+        left = 0;
+        exhausted = false;
       }
       w->samples.store(counters.samples, std::memory_order_relaxed);
       w->bad.store(counters.bad, std::memory_order_relaxed);
       w->plotted.store(counters.plotted, std::memory_order_relaxed);
       w->finishedNs.store(0, std::memory_order_relaxed);
-      remaining = workerBudget(job->job, w->index) - counters.samples;
       w->bufferGeneration.store(myGeneration, std::memory_order_release);
     }
-    while (remaining > 0 || replaying) {
+    while (!exhausted || replaying) {
       if (shared->generation.load(std::memory_order_relaxed) != myGeneration ||
           shared->paused.load(std::memory_order_relaxed) || shared->quit.load(std::memory_order_relaxed))
         break;
       if (replaying) {
-        // The same batch boundaries as the pass that filled the camera's buffers.
-        const std::int64_t n = std::min(replayTarget - replayed, kBatch);
-        kernel::ChainCounters scratch;
-        if (n > 0) runLightBatch(chain, *job, *w, n, scratch);
-        replayed += n;
-        if (replayed >= replayTarget) {
-          replaying = false;
-          for (bool& complete : w->lightComplete) complete = true;
+        if (replayLeft == 0) {
+          if (replayNext == replay.size()) {
+            replaying = false;
+            for (bool& complete : w->lightComplete) complete = true;
+            continue;
+          }
+          const auto& next = replay[replayNext++];
+          replayChain = kernel::ChainState::start(job->job.seed, std::uint64_t(next.chunk), job->job.skip);
+          replayLeft = next.samples;
         }
+        // The same batch boundaries as the pass that filled the camera's buffers.
+        const std::int64_t n = std::min(replayLeft, kBatch);
+        kernel::ChainCounters scratch;
+        runLightBatch(replayChain, *job, *w, n, scratch);
+        replayLeft -= n;
         continue;
       }
-      const std::int64_t n = std::min(remaining, kBatch);
+      if (left == 0) {
+        const std::int64_t chunk = job->nextChunk->fetch_add(1, std::memory_order_relaxed);
+        if (chunk >= job->chunks.end) {
+          exhausted = true;
+          break;
+        }
+        left = jobChunkSize(job->job, chunk);
+        w->played.push_back({chunk, 0});
+        chain = kernel::ChainState::start(job->job.seed, std::uint64_t(chunk), job->job.skip);
+        if (job->hotIfs.barycentricBlocks) bary->start(chain, job->hotIfs);
+        w->lensRng = lensStream(job->job, chunk);
+      }
+      const std::int64_t n = std::min(left, kBatch);
       if (job->hotIfs.barycentricBlocks)
         runBarycentricBatch(chain, *bary, *job, *w, n, counters);
       else if (job->shaded())
@@ -381,13 +425,14 @@ void workerMain(std::shared_ptr<ChaosRenderer::Shared> shared, ChaosRenderer::Wo
         runBatchColor(chain, *job, *w, n, counters);
       else
         runBatchPlain(chain, *job, *w, n, counters);
-      remaining -= n;
+      left -= n;
+      w->played.back().samples += n;
       // Release: a reader that sees this count (stats(), then snapshot()) also sees the batch's points.
       w->samples.store(counters.samples, std::memory_order_release);
       w->bad.store(counters.bad, std::memory_order_relaxed);
       w->plotted.store(counters.plotted, std::memory_order_relaxed);
     }
-    if (remaining == 0 && !replaying && w->finishedNs.load(std::memory_order_relaxed) == 0) {
+    if (exhausted && !replaying && w->finishedNs.load(std::memory_order_relaxed) == 0) {
       w->finishedNs.store(nowNs(), std::memory_order_release);
       { std::lock_guard lock(shared->mutex); }
       shared->finished.notify_all();
@@ -498,7 +543,9 @@ std::uint64_t ChaosRenderer::restart(std::shared_ptr<const CompiledIfs> ifs, con
     std::lock_guard lock(shared_->mutex);
     generation = ++shared_->nextGeneration;
     const PreparedJob* previous = shared_->job.get();
-    prepared->cameraEpoch = previous && sameCameraPass(*previous, *prepared) ? previous->cameraEpoch : generation;
+    const bool keepCamera = previous && sameCameraPass(*previous, *prepared);
+    prepared->cameraEpoch = keepCamera ? previous->cameraEpoch : generation;
+    if (keepCamera) prepared->nextChunk = previous->nextChunk;  // the same chunks, none played twice
     shared_->job = prepared;
     shared_->generation.store(generation);
   }
@@ -549,7 +596,7 @@ RenderStats ChaosRenderer::stats() const {
   s.paused = shared_->paused.load();
   const PreparedJob* job = shared_->job.get();
   if (!job) return s;
-  s.budget = job->job.samples > 0 ? job->job.samples : 0;
+  s.budget = job->job.samples > 0 ? rangeSamples(job->job.samples, job->chunks) : 0;
   s.keptCamera = job->cameraEpoch != s.generation;
   bool allFinished = s.budget > 0;
   std::int64_t lastFinish = 0;
@@ -573,97 +620,72 @@ RenderStats ChaosRenderer::stats() const {
   return s;
 }
 
-void ChaosRenderer::snapshot(RenderImage& out, const DisplaySettings& display) const {
+void ChaosRenderer::accumulation(Accumulation& out) const {
   const std::uint64_t generation = shared_->generation.load();
   const PreparedJob* job = shared_->job.get();
-  out.generation = generation;
-  out.stats = stats();
-  if (!job) {
-    out.clear();
-    return;
-  }
+  const RenderStats s = stats();
+  out = Accumulation{};
+  if (!job) return;
   const int width = job->job.width, height = job->job.height;
   const std::size_t n = std::size_t(width) * std::size_t(height);
   out.width = width;
   out.height = height;
-  out.rgba.resize(n * 4);
-  out.depth.resize(n);
-  out.density.resize(n);
-  if (job->job.accumulateColor)
-    out.colorSums.assign(n * 4, 0.0f);
-  else
-    out.colorSums.clear();
-
   std::vector<const Worker*> ready;
   for (const auto& w : workers_)
     if (w->bufferGeneration.load(std::memory_order_acquire) == generation) ready.push_back(w.get());
 
-  // Pass 1: per pixel, the smallest key (nearest depth, then smaller colour) and the summed
-  // density; neither depends on the order of workers, so the merge is deterministic. The packed
-  // colour waits in `rgba` (4 bytes per pixel) for pass 2.
-  std::uint32_t* packed = reinterpret_cast<std::uint32_t*>(out.rgba.data());
-  float minDepth = std::numeric_limits<float>::infinity(), maxDepth = -minDepth;
-  std::int64_t hits = 0;
-  auto keep = [&](std::size_t i, std::uint64_t key, std::uint64_t count) {
-    out.density[i] = std::uint32_t(std::min<std::uint64_t>(count, 0xFFFFFFFFu));
-    if (key == kEmptyKey) {
-      out.depth[i] = std::numeric_limits<float>::infinity();
-      return;
-    }
-    const float depth = std::bit_cast<float>(std::uint32_t(key >> 32));
-    out.depth[i] = depth;
-    std::memcpy(packed + i, &key, 4);  // the low 32 bits (little-endian)
-    minDepth = std::min(minDepth, depth);
-    maxDepth = std::max(maxDepth, depth);
-    ++hits;
-  };
+  // The workers' buffers combine by minimum (keys) and integer sums (counts, colour sums), which
+  // do not depend on the order of the workers or on which chunks each one played.
+  out.keys.assign(n, kEmptyKey);
+  out.density.assign(n, 0);
   auto keyOf = [](const kernel::PixelCell& c) {
     return std::atomic_ref<const std::uint64_t>(c.key).load(std::memory_order_relaxed);
   };
   auto countOf = [](const kernel::PixelCell& c) {
     return std::uint64_t(std::atomic_ref<const std::uint32_t>(c.density).load(std::memory_order_relaxed));
   };
-  if (ready.size() == 1) {
-    const kernel::PixelCell* a = ready[0]->cells.data();
-    for (std::size_t i = 0; i < n; ++i) keep(i, keyOf(a[i]), countOf(a[i]));
-  } else if (ready.size() == 2) {
-    const kernel::PixelCell *a = ready[0]->cells.data(), *b = ready[1]->cells.data();
-    for (std::size_t i = 0; i < n; ++i) keep(i, std::min(keyOf(a[i]), keyOf(b[i])), countOf(a[i]) + countOf(b[i]));
-  } else {
+  for (const Worker* w : ready) {
+    const kernel::PixelCell* cells = w->cells.data();
     for (std::size_t i = 0; i < n; ++i) {
-      std::uint64_t key = kEmptyKey, count = 0;
-      for (const Worker* w : ready) {
-        key = std::min(key, keyOf(w->cells[i]));
-        count += countOf(w->cells[i]);
-      }
-      keep(i, key, count);
+      out.keys[i] = std::min(out.keys[i], keyOf(cells[i]));
+      out.density[i] = std::uint32_t(std::min<std::uint64_t>(out.density[i] + countOf(cells[i]), 0xFFFFFFFFu));
     }
   }
-  if (job->job.accumulateColor)
+  if (job->job.accumulateColor) {
+    out.colorSums.assign(n * 4, 0);
     for (const Worker* w : ready)
       for (std::size_t i = 0; i < n * 4; ++i)
-        out.colorSums[i] += std::atomic_ref<const float>(w->colorSums[i]).load(std::memory_order_relaxed);
+        out.colorSums[i] += std::atomic_ref<const std::uint64_t>(w->colorSums[i]).load(std::memory_order_relaxed);
+  }
   // The light depth buffers: the nearest sample per texel over all workers.
   out.lightViews = job->job.shadowLights;
   out.lightDepth.resize(out.lightViews.size());
   for (std::size_t l = 0; l < out.lightViews.size(); ++l) {
     const std::size_t texels = std::size_t(out.lightViews[l].size()) * std::size_t(out.lightViews[l].size());
-    std::vector<float>& merged = out.lightDepth[l];
-    merged.assign(texels, std::numeric_limits<float>::infinity());
-    const float step = float(kernel::lightDepthStep(out.lightViews[l]));
+    std::vector<std::uint16_t>& merged = out.lightDepth[l];
+    merged.assign(texels, kernel::kLightEmpty);
     for (const Worker* w : ready) {
       const std::uint16_t* src = w->lightDepth[l].data();
-      for (std::size_t i = 0; i < texels; ++i) {
-        const std::uint16_t key = std::atomic_ref<const std::uint16_t>(src[i]).load(std::memory_order_relaxed);
-        if (key != kernel::kLightEmpty) merged[i] = std::min(merged[i], float(key) * step);
-      }
+      for (std::size_t i = 0; i < texels; ++i)
+        merged[i] = std::min(merged[i], std::atomic_ref<const std::uint16_t>(src[i]).load(std::memory_order_relaxed));
     }
   }
-  out.hitPixels = hits;
-  out.minDepth = hits ? minDepth : 0.0f;
-  out.maxDepth = hits ? maxDepth : 0.0f;
+  out.samples = s.samples;
+  out.badSamples = s.badSamples;
+  out.plotted = s.plotted;
+}
 
-  shadeRenderImage(out, display);
+void ChaosRenderer::snapshot(RenderImage& out, const DisplaySettings& display) const {
+  Accumulation merged;
+  accumulation(merged);
+  const RenderStats s = stats();
+  if (!shared_->job) {
+    out.clear();
+  } else {
+    toRenderImage(merged, display, out);
+  }
+  out.generation = s.generation;
+  out.stats = s;
 }
 
 void shadeRenderImage(RenderImage& out, const DisplaySettings& display) {
@@ -721,6 +743,17 @@ RenderImage renderToCompletion(std::shared_ptr<const CompiledIfs> ifs, const Ren
   return renderer.snapshot(display);
 }
 
+Accumulation accumulateToCompletion(std::shared_ptr<const CompiledIfs> ifs, const RenderJob& job,
+                                    const std::function<bool(const RenderStats&)>& progress) {
+  if (job.samples <= 0) throw ModelError("render.samples", "must be at least 1");
+  ChaosRenderer renderer;
+  renderer.restart(std::move(ifs), job);
+  if (!renderer.waitUntilDone(progress)) throw RenderCancelled();
+  Accumulation acc;
+  renderer.accumulation(acc);
+  return acc;
+}
+
 namespace {
 
 /// Collects points instead of plotting them (export-points).
@@ -756,13 +789,15 @@ RenderStats generatePoints(const CompiledIfs& ifs, const RenderJob& job,
   static_assert(kPointBatch % kernel::kLanes == 0);
   xyz.reserve(kPointBatch * 3);
   rgb.reserve(kPointBatch * 3);
-  for (int w = 0; w < job.threads; ++w) {
-    kernel::ChainState chain = kernel::ChainState::start(job.seed, std::uint64_t(w), job.skip);
-    auto bary = std::make_unique<kernel::BarycentricState>();
+  // The chunks in order: the same samples as the renderer plots, whatever the thread count.
+  const ChunkRange chunks = jobChunks(job);
+  auto bary = std::make_unique<kernel::BarycentricState>();
+  for (std::int64_t c = chunks.begin; c < chunks.end; ++c) {
+    kernel::ChainState chain = kernel::ChainState::start(job.seed, std::uint64_t(c), job.skip);
     if (prepared.hotIfs.barycentricBlocks) bary->start(chain, prepared.hotIfs);
     kernel::ChainCounters counters;
     PointPlot plot{&xyz, &rgb};
-    for (std::int64_t remaining = workerBudget(job, w); remaining > 0;) {
+    for (std::int64_t remaining = jobChunkSize(job, c); remaining > 0;) {
       const std::int64_t n = std::min(remaining, kPointBatch);
       xyz.clear();
       rgb.clear();
@@ -777,7 +812,7 @@ RenderStats generatePoints(const CompiledIfs& ifs, const RenderJob& job,
       stats.plotted += counters.plotted - before.plotted;
       stats.seconds = double(nowNs() - start) * 1e-9;
       stats.pointsPerSecond = stats.seconds > 0 ? double(stats.samples) / stats.seconds : 0.0;
-      stats.done = w + 1 == job.threads && remaining == 0;
+      stats.done = c + 1 == chunks.end && remaining == 0;
       if (!sink(PointBatch{xyz.data(), rgb.data(), xyz.size() / 3}, stats)) return stats;
     }
   }

@@ -15,6 +15,7 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <thread>
 #include <vector>
 
@@ -23,8 +24,11 @@
 #include "render/light_view.h"
 #include "flame/palette.h"
 #include "render/renderer.h"
+#include "render/sample_chunks.h"
 
 namespace gridifs {
+
+struct Accumulation;
 
 namespace limits {
 /// Images larger than this are refused: every render thread keeps a z-buffer and a density
@@ -39,10 +43,10 @@ inline constexpr int kMaxRenderThreads = 64;
 inline constexpr float kEscapeBound = 1e5f;
 }  // namespace limits
 
-/// What to render. `samples` is the total number of chaos-game iterations over all workers
-/// (split evenly, worker w gets samples/T plus one if w < samples%T); ≤ 0 means "until stopped"
-/// (the GUI's progressive preview). The image depends on (snapshot, camera, size, samples, seed,
-/// skip, threads) only, bit for bit.
+/// What to render. `samples` is the total number of chaos-game iterations, cut into chunks of
+/// kChunkSamples (render/sample_chunks.h) that the workers take in turn; ≤ 0 means "until
+/// stopped" (the GUI's progressive preview). The image depends on (snapshot, camera, size,
+/// samples, seed, skip, chunks) only, bit for bit — not on the thread count.
 struct RenderJob {
   Camera camera;
   int width = 1024, height = 768;
@@ -50,6 +54,9 @@ struct RenderJob {
   std::uint64_t seed = 1;
   int skip = 20;
   int threads = 1;
+  /// Only this part's share of the budget (gridifs render --part K/N; on the CPU a contiguous
+  /// range of chunks, partChunks); absent: all of it.
+  std::optional<RenderPart> part;
   /// Also accumulate per-pixel colour sums for the flame display. Costs a 16-byte
   /// read-modify-write per plotted sample, so it is off for the z-buffer preview.
   bool accumulateColor = false;
@@ -169,6 +176,9 @@ class ChaosRenderer : public Renderer {
   /// over every worker's buffers (a few ms at 1024² with two workers).
   void snapshot(RenderImage& out, const DisplaySettings& display) const override;
   RenderImage snapshot(const DisplaySettings& display) const;
+  /// The current generation's buffers, undeveloped (render/accumulation.h): what snapshot()
+  /// develops, and what a render part stores. Same rules as snapshot().
+  void accumulation(Accumulation& out) const override;
 
   /// Blocks until the current generation's budget is done (returns at once for unlimited jobs).
   /// `progress` is called about every `intervalSeconds` on this thread; returning false stops the
@@ -206,9 +216,13 @@ RenderImage renderToCompletion(std::shared_ptr<const CompiledIfs> ifs, const Ren
                                const DisplaySettings& display,
                                const std::function<bool(const RenderStats&)>& progress = {});
 
-/// The samples the renderer would plot, without projecting them (export-points): the same worker
-/// streams (seed, worker) for job.threads workers, the same skip and restart rule, the final
-/// function applied. Emits worker 0's samples first, then worker 1's, ... in batches; `sink`
+/// renderToCompletion's buffers undeveloped (render/accumulation.h): what a render part stores.
+Accumulation accumulateToCompletion(std::shared_ptr<const CompiledIfs> ifs, const RenderJob& job,
+                                    const std::function<bool(const RenderStats&)>& progress = {});
+
+/// The samples the renderer would plot, without projecting them (export-points): the same chunks
+/// with their streams (seed, chunk), the same skip and restart rule, the final function applied.
+/// Emits the chunks in order, in batches; `sink`
 /// receives xyz (3 floats per point) and rgb (3 floats in [0, 1] per point) and returns false to
 /// cancel. Runs on the calling thread. Returns the RenderStats of the walk (plotted = points emitted).
 struct PointBatch {

@@ -58,6 +58,18 @@ class LightView {
 
   bool operator==(const LightView&) const = default;
 
+  /// A view as stored (a render part): the axes exactly as another LightView had them.
+  static LightView restore(const glm::dvec3& direction, const glm::dvec3& right, const glm::dvec3& up,
+                           const BoundingSphere& bounds, int size) {
+    LightView v;
+    v.direction_ = direction;
+    v.right_ = right;
+    v.up_ = up;
+    v.bounds_ = bounds;
+    v.size_ = size;
+    return v;
+  }
+
  private:
   glm::dvec3 direction_{0.0, 0.0, 1.0}, right_{1.0, 0.0, 0.0}, up_{0.0, 1.0, 0.0};
   BoundingSphere bounds_;

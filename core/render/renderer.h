@@ -18,6 +18,7 @@ struct RenderJob;
 struct RenderStats;
 struct RenderImage;
 struct DisplaySettings;
+struct Accumulation;
 
 class Renderer {
  public:
@@ -34,6 +35,9 @@ class Renderer {
   virtual RenderStats stats() const = 0;
   /// The buffers of the current generation as an image (see ChaosRenderer::snapshot).
   virtual void snapshot(RenderImage& out, const DisplaySettings& display) const = 0;
+  /// The same buffers undeveloped (render/accumulation.h): what snapshot() develops, and what a
+  /// render part stores.
+  virtual void accumulation(Accumulation& out) const = 0;
   /// Blocks until the budget is done; `progress` as in ChaosRenderer::waitUntilDone.
   virtual bool waitUntilDone(const std::function<bool(const RenderStats&)>& progress = {},
                              double intervalSeconds = 0.1) = 0;

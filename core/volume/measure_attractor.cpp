@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <memory>
+#include <stdexcept>
 #include <thread>
 
 #include "base/hash.h"
@@ -10,7 +11,9 @@
 #include "model/stack_evaluator.h"
 #include "render/barycentric_kernel.h"
 #include "render/chaos_kernel.h"
+#include "render/accumulation.h"
 #include "render/chaos_renderer.h"
+#include "render/sample_chunks.h"
 #include "volume/condensation_sampler.h"
 #include "volume/density_field.h"
 #include "volume/set_function.h"
@@ -136,7 +139,7 @@ DensityVolume iterateSets(const Project& project, const VolumeJob& job) {
 /// caches, so the miss overlaps the next samples' arithmetic instead of stalling the chain.
 struct VoxelBins {
   std::uint32_t* counts;
-  float* colors;  // 3 per voxel, or null
+  std::uint64_t* colors;  // 3 per voxel, fixed point (render/accumulation.h), or null
   float half;     // N / 2
   float n;
   std::size_t stride;
@@ -152,12 +155,14 @@ struct VoxelBins {
   void commit(const Pending& p) {
     std::atomic_ref<std::uint32_t>(counts[p.voxel]).fetch_add(1, std::memory_order_relaxed);
     if (colors) {
-      // Relaxed read-modify-write: concurrent plots of one voxel may drop a colour sample, which
-      // changes a mean by a negligible amount (the counts themselves are exact).
-      for (int d = 0; d < 3; ++d) {
-        std::atomic_ref<float> sum(colors[3 * p.voxel + std::size_t(d)]);
-        sum.store(sum.load(std::memory_order_relaxed) + p.color[d], std::memory_order_relaxed);
-      }
+      // Integer sums, as the renderer's colour sums: exact in any order, so the volume is the same
+      // for any thread count and any split into parts.
+      kernel::v4f c = p.color > 0.0f ? p.color : kernel::v4f{};  // NaN → 0
+      c = c < 1.0f ? c : kernel::v4f{} + 1.0f;
+      const kernel::v4i fixed = __builtin_convertvector(c * 65536.0f + 0.5f, kernel::v4i);
+      for (int d = 0; d < 3; ++d)
+        std::atomic_ref<std::uint64_t>(colors[3 * p.voxel + std::size_t(d)])
+            .fetch_add(std::uint32_t(fixed[d]), std::memory_order_relaxed);
     }
   }
 
@@ -203,7 +208,18 @@ DensityVolume finishBinning(const VoxelLattice& lattice, const std::vector<std::
   return volume;
 }
 
-DensityVolume binPoints(const Project& project, const VolumeJob& job) {
+}  // namespace
+
+void VoxelAccumulation::add(const VoxelAccumulation& other) {
+  if (other.resolution != resolution || other.counts.size() != counts.size() ||
+      other.colorSums.size() != colorSums.size())
+    throw std::invalid_argument("the voxel accumulations have different resolutions or colours");
+  for (std::size_t i = 0; i < counts.size(); ++i) counts[i] += other.counts[i];
+  for (std::size_t i = 0; i < colorSums.size(); ++i) colorSums[i] += other.colorSums[i];
+  samples += other.samples;
+}
+
+VoxelAccumulation accumulateVoxels(const Project& project, const VolumeJob& job) {
   const VolumeSettings& settings = job.settings;
   const VoxelLattice lattice{settings.resolution};
   const auto compiled = compileIfs(project, makeCondensationSampler(project, job.projectFolder));
@@ -222,47 +238,73 @@ DensityVolume binPoints(const Project& project, const VolumeJob& job) {
   for (const CompiledFunction& f : compiled->functions) ifs.condensation |= !f.points.empty();
   kernel::attachBarycentric(ifs, *compiled);
 
-  std::vector<std::uint32_t> counts(lattice.voxelCount(), 0);
-  std::vector<float> colors;
-  if (hasColorVolume(project)) colors.assign(lattice.voxelCount() * 3, 0.0f);
-  if (job.binner && job.binner(*compiled, job, counts, colors)) return finishBinning(lattice, counts, std::move(colors));
+  VoxelAccumulation acc;
+  acc.resolution = settings.resolution;
+  acc.counts.assign(lattice.voxelCount(), 0);
+  if (hasColorVolume(project)) acc.colorSums.assign(lattice.voxelCount() * 3, 0);
+  // The budget in chunks with their own streams (render/sample_chunks.h), taken by the workers in
+  // turn: the counts and the fixed-point colour sums do not depend on who played which chunk.
+  const ChunkRange chunks = chunksOf(settings.samples, job.part ? &*job.part : nullptr);
+  const std::int64_t budget = rangeSamples(settings.samples, chunks);
   const int threads = resolveThreadCount(job.threads);
-  std::atomic<std::int64_t> done{0};
-  constexpr std::int64_t kBatch = 1 << 18;
+  std::atomic<std::int64_t> done{0}, nextChunk{chunks.begin};
   std::vector<std::thread> workers;
   for (int w = 0; w < threads; ++w) {
-    workers.emplace_back([&, w] {
+    workers.emplace_back([&] {
       kernel::DenormalsAreZero daz;
-      kernel::ChainState chain = kernel::ChainState::start(settings.seed, std::uint64_t(w), ifs.skip);
       kernel::ChainCounters counters;
       std::unique_ptr<kernel::BarycentricState> bary;  // free-form IFSs only
-      if (ifs.barycentricBlocks) {
-        bary = std::make_unique<kernel::BarycentricState>();
-        bary->start(chain, ifs);
-      }
-      VoxelBins bins{counts.data(), colors.empty() ? nullptr : colors.data(), 0.5f * float(lattice.n), float(lattice.n),
-                     std::size_t(lattice.n)};
-      std::int64_t left = settings.samples / threads + (w < settings.samples % threads ? 1 : 0);
-      while (left > 0 && !cancelled(job)) {
-        const std::int64_t batch = std::min(left, kBatch);
-        if (bary)
-          runBarycentricBins(chain, *bary, ifs, batch, bins, counters);
-        else
-          runBins(chain, ifs, batch, bins, counters);
-        left -= batch;
-        done.fetch_add(batch, std::memory_order_relaxed);
+      if (ifs.barycentricBlocks) bary = std::make_unique<kernel::BarycentricState>();
+      VoxelBins bins{acc.counts.data(), acc.colorSums.empty() ? nullptr : acc.colorSums.data(),
+                     0.5f * float(lattice.n), float(lattice.n), std::size_t(lattice.n)};
+      for (std::int64_t c = nextChunk++; c < chunks.end && !cancelled(job); c = nextChunk++) {
+        kernel::ChainState chain = kernel::ChainState::start(settings.seed, std::uint64_t(c), ifs.skip);
+        const std::int64_t n = chunkSize(settings.samples, c);
+        if (bary) {
+          bary->start(chain, ifs);
+          runBarycentricBins(chain, *bary, ifs, n, bins, counters);
+        } else {
+          runBins(chain, ifs, n, bins, counters);
+        }
+        bins.flush();
+        done.fetch_add(n, std::memory_order_relaxed);
       }
     });
   }
   if (job.progress) {
-    while (done.load(std::memory_order_relaxed) < settings.samples && !cancelled(job)) {
-      job.progress(double(done.load(std::memory_order_relaxed)) / double(settings.samples));
+    while (done.load(std::memory_order_relaxed) < budget && !cancelled(job)) {
+      job.progress(double(done.load(std::memory_order_relaxed)) / double(std::max<std::int64_t>(1, budget)));
       std::this_thread::sleep_for(std::chrono::milliseconds(50));
     }
   }
   for (std::thread& t : workers) t.join();
   if (job.progress) job.progress(1.0);
-  return finishBinning(lattice, counts, std::move(colors));
+  acc.samples = done.load();
+  return acc;
+}
+
+DensityVolume developVoxels(const Project& project, const VolumeJob& job, const VoxelAccumulation& acc) {
+  std::vector<float> colors(acc.colorSums.size());
+  for (std::size_t i = 0; i < colors.size(); ++i) colors[i] = float(double(acc.colorSums[i]) * (1.0 / kColorFixedScale));
+  DensityVolume volume = finishBinning(VoxelLattice{acc.resolution}, acc.counts, std::move(colors));
+  if (job.settings.field && !cancelled(job)) modulateDensity(volume, *job.settings.field, project.time, job.threads);
+  return volume;
+}
+
+namespace {
+
+DensityVolume binPoints(const Project& project, const VolumeJob& job) {
+  if (job.binner) {
+    const auto compiled = compileIfs(project, makeCondensationSampler(project, job.projectFolder));
+    const VoxelLattice lattice{job.settings.resolution};
+    std::vector<std::uint32_t> counts(lattice.voxelCount(), 0);
+    std::vector<float> colors;
+    if (hasColorVolume(project)) colors.assign(lattice.voxelCount() * 3, 0.0f);
+    if (job.binner(*compiled, job, counts, colors)) return finishBinning(lattice, counts, std::move(colors));
+  }
+  VolumeJob cpu = job;
+  cpu.settings.field.reset();  // computeDensityVolume modulates once, after either path
+  return developVoxels(project, cpu, accumulateVoxels(project, job));
 }
 
 }  // namespace

@@ -6,9 +6,11 @@
 #include <atomic>
 #include <filesystem>
 #include <functional>
+#include <optional>
 
 #include "model/project.h"
 #include "render/compiled_ifs.h"
+#include "render/sample_chunks.h"
 #include "volume/density_volume.h"
 
 namespace gridifs {
@@ -35,7 +37,29 @@ struct VolumeJob {
   std::function<void(const DensityVolume&)> partial;
   /// Bins the chaos game's points (an IFS without median functions) elsewhere when set.
   VoxelBinner binner;
+  /// Only this part's chunks of the sample budget (gridifs volume --part K/N); absent: all.
+  std::optional<RenderPart> part;
 };
+
+/// The chaos game's points binned into voxels, before normalisation: hits per voxel and the
+/// fixed-point rgb sums (render/accumulation.h), both exact integer sums, so the accumulations of
+/// a volume's parts add up to the whole volume's.
+struct VoxelAccumulation {
+  int resolution = 0;
+  std::vector<std::uint32_t> counts;      // resolution³, x fastest
+  std::vector<std::uint64_t> colorSums;   // 3 per voxel when hasColorVolume, else empty
+  std::int64_t samples = 0;
+  /// Adds `other` in. Throws std::invalid_argument when the two do not match.
+  void add(const VoxelAccumulation& other);
+};
+
+/// Bins the chaos game's points of job.part (every chunk when absent) on the CPU workers.
+/// For projects without median functions. Throws ModelError as computeDensityVolume.
+VoxelAccumulation accumulateVoxels(const Project& project, const VolumeJob& job);
+
+/// The density volume of an accumulation: counts normalised (density = P / max P), mean colours,
+/// and the project's field modulation when job.settings has one.
+DensityVolume developVoxels(const Project& project, const VolumeJob& job, const VoxelAccumulation& acc);
 
 /// Whether `project` has a median function (and so runs the iteration over voxel sets).
 bool usesSetIteration(const Project& project);

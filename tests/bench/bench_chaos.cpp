@@ -125,7 +125,7 @@ void runKernelBenchmark(benchmark::State& state, int variant, bool flush, bool f
   hotIfs.skip = job.skip;
   const kernel::HotCamera cam = kernel::makeHotCamera(OrbitCamera(job.camera, job.width, job.height));
   std::vector<kernel::PixelCell> cells(std::size_t(job.width) * job.height);
-  std::vector<float> sums(flameColours ? cells.size() * 4 : 0);
+  std::vector<std::uint64_t> sums(flameColours ? cells.size() * 4 : 0);
   std::vector<kernel::v4f> palette;
   for (const Rgb& c : builtinPalette("ember").colors) palette.push_back(kernel::v4f{c.r, c.g, c.b, 0.0f});
   palette.push_back(palette.back());

@@ -3,6 +3,7 @@
 // operations (Gröller & Wegenkittl 1994, §3.1: the nearest point per pixel, here with its packed
 // colour as the tie-break, and the hit count; Draves & Reckase 2003, §5: the colour sums in sample
 // order), whatever the chunk boundaries, and it must count exactly the samples that landed.
+#include <algorithm>
 #include <gtest/gtest.h>
 
 #include <bit>
@@ -57,11 +58,13 @@ std::vector<v4f> sampleColors(int count, unsigned seed) {
 
 struct Buffers {
   std::vector<kernel::PixelCell> cells;
-  std::vector<float> sums;
+  std::vector<std::uint64_t> sums;  // fixed point, 16 fraction bits
   std::int64_t plotted = 0;
 };
 
-Buffers emptyBuffers() { return {std::vector<kernel::PixelCell>(kWidth * kHeight), std::vector<float>(kWidth * kHeight * 4), 0}; }
+Buffers emptyBuffers() {
+  return {std::vector<kernel::PixelCell>(kWidth * kHeight), std::vector<std::uint64_t>(kWidth * kHeight * 4), 0};
+}
 
 /// One sample at a time: the projection and packing of the plotter, written out plainly.
 Buffers reference(const kernel::HotCamera& cam, const std::vector<v4f>& points, const std::vector<v4f>& colors,
@@ -88,7 +91,9 @@ Buffers reference(const kernel::HotCamera& cam, const std::vector<v4f>& points, 
       add = palette[entry] + (palette[entry + 1] - palette[entry]) * (c - float(entry));
       add[3] = colors[i][3];
     }
-    for (int k = 0; k < 4; ++k) b.sums[pixel * 4 + k] += add[k];
+    // Each channel clamped to [0, 1] and rounded to 16 fraction bits (the GPU's fixed point).
+    for (int k = 0; k < 4; ++k)
+      b.sums[pixel * 4 + k] += std::uint64_t(std::min(1.0f, std::max(0.0f, add[k])) * 65536.0f + 0.5f);
     ++b.plotted;
   }
   return b;
@@ -118,7 +123,7 @@ void expectSame(const Buffers& expected, const Buffers& actual, bool sums) {
     differing += expected.cells[p].key != actual.cells[p].key || expected.cells[p].density != actual.cells[p].density;
     if (sums)
       for (int k = 0; k < 4; ++k)
-        differing += std::memcmp(&expected.sums[p * 4 + k], &actual.sums[p * 4 + k], sizeof(float)) != 0;
+        differing += std::memcmp(&expected.sums[p * 4 + k], &actual.sums[p * 4 + k], sizeof(std::uint64_t)) != 0;
   }
   EXPECT_EQ(differing, 0);
 }
