@@ -1,5 +1,7 @@
 #include "app/render_device_option.h"
 
+#include "render/accumulation.h"
+
 #include <cstdio>
 
 #include "app/cli.h"
@@ -61,14 +63,13 @@ std::string checkedDevice(const std::optional<std::string>& device) {
 
 #if GRIDIFS_HAVE_GPU
 
-RenderImage renderOnDevice(const std::string& device, std::shared_ptr<const CompiledIfs> ifs, const RenderJob& job,
-                           const DisplaySettings& display, const std::function<bool(const RenderStats&)>& progress,
-                           std::string& used) {
+Accumulation accumulateOnDevice(const std::string& device, std::shared_ptr<const CompiledIfs> ifs, const RenderJob& job,
+                                const std::function<bool(const RenderStats&)>& progress, std::string& used) {
   gpu::RenderDevice d = gpu::RenderDevice::Auto;
   gpu::parseRenderDevice(device, d);
   if (d == gpu::RenderDevice::Cpu) {
     used = "cpu";
-    return renderToCompletion(std::move(ifs), job, display, progress);
+    return accumulateToCompletion(std::move(ifs), job, progress);
   }
   gpu::RendererChoice choice;
   try {
@@ -80,9 +81,9 @@ RenderImage renderOnDevice(const std::string& device, std::shared_ptr<const Comp
   if (!choice.fallbackReason.empty()) noteFallback(choice.fallbackReason);
   used = choice.renderer->deviceName();
   if (!choice.renderer->waitUntilDone(progress)) throw RenderCancelled();
-  RenderImage image;
-  choice.renderer->snapshot(image, display);
-  return image;
+  Accumulation acc;
+  choice.renderer->accumulation(acc);
+  return acc;
 }
 
 PointGenerator pointGeneratorOn(const std::string& device, std::string& used) {
@@ -153,13 +154,12 @@ std::string deviceReport(const std::string& device, bool& gpuUsed) {
 
 #else  // a build without the GPU renderer
 
-RenderImage renderOnDevice(const std::string& device, std::shared_ptr<const CompiledIfs> ifs, const RenderJob& job,
-                           const DisplaySettings& display, const std::function<bool(const RenderStats&)>& progress,
-                           std::string& used) {
+Accumulation accumulateOnDevice(const std::string& device, std::shared_ptr<const CompiledIfs> ifs, const RenderJob& job,
+                                const std::function<bool(const RenderStats&)>& progress, std::string& used) {
   if (device == "gpu") gpuFailed("this build of gridifs has no GPU renderer");
   if (device == "auto") noteFallback("this build of gridifs has no GPU renderer");
   used = "cpu";
-  return renderToCompletion(std::move(ifs), job, display, progress);
+  return accumulateToCompletion(std::move(ifs), job, progress);
 }
 
 PointGenerator pointGeneratorOn(const std::string& device, std::string& used) {

@@ -19,12 +19,12 @@ void addDeviceOption(CLI::App& app, std::optional<std::string>& device);
 /// Checks --device ("auto" when absent). Bad value → CliError(2).
 std::string checkedDevice(const std::optional<std::string>& device);
 
-/// Renders `job` to completion on `device`: gpu fails with CliError(1) and one sentence when there
-/// is no usable GPU; auto falls back to the CPU (printDeviceNote says so). `progress` as in
+/// Renders `job` to completion on `device` and returns its buffers undeveloped
+/// (render/accumulation.h): gpu fails with CliError(1) and one sentence when there is no usable
+/// GPU; auto falls back to the CPU (printDeviceNote says so). `progress` as in
 /// renderToCompletion (false cancels: RenderCancelled). `used` receives the device's name.
-RenderImage renderOnDevice(const std::string& device, std::shared_ptr<const CompiledIfs> ifs, const RenderJob& job,
-                           const DisplaySettings& display, const std::function<bool(const RenderStats&)>& progress,
-                           std::string& used);
+Accumulation accumulateOnDevice(const std::string& device, std::shared_ptr<const CompiledIfs> ifs, const RenderJob& job,
+                                const std::function<bool(const RenderStats&)>& progress, std::string& used);
 
 /// The point walk for export-points on `device` (empty: the CPU's generatePoints), with the same
 /// failure and fallback rules.

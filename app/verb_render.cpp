@@ -8,6 +8,7 @@
 #include <csignal>
 #include <cstdio>
 #include <optional>
+#include <nlohmann/json.hpp>
 
 #include "app/cli.h"
 #include "app/chaos_verb_options.h"
@@ -16,6 +17,8 @@
 #include "app/render_setup.h"
 #include "app/render_sequence.h"
 #include "app/shaded_image_output.h"
+#include "app/render_parts.h"
+#include "io/project_io.h"
 #include "base/atomic_file.h"
 #include "base/color_space.h"
 #include "render/flame_render.h"
@@ -42,8 +45,9 @@ void writeImage(const RenderImage& image, const std::filesystem::path& out, cons
   ImageFileLayout layout;
   layout.width = image.width;
   layout.height = image.height;
+  // No thread count: the image does not depend on it, and a merged render writes the same bytes.
   layout.description = "GridIFS render of " + file + ", " + std::to_string(setup.job.samples) + " samples, seed " +
-                       std::to_string(setup.job.seed) + ", " + std::to_string(setup.job.threads) + " threads";
+                       std::to_string(setup.job.seed);
   try {
     if (lowerExtension(out) == "exr") {
       layout.channels = {"R", "G", "B", "A", "Z"};
@@ -70,6 +74,19 @@ void writeImage(const RenderImage& image, const std::filesystem::path& out, cons
     throw CliError(kFailure, e.what());
   }
 }
+
+/// Where a frame's accumulation goes or comes from. Rendered and developed (the default); rendered
+/// and written as a part file (`part`: render --part); or taken from merged parts (`merged`:
+/// gridifs merge), developed exactly as a render would.
+struct FrameSource {
+  struct PartTarget {
+    RenderPart part;
+    std::optional<std::int64_t> frame;
+    std::string options;  // the finishing options as JSON (mode, motion blur, shutter)
+  };
+  std::optional<PartTarget> part;
+  const std::vector<Accumulation>* merged = nullptr;
+};
 
 /// Where one frame's samples sit in the progress of a whole sequence (one bar over all frames).
 struct FrameProgress {
@@ -98,57 +115,101 @@ void accumulate(RenderImage& sum, std::vector<std::uint32_t>& rgbaSum, const Ren
   sum.stats.budget += part.stats.budget;
 }
 
+/// The project as a part stores it: as rendered at the frame's time, with the job's size, samples
+/// and seed in its render settings, so that `merge` rebuilds the same job from it alone.
+std::string partProject(const RenderSetup& setup) {
+  Project p = setup.project;
+  p.render.width = setup.job.width;
+  p.render.height = setup.job.height;
+  p.render.samples = setup.job.samples;
+  p.render.seed = setup.job.seed;
+  return serializeProject(p);
+}
+
 /// Runs `job` to completion on `device` (app/render_device_option.h) with a progress bar (interruptible with Ctrl-C).
 /// With several setups (the time samples of one motion-blurred frame) the job's samples are split
-/// among them, each with its own seed, and the results merged.
+/// among them, each with its own seed, and the results merged. With source.part it writes the
+/// accumulations as a part file and returns nothing; with source.merged it renders nothing and
+/// develops the merged accumulations instead.
 /// Throws CliError when interrupted or when at least half of the points were unusable (nothing is written then).
-RenderImage renderWithProgress(const std::vector<RenderSetup>& setups, const RenderJob& job, const std::string& file,
-                               const std::string& out, bool quiet, const std::string& device,
-                               const DisplaySettings* displayOverride = nullptr, FrameProgress progress = {}) {
-  ProgressBar ownBar("render", quiet);
+std::optional<RenderImage> renderWithProgress(const std::vector<RenderSetup>& setups, const RenderJob& job,
+                                              const std::string& file, const std::string& out, bool quiet,
+                                              const std::string& device, const DisplaySettings* displayOverride,
+                                              FrameProgress progress, const FrameSource& source) {
+  ProgressBar ownBar(source.merged ? "merge" : "render", quiet || source.merged);
   ProgressBar& bar = progress.bar ? *progress.bar : ownBar;
   if (!progress.bar) progress.total = job.samples;
   InterruptGuard interrupt;
   RenderImage image;
   std::vector<std::uint32_t> rgbaSum;
-  const auto count = std::int64_t(setups.size());
+  const std::int64_t count = std::int64_t(setups.size());
   std::int64_t done = 0;
-  for (std::int64_t i = 0; i < count; ++i) {
+  std::vector<Accumulation> accumulations;
+  std::string used = "cpu";
+  for (std::int64_t i = 0; i < count && !source.merged; ++i) {
     const RenderSetup& setup = setups[std::size_t(i)];
     RenderJob part = job;
     part.samples = job.samples / count + (i < job.samples % count ? 1 : 0);
     part.seed = job.seed + std::uint64_t(i);
-    RenderImage sample;
+    if (source.part) part.part = source.part->part;
     try {
-      std::string used;
-      sample = renderOnDevice(
+      accumulations.push_back(accumulateOnDevice(
           device, setup.ifs, part,
-          displayOverride ? *displayOverride : DisplaySettings::fromProject(setup.project),
           [&](const RenderStats& s) {
             // The image library loads on a second core while the chaos game runs, started once the
             // workers run: dlopen holds the dynamic loader's lock while it maps and relocates
             // OpenImageIO's ~230 libraries (0.2 s), and started earlier it kept the main thread
             // waiting on that lock before the workers could start.
-            startLoadingImageWriter();
+            if (!source.part) startLoadingImageWriter();
             bar.update(progress.before + done + s.samples, progress.total, s.pointsPerSecond);
             return !gInterrupted.load();
           },
-          used);
+          used));
     } catch (const RenderCancelled&) {
       bar.finish();
       throw CliError(kFailure, "render of " + file + " interrupted; " + out + " was not written");
     }
     done += part.samples;
-    if (count == 1) {
-      image = std::move(sample);
-    } else {
-      accumulate(image, rgbaSum, sample);
-    }
   }
-  if (count > 1) {
+  if (source.part) {
+    if (!progress.bar) bar.finish();
+    RenderPartHeader header;
+    header.kind = "image";
+    header.part = source.part->part.index;
+    header.parts = source.part->part.count;
+    header.device = used;
+    const ChunkRange chunks = chunksOf(job.samples / count, &source.part->part);
+    header.chunkBegin = chunks.begin;
+    header.chunkEnd = chunks.end;
+    header.frame = source.part->frame;
+    header.source = file;
+    header.project = partProject(setups.front());
+    header.options = source.part->options;
+    header.digest = partDigest(header.kind, header.project, header.options, header.parts, header.device, header.frame);
+    try {
+      writeImagePart(out, header, accumulations);
+    } catch (const IoError& e) {
+      throw CliError(kFailure, e.what());
+    }
+    return std::nullopt;
+  }
+  const std::vector<Accumulation>& sums = source.merged ? *source.merged : accumulations;
+  const DisplaySettings display =
+      displayOverride ? *displayOverride : DisplaySettings::fromProject(setups.front().project);
+  for (std::size_t i = 0; i < sums.size(); ++i) {
+    RenderImage sample;
+    toRenderImage(sums[i], display, sample);
+    sample.stats.budget = sample.stats.samples;
+    if (sums.size() == 1)
+      image = std::move(sample);
+    else
+      accumulate(image, rgbaSum, sample);
+  }
+  if (sums.size() > 1) {
+    const std::uint32_t n = std::uint32_t(sums.size());
     image.hitPixels = 0;
     for (std::size_t i = 0; i < rgbaSum.size(); ++i) {
-      image.rgba[i] = std::uint8_t((rgbaSum[i] + std::uint32_t(count / 2)) / std::uint32_t(count));
+      image.rgba[i] = std::uint8_t((rgbaSum[i] + n / 2) / n);
       if (i % 4 == 3 && rgbaSum[i] > 0) {
         image.rgba[i] = 255;  // plotted in at least one time sample
         ++image.hitPixels;
@@ -176,20 +237,23 @@ struct FlameOptions {
 /// palette colour sums, developed by log-density tone mapping and the filters. PNG/TIFF: RGB over
 /// the background (RGBA with --transparent), 8 or 16 bits; EXR: premultiplied RGBA, float or half.
 int runFlameRender(const std::string& file, const std::string& out, const std::vector<RenderSetup>& setups,
-                   const FlameOptions& options, bool quiet, const std::string& device, FrameProgress progress) {
+                   const FlameOptions& options, bool quiet, const std::string& device, FrameProgress progress,
+                   const FrameSource& source) {
   const RenderSetup& setup = setups.front();
   FlameSettings settings = setup.project.render.flame;
   if (options.palette) settings.palette = *options.palette;
   std::shared_ptr<const Palette> palette;
   try {
-    palette =
-        std::make_shared<const Palette>(resolvePalette(settings.palette, std::filesystem::path(file).parent_path()));
+    // Merged parts hold the palette's colour sums already; the palette file may not be here.
+    if (!source.merged)
+      palette =
+          std::make_shared<const Palette>(resolvePalette(settings.palette, std::filesystem::path(file).parent_path()));
   } catch (const PaletteError& e) {
     throw CliError(kBadInput, file + ": " + e.what());
   }
   const bool exr = lowerExtension(out) == "exr";
   const int bits = options.bitDepth.value_or(exr ? 32 : 8);
-  if (exr ? (bits != 16 && bits != 32) : (bits != 8 && bits != 16))
+  if (!source.part && (exr ? (bits != 16 && bits != 32) : (bits != 8 && bits != 16)))
     throw CliError(kBadInput, std::string("--bit-depth must be ") +
                                   (exr ? "16 (half) or 32 (float) for EXR" : "8 or 16 for PNG and TIFF"));
   // Supersampled, with a gutter around the frame, palette colors per sample (core/flame_render.h).
@@ -200,7 +264,10 @@ int runFlameRender(const std::string& file, const std::string& out, const std::v
   } catch (const ModelError& e) {
     throw CliError(kBadInput, file + ": with supersample " + std::to_string(ss) + ", " + e.message());
   }
-  const RenderImage image = renderWithProgress(setups, job, file, out, quiet, device, nullptr, progress);
+  const std::optional<RenderImage> rendered =
+      renderWithProgress(setups, job, file, out, quiet, device, nullptr, progress, source);
+  if (!rendered) return kSuccess;  // a part: written as it is
+  const RenderImage& image = *rendered;
   if (image.hitPixels == 0)
     std::fprintf(stderr, "warning: %s: no point landed in the %dx%d frame; check the camera.\n", file.c_str(),
                  setup.job.width, setup.job.height);
@@ -223,24 +290,27 @@ int runFlameRender(const std::string& file, const std::string& out, const std::v
 /// lights, occlusion and fog (core/render/shaded_image.h). Shadow maps and depth of field are
 /// CPU chaos-game effects, so this mode always renders on the CPU.
 int runShadedRender(const std::string& file, const std::string& out, const std::vector<RenderSetup>& setups,
-                    bool quiet, const std::string& device, FrameProgress progress) {
+                    bool quiet, const std::string& device, FrameProgress progress, const FrameSource& source) {
   if (setups.size() > 1)
     throw CliError(kBadInput, "--motion-blur applies to the zbuffer and flame modes, not to shaded renders");
   const RenderSetup& setup = setups.front();
   const ShadingSettings& shading = setup.project.render.shading;
-  RenderJob job;
+  RenderJob job = setup.job;  // merged parts carry their lights' views and depths
   try {
-    job = shadedRenderJob(setup.job, shading, *setup.ifs);
+    if (!source.merged) job = shadedRenderJob(setup.job, shading, *setup.ifs);
     validateRenderJob(job);
   } catch (const ModelError& e) {
     throw CliError(kBadInput, file + ": " + e.what());
   }
-  if (device == "gpu")
+  if (device == "gpu" && !source.merged)
     std::fprintf(stderr,
                  "note: the shaded display renders on the CPU (its shadow maps and depth of field are "
                  "filled by the CPU chaos game).\n");
   const DisplaySettings display = shadedDisplaySettings(setup.project);
-  const RenderImage image = renderWithProgress(setups, job, file, out, quiet, "cpu", &display, progress);
+  const std::optional<RenderImage> rendered =
+      renderWithProgress(setups, job, file, out, quiet, "cpu", &display, progress, source);
+  if (!rendered) return kSuccess;  // a part: written as it is
+  const RenderImage& image = *rendered;
   if (image.hitPixels == 0)
     std::fprintf(stderr, "warning: %s: no point landed in the %dx%d frame; check the camera.\n", file.c_str(),
                  image.width, image.height);
@@ -251,8 +321,7 @@ int runShadedRender(const std::string& file, const std::string& out, const std::
     throw CliError(kBadInput, file + ": " + e.what());
   }
   const std::string description = "GridIFS shaded render of " + file + ", " + std::to_string(job.samples) +
-                                  " samples, seed " + std::to_string(job.seed) + ", " + std::to_string(job.threads) +
-                                  " threads";
+                                  " samples, seed " + std::to_string(job.seed);
   writeShadedImage(shaded, image, out, description);
   return kSuccess;
 }
@@ -260,7 +329,8 @@ int runShadedRender(const std::string& file, const std::string& out, const std::
 /// One image: the project at overrides.time (or its own time), or, with `blur` > 1, at `blur` times
 /// spread evenly over `shutter` seconds centred on that time, merged.
 int renderFrame(const Project& loaded, const std::string& file, const std::string& out, const RenderOverrides& overrides,
-                bool quiet, const FlameOptions& flame, int blur, double shutter, FrameProgress progress, bool warn) {
+                bool quiet, const FlameOptions& flame, int blur, double shutter, FrameProgress progress, bool warn,
+                FrameSource source = {}) {
   const std::string device = checkedDevice(overrides.device);
   DisplayMode mode = DisplayMode::ZBuffer;
   if (flame.mode && !parseDisplayMode(*flame.mode, mode))
@@ -268,19 +338,34 @@ int renderFrame(const Project& loaded, const std::string& file, const std::strin
   std::vector<RenderSetup> setups;
   const double time = overrides.time.value_or(loaded.time);
   for (int i = 0; i < blur; ++i) {
+    if (source.merged) {
+      // The parts' project is the one rendered, with the job's settings in it: nothing to compile.
+      setups.push_back(RenderSetup{loaded, nullptr, RenderJob::fromProject(loaded, overrides.threads.value_or(0))});
+      continue;
+    }
     RenderOverrides at = overrides;
     // Draves & Reckase, motion blur: time samples spread over the shutter. One sample is the
     // frame's own time exactly, so an unblurred frame equals a render at --time.
     at.time = blur == 1 ? time : time + shutter * ((i + 0.5) / blur - 0.5);
     setups.push_back(prepareRenderOf(loaded, file, at, limits::kMaxRenderSamples, warn && i == 0));
   }
+  if (!flame.mode) mode = setups.front().project.render.mode;
+  if (source.part) {
+    // The part's project says how to finish it: the mode and palette as rendered.
+    setups.front().project.render.mode = mode;
+    if (flame.palette) setups.front().project.render.flame.palette = *flame.palette;
+    nlohmann::json options = {{"mode", std::string(displayModeName(mode))}, {"motion_blur", blur}, {"shutter", shutter}};
+    source.part->options = options.dump();
+  }
   const RenderSetup& setup = setups.front();
-  if (!flame.mode) mode = setup.project.render.mode;
-  if (mode == DisplayMode::Flame) return runFlameRender(file, out, setups, flame, quiet, device, progress);
+  if (mode == DisplayMode::Flame) return runFlameRender(file, out, setups, flame, quiet, device, progress, source);
   if (flame.bitDepth || flame.transparent || flame.palette)
     throw CliError(kBadInput, "--bit-depth, --transparent and --palette apply to --mode flame only");
-  if (mode == DisplayMode::Shaded) return runShadedRender(file, out, setups, quiet, device, progress);
-  const RenderImage image = renderWithProgress(setups, setup.job, file, out, quiet, device, nullptr, progress);
+  if (mode == DisplayMode::Shaded) return runShadedRender(file, out, setups, quiet, device, progress, source);
+  const std::optional<RenderImage> rendered =
+      renderWithProgress(setups, setup.job, file, out, quiet, device, nullptr, progress, source);
+  if (!rendered) return kSuccess;  // a part: written as it is
+  const RenderImage& image = *rendered;
   const RenderStats& s = image.stats;
   if (s.badSamples > 0)
     std::fprintf(stderr, "warning: %s: %.3g%% of the samples were non-finite or escaped (chains restarted).\n",
@@ -297,11 +382,13 @@ int renderFrame(const Project& loaded, const std::string& file, const std::strin
 /// one progress bar over all frames. Everything that can be checked is checked before the first
 /// frame is written: the range, the pattern, ffmpeg for --video, and the project at every frame.
 int renderSequence(const std::string& file, const std::string& pattern, const RenderOverrides& overrides, bool quiet,
-                   const FlameOptions& flame, const SequenceOptions& sequence) {
+                   const FlameOptions& flame, const SequenceOptions& sequence, std::optional<RenderPart> part) {
   const FrameRange frames = parseFrameRange(*sequence.frames);
   checkFramePattern(pattern);
   if (overrides.time) throw CliError(kBadInput, "--time and --frames exclude each other: a frame's time is f/fps");
   if (sequence.video) checkVideoOutput(*sequence.video);
+  if (sequence.video && part)
+    throw CliError(kBadInput, "--video needs whole frames: merge the parts first (gridifs merge), or let gridifs farm do it");
   const Project loaded = loadForVerb(file);
   const AnimationSettings animation = loaded.animation.value_or(AnimationSettings{});
   auto frameTime = [&](std::int64_t f) { return double(f) / animation.fps; };
@@ -315,8 +402,10 @@ int renderSequence(const std::string& file, const std::string& pattern, const Re
     RenderOverrides at = overrides;
     at.time = frameTime(f);
     const FrameProgress progress{&bar, (f - frames.first) * samplesPerFrame, frames.count() * samplesPerFrame};
+    FrameSource source;
+    if (part) source.part = FrameSource::PartTarget{*part, f, ""};
     renderFrame(loaded, file, frameFileName(pattern, f), at, quiet, flame, sequence.motionBlur,
-                animation.shutter / animation.fps, progress, f == frames.first);
+                animation.shutter / animation.fps, progress, f == frames.first, source);
   }
   bar.finish();
   if (sequence.video) {
@@ -328,8 +417,14 @@ int renderSequence(const std::string& file, const std::string& pattern, const Re
 }
 
 int runRender(const std::string& file, const std::string& out, const RenderOverrides& overrides, bool quiet,
-              const FlameOptions& flame, const SequenceOptions& sequence) {
-  checkOutputPath(out, {"png", "exr", "tif", "tiff"}, "the output image");
+              const FlameOptions& flame, const SequenceOptions& sequence, const std::optional<std::string>& partText) {
+  std::optional<RenderPart> part;
+  if (partText) {
+    part = parsePart(*partText);
+    checkOutputPath(out, {"gpart"}, "a render part");
+  } else {
+    checkOutputPath(out, {"png", "exr", "tif", "tiff"}, "the output image");
+  }
   if (sequence.motionBlur < 1 || sequence.motionBlur > kMaxMotionBlurSamples)
     throw CliError(kBadInput, "--motion-blur must be between 1 and " + std::to_string(kMaxMotionBlurSamples) +
                                   " time samples per frame");
@@ -337,11 +432,47 @@ int runRender(const std::string& file, const std::string& out, const RenderOverr
     if (sequence.video) throw CliError(kBadInput, "--video needs a frame sequence: add --frames A:B");
     const Project loaded = loadForVerb(file);
     const AnimationSettings animation = loaded.animation.value_or(AnimationSettings{});
+    FrameSource source;
+    if (part) source.part = FrameSource::PartTarget{*part, std::nullopt, ""};
     return renderFrame(loaded, file, out, overrides, quiet, flame, sequence.motionBlur,
-                       animation.shutter / animation.fps, {}, true);
+                       animation.shutter / animation.fps, {}, true, source);
   }
-  return renderSequence(file, out, overrides, quiet, flame, sequence);
+  return renderSequence(file, out, overrides, quiet, flame, sequence, part);
 }
+
+}  // namespace
+
+int finishMergedFrame(const Project& project, const std::string& file, const std::string& out,
+                      const std::string& optionsJson, const std::vector<Accumulation>& sums,
+                      std::optional<int> bitDepth, bool transparent) {
+  FlameOptions flame;
+  int blur = 1;
+  double shutter = 0.0;
+  try {
+    const nlohmann::json options = nlohmann::json::parse(optionsJson);
+    flame.mode = options.at("mode").get<std::string>();
+    blur = options.at("motion_blur").get<int>();
+    shutter = options.at("shutter").get<double>();
+  } catch (const nlohmann::json::exception&) {
+    throw CliError(kBadInput, "the parts' render options are damaged");
+  }
+  if (blur != int(sums.size())) throw CliError(kBadInput, "the parts' time samples do not match their motion blur");
+  DisplayMode mode = DisplayMode::ZBuffer;
+  parseDisplayMode(*flame.mode, mode);
+  if (mode == DisplayMode::Flame) {
+    flame.bitDepth = bitDepth;
+    flame.transparent = transparent;
+  } else if (bitDepth || transparent) {
+    throw CliError(kBadInput, "--bit-depth and --transparent apply to parts of a flame render only");
+  }
+  FrameSource source;
+  source.merged = &sums;
+  RenderOverrides overrides;
+  overrides.device = "cpu";
+  return renderFrame(project, file, out, overrides, true, flame, blur, shutter, {}, false, source);
+}
+
+namespace {
 
 const VerbRegistration kRender{
     {"render",
@@ -351,7 +482,7 @@ const VerbRegistration kRender{
      [](CLI::App& app) {
        const auto a = addChaosVerbOptions(app, "output image: .png or .tif (8-bit RGB) or .exr (float RGBA + Z)",
                                           "chaos-game iterations in total, e.g. 2e7 (default: the project's)",
-                                          "render threads (default: all cores; the image depends on it)");
+                                          "render threads (default: all cores; the image does not depend on it)");
        app.add_option("--width", a->overrides.width, "image width in pixels (default: the project's)");
        app.add_option("--height", a->overrides.height, "image height in pixels (default: the project's)");
        auto flame = std::make_shared<FlameOptions>();
@@ -374,7 +505,12 @@ const VerbRegistration kRender{
                       "time samples per frame, spread over the animation's shutter (default 0.5 of the frame "
                       "interval); 1 = none");
        app.add_option("--video", sequence->video, "with --frames: also assemble the frames into this video with ffmpeg");
-       return [=] { return runRender(a->file, a->out, a->overrides, a->quiet, *flame, *sequence); };
+       auto part = std::make_shared<std::optional<std::string>>();
+       app.add_option("--part", *part,
+                      "render part K of N (K/N, 0 ≤ K < N) of the sample budget and write its accumulation to "
+                      "-o OUT.gpart (with --frames: a pattern, one part file per frame); gridifs merge "
+                      "makes the image");
+       return [=] { return runRender(a->file, a->out, a->overrides, a->quiet, *flame, *sequence, *part); };
      }}};
 
 }  // namespace

@@ -7,6 +7,8 @@
 #include "app/progress_bar.h"
 #include "app/render_device_option.h"
 #include "app/render_setup.h"
+#include "app/render_parts.h"
+#include "io/project_io.h"
 #include "model/validation.h"
 #include "volume/measure_attractor.h"
 #include "volume/vdb_volume_file.h"
@@ -20,14 +22,60 @@ struct VolumeArgs {
   std::optional<std::string> samples, device;
   std::optional<std::uint64_t> seed;
   std::optional<double> time;
+  std::optional<std::string> part;
   bool quiet = false;
 };
 
+/// `--part K/N`: this part's chunks of the chaos-game points, binned and written undeveloped.
+int runVolumePart(const VolumeArgs& a, const Project& project, VolumeJob& job, const RenderPart& part) {
+  if (usesSetIteration(project))
+    throw CliError(kBadInput, a.file + ": a volume of median functions is a set iteration, which runs whole; "
+                                       "--part splits the chaos-game volumes of other projects");
+  if (a.device && *a.device == "gpu")
+    throw CliError(kBadInput, "--part renders volume parts on the CPU; leave out --device gpu");
+  job.part = part;
+  ProgressBar bar("volume part", a.quiet);
+  job.progress = [&](double done) { bar.fraction(done); };
+  VoxelAccumulation acc;
+  try {
+    acc = accumulateVoxels(project, job);
+  } catch (const ModelError& e) {
+    throw CliError(kBadInput, a.file + ": " + e.what());
+  }
+  bar.finish();
+  RenderPartHeader header;
+  header.kind = "volume";
+  header.part = part.index;
+  header.parts = part.count;
+  header.device = "cpu";
+  const ChunkRange chunks = chunksOf(job.settings.samples, &part);
+  header.chunkBegin = chunks.begin;
+  header.chunkEnd = chunks.end;
+  header.source = a.file;
+  Project rendered = project;
+  rendered.volume = job.settings;  // the overrides, so that merge finishes the same volume
+  header.project = serializeProject(rendered);
+  header.options = "{}";
+  header.digest = partDigest(header.kind, header.project, header.options, header.parts, header.device, std::nullopt);
+  try {
+    writeVolumePart(a.out, header, acc);
+  } catch (const IoError& e) {
+    throw CliError(kFailure, e.what());
+  }
+  return kSuccess;
+}
+
 int runVolume(const VolumeArgs& a) {
-  checkOutputPath(a.out, {"vdb"}, "the volume");
+  std::optional<RenderPart> part;
+  if (a.part) {
+    part = parsePart(*a.part);
+    checkOutputPath(a.out, {"gpart"}, "a volume part");
+  } else {
+    checkOutputPath(a.out, {"vdb"}, "the volume");
+  }
   const std::string device = checkedDevice(a.device);
   try {
-    requireVdbVolumeWriter();  // before the work, not after it
+    if (!part) requireVdbVolumeWriter();  // before the work, not after it
   } catch (const IoError& e) {
     throw CliError(kFailure, e.what());
   }
@@ -56,6 +104,7 @@ int runVolume(const VolumeArgs& a) {
     job.threads = *a.threads;
   }
   job.projectFolder = file.parent_path().empty() ? std::filesystem::path(".") : file.parent_path();
+  if (part) return runVolumePart(a, project, job, *part);
   std::string used;
   job.binner = voxelBinnerOn(device, usesSetIteration(project), used);
   ProgressBar bar("volume", a.quiet);
@@ -99,6 +148,9 @@ const VerbRegistration kVolume{
        app.add_option("--threads", a->threads, "worker threads (default: all cores)");
        addTimeOption(app, a->time);
        addDeviceOption(app, a->device);
+       app.add_option("--part", a->part,
+                      "bin part K of N (K/N) of the chaos-game points into -o OUT.gpart; gridifs merge makes "
+                      "the .vdb");
        app.add_flag("-q,--quiet", a->quiet, "no progress bar");
        return [a] { return runVolume(*a); };
      }}};

@@ -1,0 +1,157 @@
+// gridifs merge PART... -o OUT: the parts of one split render (render --part K/N) or volume
+// (volume --part K/N), summed exactly in any order and finished into the file `render` (or
+// `volume`) writes with the same options. Every part's header is checked before any payload is
+// read (missing, duplicated or foreign parts are refused at once); the payloads are then streamed
+// one at a time into one running sum, so memory stays at two accumulations whatever the number
+// of parts. A damaged or truncated part is refused; nothing is written then.
+#include <algorithm>
+#include <map>
+
+#include "app/cli.h"
+#include "app/render_parts.h"
+#include "app/render_setup.h"
+#include "io/project_io.h"
+#include "volume/vdb_volume_file.h"
+
+namespace gridifs::cli {
+namespace {
+
+struct MergeArgs {
+  std::vector<std::string> parts;
+  std::string out;
+  std::optional<int> bitDepth;
+  bool transparent = false;
+};
+
+/// "a.gpart, b.gpart and c.gpart"
+std::string listOf(const std::vector<std::string>& names) {
+  std::string out;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    out += (i == 0 ? "" : (i + 1 == names.size() ? " and " : ", ")) + names[i];
+  return out;
+}
+
+std::string describeMissing(const std::vector<std::int64_t>& missing) {
+  std::string out;
+  const std::size_t shown = std::min<std::size_t>(missing.size(), 8);
+  for (std::size_t i = 0; i < shown; ++i) out += (i ? ", " : "") + std::to_string(missing[i]);
+  if (missing.size() > shown) out += " and " + std::to_string(missing.size() - shown) + " more";
+  return out;
+}
+
+/// Reads every header and checks that the parts are exactly parts 0..N-1 of one render.
+RenderPartHeader checkHeaders(const std::vector<std::string>& files) {
+  std::vector<RenderPartHeader> headers;
+  for (const std::string& f : files) {
+    try {
+      headers.push_back(RenderPartReader(f).header());
+    } catch (const PartFileError& e) {
+      throw CliError(kBadInput, std::string(e.what()) + "; nothing was merged");
+    }
+  }
+  const RenderPartHeader& first = headers.front();
+  std::vector<std::string> foreign;
+  std::map<std::int64_t, std::vector<std::string>> byPart;
+  for (std::size_t i = 0; i < headers.size(); ++i) {
+    const RenderPartHeader& h = headers[i];
+    if (h.digest != first.digest || h.parts != first.parts || h.kind != first.kind || h.frame != first.frame)
+      foreign.push_back(files[i]);
+    else
+      byPart[h.part].push_back(files[i]);
+  }
+  if (!foreign.empty())
+    throw CliError(kBadInput, listOf(foreign) + (foreign.size() == 1 ? " belongs" : " belong") +
+                                  " to another render than " + files.front() +
+                                  " (another project, options, frame or part count); nothing was merged");
+  for (const auto& [k, names] : byPart)
+    if (names.size() > 1)
+      throw CliError(kBadInput, listOf(names) + " are the same part " + std::to_string(k) + " of " +
+                                    std::to_string(first.parts) + "; nothing was merged");
+  std::vector<std::int64_t> missing;
+  for (std::int64_t k = 0; k < first.parts; ++k)
+    if (!byPart.count(k)) missing.push_back(k);
+  if (!missing.empty())
+    throw CliError(kBadInput, "part" + std::string(missing.size() == 1 ? " " : "s ") + describeMissing(missing) +
+                                  " of " + std::to_string(first.parts) + " of " + first.source +
+                                  (missing.size() == 1 ? " is" : " are") + " missing; nothing was merged");
+  return first;
+}
+
+Project embeddedProject(const RenderPartHeader& header, const std::string& file) {
+  try {
+    return parseProject(header.project);
+  } catch (const std::exception& e) {
+    throw CliError(kBadInput, file + " is damaged: its project does not load (" + std::string(e.what()) + ")");
+  }
+}
+
+int runMerge(const MergeArgs& a) {
+  const RenderPartHeader header = checkHeaders(a.parts);
+  const bool volume = header.kind == "volume";
+  if (volume) {
+    checkOutputPath(a.out, {"vdb"}, "a merged volume");
+    if (a.bitDepth || a.transparent) throw CliError(kBadInput, "--bit-depth and --transparent apply to images only");
+    try {
+      requireVdbVolumeWriter();
+    } catch (const IoError& e) {
+      throw CliError(kFailure, e.what());
+    }
+  } else {
+    checkOutputPath(a.out, {"png", "exr", "tif", "tiff"}, "a merged image");
+  }
+  const Project project = embeddedProject(header, a.parts.front());
+  std::vector<Accumulation> sums;
+  VoxelAccumulation voxels;
+  for (std::size_t i = 0; i < a.parts.size(); ++i) {
+    try {
+      RenderPartReader reader(a.parts[i]);
+      if (volume)
+        addVolumePart(reader, voxels, i == 0);
+      else
+        addImagePart(reader, sums);
+      reader.finish();
+    } catch (const PartFileError& e) {
+      const std::string why = e.what();
+      // Buffer-level messages do not name the file; the reader's own ones start with it.
+      throw CliError(kBadInput, (why.rfind(a.parts[i], 0) == 0 ? why : a.parts[i] + " is damaged: " + why) +
+                                    "; nothing was merged");
+    } catch (const std::invalid_argument& e) {
+      throw CliError(kBadInput, a.parts[i] + " does not match the other parts: " + e.what() + "; nothing was merged");
+    }
+  }
+  if (!volume) return finishMergedFrame(project, header.source, a.out, header.options, sums, a.bitDepth, a.transparent);
+  VolumeJob job;
+  job.settings = project.volume.value_or(VolumeSettings{});
+  DensityVolume density;
+  try {
+    density = developVoxels(project, job, voxels);
+  } catch (const ModelError& e) {
+    throw CliError(kBadInput, header.source + ": " + e.what());
+  }
+  if (density.totalMass <= 0.0)
+    throw CliError(kFailure, header.source + ": no point of the attractor fell inside X, so the volume is empty");
+  try {
+    writeVdbVolume(density, a.out);
+  } catch (const IoError& e) {
+    throw CliError(kFailure, e.what());
+  }
+  return kSuccess;
+}
+
+const VerbRegistration kMerge{
+    {"merge",
+     "PART... -o OUT.(png|exr|tif|vdb) [--bit-depth B --transparent]: sum the parts of a split render "
+     "(render/volume --part K/N) into the image or volume the whole render makes",
+     [](CLI::App& app) {
+       auto a = std::make_shared<MergeArgs>();
+       app.add_option("PART", a->parts, "the part files (.gpart) of one render, all N of them, in any order")
+           ->required();
+       app.add_option("-o,--output", a->out, "the image (.png, .tif, .exr) or, for volume parts, the volume (.vdb)")
+           ->required();
+       app.add_option("--bit-depth", a->bitDepth, "flame parts: 8 or 16 bits for PNG/TIFF, 16 or 32 for EXR");
+       app.add_flag("--transparent", a->transparent, "flame parts: PNG/TIFF with alpha instead of the background");
+       return [a] { return runMerge(*a); };
+     }}};
+
+}  // namespace
+}  // namespace gridifs::cli

@@ -1,0 +1,342 @@
+#include "io/render_part_file.h"
+
+#include <zlib.h>
+
+#include <algorithm>
+#include <array>
+#include <cstring>
+#include <nlohmann/json.hpp>
+
+#include "base/atomic_file.h"
+#include "base/errors.h"
+
+namespace gridifs {
+namespace {
+
+constexpr char kMagic[8] = {'G', 'R', 'I', 'D', 'P', 'A', 'R', 'T'};
+constexpr char kEndMagic[8] = {'P', 'A', 'R', 'T', 'E', 'N', 'D', '\n'};
+/// Elements shuffled and compressed at a time: bounds the scratch memory (≤ 512 KB at 8 bytes).
+constexpr std::size_t kBlockElements = 65536;
+constexpr std::size_t kMaxHeaderBytes = 64u << 20;  // the project JSON is limited far below this
+constexpr std::size_t kMaxNameBytes = 64;
+
+template <class T>
+void putLittle(std::string& out, T value) {
+  char bytes[sizeof(T)];
+  std::memcpy(bytes, &value, sizeof(T));
+  out.append(bytes, sizeof(T));
+}
+
+std::string headerJson(const RenderPartHeader& h) {
+  nlohmann::json j = {{"kind", h.kind},         {"digest", h.digest},   {"part", h.part},
+                      {"parts", h.parts},       {"device", h.device},   {"chunks", {h.chunkBegin, h.chunkEnd}},
+                      {"source", h.source},     {"project", h.project}, {"options", h.options}};
+  j["frame"] = h.frame ? nlohmann::json(*h.frame) : nlohmann::json(nullptr);
+  return j.dump();
+}
+
+RenderPartHeader parseHeader(const std::string& text, const std::string& file) {
+  try {
+    const nlohmann::json j = nlohmann::json::parse(text);
+    RenderPartHeader h;
+    h.kind = j.at("kind").get<std::string>();
+    h.digest = j.at("digest").get<std::string>();
+    h.part = j.at("part").get<std::int64_t>();
+    h.parts = j.at("parts").get<std::int64_t>();
+    h.device = j.at("device").get<std::string>();
+    h.chunkBegin = j.at("chunks").at(0).get<std::int64_t>();
+    h.chunkEnd = j.at("chunks").at(1).get<std::int64_t>();
+    h.source = j.at("source").get<std::string>();
+    h.project = j.at("project").get<std::string>();
+    h.options = j.at("options").get<std::string>();
+    if (!j.at("frame").is_null()) h.frame = j.at("frame").get<std::int64_t>();
+    if (h.parts < 1 || h.part < 0 || h.part >= h.parts)
+      throw PartFileError(file + " is damaged: its part number is outside 0.." + std::to_string(h.parts - 1));
+    return h;
+  } catch (const nlohmann::json::exception&) {
+    throw PartFileError(file + " is damaged: its header is not the header of a render part");
+  }
+}
+
+/// Every element's byte 0, then every byte 1, ...: the planes of sums and keys whose high bytes
+/// are mostly zero compress far better than the interleaved bytes.
+void shuffle(const std::uint8_t* in, std::uint8_t* out, std::size_t size, std::size_t count) {
+  for (std::size_t b = 0; b < size; ++b)
+    for (std::size_t i = 0; i < count; ++i) out[b * count + i] = in[i * size + b];
+}
+
+void unshuffle(const std::uint8_t* in, std::uint8_t* out, std::size_t size, std::size_t count) {
+  for (std::size_t b = 0; b < size; ++b)
+    for (std::size_t i = 0; i < count; ++i) out[i * size + b] = in[b * count + i];
+}
+
+}  // namespace
+
+std::string renderDigest(const std::string& text) {
+  std::uint64_t a = 0xCBF29CE484222325ull, b = 0x84222325CBF29CE4ull;
+  for (unsigned char c : text) {
+    a = (a ^ c) * 0x100000001B3ull;
+    b = (b ^ (c + 0x9Bu)) * 0x100000001B3ull;
+    b ^= b >> 29;
+  }
+  char out[33];
+  std::snprintf(out, sizeof out, "%016llx%016llx", static_cast<unsigned long long>(a),
+                static_cast<unsigned long long>(b));
+  return out;
+}
+
+// ---------------------------------------------------------------------------------------------
+struct RenderPartWriter::Impl {
+  AtomicFile atomic;
+  std::ofstream file;
+  z_stream z{};
+  std::uint64_t streamBytes = 0;
+  std::uint32_t crc = 0;
+  std::vector<std::uint8_t> scratch, out;
+
+  explicit Impl(const std::filesystem::path& target) : atomic(target), out(1 << 16) {}
+
+  [[noreturn]] void fail() { throw IoError("cannot write " + atomic.target().string() + ": the disk refused the data"); }
+
+  void raw(const void* data, std::size_t bytes) {
+    file.write(static_cast<const char*>(data), std::streamsize(bytes));
+    if (!file) fail();
+  }
+
+  void compress(const void* data, std::size_t bytes, int flush) {
+    crc = std::uint32_t(crc32_z(crc, static_cast<const Bytef*>(data), bytes));
+    streamBytes += bytes;
+    z.next_in = static_cast<Bytef*>(const_cast<void*>(data));
+    z.avail_in = uInt(bytes);
+    do {
+      z.next_out = out.data();
+      z.avail_out = uInt(out.size());
+      if (deflate(&z, flush) == Z_STREAM_ERROR) fail();
+      raw(out.data(), out.size() - z.avail_out);
+    } while (z.avail_out == 0 || z.avail_in > 0);
+  }
+};
+
+RenderPartWriter::RenderPartWriter(const std::filesystem::path& target, const RenderPartHeader& header)
+    : impl_(std::make_unique<Impl>(target)) {
+  Impl& w = *impl_;
+  w.file.open(w.atomic.temporaryPath(), std::ios::binary | std::ios::trunc);
+  if (!w.file) throw IoError("cannot write " + target.string() + ": its folder does not take new files");
+  if (deflateInit(&w.z, 6) != Z_OK) throw IoError("cannot write " + target.string() + ": zlib failed to start");
+  const std::string json = headerJson(header);
+  std::string head(kMagic, sizeof kMagic);
+  putLittle(head, kRenderPartVersion);
+  putLittle(head, std::uint32_t(json.size()));
+  head += json;
+  putLittle(head, std::uint32_t(crc32_z(0, reinterpret_cast<const Bytef*>(json.data()), json.size())));
+  w.raw(head.data(), head.size());
+}
+
+RenderPartWriter::~RenderPartWriter() { deflateEnd(&impl_->z); }
+
+void RenderPartWriter::buffer(const std::string& name, std::size_t elementSize, const void* data, std::size_t count) {
+  Impl& w = *impl_;
+  std::string record;
+  putLittle(record, std::uint32_t(name.size()));
+  record += name;
+  putLittle(record, std::uint32_t(elementSize));
+  putLittle(record, std::uint64_t(count));
+  w.compress(record.data(), record.size(), Z_NO_FLUSH);
+  const auto* bytes = static_cast<const std::uint8_t*>(data);
+  for (std::size_t at = 0; at < count; at += kBlockElements) {
+    const std::size_t n = std::min(kBlockElements, count - at);
+    w.scratch.resize(n * elementSize);
+    shuffle(bytes + at * elementSize, w.scratch.data(), elementSize, n);
+    w.compress(w.scratch.data(), w.scratch.size(), Z_NO_FLUSH);
+  }
+}
+
+void RenderPartWriter::commit() {
+  Impl& w = *impl_;
+  const std::uint32_t end = 0;  // a record with an empty name ends the stream
+  w.compress(&end, sizeof end, Z_FINISH);
+  std::string trailer;
+  putLittle(trailer, w.streamBytes);
+  putLittle(trailer, w.crc);
+  trailer.append(kEndMagic, sizeof kEndMagic);
+  w.raw(trailer.data(), trailer.size());
+  w.file.close();
+  if (!w.file) w.fail();
+  w.atomic.commit();
+}
+
+// ---------------------------------------------------------------------------------------------
+struct RenderPartReader::Impl {
+  std::string name;
+  std::ifstream file;
+  RenderPartHeader header;
+  z_stream z{};
+  bool zOpen = false, streamEnded = false;
+  std::vector<std::uint8_t> in, scratch;
+  std::uint64_t streamBytes = 0;
+  std::uint32_t crc = 0;
+  std::size_t pendingSize = 0, pendingCount = 0;
+  bool endRecordRead = false;
+
+  [[noreturn]] void damaged(const std::string& why) { throw PartFileError(name + " " + why); }
+
+  void rawRead(void* data, std::size_t bytes) {
+    file.read(static_cast<char*>(data), std::streamsize(bytes));
+    if (std::size_t(file.gcount()) != bytes) damaged("is truncated: it ends before its header does");
+  }
+
+  /// Inflates exactly `bytes` bytes of the stream into `data`.
+  void inflateExactly(void* data, std::size_t bytes) {
+    z.next_out = static_cast<Bytef*>(data);
+    z.avail_out = uInt(bytes);
+    while (z.avail_out > 0) {
+      if (streamEnded) damaged("is damaged: its data ends early");
+      if (z.avail_in == 0) {
+        file.read(reinterpret_cast<char*>(in.data()), std::streamsize(in.size()));
+        z.next_in = in.data();
+        z.avail_in = uInt(file.gcount());
+        if (z.avail_in == 0) damaged("is truncated: its data stops in the middle (was its render killed?)");
+      }
+      const int rc = inflate(&z, Z_NO_FLUSH);
+      if (rc == Z_STREAM_END) {
+        streamEnded = true;
+      } else if (rc != Z_OK && rc != Z_BUF_ERROR) {
+        damaged("is damaged: its compressed data does not decode");
+      }
+    }
+    crc = std::uint32_t(crc32_z(crc, static_cast<const Bytef*>(data), bytes));
+    streamBytes += bytes;
+  }
+
+  template <class T>
+  T little() {
+    T value;
+    inflateExactly(&value, sizeof value);
+    return value;
+  }
+};
+
+RenderPartReader::RenderPartReader(const std::filesystem::path& file) : impl_(std::make_unique<Impl>()) {
+  Impl& r = *impl_;
+  r.name = file.string();
+  r.file.open(file, std::ios::binary);
+  if (!r.file) throw PartFileError(r.name + " cannot be opened (is it missing?)");
+  char magic[8] = {};
+  r.file.read(magic, sizeof magic);
+  if (r.file.gcount() != sizeof magic || std::memcmp(magic, kMagic, sizeof kMagic) != 0)
+    r.damaged("is not a GridIFS render part (it does not start with GRIDPART)");
+  std::uint32_t version = 0, length = 0, crc = 0;
+  r.rawRead(&version, 4);
+  if (version != kRenderPartVersion)
+    r.damaged("is a render part of format version " + std::to_string(version) + ", but this gridifs reads version " +
+              std::to_string(kRenderPartVersion));
+  r.rawRead(&length, 4);
+  if (length > kMaxHeaderBytes) r.damaged("is damaged: its header length is absurd");
+  std::string json(length, '\0');
+  r.rawRead(json.data(), length);
+  r.rawRead(&crc, 4);
+  if (crc != std::uint32_t(crc32_z(0, reinterpret_cast<const Bytef*>(json.data()), json.size())))
+    r.damaged("is damaged: its header fails its checksum");
+  r.header = parseHeader(json, r.name);
+  if (inflateInit(&r.z) != Z_OK) r.damaged("cannot be read: zlib failed to start");
+  r.zOpen = true;
+  r.in.resize(1 << 16);
+}
+
+RenderPartReader::~RenderPartReader() {
+  if (impl_->zOpen) inflateEnd(&impl_->z);
+}
+
+const RenderPartHeader& RenderPartReader::header() const { return impl_->header; }
+
+std::size_t RenderPartReader::nextBuffer(const std::string& name, std::size_t elementSize, std::size_t maxCount) {
+  Impl& r = *impl_;
+  const auto nameLength = r.little<std::uint32_t>();
+  if (nameLength == 0 || nameLength > kMaxNameBytes)
+    r.damaged("is damaged: the buffer \"" + name + "\" is missing");
+  std::string got(nameLength, '\0');
+  r.inflateExactly(got.data(), nameLength);
+  const auto size = r.little<std::uint32_t>();
+  const auto count = r.little<std::uint64_t>();
+  if (got != name || size != elementSize)
+    r.damaged("is damaged: it has the buffer \"" + got + "\" where \"" + name + "\" belongs");
+  if (count > maxCount) r.damaged("is damaged: the buffer \"" + name + "\" is larger than the render");
+  r.pendingSize = size;
+  r.pendingCount = std::size_t(count);
+  return std::size_t(count);
+}
+
+void RenderPartReader::readElements(void* data, std::size_t elementSize, std::size_t count) {
+  Impl& r = *impl_;
+  auto* bytes = static_cast<std::uint8_t*>(data);
+  for (std::size_t at = 0; at < count; at += kBlockElements) {
+    const std::size_t n = std::min(kBlockElements, count - at);
+    r.scratch.resize(n * elementSize);
+    r.inflateExactly(r.scratch.data(), r.scratch.size());
+    unshuffle(r.scratch.data(), bytes + at * elementSize, elementSize, n);
+  }
+}
+
+void RenderPartReader::finish() {
+  Impl& r = *impl_;
+  if (!r.endRecordRead && r.little<std::uint32_t>() != 0)
+    r.damaged("is damaged: it has more buffers than a render part of its kind");
+  // The end of the zlib stream: inflate until it says so (no more output is expected).
+  std::uint8_t extra = 0;
+  while (!r.streamEnded) {
+    if (r.z.avail_in == 0) {
+      r.file.read(reinterpret_cast<char*>(r.in.data()), std::streamsize(r.in.size()));
+      r.z.next_in = r.in.data();
+      r.z.avail_in = uInt(r.file.gcount());
+      if (r.z.avail_in == 0) r.damaged("is truncated: its data stops before its end");
+    }
+    r.z.next_out = &extra;
+    r.z.avail_out = 1;
+    const int rc = inflate(&r.z, Z_NO_FLUSH);
+    if (rc == Z_STREAM_END && r.z.avail_out == 1) r.streamEnded = true;
+    else if (rc != Z_OK && rc != Z_BUF_ERROR) r.damaged("is damaged: its compressed data does not decode");
+    else if (r.z.avail_out == 0) r.damaged("is damaged: it has data after its last buffer");
+  }
+  // The trailer: what inflate left of the last read, then the rest of the file.
+  std::string rest(reinterpret_cast<const char*>(r.z.next_in), r.z.avail_in);
+  char more[64];
+  while (r.file.read(more, sizeof more) || r.file.gcount() > 0) {
+    rest.append(more, std::size_t(r.file.gcount()));
+    if (rest.size() > 20) break;
+  }
+  if (rest.size() != 20 || std::memcmp(rest.data() + 12, kEndMagic, sizeof kEndMagic) != 0)
+    r.damaged(rest.size() < 20 ? "is truncated: its trailer is missing" : "is damaged: it has bytes after its end");
+  std::uint64_t length = 0;
+  std::uint32_t crc = 0;
+  std::memcpy(&length, rest.data(), 8);
+  std::memcpy(&crc, rest.data() + 8, 4);
+  if (length != r.streamBytes || crc != r.crc) r.damaged("is damaged: its data fails its checksum");
+}
+
+void RenderPartReader::skipRest() {
+  Impl& r = *impl_;
+  for (;;) {
+    const auto nameLength = r.little<std::uint32_t>();
+    if (nameLength == 0) break;
+    if (nameLength > kMaxNameBytes) r.damaged("is damaged: a buffer's name is absurdly long");
+    std::string got(nameLength, '\0');
+    r.inflateExactly(got.data(), nameLength);
+    const auto size = r.little<std::uint32_t>();
+    const auto count = r.little<std::uint64_t>();
+    if (size == 0 || size > 64 || count > (std::uint64_t(1) << 36)) r.damaged("is damaged: a buffer's size is absurd");
+    for (std::uint64_t at = 0; at < count; at += kBlockElements) {
+      r.scratch.resize(std::size_t(std::min<std::uint64_t>(kBlockElements, count - at)) * size);
+      r.inflateExactly(r.scratch.data(), r.scratch.size());
+    }
+  }
+  r.endRecordRead = true;
+  finish();
+}
+
+RenderPartHeader verifyRenderPart(const std::filesystem::path& file) {
+  RenderPartReader reader(file);
+  reader.skipRest();
+  return reader.header();
+}
+
+}  // namespace gridifs
