@@ -25,8 +25,10 @@ gridifs_install_deps() {
     DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
   fi
 }
+# One configuration for scripts/run and scripts/test (warnings are errors in both), so that the
+# second of them reuses the first one's build instead of rebuilding everything with other flags.
 gridifs_build() {
   local dir="$1"; shift
-  cmake -S "$GRIDIFS_ROOT" -B "$dir" -DCMAKE_BUILD_TYPE=Release "$@" >/dev/null
+  cmake -S "$GRIDIFS_ROOT" -B "$dir" -DCMAKE_BUILD_TYPE=Release -DGRIDIFS_WERROR=ON "$@" >/dev/null
   cmake --build "$dir" -j"$(nproc)"
 }
