@@ -7,9 +7,11 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <sstream>
 
 #include "base/errors.h"
 #include "base/text_format.h"
+#include "farm/farm_job.h"
 #include "render/chaos_renderer.h"
 #include "render/image_file.h"
 #include "ui/animation_frames.h"
@@ -38,7 +40,10 @@ void RenderAnimationDialog::openFor(const ModellerState& state) {
     if (!state.document.path().empty()) {
       const fs::path folder = state.document.path().parent_path() / (state.document.path().stem().string() + "_frames");
       pattern_ = (folder / (state.document.path().stem().string() + "_%04d.png")).string();
+      farmDir_ = (state.document.path().parent_path() / (state.document.path().stem().string() + "_farm")).string();
     }
+    slurm_ = slurmAvailable();
+    farmStatus_.clear();
     phase_ = TaskPhase::Options;
     message_.clear();
   }
@@ -169,6 +174,7 @@ void RenderAnimationDialog::draw(ModellerState& state) {
   }
   ImGui::TextDisabled("Display mode: %s (as the preview).", displayModeName(state.document.project().render.mode));
 
+  drawFarm(state);
   if (busy) {
     char overlay[64];
     std::snprintf(overlay, sizeof overlay, "frame %d of %d", std::min(framesDone_.load() + 1, frameCount_),
@@ -179,8 +185,22 @@ void RenderAnimationDialog::draw(ModellerState& state) {
     if (ImGui::Button("Cancel", ImVec2(-1, 0))) task_.cancel();
     state.probe.item("animation.cancel");
   } else {
-    if (ImGui::Button("Render", ImVec2(em * 7.0f, 0))) start(state);
-    state.probe.item("animation.render");
+    if (!farm_) {
+      if (ImGui::Button("Render", ImVec2(em * 7.0f, 0))) start(state);
+      state.probe.item("animation.render");
+    } else {
+      if (ImGui::Button("Write job", ImVec2(em * 7.0f, 0)) && writeFarm(state, false))
+        message_ = "Wrote the job folder " + farmDir_ + (slurm_ ? "." : "; submit it on the cluster (docs/FARM.md).");
+      state.probe.item("animation.farm_write");
+      ImGui::SameLine();
+      ImGui::BeginDisabled(!slurm_);
+      if (ImGui::Button("Submit", ImVec2(em * 7.0f, 0))) writeFarm(state, true);
+      ImGui::EndDisabled();
+      state.probe.item("animation.farm_submit");
+      ImGui::SameLine();
+      if (ImGui::Button("Status", ImVec2(em * 7.0f, 0))) refreshFarmStatus();
+      state.probe.item("animation.farm_status");
+    }
     ImGui::SameLine();
     if (ImGui::Button("Close", ImVec2(em * 7.0f, 0))) {
       open_ = false;
@@ -197,8 +217,98 @@ void RenderAnimationDialog::draw(ModellerState& state) {
   endTaskModal(keepOpen, open_);
 }
 
+void RenderAnimationDialog::drawFarm(ModellerState& state) {
+  const float em = ImGui::GetFontSize();
+  ImGui::Spacing();
+  ImGui::BeginDisabled(running());
+  ImGui::Checkbox("On a Slurm cluster", &farm_);
+  state.probe.item("animation.farm");
+  contextHelp(state, "Split every frame into parts that Slurm runs on the cluster's nodes, then merge them: "
+                     "the frames are the same images, bit for bit");
+  if (farm_) {
+    ImGui::SetNextItemWidth(em * 6.0f);
+    if (ImGui::InputInt("Parts per frame", &farmParts_)) farmParts_ = std::clamp(farmParts_, 1, int(kMaxFarmParts));
+    state.probe.item("animation.farm_parts");
+    ImGui::SetNextItemWidth(-em * 6.0f);
+    ImGui::InputText("Job folder", &farmDir_);
+    state.probe.item("animation.farm_dir");
+    contextHelp(state, "On a filesystem the cluster's nodes share, like the project and the output");
+    ImGui::SetNextItemWidth(-em * 6.0f);
+    ImGui::InputTextWithHint("sbatch", "--partition=render --time=2:00:00", &farmSbatch_);
+    state.probe.item("animation.farm_sbatch");
+    if (!slurm_) ImGui::TextDisabled("sbatch is not on the PATH here: write the job and submit it on the cluster.");
+  }
+  ImGui::EndDisabled();
+  if (farm_ && !farmStatus_.empty()) {
+    // describeFarmStatus: one line per frame, then the summary and the queued jobs. The summary
+    // first; the frames in a box of their own, which scrolls for long animations.
+    std::size_t frames = 0;
+    while (frames < farmStatus_.size() && (farmStatus_[frames].rfind("frame ", 0) == 0 ||
+                                           farmStatus_[frames].rfind("still", 0) == 0))
+      ++frames;
+    for (std::size_t i = frames; i < farmStatus_.size(); ++i) ImGui::TextWrapped("%s", farmStatus_[i].c_str());
+    const float lines = float(std::min<std::size_t>(frames, 8));
+    ImGui::BeginChild("farmframes", ImVec2(0, lines * ImGui::GetTextLineHeightWithSpacing() + em * 0.5f), true);
+    for (std::size_t i = 0; i < frames; ++i) ImGui::TextUnformatted(farmStatus_[i].c_str());
+    ImGui::EndChild();
+  }
+}
+
+bool RenderAnimationDialog::writeFarm(ModellerState& state, bool submit) {
+  message_.clear();
+  // The tasks render the file on disk, so it must hold what the artist sees.
+  if (state.document.path().empty() || state.document.dirty()) {
+    message_ = "Cannot write the job: save the project first (the cluster renders the saved file).";
+    return false;
+  }
+  if (auto problem = checkFramePattern(pattern_)) {
+    message_ = "Cannot write the job: " + *problem + ".";
+    return false;
+  }
+  FarmRequest request;
+  request.project = state.document.path();
+  request.output = pattern_;
+  request.firstFrame = first_;
+  request.lastFrame = last_;
+  request.parts = farmParts_;
+  request.dir = farmDir_;
+  request.renderOptions = {"--width", std::to_string(width_), "--height", std::to_string(height_), "--samples",
+                           std::to_string(samples_)};
+  std::istringstream words(farmSbatch_);
+  for (std::string w; words >> w;) request.sbatchOptions.push_back(w);
+  std::error_code ec;
+  request.executable = fs::read_symlink("/proc/self/exe", ec);
+  const fs::path outputs = fs::path(frameFileName(pattern_, first_)).parent_path();
+  if (!outputs.empty()) fs::create_directories(outputs, ec);
+  try {
+    writeFarmJob(request);
+    if (submit) {
+      const FarmPlan plan = planFarm(readFarmStatus(farmDir_, false));
+      const std::vector<std::string> jobs = submitFarm(farmDir_, plan);
+      message_ = jobs.empty() ? "Nothing to submit: every part is rendered and every frame merged."
+                              : "Submitted " + std::to_string(jobs.size()) + " job" + (jobs.size() == 1 ? "" : "s") +
+                                    " (" + jobs.front() + (jobs.size() > 1 ? ", ..." : "") + ").";
+      state.info(message_);
+    }
+  } catch (const std::exception& e) {
+    message_ = std::string("Cannot write the job: ") + e.what();
+    return false;
+  }
+  refreshFarmStatus();
+  return true;
+}
+
+void RenderAnimationDialog::refreshFarmStatus() {
+  try {
+    farmStatus_ = describeFarmStatus(readFarmStatus(farmDir_, slurm_));
+  } catch (const std::exception& e) {
+    farmStatus_ = {e.what()};
+  }
+}
+
 nlohmann::json RenderAnimationDialog::probeJson() const {
   return {{"open", open_},
+          {"farm_status", farmStatus_},
           {"running", running()},
           {"phase", taskPhaseName(phase_)},
           {"progress", task_.progress()},

@@ -2,11 +2,14 @@
 // File › Render animation…: the plan (frames A..B, their times, size, samples, output names),
 // the render of every frame on a worker thread with a progress bar over all frames that can be
 // cancelled, each frame written atomically (ui/animation_frames.h). The worker renders a copy of
-// the project taken when it starts, so the artist may go on editing.
+// the project taken when it starts, so the artist may go on editing. Or, on a Slurm cluster, the
+// same frames split into parts: the job folder written (core/farm/farm_job.h), submitted when
+// sbatch is on the PATH, and the folder's status shown.
 #include <atomic>
 #include <cstdint>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "ui/dialog_task.h"
 #include "ui/modeller_state.h"
@@ -27,6 +30,10 @@ class RenderAnimationDialog {
  private:
   void openFor(const ModellerState& state);
   void start(ModellerState& state);
+  void drawFarm(ModellerState& state);
+  /// Writes the job folder of the current settings (and submits it); false with message_ set.
+  bool writeFarm(ModellerState& state, bool submit);
+  void refreshFarmStatus();
 
   bool open_ = false, justOpened_ = false;
   std::string pattern_ = "frames/frame_%04d.png";
@@ -36,6 +43,11 @@ class RenderAnimationDialog {
   std::atomic<int> framesDone_{0};
   int frameCount_ = 0;
   std::string message_, lastFile_;
+  // The render farm (Slurm): parts per frame, the job folder, extra #SBATCH options.
+  bool farm_ = false, slurm_ = false;
+  int farmParts_ = 4;
+  std::string farmDir_, farmSbatch_;
+  std::vector<std::string> farmStatus_;
   DialogTask task_;  // progress over all frames; last: destroyed first, it joins the worker
 };
 

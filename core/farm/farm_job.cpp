@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -451,9 +452,13 @@ FarmPlan planFarm(const FarmStatus& s) {
 }
 
 bool slurmAvailable() {
-  int status = 0;
-  capture({"sbatch", "--version"}, status);
-  return status == 0;
+  // On the PATH is enough: `sbatch --version` itself fails on a machine without a cluster
+  // configuration, and submitting then says so in one sentence.
+  const char* path = std::getenv("PATH");
+  std::istringstream folders(path ? path : "");
+  for (std::string folder; std::getline(folders, folder, ':');)
+    if (!folder.empty() && ::access((fs::path(folder) / "sbatch").c_str(), X_OK) == 0) return true;
+  return false;
 }
 
 std::vector<std::string> farmSubmitCommands(const fs::path& dir, const FarmPlan& plan) {

@@ -164,3 +164,36 @@ TEST(TimelineGui, RenderAnimationWritesEveryFrame) {
   EXPECT_GT(meanAbsDifference(frames[0], frames[4]), 1.0);
   EXPECT_GT(meanAbsDifference(frames[0], frames[1]), 0.2);
 }
+
+TEST(TimelineGui, RenderAnimationOnASlurmClusterWritesTheJobFolderAndShowsItsStatus) {
+  if (!haveDisplay()) GTEST_SKIP() << "no X display (run under xvfb-run)";
+  TempFolder home;
+  App app(home, {turningCopy(home, 4.0, 1.0, 96).string()});
+  nlohmann::json probe = app.waitForPreview();
+  focusWindow();
+  clickAt(probe["window"]["x"].get<int>() + 18, probe["window"]["y"].get<int>() + 9);  // File
+  const std::optional<Rect> item = app.waitForStableRect("menu.render_animation");
+  ASSERT_TRUE(item) << "the File menu did not open";
+  clickRect(*item);
+  const std::optional<Rect> farm = app.waitForStableRect("animation.farm");
+  ASSERT_TRUE(farm) << "the dialog did not open";
+  clickAt(farm->x + 8, farm->y + farm->h / 2);  // the checkbox itself
+  const std::optional<Rect> write = app.waitForStableRect("animation.farm_write");
+  ASSERT_TRUE(write) << "the farm's buttons did not appear";
+  clickRect(*write);
+  // Frames 0..4 in the default 4 parts, beside the project: turning_farm/.
+  const fs::path job = home.path / "turning_farm";
+  probe = app.waitFor([](const nlohmann::json& j) { return !j["render_animation"]["farm_status"].empty(); }, 20s);
+  const auto& status = probe["render_animation"]["farm_status"];
+  ASSERT_FALSE(status.empty()) << probe["render_animation"].dump();
+  EXPECT_EQ(status[0].get<std::string>().rfind("frame 0: 0/4 parts, not merged", 0), 0u) << status.dump();
+  EXPECT_NE(status.dump().find("0 of 5 frames have every part, 0 merged"), std::string::npos) << status.dump();
+  ASSERT_TRUE(fs::exists(job / "farm.json"));
+  const std::string script = [&] {
+    std::ifstream in(job / "render.sbatch");
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  }();
+  EXPECT_NE(script.find("turning.gridifs"), std::string::npos);
+  EXPECT_NE(script.find("--samples"), std::string::npos);
+  EXPECT_NE(script.find("parts=4"), std::string::npos);
+}
