@@ -28,6 +28,17 @@ std::size_t keyCount(const nlohmann::json& probe, const std::string& path) {
   return tracks.contains(path) ? tracks[path].size() : 0;
 }
 
+/// Waits for the preview, then opens File › Render animation… and returns the probe.
+nlohmann::json openRenderAnimation(App& app) {
+  nlohmann::json probe = app.waitForPreview();
+  focusWindow();
+  clickAt(probe["window"]["x"].get<int>() + 18, probe["window"]["y"].get<int>() + 9);  // File
+  const std::optional<Rect> item = app.waitForStableRect("menu.render_animation");
+  EXPECT_TRUE(item) << "the File menu did not open";
+  if (item) clickRect(*item);
+  return probe;
+}
+
 }  // namespace
 
 TEST(TimelineGui, ScrubbingMovesTheTimeAndThePreviewFollows) {
@@ -132,12 +143,7 @@ TEST(TimelineGui, RenderAnimationWritesEveryFrame) {
   TempFolder home;
   // 4 fps over one second: frames 0..4.
   App app(home, {turningCopy(home, 4.0, 1.0, 96).string()});
-  nlohmann::json probe = app.waitForPreview();
-  focusWindow();
-  clickAt(probe["window"]["x"].get<int>() + 18, probe["window"]["y"].get<int>() + 9);  // File
-  const std::optional<Rect> item = app.waitForStableRect("menu.render_animation");
-  ASSERT_TRUE(item) << "the File menu did not open";
-  clickRect(*item);
+  nlohmann::json probe = openRenderAnimation(app);
   const std::optional<Rect> render = app.waitForStableRect("animation.render");
   ASSERT_TRUE(render) << "the dialog did not open";
   clickRect(*render);
@@ -169,12 +175,7 @@ TEST(TimelineGui, RenderAnimationOnASlurmClusterWritesTheJobFolderAndShowsItsSta
   if (!haveDisplay()) GTEST_SKIP() << "no X display (run under xvfb-run)";
   TempFolder home;
   App app(home, {turningCopy(home, 4.0, 1.0, 96).string()});
-  nlohmann::json probe = app.waitForPreview();
-  focusWindow();
-  clickAt(probe["window"]["x"].get<int>() + 18, probe["window"]["y"].get<int>() + 9);  // File
-  const std::optional<Rect> item = app.waitForStableRect("menu.render_animation");
-  ASSERT_TRUE(item) << "the File menu did not open";
-  clickRect(*item);
+  nlohmann::json probe = openRenderAnimation(app);
   const std::optional<Rect> farm = app.waitForStableRect("animation.farm");
   ASSERT_TRUE(farm) << "the dialog did not open";
   clickAt(farm->x + 8, farm->y + farm->h / 2);  // the checkbox itself
