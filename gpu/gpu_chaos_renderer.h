@@ -50,11 +50,13 @@ class GpuChaosRenderer final : public Renderer {
   /// invalid job and GpuUnavailable when the device cannot hold it (then nothing is rendering).
   std::uint64_t restart(std::shared_ptr<const CompiledIfs> ifs, const RenderJob& job) override;
   void stop() override;
+  /// The current generation; stats() counts the samples the renderer thread has dispatched for it.
+  std::uint64_t generation() const override;
+  RenderStats stats() const override;
+  /// Pausing holds the renderer thread between dispatches.
   void pause() override;
   void resume() override;
   bool paused() const override;
-  std::uint64_t generation() const override;
-  RenderStats stats() const override;
   void snapshot(RenderImage& out, const DisplaySettings& display) const override;
   /// The staged read-back, undeveloped (render/accumulation.h); 32-bit keys without 64-bit atomics.
   void accumulation(Accumulation& out) const override;

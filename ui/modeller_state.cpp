@@ -16,6 +16,15 @@ ModellerState::ModellerState() : document(defaultNewProject()) {
   renderThreads = int(std::max(1u, cores - 1));
 }
 
+void ModellerState::forgetDocumentViewState() {
+  activeFunction = FunctionRef(0);
+  activeOp = -1;
+  selections.clear();
+  finalSelection.clear();
+  finalFunctionMessage.clear();
+  clampIndices();
+}
+
 void ModellerState::clampIndices() {
   const Project& project = document.project();
   const int last = int(project.functions.size()) - 1;

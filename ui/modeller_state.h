@@ -39,6 +39,9 @@ class ModellerState {
   /// Keeps the indices valid after any document change (undo can remove functions or ops, or
   /// the final function: the last function is then active).
   void clampIndices();
+  /// After the document was replaced (new, open, import, recovery): the first function active,
+  /// no operation, no selections, no final-function message.
+  void forgetDocumentViewState();
   /// The active function (call clampIndices() first after a document change).
   const Function& function() const { return activeFunction.in(document.project()); }
   /// Makes `function` active, with no active op when it was not already.

@@ -76,12 +76,7 @@ bool ProjectFiles::load(const fs::path& file) {
   try {
     Project project = loadProject(file);
     state_.document.reset(std::move(project), fs::absolute(file));
-    state_.activeFunction = FunctionRef(0);
-    state_.activeOp = -1;
-    state_.selections.clear();
-    state_.finalSelection.clear();
-    state_.finalFunctionMessage.clear();
-    state_.clampIndices();
+    state_.forgetDocumentViewState();
     addRecent(fs::absolute(file));
     state_.info("Opened " + file.string());
     return true;
@@ -126,12 +121,7 @@ void ProjectFiles::request(Action action) {
 void ProjectFiles::perform(const Action& action) {
   if (std::holds_alternative<New>(action)) {
     state_.document.reset(defaultNewProject());
-    state_.activeFunction = FunctionRef(0);
-    state_.activeOp = -1;
-    state_.selections.clear();
-    state_.finalSelection.clear();
-    state_.finalFunctionMessage.clear();
-    state_.clampIndices();
+    state_.forgetDocumentViewState();
     state_.info("New project");
   } else if (const auto* open = std::get_if<Open>(&action)) {
     if (open->file) load(*open->file);
@@ -159,12 +149,7 @@ bool ProjectFiles::importFlame(const fs::path& file, const std::string& genome) 
     FlameFileImport imported = importFlameFile(file, genome, folders_.state / "palettes");
     state_.document.reset(defaultNewProject());
     state_.document.edit("Import flame", [&](Project& p) { p = std::move(imported.project); });
-    state_.activeFunction = FunctionRef(0);
-    state_.activeOp = -1;
-    state_.selections.clear();
-    state_.finalSelection.clear();
-    state_.finalFunctionMessage.clear();
-    state_.clampIndices();
+    state_.forgetDocumentViewState();
     std::string message = "Imported " + imported.description;
     for (const std::string& w : imported.warnings) message += "; " + w;
     state_.info(message);
@@ -368,11 +353,7 @@ void ProjectFiles::draw(EditQueue& edits) {
           }
         }
         state_.document.reset(base, original);
-        state_.activeFunction = FunctionRef(0);
-        state_.activeOp = -1;
-        state_.selections.clear();
-        state_.finalSelection.clear();
-        state_.finalFunctionMessage.clear();
+        state_.forgetDocumentViewState();
         edits.commit("Recover unsaved work", [recovered](Project& p) { p = recovered; });
         state_.info("Recovered unsaved work from " + r.when + "; save it to keep it.");
       } catch (const std::exception& e) {

@@ -5,6 +5,8 @@
 // P·λ = Σ_j λ_j p_j. The compiled rows also hold (T·P)_i, so the plotted point comes out of the
 // same pass over the rows: q = Σ_i λ_i (T·P)_i. Colour, skip, escape, the final function and the
 // plotters are those of chaos_kernel.h.
+#include <vector>
+
 #include "render/chaos_kernel.h"
 
 namespace gridifs::kernel {
@@ -23,6 +25,31 @@ inline void attachBarycentric(HotIfs& hot, const CompiledIfs& compiled) {
       throw ModelError("functions", "a compiled matrix does not match the control points");
   hot.barycentricSize = compiled.barycentricSize;
   hot.barycentricBlocks = compiled.barycentricPad / 8;
+}
+
+/// The kernels' view of a compiled IFS: `hot` receives the functions' loop forms, then the final
+/// function's, and the returned HotIfs points into `hot` and `compiled` (both must outlive it).
+/// Throws ModelError when the compiled transition rows or free-form space do not fit.
+inline HotIfs makeHotIfs(const CompiledIfs& compiled, std::vector<HotFunction>& hot, int skip, float escapeBound) {
+  hot.clear();
+  for (const CompiledFunction& f : compiled.functions) hot.push_back(makeHot(f));
+  if (compiled.finalFunction) hot.push_back(makeHot(*compiled.finalFunction));
+  HotIfs ifs;
+  ifs.functions = hot.data();
+  ifs.alias = compiled.alias.data();
+  if (!compiled.transitionWalk.empty()) {
+    if (compiled.transitionWalk.size() != (compiled.functions.size() + 1) * compiled.functions.size())
+      throw ModelError("transitions", "the compiled transition rows do not match the functions");
+    ifs.transitionWalk = compiled.transitionWalk.data();
+  }
+  ifs.count = std::uint32_t(compiled.functions.size());
+  ifs.finalFunction = compiled.finalFunction ? &hot.back() : nullptr;
+  ifs.skip = skip;
+  ifs.escapeBound = escapeBound;
+  ifs.restartInterval = compiled.restartInterval;
+  for (const CompiledFunction& f : compiled.functions) ifs.condensation |= !f.points.empty();
+  attachBarycentric(ifs, compiled);
+  return ifs;
 }
 
 /// The barycentric coordinates of one worker's kLanes chains (padded entries stay 0).
@@ -62,14 +89,8 @@ template <int kBlocks, bool kRestricted, class Plot>
   if constexpr (kRestricted)
     if (ifs.restartInterval && ++st.age[lane] > ifs.restartInterval)
       bs.restartLane(st, lane, ifs.skip, ifs.barycentricSize);
-  std::uint32_t index, nextRow = 0;
-  if constexpr (kRestricted) {
-    nextRow = st.row[lane];
-    index = ifs.chooseAfter(nextRow, st.rng.next());
-  } else {
-    index = ifs.choose(st.rng.next());
-  }
-  const HotFunction& f = ifs.functions[index];
+  std::uint32_t nextRow = kRestricted ? st.row[lane] : 0;
+  const HotFunction& f = ifs.functions[ifs.pick<kRestricted>(nextRow, st.rng.next())];
   float* lambda = bs.lambda[lane];
   v8f next[kBlocks] = {};
   v4f q = {};
@@ -98,23 +119,7 @@ template <int kBlocks, bool kRestricted, class Plot>
     return 0;
   }
   std::memcpy(lambda, next, sizeof next);
-  st.p[lane] = q;
-  st.color[lane] = col;
-  if constexpr (kRestricted) st.row[lane] = nextRow;
-  if (st.skipLeft[lane] > 0) {
-    --st.skipLeft[lane];
-    return 0;
-  }
-  if (ifs.finalFunction) {
-    const HotFunction& g = *ifs.finalFunction;
-    const v4f r = apply(g, q);
-    if (!inBounds(r, ifs.escapeBound)) [[unlikely]] {
-      ++bad;
-      return 0;
-    }
-    return plot(r, col + (g.color - col) * g.speed);
-  }
-  return plot(q, col);
+  return advanceAndPlot<kRestricted>(st, lane, ifs, plot, bad, q, col, nextRow);
 }
 
 template <int kBlocks, bool kRestricted, class Plot>
@@ -158,12 +163,7 @@ template <class Plot>
       plotted = runBarycentricBlocks<8>(local, bs, ifs, count, plot, bad);
       break;
   }
-  if constexpr (requires { plot.flush(); }) plot.flush();
-  if constexpr (requires { plot.takePlotted(); }) plotted += plot.takePlotted();  // chunked plotters count late
-  st = local;
-  counters.samples += count;
-  counters.bad += bad;
-  counters.plotted += plotted;
+  finishRun(st, local, plot, count, bad, plotted, counters);
 }
 
 }  // namespace gridifs::kernel

@@ -227,6 +227,15 @@ struct HotIfs {
     const AliasEntry e = alias[column];
     return std::uint32_t(r) < e.threshold ? column : e.alias;
   }
+  /// The next function of a lane: by the transition row at `row` (kRestricted: `row` becomes the
+  /// row after that function) or by weight alone. One random number either way.
+  template <bool kRestricted>
+  [[gnu::always_inline]] std::uint32_t pick(std::uint32_t& row, std::uint64_t r) const {
+    if constexpr (kRestricted)
+      return chooseAfter(row, r);
+    else
+      return choose(r);
+  }
   /// The next function by the transition row at `row`, which becomes the row after that function.
   /// The same draws and choices as an alias table per row (choose()), without a multiply or a
   /// branch on the row: the step's latency stays off the chain of points.
@@ -243,39 +252,12 @@ struct ChainCounters {
   std::int64_t samples = 0, bad = 0, plotted = 0;
 };
 
-/// One iteration of one lane; returns what the plotter returned (1 when it plotted the point at once). kRestricted: walk the
-/// transition matrix's Markov chain (Thollot et al. §3.2) instead of independent choices.
-/// kCondensation: a function with points is Barnsley's condensation map (Sokolov & Gentil, §3.1):
-/// the point jumps to a uniformly random sample of its set.
-template <bool kRestricted, bool kRestarts, bool kCondensation = false, class Plot>
-[[gnu::always_inline]] inline int stepLane(ChainState& st, int lane, const HotIfs& ifs, Plot& plot, std::int64_t& bad) {
-  if constexpr (kRestarts)
-    if (++st.age[lane] > ifs.restartInterval) st.restartLane(lane, ifs.skip);
-  std::uint32_t index, nextRow = 0;
-  if constexpr (kRestricted) {
-    nextRow = st.row[lane];
-    index = ifs.chooseAfter(nextRow, st.rng.next());
-  } else {
-    index = ifs.choose(st.rng.next());
-  }
-  const HotFunction& f = ifs.functions[index];
-  v4f p;
-  if constexpr (kCondensation) {
-    if (f.points) {
-      const std::uint64_t r = std::uint32_t(st.rng.next());
-      p = load4(f.points + 4 * ((r * f.pointCount) >> 32));
-    } else {
-      p = apply(f, st.p[lane]);
-    }
-  } else {
-    p = apply(f, st.p[lane]);
-  }
-  const v4f col = st.color[lane] + (f.color - st.color[lane]) * f.speed;  // Draves & Reckase 2003, §5: c = mix(c, c_i, speed)
-  if (!inBounds(p, ifs.escapeBound)) [[unlikely]] {
-    ++bad;
-    st.restartLane(lane, ifs.skip);
-    return 0;
-  }
+/// The end of every step, for grid and free-form chains alike: the lane moves to p with its colour
+/// (and transition row), and past `skip` the point goes to the plotter — through the final
+/// function (not in the loop) when there is one. Returns what the plotter returned.
+template <bool kRestricted, class Plot>
+[[gnu::always_inline]] inline int advanceAndPlot(ChainState& st, int lane, const HotIfs& ifs, Plot& plot,
+                                                 std::int64_t& bad, v4f p, v4f col, std::uint32_t nextRow) {
   st.p[lane] = p;
   st.color[lane] = col;
   if constexpr (kRestricted) st.row[lane] = nextRow;
@@ -293,6 +275,49 @@ template <bool kRestricted, bool kRestarts, bool kCondensation = false, class Pl
     return plot(q, col + (g.color - col) * g.speed);
   }
   return plot(p, col);
+}
+
+/// One iteration of one lane; returns what the plotter returned (1 when it plotted the point at once). kRestricted: walk the
+/// transition matrix's Markov chain (Thollot et al. §3.2) instead of independent choices.
+/// kCondensation: a function with points is Barnsley's condensation map (Sokolov & Gentil, §3.1):
+/// the point jumps to a uniformly random sample of its set.
+template <bool kRestricted, bool kRestarts, bool kCondensation = false, class Plot>
+[[gnu::always_inline]] inline int stepLane(ChainState& st, int lane, const HotIfs& ifs, Plot& plot, std::int64_t& bad) {
+  if constexpr (kRestarts)
+    if (++st.age[lane] > ifs.restartInterval) st.restartLane(lane, ifs.skip);
+  std::uint32_t nextRow = kRestricted ? st.row[lane] : 0;
+  const HotFunction& f = ifs.functions[ifs.pick<kRestricted>(nextRow, st.rng.next())];
+  v4f p;
+  if constexpr (kCondensation) {
+    if (f.points) {
+      const std::uint64_t r = std::uint32_t(st.rng.next());
+      p = load4(f.points + 4 * ((r * f.pointCount) >> 32));
+    } else {
+      p = apply(f, st.p[lane]);
+    }
+  } else {
+    p = apply(f, st.p[lane]);
+  }
+  const v4f col = st.color[lane] + (f.color - st.color[lane]) * f.speed;  // Draves & Reckase 2003, §5: c = mix(c, c_i, speed)
+  if (!inBounds(p, ifs.escapeBound)) [[unlikely]] {
+    ++bad;
+    st.restartLane(lane, ifs.skip);
+    return 0;
+  }
+  return advanceAndPlot<kRestricted>(st, lane, ifs, plot, bad, p, col, nextRow);
+}
+
+/// The end of a run of a worker's chains (grid and free-form alike): the plotter's last chunk
+/// drained and counted, the chains' state stored, the counters updated.
+template <class Plot>
+[[gnu::always_inline]] inline void finishRun(ChainState& st, const ChainState& local, Plot& plot, std::int64_t count,
+                                             std::int64_t bad, std::int64_t plotted, ChainCounters& counters) {
+  if constexpr (requires { plot.flush(); }) plot.flush();
+  if constexpr (requires { plot.takePlotted(); }) plotted += plot.takePlotted();  // chunked plotters count late
+  st = local;
+  counters.samples += count;
+  counters.bad += bad;
+  counters.plotted += plotted;
 }
 
 /// Runs `count` iterations of the worker's chains (lane n % kLanes for the n-th one). `plot(q, color)`
@@ -338,12 +363,7 @@ template <class Plot>
     }
     for (int l = 0; l < int(count % kLanes); ++l) plotted += stepLane<false, false>(local, l, ifs, plot, bad);
   }
-  if constexpr (requires { plot.flush(); }) plot.flush();
-  if constexpr (requires { plot.takePlotted(); }) plotted += plot.takePlotted();  // chunked plotters count late
-  st = local;
-  counters.samples += count;
-  counters.bad += bad;
-  counters.plotted += plotted;
+  finishRun(st, local, plot, count, bad, plotted, counters);
 }
 
 /// Packs r g b c in [0, 1] into 4 bytes (r in the low byte).

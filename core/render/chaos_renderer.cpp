@@ -80,22 +80,7 @@ struct PreparedJob {
     nextChunk = std::make_shared<std::atomic<std::int64_t>>(chunks.begin);
     if (ifs->functions.empty() || ifs->alias.size() != ifs->functions.size())
       throw ModelError("functions", "no unmuted function has a positive weight");
-    for (const CompiledFunction& f : ifs->functions) hot.push_back(kernel::makeHot(f));
-    if (ifs->finalFunction) hot.push_back(kernel::makeHot(*ifs->finalFunction));
-    hotIfs.functions = hot.data();
-    hotIfs.alias = ifs->alias.data();
-    if (!ifs->transitionAlias.empty()) {
-      if (ifs->transitionWalk.size() != (ifs->functions.size() + 1) * ifs->functions.size())
-        throw ModelError("transitions", "the compiled transition rows do not match the functions");
-      hotIfs.transitionWalk = ifs->transitionWalk.data();
-    }
-    hotIfs.count = std::uint32_t(ifs->functions.size());
-    hotIfs.finalFunction = ifs->finalFunction ? &hot.back() : nullptr;
-    hotIfs.skip = job.skip;
-    hotIfs.escapeBound = limits::kEscapeBound;
-    hotIfs.restartInterval = ifs->restartInterval;
-    for (const CompiledFunction& f : ifs->functions) hotIfs.condensation |= !f.points.empty();
-    kernel::attachBarycentric(hotIfs, *ifs);
+    hotIfs = kernel::makeHotIfs(*ifs, hot, job.skip, limits::kEscapeBound);
     camera = kernel::makeHotCamera(OrbitCamera(job.camera, job.width, job.height));
     if (job.dofAperture > 0.0) {
       const OrbitCamera orbit(job.camera, job.width, job.height);

@@ -224,19 +224,7 @@ VoxelAccumulation accumulateVoxels(const Project& project, const VolumeJob& job)
   const VoxelLattice lattice{settings.resolution};
   const auto compiled = compileIfs(project, makeCondensationSampler(project, job.projectFolder));
   std::vector<kernel::HotFunction> hot;
-  for (const CompiledFunction& f : compiled->functions) hot.push_back(kernel::makeHot(f));
-  if (compiled->finalFunction) hot.push_back(kernel::makeHot(*compiled->finalFunction));
-  kernel::HotIfs ifs;
-  ifs.functions = hot.data();
-  ifs.alias = compiled->alias.data();
-  ifs.transitionWalk = compiled->transitionWalk.empty() ? nullptr : compiled->transitionWalk.data();
-  ifs.count = std::uint32_t(compiled->functions.size());
-  ifs.finalFunction = compiled->finalFunction ? &hot.back() : nullptr;
-  ifs.skip = settings.skip;
-  ifs.escapeBound = limits::kEscapeBound;
-  ifs.restartInterval = compiled->restartInterval;
-  for (const CompiledFunction& f : compiled->functions) ifs.condensation |= !f.points.empty();
-  kernel::attachBarycentric(ifs, *compiled);
+  const kernel::HotIfs ifs = kernel::makeHotIfs(*compiled, hot, settings.skip, limits::kEscapeBound);
 
   VoxelAccumulation acc;
   acc.resolution = settings.resolution;

@@ -106,11 +106,7 @@ void runKernelBenchmark(benchmark::State& state, int variant, bool flush, bool f
   const auto compiled = compileIfs(scene);
   const auto& ifs = *compiled;
   std::vector<kernel::HotFunction> hot;
-  for (const auto& f : ifs.functions) hot.push_back(kernel::makeHot(f));
-  kernel::HotIfs hotIfs;
-  hotIfs.functions = hot.data();
-  hotIfs.alias = ifs.alias.data();
-  hotIfs.transitionWalk = ifs.transitionWalk.empty() ? nullptr : ifs.transitionWalk.data();
+  kernel::HotIfs hotIfs = kernel::makeHotIfs(ifs, hot, job.skip, limits::kEscapeBound);
   // compileIfs drops an all-ones matrix (it restricts nothing); variant 4 walks its rows anyway:
   // every row is the weights' alias table.
   std::vector<TransitionStep> onesWalk;
@@ -121,8 +117,6 @@ void runKernelBenchmark(benchmark::State& state, int variant, bool flush, bool f
         onesWalk.push_back({ifs.alias[c].threshold, ifs.alias[c].alias, (c + 1) * n, (ifs.alias[c].alias + 1) * n});
     hotIfs.transitionWalk = onesWalk.data();
   }
-  hotIfs.count = std::uint32_t(hot.size());
-  hotIfs.skip = job.skip;
   const kernel::HotCamera cam = kernel::makeHotCamera(OrbitCamera(job.camera, job.width, job.height));
   std::vector<kernel::PixelCell> cells(std::size_t(job.width) * job.height);
   std::vector<std::uint64_t> sums(flameColours ? cells.size() * 4 : 0);
@@ -189,14 +183,7 @@ void BM_FreeFormKernel(benchmark::State& state) {
   const auto compiled = compileIfs(scene);
   const auto& ifs = *compiled;
   std::vector<kernel::HotFunction> hot;
-  for (const auto& f : ifs.functions) hot.push_back(kernel::makeHot(f));
-  kernel::HotIfs hotIfs;
-  hotIfs.functions = hot.data();
-  hotIfs.alias = ifs.alias.data();
-  hotIfs.count = std::uint32_t(hot.size());
-  hotIfs.skip = job.skip;
-  hotIfs.barycentricSize = ifs.barycentricSize;
-  hotIfs.barycentricBlocks = ifs.barycentricPad / 8;
+  const kernel::HotIfs hotIfs = kernel::makeHotIfs(ifs, hot, job.skip, limits::kEscapeBound);
   const kernel::HotCamera cam = kernel::makeHotCamera(OrbitCamera(job.camera, job.width, job.height));
   std::vector<kernel::PixelCell> cells(std::size_t(job.width) * job.height);
   kernel::ZBufferPlot<false> plot{cam, cells.data(), nullptr};

@@ -12,9 +12,7 @@
 namespace gridifs {
 namespace {
 
-using test_support::quote;
-using test_support::runGridifs;
-using test_support::ScratchDir;
+using namespace test_support;
 namespace fs = std::filesystem;
 
 std::string asset(const std::string& name) { return (fs::path(GRIDIFS_ASSETS) / name).string(); }

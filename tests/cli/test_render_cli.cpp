@@ -15,9 +15,7 @@
 namespace gridifs {
 namespace {
 
-using test_support::quote;
-using test_support::runGridifs;
-using test_support::ScratchDir;
+using namespace test_support;
 namespace fs = std::filesystem;
 
 struct Image {

@@ -13,9 +13,7 @@
 namespace gridifs {
 namespace {
 
-using test_support::quote;
-using test_support::runGridifs;
-using test_support::ScratchDir;
+using namespace test_support;
 namespace fs = std::filesystem;
 
 /// A small square above a larger one, lit from above; render.mode as given.
