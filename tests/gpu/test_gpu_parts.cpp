@@ -185,9 +185,10 @@ TEST(GpuPartsCli, MergedGpuPartsAreTheWholeRendersBytes) {
       std::string parts;
       std::int64_t next = 0;  // the parts' chain ranges follow each other
       for (int k = 0; k < n; ++k) {
-        const fs::path part = dir.path / (std::string(mode) + "-" + std::to_string(k) + "of" + std::to_string(n) + ".gpart");
-        const CommandResult p = runGridifs("render " + example() + " -o " + quote(part.string()) + args +
-                                           " --part " + std::to_string(k) + "/" + std::to_string(n));
+        const fs::path part =
+            dir.path / (std::string(mode) + "-" + std::to_string(k) + "of" + std::to_string(n) + ".gpart");
+        const CommandResult p = runGridifs("render " + example() + " -o " + quote(part.string()) + args + " --part " +
+                                           std::to_string(k) + "/" + std::to_string(n));
         ASSERT_EQ(p.exitCode, 0) << p.err;
         EXPECT_EQ(p.err, "");  // no note: the GPU was asked for and rendered the part
         // The header names the GPU and the chains the part played (400000 samples at skip 20:
@@ -205,6 +206,25 @@ TEST(GpuPartsCli, MergedGpuPartsAreTheWholeRendersBytes) {
       EXPECT_TRUE(slurp(merged) == slurp(whole)) << merged << " differs from " << whole;
     }
   }
+}
+
+TEST(GpuPartsCli, MergeRefusesPartsFromAnotherDevice) {
+  ScratchDir dir("gpu-parts-device");
+  const std::string args = " --width 40 --height 30 --samples 200000";
+  const fs::path gpuPart = dir.path / "p0.gpart", cpuPart = dir.path / "p1.gpart", out = dir.path / "out.png";
+  ASSERT_EQ(
+      runGridifs("render " + example() + " -o " + quote(gpuPart.string()) + args + " --device gpu --part 0/2").exitCode,
+      0);
+  ASSERT_EQ(
+      runGridifs("render " + example() + " -o " + quote(cpuPart.string()) + args + " --device cpu --part 1/2").exitCode,
+      0);
+  const CommandResult m =
+      runGridifs("merge " + quote(gpuPart.string()) + " " + quote(cpuPart.string()) + " -o " + quote(out.string()));
+  EXPECT_EQ(m.exitCode, 2) << m.err;
+  EXPECT_NE(m.err.find("p0.gpart was rendered on gpu ("), std::string::npos) << m.err;
+  EXPECT_NE(m.err.find("p1.gpart on cpu"), std::string::npos) << m.err;
+  EXPECT_NE(m.err.find("all parts of a render must come from one device"), std::string::npos) << m.err;
+  EXPECT_FALSE(fs::exists(out));
 }
 
 }  // namespace
