@@ -6,6 +6,7 @@
 
 #include "app/cli.h"
 #if GRIDIFS_HAVE_GPU
+#include "gpu/chaos_compute.h"
 #include "gpu/render_device.h"
 #endif
 
@@ -86,6 +87,12 @@ Accumulation accumulateOnDevice(const std::string& device, std::shared_ptr<const
   return acc;
 }
 
+ChunkRange playedRange(const std::string& used, const RenderJob& job) {
+  if (used == "cpu") return chunksOf(job.samples, job.part ? &*job.part : nullptr);
+  const gpu::ChainRange chains = gpu::chainsOf(job, false);  // `software` matters for previews only
+  return ChunkRange{chains.begin, chains.end};
+}
+
 PointGenerator pointGeneratorOn(const std::string& device, std::string& used) {
   gpu::RenderDevice d = gpu::RenderDevice::Auto;
   gpu::parseRenderDevice(device, d);
@@ -160,6 +167,10 @@ Accumulation accumulateOnDevice(const std::string& device, std::shared_ptr<const
   if (device == "auto") noteFallback("this build of gridifs has no GPU renderer");
   used = "cpu";
   return accumulateToCompletion(std::move(ifs), job, progress);
+}
+
+ChunkRange playedRange(const std::string&, const RenderJob& job) {
+  return chunksOf(job.samples, job.part ? &*job.part : nullptr);
 }
 
 PointGenerator pointGeneratorOn(const std::string& device, std::string& used) {

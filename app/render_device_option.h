@@ -8,6 +8,7 @@
 #include <string>
 
 #include "render/chaos_renderer.h"
+#include "render/sample_chunks.h"
 #include "io/point_cloud_export.h"
 #include "volume/measure_attractor.h"
 
@@ -25,6 +26,11 @@ std::string checkedDevice(const std::optional<std::string>& device);
 /// renderToCompletion (false cancels: RenderCancelled). `used` receives the device's name.
 Accumulation accumulateOnDevice(const std::string& device, std::shared_ptr<const CompiledIfs> ifs, const RenderJob& job,
                                 const std::function<bool(const RenderStats&)>& progress, std::string& used);
+
+/// The share of the work job.part plays on `used` (the device accumulateOnDevice named), for the
+/// part header: on the CPU the part's chunks, on a GPU its chains (the GPU splits its chains,
+/// not the CPU's chunks).
+ChunkRange playedRange(const std::string& used, const RenderJob& job);
 
 /// The point walk for export-points on `device` (empty: the CPU's generatePoints), with the same
 /// failure and fallback rules.

@@ -1,9 +1,10 @@
 // gridifs merge PART... -o OUT: the parts of one split render (render --part K/N) or volume
 // (volume --part K/N), summed exactly in any order and finished into the file `render` (or
 // `volume`) writes with the same options. Every part's header is checked before any payload is
-// read (missing, duplicated or foreign parts are refused at once); the payloads are then streamed
-// one at a time into one running sum, so memory stays at two accumulations whatever the number
-// of parts. A damaged or truncated part is refused; nothing is written then.
+// read (missing, duplicated or foreign parts, parts from another device among them, are refused
+// at once); the payloads are then streamed one at a time into one running sum, so memory stays at
+// two accumulations whatever the number of parts. A damaged or truncated part is refused; nothing
+// is written then.
 #include <algorithm>
 #include <map>
 
@@ -50,6 +51,22 @@ RenderPartHeader checkHeaders(const std::vector<std::string>& files) {
     }
   }
   const RenderPartHeader& first = headers.front();
+  // Another device is foreign too (the digest covers it), but said apart: the parts may be of the
+  // same project and options, and the fix is to render them on one device. The CPU plays chunks
+  // and a GPU plays its chains, each from other random streams (and 32-bit GPU keys quantise
+  // depth), so their accumulations are of different, if equally valid, images and do not sum to
+  // either.
+  std::map<std::string, std::vector<std::string>> byDevice;  // the parts not from first.device
+  for (std::size_t i = 0; i < headers.size(); ++i)
+    if (headers[i].device != first.device) byDevice[headers[i].device].push_back(files[i]);
+  if (!byDevice.empty()) {
+    std::string others;
+    for (const auto& [device, names] : byDevice)
+      others += (others.empty() ? "" : ", ") + listOf(names) + " on " + device;
+    throw CliError(kBadInput, files.front() + " was rendered on " + first.device + " but " + others +
+                                  "; the CPU and each GPU draw different samples, so all parts of a render must "
+                                  "come from one device (--device); nothing was merged");
+  }
   std::vector<std::string> foreign;
   std::map<std::int64_t, std::vector<std::string>> byPart;
   for (std::size_t i = 0; i < headers.size(); ++i) {

@@ -178,7 +178,10 @@ std::optional<RenderImage> renderWithProgress(const std::vector<RenderSetup>& se
     header.part = source.part->part.index;
     header.parts = source.part->part.count;
     header.device = used;
-    const ChunkRange chunks = chunksOf(job.samples / count, &source.part->part);
+    RenderJob first = job;
+    first.samples = job.samples / count;
+    first.part = source.part->part;
+    const ChunkRange chunks = playedRange(used, first);
     header.chunkBegin = chunks.begin;
     header.chunkEnd = chunks.end;
     header.frame = source.part->frame;

@@ -10,6 +10,7 @@
 
 #include "gl_common/shader_build.h"
 #include "gpu/embedded_compute_shaders.h"
+#include "render/sample_chunks.h"
 
 namespace gridifs::gpu {
 namespace {
@@ -46,6 +47,24 @@ std::uint32_t chainCount(const RenderJob& job, bool software) {
   const std::int64_t perChain = 64 * std::int64_t(job.skip + 1);
   const std::int64_t n = job.samples / perChain / kGroupSize * kGroupSize;
   return std::uint32_t(std::clamp<std::int64_t>(n, kGroupSize, kMaxChains));
+}
+
+ChainRange chainsOf(const RenderJob& job, bool software) {
+  const std::uint32_t total = chainCount(job, software);
+  // A preview without a budget has nothing to split: it plays every chain, as the CPU plays
+  // every chunk of an unlimited job.
+  if (!job.part || job.samples <= 0) return ChainRange::all(total);
+  const ChunkRange r = partChunks(total, job.part->index, job.part->count);
+  return ChainRange{total, std::uint32_t(r.begin), std::uint32_t(r.end)};
+}
+
+std::int64_t chainBudget(const RenderJob& job, ChainRange chains) {
+  if (job.samples <= 0 || chains.total == 0) return 0;
+  const std::uint64_t base = std::uint64_t(job.samples) / chains.total;
+  const std::uint64_t extra = std::uint64_t(job.samples) % chains.total;
+  // The chains [0, extra) iterate once more; extraHere of them lie in [begin, end).
+  const std::uint64_t extraHere = std::clamp<std::uint64_t>(extra, chains.begin, chains.end) - chains.begin;
+  return std::int64_t(base * chains.size() + extraHere);
 }
 
 ChaosCompute::ChaosCompute(const GpuInfo& info, ChaosOutput output, bool accumulateColor, bool allowAtomic64)
@@ -88,7 +107,7 @@ void ChaosCompute::allocate(unsigned buffer, std::size_t bytes, const std::strin
     throw GpuUnavailable("the GPU is out of memory for " + what + " (" + megabytes(bytes) + ")");
 }
 
-void ChaosCompute::setup(const CompiledIfs& ifs, const RenderJob& job, std::uint32_t chains, int voxelResolution) {
+void ChaosCompute::setup(const CompiledIfs& ifs, const RenderJob& job, ChainRange share, int voxelResolution) {
   // The compute shader walks grid functions chosen independently; the CPU renderer takes the
   // rest (auto falls back to it).
   if (ifs.barycentricSize > 0)
@@ -99,12 +118,17 @@ void ChaosCompute::setup(const CompiledIfs& ifs, const RenderJob& job, std::uint
     if (!f.points.empty())
       throw GpuUnavailable("the GPU renderer does not run condensation functions; the CPU renderer does");
   job_ = job;
+  // The buffers hold the share's chains only; the shader adds share.begin to a chain's local
+  // index wherever the global index matters (its seed, its budget).
+  const std::uint32_t chains = share.size();
   chains_ = chains;
   count_ = std::uint32_t(ifs.functions.size());
   issued_ = 0;
-  if (job.samples > 0) {
-    budgetBase_ = std::uint64_t(job.samples) / chains;
-    budgetExtra_ = std::uint64_t(job.samples) % chains;
+  budgetBase_ = budgetExtra_ = extraHere_ = 0;
+  if (job.samples > 0 && share.total > 0) {
+    budgetBase_ = std::uint64_t(job.samples) / share.total;
+    budgetExtra_ = std::uint64_t(job.samples) % share.total;
+    extraHere_ = std::uint64_t(chainBudget(job, share)) - budgetBase_ * chains;
   }
   // The compiled IFS: functions (then the final function) and their node pairs.
   std::vector<GpuFunction> functions;
@@ -136,6 +160,8 @@ void ChaosCompute::setup(const CompiledIfs& ifs, const RenderJob& job, std::uint
   // 32-bit keys quantise depth linearly over the depth range the plotted points can have: a
   // trilinear lookup is a convex combination of a cell's nodes, so every plotted point lies within
   // the depth range of the nodes of the functions that produce it (the final function's, if any).
+  // It depends on the IFS and the camera only, never on the chain range: the keys of a render's
+  // parts mean the same depths, so their minimum is the whole render's.
   float lo = std::numeric_limits<float>::infinity(), hi = -lo;
   auto range = [&](const CompiledFunction& f) {
     for (const NodePair& p : f.pairs)
@@ -169,7 +195,7 @@ void ChaosCompute::setup(const CompiledIfs& ifs, const RenderJob& job, std::uint
   const std::uint32_t ones = 0xFFFFFFFFu, zero = 0;
   if (points_) {
     // 32 bytes a slot; as many iterations per dispatch as 64 MB of slots hold.
-    pointSlots_ = std::size_t(chains) * std::max<std::size_t>(1, (std::size_t(64) << 20) / 32 / chains);
+    pointSlots_ = std::size_t(chains) * std::max<std::size_t>(1, (std::size_t(64) << 20) / 32 / std::max(chains, 1u));
     allocate(buffers_[kKeys], pointSlots_ * 32, "the points");
   } else if (voxels_ > 0) {
     allocate(buffers_[kDensity], pixels_ * 4, "the density of a " + image);
@@ -204,6 +230,7 @@ void ChaosCompute::setup(const CompiledIfs& ifs, const RenderJob& job, std::uint
   glUseProgram(program_);
   auto loc = [&](const char* name) { return glGetUniformLocation(program_, name); };
   glUniform1ui(loc("uChains"), chains);
+  glUniform1ui(loc("uChainBase"), share.begin);
   glUniform1ui(loc("uCount"), count_);
   glUniform1i(loc("uHasFinal"), ifs.finalFunction ? 1 : 0);
   glUniform1ui(loc("uSkip"), std::uint32_t(job.skip));
@@ -222,13 +249,14 @@ void ChaosCompute::setup(const CompiledIfs& ifs, const RenderJob& job, std::uint
   glUniform1i(loc("uPalette"), job.palette && voxels_ == 0 ? 1 : 0);
   glUniform1ui(loc("uVoxels"), std::uint32_t(voxels_));
   glUniform1ui(loc("uMode"), 0);
-  glDispatchCompute((chains + kGroupSize - 1) / kGroupSize, 1, 1);
+  if (chains > 0) glDispatchCompute((chains + kGroupSize - 1) / kGroupSize, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   glUniform1ui(loc("uMode"), 1);
   if (glGetError() == GL_OUT_OF_MEMORY) throw GpuUnavailable("the GPU ran out of memory for the " + image);
 }
 
 void ChaosCompute::dispatch(std::uint32_t iterations) {
+  if (chains_ == 0) return;  // an empty part (more parts than chains): nothing to play
   if (points_) iterations = std::min<std::uint32_t>(iterations, std::uint32_t(pointSlots_ / chains_));
   glUseProgram(program_);
   glUniform1ui(glGetUniformLocation(program_, "uIterations"), iterations);
@@ -241,11 +269,13 @@ void ChaosCompute::finish() { glFinish(); }
 
 std::int64_t ChaosCompute::samplesDone() const {
   if (job_.samples <= 0) return std::int64_t(issued_ * chains_);
-  return std::int64_t(budgetExtra_ * std::min(budgetBase_ + 1, issued_) +
-                      (chains_ - budgetExtra_) * std::min(budgetBase_, issued_));
+  return std::int64_t(extraHere_ * std::min(budgetBase_ + 1, issued_) +
+                      (chains_ - extraHere_) * std::min(budgetBase_, issued_));
 }
 
-bool ChaosCompute::finished() const { return job_.samples > 0 && issued_ >= budgetBase_ + (budgetExtra_ ? 1 : 0); }
+bool ChaosCompute::finished() const {
+  return job_.samples > 0 && (chains_ == 0 || issued_ >= budgetBase_ + (extraHere_ ? 1 : 0));
+}
 
 void ChaosCompute::readback(ChaosReadback& out) const {
   out.width = job_.width;

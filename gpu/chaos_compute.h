@@ -35,6 +35,23 @@ struct ChaosReadback {
 /// GPU): enough that every chain iterates at least 64·(skip + 1) times, at most 2^18.
 std::uint32_t chainCount(const RenderJob& job, bool software);
 
+/// The chains one setup plays: [begin, end) of a job's `total` chains. Chain i (a global index)
+/// always has the same seed and budget, whichever range it is played in, so the accumulations
+/// of ranges that cover the chains once sum to the whole job's.
+struct ChainRange {
+  std::uint32_t total = 0, begin = 0, end = 0;
+  static ChainRange all(std::uint32_t total) { return ChainRange{total, 0, total}; }
+  std::uint32_t size() const { return end > begin ? end - begin : 0; }
+};
+
+/// The chains of render part job.part (all of them without one): the GPU's chains stand in for
+/// the CPU's chunks, so part K of N plays partChunks(chainCount(job), K, N) — contiguous shares
+/// that cover every chain once and differ by at most one chain.
+ChainRange chainsOf(const RenderJob& job, bool software);
+
+/// The samples the chains of `chains` play in all (0 without a budget).
+std::int64_t chainBudget(const RenderJob& job, ChainRange chains);
+
 class ChaosCompute {
  public:
   /// Compiles the program variant. Throws GpuUnavailable when the driver rejects it.
@@ -44,10 +61,10 @@ class ChaosCompute {
   ChaosCompute(const ChaosCompute&) = delete;
   ChaosCompute& operator=(const ChaosCompute&) = delete;
 
-  /// Uploads the IFS, allocates and clears the buffers and seeds the chains. Throws GpuUnavailable
-  /// when the image (Voxels: the voxelResolution³ lattice) or the chains do not fit the device's
-  /// memory.
-  void setup(const CompiledIfs& ifs, const RenderJob& job, std::uint32_t chains, int voxelResolution = 0);
+  /// Uploads the IFS, allocates and clears the buffers and seeds the chains in `chains` (each
+  /// seeded and budgeted by its index among chains.total). Throws GpuUnavailable when the image
+  /// (Voxels: the voxelResolution³ lattice) or the chains do not fit the device's memory.
+  void setup(const CompiledIfs& ifs, const RenderJob& job, ChainRange chains, int voxelResolution = 0);
   /// Iterates every chain `iterations` more times (fewer where its budget ends). Does not wait.
   void dispatch(std::uint32_t iterations);
   /// Waits for the dispatched work.
@@ -56,9 +73,11 @@ class ChaosCompute {
   void readback(ChaosReadback& out) const;
   /// EMIT_POINTS only: the slots of the last dispatch, xyz valid | rgb 0 for each, iteration-major.
   void readPoints(std::vector<float>& slots, std::uint32_t iterations) const;
-  /// Samples done so far (all chains), from the dispatched iteration counts.
+  /// Samples done so far (by the range's chains), from the dispatched iteration counts.
   std::int64_t samplesDone() const;
+  /// Whether every chain of the range has spent its budget (at once for an empty range).
   bool finished() const;
+  /// The chains this setup plays (the range's size).
   std::uint32_t chains() const { return chains_; }
   bool atomic64() const { return atomic64_; }
 
@@ -73,7 +92,9 @@ class ChaosCompute {
   unsigned buffers_[9] = {};
   RenderJob job_;
   std::uint32_t chains_ = 0, count_ = 0;
-  std::uint64_t budgetBase_ = 0, budgetExtra_ = 0, issued_ = 0;
+  // Every chain's budget is budgetBase_ (+1 for the first budgetExtra_ of the job's chains);
+  // extraHere_ of them lie in this range.
+  std::uint64_t budgetBase_ = 0, budgetExtra_ = 0, extraHere_ = 0, issued_ = 0;
   std::size_t pixels_ = 0, pointSlots_ = 0;
   float depthMin_ = 0.0f, depthScale_ = 0.0f;
 };

@@ -53,6 +53,7 @@ struct GpuChaosRenderer::Shared {
   std::uint64_t nextGeneration = 0;
   bool hasJob = false;
   RenderJob job;
+  std::int64_t budget = 0;  // the samples of job's chains (a part's share)
   std::int64_t startNs = 0, pausedAtNs = 0, pausedTotalNs = 0;
 };
 
@@ -115,14 +116,23 @@ void rendererThread(std::shared_ptr<GpuChaosRenderer::Shared> shared) {
       generation = shared->pendingGeneration;
       lock.unlock();
       std::string error;
+      bool empty = false;
       try {
         auto& program = programs[job.accumulateColor];
         if (!program)
           program =
               std::make_unique<ChaosCompute>(shared->info, ChaosOutput::Image, job.accumulateColor,
                                              shared->options.allowAtomic64);
-        program->setup(*ifs, job, chainCount(job, shared->info.software));
+        program->setup(*ifs, job, chainsOf(job, shared->info.software));
         compute = program.get();
+        // A part with no chains (more parts than the job has chains) is done at once: its
+        // accumulation (the cleared buffers) is staged before restart() returns, so that
+        // waitUntilDone never sees an unfinished job without a budget.
+        empty = compute->finished();
+        if (empty) {
+          compute->readback(scratch);
+          scratch.generation = generation;
+        }
       } catch (const GpuUnavailable& e) {
         error = e.what();
         compute = nullptr;
@@ -136,7 +146,14 @@ void rendererThread(std::shared_ptr<GpuChaosRenderer::Shared> shared) {
       shared->exactDepth = compute && compute->atomic64();
       iterations = 1;
       lastReadback = 0;
+      if (empty) {
+        std::swap(shared->staged, scratch);
+        shared->samples.store(shared->staged.samples);
+        shared->done = true;
+        shared->finishedNs = nowNs();
+      }
       shared->answered.notify_all();
+      if (empty) shared->finished.notify_all();
       continue;
     }
     const bool run = !shared->paused && !compute->finished();
@@ -206,9 +223,9 @@ std::uint64_t GpuChaosRenderer::restart(std::shared_ptr<const CompiledIfs> ifs, 
   if (!ifs) throw ModelError("", "there is no compiled IFS to render");
   if (ifs->functions.empty() || ifs->alias.size() != ifs->functions.size())
     throw ModelError("functions", "no unmuted function has a positive weight");
-  // The GPU's chains are not the CPU's chunks; a part is rendered where its chunks are defined.
-  if (job.part && job.part->count > 1)
-    throw GpuUnavailable("the GPU renderer does not render parts of a split render; parts render on the CPU");
+  if (job.part && (job.part->count < 1 || job.part->index < 0 || job.part->index >= job.part->count))
+    throw ModelError("render", "part " + std::to_string(job.part->index) + " of " + std::to_string(job.part->count) +
+                                   " is not a part of a render");
   std::unique_lock lock(shared_->mutex);
   const std::uint64_t generation = ++shared_->nextGeneration;
   shared_->pendingIfs = std::move(ifs);
@@ -229,6 +246,7 @@ std::uint64_t GpuChaosRenderer::restart(std::shared_ptr<const CompiledIfs> ifs, 
   }
   shared_->hasJob = true;
   shared_->job = job;
+  shared_->budget = chainBudget(job, chainsOf(job, shared_->info.software));
   return generation;
 }
 
@@ -268,7 +286,7 @@ RenderStats GpuChaosRenderer::stats() const {
   s.generation = shared_->generation.load();
   s.paused = shared_->paused;
   if (!shared_->hasJob) return s;
-  s.budget = shared_->job.samples > 0 ? shared_->job.samples : 0;
+  s.budget = shared_->budget;
   s.samples = shared_->samples.load();
   if (shared_->staged.generation == s.generation) {
     s.badSamples = shared_->staged.bad;

@@ -11,6 +11,10 @@
 // Determinism: the chain count depends on the job only (chainCount), every chain iterates its
 // share of the budget in order, depth order is an atomic minimum and the sums are integer atomics,
 // so the same job gives the same bytes on one GPU and driver, however the work was sliced.
+// Render parts (job.part = K of N) play the contiguous share partChunks(chainCount(job), K, N) of
+// the whole job's chains, each chain seeded and budgeted by its index in the whole job, so the
+// accumulations of the N parts sum to the whole render's, bit for bit (same device kind only:
+// the GPU's chains are not the CPU's chunks).
 // Z-buffer keys: with GL_NV_shader_atomic_int64 the CPU renderer's 64-bit key (depth bits << 32 |
 // rgba8): depth order and colour exact. Without it, a 32-bit key: depth quantised to 16 bits
 // linearly over the depth range of the IFS's nodes (1/65536 of the scene's depth) and colour to

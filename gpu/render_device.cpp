@@ -99,7 +99,7 @@ RenderStats generatePointsGpu(const CompiledIfs& ifs, const RenderJob& job,
   ChaosCompute compute(context->info(), ChaosOutput::Points, false, false);
   RenderJob pointJob = job;
   pointJob.width = pointJob.height = 1;  // no image; the camera is not used
-  compute.setup(ifs, pointJob, chainCount(job, context->info().software));
+  compute.setup(ifs, pointJob, ChainRange::all(chainCount(job, context->info().software)));
   RenderStats stats;
   stats.budget = job.samples;
   const auto start = std::chrono::steady_clock::now();
@@ -136,7 +136,7 @@ GpuVoxelCounts binVoxelsGpu(const CompiledIfs& ifs, const RenderJob& job, int re
   ChaosCompute compute(context->info(), ChaosOutput::Voxels, color, false);
   RenderJob voxelJob = job;
   voxelJob.width = voxelJob.height = 1;  // no image; the camera is not used
-  compute.setup(ifs, voxelJob, chainCount(job, context->info().software), resolution);
+  compute.setup(ifs, voxelJob, ChainRange::all(chainCount(job, context->info().software)), resolution);
   // Slices of a few million samples keep each dispatch short (a driver may reset a GPU whose
   // dispatch runs for seconds) and let progress and cancelling answer.
   const std::uint32_t perDispatch =

@@ -53,13 +53,14 @@ layout(std430, binding = 8) readonly buffer Palette { vec4 palette[]; };  // 257
 #endif
 
 uniform uint uMode;        // 0: seed the chains, 1: iterate
-uniform uint uChains;
+uniform uint uChains;      // the chains in this dispatch's buffers
+uniform uint uChainBase;   // the job's index of the first of them (a render part's first chain)
 uniform uint uCount;       // functions (the final function, if any, is fns[uCount])
 uniform bool uHasFinal;
 uniform uint uSkip;
 uniform float uEscape;
 uniform uvec2 uSeed;       // low, high 32 bits
-uniform uvec2 uBudget;     // chain i iterates uBudget.x + (i < uBudget.y ? 1 : 0) times in all
+uniform uvec2 uBudget;     // job chain i iterates uBudget.x + (i < uBudget.y ? 1 : 0) times in all
 uniform bool uUnlimited;
 uniform uint uIterations;  // per chain in this dispatch
 uniform vec4 uCamX, uCamY, uCamZ, uCam1;  // (px·w, py·w, w, depth) = columns · (x, y, z, 1)
@@ -190,16 +191,19 @@ bool plot(vec3 q, vec4 col) {
 #endif
 
 void main() {
-  const uint chain = gl_GlobalInvocationID.x;
+  const uint chain = gl_GlobalInvocationID.x;  // the slot in this dispatch's buffers
   if (chain >= uChains) return;
   Chain ch;
   if (uMode == 0u) {
-    ch.rng = uvec4(mix32(uSeed.x ^ mix32(chain)), mix32(uSeed.y ^ mix32(chain + 0x9e3779b9u)),
-                   mix32(uSeed.x + mix32(chain ^ 0x85ebca6bu)), mix32(uSeed.y + mix32(chain ^ 0xc2b2ae35u)));
+    // Seed and budget from the chain's index in the whole job, so that a chain plays the same
+    // points in a render part as in the whole render (the parts' sums are then the whole's).
+    const uint id = uChainBase + chain;
+    ch.rng = uvec4(mix32(uSeed.x ^ mix32(id)), mix32(uSeed.y ^ mix32(id + 0x9e3779b9u)),
+                   mix32(uSeed.x + mix32(id ^ 0x85ebca6bu)), mix32(uSeed.y + mix32(id ^ 0xc2b2ae35u)));
     if (all(equal(ch.rng, uvec4(0u)))) ch.rng.x = 1u;
     for (int k = 0; k < 4; ++k) nextRandom(ch.rng);
     restartChain(ch);
-    ch.misc.x = uUnlimited ? 0xFFFFFFFFu : uBudget.x + (chain < uBudget.y ? 1u : 0u);
+    ch.misc.x = uUnlimited ? 0xFFFFFFFFu : uBudget.x + (id < uBudget.y ? 1u : 0u);
     chains[chain] = ch;
     tallies[chain] = uvec2(0u);
     return;

@@ -31,7 +31,7 @@ struct RenderPartHeader {
   std::string digest;    // of the project and every option that shapes the accumulation
   std::int64_t part = 0, parts = 1;
   std::string device;    // "cpu" or a GPU's name
-  std::int64_t chunkBegin = 0, chunkEnd = 0;  // of every time sample's chunk list
+  std::int64_t chunkBegin = 0, chunkEnd = 0;  // of every time sample's chunk list (a GPU part: its chains)
   std::optional<std::int64_t> frame;          // with --frames
   std::string source;    // the project file as given on the command line
   std::string project;   // the project as rendered (JSON)

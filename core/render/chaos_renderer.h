@@ -55,7 +55,7 @@ struct RenderJob {
   int skip = 20;
   int threads = 1;
   /// Only this part's share of the budget (gridifs render --part K/N; on the CPU a contiguous
-  /// range of chunks, partChunks); absent: all of it.
+  /// range of chunks, on the GPU of chains, partChunks); absent: all of it.
   std::optional<RenderPart> part;
   /// Also accumulate per-pixel colour sums for the flame display. Costs a 16-byte
   /// read-modify-write per plotted sample, so it is off for the z-buffer preview.
