@@ -138,7 +138,18 @@ std::optional<RenderImage> renderWithProgress(const std::vector<RenderSetup>& se
                                               FrameProgress progress, const FrameSource& source) {
   ProgressBar ownBar(source.merged ? "merge" : "render", quiet || source.merged);
   ProgressBar& bar = progress.bar ? *progress.bar : ownBar;
-  if (!progress.bar) progress.total = job.samples;
+  if (!progress.bar) {
+    // A part's bar runs over its own share (on the CPU: its chunks of every time sample).
+    progress.total = job.samples;
+    if (source.part) {
+      progress.total = 0;
+      const std::int64_t count = std::int64_t(setups.size());
+      for (std::int64_t i = 0; i < count; ++i) {
+        const std::int64_t samples = job.samples / count + (i < job.samples % count ? 1 : 0);
+        progress.total += rangeSamples(samples, chunksOf(samples, &source.part->part));
+      }
+    }
+  }
   InterruptGuard interrupt;
   RenderImage image;
   std::vector<std::uint32_t> rgbaSum;

@@ -585,6 +585,9 @@ RenderStats ChaosRenderer::stats() const {
   s.keptCamera = job->cameraEpoch != s.generation;
   bool allFinished = s.budget > 0;
   std::int64_t lastFinish = 0;
+  // A part with no chunk (more parts than chunks) has nothing to do: done at once, its buffers
+  // empty, whether or not the workers have seen the generation yet.
+  const bool emptyPart = job->job.samples > 0 && s.budget == 0;
   for (const auto& w : workers_) {
     if (w->bufferGeneration.load(std::memory_order_acquire) != s.generation) {
       allFinished = false;
@@ -597,8 +600,9 @@ RenderStats ChaosRenderer::stats() const {
     if (f == 0) allFinished = false;
     lastFinish = std::max(lastFinish, f);
   }
-  s.done = allFinished;
-  std::int64_t end = s.done ? lastFinish : (s.paused ? shared_->pausedAtNs : nowNs());
+  s.done = allFinished || emptyPart;
+  if (emptyPart) s.samples = s.badSamples = s.plotted = 0;
+  std::int64_t end = s.done ? std::max(lastFinish, shared_->startNs) : (s.paused ? shared_->pausedAtNs : nowNs());
   if (s.paused && !s.done) end = shared_->pausedAtNs;
   s.seconds = std::max(0.0, double(end - shared_->startNs - shared_->pausedTotalNs) * 1e-9);
   s.pointsPerSecond = s.seconds > 0.0 ? double(s.samples) / s.seconds : 0.0;
