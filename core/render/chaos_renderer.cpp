@@ -612,7 +612,11 @@ RenderStats ChaosRenderer::stats() const {
     if (f == 0) allFinished = false;
     lastFinish = std::max(lastFinish, f);
   }
-  s.done = allFinished;
+  // A part with no chunk (more parts than the budget has chunks: render --part 6/7 of 2 chunks)
+  // has nothing to play and is done at once; its budget of 0 must not read as "unlimited", or
+  // waitUntilDone gave up on it and the part was reported as interrupted.
+  const bool nothingToPlay = job->job.samples > 0 && job->chunks.size() == 0;
+  s.done = allFinished || nothingToPlay;
   std::int64_t end = s.done ? lastFinish : (s.paused ? shared_->pausedAtNs : nowNs());
   if (s.paused && !s.done) end = shared_->pausedAtNs;
   s.seconds = std::max(0.0, double(end - shared_->startNs - shared_->pausedTotalNs) * 1e-9);
