@@ -50,7 +50,19 @@ RenderPartHeader checkHeaders(const std::vector<std::string>& files) {
       throw CliError(kBadInput, std::string(e.what()) + "; nothing was merged");
     }
   }
-  const RenderPartHeader& first = headers.front();
+  auto renderOf = [](const RenderPartHeader& h) {
+    return h.kind + '\n' + h.digest + '\n' + std::to_string(h.parts) + '\n' +
+           (h.frame ? std::to_string(*h.frame) : std::string("-"));
+  };
+  // The render is the one most of the files belong to (the first of equals), so that a foreign
+  // part given first is the one named, not every other part.
+  std::map<std::string, std::size_t> filesOf;
+  for (const RenderPartHeader& h : headers) ++filesOf[renderOf(h)];
+  std::size_t reference = 0;
+  for (std::size_t i = 1; i < headers.size(); ++i)
+    if (filesOf[renderOf(headers[i])] > filesOf[renderOf(headers[reference])]) reference = i;
+  const RenderPartHeader& first = headers[reference];
+  const std::string render = renderOf(first);
   // Another device is foreign too (the digest covers it), but said apart: the parts may be of the
   // same project and options, and the fix is to render them on one device. The CPU plays chunks
   // and a GPU plays its chains, each from other random streams (and 32-bit GPU keys quantise
@@ -63,27 +75,34 @@ RenderPartHeader checkHeaders(const std::vector<std::string>& files) {
     std::string others;
     for (const auto& [device, names] : byDevice)
       others += (others.empty() ? "" : ", ") + listOf(names) + " on " + device;
-    throw CliError(kBadInput, files.front() + " was rendered on " + first.device + " but " + others +
+    throw CliError(kBadInput, files[reference] + " was rendered on " + first.device + " but " + others +
                                   "; the CPU and each GPU draw different samples, so all parts of a render must "
                                   "come from one device (--device); nothing was merged");
   }
   std::vector<std::string> foreign;
   std::map<std::int64_t, std::vector<std::string>> byPart;
   for (std::size_t i = 0; i < headers.size(); ++i) {
-    const RenderPartHeader& h = headers[i];
-    if (h.digest != first.digest || h.parts != first.parts || h.kind != first.kind || h.frame != first.frame)
+    if (renderOf(headers[i]) != render)
       foreign.push_back(files[i]);
     else
-      byPart[h.part].push_back(files[i]);
+      byPart[headers[i].part].push_back(files[i]);
   }
   if (!foreign.empty())
     throw CliError(kBadInput, listOf(foreign) + (foreign.size() == 1 ? " belongs" : " belong") +
-                                  " to another render than " + files.front() +
+                                  " to another render than " + files[reference] +
                                   " (another project, options, frame or part count); nothing was merged");
   for (const auto& [k, names] : byPart)
-    if (names.size() > 1)
-      throw CliError(kBadInput, listOf(names) + " are the same part " + std::to_string(k) + " of " +
-                                    std::to_string(first.parts) + "; nothing was merged");
+    if (names.size() > 1) {
+      // One file named twice reads "a.gpart is given 2 times", not "a.gpart and a.gpart are ...".
+      std::vector<std::string> distinct = names;
+      std::sort(distinct.begin(), distinct.end());
+      distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+      const std::string what = " part " + std::to_string(k) + " of " + std::to_string(first.parts);
+      if (distinct.size() == 1)
+        throw CliError(kBadInput, names.front() + " is given " + std::to_string(names.size()) + " times (it is" +
+                                      what + "); nothing was merged");
+      throw CliError(kBadInput, listOf(names) + " are the same" + what + "; nothing was merged");
+    }
   std::vector<std::int64_t> missing;
   for (std::int64_t k = 0; k < first.parts; ++k)
     if (!byPart.count(k)) missing.push_back(k);

@@ -64,6 +64,16 @@ extern "C" __attribute__((visibility("default"))) int gridifs_image_io_write(con
     if (r.description && *r.description) spec.attribute("ImageDescription", r.description);
     const std::string ext = lowerExtensionOf(r.path);
     if (ext == "exr" || ext == "tif" || ext == "tiff") spec.attribute("compression", "zip");
+    // No date of writing: OpenImageIO stamps EXR and TIFF files with the current time unless the
+    // spec has a "DateTime", so two renders of the same project a second apart differed, and so
+    // did a merged render (gridifs merge) and the render it must equal byte for byte (DESIGN §7.6).
+    // EXR: an empty capDate. TIFF: a DateTime that is not a string counts as given but is not
+    // written (only a string becomes the DateTime tag), so the tag is left out.
+    if (ext == "exr") spec.attribute("DateTime", "");
+    if (ext == "tif" || ext == "tiff") {
+      const int noDate = 0;
+      spec.attribute("DateTime", OIIO::TypeDesc::INT, &noDate);
+    }
     // PNG: the "up" filter on every row instead of libpng's default for 8-bit RGBA, which tries all
     // five filters per row and keeps the best. Measured on 1024² renders at zlib level 6: 56 → 34 ms
     // for a z-buffer image, 296 → 234 ms for a flame, 63 → 48 ms for a shaded one, and files within

@@ -7,8 +7,14 @@
 #include <openvdb/tools/VolumeToMesh.h>
 
 #include <algorithm>
+#include <cctype>
+#include <cstdint>
+#include <cstdio>
 #include <cstring>
+#include <fstream>
+#include <iterator>
 #include <mutex>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -50,6 +56,47 @@ openvdb::math::Transform::Ptr latticeTransform(int n) {
   const double origin = -1.0 + 1.0 / n;
   xform->postTranslate(openvdb::Vec3d(origin, origin, origin));
   return xform;
+}
+
+/// OpenVDB writes a new random UUID into every file's header (io::Archive::writeHeader), so two
+/// writes of the same volume differed in those bytes, and so did a merged volume (gridifs merge)
+/// and the one `gridifs volume` writes, which must be equal byte for byte (DESIGN §7.6). The UUID
+/// is replaced by one derived from the rest of the file: the same grids get the same UUID, other
+/// grids another (what readers such as Houdini use it for). The header: magic (8 bytes), file
+/// version, library major and minor (4 each), the grid-offsets flag (1), then the UUID as 36
+/// characters. A file whose header does not look so is left as it is.
+void replaceRandomUuid(const char* path) {
+  constexpr std::size_t kAt = 21, kLength = 36;
+  std::fstream file(path, std::ios::in | std::ios::out | std::ios::binary);
+  char header[kAt + kLength];
+  if (!file.read(header, sizeof header)) return;
+  for (std::size_t i = 0; i < kLength; ++i) {
+    const char c = header[kAt + i];
+    const bool dash = i == 8 || i == 13 || i == 18 || i == 23;
+    if (dash ? c != '-' : !std::isxdigit(static_cast<unsigned char>(c))) return;
+  }
+  // Two independent 64-bit FNV-1a passes over everything after the UUID.
+  std::uint64_t a = 0xCBF29CE484222325ull, b = 0x84222325CBF29CE4ull;
+  std::vector<char> block(1 << 20);
+  while (file.read(block.data(), std::streamsize(block.size())) || file.gcount() > 0) {
+    for (std::streamsize i = 0; i < file.gcount(); ++i) {
+      const auto c = static_cast<unsigned char>(block[std::size_t(i)]);
+      a = (a ^ c) * 0x100000001B3ull;
+      b = (b ^ (c + 0x9Bu)) * 0x100000001B3ull;
+      b ^= b >> 29;
+    }
+  }
+  // Version 8 (custom) and the RFC 4122 variant, as 8-4-4-4-12 hex digits.
+  b = (b & ~(std::uint64_t(0xF) << 12)) | (std::uint64_t(0x8) << 12);
+  a = (a & ~(std::uint64_t(0x3) << 62)) | (std::uint64_t(0x2) << 62);
+  char uuid[kLength + 1];
+  std::snprintf(uuid, sizeof uuid, "%08llx-%04llx-%04llx-%04llx-%012llx", static_cast<unsigned long long>(b >> 32),
+                static_cast<unsigned long long>((b >> 16) & 0xFFFF), static_cast<unsigned long long>(b & 0xFFFF),
+                static_cast<unsigned long long>(a >> 48), static_cast<unsigned long long>(a & 0xFFFFFFFFFFFFull));
+  file.clear();
+  file.seekp(std::streamoff(kAt));
+  if (!file.write(uuid, std::streamsize(kLength)) || !file.flush())
+    throw std::runtime_error(std::string("cannot write the header of ") + path);
 }
 
 /// Hands voxels to the caller a block at a time.
@@ -151,6 +198,7 @@ extern "C" __attribute__((visibility("default"))) int gridifs_vdb_io_write_volum
     openvdb::io::File vdb(path);
     vdb.write(grids);
     vdb.close();
+    replaceRandomUuid(path);
     return int(GRIDIFS_VDB_OK);
   });
 }
