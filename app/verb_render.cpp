@@ -3,6 +3,7 @@
 // R G B A (linear, premultiplied, A = coverage) plus a Z channel with the view depth, so
 // compositors can use it.
 
+#include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <csignal>
@@ -83,6 +84,9 @@ struct FrameSource {
     RenderPart part;
     std::optional<std::int64_t> frame;
     std::string options;  // the finishing options as JSON (mode, motion blur, shutter)
+    /// The flame display develops from hit counts and colour sums alone: its parts leave out the
+    /// z-buffer keys (a quarter of a part's bytes), and a merge develops the same image.
+    bool withoutKeys = false;
   };
   std::optional<PartTarget> part;
   const std::vector<Accumulation>* merged = nullptr;
@@ -200,6 +204,11 @@ std::optional<RenderImage> renderWithProgress(const std::vector<RenderSetup>& se
     header.project = partProject(setups.front());
     header.options = source.part->options;
     header.digest = partDigest(header.kind, header.project, header.options, header.parts, header.device, header.frame);
+    if (source.part->withoutKeys)
+      for (Accumulation& a : accumulations) {
+        std::vector<std::uint64_t>().swap(a.keys);
+        std::vector<std::uint32_t>().swap(a.keys32);
+      }
     try {
       writeImagePart(out, header, accumulations);
     } catch (const IoError& e) {
@@ -278,11 +287,14 @@ int runFlameRender(const std::string& file, const std::string& out, const std::v
   } catch (const ModelError& e) {
     throw CliError(kBadInput, file + ": with supersample " + std::to_string(ss) + ", " + e.message());
   }
+  FrameSource flameSource = source;
+  if (flameSource.part) flameSource.part->withoutKeys = true;
   const std::optional<RenderImage> rendered =
-      renderWithProgress(setups, job, file, out, quiet, device, nullptr, progress, source);
+      renderWithProgress(setups, job, file, out, quiet, device, nullptr, progress, flameSource);
   if (!rendered) return kSuccess;  // a part: written as it is
   const RenderImage& image = *rendered;
-  if (image.hitPixels == 0)
+  // Hit counts, not the z-buffer: merged flame parts carry no keys.
+  if (std::all_of(image.density.begin(), image.density.end(), [](std::uint32_t n) { return n == 0; }))
     std::fprintf(stderr, "warning: %s: no point landed in the %dx%d frame; check the camera.\n", file.c_str(),
                  setup.job.width, setup.job.height);
   try {
