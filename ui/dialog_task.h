@@ -43,9 +43,8 @@ class DialogTask {
 
  private:
   // Destroyed with the dialog: marks the work stale (stopRequested) and joins it.
-  BackgroundJob<Work, TaskOutcome> job_{[](const Work& work, BackgroundJob<Work, TaskOutcome>::Context& context) {
-    context.publish(work(context));
-  }};
+  BackgroundJob<Work, TaskOutcome> job_{
+      [](const Work& work, BackgroundJob<Work, TaskOutcome>::Context& context) { context.publish(work(context)); }};
 };
 
 /// The dialog's modal `title`, centred, `widthEm` font sizes wide and as tall as its contents (at

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "base/background_job.h"
-#include "mesh/base_mesh.h"
 #include "edit/document.h"
+#include "mesh/base_mesh.h"
 #include "mesh/deterministic_ifs.h"
 #include "ui/gl_resources.h"
 

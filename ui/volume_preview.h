@@ -118,13 +118,12 @@ class VolumePreview {
   bool hasColor_ = false;
   std::string paletteRef_;
   std::filesystem::path paletteFolder_;
+  FramePtr source_;  // the newest computed frame taken (what a relight starts from)
+  int threads_ = 1;  // the threads of the last request (a relight uses as many)
 
   // GL.
   std::optional<ShaderProgram> program_;
   GLuint density_ = 0, color_ = 0, lightDepth_ = 0, palette_ = 0, vao_ = 0;
-
-  FramePtr source_;  // the newest computed frame taken (what a relight starts from)
-  int threads_ = 1;   // the threads of the last request (a relight uses as many)
 
   // Last: destroyed first, they stop and join their workers before the rest goes.
   ComputeJob compute_{&VolumePreview::compute};

@@ -51,8 +51,8 @@ class JobContext {
     run_->fraction.store(total > 0 ? double(done) / double(total) : 0.0, std::memory_order_relaxed);
   }
 
-  /// One run's flags and progress. Each run has its own, so a stale run's progress never shows
-  /// as the new one's.
+  /// Internal to BackgroundJob: one run's flags and progress. Each run has its own, so a stale run's progress never
+  /// shows as the new one's.
   struct Run {
     explicit Run(std::uint64_t g) : generation(g) {}
     const std::uint64_t generation;

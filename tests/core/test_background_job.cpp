@@ -55,7 +55,7 @@ TEST(BackgroundJob, ANewInputSupersedesARunningOne) {
   IntJob job([&](const int& x, IntJob::Context& ctx) {
     if (x == 1) {
       firstStarted = true;
-      waitFor([&] { return ctx.stale(); });  // runs until superseded
+      waitFor([&] { return ctx.stale(); });   // runs until superseded
       stalePublishAccepted = ctx.publish(1);  // too late: must be dropped
       return;
     }
