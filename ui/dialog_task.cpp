@@ -9,48 +9,14 @@ const char* taskPhaseName(TaskPhase phase) {
   return names[int(phase)];
 }
 
-DialogTask::~DialogTask() {
-  cancel_ = true;
-  join();
-}
-
-void DialogTask::join() {
-  if (worker_.joinable()) worker_.join();
-}
-
-void DialogTask::start(std::function<void()> work) {
-  join();
-  cancel_ = false;
-  progress_ = 0.0;
-  {
-    std::lock_guard lock(mutex_);
-    haveResult_ = false;
-  }
-  running_ = true;
-  worker_ = std::thread(std::move(work));
-}
-
-void DialogTask::finish(TaskPhase phase, std::string message) {
-  std::lock_guard lock(mutex_);
-  result_ = phase;
-  resultMessage_ = std::move(message);
-  haveResult_ = true;
-  running_ = false;
-}
+void DialogTask::start(Work work) { job_.submit(std::move(work)); }
 
 bool DialogTask::poll(TaskPhase& phase, std::string& message) {
-  bool finished = false;
-  {
-    std::lock_guard lock(mutex_);
-    if (haveResult_) {
-      haveResult_ = false;
-      phase = result_;
-      message = resultMessage_;
-      finished = true;
-    }
-  }
-  if (!running()) join();
-  return finished;
+  auto outcome = job_.poll();
+  if (!outcome) return false;
+  phase = outcome->value.phase;
+  message = std::move(outcome->value.message);
+  return true;
 }
 
 bool beginTaskModal(const char* title, float widthEm, bool busy, bool& open, bool& justOpened, bool& keepOpen) {

@@ -3,13 +3,12 @@
 // with progress and cancelling, its outcome handed back to the UI thread, and the dialog's centred
 // modal window. The dialogs keep only their options and what their work does.
 //
-// Thread-safety: start(), poll(), join() and the destructor on the UI thread; progress(),
-// cancelled() and finish() from the worker as well.
-#include <atomic>
+// Thread-safety: every method on the UI thread; the work runs on the task's BackgroundJob thread
+// and reaches the task only through its JobContext (progress, stopRequested, stopFlag).
 #include <functional>
-#include <mutex>
 #include <string>
-#include <thread>
+
+#include "base/background_job.h"
 
 namespace gridifs::ui {
 
@@ -18,39 +17,34 @@ enum class TaskPhase { Options, Running, Done, Failed, Cancelled };
 /// "options", "running", "done", "failed", "cancelled": for the GUI tests' probe.
 const char* taskPhaseName(TaskPhase phase);
 
+/// A run's outcome: Done, Failed or Cancelled, and the message to show.
+struct TaskOutcome {
+  TaskPhase phase = TaskPhase::Done;
+  std::string message;
+};
+
 class DialogTask {
  public:
-  DialogTask() = default;
-  ~DialogTask();  // cancels and joins a running worker
-  DialogTask(const DialogTask&) = delete;
-  DialogTask& operator=(const DialogTask&) = delete;
+  /// The work: polls context.stopRequested() (Cancel) and reports context.progress(); returns its
+  /// outcome, which poll() hands to the UI thread.
+  using Work = std::function<TaskOutcome(JobContext& context)>;
 
-  /// Joins a finished worker, resets progress and cancelling, and runs `work` on a new thread.
-  /// `work` reports its outcome with finish().
-  void start(std::function<void()> work);
-  bool running() const { return running_.load(); }
-  void join();
+  /// Runs `work` on the task's worker thread (the dialogs start only while not running()).
+  void start(Work work);
+  bool running() const { return job_.busy(); }
 
-  double progress() const { return progress_.load(); }
-  void setProgress(double fraction) { progress_ = fraction; }
-  void cancel() { cancel_ = true; }
-  bool cancelled() const { return cancel_.load(); }
-  /// The flag itself, for work that polls an std::atomic<bool>* (runDeterministic).
-  std::atomic<bool>* cancelFlag() { return &cancel_; }
+  double progress() const { return job_.progress().fraction; }
+  /// Asks the work to stop; it still reports its outcome (how far it got).
+  void cancel() { job_.interrupt(); }
+  bool cancelled() const { return job_.interrupted(); }
 
-  /// From the worker, last: its outcome (Done, Failed or Cancelled) and the message to show.
-  void finish(TaskPhase phase, std::string message);
   /// On the UI thread every frame: true once after the worker finished, with its outcome.
   bool poll(TaskPhase& phase, std::string& message);
 
  private:
-  std::thread worker_;
-  std::atomic<bool> running_{false}, cancel_{false};
-  std::atomic<double> progress_{0.0};
-  std::mutex mutex_;
-  bool haveResult_ = false;
-  TaskPhase result_ = TaskPhase::Options;
-  std::string resultMessage_;
+  // Destroyed with the dialog: marks the work stale (stopRequested) and joins it.
+  BackgroundJob<Work, TaskOutcome> job_{
+      [](const Work& work, BackgroundJob<Work, TaskOutcome>::Context& context) { context.publish(work(context)); }};
 };
 
 /// The dialog's modal `title`, centred, `widthEm` font sizes wide and as tall as its contents (at

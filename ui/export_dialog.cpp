@@ -168,7 +168,6 @@ void ExportDialog::drawPointsOptions(ModellerState& state) {
 }
 
 void ExportDialog::start(ModellerState& state) {
-  task_.join();
   const bool mesh = kind_ == Kind::Mesh;
   const fs::path output = mesh ? meshOutput_ : pointsOutput_;
   message_.clear();
@@ -185,25 +184,25 @@ void ExportDialog::start(ModellerState& state) {
       options.depth = depth_;
       const MeshWriteOptions writeOptions{!ascii_, true};
       auto ifs = std::make_shared<DeterministicIfs>(deterministicSnapshot(state));
-      task_.start([this, ifs, spec, options, writeOptions, output] {
+      task_.start([this, ifs, spec, options, writeOptions, output](JobContext& context) -> TaskOutcome {
         try {
           // Built where it lives: OpenMesh meshes copy on move (deterministic_ifs.h).
           auto result = std::make_unique<DeterministicMesh>();
           runDeterministic(
               *ifs, spec, options, *result,
-              [this](double f) {
-                task_.setProgress(f);
-                return !task_.cancelled();
+              [&context](double f) {
+                context.progress(f);
+                return !context.stopRequested();
               },
-              task_.cancelFlag());
+              context.stopFlag());
           stage_ = 1;
           writeMeshFile(result->mesh, output, writeOptions);  // temporary + rename (mesh_io.h)
-          task_.finish(TaskPhase::Done, "Wrote " + output.string() + ": " + withThousands(result->plan.total.faces) + " faces, " +
-                                  withThousands(result->plan.total.vertices) + " vertices.");
+          return {TaskPhase::Done, "Wrote " + output.string() + ": " + withThousands(result->plan.total.faces) +
+                                       " faces, " + withThousands(result->plan.total.vertices) + " vertices."};
         } catch (const DeterministicCancelled&) {
-          task_.finish(TaskPhase::Cancelled, "Cancelled; " + output.filename().string() + " was not written.");
+          return {TaskPhase::Cancelled, "Cancelled; " + output.filename().string() + " was not written."};
         } catch (const std::exception& e) {
-          task_.finish(TaskPhase::Failed, e.what());
+          return {TaskPhase::Failed, e.what()};
         }
       });
     } else {
@@ -221,19 +220,19 @@ void ExportDialog::start(ModellerState& state) {
           (state.document.path().empty() ? std::string("untitled") : state.document.path().filename().string()) + ": " +
           std::to_string(job.samples) + " samples, seed " + std::to_string(job.seed) + ", " +
           std::to_string(job.threads) + " streams";
-      task_.start([this, ifs, job, output, description] {
+      task_.start([ifs, job, output, description](JobContext& context) -> TaskOutcome {
         try {
           const PointCloudResult written = writePointCloud(*ifs, job, output, description, [&](const RenderStats& s) {
-            task_.setProgress(s.progress());
-            return !task_.cancelled();
+            context.progress(s.progress());
+            return !context.stopRequested();
           });
           if (written.cancelled) throw DeterministicCancelled();
           const std::uint64_t n = written.written;
-          task_.finish(TaskPhase::Done, "Wrote " + output.string() + ": " + withThousands(n) + " points.");
+          return {TaskPhase::Done, "Wrote " + output.string() + ": " + withThousands(n) + " points."};
         } catch (const DeterministicCancelled&) {
-          task_.finish(TaskPhase::Cancelled, "Cancelled; " + output.filename().string() + " was not written.");
+          return {TaskPhase::Cancelled, "Cancelled; " + output.filename().string() + " was not written."};
         } catch (const std::exception& e) {
-          task_.finish(TaskPhase::Failed, e.what());
+          return {TaskPhase::Failed, e.what()};
         }
       });
     }

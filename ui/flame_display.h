@@ -3,13 +3,11 @@
 // z-buffer preview, with color sums always accumulated, developed into a flame image on a worker
 // thread every few hundred milliseconds, so switching modes never restarts the renderer and
 // developing never blocks the UI (docs/FLAME.md "For the GUI").
-#include <condition_variable>
 #include <cstdint>
-#include <mutex>
 #include <string>
-#include <thread>
 #include <vector>
 
+#include "base/background_job.h"
 #include "render/chaos_renderer.h"
 #include "edit/document.h"
 #include "model/flame_settings.h"
@@ -21,40 +19,42 @@ namespace gridifs::ui {
 /// default palette when the reference cannot be resolved). UI thread.
 RenderJob previewFlameJob(const RenderJob& job, const Document& document);
 
-/// Develops renderer snapshots into RGBA8 flame images on one worker thread. submit() and
-/// take() are called by the UI thread and never wait for a develop.
+/// Develops renderer snapshots into RGBA8 flame images on one worker thread (a BackgroundJob).
+/// UI thread only; submit() and take() never wait for a develop.
 class FlameDeveloper {
  public:
-  FlameDeveloper();
-  ~FlameDeveloper();  // stops and joins the worker
-  FlameDeveloper(const FlameDeveloper&) = delete;
-  FlameDeveloper& operator=(const FlameDeveloper&) = delete;
-
-  /// Hands a copy of `snapshot` to the worker; false (nothing copied) while it is still busy.
+  /// Hands a copy of `snapshot` to the worker; false (nothing copied) while it is still busy, so
+  /// a develop is never superseded half-way and the picture keeps coming while points stream.
   bool submit(const RenderImage& snapshot, const FlameSettings& settings, const Camera& camera, const Vec3& background);
-  /// The newest finished image, once: true and `rgba`/size filled when there is one.
+  /// The newest finished image, once: true and `rgba`/size filled when there is one. A failed
+  /// develop sets error() and returns false.
   bool take(std::vector<std::uint8_t>& rgba, int& width, int& height);
-  bool busy() const;
+  bool busy() const { return job_.busy(); }
   /// Why the last develop failed ("" when it did not).
-  std::string error() const;
+  const std::string& error() const { return error_; }
   /// Milliseconds the last develop took.
-  double lastMs() const;
+  double lastMs() const { return lastMs_; }
 
  private:
-  void run();
+  struct Input {
+    RenderImage snapshot;
+    FlameSettings settings;
+    Camera camera;
+    Vec3 background{0.0};
+  };
+  struct Output {
+    std::vector<std::uint8_t> rgba;
+    int width = 0, height = 0;
+    std::string error;
+    double ms = 0.0;
+  };
+  using DevelopJob = BackgroundJob<Input, Output>;
+  static void develop(const Input& input, DevelopJob::Context& context);
 
-  mutable std::mutex mutex_;
-  std::condition_variable wake_;
-  bool stop_ = false, pending_ = false, working_ = false, ready_ = false;
-  RenderImage input_;
-  FlameSettings settings_;
-  Camera camera_;
-  Vec3 background_{0.0};
-  std::vector<std::uint8_t> output_;
-  int outWidth_ = 0, outHeight_ = 0;
+  // UI-thread state: what the last develop taken said.
   std::string error_;
   double lastMs_ = 0.0;
-  std::thread thread_;
+  DevelopJob job_{&FlameDeveloper::develop};  // last: destroyed first, it joins the worker
 };
 
 /// What the preview texture shows in flame mode: decides when to develop (at once after an

@@ -19,16 +19,9 @@ std::uint32_t packColor(const OpenMesh::Vec4f& c) {
 
 }  // namespace
 
-MeshPreview::MeshPreview() : thread_([this] { run(); }) {}
+MeshPreview::MeshPreview() = default;
 
 MeshPreview::~MeshPreview() {
-  {
-    std::lock_guard lock(mutex_);
-    stop_ = true;
-    if (currentCancel_) currentCancel_->store(true);
-  }
-  wake_.notify_all();
-  thread_.join();
   if (ebo_) glDeleteBuffers(1, &ebo_);
   if (vbo_) glDeleteBuffers(1, &vbo_);
   if (vao_) glDeleteVertexArrays(1, &vao_);
@@ -72,17 +65,10 @@ void MeshPreview::update(const Document& document) {
     maxDepth_ = 0;
     return;
   }
-  std::lock_guard lock(mutex_);
-  if (currentCancel_) currentCancel_->store(true);  // stale work stops at its next progress poll
-  request.cancel = std::make_shared<std::atomic<bool>>(false);
-  currentCancel_ = request.cancel;
-  pending_ = std::move(request);
-  building_ = true;
-  progress_ = 0.0;
-  wake_.notify_all();
+  job_.submit(std::move(request));  // stale work stops at its next progress poll
 }
 
-MeshPreview::Result MeshPreview::build(const Request& request, std::atomic<double>& progress) {
+void MeshPreview::build(const Request& request, BuildJob::Context& context) {
   Result result;
   result.depth = request.depth;
   const auto start = std::chrono::steady_clock::now();
@@ -94,10 +80,10 @@ MeshPreview::Result MeshPreview::build(const Request& request, std::atomic<doubl
     runDeterministic(
         request.ifs, request.spec, options, mesh,
         [&](double f) {
-          progress = f * 0.9;
-          return !request.cancel->load();
+          context.progress(f * 0.9);
+          return !context.stale();
         },
-        request.cancel.get());
+        context.stopFlag());
     const IfsMesh& m = mesh.mesh;
     result.vertices.resize(m.n_vertices());
     for (auto vh : m.vertices()) {
@@ -106,7 +92,7 @@ MeshPreview::Result MeshPreview::build(const Request& request, std::atomic<doubl
     }
     result.indices.reserve(m.n_faces() * 6);
     for (auto fh : m.faces()) {
-      if (request.cancel->load()) throw DeterministicCancelled();
+      if (context.stale()) throw DeterministicCancelled();
       // Fan triangulation of each (convex) face.
       std::uint32_t first = 0, prev = 0;
       int k = 0;
@@ -121,39 +107,21 @@ MeshPreview::Result MeshPreview::build(const Request& request, std::atomic<doubl
       }
     }
     result.faces = m.n_faces();
-    progress = 1.0;
+    context.progress(1.0);
   } catch (const DeterministicCancelled&) {
-    result.error = "cancelled";
+    return;  // a newer request follows
   } catch (const std::exception& e) {
     result.error = e.what();
   }
   result.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  return result;
-}
-
-void MeshPreview::run() {
-  for (;;) {
-    std::unique_lock lock(mutex_);
-    wake_.wait(lock, [this] { return stop_ || pending_.has_value(); });
-    if (stop_) return;
-    Request request = std::move(*pending_);
-    pending_.reset();
-    lock.unlock();
-    Result result = build(request, progress_);
-    lock.lock();
-    if (result.error == "cancelled" || request.cancel->load()) continue;  // a newer request follows
-    result_ = std::move(result);
-    if (!pending_) building_ = false;
-  }
+  if (context.stale()) return;  // a newer request follows
+  context.publish(std::move(result));
 }
 
 bool MeshPreview::upload() {
-  std::optional<Result> result;
-  {
-    std::lock_guard lock(mutex_);
-    if (!result_) return false;
-    result.swap(result_);
-  }
+  std::optional<BuildJob::Result> published = job_.poll();
+  if (!published) return false;
+  Result* result = &published->value;
   if (!result->error.empty()) {
     error_ = result->error;
     return true;

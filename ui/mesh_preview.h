@@ -3,18 +3,14 @@
 // sphere drawn as a lit mesh in the preview window, so the artist sees an initial shape converge
 // to the attractor as n grows. The mesh is built on a worker thread (cancelled and restarted when
 // the functions, the depth or the base change); the UI thread only plans, uploads and draws.
-#include <atomic>
-#include <condition_variable>
 #include <cstdint>
-#include <memory>
-#include <mutex>
 #include <optional>
 #include <string>
-#include <thread>
 #include <vector>
 
-#include "mesh/base_mesh.h"
+#include "base/background_job.h"
 #include "edit/document.h"
+#include "mesh/base_mesh.h"
 #include "mesh/deterministic_ifs.h"
 #include "ui/gl_resources.h"
 
@@ -49,8 +45,8 @@ class MeshPreview {
   /// Draws the current mesh into `target` with the project camera; clears to `background`.
   void draw(const RenderTarget& target, const Camera& camera, const glm::vec3& background);
 
-  bool building() const { return building_.load(); }
-  double progress() const { return progress_.load(); }
+  bool building() const { return job_.busy(); }
+  double progress() const { return job_.progress().fraction; }
   /// Largest depth whose mesh stays under kMaxPreviewFaces and the memory budget (≥ 0).
   int maxDepth() const { return maxDepth_; }
   /// Faces of the mesh on screen (0 when none).
@@ -66,7 +62,6 @@ class MeshPreview {
     DeterministicIfs ifs;
     BaseMeshSpec spec;
     int depth = 0;
-    std::shared_ptr<std::atomic<bool>> cancel;
   };
   struct Result {
     std::vector<MeshPreviewVertex> vertices;
@@ -76,8 +71,9 @@ class MeshPreview {
     double ms = 0.0;
     std::string error;
   };
-  void run();
-  static Result build(const Request& request, std::atomic<double>& progress);
+  using BuildJob = BackgroundJob<Request, Result>;
+  /// Worker thread: builds the mesh of `request`; publishes nothing when superseded.
+  static void build(const Request& request, BuildJob::Context& context);
 
   // UI-thread state.
   std::uint64_t revision_ = 0;  // Document::revisions().geometry of the last request
@@ -95,16 +91,8 @@ class MeshPreview {
   GLuint vao_ = 0, vbo_ = 0, ebo_ = 0;
   std::size_t indexCount_ = 0;
 
-  // Worker.
-  std::mutex mutex_;
-  std::condition_variable wake_;
-  bool stop_ = false;
-  std::optional<Request> pending_;
-  std::shared_ptr<std::atomic<bool>> currentCancel_;
-  std::optional<Result> result_;
-  std::atomic<bool> building_{false};
-  std::atomic<double> progress_{0.0};
-  std::thread thread_;
+  // Last: destroyed first, it stops and joins the worker before the rest goes.
+  BuildJob job_{&MeshPreview::build};
 };
 
 }  // namespace gridifs::ui

@@ -51,7 +51,6 @@ void RenderAnimationDialog::openFor(const ModellerState& state) {
 }
 
 void RenderAnimationDialog::start(ModellerState& state) {
-  task_.join();
   message_.clear();
   // What can fail fast fails here, inline, before the thread starts.
   if (auto problem = checkFramePattern(pattern_)) {
@@ -91,25 +90,25 @@ void RenderAnimationDialog::start(ModellerState& state) {
   framesDone_ = 0;
   frameCount_ = int(last - first + 1);
   phase_ = TaskPhase::Running;
-  task_.start([this, project, pattern, first, last, projectFolder, threads] {
+  task_.start([this, project, pattern, first, last, projectFolder, threads](JobContext& context) -> TaskOutcome {
     const double count = double(last - first + 1);
     long frame = first;
     try {
       for (; frame <= last; ++frame) {
         const double done = double(frame - first);
         renderAnimationFrame(project, frame, frameFileName(pattern, frame), threads, projectFolder, [&](double f) {
-          task_.setProgress((done + f) / count);
-          return !task_.cancelled();
+          context.progress((done + f) / count);
+          return !context.stopRequested();
         });
         ++framesDone_;
       }
-      task_.finish(TaskPhase::Done, "Rendered " + std::to_string(last - first + 1) + " frames: " + frameFileName(pattern, first) +
-                              " … " + fs::path(frameFileName(pattern, last)).filename().string() + ".");
+      return {TaskPhase::Done, "Rendered " + std::to_string(last - first + 1) + " frames: " + frameFileName(pattern, first) +
+                                   " … " + fs::path(frameFileName(pattern, last)).filename().string() + "."};
     } catch (const RenderCancelled&) {
-      task_.finish(TaskPhase::Cancelled, "Cancelled at frame " + std::to_string(frame) + "; " + std::to_string(frame - first) +
-                                   " frames were written, frame " + std::to_string(frame) + " was not.");
+      return {TaskPhase::Cancelled, "Cancelled at frame " + std::to_string(frame) + "; " + std::to_string(frame - first) +
+                                        " frames were written, frame " + std::to_string(frame) + " was not."};
     } catch (const std::exception& e) {
-      task_.finish(TaskPhase::Failed, "Frame " + std::to_string(frame) + ": " + e.what());
+      return {TaskPhase::Failed, "Frame " + std::to_string(frame) + ": " + e.what()};
     }
   });
 }

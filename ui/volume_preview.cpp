@@ -42,16 +42,9 @@ void setTextureParameters(GLenum target, GLint filter) {
 
 }  // namespace
 
-VolumePreview::VolumePreview() : thread_([this] { run(); }) {}
+VolumePreview::VolumePreview() = default;
 
 VolumePreview::~VolumePreview() {
-  {
-    std::lock_guard lock(mutex_);
-    stop_ = true;
-    if (currentCancel_) currentCancel_->store(true);
-  }
-  wake_.notify_all();
-  thread_.join();
   const GLuint textures[] = {density_, color_, lightDepth_, palette_};
   for (GLuint t : textures)
     if (t) glDeleteTextures(1, &t);
@@ -78,10 +71,7 @@ void VolumePreview::update(const Document& document, int threads) {
   const Vec3 light = lightDirection(project);
   if (!(light == light_)) {
     light_ = light;
-    std::lock_guard lock(mutex_);
-    workerLight_ = light;
-    relightPending_ = true;  // a finished volume gets its shadow again; a running one at its next publish
-    wake_.notify_all();
+    relightSource();  // the volume on screen gets its shadow again; a running one's frames on arrival
   }
   const int resolution = effectiveResolution(project, view.resolution);
   // The measure depends on the functions (and their sets) and on the volume settings; the Document
@@ -98,70 +88,42 @@ void VolumePreview::update(const Document& document, int threads) {
   setIteration_ = usesSetIteration(project);
   hasColor_ = hasColorVolume(project);
 
-  std::lock_guard lock(mutex_);
-  if (currentCancel_) currentCancel_->store(true);  // stale work stops at its next poll
-  currentCancel_.reset();
-  pending_.reset();
+  compute_.cancel();  // stale work stops at its next poll
   error_.clear();
   shownFinal_ = false;
   const std::uint64_t need = volumeBytes(project, resolution);
   if (const auto available = availableMemoryBytes(); available && need > *available / 2) {
     error_ = "A " + std::to_string(resolution) + "³ volume needs about " + describeBytes(need) +
              ", more than half of the " + describeBytes(*available) + " free: choose a lower preview resolution";
-    computing_ = false;
     return;
   }
   Request request;
   request.project = project;
   request.folder = document.path().parent_path();
   request.resolution = resolution;
-  request.threads = std::max(1, threads);
-  request.cancel = std::make_shared<std::atomic<bool>>(false);
-  currentCancel_ = request.cancel;
-  pending_ = std::move(request);
-  computing_ = true;
-  done_ = 0;
-  total_ = 0;
-  wake_.notify_all();
+  request.threads = threads_ = std::max(1, threads);
+  request.light = light_;
+  compute_.submit(std::move(request));
 }
 
 void VolumePreview::suspend() {
-  std::lock_guard lock(mutex_);
-  if (!computing_.load()) return;
-  if (currentCancel_) currentCancel_->store(true);
-  currentCancel_.reset();
-  pending_.reset();
-  computing_ = false;
+  if (!compute_.busy()) return;
+  compute_.cancel();
   haveRequest_ = false;
 }
 
-void VolumePreview::run() {
-  for (;;) {
-    std::unique_lock lock(mutex_);
-    wake_.wait(lock, [this] { return stop_ || pending_.has_value() || relightPending_; });
-    if (stop_) return;
-    if (pending_) {
-      Request request = std::move(*pending_);
-      pending_.reset();
-      lock.unlock();
-      compute(request);
-      lock.lock();
-      if (!pending_ && currentCancel_ == request.cancel) computing_ = false;
-    } else {
-      lock.unlock();
-      relight();
-    }
-  }
+void VolumePreview::relightSource() {
+  if (source_) relight_.submit({source_, light_, threads_});
 }
 
-void VolumePreview::compute(const Request& request) {
+void VolumePreview::compute(const Request& request, ComputeJob::Context& context) {
   const Project& project = request.project;
   VolumeSettings settings = project.volume.value_or(VolumeSettings{});
   settings.resolution = request.resolution;
   VolumeJob job;
   job.threads = request.threads;
   job.projectFolder = request.folder;
-  job.cancel = request.cancel.get();
+  job.cancel = context.stopFlag();
   const std::size_t voxels =
       std::size_t(settings.resolution) * std::size_t(settings.resolution) * std::size_t(settings.resolution);
   auto lastPublish = Clock::now();
@@ -169,34 +131,38 @@ void VolumePreview::compute(const Request& request) {
     if (usesSetIteration(project)) {
       // Sokolov & Gentil, §3.4: P accumulates once per set iteration after the skip; each partial
       // volume is the visits so far, a picture that sharpens as the iteration runs.
-      total_ = settings.iterations;
+      context.progress(0, settings.iterations);
       job.settings = settings;
-      job.progress = [&](double f) { done_ = std::int64_t(std::lround(f * settings.iterations)); };
+      job.progress = [&](double f) {
+        context.progress(std::int64_t(std::lround(f * settings.iterations)), settings.iterations);
+      };
       job.partial = [&](const DensityVolume& partial) {
         if (std::chrono::duration<double>(Clock::now() - lastPublish).count() < kPublishSeconds) return;
-        publish(request, partial.density, partial.color, false);
+        publish(request, context, partial.density, partial.color, false);
         lastPublish = Clock::now();
       };
       const DensityVolume volume = computeDensityVolume(project, job);
-      if (request.cancel->load()) return;
+      if (context.stale()) return;
       std::vector<float> colorSums = volume.color;  // means back to sums: publish() divides again
       for (std::size_t v = 0; v < voxels && !colorSums.empty(); ++v)
         for (int c = 0; c < 3; ++c) colorSums[3 * v + std::size_t(c)] *= volume.density[v];
-      publish(request, volume.density, colorSums, true);
+      publish(request, context, volume.density, colorSums, true);
     } else {
       // The chaos game's points binned: the samples in passes with their own seeds, each pass's
       // normalised density turned back into hit counts (P = density · max P, max P = Σ P / Σ density).
       const std::int64_t samples = std::max<std::int64_t>(settings.samples, kPointPasses);
-      total_ = samples;
+      context.progress(0, samples);
       std::vector<float> counts(voxels, 0.0f), colorSums;
-      for (int pass = 0; pass < kPointPasses && !request.cancel->load(); ++pass) {
+      for (int pass = 0; pass < kPointPasses && !context.stale(); ++pass) {
         job.settings = settings;
         job.settings.samples = samples / kPointPasses;
         job.settings.seed = settings.seed + std::uint64_t(pass) * 0x9E3779B97F4A7C15ull;
         const std::int64_t before = std::int64_t(pass) * job.settings.samples;
-        job.progress = [&](double f) { done_ = before + std::int64_t(f * double(job.settings.samples)); };
+        job.progress = [&](double f) {
+          context.progress(before + std::int64_t(f * double(job.settings.samples)), samples);
+        };
         const DensityVolume volume = computeDensityVolume(project, job);
-        if (request.cancel->load()) return;
+        if (context.stale()) return;
         double sum = 0.0;
         for (float d : volume.density) sum += d;
         const double largest = sum > 0.0 ? volume.totalMass / sum : 0.0;
@@ -208,21 +174,21 @@ void VolumePreview::compute(const Request& request) {
             for (int c = 0; c < 3; ++c)
               colorSums[3 * v + std::size_t(c)] += volume.color[3 * v + std::size_t(c)] * hits;
         }
-        publish(request, counts, colorSums, pass + 1 == kPointPasses);
+        publish(request, context, counts, colorSums, pass + 1 == kPointPasses);
       }
-      done_ = samples;
+      context.progress(samples, samples);
     }
   } catch (const std::exception& e) {
-    if (request.cancel->load()) return;
-    Frame frame;
-    frame.error = e.what();
-    std::lock_guard lock(mutex_);
-    if (currentCancel_ == request.cancel) frame_ = std::move(frame);
+    if (context.stale()) return;
+    auto frame = std::make_shared<Frame>();
+    frame->error = e.what();
+    context.publish(std::move(frame));
   }
 }
 
-void VolumePreview::publish(const Request& request, const std::vector<float>& counts,
+void VolumePreview::publish(const Request& request, ComputeJob::Context& context, const std::vector<float>& counts,
                             const std::vector<float>& colorSums, bool final) {
+  if (context.stale()) return;  // spare the shadow of a volume nobody will see
   auto frame = std::make_shared<Frame>();
   frame->n = request.resolution;
   frame->final = final;
@@ -237,52 +203,44 @@ void VolumePreview::publish(const Request& request, const std::vector<float>& co
   }
   if (largest > 0.0f)
     for (float& d : frame->density) d /= largest;
-  Vec3 light;
-  {
-    std::lock_guard lock(mutex_);
-    light = workerLight_;
-    relightPending_ = false;
-    workerThreads_ = request.threads;
-  }
-  frame->lightDepth = lightOpticalDepth(frame->density, frame->n, light, request.threads);
-  std::lock_guard lock(mutex_);
-  if (currentCancel_ != request.cancel || request.cancel->load()) return;
-  lastFrame_ = frame;
-  frame_ = *frame;
+  frame->light = request.light;
+  frame->lightDepth = lightOpticalDepth(frame->density, frame->n, request.light, request.threads);
+  context.publish(std::move(frame));
 }
 
-void VolumePreview::relight() {
-  std::shared_ptr<const Frame> last;
-  Vec3 light;
-  int threads = 1;
-  {
-    std::lock_guard lock(mutex_);
-    relightPending_ = false;
-    last = lastFrame_;
-    light = workerLight_;
-    threads = workerThreads_;
-  }
-  if (!last) return;
-  auto frame = std::make_shared<Frame>(*last);
-  frame->lightDepth = lightOpticalDepth(frame->density, frame->n, light, threads);
-  std::lock_guard lock(mutex_);
-  if (lastFrame_ != last) return;  // a newer volume came meanwhile (it has its own shadow)
-  lastFrame_ = frame;
-  frame_ = *frame;
+void VolumePreview::relight(const Relight& relight, RelightJob::Context& context) {
+  auto frame = std::make_shared<Frame>(*relight.source);
+  frame->light = relight.light;
+  frame->lightDepth = lightOpticalDepth(frame->density, frame->n, relight.light, relight.threads);
+  context.publish({relight.source, std::move(frame)});
 }
 
 bool VolumePreview::upload() {
-  std::optional<Frame> frame;
-  {
-    std::lock_guard lock(mutex_);
-    if (!frame_) return false;
-    frame.swap(frame_);
-  }
-  if (!frame->error.empty()) {
-    error_ = frame->error;
+  if (auto computed = compute_.poll()) {
+    const FramePtr& frame = computed->value;
+    if (!frame->error.empty()) {
+      error_ = frame->error;
+      return true;
+    }
+    source_ = frame;
+    // The light turned while this frame was computed: show it now, and its new shadow when ready.
+    if (frame->light == light_)
+      relight_.cancel();  // an older frame's shadow is moot
+    else
+      relightSource();
+    uploadFrame(*frame);
     return true;
   }
-  const GLsizei n = frame->n;
+  if (auto relit = relight_.poll()) {
+    if (relit->value.source != source_) return false;  // a newer volume came meanwhile (it has its own shadow)
+    uploadFrame(*relit->value.frame);
+    return true;
+  }
+  return false;
+}
+
+void VolumePreview::uploadFrame(const Frame& frame) {
+  const GLsizei n = frame.n;
   auto upload3d = [n](GLuint& texture, GLint internal, GLenum format, const std::vector<float>& data) {
     if (!texture) glGenTextures(1, &texture);
     glBindTexture(GL_TEXTURE_3D, texture);
@@ -290,16 +248,15 @@ bool VolumePreview::upload() {
     glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
     glTexImage3D(GL_TEXTURE_3D, 0, internal, n, n, n, 0, format, GL_FLOAT, data.data());
   };
-  upload3d(density_, GL_R16F, GL_RED, frame->density);
-  upload3d(lightDepth_, GL_R16F, GL_RED, frame->lightDepth);
-  hasColor_ = !frame->color.empty();
-  if (hasColor_) upload3d(color_, GL_RGB16F, GL_RGB, frame->color);
+  upload3d(density_, GL_R16F, GL_RED, frame.density);
+  upload3d(lightDepth_, GL_R16F, GL_RED, frame.lightDepth);
+  hasColor_ = !frame.color.empty();
+  if (hasColor_) upload3d(color_, GL_RGB16F, GL_RGB, frame.color);
   glBindTexture(GL_TEXTURE_3D, 0);
-  shownResolution_ = frame->n;
-  shownFinal_ = frame->final;
+  shownResolution_ = frame.n;
+  shownFinal_ = frame.final;
   error_.clear();
   ++uploads_;
-  return true;
 }
 
 void VolumePreview::draw(const RenderTarget& target, const Project& project) {

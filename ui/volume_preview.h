@@ -3,18 +3,17 @@
 // resolution on a worker thread and ray-marched as a 3D texture with emission and absorption,
 // lit by one directional light with self-shadowing. The worker publishes the partial volume now
 // and then while the iteration runs, so the picture fills progressively; an edit of the
-// functions (or a new time that changes them) cancels it and starts again. The UI thread only uploads and draws.
-#include <atomic>
-#include <condition_variable>
+// functions (or a new time that changes them) cancels it and starts again. A second job
+// recomputes the shadow of the newest volume when the light turns. The UI thread only uploads
+// and draws.
 #include <cstdint>
 #include <filesystem>
 #include <memory>
-#include <mutex>
 #include <optional>
 #include <string>
-#include <thread>
 #include <vector>
 
+#include "base/background_job.h"
 #include "edit/document.h"
 #include "flame/palette.h"
 #include "render/camera.h"
@@ -56,16 +55,16 @@ class VolumePreview {
   /// The resolution the preview computes at: the artist's choice within the project's volume resolution.
   static int effectiveResolution(const Project& project, int requested);
 
-  bool computing() const { return computing_.load(); }
+  bool computing() const { return compute_.busy(); }
   /// Work done and to do in the current computation: set iterations, or chaos-game points.
-  std::int64_t done() const { return done_.load(); }
-  std::int64_t total() const { return total_.load(); }
+  std::int64_t done() const { return compute_.progress().done; }
+  std::int64_t total() const { return compute_.progress().total; }
   bool setIteration() const { return setIteration_; }
   int resolution() const { return shownResolution_; }
   std::uint64_t restarts() const { return restarts_; }
   std::uint64_t uploads() const { return uploads_; }
   /// Whether the volume on screen is the finished one of the current request.
-  bool finished() const { return shownFinal_ && !computing_.load(); }
+  bool finished() const { return shownFinal_ && !computing(); }
   /// Why nothing can be shown ("" when all is well): a set that fails to voxelize, too little memory.
   const std::string& error() const { return error_; }
 
@@ -75,20 +74,35 @@ class VolumePreview {
     std::filesystem::path folder;
     int resolution = 64;
     int threads = 1;
-    std::shared_ptr<std::atomic<bool>> cancel;
+    Vec3 light{0.0};  // what the published frames are shadowed for
   };
   struct Frame {
     int n = 0;
     std::vector<float> density, color, lightDepth;  // color: empty, or 3 per voxel
+    Vec3 light{0.0};                                // the light of lightDepth
     bool final = false;
     std::string error;
   };
-  void run();
-  void compute(const Request& request);
-  /// Normalises `counts` (and colour sums) and publishes them with their shadow (worker thread).
-  void publish(const Request& request, const std::vector<float>& counts, const std::vector<float>& colorSums,
-               bool final);
-  void relight();
+  using FramePtr = std::shared_ptr<const Frame>;
+  struct Relight {
+    FramePtr source;  // a computed frame
+    Vec3 light{0.0};
+    int threads = 1;
+  };
+  struct Relit {
+    FramePtr source, frame;
+  };
+  using ComputeJob = BackgroundJob<Request, FramePtr>;
+  using RelightJob = BackgroundJob<Relight, Relit>;
+  /// Worker threads.
+  static void compute(const Request& request, ComputeJob::Context& context);
+  /// Normalises `counts` (and colour sums) and publishes them with their shadow.
+  static void publish(const Request& request, ComputeJob::Context& context, const std::vector<float>& counts,
+                      const std::vector<float>& colorSums, bool final);
+  static void relight(const Relight& relight, RelightJob::Context& context);
+  /// UI thread: shadows the newest computed frame for light_ (on the relight job).
+  void relightSource();
+  void uploadFrame(const Frame& frame);
 
   // UI-thread state.
   std::uint64_t geometryRevision_ = 0;
@@ -104,25 +118,16 @@ class VolumePreview {
   bool hasColor_ = false;
   std::string paletteRef_;
   std::filesystem::path paletteFolder_;
+  FramePtr source_;  // the newest computed frame taken (what a relight starts from)
+  int threads_ = 1;  // the threads of the last request (a relight uses as many)
 
   // GL.
   std::optional<ShaderProgram> program_;
   GLuint density_ = 0, color_ = 0, lightDepth_ = 0, palette_ = 0, vao_ = 0;
 
-  // Worker.
-  std::mutex mutex_;
-  std::condition_variable wake_;
-  bool stop_ = false;
-  std::optional<Request> pending_;
-  std::shared_ptr<std::atomic<bool>> currentCancel_;
-  Vec3 workerLight_{0.0};  // guarded by mutex_
-  bool relightPending_ = false;
-  std::optional<Frame> frame_;              // the newest published frame, taken by upload()
-  std::shared_ptr<const Frame> lastFrame_;  // worker only: what a relight recomputes the shadow of
-  int workerThreads_ = 1;
-  std::atomic<bool> computing_{false};
-  std::atomic<std::int64_t> done_{0}, total_{0};
-  std::thread thread_;
+  // Last: destroyed first, they stop and join their workers before the rest goes.
+  ComputeJob compute_{&VolumePreview::compute};
+  RelightJob relight_{&VolumePreview::relight};
 };
 
 }  // namespace gridifs::ui
