@@ -85,6 +85,8 @@ PreparedRender prepareRender(const Project& project, const RenderJobOptions& opt
   PreparedRender r;
   r.project = options.time ? renderProjectAt(project, *options.time) : project;
   r.output = outputRenderJob(r.project, options);
+  // The renderer would draw an empty picture: say so instead.
+  if (r.output.samples < 1) throw RenderJobError("render.samples", "must be at least 1");
   try {
     validateRenderJob(r.output);
   } catch (const ModelError& e) {
