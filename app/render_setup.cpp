@@ -10,7 +10,7 @@
 #include "app/cli.h"
 #include "model/contractivity.h"
 #include "model/free_form.h"
-#include "volume/condensation_sampler.h"
+#include "job/prepared_render.h"
 
 namespace gridifs::cli {
 
@@ -53,14 +53,21 @@ RenderSetup prepareRender(const std::filesystem::path& file, const RenderOverrid
 
 RenderSetup prepareRenderOf(const Project& loaded, const std::filesystem::path& file,
                             const RenderOverrides& overrides, std::int64_t maxSamples, bool warn) {
+  // The steps of gridifs::prepareRender (job/prepared_render.h), with the command line's own
+  // checks and wording between them; the display mode's job is made by the mode's runner
+  // (app/verb_render.cpp), which knows --palette and merged parts.
   RenderSetup setup;
   setup.project = projectForVerbAt(loaded, file, overrides.time);
+  RenderJobOptions options;
+  options.threads = overrides.threads.value_or(0);
+  options.width = overrides.width;
+  options.height = overrides.height;
+  options.seed = overrides.seed;
+  if (overrides.samples) options.samples = parseSamples(*overrides.samples, maxSamples);
+  // Condensation sets read from files (meshes, VDB grids) are found beside the project.
+  options.folder = file.parent_path();
   RenderJob& job = setup.job;
-  job = RenderJob::fromProject(setup.project, overrides.threads.value_or(0));
-  if (overrides.width) job.width = *overrides.width;
-  if (overrides.height) job.height = *overrides.height;
-  if (overrides.seed) job.seed = *overrides.seed;
-  if (overrides.samples) job.samples = parseSamples(*overrides.samples, maxSamples);
+  job = outputRenderJob(setup.project, options);
   if (overrides.threads && (*overrides.threads < 1 || *overrides.threads > limits::kMaxRenderThreads))
     throw CliError(kBadInput, "--threads must be between 1 and " + std::to_string(limits::kMaxRenderThreads));
   if (job.samples < 1)
@@ -75,10 +82,8 @@ RenderSetup prepareRenderOf(const Project& loaded, const std::filesystem::path& 
   }
   Document document(setup.project);
   try {
-    // Condensation sets read from files (meshes, VDB grids) are found beside the project.
-    setup.ifs = compileIfs(document.project(), document.evaluation(),
-                           makeCondensationSampler(setup.project, file.parent_path().empty() ? "." : file.parent_path()));
-  } catch (const ModelError& e) {
+    setup.ifs = compileRenderIfs(document, options.folder, options.setResolution);
+  } catch (const RenderJobError& e) {
     throw CliError(kBadInput, file.string() + ": " + e.what());
   }
   // The chaos game still draws something for an expanding function (clamping to X keeps the chain

@@ -12,6 +12,7 @@
 #include "edit/document.h"
 #include "flame/palette.h"
 #include "io/animation_io.h"
+#include "job/prepared_render.h"
 #include "render/compiled_ifs.h"
 #include "render/flame_render.h"
 #include "render/image_file.h"
@@ -55,40 +56,37 @@ std::optional<std::string> checkFramePattern(const std::string& pattern) {
 void renderAnimationFrame(const Project& animated, long frame, const std::filesystem::path& out, int threads,
                           const std::filesystem::path& projectFolder, const std::function<bool(double)>& progress) {
   const double fps = animated.animation.value_or(AnimationSettings{}).fps;
-  const Project project = projectAtTime(animated, double(frame) / fps);
-  const Document document(project);
-  const std::shared_ptr<const CompiledIfs> ifs = compileIfs(document.project(), document.evaluation());
-  RenderJob job = RenderJob::fromProject(project, threads);
+  // The same preparation as `gridifs render --time`: condensation sets read from files beside
+  // the project, the palette and the lights of the display mode (job/prepared_render.h).
+  RenderJobOptions options;
+  options.time = double(frame) / fps;
+  options.threads = threads;
+  options.folder = projectFolder;
+  const PreparedRender render = prepareRender(animated, options);
+  const Project& project = render.project;
+  const RenderJob& job = render.output;
   auto report = [&](const RenderStats& s) { return !progress || progress(std::min(1.0, s.progress())); };
   const std::string description = "GridIFS animation frame " + std::to_string(frame) +
                                   " (t = " + std::to_string(project.time) + " s), " + std::to_string(job.samples) +
                                   " samples";
+  const RenderImage image = renderToCompletion(render.ifs, render.job, render.display, report);
   switch (project.render.mode) {
     case DisplayMode::Flame: {
       // Draves & Reckase 2003, §4–8: supersampled palette colours, log-density tone mapping.
-      const FlameSettings& settings = project.render.flame;
-      const auto palette = std::make_shared<const Palette>(resolvePalette(settings.palette, projectFolder));
-      const RenderJob flameJob = flameRenderJob(job, settings, palette);
-      const RenderImage image = renderToCompletion(ifs, flameJob, DisplaySettings::fromProject(project), report);
-      const FlameImage flame = developFlameSnapshot(image, settings, project.camera, job.width, job.height,
+      const FlameImage flame = developFlameSnapshot(image, project.render.flame, project.camera, job.width, job.height,
                                                     project.render.background, false, job.threads);
       writeFlameImage(flame, out, lowerExtension(out) == "exr" ? 32 : 8, false);
       return;
     }
     case DisplayMode::Shaded: {
-      const ShadingSettings& shading = project.render.shading;
-      const RenderJob shadedJob = shadedRenderJob(job, shading, *ifs);
-      const RenderImage image = renderToCompletion(ifs, shadedJob, shadedDisplaySettings(project), report);
       ShadedImage shaded;
-      developShaded(image, shading, project.camera, project.render.background, job.threads, shaded);
+      developShaded(image, project.render.shading, project.camera, project.render.background, job.threads, shaded);
       writeDisplayImage(shaded.rgba, shaded.width, shaded.height, out, description);
       return;
     }
-    default: {
-      const RenderImage image = renderToCompletion(ifs, job, DisplaySettings::fromProject(project), report);
+    default:
       writeDisplayImage(image.rgba, image.width, image.height, out, description);
       return;
-    }
   }
 }
 

@@ -21,7 +21,8 @@ std::optional<std::string> checkFramePattern(const std::string& pattern);
 
 /// Renders frame `frame` of `project` to `out`, written atomically (a temporary file renamed
 /// over it). `progress` receives the frame's fraction done and returns false to cancel (then
-/// RenderCancelled is thrown and nothing is written). `projectFolder` resolves palette files.
+/// RenderCancelled is thrown and nothing is written). `projectFolder` resolves palette and
+/// condensation set files.
 /// Throws ModelError for a project that is invalid at that time, IoError when the file cannot be
 /// written.
 void renderAnimationFrame(const Project& project, long frame, const std::filesystem::path& out, int threads,

@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "base/text_format.h"
+#include "job/prepared_render.h"
 #include "render/compiled_ifs.h"
 #include "mesh/mesh_io.h"
 #include "io/point_cloud_export.h"
@@ -211,10 +212,15 @@ void ExportDialog::start(ModellerState& state) {
         throw ModelError("", "the point file must be a .ply file: " + output.string());
       if (!fs::is_directory(output.parent_path().empty() ? fs::path(".") : output.parent_path(), ec))
         throw ModelError("", "the folder of " + output.string() + " does not exist");
-      auto ifs = compileIfs(state.document.project(), state.document.evaluation());
-      RenderJob job = RenderJob::fromProject(state.document.project(), 0);  // all cores, as the CLI
-      job.samples = samples_;
+      // The points of `gridifs export-points`: the same job, and condensation sets read from
+      // files beside the project (job/prepared_render.h).
+      RenderJobOptions options;
+      options.threads = 0;  // all cores, as the CLI
+      options.samples = samples_;
+      options.folder = state.projectFolder();
+      const RenderJob job = outputRenderJob(state.document.project(), options);
       validateRenderJob(job);
+      std::shared_ptr<const CompiledIfs> ifs = compileRenderIfs(state.document, options.folder, options.setResolution);
       const std::string description =
           "GridIFS export-points of " +
           (state.document.path().empty() ? std::string("untitled") : state.document.path().filename().string()) + ": " +

@@ -8,20 +8,6 @@
 
 namespace gridifs::ui {
 
-RenderJob previewFlameJob(const RenderJob& job, const Document& document) {
-  const FlameSettings& flame = document.project().render.flame;
-  std::shared_ptr<const Palette> palette;
-  try {
-    palette = std::make_shared<const Palette>(resolvePalette(flame.palette, document.path().parent_path()));
-  } catch (const std::exception&) {
-    // The palette picker shows why; the preview keeps rendering with the default palette.
-    palette = std::make_shared<const Palette>(builtinPalette(kDefaultPaletteRef));
-  }
-  FlameSettings preview = flame;
-  preview.supersample = 1;  // the preview's histogram is the preview's pixels
-  return flameRenderJob(job, preview, std::move(palette), /*gutter=*/false);
-}
-
 bool FlameDeveloper::submit(const RenderImage& snapshot, const FlameSettings& settings, const Camera& camera,
                             const Vec3& background) {
   if (job_.busy()) return false;

@@ -14,11 +14,6 @@
 
 namespace gridifs::ui {
 
-/// The preview's renderer job with flame accumulation: flameRenderJob without gutter and at
-/// supersample 1 (the z-buffer image stays the frame), the project's palette per sample (the
-/// default palette when the reference cannot be resolved). UI thread.
-RenderJob previewFlameJob(const RenderJob& job, const Document& document);
-
 /// Develops renderer snapshots into RGBA8 flame images on one worker thread (a BackgroundJob).
 /// UI thread only; submit() and take() never wait for a develop.
 class FlameDeveloper {

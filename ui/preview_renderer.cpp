@@ -2,7 +2,7 @@
 
 #include "render/compiled_ifs.h"
 #include "render/shaded_image.h"
-#include "volume/condensation_sampler.h"
+#include "job/prepared_render.h"
 #if GRIDIFS_HAVE_GPU
 #include "gpu/render_device.h"
 #endif
@@ -41,8 +41,7 @@ void PreviewRenderer::publish(const Document& document, int width, int height, i
   const Revisions& now = document.revisions();
   if (now.display != published_.display) {
     // The shaded display develops the structural colour itself: no depth cueing in its buffers.
-    const DisplaySettings display = project.render.mode == DisplayMode::Shaded ? shadedDisplaySettings(project)
-                                                                               : DisplaySettings::fromProject(project);
+    const DisplaySettings display = renderDisplaySettings(project);
     if (!(display.background == display_.background) || display.depthCue != display_.depthCue) {
       display_ = display;
       displayChanged_ = true;
@@ -62,16 +61,17 @@ void PreviewRenderer::publish(const Document& document, int width, int height, i
     const std::filesystem::path folder = document.path().parent_path().empty() ? "." : document.path().parent_path();
     // The same compiled IFS while the functions are unchanged: a restart that then changes only
     // the shadowed lights keeps the camera's buffers (ChaosRenderer::restart).
-    auto ifs = sameGeometry ? ifs_
-                            : compileIfs(document.project(), document.evaluation(),
-                                         makeCondensationSampler(document.project(), folder, 128));
-    RenderJob job = RenderJob::fromProject(project, threads);
-    job.width = width;
-    job.height = height;
-    job.lowPriority = true;  // the UI thread gets a core first (the modeller stays at ≥ 30 fps while rendering)
-    job = previewFlameJob(job, document);  // color sums always on: the mode switch is instant
-    // Shadow maps and depth of field are filled by the same chaos game (core/render/shaded_plot.h).
-    if (project.render.mode == DisplayMode::Shaded) job = shadedRenderJob(job, project.render.shading, *ifs);
+    auto ifs = sameGeometry ? ifs_ : compileRenderIfs(document, folder, 128);
+    // The steps of prepareRender (job/prepared_render.h) for the preview: low priority threads
+    // (the modeller stays at ≥ 30 fps while rendering), colour sums always on so that the mode
+    // switch is instant, and the shaded display's lights.
+    RenderJobOptions options;
+    options.threads = threads;
+    options.width = width;
+    options.height = height;
+    options.preview = true;
+    const RenderJob job = displayRenderJob(project, outputRenderJob(project, options), *ifs,
+                                           renderPalette(project, folder, /*preview=*/true), /*preview=*/true);
 #if GRIDIFS_HAVE_GPU
     try {
       renderer_->restart(ifs, job);

@@ -1,0 +1,114 @@
+#include "job/prepared_render.h"
+
+#include <algorithm>
+
+#include "io/animation_io.h"
+#include "render/flame_render.h"
+#include "render/shaded_image.h"
+#include "volume/condensation_sampler.h"
+
+namespace gridifs {
+
+Project renderProjectAt(const Project& project, double time) {
+  try {
+    return projectAtTime(project, time);
+  } catch (const ModelError& e) {
+    throw RenderJobError(e);
+  }
+}
+
+RenderJob outputRenderJob(const Project& project, const RenderJobOptions& options) {
+  RenderJob job = RenderJob::fromProject(project, options.threads);
+  if (options.width) job.width = *options.width;
+  if (options.height) job.height = *options.height;
+  if (options.seed) job.seed = *options.seed;
+  if (options.samples) job.samples = *options.samples;
+  // The UI thread gets a core first: the modeller stays responsive while the preview renders.
+  if (options.preview) job.lowPriority = true;
+  return job;
+}
+
+std::shared_ptr<const CompiledIfs> compileRenderIfs(const Document& document, const std::filesystem::path& folder,
+                                                    int setResolution) {
+  try {
+    return compileIfs(document.project(), document.evaluation(),
+                      makeCondensationSampler(document.project(), folder.empty() ? "." : folder, setResolution));
+  } catch (const ModelError& e) {
+    throw RenderJobError(e);
+  }
+}
+
+std::shared_ptr<const Palette> renderPalette(const Project& project, const std::filesystem::path& folder,
+                                             bool preview) {
+  const std::string& reference = project.render.flame.palette;
+  try {
+    return std::make_shared<const Palette>(resolvePalette(reference, folder));
+  } catch (const std::exception& e) {
+    if (preview) return std::make_shared<const Palette>(builtinPalette(kDefaultPaletteRef));
+    throw RenderJobError("render.flame.palette", e.what());
+  }
+}
+
+RenderJob displayRenderJob(const Project& project, const RenderJob& output, const CompiledIfs& ifs,
+                           std::shared_ptr<const Palette> palette, bool preview) {
+  try {
+    if (preview) {
+      // Colour sums in every mode, at the preview's pixels and without a gutter, so that the
+      // z-buffer image stays the frame and switching to the flame display needs no restart.
+      FlameSettings flame = project.render.flame;
+      flame.supersample = 1;
+      RenderJob job = flameRenderJob(output, flame, std::move(palette), /*gutter=*/false);
+      // Shadow maps and depth of field are filled by the same chaos game (render/shaded_plot.h).
+      if (project.render.mode == DisplayMode::Shaded) job = shadedRenderJob(job, project.render.shading, ifs);
+      return job;
+    }
+    switch (project.render.mode) {
+      case DisplayMode::Flame:
+        // Draves & Reckase 2003, §4–8: supersampled, with a gutter, palette colours per sample.
+        return flameRenderJob(output, project.render.flame, std::move(palette));
+      case DisplayMode::Shaded:
+        return shadedRenderJob(output, project.render.shading, ifs);
+      default:
+        return output;
+    }
+  } catch (const ModelError& e) {
+    throw RenderJobError(e);
+  }
+}
+
+DisplaySettings renderDisplaySettings(const Project& project) {
+  return project.render.mode == DisplayMode::Shaded ? shadedDisplaySettings(project)
+                                                    : DisplaySettings::fromProject(project);
+}
+
+PreparedRender prepareRender(const Project& project, const RenderJobOptions& options) {
+  PreparedRender r;
+  r.project = options.time ? renderProjectAt(project, *options.time) : project;
+  r.output = outputRenderJob(r.project, options);
+  // The renderer would draw an empty picture: say so instead.
+  if (r.output.samples < 1) throw RenderJobError("render.samples", "must be at least 1");
+  try {
+    validateRenderJob(r.output);
+  } catch (const ModelError& e) {
+    throw RenderJobError(e);
+  }
+  const Document document(r.project);
+  r.ifs = compileRenderIfs(document, options.folder, options.setResolution);
+  const bool flame = options.preview || r.project.render.mode == DisplayMode::Flame;
+  if (flame) r.palette = renderPalette(r.project, options.folder, options.preview);
+  r.job = displayRenderJob(r.project, r.output, *r.ifs, r.palette, options.preview);
+  try {
+    validateRenderJob(r.job);
+  } catch (const ModelError& e) {
+    // Only the flame display's supersampling makes the renderer's job larger than the output.
+    if (r.project.render.mode == DisplayMode::Flame && !options.preview)
+      throw RenderJobError(e.path(), "with supersample " + std::to_string(std::max(1, r.project.render.flame.supersample)) +
+                                         ", " + e.message());
+    throw RenderJobError(e);
+  }
+  r.display = renderDisplaySettings(r.project);
+  r.device = r.project.render.mode == DisplayMode::Shaded ? "cpu" : options.device;
+  return r;
+}
+
+}  // namespace gridifs
