@@ -66,7 +66,7 @@ extern "C" __attribute__((visibility("default"))) int gridifs_image_io_write(con
     if (ext == "exr" || ext == "tif" || ext == "tiff") spec.attribute("compression", "zip");
     // No date of writing: OpenImageIO stamps EXR and TIFF files with the current time unless the
     // spec has a "DateTime", so two renders of the same project a second apart differed, and so
-    // did a merged render (gridifs merge) and the render it must equal byte for byte (DESIGN §7.6).
+    // did a merged render (gridifs merge) and the render it must equal byte for byte.
     // EXR: an empty capDate. TIFF: a DateTime that is not a string counts as given but is not
     // written (only a string becomes the DateTime tag), so the tag is left out.
     if (ext == "exr") spec.attribute("DateTime", "");

@@ -60,7 +60,7 @@ openvdb::math::Transform::Ptr latticeTransform(int n) {
 
 /// OpenVDB writes a new random UUID into every file's header (io::Archive::writeHeader), so two
 /// writes of the same volume differed in those bytes, and so did a merged volume (gridifs merge)
-/// and the one `gridifs volume` writes, which must be equal byte for byte (DESIGN §7.6). The UUID
+/// and the one `gridifs volume` writes, which must be equal byte for byte. The UUID
 /// is replaced by one derived from the rest of the file: the same grids get the same UUID, other
 /// grids another (what readers such as Houdini use it for). The header: magic (8 bytes), file
 /// version, library major and minor (4 each), the grid-offsets flag (1), then the UUID as 36

@@ -1,4 +1,4 @@
-// Split renders on the command line (DESIGN §7.6): an image or volume depends on the project and
+// Split renders on the command line (docs/FARM.md): an image or volume depends on the project and
 // its options, never on --threads or on how the work is split. `render --part K/N` and
 // `volume --part K/N` write a part's accumulation, `merge` sums all N parts in any order into the
 // very file the whole render writes, byte for byte, and refuses a missing, duplicated, truncated,

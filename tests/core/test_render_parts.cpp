@@ -1,4 +1,4 @@
-// Split renders underneath the command line (DESIGN §7.6): the sample budget's chunks and how
+// Split renders underneath the command line (docs/FARM.md): the sample budget's chunks and how
 // parts share them (render/sample_chunks.h), the undeveloped buffers and their exact sum
 // (render/accumulation.h), the renderer's accumulation for any thread count and any split, and the
 // part file (io/render_part_file.h): a round trip, and truncation found wherever it cuts.
