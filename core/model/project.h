@@ -3,10 +3,10 @@
 #include <optional>
 #include <vector>
 
+#include "anim/keyframe_track.h"
 #include "model/flame_settings.h"
 #include "model/free_form_space.h"
 #include "model/function.h"
-#include "model/keyframe_track.h"
 #include "model/shading_settings.h"
 #include "model/volume_settings.h"
 
