@@ -11,7 +11,7 @@
 #include "base/text_format.h"
 #include "edit/document.h"
 #include "flame/palette.h"
-#include "io/animation_io.h"
+#include "model/project_time.h"
 #include "render/compiled_ifs.h"
 #include "render/flame_render.h"
 #include "render/image_file.h"

@@ -12,6 +12,9 @@
 
 namespace gridifs {
 
+/// The project file's "version": the only one this build reads and writes (io/project_io.h).
+inline constexpr int kProjectFormatVersion = 1;
+
 struct Camera {
   double yaw = 30.0, pitch = 20.0, distance = 4.0;  // degrees, degrees, units
   Vec3 target{0.0};
