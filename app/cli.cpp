@@ -6,8 +6,8 @@
 #include <iostream>
 #include <map>
 
-#include "io/animation_io.h"
 #include "io/project_io.h"
+#include "model/project_time.h"
 
 namespace gridifs::cli {
 namespace {

@@ -1,7 +1,7 @@
 #pragma once
 // Frames of an animation as image files: the numbered file names of a sequence and the render of
 // one frame, as File › Render animation… runs them on its worker thread. One frame is the project
-// at t = frame / fps (every keyframe track evaluated, io/animation_io.h) rendered in its display
+// at t = frame / fps (every keyframe track evaluated, model/project_time.h) rendered in its display
 // mode (z-buffer, flame or shaded) with its render settings.
 #include <cstdint>
 #include <filesystem>

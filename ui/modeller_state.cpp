@@ -3,7 +3,7 @@
 #include <algorithm>
 
 #include "edit/node_picking.h"
-#include "io/animation_io.h"
+#include "model/project_time.h"
 #include "model/stack_evaluator.h"
 
 namespace gridifs::ui {

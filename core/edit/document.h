@@ -57,7 +57,7 @@ class Document {
   void editUnrecorded(const Change& change);
 
   /// A rule applied to every change after it is made and before it is validated, given the
-  /// project before and after (the modeller's keyframing: io/animation_io.h
+  /// project before and after (the modeller's keyframing: model/project_time.h
   /// keyEditedParameters). Undo and redo apply it with `before` equal to the restored project
   /// whose time is set to the current one, so unrecorded time changes survive them.
   using Rule = std::function<Project(const Project& before, Project next)>;

@@ -7,7 +7,6 @@
 
 #include "base/atomic_file.h"
 #include "base/bounded_read.h"
-#include "io/animation_io.h"
 #include "io/animation_json.h"
 #include "io/free_form_io.h"
 #include "io/json_read.h"
@@ -16,6 +15,7 @@
 #include "io/shading_io.h"
 #include "io/volume_io.h"
 #include "model/operation_table.h"
+#include "model/project_time.h"
 #include "model/settings_tables.h"
 #include "model/transition_matrix.h"
 #include "model/validation.h"

@@ -10,8 +10,6 @@
 
 namespace gridifs {
 
-inline constexpr int kProjectFormatVersion = 1;
-
 /// Parses and validates project JSON text. Throws ModelError whose path is a JSON path
 /// (`functions[2].ops[0].k`) and whose message says what was expected.
 Project parseProject(const std::string& text);

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "io/animation_io.h"
+#include "model/project_time.h"
 #include "render/flame_render.h"
 #include "render/shaded_image.h"
 #include "volume/condensation_sampler.h"

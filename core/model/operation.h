@@ -6,7 +6,7 @@
 #include <variant>
 #include <vector>
 
-#include "model/fractal_field.h"
+#include "anim/fractal_field.h"
 #include "model/selection.h"
 
 namespace gridifs {

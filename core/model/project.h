@@ -3,14 +3,17 @@
 #include <optional>
 #include <vector>
 
+#include "anim/keyframe_track.h"
 #include "model/flame_settings.h"
 #include "model/free_form_space.h"
 #include "model/function.h"
-#include "model/keyframe_track.h"
 #include "model/shading_settings.h"
 #include "model/volume_settings.h"
 
 namespace gridifs {
+
+/// The project file's "version": the only one this build reads and writes (io/project_io.h).
+inline constexpr int kProjectFormatVersion = 1;
 
 struct Camera {
   double yaw = 30.0, pitch = 20.0, distance = 4.0;  // degrees, degrees, units

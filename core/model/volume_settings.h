@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <optional>
 
-#include "model/fractal_field.h"
+#include "anim/fractal_field.h"
 
 namespace gridifs {
 

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "model/fractal_field.h"
+#include "anim/fractal_field.h"
 
 namespace gridifs {
 namespace {

@@ -7,8 +7,8 @@
 #include <sstream>
 
 #include "base/errors.h"
-#include "io/animation_io.h"
 #include "io/project_io.h"
+#include "model/project_time.h"
 
 using namespace gridifs;
 namespace fs = std::filesystem;

@@ -4,8 +4,8 @@
 #include <filesystem>
 
 #include "edit/document.h"
-#include "io/animation_io.h"
 #include "io/project_io.h"
+#include "model/project_time.h"
 #include "project_samples.h"
 
 using namespace gridifs;

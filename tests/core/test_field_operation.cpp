@@ -5,9 +5,9 @@
 
 #include <cmath>
 
-#include "io/animation_io.h"
 #include "io/project_io.h"
 #include "model/evaluation_cache.h"
+#include "model/project_time.h"
 #include "model/stack_evaluator.h"
 #include "model_error_text.h"
 #include "op_test_support.h"

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <random>
 
-#include "model/fractal_field.h"
+#include "anim/fractal_field.h"
 
 using namespace gridifs;
 

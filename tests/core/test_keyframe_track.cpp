@@ -4,8 +4,8 @@
 
 #include <cmath>
 
+#include "anim/keyframe_track.h"
 #include "base/errors.h"
-#include "model/keyframe_track.h"
 #include "model/settings_tables.h"
 
 using namespace gridifs;

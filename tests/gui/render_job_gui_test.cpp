@@ -2,7 +2,7 @@
 // set is read from a mesh file beside it, as `gridifs render` and `gridifs export-points` do (the
 // three prepare their render in one place: core/job/prepared_render.h).
 #include "gui/gui_harness.h"
-#include "io/animation_io.h"
+#include "model/project_time.h"
 
 using namespace gridifs::gui_test;
 

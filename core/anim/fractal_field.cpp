@@ -1,11 +1,11 @@
-#include "model/fractal_field.h"
+#include "anim/fractal_field.h"
 
 #include <algorithm>
 #include <cmath>
 
+#include "anim/field_lattice.h"
+#include "anim/field_step.h"
 #include "base/hash.h"
-#include "model/field_lattice.h"
-#include "model/field_step.h"
 
 namespace gridifs {
 

@@ -1,6 +1,6 @@
 #pragma once
-// Keyframe tracks: a numeric parameter of the project, addressed by its JSON path
-// ("functions[0].ops[1].k", "camera.yaw"), animated by keys {t, v, interp}. A key's
+// Keyframe tracks: a numeric parameter of the project, addressed by its path in the project file
+// ("functions[0].ops[1].k", "camera.yaw"; anim/track_path.h), animated by keys {t, v, interp}. A key's
 // interpolation governs the segment from it to the next key: `step` holds its value,
 // `linear` blends, `smooth` is a cubic Hermite segment with Catmull-Rom tangents (finite
 // differences over the neighbouring keys, so uneven key spacing stays smooth). Before the first
@@ -42,7 +42,7 @@ struct KeyframeTrack {
   bool removeKey(double t, double tolerance = 1e-9);
 };
 
-/// All tracks of a project, by JSON path (ordered, so files save in a stable order).
+/// All tracks of a project, by parameter path (ordered, so files save in a stable order).
 using KeyframeTracks = std::map<std::string, KeyframeTrack>;
 
 /// Keeps the tracks on the elements of the list at `listPath` ("functions",

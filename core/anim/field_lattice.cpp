@@ -1,4 +1,4 @@
-#include "model/field_lattice.h"
+#include "anim/field_lattice.h"
 
 namespace gridifs::field_lattice {
 

@@ -1,4 +1,4 @@
-#include "model/keyframe_track.h"
+#include "anim/keyframe_track.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,0 +1,952 @@
+#include "model/project_parameter.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+
+#include "model/settings_tables.h"
+
+namespace gridifs {
+namespace {
+
+constexpr double kMaxCoordinate = limits::kMaxCoordinate;
+
+[[noreturn]] void fail(const std::string& path, const std::string& message) { throw ModelError(path, message); }
+
+/// A number in a message, printed as the file readers print them.
+std::string show(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+std::string item(const std::string& path, int index) { return path + "[" + std::to_string(index) + "]"; }
+
+/// A range bound of a setting read with SettingWords::IntegerRange as an integer (the table's
+/// INT64_MAX is stored as the double 2^63), as io/settings_json reads it.
+std::int64_t integerBound(double v) {
+  if (v >= 0x1p63) return INT64_MAX;
+  if (v <= -0x1p63) return INT64_MIN;
+  return std::int64_t(v);
+}
+
+/// A version number as the project file would hold it once keyed: the JSON library's text of a
+/// number that is no integer (shortest digits; "2.0", "1.5", "10000000.0", "1e+16"), or null
+/// when it is not finite.
+std::string versionText(double v) {
+  if (!std::isfinite(v)) return "null";
+  char scientific[40];
+  const char* end =
+      std::to_chars(scientific, scientific + sizeof scientific, std::abs(v), std::chars_format::scientific).ptr;
+  const std::string_view text(scientific, std::size_t(end - scientific));
+  const std::size_t e = text.find('e');
+  std::string digits;
+  for (char ch : text.substr(0, e))
+    if (ch != '.') digits += ch;
+  const int k = int(digits.size());
+  const int n = std::atoi(std::string(text.substr(e + 1)).c_str()) + 1;  // where the point goes
+  std::string out = std::signbit(v) ? "-" : "";
+  if (k <= n && n <= 15) return out + digits + std::string(std::size_t(n - k), '0') + ".0";
+  if (0 < n && n <= 15) return out + digits.substr(0, std::size_t(n)) + "." + digits.substr(std::size_t(n));
+  if (-4 < n && n <= 0) return out + "0." + std::string(std::size_t(-n), '0') + digits;
+  out += digits.substr(0, 1) + (k > 1 ? "." + digits.substr(1) : "") + (n - 1 < 0 ? "e-" : "e+");
+  const int exponent = std::abs(n - 1);
+  return out + (exponent < 10 ? "0" : "") + std::to_string(exponent);
+}
+
+const char* const kPlacementKeys[3] = {"translate", "rotate", "scale"};
+const char* const kCalculatorFields[3] = {"value", "min", "max"};
+const char* const kSelectionAxes[3] = {"i", "j", "k"};
+
+int keyIndex(std::string_view key, const char* const (&keys)[3]) {
+  for (int i = 0; i < 3; ++i)
+    if (key == keys[i]) return i;
+  return -1;
+}
+
+}  // namespace
+
+// ---- resolution: the project file's layout, as io/project_io writes it ------------------------
+
+/// Walks a path's tokens through the objects and lists the project file would hold, filling in
+/// the parameter as it goes.
+class ParameterResolver {
+ public:
+  ParameterResolver(const Project& project, const TrackPath& path) : project_(project), path_(path) {}
+
+  FoundParameter run() {
+    FoundParameter found;
+    found.lookup = root();
+    if (found.lookup == ParameterLookup::Number) found.parameter = p_;
+    return found;
+  }
+
+ private:
+  using Lookup = ParameterLookup;
+  using Where = ProjectParameter::Where;
+  using Group = ProjectParameter::Group;
+  using Reader = ProjectParameter::Reader;
+  using Storage = ProjectParameter::Storage;
+
+  bool end() const { return at_ == path_.size(); }
+  std::string_view token() { return path_[at_++]; }
+
+  /// Records the position, among its siblings, of the member or element the path enters, in the
+  /// order reading the file meets them (1-based: 0 marks levels the path does not reach).
+  void position(int i) {
+    if (depth_ < p_.order_.size()) p_.order_[depth_++] = std::int32_t(i) + 1;
+  }
+
+  /// The path reached a string or a switch: not a number, and nothing lies inside.
+  Lookup text() const { return end() ? Lookup::NotANumber : Lookup::Missing; }
+
+  Lookup number(Where where, Reader reader, Storage storage, double lo = 0.0, double hi = 0.0) {
+    if (!end()) return Lookup::Missing;
+    p_.where_ = where;
+    p_.reader_ = reader;
+    p_.storage_ = storage;
+    p_.lo_ = lo;
+    p_.hi_ = hi;
+    return Lookup::Number;
+  }
+
+  /// The next token as an index into a list of `size` elements, the way a JSON pointer reads
+  /// one ("0", or digits without a leading zero); -1 when it is none.
+  int index(std::size_t size) {
+    const std::string_view t = token();
+    if (t.empty() || t.size() > 9 || (t.size() > 1 && t[0] == '0')) return -1;
+    std::size_t value = 0;
+    for (char ch : t) {
+      if (ch < '0' || ch > '9') return -1;
+      value = value * 10 + std::size_t(ch - '0');
+    }
+    if (value >= size) return -1;
+    position(int(value));
+    return int(value);
+  }
+
+  /// Component `c` of a list of `n` numbers.
+  Lookup component(int n, Where where, Reader reader, double lo, double hi, Storage storage = Storage::Double) {
+    if (end()) return Lookup::NotANumber;
+    const int c = index(std::size_t(n));
+    if (c < 0) return Lookup::Missing;
+    p_.c_ = c;
+    return number(where, reader, storage, lo, hi);
+  }
+
+  /// {"translate", "rotate", "scale"}, three numbers each.
+  Lookup placement(Where where, Reader reader, double lo, double hi) {
+    if (end()) return Lookup::NotANumber;
+    const int b = keyIndex(token(), kPlacementKeys);
+    if (b < 0) return Lookup::Missing;
+    position(b);
+    p_.b_ = b;
+    return component(3, where, reader, lo, hi);
+  }
+
+  Lookup root() {
+    if (end()) return Lookup::NotANumber;
+    const std::string_view key = token();
+    // Positions follow parseProject: the version, the camera, the render settings, the
+    // functions, the final function, the transitions, then the animation, space and volume.
+    if (key == "format") return text();
+    if (key == "version") {
+      position(0);
+      return number(Where::Version, Reader::Version, Storage::None);
+    }
+    if (key == "camera") {
+      position(1);
+      return settingsObject(cameraTable(), Group::Camera, &project_.camera);
+    }
+    if (key == "render") {
+      position(2);
+      return render();
+    }
+    if (key == "functions") {
+      position(3);
+      if (end()) return Lookup::NotANumber;
+      const int f = index(project_.functions.size());
+      if (f < 0) return Lookup::Missing;
+      p_.f_ = f;
+      return function(project_.functions[std::size_t(f)]);
+    }
+    if (key == "final" && project_.final_function) {
+      position(4);
+      p_.f_ = -1;
+      return function(*project_.final_function);
+    }
+    if (key == "transitions" && !project_.transitions.empty()) {
+      position(5);
+      if (end()) return Lookup::NotANumber;
+      const int row = index(project_.transitions.size());
+      if (row < 0) return Lookup::Missing;
+      p_.a_ = row;
+      return component(int(project_.transitions[std::size_t(row)].size()), Where::Transition, Reader::Number, 0.0, 1e9);
+    }
+    if (key == "time" && project_.time != 0.0) {  // written only when not 0
+      position(6);
+      p_.fragile_ = true;
+      return number(Where::Time, Reader::Time, Storage::Double);
+    }
+    if (key == "animation" && project_.animation) {
+      position(7);
+      return settingsObject(animationSettingsTable(), Group::Animation, &*project_.animation);
+    }
+    // The tracks' own keys are not parameters: keying a key would change the animation itself.
+    if (key == "tracks" && !project_.tracks.empty()) return text();
+    if (key == "space" && project_.space) {
+      position(8);
+      if (end()) return Lookup::NotANumber;
+      if (token() != "control_points") return Lookup::Missing;
+      if (end()) return Lookup::NotANumber;
+      const int point = index(project_.space->control_points.size());
+      if (point < 0) return Lookup::Missing;
+      p_.a_ = point;
+      return component(3, Where::ControlPoint, Reader::Bounded, 0.0, 0.0);
+    }
+    if (key == "volume" && project_.volume) {
+      position(9);
+      return volume();
+    }
+    return Lookup::Missing;
+  }
+
+  // ---- settings groups (model/settings_tables.h, written by io/settings_json) ----
+
+  Lookup settingsObject(const SettingTable& table, Group group, const void* object) {
+    if (end()) return Lookup::NotANumber;
+    return settingField(table, group, object, token());
+  }
+
+  Lookup settingField(const SettingTable& table, Group group, const void* object, std::string_view key) {
+    for (std::size_t i = 0; i < table.fields.size(); ++i) {
+      const SettingSpec& s = table.fields[i];
+      if (key != s.key) continue;
+      if (s.omitDefault && s.isDefault(object)) return Lookup::Missing;  // not written
+      position(int(i));
+      p_.group_ = group;
+      p_.setting_ = &s;
+      p_.fragile_ |= s.omitDefault;
+      switch (s.type) {
+        case SettingType::Boolean:
+        case SettingType::Text:
+          return text();
+        case SettingType::Number:
+          return settingNumber(table, s, Storage::Double);
+        case SettingType::Vector: {
+          if (end()) return Lookup::NotANumber;
+          const int c = index(3);
+          if (c < 0) return Lookup::Missing;
+          p_.c_ = c;
+          return settingNumber(table, s, Storage::Double);
+        }
+        case SettingType::OptionalNumber:
+          if (!s.value<std::optional<double>>(object)) return Lookup::Missing;  // not written until set
+          p_.fragile_ = true;
+          return settingNumber(table, s, Storage::Optional);
+        case SettingType::Integer:
+          return settingInteger(table, s, Storage::Int);
+        case SettingType::Count:
+          return settingInteger(table, s, Storage::Int64);
+        case SettingType::Seed:
+          return table.words == SettingWords::IntegerRange
+                     ? number(Where::Setting, Reader::IntegerRange, Storage::UInt64, s.min, s.max)
+                     : number(Where::Setting, Reader::Seed, Storage::UInt64);
+      }
+    }
+    return Lookup::Missing;
+  }
+
+  // As io/settings_json reads a number by the table's words.
+  Lookup settingNumber(const SettingTable& table, const SettingSpec& s, Storage storage) {
+    if (table.words == SettingWords::FiniteOnly) return number(Where::Setting, Reader::AnyFinite, storage);
+    if (s.noun) return number(Where::Setting, Reader::Finite, storage);
+    return number(Where::Setting, Reader::Number, storage, s.min, s.max);
+  }
+
+  Lookup settingInteger(const SettingTable& table, const SettingSpec& s, Storage storage) {
+    if (table.words == SettingWords::IntegerRange)
+      return number(Where::Setting, Reader::IntegerRange, storage, s.min, s.max);
+    if (!s.noun)
+      return number(Where::Setting, Reader::Integer, storage, double(std::int64_t(s.min)), double(std::int64_t(s.max)));
+    return number(Where::Setting, Reader::NounInteger, storage, s.min, s.max);
+  }
+
+  Lookup render() {
+    if (end()) return Lookup::NotANumber;
+    const std::string_view key = token();
+    const RenderSettings& r = project_.render;
+    const int fields = int(renderSettingsTable().fields.size());
+    if (key == "mode") return text();
+    if (key == "flame") {
+      position(fields + 1);
+      return settingsObject(flameSettingsTable(), Group::Flame, &r.flame);
+    }
+    if (key == "shading") {
+      // Written when it says something, so it comes and goes with the values inside.
+      if (!(r.mode == DisplayMode::Shaded || !(r.shading == ShadingSettings{}))) return Lookup::Missing;
+      position(fields + 2);
+      p_.fragile_ = true;
+      return shading();
+    }
+    return settingField(renderSettingsTable(), Group::Render, &r, key);
+  }
+
+  Lookup shading() {
+    if (end()) return Lookup::NotANumber;
+    const std::string_view key = token();
+    const ShadingSettings& s = project_.render.shading;
+    if (key == "lights") {
+      position(0);
+      if (end()) return Lookup::NotANumber;
+      const int light = index(s.lights.size());
+      if (light < 0) return Lookup::Missing;
+      p_.a_ = light;
+      return settingsObject(shadingLightTable(), Group::Light, &s.lights[std::size_t(light)]);
+    }
+    if (key == "ao") {
+      position(2);
+      return settingsObject(ambientOcclusionTable(), Group::Ao, &s.ao);
+    }
+    if (key == "fog") {
+      position(3);
+      return settingsObject(fogTable(), Group::Fog, &s.fog);
+    }
+    if (key == "dof") {
+      position(4);
+      return settingsObject(depthOfFieldTable(), Group::Dof, &s.dof);
+    }
+    position(1);
+    return settingField(shadingSettingsTable(), Group::Shading, &s, key);
+  }
+
+  Lookup volume() {
+    if (end()) return Lookup::NotANumber;
+    const std::string_view key = token();
+    const VolumeSettings& v = *project_.volume;
+    if (key != "field") return settingField(volumeSettingsTable(), Group::Volume, &v, key);
+    if (!v.field) return Lookup::Missing;
+    position(int(volumeSettingsTable().fields.size()));
+    if (end()) return Lookup::NotANumber;
+    const std::string_view field = token();
+    if (field == "strength") {
+      position(0);
+      return number(Where::DensityStrength, Reader::Number, Storage::Double, 0.0, kMaxDensityFieldStrength);
+    }
+    // The field operation's parameters but its amplitude (io/volume_io).
+    const std::vector<ParamSpec>& params = findOperation("field")->params;
+    for (std::size_t i = 0; i < params.size(); ++i) {
+      const ParamSpec& s = params[i];
+      if (field != s.key || field == "amplitude") continue;
+      position(int(i) + 1);
+      p_.param_ = &s;
+      // Where the parameter sits in FractalFieldParams: the table locates members of an
+      // operation, the volume keeps the bare parameters.
+      OpParams probe{FieldOp{}};
+      p_.offset_ = std::size_t(static_cast<const char*>(s.locate(probe)) -
+                               reinterpret_cast<const char*>(&std::get<FieldOp>(probe)));
+      return simpleParam(s, Where::DensityParam);
+    }
+    return Lookup::Missing;
+  }
+
+  // ---- functions (io/project_io, io/free_form_io, io/volume_io) ----
+
+  Lookup function(const Function& fn) {
+    if (end()) return Lookup::NotANumber;
+    const std::string_view key = token();
+    // Positions follow readFunction.
+    if (key == "name" || key == "muted") return text();
+    if (key == "weight") {
+      position(1);
+      return number(Where::Weight, Reader::Number, Storage::Double, 0.0, 1e9);
+    }
+    if (key == "color") {
+      position(2);
+      return component(3, Where::Color, Reader::Number, 0.0, 1.0);
+    }
+    if (key == "palette_index") {
+      position(3);
+      return number(Where::PaletteIndex, Reader::Number, Storage::Double, 0.0, 1.0);
+    }
+    if (key == "color_speed") {
+      position(4);
+      return number(Where::ColorSpeed, Reader::Number, Storage::Double, 0.0, 1.0);
+    }
+    switch (fn.kind) {
+      case FunctionKind::Matrix:
+        if (key == "kind") return text();
+        if (key == "matrix") {
+          position(11);
+          if (end()) return Lookup::NotANumber;
+          const int row = index(fn.matrix.size());
+          if (row < 0) return Lookup::Missing;
+          p_.a_ = row;
+          return component(int(fn.matrix[std::size_t(row)].size()), Where::MatrixEntry, Reader::Bounded, 0.0, 0.0);
+        }
+        return Lookup::Missing;
+      case FunctionKind::Condensation:
+      case FunctionKind::Median:
+        if (key == "kind") return text();
+        if (key == "set") {
+          position(12);
+          return set(fn.set);
+        }
+        if (key == "rotate" && fn.kind == FunctionKind::Median) {
+          position(13);
+          return number(Where::MedianRotate, Reader::SetNumber, Storage::Double);
+        }
+        return Lookup::Missing;
+      case FunctionKind::Grid:
+        break;
+    }
+    if (key == "resolution") {
+      position(0);
+      return component(3, Where::Resolution, Reader::Integer, limits::kMinResolution, limits::kMaxResolution,
+                       Storage::Int);
+    }
+    if (key == "sampling_error" && fn.sampling_error) {  // written when set
+      position(6);
+      p_.fragile_ = true;
+      return number(Where::SamplingError, Reader::Number, Storage::Optional, 0.0, kMaxCoordinate);
+    }
+    if (key == "placement") {
+      position(7);
+      return placement(Where::Placement, Reader::Number, -kMaxCoordinate, kMaxCoordinate);
+    }
+    if (key == "ops") {
+      position(8);
+      if (end()) return Lookup::NotANumber;
+      const int o = index(fn.ops.size());
+      if (o < 0) return Lookup::Missing;
+      p_.o_ = o;
+      return operation(fn.ops[std::size_t(o)]);
+    }
+    if (key == "interpolation" && fn.interpolation != LatticeInterpolation::Trilinear) return text();
+    return Lookup::Missing;
+  }
+
+  Lookup set(const CondensationSet& set) {
+    if (end()) return Lookup::NotANumber;
+    const std::string_view key = token();
+    // Positions follow io/volume_io's readSet: the centre first.
+    switch (set.shape) {
+      case SetShape::Sphere:
+      case SetShape::Box:
+      case SetShape::Torus:
+        if (key == "primitive") return text();
+        if (key == "center") {
+          position(0);
+          return component(3, Where::SetCenter, Reader::SetNumber, 0.0, 0.0);
+        }
+        break;
+      case SetShape::Mesh:
+        if (key == "mesh" || key == "fill") return text();
+        if (key == "placement") {
+          position(1);
+          return placement(Where::SetPlacement, Reader::SetNumber, 0.0, 0.0);
+        }
+        return Lookup::Missing;
+      case SetShape::Vdb:
+        if (key == "vdb" || key == "grid") return text();
+        if (key == "threshold") {
+          position(1);
+          return number(Where::SetThreshold, Reader::SetNumber, Storage::Double);
+        }
+        return Lookup::Missing;
+    }
+    if (set.shape == SetShape::Sphere && key == "radius") {
+      position(1);
+      return number(Where::SetRadius, Reader::SetNumber, Storage::Double);
+    }
+    if (set.shape == SetShape::Box && key == "size") {
+      position(1);
+      return component(3, Where::SetSize, Reader::SetNumber, 0.0, 0.0);
+    }
+    if (set.shape == SetShape::Torus) {
+      if (key == "major") {
+        position(1);
+        return number(Where::SetMajor, Reader::SetNumber, Storage::Double);
+      }
+      if (key == "minor") {
+        position(2);
+        return number(Where::SetMinor, Reader::SetNumber, Storage::Double);
+      }
+      if (key == "axis") {
+        position(3);
+        return component(3, Where::SetAxis, Reader::SetNumber, 0.0, 0.0);
+      }
+    }
+    return Lookup::Missing;
+  }
+
+  // ---- operations (model/operation_table.h, written by io/operation_json) ----
+
+  Lookup operation(const Operation& op) {
+    if (end()) return Lookup::NotANumber;
+    const std::string_view key = token();
+    const OperationSpec& spec = operationSpec(op.params);
+    const int params = int(spec.params.size());
+    // Positions follow readOperation: the parameters, the center, the selection.
+    if (key == "type") return text();
+    if (key == "muted") return op.muted ? text() : Lookup::Missing;  // written when set
+    if (key == "center") {
+      if (op.center.kind != Center::Kind::Point) return text();
+      position(params);
+      return component(3, Where::OpCenter, Reader::Number, -kMaxCoordinate, kMaxCoordinate);
+    }
+    if (key == "selection") {
+      position(params + 1);
+      if (end()) return Lookup::NotANumber;
+      const int box = index(op.selection.size());
+      if (box < 0) return Lookup::Missing;
+      p_.a_ = box;
+      if (end()) return Lookup::NotANumber;
+      const std::string_view axis = token();
+      if (axis == "op") return text();
+      const int b = keyIndex(axis, kSelectionAxes);
+      if (b < 0) return Lookup::Missing;
+      position(b);
+      p_.b_ = b;
+      return component(2, Where::SelectionBound, Reader::Integer, 0.0, limits::kMaxResolution - 1, Storage::Int);
+    }
+    for (int i = 0; i < params; ++i) {
+      const ParamSpec& s = spec.params[std::size_t(i)];
+      if (key != s.key) continue;
+      position(i);
+      p_.param_ = &s;
+      return param(s, op.params);
+    }
+    return Lookup::Missing;
+  }
+
+  /// A number, an integer, a seed, a vector or a choice, as io/operation_json reads them.
+  Lookup simpleParam(const ParamSpec& s, Where where) {
+    switch (s.type) {
+      case ParamType::Number:
+        return number(where, Reader::Number, Storage::Double, s.min, s.max);
+      case ParamType::Integer:
+        return number(where, Reader::Integer, Storage::Int, double(std::int64_t(s.min)), double(std::int64_t(s.max)));
+      case ParamType::Seed:
+        return number(where, Reader::Seed, Storage::UInt64);
+      case ParamType::Vector:
+        return component(s.components, where, Reader::Number, s.min, s.max);
+      default:
+        return text();
+    }
+  }
+
+  Lookup param(const ParamSpec& s, const OpParams& params) {
+    switch (s.type) {
+      case ParamType::CalculatorVars: {
+        // {"v1": {"value", "min", "max"}, ...}; reading meets min, max, value.
+        if (end()) return Lookup::NotANumber;
+        const std::string_view name = token();
+        if (name.size() != 2 || name[0] != 'v' || name[1] < '1' || name[1] > '3') return Lookup::Missing;
+        p_.a_ = name[1] - '1';
+        position(p_.a_);
+        if (end()) return Lookup::NotANumber;
+        const int b = keyIndex(token(), kCalculatorFields);
+        if (b < 0) return Lookup::Missing;
+        position((b + 2) % 3);
+        p_.b_ = b;
+        return number(Where::CalculatorVar, Reader::Number, Storage::Double, -kMaxCoordinate, kMaxCoordinate);
+      }
+      case ParamType::MorphPairs: {
+        // [[from, to], ...]
+        if (end()) return Lookup::NotANumber;
+        const int pair = index(s.value<std::vector<MorphPair>>(params).size());
+        if (pair < 0) return Lookup::Missing;
+        p_.a_ = pair;
+        if (end()) return Lookup::NotANumber;
+        const int b = index(2);
+        if (b < 0) return Lookup::Missing;
+        p_.b_ = b;
+        return component(3, Where::MorphPoint, Reader::Number, -kMaxCoordinate, kMaxCoordinate);
+      }
+      case ParamType::NodeMoves: {
+        // [[i, j, k, [dx, dy, dz]], ...]
+        if (end()) return Lookup::NotANumber;
+        const int move = index(s.value<std::vector<NodeMove>>(params).size());
+        if (move < 0) return Lookup::Missing;
+        p_.a_ = move;
+        if (end()) return Lookup::NotANumber;
+        const int slot = index(4);
+        if (slot < 0) return Lookup::Missing;
+        if (slot == 3) return component(3, Where::NodeMoveShift, Reader::Number, -kMaxCoordinate, kMaxCoordinate);
+        p_.c_ = slot;
+        return number(Where::NodeMoveIndex, Reader::Integer, Storage::Int, 0.0, limits::kMaxResolution - 1);
+      }
+      default:
+        return simpleParam(s, Where::OpParam);
+    }
+  }
+
+  const Project& project_;
+  const TrackPath& path_;
+  std::size_t at_ = 0;
+  std::size_t depth_ = 0;
+  ProjectParameter p_;
+};
+
+FoundParameter findParameter(const Project& project, const TrackPath& path) {
+  return ParameterResolver(project, path).run();
+}
+
+// ---- access ----------------------------------------------------------------------------------
+
+void* ProjectParameter::locate(Project& project) const {
+  auto vectorComponent = [&](Vec3& v) -> void* { return &v[c_]; };
+  if (where_ == Where::Setting) {
+    void* group = nullptr;
+    ShadingSettings& shading = project.render.shading;
+    switch (group_) {
+      case Group::Camera:
+        group = &project.camera;
+        break;
+      case Group::Render:
+        group = &project.render;
+        break;
+      case Group::Flame:
+        group = &project.render.flame;
+        break;
+      case Group::Light:
+        group = &shading.lights[std::size_t(a_)];
+        break;
+      case Group::Shading:
+        group = &shading;
+        break;
+      case Group::Ao:
+        group = &shading.ao;
+        break;
+      case Group::Fog:
+        group = &shading.fog;
+        break;
+      case Group::Dof:
+        group = &shading.dof;
+        break;
+      case Group::Animation:
+        group = &*project.animation;
+        break;
+      case Group::Volume:
+        group = &*project.volume;
+        break;
+    }
+    void* field = setting_->locate(group);
+    return setting_->type == SettingType::Vector ? vectorComponent(*static_cast<Vec3*>(field)) : field;
+  }
+  switch (where_) {
+    case Where::Transition:
+      return &project.transitions[std::size_t(a_)][std::size_t(c_)];
+    case Where::ControlPoint:
+      return vectorComponent(project.space->control_points[std::size_t(a_)]);
+    case Where::DensityStrength:
+      return &project.volume->field->strength;
+    case Where::DensityParam: {
+      char* field = reinterpret_cast<char*>(&project.volume->field->field) + offset_;
+      return param_->type == ParamType::Vector ? static_cast<void*>(reinterpret_cast<double*>(field) + c_) : field;
+    }
+    case Where::Time:
+      return &project.time;
+    case Where::Version:
+      return nullptr;
+    default:
+      break;
+  }
+  Function& fn = f_ < 0 ? *project.final_function : project.functions[std::size_t(f_)];
+  switch (where_) {
+    case Where::Resolution:
+      return &fn.resolution[std::size_t(c_)];
+    case Where::Weight:
+      return &fn.weight;
+    case Where::Color:
+      return vectorComponent(fn.color);
+    case Where::PaletteIndex:
+      return &fn.palette_index;
+    case Where::ColorSpeed:
+      return &fn.color_speed;
+    case Where::SamplingError:
+      return &fn.sampling_error;
+    case Where::Placement:
+      return vectorComponent(b_ == 0 ? fn.placement.translate : b_ == 1 ? fn.placement.rotate : fn.placement.scale);
+    case Where::MatrixEntry:
+      return &fn.matrix[std::size_t(a_)][std::size_t(c_)];
+    case Where::MedianRotate:
+      return &fn.rotate;
+    case Where::SetCenter:
+      return vectorComponent(fn.set.center);
+    case Where::SetRadius:
+      return &fn.set.radius;
+    case Where::SetSize:
+      return vectorComponent(fn.set.size);
+    case Where::SetMajor:
+      return &fn.set.major;
+    case Where::SetMinor:
+      return &fn.set.minor;
+    case Where::SetAxis:
+      return vectorComponent(fn.set.axis);
+    case Where::SetPlacement: {
+      Placement& p = fn.set.placement;
+      return vectorComponent(b_ == 0 ? p.translate : b_ == 1 ? p.rotate : p.scale);
+    }
+    case Where::SetThreshold:
+      return &fn.set.threshold;
+    default:
+      break;
+  }
+  Operation& op = fn.ops[std::size_t(o_)];
+  switch (where_) {
+    case Where::OpParam: {
+      void* value = param_->locate(op.params);
+      return param_->type == ParamType::Vector ? static_cast<void*>(static_cast<double*>(value) + c_) : value;
+    }
+    case Where::CalculatorVar: {
+      CalculatorVar& var = param_->value<std::array<CalculatorVar, 3>>(op.params)[std::size_t(a_)];
+      return b_ == 0 ? &var.value : b_ == 1 ? &var.min : &var.max;
+    }
+    case Where::MorphPoint: {
+      MorphPair& pair = param_->value<std::vector<MorphPair>>(op.params)[std::size_t(a_)];
+      return vectorComponent(b_ == 0 ? pair.from : pair.to);
+    }
+    case Where::NodeMoveIndex:
+      return &param_->value<std::vector<NodeMove>>(op.params)[std::size_t(a_)].index[std::size_t(c_)];
+    case Where::NodeMoveShift:
+      return vectorComponent(param_->value<std::vector<NodeMove>>(op.params)[std::size_t(a_)].displacement);
+    case Where::OpCenter:
+      return vectorComponent(op.center.point);
+    case Where::SelectionBound: {
+      SelectionBox& box = op.selection[std::size_t(a_)];
+      return &(b_ == 0 ? box.i : b_ == 1 ? box.j : box.k)[std::size_t(c_)];
+    }
+    default:
+      return nullptr;
+  }
+}
+
+double ProjectParameter::get(const Project& project) const {
+  // locate() hands out a pointer into the project; here it is only read.
+  const void* slot = locate(const_cast<Project&>(project));
+  switch (storage_) {
+    case Storage::Double:
+      return *static_cast<const double*>(slot);
+    case Storage::Int:
+      return double(*static_cast<const int*>(slot));
+    case Storage::Int64:
+      return double(*static_cast<const std::int64_t*>(slot));
+    case Storage::UInt64:
+      return double(*static_cast<const std::uint64_t*>(slot));
+    case Storage::Optional:
+      return static_cast<const std::optional<double>*>(slot)->value_or(0.0);
+    case Storage::None:
+      break;
+  }
+  return double(kProjectFormatVersion);
+}
+
+void ProjectParameter::set(Project& project, double value) const {
+  // The file would hold a value that is not finite as null, which an optional number reads as
+  // unset.
+  if (storage_ == Storage::Optional && !std::isfinite(value)) {
+    *static_cast<std::optional<double>*>(locate(project)) = std::nullopt;
+    return;
+  }
+  check(value);
+  void* slot = locate(project);
+  switch (storage_) {
+    case Storage::Double:
+      *static_cast<double*>(slot) = value;
+      break;
+    case Storage::Int:
+      *static_cast<int*>(slot) = int(value);
+      break;
+    case Storage::Int64:
+      *static_cast<std::int64_t*>(slot) = std::int64_t(value);
+      break;
+    case Storage::UInt64:
+      *static_cast<std::uint64_t*>(slot) = std::uint64_t(value);
+      break;
+    case Storage::Optional:
+      *static_cast<std::optional<double>*>(slot) = value;
+      break;
+    case Storage::None:
+      break;
+  }
+}
+
+// The file readers' checks and words (io/json_read, io/settings_json, io/free_form_io,
+// io/volume_io). A value that is not finite reaches them as null.
+void ProjectParameter::check(double v) const {
+  const bool finite = std::isfinite(v);
+  auto integerRange = [](std::int64_t lo, std::int64_t hi) {
+    return "expected an integer between " + std::to_string(lo) + " and " + std::to_string(hi);
+  };
+  switch (reader_) {
+    case Reader::Number:
+      if (!finite) fail(path(), "expected a number, found null");
+      if (v < lo_ || v > hi_)
+        fail(path(), "expected a number between " + show(lo_) + " and " + show(hi_) + ", found " + show(v));
+      return;
+    case Reader::Integer:
+      if (!finite) fail(path(), "expected an integer, found null");
+      if (v != std::floor(v)) fail(path(), "expected an integer");
+      if (v < lo_ || v > hi_) fail(path(), integerRange(std::int64_t(lo_), std::int64_t(hi_)));
+      return;
+    case Reader::Seed:
+      if (!finite) fail(path(), "expected a non-negative integer, found null");
+      if (!(v >= 0 && v == std::floor(v) && v < 1.8e19))
+        fail(path(), "expected a non-negative integer, found a number");
+      return;
+    case Reader::Finite:
+    case Reader::NounInteger:
+      if (!finite) fail(path(), "expected a number, found null");
+      if (std::abs(v) > kMaxCoordinate) fail(path(), "expected a finite number");
+      if (reader_ == Reader::NounInteger && (v != std::floor(v) || v < lo_ || v > hi_))
+        fail(path(), integerRange(std::int64_t(lo_), std::int64_t(hi_)));
+      return;
+    case Reader::AnyFinite:
+    case Reader::Time:
+      if (!finite) fail(path(), "expected a number");
+      return;
+    case Reader::IntegerRange: {
+      const std::int64_t lo = integerBound(lo_), hi = integerBound(hi_);
+      if (!finite || v != std::floor(v) || v < double(lo) || v > double(hi)) fail(path(), integerRange(lo, hi));
+      return;
+    }
+    case Reader::Bounded:
+      if (!finite) fail(path(), "expected a number");
+      if (std::abs(v) > kMaxCoordinate) fail(path(), "expected a finite number of magnitude at most 1e6");
+      return;
+    case Reader::SetNumber:
+      if (!finite || std::abs(v) > kMaxCoordinate) fail(path(), "expected a finite number of magnitude at most 1e6");
+      return;
+    case Reader::Version: {
+      std::string found = versionText(v);
+      if (found.size() > 20) found = found.substr(0, 20) + "…";
+      fail("version", "unsupported version " + found + " (this GridIFS reads version " +
+                          std::to_string(kProjectFormatVersion) + ")");
+    }
+  }
+}
+
+bool ProjectParameter::inAnimation() const { return where_ == Where::Setting && group_ == Group::Animation; }
+
+std::string ProjectParameter::path() const {
+  if (where_ == Where::Setting) {
+    std::string group;
+    switch (group_) {
+      case Group::Camera:
+        group = "camera";
+        break;
+      case Group::Render:
+        group = "render";
+        break;
+      case Group::Flame:
+        group = "render.flame";
+        break;
+      case Group::Light:
+        group = item("render.shading.lights", a_);
+        break;
+      case Group::Shading:
+        group = "render.shading";
+        break;
+      case Group::Ao:
+        group = "render.shading.ao";
+        break;
+      case Group::Fog:
+        group = "render.shading.fog";
+        break;
+      case Group::Dof:
+        group = "render.shading.dof";
+        break;
+      case Group::Animation:
+        group = "animation";
+        break;
+      case Group::Volume:
+        group = "volume";
+        break;
+    }
+    const std::string field = settingPath(group, setting_->key);
+    return setting_->type == SettingType::Vector ? item(field, c_) : field;
+  }
+  switch (where_) {
+    case Where::Transition:
+      return item(item("transitions", a_), c_);
+    case Where::ControlPoint:
+      return item(item("space.control_points", a_), c_);
+    case Where::DensityStrength:
+      return "volume.field.strength";
+    case Where::DensityParam: {
+      const std::string field = std::string("volume.field.") + param_->key;
+      return param_->type == ParamType::Vector ? item(field, c_) : field;
+    }
+    case Where::Time:
+      return "time";
+    case Where::Version:
+      return "version";
+    default:
+      break;
+  }
+  const std::string fn = f_ < 0 ? std::string("final") : item("functions", f_);
+  switch (where_) {
+    case Where::Resolution:
+      return item(fn + ".resolution", c_);
+    case Where::Weight:
+      return fn + ".weight";
+    case Where::Color:
+      return item(fn + ".color", c_);
+    case Where::PaletteIndex:
+      return fn + ".palette_index";
+    case Where::ColorSpeed:
+      return fn + ".color_speed";
+    case Where::SamplingError:
+      return fn + ".sampling_error";
+    case Where::Placement:
+      return item(fn + ".placement." + kPlacementKeys[b_], c_);
+    case Where::MatrixEntry:
+      return item(item(fn + ".matrix", a_), c_);
+    case Where::MedianRotate:
+      return fn + ".rotate";
+    case Where::SetCenter:
+      return item(fn + ".set.center", c_);
+    case Where::SetRadius:
+      return fn + ".set.radius";
+    case Where::SetSize:
+      return item(fn + ".set.size", c_);
+    case Where::SetMajor:
+      return fn + ".set.major";
+    case Where::SetMinor:
+      return fn + ".set.minor";
+    case Where::SetAxis:
+      return item(fn + ".set.axis", c_);
+    case Where::SetPlacement:
+      return item(fn + ".set.placement." + kPlacementKeys[b_], c_);
+    case Where::SetThreshold:
+      return fn + ".set.threshold";
+    default:
+      break;
+  }
+  const std::string op = item(fn + ".ops", o_);
+  switch (where_) {
+    case Where::OpParam: {
+      const std::string p = op + "." + param_->key;
+      return param_->type == ParamType::Vector ? item(p, c_) : p;
+    }
+    case Where::CalculatorVar:
+      return op + "." + param_->key + ".v" + std::to_string(a_ + 1) + "." + kCalculatorFields[b_];
+    case Where::MorphPoint:
+      return item(item(item(op + "." + param_->key, a_), b_), c_);
+    case Where::NodeMoveIndex:
+      return item(item(op + "." + param_->key, a_), c_);
+    case Where::NodeMoveShift:
+      return item(item(item(op + "." + param_->key, a_), 3), c_);
+    case Where::OpCenter:
+      return item(op + ".center", c_);
+    case Where::SelectionBound:
+      return item(item(op + ".selection", a_) + "." + kSelectionAxes[b_], c_);
+    default:
+      return op;
+  }
+}
+
+}  // namespace gridifs
