@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 #include <sys/wait.h>
 
 namespace gridifs::test_support {
@@ -49,6 +50,30 @@ inline CommandResult runGridifs(const std::string& args, const std::string& inpu
   fs::remove(base.string() + ".out");
   fs::remove(base.string() + ".err");
   return r;
+}
+
+/// Starts `gridifs args...` as a child process (stdout and stderr to /dev/null).
+inline pid_t spawnGridifs(const std::vector<std::string>& args) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    std::freopen("/dev/null", "w", stdout);
+    std::freopen("/dev/null", "w", stderr);
+    std::vector<std::string> all{GRIDIFS_EXE};
+    all.insert(all.end(), args.begin(), args.end());
+    std::vector<char*> argv;
+    for (auto& a : all) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    ::execv(GRIDIFS_EXE, argv.data());
+    ::_exit(127);
+  }
+  return pid;
+}
+
+/// Waits for `pid`; returns its exit status, or -signal when a signal ended it.
+inline int waitFor(pid_t pid) {
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -WTERMSIG(status);
 }
 
 /// A fresh temporary folder removed at scope exit.

@@ -28,30 +28,6 @@ namespace {
 
 const fs::path kAssets = GRIDIFS_ASSETS;
 
-/// Starts `gridifs args...` as a child process (stdout and stderr to /dev/null).
-pid_t spawnGridifs(const std::vector<std::string>& args) {
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    std::freopen("/dev/null", "w", stdout);
-    std::freopen("/dev/null", "w", stderr);
-    std::vector<std::string> all{GRIDIFS_EXE};
-    all.insert(all.end(), args.begin(), args.end());
-    std::vector<char*> argv;
-    for (auto& a : all) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    ::execv(GRIDIFS_EXE, argv.data());
-    ::_exit(127);
-  }
-  return pid;
-}
-
-/// Waits for `pid`; returns its exit status, or -signal when a signal ended it.
-int waitFor(pid_t pid) {
-  int status = 0;
-  ::waitpid(pid, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -WTERMSIG(status);
-}
-
 void writeBytes(const fs::path& file, const std::string& bytes) {
   std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
 }

@@ -29,11 +29,7 @@
 namespace gridifs {
 namespace {
 
-using test_support::CommandResult;
-using test_support::quote;
-using test_support::runGridifs;
-using test_support::ScratchDir;
-using test_support::slurp;
+using namespace test_support;
 namespace fs = std::filesystem;
 
 const std::string kAssets = GRIDIFS_ASSETS;
@@ -477,28 +473,6 @@ TEST(RenderPartOption, MedianVolumesDoNotSplit) {
 
 // ---------------------------------------------------------------------------------------------
 // A killed part writer.
-
-pid_t spawnGridifs(const std::vector<std::string>& args) {
-  const pid_t pid = ::fork();
-  if (pid == 0) {
-    std::freopen("/dev/null", "w", stdout);
-    std::freopen("/dev/null", "w", stderr);
-    std::vector<std::string> all{GRIDIFS_EXE};
-    all.insert(all.end(), args.begin(), args.end());
-    std::vector<char*> argv;
-    for (auto& a : all) argv.push_back(a.data());
-    argv.push_back(nullptr);
-    ::execv(GRIDIFS_EXE, argv.data());
-    ::_exit(127);
-  }
-  return pid;
-}
-
-int waitFor(pid_t pid) {
-  int status = 0;
-  ::waitpid(pid, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -WTERMSIG(status);
-}
 
 // SIGKILL while the part renders, and at random moments up to the end of its writing: the target
 // is then absent or the complete part (the same bytes as an undisturbed run), never a file that

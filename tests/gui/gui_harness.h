@@ -220,6 +220,22 @@ inline void clickAt(int x, int y) {
 
 inline void clickRect(const Rect& r) { clickAt(r.x + r.w / 2, r.y + r.h / 2); }
 
+/// Opens the modeller's File menu (`probe` gives the window) and clicks `item`.
+inline void clickFileMenu(const App& app, const nlohmann::json& probe, const std::string& item) {
+  focusWindow();
+  clickAt(probe["window"]["x"].get<int>() + 18, probe["window"]["y"].get<int>() + 9);  // File
+  const std::optional<Rect> rect = app.waitForStableRect(item);
+  ASSERT_TRUE(rect) << "the File menu did not open";
+  clickRect(*rect);
+}
+
+/// Waits for the preview, then opens File › Render animation… and returns the probe.
+inline nlohmann::json openRenderAnimation(const App& app) {
+  nlohmann::json probe = app.waitForPreview();
+  clickFileMenu(app, probe, "menu.render_animation");
+  return probe;
+}
+
 /// Presses at (x0, y0), moves to (x1, y1) in `steps` steps, releases.
 inline void dragFrom(int x0, int y0, int x1, int y1, int steps = 12) {
   std::string cmd =

@@ -24,23 +24,13 @@ fs::path pineTreesCopy(const TempFolder& home) {
   return file;
 }
 
-/// Opens the File menu and clicks `item`.
-void clickFileMenu(App& app, const nlohmann::json& probe, const std::string& item) {
-  focusWindow();
-  clickAt(probe["window"]["x"].get<int>() + 18, probe["window"]["y"].get<int>() + 9);  // File
-  const std::optional<Rect> rect = app.waitForStableRect(item);
-  ASSERT_TRUE(rect) << "the File menu did not open";
-  clickRect(*rect);
-}
-
 }  // namespace
 
 TEST(RenderJobGui, RenderAnimationRendersACondensationSetFromAMeshFile) {
   if (!haveDisplay()) GTEST_SKIP() << "no X display (run under xvfb-run)";
   TempFolder home;
   App app(home, {pineTreesCopy(home).string()});
-  nlohmann::json probe = app.waitForPreview();
-  clickFileMenu(app, probe, "menu.render_animation");
+  nlohmann::json probe = openRenderAnimation(app);
   const std::optional<Rect> render = app.waitForStableRect("animation.render");
   ASSERT_TRUE(render) << "the dialog did not open";
   clickRect(*render);

@@ -28,17 +28,6 @@ std::size_t keyCount(const nlohmann::json& probe, const std::string& path) {
   return tracks.contains(path) ? tracks[path].size() : 0;
 }
 
-/// Waits for the preview, then opens File › Render animation… and returns the probe.
-nlohmann::json openRenderAnimation(App& app) {
-  nlohmann::json probe = app.waitForPreview();
-  focusWindow();
-  clickAt(probe["window"]["x"].get<int>() + 18, probe["window"]["y"].get<int>() + 9);  // File
-  const std::optional<Rect> item = app.waitForStableRect("menu.render_animation");
-  EXPECT_TRUE(item) << "the File menu did not open";
-  if (item) clickRect(*item);
-  return probe;
-}
-
 }  // namespace
 
 TEST(TimelineGui, ScrubbingMovesTheTimeAndThePreviewFollows) {
