@@ -3,8 +3,9 @@
 // numbers named by their path in the project file ("render.flame.gamma", "camera.target[1]").
 // Each edit is a plain value gathered in ProjectEdit (edit/project_edit.h).
 //
-// Thread-safety: plain values; apply() touches only the project given. Never throw themselves;
-// the Document refuses a key on a path that names no number of the project (validation).
+// Thread-safety: plain values; apply() touches only the project given. They never throw: a key on
+// a path that names no number of the project is refused where tracks are evaluated or saved
+// (model/project_time.h checkTrackPaths), as a track read from a file would be.
 #include <string>
 #include <vector>
 
