@@ -13,9 +13,12 @@ void AddFunction::apply(Project& project) const { insertFunction(project, projec
 
 std::string AddFunction::label() const {
   switch (function.kind) {
-    case FunctionKind::Condensation: return "Add condensation function";
-    case FunctionKind::Median: return "Add median function";
-    default: return "Add function";
+    case FunctionKind::Condensation:
+      return "Add condensation function";
+    case FunctionKind::Median:
+      return "Add median function";
+    default:
+      return "Add function";
   }
 }
 

@@ -21,9 +21,12 @@ void SetTransitionPreset::apply(Project& project) const {
 
 std::string SetTransitionPreset::label() const {
   switch (preset) {
-    case TransitionPreset::NoRepeats: return "Transitions: No repeats";
-    case TransitionPreset::Cycle: return "Transitions: Cycle i to i+1";
-    case TransitionPreset::All: break;
+    case TransitionPreset::NoRepeats:
+      return "Transitions: No repeats";
+    case TransitionPreset::Cycle:
+      return "Transitions: Cycle i to i+1";
+    case TransitionPreset::All:
+      break;
   }
   return "Transitions: All";
 }

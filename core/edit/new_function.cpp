@@ -20,7 +20,7 @@ std::string uniqueFunctionName(const Project& project, const std::string& base) 
 }
 
 Vec3 newFunctionColor(std::size_t index) {
-  static const Vec3 palette[] = {{1.0, 0.6, 0.2},   {0.3, 0.7, 1.0}, {0.5, 0.95, 0.4},  {0.95, 0.35, 0.55},
+  static const Vec3 palette[] = {{1.0, 0.6, 0.2},   {0.3, 0.7, 1.0},  {0.5, 0.95, 0.4},  {0.95, 0.35, 0.55},
                                  {0.95, 0.85, 0.3}, {0.6, 0.45, 1.0}, {0.3, 0.95, 0.85}, {1.0, 0.45, 0.3}};
   return palette[index % (sizeof palette / sizeof palette[0])];
 }

@@ -114,8 +114,10 @@ void MoveNodes::apply(Project& project) const {
   for (std::size_t n = 0; n < mask.size(); ++n) {
     if (!mask[n]) continue;
     const Index3 idx = nodeIndex(n, fn.resolution);
-    if (auto it = where.find(idx); it != where.end()) moves[it->second].displacement += displacement;
-    else moves.push_back({idx, displacement});
+    if (auto it = where.find(idx); it != where.end())
+      moves[it->second].displacement += displacement;
+    else
+      moves.push_back({idx, displacement});
   }
   target = std::move(fn);
 }

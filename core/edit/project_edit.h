@@ -32,9 +32,9 @@ struct ReplaceProject {
 
 using ProjectEdit = std::variant<
     // the function list and each function (edit/function_edits.h)
-    AddFunction, DuplicateFunction, RemoveFunction, MoveFunction, AddFinalFunction, RemoveFinalFunction,
-    RenameFunction, SetFunctionMuted, SetFunctionResolution, SetPlacement, MovePlacement, SetInterpolation,
-    SetFunctionWeight, SetFunctionColor, SetPaletteIndex, SetColorSpeed, AddSymmetry,
+    AddFunction, DuplicateFunction, RemoveFunction, MoveFunction, AddFinalFunction, RemoveFinalFunction, RenameFunction,
+    SetFunctionMuted, SetFunctionResolution, SetPlacement, MovePlacement, SetInterpolation, SetFunctionWeight,
+    SetFunctionColor, SetPaletteIndex, SetColorSpeed, AddSymmetry,
     // condensation and median sets (edit/set_edits.h)
     SetCondensationSet, SetSetShape, SetSetFile, SetSetFill, SetSetGrid, SetMedianRotation,
     // the operation stack and node drags (edit/operation_edits.h)
@@ -42,13 +42,13 @@ using ProjectEdit = std::variant<
     SetOperationSelection, PlaceCenter, MoveNodes,
     // settings, camera, time (edit/settings_edits.h) and shading (edit/shading_edits.h)
     SetSettingNumber, SetDisplayMode, SetSampleBudget, SetBackground, SetPalette, SetDensityEstimation,
-    ResetFlameSettings, SetCamera, SetCameraDistance, SetTime, SetAnimation, AddLight, RemoveLight,
-    SetLightDirection, SetLightColor, SetLightShadows, SetFogColor, SetAperture,
+    ResetFlameSettings, SetCamera, SetCameraDistance, SetTime, SetAnimation, AddLight, RemoveLight, SetLightDirection,
+    SetLightColor, SetLightShadows, SetFogColor, SetAperture,
     // keyframes (edit/key_edits.h)
     SetKeys, RemoveKeys,
     // transitions and free-form IFS (edit/matrix_edits.h)
-    SetTransitionPreset, RemoveTransitions, SetTransitionWeight, SetMatrixEntry, MoveControlPoint,
-    ApplyFreeFormPreset, BackToGridIfs,
+    SetTransitionPreset, RemoveTransitions, SetTransitionWeight, SetMatrixEntry, MoveControlPoint, ApplyFreeFormPreset,
+    BackToGridIfs,
     // the whole project
     ReplaceProject>;
 

@@ -12,26 +12,40 @@ namespace {
 void* groupIn(Project& project, SettingGroup group, std::size_t light) {
   ShadingSettings& shading = project.render.shading;
   switch (group) {
-    case SettingGroup::Render: return &project.render;
-    case SettingGroup::Flame: return &project.render.flame;
-    case SettingGroup::Shading: return &shading;
-    case SettingGroup::Light: return &lightAt(project, light);
-    case SettingGroup::AmbientOcclusion: return &shading.ao;
-    case SettingGroup::Fog: return &shading.fog;
-    case SettingGroup::DepthOfField: return &shading.dof;
+    case SettingGroup::Render:
+      return &project.render;
+    case SettingGroup::Flame:
+      return &project.render.flame;
+    case SettingGroup::Shading:
+      return &shading;
+    case SettingGroup::Light:
+      return &lightAt(project, light);
+    case SettingGroup::AmbientOcclusion:
+      return &shading.ao;
+    case SettingGroup::Fog:
+      return &shading.fog;
+    case SettingGroup::DepthOfField:
+      return &shading.dof;
   }
   return nullptr;
 }
 
 std::string groupPath(SettingGroup group, std::size_t light) {
   switch (group) {
-    case SettingGroup::Render: return "render";
-    case SettingGroup::Flame: return "render.flame";
-    case SettingGroup::Shading: return "render.shading";
-    case SettingGroup::Light: return "render.shading.lights[" + std::to_string(light) + "]";
-    case SettingGroup::AmbientOcclusion: return "render.shading.ao";
-    case SettingGroup::Fog: return "render.shading.fog";
-    case SettingGroup::DepthOfField: return "render.shading.dof";
+    case SettingGroup::Render:
+      return "render";
+    case SettingGroup::Flame:
+      return "render.flame";
+    case SettingGroup::Shading:
+      return "render.shading";
+    case SettingGroup::Light:
+      return "render.shading.lights[" + std::to_string(light) + "]";
+    case SettingGroup::AmbientOcclusion:
+      return "render.shading.ao";
+    case SettingGroup::Fog:
+      return "render.shading.fog";
+    case SettingGroup::DepthOfField:
+      return "render.shading.dof";
   }
   return {};
 }
@@ -39,8 +53,8 @@ std::string groupPath(SettingGroup group, std::size_t light) {
 /// The numeric field `key` of `group`; ModelError when the table has no such number.
 const SettingSpec& numberField(SettingGroup group, const std::string& key, std::size_t light) {
   const SettingTable& table = settingTable(group);
-  const auto it = std::find_if(table.fields.begin(), table.fields.end(),
-                               [&](const SettingSpec& s) { return key == s.key; });
+  const auto it =
+      std::find_if(table.fields.begin(), table.fields.end(), [&](const SettingSpec& s) { return key == s.key; });
   if (it == table.fields.end()) throw ModelError(settingPath(groupPath(group, light), key), "no such setting");
   if (it->type != SettingType::Number && it->type != SettingType::Integer && it->type != SettingType::Count &&
       it->type != SettingType::OptionalNumber)
@@ -52,13 +66,20 @@ const SettingSpec& numberField(SettingGroup group, const std::string& key, std::
 
 const SettingTable& settingTable(SettingGroup group) {
   switch (group) {
-    case SettingGroup::Render: return renderSettingsTable();
-    case SettingGroup::Flame: return flameSettingsTable();
-    case SettingGroup::Shading: return shadingSettingsTable();
-    case SettingGroup::Light: return shadingLightTable();
-    case SettingGroup::AmbientOcclusion: return ambientOcclusionTable();
-    case SettingGroup::Fog: return fogTable();
-    case SettingGroup::DepthOfField: return depthOfFieldTable();
+    case SettingGroup::Render:
+      return renderSettingsTable();
+    case SettingGroup::Flame:
+      return flameSettingsTable();
+    case SettingGroup::Shading:
+      return shadingSettingsTable();
+    case SettingGroup::Light:
+      return shadingLightTable();
+    case SettingGroup::AmbientOcclusion:
+      return ambientOcclusionTable();
+    case SettingGroup::Fog:
+      return fogTable();
+    case SettingGroup::DepthOfField:
+      return depthOfFieldTable();
   }
   return renderSettingsTable();
 }
@@ -74,9 +95,12 @@ void SetDisplayMode::apply(Project& project) const { project.render.mode = mode;
 
 std::string SetDisplayMode::label() const {
   switch (mode) {
-    case DisplayMode::Flame: return "Flame display";
-    case DisplayMode::Shaded: return "Shaded display";
-    case DisplayMode::ZBuffer: break;
+    case DisplayMode::Flame:
+      return "Flame display";
+    case DisplayMode::Shaded:
+      return "Shaded display";
+    case DisplayMode::ZBuffer:
+      break;
   }
   return "Z-buffer display";
 }

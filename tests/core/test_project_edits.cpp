@@ -176,8 +176,8 @@ TEST(ProjectEdits, MoveNodesExtendsOneTrailingNodesOperation) {
   Project p = defaultNewProject();
   const Function start = p.functions[0];  // 6×6×6, no operations
   std::vector<unsigned char> mask(216, 0);
-  mask[1] = 1;     // node (1, 0, 0)
-  mask[6] = 1;     // node (0, 1, 0)
+  mask[1] = 1;  // node (1, 0, 0)
+  mask[6] = 1;  // node (0, 1, 0)
   EXPECT_EQ(nodeMoveOperation(start), 0);
   applyEdit(p, MoveNodes{FunctionRef(0), start, mask, Vec3(0.1, 0, 0)});
   ASSERT_EQ(p.functions[0].ops.size(), 1u);
@@ -205,11 +205,13 @@ TEST(ProjectEdits, SettingEditsGoThroughTheTables) {
   EXPECT_DOUBLE_EQ(applied(p, SetSettingNumber{SettingGroup::Flame, "gamma", 3.5}).render.flame.gamma, 3.5);
   EXPECT_EQ(SetSettingNumber(SettingGroup::Flame, "gamma", 3.5).label(), flameSettingsTable().field("gamma").label);
   EXPECT_DOUBLE_EQ(applied(p, SetSettingNumber{SettingGroup::Render, "depth_cue", 0.25}).render.depth_cue, 0.25);
-  EXPECT_DOUBLE_EQ(applied(p, SetSettingNumber{SettingGroup::Light, "intensity", 0.7, 0}).render.shading.lights[0].intensity,
-                   0.7);
-  EXPECT_EQ(applied(p, SetSettingNumber{SettingGroup::AmbientOcclusion, "directions", 5.6}).render.shading.ao.directions,
-            6);  // integers are rounded
-  EXPECT_DOUBLE_EQ(*applied(p, SetSettingNumber{SettingGroup::DepthOfField, "focus", 3.0}).render.shading.dof.focus, 3.0);
+  EXPECT_DOUBLE_EQ(
+      applied(p, SetSettingNumber{SettingGroup::Light, "intensity", 0.7, 0}).render.shading.lights[0].intensity, 0.7);
+  EXPECT_EQ(
+      applied(p, SetSettingNumber{SettingGroup::AmbientOcclusion, "directions", 5.6}).render.shading.ao.directions,
+      6);  // integers are rounded
+  EXPECT_DOUBLE_EQ(*applied(p, SetSettingNumber{SettingGroup::DepthOfField, "focus", 3.0}).render.shading.dof.focus,
+                   3.0);
 
   EXPECT_EQ(applied(p, SetDisplayMode{DisplayMode::Shaded}).render.mode, DisplayMode::Shaded);
   EXPECT_EQ(SetDisplayMode(DisplayMode::Flame).label(), "Flame display");
@@ -217,8 +219,9 @@ TEST(ProjectEdits, SettingEditsGoThroughTheTables) {
   EXPECT_EQ(applied(p, SetBackground{Vec3(0.2)}).render.background, Vec3(0.2));
   EXPECT_EQ(applied(p, SetPalette{"flam3:27"}).render.flame.palette, "flam3:27");
   EXPECT_DOUBLE_EQ(applied(p, SetDensityEstimation{false}).render.flame.estimator_radius, 0.0);
-  EXPECT_DOUBLE_EQ(applied(applied(p, SetDensityEstimation{false}), SetDensityEstimation{true}).render.flame.estimator_radius,
-                   FlameSettings{}.estimator_radius);
+  EXPECT_DOUBLE_EQ(
+      applied(applied(p, SetDensityEstimation{false}), SetDensityEstimation{true}).render.flame.estimator_radius,
+      FlameSettings{}.estimator_radius);
 
   Project toned = applied(applied(p, SetPalette{"flam3:3"}), SetSettingNumber{SettingGroup::Flame, "gamma", 2.0});
   applyEdit(toned, ResetFlameSettings{});
