@@ -81,8 +81,9 @@ void drawTransitions(ModellerState& state, EditQueue& edits) {
         ImGui::TableNextColumn();
         ImGui::PushID(int(i * n + j));
         ImGui::SetNextItemWidth(cell);
-        matrixCell(edits, "##t", project.transitions[i][j], 0.0, true, "transition weight",
-                   [i, j](double v) { return SetTransitionWeight{i, j, v}; });
+        matrixCell(edits, "##t", project.transitions[i][j], 0.0, true, "transition weight", [i, j](double v) {
+          return SetTransitionWeight{i, j, v};
+        });
         state.probe.item("matrices.transition." + std::to_string(i) + "." + std::to_string(j));
         ImGui::PopID();
       }
@@ -170,8 +171,9 @@ void drawFunctionMatrix(ModellerState& state, EditQueue& edits) {
         ImGui::SetNextItemWidth(cell);
         // The edited entry is balanced by the row's diagonal (or last) entry, so the row keeps
         // summing to 1 and every intermediate state of a drag is valid.
-        matrixCell(edits, "##m", f.matrix[i][j], -1e6, false, "matrix entry",
-                   [fi = int(fi), i, j](double v) { return SetMatrixEntry{fi, i, j, v}; });
+        matrixCell(edits, "##m", f.matrix[i][j], -1e6, false, "matrix entry", [fi = int(fi), i, j](double v) {
+          return SetMatrixEntry{fi, i, j, v};
+        });
         state.probe.item("matrices.entry." + std::to_string(i) + "." + std::to_string(j));
         ImGui::PopID();
       }

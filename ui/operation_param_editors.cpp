@@ -16,9 +16,7 @@ void OpEditor::item(const std::string& label, bool changed) {
   gestureItem(edits, label, changed, SetOperation{function, index, op});
 }
 
-void OpEditor::commit(const std::string& label) {
-  edits.commit(label, SetOperation{function, index, op});
-}
+void OpEditor::commit(const std::string& label) { edits.commit(label, SetOperation{function, index, op}); }
 
 namespace {
 

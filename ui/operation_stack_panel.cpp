@@ -31,8 +31,7 @@ void addOperation(ModellerState& state, EditQueue& edits, const OperationSpec& s
     state.error("A function has at most " + std::to_string(limits::kMaxOpsPerFunction) + " operations.");
     return;
   }
-  const Operation op =
-      newOperation(spec, state.selection(), state.newOpCenter, state.pointCenter, state.localGrid());
+  const Operation op = newOperation(spec, state.selection(), state.newOpCenter, state.pointCenter, state.localGrid());
   const int at = state.activeOp < 0 ? int(f.ops.size()) : state.activeOp + 1;
   edits.commit(AddOperation{state.activeFunction, at, op});
   edits.after([&state, at] { state.activeOp = at; });
@@ -135,8 +134,7 @@ void drawOperationStackPanel(ModellerState& state, EditQueue& edits) {
       const Operation& op = f.ops[std::size_t(o)];
       ImGui::PushID(o);
       bool on = !op.muted;
-      if (ImGui::Checkbox("##on", &on))
-        edits.commit(SetOperationMuted{fi, o, !on});
+      if (ImGui::Checkbox("##on", &on)) edits.commit(SetOperationMuted{fi, o, !on});
       contextHelp(state, "Mute: skip this operation when evaluating the stack");
       ImGui::SameLine();
       char label[64];

@@ -67,13 +67,11 @@ void drawLight(ModellerState& state, EditQueue& edits, std::size_t index, const 
                 {.id = "##intensity", .probe = "shading.light" + std::to_string(index)}, index);
   bool shadows = light.shadows;
   const SettingSpec& shadowSpec = table.field("shadows");
-  if (ImGui::Checkbox(shadowSpec.label, &shadows))
-    edits.commit(SetLightShadows{index, shadows});
+  if (ImGui::Checkbox(shadowSpec.label, &shadows)) edits.commit(SetLightShadows{index, shadows});
   state.probe.item("shading.light" + std::to_string(index) + ".shadows");
   contextHelp(state, shadowSpec.tooltip);
   ImGui::SameLine();
-  if (ImGui::SmallButton("Remove light"))
-    edits.commit(RemoveLight{index});
+  if (ImGui::SmallButton("Remove light")) edits.commit(RemoveLight{index});
   ImGui::PopID();
 }
 
@@ -83,8 +81,7 @@ void drawShadingPanel(ModellerState& state, EditQueue& edits) {
   const ShadingSettings& s = state.document.project().render.shading;
   for (std::size_t i = 0; i < s.lights.size(); ++i) drawLight(state, edits, i, s.lights[i]);
   if (s.lights.size() < std::size_t(limits::kMaxLights)) {
-    if (ImGui::Button("Add light"))
-      edits.commit(AddLight{});
+    if (ImGui::Button("Add light")) edits.commit(AddLight{});
     state.probe.item("shading.add_light");
     contextHelp(state, "Add a directional light (up to 3)");
   }

@@ -1,6 +1,7 @@
 #pragma once
 // The one Document: the project plus undo/redo by whole-project snapshots.
-// The UI edits the project only through edit()/gestures; each committed edit is one undo step.
+// The UI edits the project only through named edits (edit/project_edit.h), applied as one undo
+// step or as the updates of one gesture; edit() takes any change, for tests and headless callers.
 #include <cstdint>
 #include <filesystem>
 #include <functional>

@@ -29,14 +29,18 @@ std::string EditQueue::apply(Document& document) {
     try {
       switch (item.kind) {
         case Kind::Commit:
-          if (item.edit) document.apply(item.label, *item.edit);
-          else document.edit(item.label, item.change);
+          if (item.edit)
+            document.apply(item.label, *item.edit);
+          else
+            document.edit(item.label, item.change);
           break;
         case Kind::Begin: document.beginGesture(item.label); break;
         case Kind::Update:
           if (!document.inGesture()) document.beginGesture("Edit");
-          if (item.edit) document.updateGesture(*item.edit);
-          else document.updateGesture(item.change);
+          if (item.edit)
+            document.updateGesture(*item.edit);
+          else
+            document.updateGesture(item.change);
           break;
         case Kind::End: document.endGesture(); break;
         case Kind::Cancel: document.cancelGesture(); break;
