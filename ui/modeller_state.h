@@ -13,7 +13,7 @@
 #include "model/grid.h"
 #include "render/chaos_renderer.h"
 #include "ui/set_outline_cache.h"
-#include "ui/widgets.h"
+#include "ui/test_probe.h"
 
 namespace gridifs::ui {
 
