@@ -139,7 +139,7 @@ void centerAndSelection(OpEditor& e) {
 
 }  // namespace
 
-void drawOperationPanel(ModellerState& state, EditQueue& edits) {
+void drawOperationPanel(ModellerState& state, EditQueue& edits, OperationPanelState& panel) {
   state.clampIndices();
   if (isSetKind(state.function().kind)) {
     ImGui::TextWrapped("%s acts through its set, not a grid: it has no operations. Edit its set in the panel beside.",
@@ -151,7 +151,7 @@ void drawOperationPanel(ModellerState& state, EditQueue& edits) {
     ImGui::TextDisabled("Pick an operation in the stack, or add one.");
     return;
   }
-  OpEditor e{state, edits, state.activeFunction, state.activeOp, *current};
+  OpEditor e{state, panel, edits, state.activeFunction, state.activeOp, *current};
   const OperationSpec& spec = operationSpec(e.op.params);
   ImGui::PushItemWidth(-ImGui::CalcTextSize("Strength__").x);
   ImGui::PushID(int(state.activeOp));
