@@ -147,6 +147,9 @@ struct FieldSchema : FieldInfo {
   /// Component `c` of a Number, Integer, Count or Vector field as a double (an unset
   /// OptionalNumber reads 0; other types read 0).
   double number(const void* owner, int c = 0) const;
+  /// The settings' former number(group, fallback): a component index is an int, so a double
+  /// there is a mistake the compiler should name.
+  double number(const void* owner, double fallback) const = delete;
   /// Sets component `c` of a Number, Integer, Count, OptionalNumber or Vector field (integers are
   /// rounded). Throws std::logic_error for other types (a programming error).
   void setNumber(void* owner, int c, double value) const;
