@@ -189,7 +189,7 @@ void CondensationSetPanel::draw(ModellerState& state, EditQueue& edits) {
   // The drawing the views show, made (and so checked) by the core voxelizer: its sentence is the
   // message when the set cannot be used.
   const SetOutlineCache::Drawing& drawing = state.setOutlines.get(set, state.projectFolder(), ref.path() + ".set");
-  state.setMessage = drawing.error;
+  message_ = drawing.error;
   if (!drawing.error.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.6f, 0.3f, 1.0f));
     ImGui::TextWrapped("%s", drawing.error.c_str());

@@ -14,6 +14,9 @@ namespace gridifs::ui {
 class CondensationSetPanel {
  public:
   void draw(ModellerState& state, EditQueue& edits);
+  /// Why the set of the active function could not be drawn ("" when it could), for the probe.
+  const std::string& message() const { return message_; }
+  void clearMessage() { message_.clear(); }
 
  private:
   void drawFile(ModellerState& state, EditQueue& edits, FunctionRef ref, const CondensationSet& set);
@@ -27,6 +30,7 @@ class CondensationSetPanel {
   SetShape browsingFor_ = SetShape::Mesh;  // and the shape its set takes with that file
   std::string pathText_;                   // the file name as typed, while its field is being edited
   bool editingPath_ = false;
+  std::string message_;  // why the set could not be drawn
 };
 
 }  // namespace gridifs::ui

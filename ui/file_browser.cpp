@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <system_error>
 
+#include "ui/test_probe.h"
 #include "ui/widgets.h"
 
 namespace gridifs::ui {

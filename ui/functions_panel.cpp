@@ -231,13 +231,14 @@ void addSetFunction(ModellerState& state, EditQueue& edits, FunctionKind kind) {
   edits.after([&state, index] { state.activate(FunctionRef(index)); });
 }
 
-void drawFunctionsPanel(ModellerState& state, EditQueue& edits) {
-  state.clampIndices();
+namespace {
+
+/// Add, add a set function, duplicate, delete, and move the active function up or down.
+void drawFunctionButtons(ModellerState& state, EditQueue& edits) {
   const Project& project = state.document.project();
   const int count = int(project.functions.size());
-  const FunctionRef activeRef = state.activeFunction;
-  const bool finalActive = activeRef.isFinal();
-  const int active = activeRef.index();  // meaningless while the final function is active
+  const bool finalActive = state.activeFunction.isFinal();
+  const int active = state.activeFunction.index();  // meaningless while the final function is active
 
   if (ImGui::Button("Add")) addFunction(state, edits);
   contextHelp(state, "Add a function: a new undistorted 6x6x6 grid placed at half size");
@@ -299,7 +300,11 @@ void drawFunctionsPanel(ModellerState& state, EditQueue& edits) {
     std::swap(state.selections[std::size_t(active)], state.selections[std::size_t(active + 1)]);
   }
   ImGui::EndDisabled();
+}
 
+void drawFunctionList(ModellerState& state, EditQueue& edits) {
+  const Project& project = state.document.project();
+  const int count = int(project.functions.size());
   // The list: mute, color, name, weight. The final function sits below it in a row of its own,
   // in violet, always in sight however long the list.
   const float rowHeight = ImGui::GetFrameHeightWithSpacing();
@@ -326,7 +331,36 @@ void drawFunctionsPanel(ModellerState& state, EditQueue& edits) {
                 "Add a final function: an undistorted lattice around the attractor, applied before plotting; distort "
                 "it to bend the whole picture");
   }
+}
 
+/// The bound of how much function `fi` of the IFS stretches distances, recomputed when the
+/// geometry changes.
+void drawContractivity(ModellerState& state, FunctionsPanelState& panel, int fi) {
+  // Gröller & Wegenkittl 1994, §1.1: an IFS function must shrink distances.
+  auto& contractivity = panel.contractivity;
+  if (contractivity.revision != state.document.revisions().geometry || contractivity.function != fi) {
+    contractivity.revision = state.document.revisions().geometry;
+    contractivity.function = fi;
+    try {
+      contractivity.bound = estimateContractivity(*state.document.evaluatedGrid(std::size_t(fi))).bound;
+      contractivity.valid = true;
+    } catch (const std::exception&) {
+      contractivity.valid = false;
+    }
+  }
+  if (contractivity.valid) {
+    const bool ok = contractivity.bound < 1.0;
+    ImGui::TextColored(ok ? ImVec4(0.55f, 0.8f, 0.55f, 1.0f) : ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "Lipschitz bound %.3f%s",
+                       contractivity.bound, ok ? "" : "  (not contractive)");
+    contextHelp(state, "Upper bound of how much this function can stretch distances; below 1 the IFS converges");
+  }
+}
+
+/// The active function's name, weight, colour, resolution, placement and contractivity.
+void drawActiveFunction(ModellerState& state, EditQueue& edits, FunctionsPanelState& panel) {
+  const FunctionRef activeRef = state.activeFunction;
+  const bool finalActive = activeRef.isFinal();
+  const int active = activeRef.index();  // meaningless while the final function is active
   const Function& f = state.function();
   ImGui::Spacing();
   ImGui::PushItemWidth(-ImGui::CalcTextSize(finalActive ? "Interpolation" : "Palette idx").x -
@@ -383,25 +417,16 @@ void drawFunctionsPanel(ModellerState& state, EditQueue& edits) {
   drawResolution(state, edits, activeRef, f);
   drawPlacement(state, edits, activeRef, f);
   ImGui::PopItemWidth();
+  drawContractivity(state, panel, fi);
+}
 
-  // Contractivity (Gröller & Wegenkittl 1994, §1.1): an IFS function must shrink distances.
-  auto& contractivity = state.contractivity;
-  if (contractivity.revision != state.document.revisions().geometry || contractivity.function != fi) {
-    contractivity.revision = state.document.revisions().geometry;
-    contractivity.function = fi;
-    try {
-      contractivity.bound = estimateContractivity(*state.document.evaluatedGrid(std::size_t(fi))).bound;
-      contractivity.valid = true;
-    } catch (const std::exception&) {
-      contractivity.valid = false;
-    }
-  }
-  if (contractivity.valid) {
-    const bool ok = contractivity.bound < 1.0;
-    ImGui::TextColored(ok ? ImVec4(0.55f, 0.8f, 0.55f, 1.0f) : ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "Lipschitz bound %.3f%s",
-                       contractivity.bound, ok ? "" : "  (not contractive)");
-    contextHelp(state, "Upper bound of how much this function can stretch distances; below 1 the IFS converges");
-  }
+}  // namespace
+
+void drawFunctionsPanel(ModellerState& state, EditQueue& edits, FunctionsPanelState& panel) {
+  state.clampIndices();
+  drawFunctionButtons(state, edits);
+  drawFunctionList(state, edits);
+  drawActiveFunction(state, edits, panel);
 }
 
 }  // namespace gridifs::ui

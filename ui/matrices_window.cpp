@@ -92,9 +92,8 @@ void drawTransitions(ModellerState& state, EditQueue& edits) {
   }
 }
 
-void drawPresets(ModellerState& state, EditQueue& edits) {
+void drawPresets(ModellerState& state, EditQueue& edits, MatricesWindowState& choice) {
   sectionTitle("Free-form presets (control points and matrices)");
-  auto& choice = state.freeFormPreset;
   int& which = choice.preset;
   float& split = choice.split;
   float& roughness = choice.roughness;
@@ -194,7 +193,7 @@ void drawFunctionMatrix(ModellerState& state, EditQueue& edits) {
 
 }  // namespace
 
-void drawMatricesWindow(ModellerState& state, EditQueue& edits) {
+void drawMatricesWindow(ModellerState& state, EditQueue& edits, MatricesWindowState& window) {
   if (!state.showMatrices) return;
   const ImGuiViewport* vp = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(ImVec2(vp->WorkPos.x + vp->WorkSize.x * 0.5f, vp->WorkPos.y + vp->WorkSize.y * 0.5f),
@@ -209,7 +208,7 @@ void drawMatricesWindow(ModellerState& state, EditQueue& edits) {
   state.probe.window("window.matrices");
   // A floating window over the tiled panels: in front when it opens, or it may open behind one.
   if (ImGui::IsWindowAppearing()) ImGui::SetWindowFocus();
-  drawPresets(state, edits);
+  drawPresets(state, edits, window);
   ImGui::Spacing();
   drawTransitions(state, edits);
   ImGui::Spacing();

@@ -79,9 +79,39 @@ class ModellerApp {
   ModellerApp(const ModellerApp&) = delete;
   ModellerApp& operator=(const ModellerApp&) = delete;
 
+  /// The frame loop, in the fixed order poll → build UI (collect edits) → apply edits → publish
+  /// the renderer's snapshot → draw views → ImGui render; returns the exit code.
   int run();
 
  private:
+  using Clock = std::chrono::steady_clock;
+  /// When each phase of a frame began, for --stats and the probe's slowest frame.
+  struct FrameTimes {
+    Clock::time_point start, ui, uiDone, applied, views, ifsView, preview, viewsDone, tick, ticked, finished;
+  };
+  static double milliseconds(Clock::time_point a, Clock::time_point b) {
+    return std::chrono::duration<double, std::milli>(b - a).count();
+  }
+
+  /// The preview's device, the view renderer, crash recovery and the file to open; false when the
+  /// device cannot be had.
+  bool startSession();
+  /// Waits for input when nothing moves (redraw on demand), else polls.
+  void pollEvents(bool capture);
+  /// A new ImGui frame: the panels and views collect edits.
+  void buildFrame(FrameTimes& t);
+  /// Hands the frame's edits to the Document.
+  void applyEdits();
+  /// Draws the grid views, the IFS view and the preview into their textures.
+  void renderViews(FrameTimes& t);
+  /// The views' textures and ImGui into the window's framebuffer.
+  void present(int fbw, int fbh);
+  /// The title, the autosave tick and the frame's timing; returns the frame's milliseconds.
+  double finishFrame(FrameTimes& t);
+  /// Whether a --screenshot capture has waited enough frames and points.
+  bool captureReady() const;
+  /// The last probe, the window's geometry, the files' shutdown and the --stats summary.
+  void endSession(bool capture);
   void buildUi();
   void drawGridViews(float framebufferScale);
   void drawIfsView(float framebufferScale);
@@ -106,6 +136,10 @@ class ModellerApp {
   RenderAnimationDialog animation_;  // File > Render animation
   CombineDialog combine_;            // File > Combine
   CondensationSetPanel setPanel_;    // in the Operations panel's place while a set function is active
+  FunctionsPanelState functionsPanel_;
+  OperationPanelState operationPanel_;
+  SelectionPanelState selectionPanel_;
+  MatricesWindowState matricesWindow_;  // Function > Matrices
   std::unique_ptr<AppCommands> commands_;
   std::string iniPath_, title_;
   bool resetLayout_ = false;
@@ -113,6 +147,7 @@ class ModellerApp {
   int panelsSeen_ = 0;     // how many of them were drawn in the last frame
   ImVec2 layoutViewport_;  // the window size the panels are arranged for (0: the current one)
   int frame_ = 0;
+  int quietFrames_ = 0;  // frames since the last input or edit: a few more are drawn before waiting
   std::vector<double> frameMs_;
   double slowestFrameMs_ = 0.0;  // past the first frames
   double phaseMs_[5] = {0, 0, 0, 0, 0};  // UI+edits+publish, grid views, IFS view, preview, ImGui
@@ -221,7 +256,7 @@ void ModellerApp::buildUi() {
   const ImGuiWindowFlags panel = ImGuiWindowFlags_NoCollapse;
 
   beginPanel(Panel::Functions, layout, cond);
-  if (ImGui::Begin("Functions", nullptr, panel)) drawFunctionsPanel(state_, edits_);
+  if (ImGui::Begin("Functions", nullptr, panel)) drawFunctionsPanel(state_, edits_, functionsPanel_);
   endPanel(Panel::Functions);
   ImGui::End();
   beginPanel(Panel::Operations, layout, cond);
@@ -231,14 +266,14 @@ void ModellerApp::buildUi() {
     if (isSetKind(state_.function().kind)) {
       setPanel_.draw(state_, edits_);
     } else {
-      state_.setMessage.clear();
+      setPanel_.clearMessage();
       drawOperationStackPanel(state_, edits_);
     }
   }
   endPanel(Panel::Operations);
   ImGui::End();
   beginPanel(Panel::Parameters, layout, cond);
-  if (ImGui::Begin("Parameters", nullptr, panel)) drawOperationPanel(state_, edits_);
+  if (ImGui::Begin("Parameters", nullptr, panel)) drawOperationPanel(state_, edits_, operationPanel_);
   endPanel(Panel::Parameters);
   ImGui::End();
   beginPanel(Panel::Grids, layout, cond);
@@ -253,7 +288,7 @@ void ModellerApp::buildUi() {
   ImGui::End();
   ImGui::PopStyleVar();
   beginPanel(Panel::Selection, layout, cond);
-  if (ImGui::Begin("Selection", nullptr, panel)) drawSelectionPanel(state_, edits_);
+  if (ImGui::Begin("Selection", nullptr, panel)) drawSelectionPanel(state_, edits_, selectionPanel_);
   endPanel(Panel::Selection);
   ImGui::End();
   beginPanel(Panel::Preview, layout, cond);
@@ -283,7 +318,7 @@ void ModellerApp::buildUi() {
     ImGui::End();
   }
   drawHelpWindow(state_);
-  drawMatricesWindow(state_, edits_);
+  drawMatricesWindow(state_, edits_, matricesWindow_);
   files_.draw(edits_);
   export_.draw(state_);
   animation_.draw(state_);
@@ -320,7 +355,7 @@ void ModellerApp::writeProbe(double frameMs) {
   else
     j["active_function"] = state_.activeFunction.index();
   j["final_message"] = state_.finalFunctionMessage;
-  j["set_message"] = state_.setMessage;
+  j["set_message"] = setPanel_.message();
   j["active_op"] = state_.activeOp;
   j["ops"] = state_.function().ops.size();
   j["status"] = state_.statusText;
@@ -364,10 +399,10 @@ void ModellerApp::writeProbe(double frameMs) {
   }
 }
 
-int ModellerApp::run() {
+bool ModellerApp::startSession() {
   if (const std::string error = preview_.useDevice(options_.device); !error.empty()) {
     std::fprintf(stderr, "gridifs: %s\n", error.c_str());
-    return 1;
+    return false;
   }
   renderer_ = std::make_unique<ViewRenderer>();
   // Installed before ImGui's callbacks are chained to it (see runModeller): record presses.
@@ -375,136 +410,120 @@ int ModellerApp::run() {
   files_.checkForRecovery();
   if (!options_.file.empty()) files_.openAtStartup(options_.file);
   state_.clampIndices();
-  const bool capture = !options_.screenshot.empty();
-  if (capture) startLoadingImageWriter();  // on a helper thread, while the picture fills
-  const auto start = std::chrono::steady_clock::now();
-  int quietFrames = 0;
-  int exitCode = 0;
-  for (;;) {
-    // 1. Poll. Idle windows wait for input (redraw on demand); a filling preview, a drag or
-    //    a capture keeps the loop animating.
-    const bool animate = capture || state_.playback.playing || animation_.running() || preview_.busy() || export_.running() || quietFrames < 3 || ImGui::IsAnyMouseDown();
-    if (animate) {
-      glfwPollEvents();
-    } else {
-      const double before = glfwGetTime();
-      glfwWaitEventsTimeout(0.5);
-      if (glfwGetTime() - before < 0.49) quietFrames = 0;
-    }
-    ++quietFrames;
-    if (ImGui::GetIO().MouseDelta.x != 0.0f || ImGui::GetIO().MouseDelta.y != 0.0f) quietFrames = 0;
-    if (glfwWindowShouldClose(window_)) {
-      glfwSetWindowShouldClose(window_, GLFW_FALSE);
-      files_.requestQuit();
-      quietFrames = 0;
-    }
-    const auto frameStart = std::chrono::steady_clock::now();
-    state_.now = std::chrono::duration<double>(frameStart - start).count();
+  return true;
+}
 
-    appWindow_.track();
-    followContentScale();
-    advancePlayback(state_);
-
-    // 2. Build the UI; widgets collect edits.
-    ImGui_ImplOpenGL3_NewFrame();
-    ImGui_ImplGlfw_NewFrame();
-    ImGui::NewFrame();
-    state_.contextHelp.clear();
-    state_.probe.rects.clear();
-    for (GridView& v : views_) v.hide();
-    ifsView_.hide();
-    preview_.hide();
-    const auto uiStart = std::chrono::steady_clock::now();
-    buildUi();
-    ImGui::Render();
-    const auto uiEnd = std::chrono::steady_clock::now();
-
-    // 3. Apply the edits to the one Document.
-    const bool hadEdits = !edits_.empty();
-    if (const std::string error = edits_.apply(state_.document); !error.empty()) state_.error(error);
-    state_.clampIndices();
-    if (hadEdits) quietFrames = 0;
-
-    const auto applied = std::chrono::steady_clock::now();
-    // 4. Publish a new renderer snapshot when the document changed.
-    preview_.publish(state_);
-
-    // 5. Draw the views into their textures.
-    const auto t0 = std::chrono::steady_clock::now();
-    for (GridView& v : views_) v.render(state_, *renderer_);
-    if (options_.stats) glFinish();
-    const auto t1 = std::chrono::steady_clock::now();
-    ifsView_.render(state_, *renderer_);
-    if (options_.stats) glFinish();
-    const auto t2 = std::chrono::steady_clock::now();
-    preview_.render(state_, *renderer_);
-    if (options_.stats) glFinish();
-    const auto t3 = std::chrono::steady_clock::now();
-    if (options_.stats) {
-      auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
-      phaseMs_[0] += ms(frameStart, t0);
-      phaseMs_[1] += ms(t0, t1);
-      phaseMs_[2] += ms(t1, t2);
-      phaseMs_[3] += ms(t2, t3);
-    }
-
-    // 6. ImGui on top.
-    int fbw = 0, fbh = 0;
-    glfwGetFramebufferSize(window_, &fbw, &fbh);
-    glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    glViewport(0, 0, fbw, fbh);
-    glClearColor(0.08f, 0.085f, 0.095f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
-    const auto t4 = std::chrono::steady_clock::now();
-    for (const GridView& v : views_) v.present(fbh);
-    ifsView_.present(fbh);
-    preview_.present(fbh);
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-    if (options_.stats) {
-      glFinish();
-      phaseMs_[4] += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t4).count();
-    }
-
-    const std::string title = files_.windowTitle();
-    if (title != title_) {
-      title_ = title;
-      glfwSetWindowTitle(window_, title_.c_str());
-    }
-    const auto beforeTick = std::chrono::steady_clock::now();
-    files_.tick();
-    const auto ticked = std::chrono::steady_clock::now();
-    ++frame_;
-    glFinish();
-    const auto finished = std::chrono::steady_clock::now();
-    const double frameMs = std::chrono::duration<double, std::milli>(finished - frameStart).count();
-    if (frame_ > 5 && frameMs > slowestFrameMs_) {
-      auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
-      slowestFramePhases_ = {{"poll_and_window", ms(frameStart, uiStart)}, {"build_ui", ms(uiStart, uiEnd)},
-                             {"apply_edits", ms(uiEnd, applied)},       {"publish", ms(applied, t0)},
-                             {"views", ms(t0, t3)},                     {"present", ms(t3, beforeTick)},
-                             {"files_tick", ms(beforeTick, ticked)},   {"gl_finish", ms(ticked, finished)}};
-    }
-    if (frame_ > 5) {
-      slowestFrameMs_ = std::max(slowestFrameMs_, frameMs);
-      if (options_.stats) frameMs_.push_back(frameMs);  // kept only for the --stats summary
-    }
-    if (capture && frame_ >= options_.frames) {
-      const bool enoughPoints = state_.previewStats.samples >= options_.waitPoints || state_.previewStats.done ||
-                                state_.now > 60.0;
-      if (enoughPoints) {
-        if (const std::string error = writeFramebuffer(options_.screenshot, fbw, fbh); !error.empty()) {
-          std::cerr << "gridifs: " << error << "\n";
-          exitCode = 1;
-        }
-        writeProbe(frameMs);
-        break;
-      }
-    }
-    glfwSwapBuffers(window_);
-    // After the swap: a test that reads "done" from the probe then finds that frame on screen.
-    writeProbe(frameMs);
-    if (files_.quitConfirmed()) break;
+void ModellerApp::pollEvents(bool capture) {
+  // Idle windows wait for input (redraw on demand); a filling preview, a drag or a capture keeps
+  // the loop animating.
+  const bool animate = capture || state_.playback.playing || animation_.running() || preview_.busy() ||
+                       export_.running() || quietFrames_ < 3 || ImGui::IsAnyMouseDown();
+  if (animate) {
+    glfwPollEvents();
+  } else {
+    const double before = glfwGetTime();
+    glfwWaitEventsTimeout(0.5);
+    if (glfwGetTime() - before < 0.49) quietFrames_ = 0;
   }
+  ++quietFrames_;
+  if (ImGui::GetIO().MouseDelta.x != 0.0f || ImGui::GetIO().MouseDelta.y != 0.0f) quietFrames_ = 0;
+  if (glfwWindowShouldClose(window_)) {
+    glfwSetWindowShouldClose(window_, GLFW_FALSE);
+    files_.requestQuit();
+    quietFrames_ = 0;
+  }
+}
+
+void ModellerApp::buildFrame(FrameTimes& t) {
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  state_.contextHelp.clear();
+  state_.probe.rects.clear();
+  for (GridView& v : views_) v.hide();
+  ifsView_.hide();
+  preview_.hide();
+  t.ui = Clock::now();
+  buildUi();
+  ImGui::Render();
+  t.uiDone = Clock::now();
+}
+
+void ModellerApp::applyEdits() {
+  const bool hadEdits = !edits_.empty();
+  if (const std::string error = edits_.apply(state_.document); !error.empty()) state_.error(error);
+  state_.clampIndices();
+  if (hadEdits) quietFrames_ = 0;
+}
+
+void ModellerApp::renderViews(FrameTimes& t) {
+  t.views = Clock::now();
+  for (GridView& v : views_) v.render(state_, *renderer_);
+  if (options_.stats) glFinish();
+  t.ifsView = Clock::now();
+  ifsView_.render(state_, *renderer_);
+  if (options_.stats) glFinish();
+  t.preview = Clock::now();
+  preview_.render(state_, *renderer_);
+  if (options_.stats) glFinish();
+  t.viewsDone = Clock::now();
+  if (options_.stats) {
+    phaseMs_[0] += milliseconds(t.start, t.views);
+    phaseMs_[1] += milliseconds(t.views, t.ifsView);
+    phaseMs_[2] += milliseconds(t.ifsView, t.preview);
+    phaseMs_[3] += milliseconds(t.preview, t.viewsDone);
+  }
+}
+
+void ModellerApp::present(int fbw, int fbh) {
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, fbw, fbh);
+  glClearColor(0.08f, 0.085f, 0.095f, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+  const auto t4 = Clock::now();
+  for (const GridView& v : views_) v.present(fbh);
+  ifsView_.present(fbh);
+  preview_.present(fbh);
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  if (options_.stats) {
+    glFinish();
+    phaseMs_[4] += milliseconds(t4, Clock::now());
+  }
+}
+
+double ModellerApp::finishFrame(FrameTimes& t) {
+  const std::string title = files_.windowTitle();
+  if (title != title_) {
+    title_ = title;
+    glfwSetWindowTitle(window_, title_.c_str());
+  }
+  t.tick = Clock::now();
+  files_.tick();
+  t.ticked = Clock::now();
+  ++frame_;
+  glFinish();
+  t.finished = Clock::now();
+  const double frameMs = milliseconds(t.start, t.finished);
+  if (frame_ > 5 && frameMs > slowestFrameMs_) {
+    slowestFramePhases_ = {
+        {"poll_and_window", milliseconds(t.start, t.ui)},   {"build_ui", milliseconds(t.ui, t.uiDone)},
+        {"apply_edits", milliseconds(t.uiDone, t.applied)}, {"publish", milliseconds(t.applied, t.views)},
+        {"views", milliseconds(t.views, t.viewsDone)},      {"present", milliseconds(t.viewsDone, t.tick)},
+        {"files_tick", milliseconds(t.tick, t.ticked)},     {"gl_finish", milliseconds(t.ticked, t.finished)}};
+  }
+  if (frame_ > 5) {
+    slowestFrameMs_ = std::max(slowestFrameMs_, frameMs);
+    if (options_.stats) frameMs_.push_back(frameMs);  // kept only for the --stats summary
+  }
+  return frameMs;
+}
+
+bool ModellerApp::captureReady() const {
+  return frame_ >= options_.frames &&
+         (state_.previewStats.samples >= options_.waitPoints || state_.previewStats.done || state_.now > 60.0);
+}
+
+void ModellerApp::endSession(bool capture) {
   writeProbe(0.0);
   // A capture is not a session: it leaves the artist's window where it was.
   if (!capture) appWindow_.save(int(ImGui::GetMainViewport()->Size.x), int(ImGui::GetMainViewport()->Size.y));
@@ -519,6 +538,57 @@ int ModellerApp::run() {
     std::fprintf(stderr, "gridifs: per frame: UI %.2f ms, grid views %.2f ms, IFS view %.2f ms, preview %.2f ms, ImGui %.2f ms\n",
                  phaseMs_[0] / n, phaseMs_[1] / n, phaseMs_[2] / n, phaseMs_[3] / n, phaseMs_[4] / n);
   }
+}
+
+int ModellerApp::run() {
+  if (!startSession()) return 1;
+  const bool capture = !options_.screenshot.empty();
+  if (capture) startLoadingImageWriter();  // on a helper thread, while the picture fills
+  const Clock::time_point start = Clock::now();
+  int exitCode = 0;
+  for (;;) {
+    // 1. Poll.
+    pollEvents(capture);
+    FrameTimes t;
+    t.start = Clock::now();
+    state_.now = std::chrono::duration<double>(t.start - start).count();
+    appWindow_.track();
+    followContentScale();
+    advancePlayback(state_);
+
+    // 2. Build the UI; widgets collect edits.
+    buildFrame(t);
+
+    // 3. Apply the edits to the one Document.
+    applyEdits();
+    t.applied = Clock::now();
+
+    // 4. Publish a new renderer snapshot when the document changed.
+    preview_.publish(state_);
+
+    // 5. Draw the views into their textures.
+    renderViews(t);
+
+    // 6. ImGui on top.
+    int fbw = 0, fbh = 0;
+    glfwGetFramebufferSize(window_, &fbw, &fbh);
+    present(fbw, fbh);
+    const double frameMs = finishFrame(t);
+
+    if (capture && captureReady()) {
+      if (const std::string error = writeFramebuffer(options_.screenshot, fbw, fbh); !error.empty()) {
+        std::cerr << "gridifs: " << error << "\n";
+        exitCode = 1;
+      }
+      writeProbe(frameMs);
+      break;
+    }
+    glfwSwapBuffers(window_);
+    // After the swap: a test that reads "done" from the probe then finds that frame on screen.
+    writeProbe(frameMs);
+    if (files_.quitConfirmed()) break;
+  }
+  endSession(capture);
   return exitCode;
 }
 

@@ -2,7 +2,10 @@
 // Everything the modeller window knows besides the Document: which function and op are
 // active, the artist's current node selection (UI state, not saved, as in Gröller & Wegenkittl 1994, §4.4:
 // "as long as a subset is active, all following operations are applied only to it"),
-// messages, and window toggles. Owned by the UI thread; panels read it and enqueue edits.
+// messages, and window toggles: what several panels and views share. What one panel alone keeps
+// between frames (a typed index box, an expression being typed, a display cache) lives in that
+// panel (its state struct in ui/panels.h, or its class). Owned by the UI thread; panels read it
+// and enqueue edits.
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -13,7 +16,7 @@
 #include "model/grid.h"
 #include "render/chaos_renderer.h"
 #include "ui/set_outline_cache.h"
-#include "ui/widgets.h"
+#include "ui/test_probe.h"
 
 namespace gridifs::ui {
 
@@ -73,15 +76,6 @@ class ModellerState {
   // Windows and modes.
   bool showHelp = false;
   bool showMatrices = false;  // the Matrices window (transitions, free-form control points and matrices)
-  /// The free-form preset the Matrices window would apply next (UI state, not saved).
-  struct FreeFormPresetChoice {
-    int preset = 0;
-    float split = 0.5f, roughness = 0.0f;
-    int seed = 1;
-  } freeFormPreset;
-  bool morphAsDirection = false;
-  SelectionBox boxEntry{{0, 2}, {0, 5}, {0, 5}, SelectionOp::Or};  // the index box being typed  // morph vectors entered as start + direction
-  bool showRenderSettings = true;
   int maximizedGridView = -1;  // -1: the four views; 0..3: one of them fills the window
   PreviewMode previewMode = PreviewMode::ZBuffer;
   bool previewPaused = false;
@@ -96,7 +90,6 @@ class ModellerState {
   int renderThreads = 1;
   RenderStats previewStats;
   std::string previewDevice = "cpu";  // which renderer fills the preview ("cpu", "gpu (...)")
-  std::string previewError;
   /// The volume mode's progress for the status line ("" in the other modes).
   std::string volumeStatus;
   /// Key presses since the last frame, recorded by a GLFW callback: ImGui 1.86 has no input
@@ -107,23 +100,8 @@ class ModellerState {
   std::vector<KeyPress> keyPresses;
 
   UiProbe probe;
-  /// An operation's expression fields keep what the artist typed, even when it does not
-  /// parse yet (the op itself only ever holds valid expressions).
-  struct {
-    FunctionRef function;
-    int op = -1;
-    std::vector<std::string> text, base;
-  } expressionEdit;
-  /// Display cache of the active function's contractivity bound (Gröller & Wegenkittl 1994, §1.1).
-  struct {
-    std::uint64_t revision = 0;
-    int function = -1;  // of the IFS (the final function is outside the loop: no bound)
-    double bound = 0.0;
-    bool valid = false;
-  } contractivity;
-  /// The drawings of the condensation sets (views and set editor) and the set editor's message.
+  /// The drawings of the condensation sets (views and set editor).
   SetOutlineCache setOutlines;
-  std::string setMessage;
   /// The folder that the project's relative file paths (meshes, VDBs) start from.
   std::filesystem::path projectFolder() const {
     return document.path().parent_path().empty() ? std::filesystem::path(".") : document.path().parent_path();

@@ -9,11 +9,13 @@
 #include "model/operation_table.h"
 #include "ui/edit_queue.h"
 #include "ui/modeller_state.h"
+#include "ui/panels.h"
 
 namespace gridifs::ui {
 
 struct OpEditor {
   ModellerState& state;
+  OperationPanelState& panel;
   EditQueue& edits;
   FunctionRef function;  // the edited function (the final one included)
   int index;

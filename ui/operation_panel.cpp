@@ -42,7 +42,7 @@ bool scalarWidget(const ParamSpec& s, OpParams& params) {
     }
     case ParamType::Seed: return ImGui::InputScalar(s.label, ImGuiDataType_U64, &s.value<std::uint64_t>(params));
     case ParamType::Vector: {
-      double* v = static_cast<double*>(s.locate(params));
+      double* v = static_cast<double*>(s.locate(&params));
       const bool c = ImGui::DragScalarN(s.label, ImGuiDataType_Double, v, s.components, float(s.speed),
                                         slider ? &s.sliderMin : nullptr, slider ? &s.sliderMax : nullptr, s.format);
       if (c)
@@ -73,7 +73,7 @@ void drawParams(OpEditor& e, const OperationSpec& spec) {
       case ParamType::NodeMoves: drawNodeMoves(e, s); continue;
       default: break;
     }
-    const bool enabled = !s.enabled || s.enabled(e.op.params);
+    const bool enabled = !s.enabled || s.enabled(&e.op.params);
     ImGui::BeginDisabled(!enabled);
     if (s.type == ParamType::Number || s.type == ParamType::Vector) {
       // Integers, seeds and choices are not keyed: a blend between two of them is not one of them.
@@ -136,7 +136,7 @@ void centerAndSelection(OpEditor& e) {
 
 }  // namespace
 
-void drawOperationPanel(ModellerState& state, EditQueue& edits) {
+void drawOperationPanel(ModellerState& state, EditQueue& edits, OperationPanelState& panel) {
   state.clampIndices();
   if (isSetKind(state.function().kind)) {
     ImGui::TextWrapped("%s acts through its set, not a grid: it has no operations. Edit its set in the panel beside.",
@@ -148,7 +148,7 @@ void drawOperationPanel(ModellerState& state, EditQueue& edits) {
     ImGui::TextDisabled("Pick an operation in the stack, or add one.");
     return;
   }
-  OpEditor e{state, edits, state.activeFunction, state.activeOp, *current};
+  OpEditor e{state, panel, edits, state.activeFunction, state.activeOp, *current};
   const OperationSpec& spec = operationSpec(e.op.params);
   ImGui::PushItemWidth(-ImGui::CalcTextSize("Strength__").x);
   ImGui::PushID(int(state.activeOp));

@@ -48,7 +48,7 @@ void drawExpressionParams(OpEditor& e, const OperationSpec& spec) {
   std::vector<const ParamSpec*> expressions;
   for (const ParamSpec& s : spec.params)
     if (s.type == ParamType::Expression) expressions.push_back(&s);
-  auto& buffer = e.state.expressionEdit;
+  auto& buffer = e.panel.expressionEdit;
   std::vector<std::string> current;
   for (const ParamSpec* s : expressions) current.push_back(s->value<std::string>(e.op.params));
   if (!(buffer.function == e.function) || buffer.op != e.index || buffer.base != current) {
@@ -134,7 +134,7 @@ void drawCalculatorVars(OpEditor& e, const OperationSpec& spec, const ParamSpec&
 void drawMorphPairs(OpEditor& e, const OperationSpec& spec, const ParamSpec& param) {
   auto& pairs = param.value<std::vector<MorphPair>>(e.op.params);
   const std::string title = spec.title;
-  bool& asDirection = e.state.morphAsDirection;
+  bool& asDirection = e.panel.morphAsDirection;
   ImGui::Checkbox("Enter end as direction", &asDirection);
   int remove = -1;
   for (std::size_t i = 0; i < pairs.size(); ++i) {

@@ -19,9 +19,23 @@ namespace gridifs::ui {
 void PreviewView::build(ModellerState& state, EditQueue& edits, float framebufferScale) {
   framebufferScale_ = framebufferScale;
   visible_ = false;
-  const Project& project = state.document.project();
+  buildToolbar(state, edits);
+  // Display mode and its controls (ui/preview_modes.cpp).
+  modes_.buildToolbar(state, edits);
 
-  // Toolbar.
+  // Progress.
+  const RenderStats& s = state.previewStats;
+  const float progress = s.budget > 0 ? float(std::min(1.0, s.progress())) : 0.0f;
+  ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(0, 0));
+  ImGui::ProgressBar(progress, ImVec2(-1, ImGui::GetFontSize() * 0.3f), "");
+  ImGui::PopStyleVar();
+
+  const bool hovered = buildImage(state);
+  handleMouse(state, edits, hovered);
+}
+
+void PreviewView::buildToolbar(ModellerState& state, EditQueue& edits) {
+  const Project& project = state.document.project();
   if (ImGui::Button(state.previewPaused ? "Resume" : "Pause", ImVec2(ImGui::GetFontSize() * 4.5f, 0)))
     state.previewPaused = !state.previewPaused;
   state.probe.item("preview.pause");
@@ -55,18 +69,10 @@ void PreviewView::build(ModellerState& state, EditQueue& edits, float framebuffe
   const bool changed = ImGui::ColorEdit3(background.label, bg, ImGuiColorEditFlags_NoInputs);
   gestureItem(edits, background.label, changed, SetBackground{Vec3(bg[0], bg[1], bg[2])});
   contextHelp(state, background.tooltip);
+}
 
-  // Display mode and its controls (ui/preview_modes.cpp).
-  modes_.buildToolbar(state, edits);
-
-  // Progress.
-  const RenderStats& s = state.previewStats;
-  const float progress = s.budget > 0 ? float(std::min(1.0, s.progress())) : 0.0f;
-  ImGui::PushStyleVar(ImGuiStyleVar_FramePadding, ImVec2(0, 0));
-  ImGui::ProgressBar(progress, ImVec2(-1, ImGui::GetFontSize() * 0.3f), "");
-  ImGui::PopStyleVar();
-
-  // Image, above the timeline.
+bool PreviewView::buildImage(ModellerState& state) {
+  // Above the timeline.
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   size_ = glm::dvec2(std::max(avail.x, 16.0f), std::max(avail.y - timelinePanelHeight(state), 16.0f));
   const ImVec2 origin = ImGui::GetCursorScreenPos();
@@ -77,15 +83,20 @@ void PreviewView::build(ModellerState& state, EditQueue& edits, float framebuffe
   state.probe.item("preview.image");
   const bool hovered = ImGui::IsItemHovered();
   // The volume mode does not show the chaos game (which cannot run a median function's sets).
-  if (!state.previewError.empty() && state.previewMode != PreviewMode::Volume)
+  if (!error_.empty() && state.previewMode != PreviewMode::Volume)
     ImGui::GetWindowDrawList()->AddText(ImVec2(origin.x + 8, origin.y + 8), IM_COL32(255, 120, 100, 255),
-                                        state.previewError.c_str());
+                                        error_.c_str());
   if (const std::string message = modes_.overlayMessage(state); !message.empty()) {
     ImGui::GetWindowDrawList()->AddText(nullptr, 0.0f, ImVec2(origin.x + 8, origin.y + 8 + ImGui::GetFontSize() * 1.4f),
                                         IM_COL32(255, 120, 100, 255), message.c_str(), nullptr, float(size_.x) - 16.0f);
     state.probe.item("preview.message");
   }
+  return hovered;
+}
 
+void PreviewView::handleMouse(ModellerState& state, EditQueue& edits, bool hovered) {
+  const Project& project = state.document.project();
+  const ImVec2 origin(float(screenOrigin_.x), float(screenOrigin_.y));
   ImGuiIO& io = ImGui::GetIO();
   // The volume mode is lit by the same key light: Alt+drag turns it there too.
   const bool shaded = (state.previewMode == PreviewMode::Shaded || state.previewMode == PreviewMode::Volume) &&
@@ -115,36 +126,43 @@ void PreviewView::build(ModellerState& state, EditQueue& edits, float framebuffe
         break;
       }
   }
-  if (lightDrag_) {
-    if (ImGui::IsMouseDown(dragButton_)) {
-      const glm::dvec2 delta = mouse - dragStart_;
-      if (!dragMoved_ && glm::length(delta) > 3.0) {
-        dragMoved_ = true;
-        edits.begin("Move key light");
-      }
-      if (dragMoved_) {
-        // The key light turns with the mouse: right/left about the vertical axis, up/down in elevation.
-        const double length = glm::length(dragLight_);
-        const double azimuth = std::atan2(dragLight_.y, dragLight_.x) - delta.x * 0.01;
-        double elevation = std::asin(std::clamp(dragLight_.z / length, -1.0, 1.0)) - delta.y * 0.01;
-        elevation = std::clamp(elevation, -1.55, 1.5705);
-        const Vec3 direction(std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth),
-                             std::sin(elevation));
-        edits.update(SetLightDirection{0, direction});
-      }
-    } else {
-      if (dragMoved_) edits.end();
-      lightDrag_ = false;
+  if (lightDrag_)
+    dragKeyLight(edits, mouse);
+  else if (orbit_.motion() != OrbitController::Motion::None)
+    dragCamera(edits, mouse);
+}
+
+void PreviewView::dragKeyLight(EditQueue& edits, glm::dvec2 mouse) {
+  if (ImGui::IsMouseDown(dragButton_)) {
+    const glm::dvec2 delta = mouse - dragStart_;
+    if (!dragMoved_ && glm::length(delta) > 3.0) {
+      dragMoved_ = true;
+      edits.begin("Move key light");
     }
-  } else if (orbit_.motion() != OrbitController::Motion::None) {
-    if (ImGui::IsMouseDown(dragButton_)) {
-      const bool firstMove = !dragMoved_ && glm::length(mouse - dragStart_) > 3.0;
-      if (firstMove) dragMoved_ = true;
-      if (dragMoved_) orbit_.dragProject(edits, mouse, ViewAxis::User, size_.y, firstMove);
-    } else {
-      if (dragMoved_) edits.end();
-      orbit_.end();
+    if (dragMoved_) {
+      // The key light turns with the mouse: right/left about the vertical axis, up/down in elevation.
+      const double length = glm::length(dragLight_);
+      const double azimuth = std::atan2(dragLight_.y, dragLight_.x) - delta.x * 0.01;
+      double elevation = std::asin(std::clamp(dragLight_.z / length, -1.0, 1.0)) - delta.y * 0.01;
+      elevation = std::clamp(elevation, -1.55, 1.5705);
+      const Vec3 direction(std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth),
+                           std::sin(elevation));
+      edits.update(SetLightDirection{0, direction});
     }
+  } else {
+    if (dragMoved_) edits.end();
+    lightDrag_ = false;
+  }
+}
+
+void PreviewView::dragCamera(EditQueue& edits, glm::dvec2 mouse) {
+  if (ImGui::IsMouseDown(dragButton_)) {
+    const bool firstMove = !dragMoved_ && glm::length(mouse - dragStart_) > 3.0;
+    if (firstMove) dragMoved_ = true;
+    if (dragMoved_) orbit_.dragProject(edits, mouse, ViewAxis::User, size_.y, firstMove);
+  } else {
+    if (dragMoved_) edits.end();
+    orbit_.end();
   }
 }
 
@@ -176,7 +194,7 @@ void PreviewView::publish(ModellerState& state) {
                       state.previewMode == PreviewMode::Volume);
   const int w = int(std::lround(size_.x * framebufferScale_)), h = int(std::lround(size_.y * framebufferScale_));
   renderer_.publish(state.document, w, h, state.renderThreads);
-  state.previewError = renderer_.error().empty() ? std::string() : "Preview stopped: " + renderer_.error();
+  error_ = renderer_.error().empty() ? std::string() : "Preview stopped: " + renderer_.error();
   state.previewStats = renderer_.stats();
   state.previewDevice = renderer_.deviceName();
 }

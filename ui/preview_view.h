@@ -5,6 +5,7 @@
 #include <imgui.h>
 
 #include <glm/vec2.hpp>
+#include <string>
 
 #include "ui/edit_queue.h"
 #include "ui/gl_resources.h"
@@ -48,6 +49,18 @@ class PreviewView {
   Vec3 drawnBackground_{-1.0};
   double lastFetch_ = -1.0;
   float framebufferScale_ = 1.0f;
+  std::string error_;  // why the chaos game stopped, over the image
+  /// Pause, restart, sample budget, depth cue and background.
+  void buildToolbar(ModellerState& state, EditQueue& edits);
+  /// The image's place above the timeline, with the renderer's and the mode's messages over it;
+  /// returns whether the mouse is over it.
+  bool buildImage(ModellerState& state);
+  /// Wheel zoom, and the start of an orbit, a pan or a key-light turn, then the drag under way.
+  void handleMouse(ModellerState& state, EditQueue& edits, bool hovered);
+  /// Alt+drag in the shaded and volume modes: the key light turns with the mouse (one undo step).
+  void dragKeyLight(EditQueue& edits, glm::dvec2 mouse);
+  /// Drag: orbit or pan the project camera (one undo step).
+  void dragCamera(EditQueue& edits, glm::dvec2 mouse);
   /// The key light's direction as a small dial in the image's corner (Alt+drag turns it).
   void drawLightGizmo(ModellerState& state, ImVec2 origin) const;
 

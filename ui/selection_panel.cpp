@@ -12,7 +12,7 @@
 
 namespace gridifs::ui {
 
-void drawSelectionPanel(ModellerState& state, EditQueue& edits) {
+void drawSelectionPanel(ModellerState& state, EditQueue& edits, SelectionPanelState& panel) {
   (void)edits;  // the selection is UI state (not saved), so it needs no undo step
   state.clampIndices();
   const Function& f = state.function();
@@ -51,7 +51,7 @@ void drawSelectionPanel(ModellerState& state, EditQueue& edits) {
 
   sectionTitle("Index box");
   // The box being entered: UI state kept across frames.
-  auto& box = state.boxEntry;
+  auto& box = panel.boxEntry;
   // Three ranges on one line where the panel is wide enough, else one per line (a narrow
   // left column on a laptop screen would clip the third).
   const ImGuiStyle& style = ImGui::GetStyle();

@@ -1,5 +1,7 @@
 #include "io/operation_json.h"
 
+#include <stdexcept>
+
 #include "io/json_read.h"
 
 namespace gridifs::operation_json {
@@ -95,6 +97,10 @@ void readParam(const ParamSpec& s, const json& o, const std::string& opPath, OpP
       }
       break;
     }
+    case ParamType::Count:
+    case ParamType::Boolean:
+    case ParamType::OptionalNumber:
+      throw std::logic_error(std::string("operation parameter ") + s.key + " has a type operations cannot hold");
   }
 }
 
@@ -130,6 +136,10 @@ ordered_json writeParam(const ParamSpec& s, const OpParams& params) {
         moves.push_back({m.index[0], m.index[1], m.index[2], vec3Json(m.displacement)});
       return moves;
     }
+    case ParamType::Count:
+    case ParamType::Boolean:
+    case ParamType::OptionalNumber:
+      break;  // no operation has these
   }
   return nullptr;
 }

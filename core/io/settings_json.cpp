@@ -1,6 +1,7 @@
 #include "io/settings_json.h"
 
 #include <cmath>
+#include <stdexcept>
 
 #include "io/json_read.h"
 
@@ -114,6 +115,11 @@ void readSettingFields(const SettingTable& table, const json& object, const std:
       case SettingType::OptionalNumber:
         if (!it->is_null()) s.value<std::optional<double>>(group) = readSettingNumber(words, s, *it, p);
         break;
+      case SettingType::Choice:
+      case SettingType::CalculatorVars:
+      case SettingType::MorphPairs:
+      case SettingType::NodeMoves:
+        throw std::logic_error(std::string("settings field ") + s.key + " has a type settings cannot hold");
     }
   }
 }
@@ -148,6 +154,11 @@ void writeSettingField(const SettingSpec& s, const void* group, ordered_json& ob
     case SettingType::OptionalNumber:
       if (const auto& v = s.value<std::optional<double>>(group)) object[s.key] = *v;
       break;
+    case SettingType::Choice:
+    case SettingType::CalculatorVars:
+    case SettingType::MorphPairs:
+    case SettingType::NodeMoves:
+      throw std::logic_error(std::string("settings field ") + s.key + " has a type settings cannot hold");
   }
 }
 

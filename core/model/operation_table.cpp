@@ -3,6 +3,10 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <stdexcept>
+#include <tuple>
+#include <utility>
+#include <variant>
 
 #include "model/calculator.h"
 #include "model/stack_evaluator.h"
@@ -19,8 +23,8 @@ const char* const kProfileHelp =
 const char* const kOmegaHelp = "Frequency ω of the sine and ping-pong profiles along the axis";
 
 template <class Op>
-bool periodicProfile(const OpParams& p) {
-  return std::get<Op>(p).profile != Profile::Linear;
+bool periodicProfile(const void* params) {
+  return std::get<Op>(*static_cast<const OpParams*>(params)).profile != Profile::Linear;
 }
 
 std::string format(const char* pattern, auto... values) {
@@ -49,281 +53,336 @@ std::string profileSummary(const OpParams& params) {
   return format("%s %s k=%.2f", axisName(p.axis), profileName(p.profile), p.k);
 }
 
-std::vector<OperationSpec> buildTable() {
-  std::vector<OperationSpec> table;
+/// The table's row for operation `Op`; every alternative of OpParams has one.
+template <class Op>
+OperationSpec row() = delete;
 
-  table.push_back({.type = "translate",
-                   .title = "Translate",
-                   .heading = "Translate",
-                   .defaults = TranslateOp{},
-                   .params = {param<&TranslateOp::offset>(
-                       {.key = "offset", .label = "Offset", .tooltip = "Moves every node by this vector"})},
-                   .summary = [](const OpParams& o) {
-                     const Vec3& v = std::get<TranslateOp>(o).offset;
-                     return format("%.2f %.2f %.2f", v.x, v.y, v.z);
-                   }});
+template <>
+OperationSpec row<TranslateOp>() {
+  return {.type = "translate",
+          .title = "Translate",
+          .heading = "Translate",
+          .defaults = TranslateOp{},
+          .params = {param<&TranslateOp::offset>(
+              {.key = "offset", .label = "Offset", .tooltip = "Moves every node by this vector"})},
+          .summary = [](const OpParams& o) {
+            const Vec3& v = std::get<TranslateOp>(o).offset;
+            return format("%.2f %.2f %.2f", v.x, v.y, v.z);
+          }};
+}
 
-  table.push_back({.type = "rotate",
-                   .title = "Rotate",
-                   .heading = "Rotate (R = Rz·Ry·Rx, degrees)",
-                   .defaults = RotateOp{},
-                   .params = {param<&RotateOp::angles>({.key = "angles",
-                                                        .label = "Angles",
-                                                        .tooltip = "Euler angles in degrees, x applied first",
-                                                        .sliderMin = -360.0,
-                                                        .sliderMax = 360.0,
-                                                        .speed = 0.5,
-                                                        .format = "%.1f°"})},
-                   .summary = [](const OpParams& o) {
-                     const Vec3& v = std::get<RotateOp>(o).angles;
-                     return format("%.0f° %.0f° %.0f°", v.x, v.y, v.z);
-                   }});
+template <>
+OperationSpec row<RotateOp>() {
+  return {.type = "rotate",
+          .title = "Rotate",
+          .heading = "Rotate (R = Rz·Ry·Rx, degrees)",
+          .defaults = RotateOp{},
+          .params = {param<&RotateOp::angles>({.key = "angles",
+                                               .label = "Angles",
+                                               .tooltip = "Euler angles in degrees, x applied first",
+                                               .sliderMin = -360.0,
+                                               .sliderMax = 360.0,
+                                               .speed = 0.5,
+                                               .format = "%.1f°"})},
+          .summary = [](const OpParams& o) {
+            const Vec3& v = std::get<RotateOp>(o).angles;
+            return format("%.0f° %.0f° %.0f°", v.x, v.y, v.z);
+          }};
+}
 
-  table.push_back({.type = "scale",
-                   .title = "Scale",
-                   .heading = "Scale",
-                   .defaults = ScaleOp{},
-                   .params = {param<&ScaleOp::factors>({.key = "factors",
-                                                        .label = "Factors",
-                                                        .tooltip = "Scale factors along x, y and z",
-                                                        .sliderMin = -10.0,
-                                                        .sliderMax = 10.0})},
-                   .summary = [](const OpParams& o) {
-                     const Vec3& v = std::get<ScaleOp>(o).factors;
-                     return format("%.2f %.2f %.2f", v.x, v.y, v.z);
-                   }});
+template <>
+OperationSpec row<ScaleOp>() {
+  return {.type = "scale",
+          .title = "Scale",
+          .heading = "Scale",
+          .defaults = ScaleOp{},
+          .params = {param<&ScaleOp::factors>({.key = "factors",
+                                               .label = "Factors",
+                                               .tooltip = "Scale factors along x, y and z",
+                                               .sliderMin = -10.0,
+                                               .sliderMax = 10.0})},
+          .summary = [](const OpParams& o) {
+            const Vec3& v = std::get<ScaleOp>(o).factors;
+            return format("%.2f %.2f %.2f", v.x, v.y, v.z);
+          }};
+}
 
-  // Gröller & Wegenkittl 1994, §2.2 and §2.3: taper and twist share the axis and profile.
-  table.push_back(
-      {.type = "taper",
-       .title = "Taper",
-       .heading = "Taper (Gröller & Wegenkittl 1994, §2.2)",
-       .defaults = TaperOp{},
-       .params = profileParams<TaperOp>(3.0, "Taper strength: the cross-section scales by f(t) = 1 + k·profile(t)"),
-       .summary = profileSummary<TaperOp>});
+// Gröller & Wegenkittl 1994, §2.2 and §2.3: taper and twist share the axis and profile.
+template <>
+OperationSpec row<TaperOp>() {
+  return {.type = "taper",
+          .title = "Taper",
+          .heading = "Taper (Gröller & Wegenkittl 1994, §2.2)",
+          .defaults = TaperOp{},
+          .params = profileParams<TaperOp>(3.0, "Taper strength: the cross-section scales by f(t) = 1 + k·profile(t)"),
+          .summary = profileSummary<TaperOp>};
+}
 
-  table.push_back({.type = "twist",
-                   .title = "Twist",
-                   .heading = "Twist (Gröller & Wegenkittl 1994, §2.3)",
-                   .defaults = TwistOp{},
-                   .params = profileParams<TwistOp>(2.0 * M_PI, "Twist rate in radians per unit along the axis"),
-                   .summary = profileSummary<TwistOp>});
+template <>
+OperationSpec row<TwistOp>() {
+  return {.type = "twist",
+          .title = "Twist",
+          .heading = "Twist (Gröller & Wegenkittl 1994, §2.3)",
+          .defaults = TwistOp{},
+          .params = profileParams<TwistOp>(2.0 * M_PI, "Twist rate in radians per unit along the axis"),
+          .summary = profileSummary<TwistOp>};
+}
 
-  table.push_back(
-      {.type = "bend",
-       .title = "Bend",
-       .heading = "Bend (Gröller & Wegenkittl 1994, §2.4, Barr)",
-       .defaults = BendOp{},
-       .params =
-           {param<&BendOp::axis>(
-                {.key = "axis", .label = "Axis", .tooltip = "The axis that is bent", .choices = &kAxes}),
-            param<&BendOp::toward>(
-                {.key = "toward", .label = "Toward", .tooltip = "The axis the bend curves toward", .choices = &kAxes}),
-            param<&BendOp::k>({.key = "k",
-                               .label = "k",
-                               .tooltip = "Curvature: the bend radius is 1/k; 0 leaves the grid straight",
-                               .sliderMin = -3.0,
-                               .sliderMax = 3.0})},
-       .rules =
-           [](const OpParams& o) {
-             const BendOp& b = std::get<BendOp>(o);
-             if (b.axis == b.toward) throw ModelError("toward", "the bend must go toward an axis other than its own");
-           },
-       .summary =
-           [](const OpParams& o) {
-             const BendOp& b = std::get<BendOp>(o);
-             return format("%s→%s k=%.2f", axisName(b.axis), axisName(b.toward), b.k);
-           }});
+template <>
+OperationSpec row<BendOp>() {
+  return {.type = "bend",
+          .title = "Bend",
+          .heading = "Bend (Gröller & Wegenkittl 1994, §2.4, Barr)",
+          .defaults = BendOp{},
+          .params = {param<&BendOp::axis>(
+                         {.key = "axis", .label = "Axis", .tooltip = "The axis that is bent", .choices = &kAxes}),
+                     param<&BendOp::toward>({.key = "toward",
+                                             .label = "Toward",
+                                             .tooltip = "The axis the bend curves toward",
+                                             .choices = &kAxes}),
+                     param<&BendOp::k>({.key = "k",
+                                        .label = "k",
+                                        .tooltip = "Curvature: the bend radius is 1/k; 0 leaves the grid straight",
+                                        .sliderMin = -3.0,
+                                        .sliderMax = 3.0})},
+          .rules =
+              [](const OpParams& o) {
+                const BendOp& b = std::get<BendOp>(o);
+                if (b.axis == b.toward)
+                  throw ModelError("toward", "the bend must go toward an axis other than its own");
+              },
+          .summary =
+              [](const OpParams& o) {
+                const BendOp& b = std::get<BendOp>(o);
+                return format("%s→%s k=%.2f", axisName(b.axis), axisName(b.toward), b.k);
+              }};
+}
 
-  table.push_back(
-      {.type = "magnet",
-       .title = "Magnet",
-       .heading = "Magnet (Gröller & Wegenkittl 1994, §2.5)",
-       .defaults = MagnetOp{},
-       .params = {param<&MagnetOp::point>({.key = "point",
-                                           .label = "Point",
-                                           .tooltip = "The magnet's position; drag the magenta dot in a grid view",
-                                           .placeable = true}),
-                  param<&MagnetOp::dmax>({.key = "dmax",
-                                          .label = "Distance",
-                                          .tooltip = "Range d_max: nodes farther from the magnet do not move",
-                                          .min = 0.0,
-                                          .sliderMin = 0.0,
-                                          .sliderMax = 3.0}),
-                  param<&MagnetOp::strength>({.key = "strength",
-                                              .label = "Strength",
-                                              .tooltip = "Pull toward the magnet (negative pushes away)",
-                                              .sliderMin = -1.0,
-                                              .sliderMax = 1.0}),
-                  param<&MagnetOp::falloff>({.key = "falloff",
-                                             .label = "Decrease",
-                                             .tooltip = "Falloff exponent p of ((d_max - d)/d_max)^p",
+template <>
+OperationSpec row<MagnetOp>() {
+  return {.type = "magnet",
+          .title = "Magnet",
+          .heading = "Magnet (Gröller & Wegenkittl 1994, §2.5)",
+          .defaults = MagnetOp{},
+          .params = {param<&MagnetOp::point>({.key = "point",
+                                              .label = "Point",
+                                              .tooltip = "The magnet's position; drag the magenta dot in a grid view",
+                                              .placeable = true}),
+                     param<&MagnetOp::dmax>({.key = "dmax",
+                                             .label = "Distance",
+                                             .tooltip = "Range d_max: nodes farther from the magnet do not move",
                                              .min = 0.0,
-                                             .max = 1000.0,
                                              .sliderMin = 0.0,
-                                             .sliderMax = 8.0})},
-       .absolute = true,
-       // A new magnet sits at the selection and does nothing until its strength is raised.
-       .placeAt =
-           [](OpParams& o, const Vec3& anchor) {
-             MagnetOp& m = std::get<MagnetOp>(o);
-             m.point = anchor;
-             m.strength = 0.0;
-           },
-       .summary =
-           [](const OpParams& o) {
-             const MagnetOp& m = std::get<MagnetOp>(o);
-             return format("s=%.2f d=%.2f", m.strength, m.dmax);
-           }});
+                                             .sliderMax = 3.0}),
+                     param<&MagnetOp::strength>({.key = "strength",
+                                                 .label = "Strength",
+                                                 .tooltip = "Pull toward the magnet (negative pushes away)",
+                                                 .sliderMin = -1.0,
+                                                 .sliderMax = 1.0}),
+                     param<&MagnetOp::falloff>({.key = "falloff",
+                                                .label = "Decrease",
+                                                .tooltip = "Falloff exponent p of ((d_max - d)/d_max)^p",
+                                                .min = 0.0,
+                                                .max = 1000.0,
+                                                .sliderMin = 0.0,
+                                                .sliderMax = 8.0})},
+          .absolute = true,
+          // A new magnet sits at the selection and does nothing until its strength is raised.
+          .placeAt =
+              [](OpParams& o, const Vec3& anchor) {
+                MagnetOp& m = std::get<MagnetOp>(o);
+                m.point = anchor;
+                m.strength = 0.0;
+              },
+          .summary =
+              [](const OpParams& o) {
+                const MagnetOp& m = std::get<MagnetOp>(o);
+                return format("s=%.2f d=%.2f", m.strength, m.dmax);
+              }};
+}
 
-  table.push_back(
-      {.type = "morph",
-       .title = "Morph",
-       .heading = "Point morph (Gröller & Wegenkittl 1994, §2.6)",
-       .defaults = MorphOp{},
-       .params = {param<&MorphOp::pairs>(
-                      {.key = "pairs", .label = "Vector", .tooltip = "Start point P_i and end point Q_i (absolute)"}),
-                  param<&MorphOp::strength>(
-                      {.key = "strength",
-                       .label = "Strength",
-                       .tooltip =
-                           "1: every start point lands exactly on its end point (Gröller & Wegenkittl 1994, §2.6)",
-                       .sliderMin = -2.0,
-                       .sliderMax = 2.0})},
-       .absolute = true,
-       .rules =
-           [](const OpParams& o) {
-             std::vector<Vec3> alpha;
-             std::vector<double> radius;
-             solveMorph(std::get<MorphOp>(o), alpha, radius);
-           },
-       .placeAt =
-           [](OpParams& o, const Vec3& anchor) {
-             std::get<MorphOp>(o).pairs = {MorphPair{anchor, anchor + Vec3(0.0, 0.0, 0.25)}};
-           },
-       .summary =
-           [](const OpParams& o) {
-             const std::size_t n = std::get<MorphOp>(o).pairs.size();
-             return format("%zu pair%s", n, n == 1 ? "" : "s");
-           }});
+template <>
+OperationSpec row<MorphOp>() {
+  return {
+      .type = "morph",
+      .title = "Morph",
+      .heading = "Point morph (Gröller & Wegenkittl 1994, §2.6)",
+      .defaults = MorphOp{},
+      .params = {param<&MorphOp::pairs>(
+                     {.key = "pairs", .label = "Vector", .tooltip = "Start point P_i and end point Q_i (absolute)"}),
+                 param<&MorphOp::strength>(
+                     {.key = "strength",
+                      .label = "Strength",
+                      .tooltip =
+                          "1: every start point lands exactly on its end point (Gröller & Wegenkittl 1994, §2.6)",
+                      .sliderMin = -2.0,
+                      .sliderMax = 2.0})},
+      .absolute = true,
+      .rules =
+          [](const OpParams& o) {
+            std::vector<Vec3> alpha;
+            std::vector<double> radius;
+            solveMorph(std::get<MorphOp>(o), alpha, radius);
+          },
+      .placeAt =
+          [](OpParams& o, const Vec3& anchor) {
+            std::get<MorphOp>(o).pairs = {MorphPair{anchor, anchor + Vec3(0.0, 0.0, 0.25)}};
+          },
+      .summary =
+          [](const OpParams& o) {
+            const std::size_t n = std::get<MorphOp>(o).pairs.size();
+            return format("%zu pair%s", n, n == 1 ? "" : "s");
+          }};
+}
 
+template <>
+OperationSpec row<CalculatorOp>() {
   const char* const kExpressionHelp =
       "Variables x y z (node), cx cy cz (center), i j k (indices), v1 v2 v3, t (time); sin cos tan asin acos atan sinh "
       "cosh "
       "tanh log exp sqrt abs min max pow rand(), pi, e";
-  table.push_back(
-      {.type = "calculator",
-       .title = "Calculator",
-       .heading = "Universal calculator (Gröller & Wegenkittl 1994, §4.3)",
-       .defaults = CalculatorOp{},
-       .params = {param<&CalculatorOp::x>({.key = "x", .label = "x =", .tooltip = kExpressionHelp}),
-                  param<&CalculatorOp::y>({.key = "y", .label = "y =", .tooltip = kExpressionHelp}),
-                  param<&CalculatorOp::z>({.key = "z", .label = "z =", .tooltip = kExpressionHelp}),
-                  param<&CalculatorOp::vars>(
-                      {.key = "vars",
-                       .label = "v",
-                       .tooltip = "A user variable of the expressions (Gröller & Wegenkittl 1994, §4.3); its range is "
-                                  "editable on both sides",
-                       .speed = 0.01,
-                       .format = "%.2f"}),
-                  param<&CalculatorOp::seed>(
-                      {.key = "seed", .label = "rand() seed", .tooltip = "The seed of the expressions' rand()"})},
-       .rules =
-           [](const OpParams& o) {
-             if (auto diagnostic = checkCalculator(std::get<CalculatorOp>(o)))
-               throw ModelError(std::string(1, "xyz"[diagnostic->expression]), diagnostic->message);
-           },
-       .summary = [](const OpParams& o) { return std::get<CalculatorOp>(o).x.substr(0, 24); }});
+  return {
+      .type = "calculator",
+      .title = "Calculator",
+      .heading = "Universal calculator (Gröller & Wegenkittl 1994, §4.3)",
+      .defaults = CalculatorOp{},
+      .params = {param<&CalculatorOp::x>({.key = "x", .label = "x =", .tooltip = kExpressionHelp}),
+                 param<&CalculatorOp::y>({.key = "y", .label = "y =", .tooltip = kExpressionHelp}),
+                 param<&CalculatorOp::z>({.key = "z", .label = "z =", .tooltip = kExpressionHelp}),
+                 param<&CalculatorOp::vars>(
+                     {.key = "vars",
+                      .label = "v",
+                      .tooltip = "A user variable of the expressions (Gröller & Wegenkittl 1994, §4.3); its range is "
+                                 "editable on both sides",
+                      .speed = 0.01,
+                      .format = "%.2f"}),
+                 param<&CalculatorOp::seed>(
+                     {.key = "seed", .label = "rand() seed", .tooltip = "The seed of the expressions' rand()"})},
+      .rules =
+          [](const OpParams& o) {
+            if (auto diagnostic = checkCalculator(std::get<CalculatorOp>(o)))
+              throw ModelError(std::string(1, "xyz"[diagnostic->expression]), diagnostic->message);
+          },
+      .summary = [](const OpParams& o) { return std::get<CalculatorOp>(o).x.substr(0, 24); }};
+}
 
-  table.push_back(
-      {.type = "nodes",
-       .title = "Nodes",
-       .heading = "Direct node moves",
-       .defaults = NodesOp{},
-       .params = {param<&NodesOp::moves>(
-           {.key = "moves", .label = "Moves", .tooltip = "Drag selected nodes in a grid view to add moves"})},
-       .addable = false,
-       .summary = [](const OpParams& o) {
-         const std::size_t n = std::get<NodesOp>(o).moves.size();
-         return format("%zu move%s", n, n == 1 ? "" : "s");
-       }});
+template <>
+OperationSpec row<NodesOp>() {
+  return {.type = "nodes",
+          .title = "Nodes",
+          .heading = "Direct node moves",
+          .defaults = NodesOp{},
+          .params = {param<&NodesOp::moves>(
+              {.key = "moves", .label = "Moves", .tooltip = "Drag selected nodes in a grid view to add moves"})},
+          .addable = false,
+          .summary = [](const OpParams& o) {
+            const std::size_t n = std::get<NodesOp>(o).moves.size();
+            return format("%zu move%s", n, n == 1 ? "" : "s");
+          }};
+}
 
-  // Colonna, "Animation of fractal objects", §2 (fractal fields) and §3.2 (wind, periodic loops).
-  table.push_back(
-      {.type = "field",
-       .title = "Field",
-       .heading = "Fractal field (Colonna 1994, §2 and §3.2)",
-       .defaults = FieldOp{},
-       .params =
-           {param<&FieldOp::amplitude>({.key = "amplitude",
-                                        .label = "Amplitude",
-                                        .tooltip = "The largest displacement along x, y and z",
-                                        .sliderMin = 0.0,
-                                        .sliderMax = 1.0}),
-            param<&FieldOp::scale>({.key = "scale",
-                                    .label = "Scale",
-                                    .tooltip = "Cell size of the coarsest mesh: the size of the largest features",
-                                    .min = 1e-6,
-                                    .max = 1e6,
-                                    .sliderMin = 0.01,
-                                    .sliderMax = 4.0}),
-            param<&FieldOp::ratio>({.key = "ratio",
-                                    .label = "Ratio",
-                                    .tooltip = "Each finer mesh's cell size is the previous one's times this (0 to 1)",
+// Colonna, "Animation of fractal objects", §2 (fractal fields) and §3.2 (wind, periodic loops).
+template <>
+OperationSpec row<FieldOp>() {
+  return {
+      .type = "field",
+      .title = "Field",
+      .heading = "Fractal field (Colonna 1994, §2 and §3.2)",
+      .defaults = FieldOp{},
+      .params =
+          {param<&FieldOp::amplitude>({.key = "amplitude",
+                                       .label = "Amplitude",
+                                       .tooltip = "The largest displacement along x, y and z",
+                                       .sliderMin = 0.0,
+                                       .sliderMax = 1.0}),
+           param<&FieldOp::scale>({.key = "scale",
+                                   .label = "Scale",
+                                   .tooltip = "Cell size of the coarsest mesh: the size of the largest features",
+                                   .min = 1e-6,
+                                   .max = 1e6,
+                                   .sliderMin = 0.01,
+                                   .sliderMax = 4.0}),
+           param<&FieldOp::ratio>({.key = "ratio",
+                                   .label = "Ratio",
+                                   .tooltip = "Each finer mesh's cell size is the previous one's times this (0 to 1)",
+                                   .min = 0.0,
+                                   .max = 1.0,
+                                   .sliderMin = 0.05,
+                                   .sliderMax = 0.95}),
+           param<&FieldOp::octaves>({.key = "octaves",
+                                     .label = "Octaves",
+                                     .tooltip = "Number of superposed meshes (1 to 16)",
+                                     .min = 1,
+                                     .max = FractalFieldParams::kMaxOctaves,
+                                     .sliderMin = 1,
+                                     .sliderMax = FractalFieldParams::kMaxOctaves,
+                                     .format = "%.0f"}),
+           param<&FieldOp::gain>(
+               {.key = "gain",
+                .label = "Gain",
+                .tooltip = "Weight of mesh k is proportional to gain^k: small gains give smooth fields",
+                .min = 1e-6,
+                .max = 1e3,
+                .sliderMin = 0.05,
+                .sliderMax = 1.5}),
+           param<&FieldOp::interpolation>({.key = "interpolation",
+                                           .label = "Interpolation",
+                                           .tooltip = "linear: quadrilinear; cubic: Colonna's pseudo n-cubic (smooth)",
+                                           .choices = &kFieldInterpolations}),
+           param<&FieldOp::seed>({.key = "seed",
+                                  .label = "Seed",
+                                  .tooltip = "Random values of the meshes; axes use seed, seed+1, seed+2"}),
+           param<&FieldOp::wind>({.key = "wind",
+                                  .label = "Wind",
+                                  .tooltip = "Drift of the field per unit of time (x, y, z)",
+                                  .sliderMin = -2.0,
+                                  .sliderMax = 2.0}),
+           param<&FieldOp::period>({.key = "period",
+                                    .label = "Period",
+                                    .tooltip =
+                                        "Lx, Ly, Lz, Lt: the field repeats with these periods; 0 = none. A period "
+                                        "in t makes a seamless loop",
                                     .min = 0.0,
-                                    .max = 1.0,
-                                    .sliderMin = 0.05,
-                                    .sliderMax = 0.95}),
-            param<&FieldOp::octaves>({.key = "octaves",
-                                      .label = "Octaves",
-                                      .tooltip = "Number of superposed meshes (1 to 16)",
-                                      .min = 1,
-                                      .max = FractalFieldParams::kMaxOctaves,
-                                      .sliderMin = 1,
-                                      .sliderMax = FractalFieldParams::kMaxOctaves,
-                                      .format = "%.0f"}),
-            param<&FieldOp::gain>(
-                {.key = "gain",
-                 .label = "Gain",
-                 .tooltip = "Weight of mesh k is proportional to gain^k: small gains give smooth fields",
-                 .min = 1e-6,
-                 .max = 1e3,
-                 .sliderMin = 0.05,
-                 .sliderMax = 1.5}),
-            param<&FieldOp::interpolation>({.key = "interpolation",
-                                            .label = "Interpolation",
-                                            .tooltip = "linear: quadrilinear; cubic: Colonna's pseudo n-cubic (smooth)",
-                                            .choices = &kFieldInterpolations}),
-            param<&FieldOp::seed>({.key = "seed",
-                                   .label = "Seed",
-                                   .tooltip = "Random values of the meshes; axes use seed, seed+1, seed+2"}),
-            param<&FieldOp::wind>({.key = "wind",
-                                   .label = "Wind",
-                                   .tooltip = "Drift of the field per unit of time (x, y, z)",
-                                   .sliderMin = -2.0,
-                                   .sliderMax = 2.0}),
-            param<&FieldOp::period>({.key = "period",
-                                     .label = "Period",
-                                     .tooltip =
-                                         "Lx, Ly, Lz, Lt: the field repeats with these periods; 0 = none. A period "
-                                         "in t makes a seamless loop",
-                                     .min = 0.0,
-                                     .sliderMin = 0.0,
-                                     .sliderMax = 10.0})},
-       .absolute = true,
-       .rules =
-           [](const OpParams& o) {
-             const FieldOp& f = std::get<FieldOp>(o);
-             if (!(f.ratio > 0.0 && f.ratio < 1.0))
-               throw ModelError("ratio", "the ratio must lie strictly between 0 and 1, so each mesh is finer");
-           },
-       .summary =
-           [](const OpParams& o) {
-             const FieldOp& f = std::get<FieldOp>(o);
-             return format("%s %d oct s=%.2f", toString(f.interpolation), f.octaves, f.scale);
-           }});
+                                    .sliderMin = 0.0,
+                                    .sliderMax = 10.0})},
+      .absolute = true,
+      .rules =
+          [](const OpParams& o) {
+            const FieldOp& f = std::get<FieldOp>(o);
+            if (!(f.ratio > 0.0 && f.ratio < 1.0))
+              throw ModelError("ratio", "the ratio must lie strictly between 0 and 1, so each mesh is finer");
+          },
+      .summary =
+          [](const OpParams& o) {
+            const FieldOp& f = std::get<FieldOp>(o);
+            return format("%s %d oct s=%.2f", toString(f.interpolation), f.octaves, f.scale);
+          }};
+}
 
-  return table;
+/// The rows of the table, in the order it lists them.
+using TableOrder = std::tuple<TranslateOp, RotateOp, ScaleOp, TaperOp, TwistOp, BendOp, MagnetOp, MorphOp, CalculatorOp,
+                              NodesOp, FieldOp>;
+
+/// Whether row i of `Order` describes alternative i of `Variant`, for every i of both.
+template <class Order, class Variant>
+constexpr bool sameOrder() {
+  if constexpr (std::tuple_size_v<Order> != std::variant_size_v<Variant>) {
+    return false;
+  } else {
+    return []<std::size_t... I>(std::index_sequence<I...>) {
+      return (std::is_same_v<std::tuple_element_t<I, Order>, std::variant_alternative_t<I, Variant>> && ...);
+    }
+    (std::make_index_sequence<std::tuple_size_v<Order>>{});
+  }
+}
+// operationSpec() finds an operation's row by its index in OpParams, so an operation added to the
+// variant and not to the table (or in another place) must not compile.
+static_assert(sameOrder<TableOrder, OpParams>(),
+              "the operation table's rows (TableOrder) must list OpParams' alternatives in variant order");
+
+template <class... Op>
+std::vector<OperationSpec> rows(std::tuple<Op...>) {
+  return {row<Op>()...};
 }
 
 [[noreturn]] void fail(const std::string& path, const std::string& message) { throw ModelError(path, message); }
@@ -401,46 +460,20 @@ void checkParam(const ParamSpec& s, const OpParams& params) {
     case ParamType::Seed:
     case ParamType::Choice:
       break;  // every value of the C++ type is valid
+    case ParamType::Count:
+    case ParamType::Boolean:
+    case ParamType::OptionalNumber:
+      break;  // no operation has these
   }
 }
 
 }  // namespace
 
-double ParamSpec::number(const OpParams& p, int c) const {
-  switch (type) {
-    case ParamType::Number:
-      return value<double>(p);
-    case ParamType::Integer:
-      return value<int>(p);
-    case ParamType::Vector:
-      return static_cast<const double*>(locate(const_cast<OpParams&>(p)))[c];
-    default:
-      return 0.0;
-  }
-}
-
-void ParamSpec::setNumber(OpParams& p, int c, double v) const {
-  switch (type) {
-    case ParamType::Number:
-      value<double>(p) = v;
-      break;
-    case ParamType::Integer:
-      value<int>(p) = int(v);
-      break;
-    case ParamType::Vector:
-      static_cast<double*>(locate(p))[c] = v;
-      break;
-    default:
-      break;
-  }
-}
-
 const std::vector<OperationSpec>& operationTable() {
   static const std::vector<OperationSpec> table = [] {
-    std::vector<OperationSpec> t = buildTable();
+    std::vector<OperationSpec> t = rows(TableOrder{});
     for (std::size_t i = 0; i < t.size(); ++i)
-      if (t[i].defaults.index() != i) throw std::logic_error("the operation table is not in OpParams order");
-    if (t.size() != std::variant_size_v<OpParams>) throw std::logic_error("an operation has no table entry");
+      if (t[i].defaults.index() != i) throw std::logic_error("an operation table row holds another operation");
     return t;
   }();
   return table;

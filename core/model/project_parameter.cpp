@@ -226,7 +226,7 @@ class ParameterResolver {
       if (s.omitDefault && s.isDefault(object)) return Lookup::Missing;  // not written
       position(int(i));
       p_.group_ = group;
-      p_.setting_ = &s;
+      p_.field_ = &s;
       p_.fragile_ |= s.omitDefault;
       switch (s.type) {
         case SettingType::Boolean:
@@ -253,6 +253,11 @@ class ParameterResolver {
           return table.words == SettingWords::IntegerRange
                      ? number(Where::Setting, Reader::IntegerRange, Storage::UInt64, s.min, s.max)
                      : number(Where::Setting, Reader::Seed, Storage::UInt64);
+        case SettingType::Choice:
+        case SettingType::CalculatorVars:
+        case SettingType::MorphPairs:
+        case SettingType::NodeMoves:
+          return text();  // no settings group has these
       }
     }
     return Lookup::Missing;
@@ -340,11 +345,11 @@ class ParameterResolver {
       const ParamSpec& s = params[i];
       if (field != s.key || field == "amplitude") continue;
       position(int(i) + 1);
-      p_.param_ = &s;
+      p_.field_ = &s;
       // Where the parameter sits in FractalFieldParams: the table locates members of an
       // operation, the volume keeps the bare parameters.
       OpParams probe{FieldOp{}};
-      p_.offset_ = std::size_t(static_cast<const char*>(s.locate(probe)) -
+      p_.offset_ = std::size_t(static_cast<const char*>(s.locate(&probe)) -
                                reinterpret_cast<const char*>(&std::get<FieldOp>(probe)));
       return simpleParam(s, Where::DensityParam);
     }
@@ -515,7 +520,7 @@ class ParameterResolver {
       const ParamSpec& s = spec.params[std::size_t(i)];
       if (key != s.key) continue;
       position(i);
-      p_.param_ = &s;
+      p_.field_ = &s;
       return param(s, op.params);
     }
     return Lookup::Missing;
@@ -633,8 +638,7 @@ void* ProjectParameter::locate(Project& project) const {
         group = &*project.volume;
         break;
     }
-    void* field = setting_->locate(group);
-    return setting_->type == SettingType::Vector ? vectorComponent(*static_cast<Vec3*>(field)) : field;
+    return fieldComponent(field_->locate(group));
   }
   switch (where_) {
     case Where::Transition:
@@ -644,8 +648,7 @@ void* ProjectParameter::locate(Project& project) const {
     case Where::DensityStrength:
       return &project.volume->field->strength;
     case Where::DensityParam: {
-      char* field = reinterpret_cast<char*>(&project.volume->field->field) + offset_;
-      return param_->type == ParamType::Vector ? static_cast<void*>(reinterpret_cast<double*>(field) + c_) : field;
+      return fieldComponent(reinterpret_cast<char*>(&project.volume->field->field) + offset_);
     }
     case Where::Time:
       return &project.time;
@@ -697,22 +700,20 @@ void* ProjectParameter::locate(Project& project) const {
   }
   Operation& op = fn.ops[std::size_t(o_)];
   switch (where_) {
-    case Where::OpParam: {
-      void* value = param_->locate(op.params);
-      return param_->type == ParamType::Vector ? static_cast<void*>(static_cast<double*>(value) + c_) : value;
-    }
+    case Where::OpParam:
+      return fieldComponent(field_->locate(&op.params));
     case Where::CalculatorVar: {
-      CalculatorVar& var = param_->value<std::array<CalculatorVar, 3>>(op.params)[std::size_t(a_)];
+      CalculatorVar& var = field_->value<std::array<CalculatorVar, 3>>(op.params)[std::size_t(a_)];
       return b_ == 0 ? &var.value : b_ == 1 ? &var.min : &var.max;
     }
     case Where::MorphPoint: {
-      MorphPair& pair = param_->value<std::vector<MorphPair>>(op.params)[std::size_t(a_)];
+      MorphPair& pair = field_->value<std::vector<MorphPair>>(op.params)[std::size_t(a_)];
       return vectorComponent(b_ == 0 ? pair.from : pair.to);
     }
     case Where::NodeMoveIndex:
-      return &param_->value<std::vector<NodeMove>>(op.params)[std::size_t(a_)].index[std::size_t(c_)];
+      return &field_->value<std::vector<NodeMove>>(op.params)[std::size_t(a_)].index[std::size_t(c_)];
     case Where::NodeMoveShift:
-      return vectorComponent(param_->value<std::vector<NodeMove>>(op.params)[std::size_t(a_)].displacement);
+      return vectorComponent(field_->value<std::vector<NodeMove>>(op.params)[std::size_t(a_)].displacement);
     case Where::OpCenter:
       return vectorComponent(op.center.point);
     case Where::SelectionBound: {
@@ -722,6 +723,10 @@ void* ProjectParameter::locate(Project& project) const {
     default:
       return nullptr;
   }
+}
+
+void* ProjectParameter::fieldComponent(void* field) const {
+  return field_->type == FieldType::Vector ? static_cast<double*>(field) + c_ : field;
 }
 
 double ProjectParameter::get(const Project& project) const {
@@ -866,8 +871,8 @@ std::string ProjectParameter::path() const {
         group = "volume";
         break;
     }
-    const std::string field = settingPath(group, setting_->key);
-    return setting_->type == SettingType::Vector ? item(field, c_) : field;
+    const std::string field = settingPath(group, field_->key);
+    return field_->type == SettingType::Vector ? item(field, c_) : field;
   }
   switch (where_) {
     case Where::Transition:
@@ -877,8 +882,8 @@ std::string ProjectParameter::path() const {
     case Where::DensityStrength:
       return "volume.field.strength";
     case Where::DensityParam: {
-      const std::string field = std::string("volume.field.") + param_->key;
-      return param_->type == ParamType::Vector ? item(field, c_) : field;
+      const std::string field = std::string("volume.field.") + field_->key;
+      return field_->type == ParamType::Vector ? item(field, c_) : field;
     }
     case Where::Time:
       return "time";
@@ -929,17 +934,17 @@ std::string ProjectParameter::path() const {
   const std::string op = item(fn + ".ops", o_);
   switch (where_) {
     case Where::OpParam: {
-      const std::string p = op + "." + param_->key;
-      return param_->type == ParamType::Vector ? item(p, c_) : p;
+      const std::string p = op + "." + field_->key;
+      return field_->type == ParamType::Vector ? item(p, c_) : p;
     }
     case Where::CalculatorVar:
-      return op + "." + param_->key + ".v" + std::to_string(a_ + 1) + "." + kCalculatorFields[b_];
+      return op + "." + field_->key + ".v" + std::to_string(a_ + 1) + "." + kCalculatorFields[b_];
     case Where::MorphPoint:
-      return item(item(item(op + "." + param_->key, a_), b_), c_);
+      return item(item(item(op + "." + field_->key, a_), b_), c_);
     case Where::NodeMoveIndex:
-      return item(item(op + "." + param_->key, a_), c_);
+      return item(item(op + "." + field_->key, a_), c_);
     case Where::NodeMoveShift:
-      return item(item(item(op + "." + param_->key, a_), 3), c_);
+      return item(item(item(op + "." + field_->key, a_), 3), c_);
     case Where::OpCenter:
       return item(op + ".center", c_);
     case Where::SelectionBound:

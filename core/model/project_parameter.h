@@ -17,6 +17,7 @@
 #include <string>
 
 #include "anim/track_path.h"
+#include "model/field_schema.h"
 #include "model/operation_table.h"
 #include "model/project.h"
 #include "model/settings_table.h"
@@ -106,6 +107,8 @@ class ProjectParameter {
 
   /// Where the number lives in `project` (null for Version).
   void* locate(Project& project) const;
+  /// Component c_ of field_ at `field` when it is a vector, else `field`.
+  void* fieldComponent(void* field) const;
   void check(double value) const;
 
   Where where_ = Where::Version;
@@ -116,8 +119,9 @@ class ProjectParameter {
   int f_ = 0;  // function index; -1: the final function
   int o_ = 0, a_ = 0, b_ = 0, c_ = 0;
   double lo_ = 0.0, hi_ = 0.0;  // the reader's range
-  const SettingSpec* setting_ = nullptr;
-  const ParamSpec* param_ = nullptr;
+  /// The field's description (model/field_schema.h): a setting (Setting) or an operation's
+  /// parameter (OpParam and the rows below it, DensityParam).
+  const FieldSchema* field_ = nullptr;
   std::size_t offset_ = 0;  // DensityParam: the field's offset in FractalFieldParams
   /// Positions along the file's reading order, level by level (the root's member, the
   /// function, the field, ...), so sorting by it sorts numbers as reading meets them.

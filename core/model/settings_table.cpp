@@ -73,40 +73,6 @@ std::string settingPath(const std::string& path, std::string_view key) {
   return path.empty() ? std::string(key) : path + "." + std::string(key);
 }
 
-double SettingSpec::number(const void* group, double fallback) const {
-  switch (type) {
-    case SettingType::Number:
-      return value<double>(group);
-    case SettingType::Integer:
-      return double(value<int>(group));
-    case SettingType::Count:
-      return double(value<std::int64_t>(group));
-    case SettingType::OptionalNumber:
-      return value<std::optional<double>>(group).value_or(fallback);
-    default:
-      return fallback;
-  }
-}
-
-void SettingSpec::setNumber(void* group, double v) const {
-  switch (type) {
-    case SettingType::Number:
-      value<double>(group) = v;
-      break;
-    case SettingType::Integer:
-      value<int>(group) = int(std::lround(v));
-      break;
-    case SettingType::Count:
-      value<std::int64_t>(group) = std::llround(v);
-      break;
-    case SettingType::OptionalNumber:
-      value<std::optional<double>>(group) = v;
-      break;
-    default:
-      throw std::logic_error(std::string("setting ") + key + " is not a number");
-  }
-}
-
 const SettingSpec& SettingTable::field(std::string_view key) const {
   for (const SettingSpec& s : fields)
     if (key == s.key) return s;
@@ -140,6 +106,11 @@ void validateSettingFields(const SettingTable& table, const void* group, const s
       case SettingType::Seed:
       case SettingType::Boolean:
         break;
+      case SettingType::Choice:
+      case SettingType::CalculatorVars:
+      case SettingType::MorphPairs:
+      case SettingType::NodeMoves:
+        throw std::logic_error(std::string("settings field ") + s.key + " has a type settings cannot hold");
     }
     if (s.rule) s.rule(group, p);
   }
