@@ -26,7 +26,7 @@ ImU32 colorOf(float r, float g, float b) { return ImGui::ColorConvertFloat4ToU32
 void PaletteEditor::draw(ModellerState& state, EditQueue& edits, const PaletteCatalog& catalog) {
   if (!open_) return;
   const float em = ImGui::GetFontSize();
-  ImGui::SetNextWindowSize(ImVec2(em * 34.0f, em * 22.0f), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(em * 38.0f, em * 19.0f), ImGuiCond_FirstUseEver);
   if (!ImGui::Begin("Palette editor", &open_)) {
     ImGui::End();
     return;
@@ -94,9 +94,10 @@ void PaletteEditor::drawGradient(ModellerState& state, EditQueue& edits, const s
   // The 256 entries as the display uses them, with the keys as handles below.
   const float em = ImGui::GetFontSize();
   const Palette palette = paletteFromKeys(keys);
-  const float width = std::max(em * 10.0f, ImGui::GetContentRegionAvail().x);
-  const ImVec2 origin = ImGui::GetCursorScreenPos();
   const float barHeight = em * 2.2f, handle = em * 0.55f;
+  // Inset by a handle's half width so that the keys at 0 and 1 stay inside the window.
+  const float width = std::max(em * 10.0f, ImGui::GetContentRegionAvail().x - 2.0f * handle);
+  const ImVec2 origin(ImGui::GetCursorScreenPos().x + handle, ImGui::GetCursorScreenPos().y);
   ImDrawList* draw = ImGui::GetWindowDrawList();
   for (int i = 0; i < Palette::kSize; ++i) {
     const Rgb& c = palette.colors[std::size_t(i)];
@@ -105,6 +106,7 @@ void PaletteEditor::drawGradient(ModellerState& state, EditQueue& edits, const s
   }
   draw->AddRect(origin, ImVec2(origin.x + width, origin.y + barHeight), IM_COL32(0, 0, 0, 200));
   // A double click on the bar adds a key there, with the colour the gradient has at that place.
+  ImGui::SetCursorScreenPos(origin);
   ImGui::InvisibleButton("##bar", ImVec2(width, barHeight));
   state.probe.item("palette_editor.bar");
   if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) &&
@@ -160,7 +162,6 @@ void PaletteEditor::drawKey(ModellerState& state, EditQueue& edits, const std::v
   coloured[i].r = color[0], coloured[i].g = color[1], coloured[i].b = color[2];
   gestureItem(edits, "Recolour palette key", recoloured, setKeys(coloured));
   state.probe.item("palette_editor.colour");
-  ImGui::SameLine();
   ImGui::BeginDisabled(keys.size() <= 2);
   if (ImGui::Button("Delete key")) {
     std::vector<PaletteKey> fewer = keys;

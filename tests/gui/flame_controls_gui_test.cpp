@@ -66,7 +66,10 @@ TEST(FlameControlsGui, PaletteEditorEditsAreUndoableAndSaveBesideTheProject) {
   clickRect(*del);
   probe = app.waitFor([](const nlohmann::json& j) { return j["undo"] == "Delete palette key"; });
   EXPECT_EQ(probe["undo"], "Delete palette key");
-  if (const char* shot = std::getenv("GRIDIFS_GUI_SCREENSHOT_EDITOR")) run(std::string("import -window root '") + shot + "'");
+  if (const char* shot = std::getenv("GRIDIFS_GUI_SCREENSHOT_EDITOR")) {
+    std::this_thread::sleep_for(1500ms);  // the restarted preview develops with the new palette
+    run(std::string("import -window root '") + shot + "'");
+  }
   std::optional<Rect> save = app.waitForStableRect("palette_editor.save");
   ASSERT_TRUE(save);
   clickRect(*save);
