@@ -8,25 +8,25 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
-#include <optional>
 #include <nlohmann/json.hpp>
+#include <optional>
 
-#include "app/cli.h"
 #include "app/chaos_verb_options.h"
+#include "app/cli.h"
 #include "app/progress_bar.h"
 #include "app/render_device_option.h"
-#include "app/render_setup.h"
-#include "app/render_sequence.h"
-#include "app/shaded_image_output.h"
 #include "app/render_parts.h"
-#include "io/project_io.h"
+#include "app/render_sequence.h"
+#include "app/render_setup.h"
+#include "app/shaded_image_output.h"
 #include "base/atomic_file.h"
 #include "base/color_space.h"
+#include "flame/palette_gradient.h"
+#include "io/project_io.h"
+#include "model/settings_tables.h"
 #include "render/flame_render.h"
 #include "render/image_file.h"
 #include "render/motion_blur.h"
-#include "flame/palette_gradient.h"
-#include "model/settings_tables.h"
 #include "render/shaded_image.h"
 
 namespace gridifs::cli {
@@ -273,8 +273,8 @@ int runFlameRender(const std::string& file, const std::string& out, const std::v
   try {
     // Merged parts hold the palette's colour sums already; the palette file may not be here.
     if (!source.merged)
-      palette = std::make_shared<const Palette>(
-          resolveFlamePalette(settings, std::filesystem::path(file).parent_path()));
+      palette =
+          std::make_shared<const Palette>(resolveFlamePalette(settings, std::filesystem::path(file).parent_path()));
   } catch (const PaletteError& e) {
     throw CliError(kBadInput, file + ": " + e.what());
   }
@@ -358,9 +358,9 @@ int runShadedRender(const std::string& file, const std::string& out, const std::
 
 /// One image: the project at overrides.time (or its own time), or, with `blur` > 1, at `blur` times
 /// spread evenly over `shutter` seconds centred on that time, merged.
-int renderFrame(const Project& loaded, const std::string& file, const std::string& out, const RenderOverrides& overrides,
-                bool quiet, const FlameOptions& flameOptions, int blur, double shutter, FrameProgress progress,
-                bool warn, FrameSource source = {}) {
+int renderFrame(const Project& loaded, const std::string& file, const std::string& out,
+                const RenderOverrides& overrides, bool quiet, const FlameOptions& flameOptions, int blur,
+                double shutter, FrameProgress progress, bool warn, FrameSource source = {}) {
   const std::string device = checkedDevice(overrides.device);
   FlameOptions flame = flameOptions;
   flame.motionFade = flame.motionFadeOption.value_or(loaded.animation ? loaded.animation->motion_fade : 0.0);
@@ -442,8 +442,9 @@ int renderSequence(const std::string& file, const std::string& pattern, const Re
     const FrameProgress progress{&bar, (f - frames.first) * samplesPerFrame, frames.count() * samplesPerFrame};
     FrameSource source;
     if (part) source.part = FrameSource::PartTarget{*part, f, ""};
-    renderFrame(loaded, file, frameFileName(pattern, f), at, quiet, flame, sequence.motionBlur.value_or(animation.motion_blur),
-                animation.shutter / animation.fps, progress, f == frames.first, source);
+    renderFrame(loaded, file, frameFileName(pattern, f), at, quiet, flame,
+                sequence.motionBlur.value_or(animation.motion_blur), animation.shutter / animation.fps, progress,
+                f == frames.first, source);
   }
   bar.finish();
   if (sequence.video) {

@@ -77,9 +77,7 @@ void renderAnimationFrame(const Project& animated, long frame, const std::filesy
   const double shutter = animation.shutter / animation.fps;
   TimeSampleSum sum;
   for (int i = 0; i < blur; ++i) {
-    auto report = [&](const RenderStats& s) {
-      return !progress || progress(std::min(1.0, (i + s.progress()) / blur));
-    };
+    auto report = [&](const RenderStats& s) { return !progress || progress(std::min(1.0, (i + s.progress()) / blur)); };
     if (blur == 1) {
       addTimeSample(sum, renderToCompletion(render.ifs, render.job, render.display, report), 1.0);
       break;

@@ -67,11 +67,12 @@ void qualityControl(ModellerState& state, EditQueue& edits) {
   const RenderSettings& r = state.document.project().render;
   bool useQuality = r.quality.has_value();
   if (ImGui::Checkbox("Quality", &useQuality)) {
-    const double perPixel =
-        std::clamp(double(r.samples) / (double(r.width) * double(r.height)), 1.0, 1e6);
+    const double perPixel = std::clamp(double(r.samples) / (double(r.width) * double(r.height)), 1.0, 1e6);
     edits.commit(useQuality ? "Quality on" : "Quality off", [useQuality, perPixel](Project& p) {
-      if (useQuality) p.render.quality = std::round(perPixel);
-      else p.render.quality.reset();
+      if (useQuality)
+        p.render.quality = std::round(perPixel);
+      else
+        p.render.quality.reset();
     });
   }
   state.probe.item("flame.quality");

@@ -4,8 +4,8 @@
 #include <chrono>
 #include <memory>
 
-#include "render/flame_render.h"
 #include "flame/palette.h"
+#include "render/flame_render.h"
 
 namespace gridifs::ui {
 

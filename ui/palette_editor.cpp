@@ -35,8 +35,9 @@ void PaletteEditor::draw(ModellerState& state, EditQueue& edits, const PaletteCa
   const std::vector<PaletteKey> keys = parsePaletteKeys(f.palette_keys).value_or(std::vector<PaletteKey>{});
   drawStart(state, edits, catalog, keys);
   if (keys.empty()) {
-    ImGui::TextWrapped("Start a gradient from the current palette or from one of the list; its keys then replace "
-                       "the palette until you save or discard them.");
+    ImGui::TextWrapped(
+        "Start a gradient from the current palette or from one of the list; its keys then replace "
+        "the palette until you save or discard them.");
   } else {
     drawGradient(state, edits, keys);
     drawKey(state, edits, keys);
@@ -85,7 +86,8 @@ void PaletteEditor::drawStart(ModellerState& state, EditQueue& edits, const Pale
   state.probe.item("palette_editor.from_palette");
   if (!keys.empty()) {
     ImGui::SameLine();
-    if (ImGui::Button("Discard")) edits.commit("Discard gradient", [](Project& p) { p.render.flame.palette_keys.clear(); });
+    if (ImGui::Button("Discard"))
+      edits.commit("Discard gradient", [](Project& p) { p.render.flame.palette_keys.clear(); });
     contextHelp(state, "Go back to the palette the gradient replaced");
   }
 }
@@ -101,7 +103,8 @@ void PaletteEditor::drawGradient(ModellerState& state, EditQueue& edits, const s
   ImDrawList* draw = ImGui::GetWindowDrawList();
   for (int i = 0; i < Palette::kSize; ++i) {
     const Rgb& c = palette.colors[std::size_t(i)];
-    const float x0 = origin.x + width * float(i) / Palette::kSize, x1 = origin.x + width * float(i + 1) / Palette::kSize;
+    const float x0 = origin.x + width * float(i) / Palette::kSize,
+                x1 = origin.x + width * float(i + 1) / Palette::kSize;
     draw->AddRectFilled(ImVec2(x0, origin.y), ImVec2(x1 + 1.0f, origin.y + barHeight), colorOf(c.r, c.g, c.b));
   }
   draw->AddRect(origin, ImVec2(origin.x + width, origin.y + barHeight), IM_COL32(0, 0, 0, 200));
@@ -109,8 +112,7 @@ void PaletteEditor::drawGradient(ModellerState& state, EditQueue& edits, const s
   ImGui::SetCursorScreenPos(origin);
   ImGui::InvisibleButton("##bar", ImVec2(width, barHeight));
   state.probe.item("palette_editor.bar");
-  if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) &&
-      keys.size() < kMaxPaletteKeys) {
+  if (ImGui::IsItemHovered() && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left) && keys.size() < kMaxPaletteKeys) {
     const double at = std::clamp(double((ImGui::GetIO().MousePos.x - origin.x) / width), 0.0, 1.0);
     const Rgb c = palette.lookup(std::min(at, 0.9999));
     std::vector<PaletteKey> added = keys;
@@ -129,8 +131,7 @@ void PaletteEditor::drawGradient(ModellerState& state, EditQueue& edits, const s
     // Dragging a key is one gesture: one undo step from press to release.
     const bool dragging = ImGui::IsItemActive() && ImGui::GetIO().MouseDelta.x != 0.0f;
     std::vector<PaletteKey> moved = keys;
-    if (dragging)
-      moved[i].position = std::clamp(double((ImGui::GetIO().MousePos.x - origin.x) / width), 0.0, 1.0);
+    if (dragging) moved[i].position = std::clamp(double((ImGui::GetIO().MousePos.x - origin.x) / width), 0.0, 1.0);
     gestureItem(edits, "Move palette key", dragging, setKeys(moved));
     const bool chosen = int(i) == selected_;
     const ImVec2 tip(x, rowY), left(x - handle, rowY + 2.0f * handle), right(x + handle, rowY + 2.0f * handle);
@@ -177,7 +178,8 @@ void PaletteEditor::drawKey(ModellerState& state, EditQueue& edits, const std::v
   if (ImGui::Button("Add key")) {
     // In the middle of the widest gap, with the colour the gradient has there.
     std::vector<PaletteKey> sorted = keys;
-    std::sort(sorted.begin(), sorted.end(), [](const PaletteKey& a, const PaletteKey& b) { return a.position < b.position; });
+    std::sort(sorted.begin(), sorted.end(),
+              [](const PaletteKey& a, const PaletteKey& b) { return a.position < b.position; });
     double at = 0.5, widest = -1.0;
     for (std::size_t k = 0; k + 1 < sorted.size(); ++k)
       if (sorted[k + 1].position - sorted[k].position > widest)

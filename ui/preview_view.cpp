@@ -36,8 +36,12 @@ void PreviewView::build(ModellerState& state, EditQueue& edits, float framebuffe
   for (int i = 0; i < 5; ++i)
     if (budgets[i] == project.render.samples) current = i;
   char preview[32];
-  if (project.render.quality) current = -1, std::snprintf(preview, sizeof preview, "%.4g / pixel", *project.render.quality);
-  else std::snprintf(preview, sizeof preview, "%.3gM points", double(project.render.samples) / 1e6);
+  if (project.render.quality) {
+    current = -1;  // a quality (samples per pixel) decides, not one of the budgets
+    std::snprintf(preview, sizeof preview, "%.4g / pixel", *project.render.quality);
+  } else {
+    std::snprintf(preview, sizeof preview, "%.3gM points", double(project.render.samples) / 1e6);
+  }
   ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.5f);
   if (ImGui::BeginCombo("##budget", current >= 0 ? budgetNames[current] : preview)) {
     for (int i = 0; i < 5; ++i)

@@ -50,10 +50,14 @@ void hsvToRgb(const double hsv[3], double rgb[3]) {
 }  // namespace
 
 bool parseDensityDisplay(const std::string& text, DensityDisplay& out) {
-  if (text == "log") out = DensityDisplay::Log;
-  else if (text == "linear") out = DensityDisplay::Linear;
-  else if (text == "binary") out = DensityDisplay::Binary;
-  else return false;
+  if (text == "log")
+    out = DensityDisplay::Log;
+  else if (text == "linear")
+    out = DensityDisplay::Linear;
+  else if (text == "binary")
+    out = DensityDisplay::Binary;
+  else
+    return false;
   return true;
 }
 
@@ -162,7 +166,8 @@ FlameImage developFlame(const FlameHistogram& histogram, const FlameSettings& se
   const int width = histogram.width / ss, height = histogram.height / ss;
   double maxHits = 0.0;
   if (settings.density_display == "linear")
-    for (std::size_t i = 3; i < histogram.buckets.size(); i += 4) maxHits = std::max(maxHits, double(histogram.buckets[i]));
+    for (std::size_t i = 3; i < histogram.buckets.size(); i += 4)
+      maxHits = std::max(maxHits, double(histogram.buckets[i]));
   const LogDensityScale scale = densityScale(settings, samples, pixelsPerUnit, maxHits);
   std::unique_ptr<DensityEstimator> estimator;
   if (settings.estimator_radius > 0.0)

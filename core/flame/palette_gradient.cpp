@@ -5,8 +5,8 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
-#include <sstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "base/atomic_file.h"
 
@@ -83,7 +83,8 @@ std::vector<PaletteKey> parseGradientKeys(const std::string& text) {
       throw PaletteError(path + ": expected {\"position\": number, \"color\": [r, g, b]}.");
     PaletteKey key;
     key.position = k["position"].get<double>();
-    if (!(key.position >= 0.0 && key.position <= 1.0)) throw PaletteError(path + ": the position must be between 0 and 1.");
+    if (!(key.position >= 0.0 && key.position <= 1.0))
+      throw PaletteError(path + ": the position must be between 0 and 1.");
     float* channel[3] = {&key.r, &key.g, &key.b};
     for (int c = 0; c < 3; ++c) {
       const auto& v = k["color"][std::size_t(c)];
@@ -105,10 +106,12 @@ bool isPaletteFileName(const std::string& name) {
 std::string savePaletteGradient(const std::filesystem::path& folder, const std::string& name,
                                 const std::vector<PaletteKey>& keys) {
   if (!isPaletteFileName(name))
-    throw PaletteError("a palette name must be 1 to 64 letters, digits, '-' or '_', not \"" + name.substr(0, 64) + "\".");
+    throw PaletteError("a palette name must be 1 to 64 letters, digits, '-' or '_', not \"" + name.substr(0, 64) +
+                       "\".");
   if (keys.size() < 2 || keys.size() > kMaxPaletteKeys) throw PaletteError("a gradient needs 2 to 64 keys.");
   const std::string file = name + ".palette.json";
-  writeFileAtomically((folder.empty() ? std::filesystem::path(".") : folder) / file, serializeGradientPalette(name, keys));
+  writeFileAtomically((folder.empty() ? std::filesystem::path(".") : folder) / file,
+                      serializeGradientPalette(name, keys));
   return "file:" + file;
 }
 

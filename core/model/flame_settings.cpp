@@ -74,8 +74,8 @@ std::string formatPaletteKeys(const std::vector<PaletteKey>& keys) {
   char buffer[48];
   for (const PaletteKey& k : keys) {
     auto byte = [](float v) { return int(std::lround(std::clamp(v, 0.f, 1.f) * 255.f)); };
-    std::snprintf(buffer, sizeof buffer, "%s%.4g:#%02x%02x%02x", out.empty() ? "" : " ", std::clamp(k.position, 0.0, 1.0),
-                  byte(k.r), byte(k.g), byte(k.b));
+    std::snprintf(buffer, sizeof buffer, "%s%.4g:#%02x%02x%02x", out.empty() ? "" : " ",
+                  std::clamp(k.position, 0.0, 1.0), byte(k.r), byte(k.g), byte(k.b));
     out += buffer;
   }
   return out;

@@ -39,7 +39,8 @@ TEST(FlameControlsCli, QualityIsSamplesPerPixelFromTheOptionOrTheProject) {
   ASSERT_EQ(runGridifs(render(kTwisted, s, "--mode flame --samples 138240")).exitCode, 0);  // 20 × 96 × 72
   EXPECT_EQ(slurp(q), slurp(s));
   // The project's quality follows the size asked for on the command line.
-  const std::string withQuality = variant(kTwisted, dir.path, "quality.gridifs", [](Project& x) { x.render.quality = 20; });
+  const std::string withQuality =
+      variant(kTwisted, dir.path, "quality.gridifs", [](Project& x) { x.render.quality = 20; });
   ASSERT_EQ(runGridifs(render(withQuality, p, "--mode flame")).exitCode, 0);
   EXPECT_EQ(slurp(p), slurp(s));
   const CommandResult both = runGridifs(render(kTwisted, dir.path / "x.png", "--quality 20 --samples 1000"));
@@ -69,7 +70,8 @@ TEST(FlameControlsCli, HueDisplayFilterAndEstimatorOptionsChangeThePicture) {
   });
   const auto a = dir.path / "a.png", b = dir.path / "b.png";
   ASSERT_EQ(runGridifs(render(hued, a, "--mode flame --samples 300000")).exitCode, 0);
-  ASSERT_EQ(runGridifs(render(kTwisted, b, "--mode flame --samples 300000 --hue 0.5 --density-display linear")).exitCode, 0);
+  ASSERT_EQ(
+      runGridifs(render(kTwisted, b, "--mode flame --samples 300000 --hue 0.5 --density-display linear")).exitCode, 0);
   EXPECT_EQ(slurp(a), slurp(b));
 }
 

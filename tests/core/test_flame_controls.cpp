@@ -204,9 +204,9 @@ TEST(DirectionalMotionBlur, EarlierSamplesAreDimmerAndStillShapesUnchanged) {
   addTimeSample(sum, a, w[0]);
   addTimeSample(sum, b, w[1]);
   const RenderImage image = finishTimeSamples(std::move(sum));
-  EXPECT_EQ(image.density[0], 20u);  // hits add up, unweighted
-  EXPECT_NEAR(image.colorSums[0], 20.f, 1e-5);  // still: the weights average 1
-  EXPECT_NEAR(image.colorSums[3], 6.f, 1e-5);   // the palette coordinate is not a colour
+  EXPECT_EQ(image.density[0], 20u);                   // hits add up, unweighted
+  EXPECT_NEAR(image.colorSums[0], 20.f, 1e-5);        // still: the weights average 1
+  EXPECT_NEAR(image.colorSums[3], 6.f, 1e-5);         // the palette coordinate is not a colour
   EXPECT_NEAR(image.colorSums[4], 4.f * 1.6f, 1e-5);  // the later sample is drawn brighter
   EXPECT_EQ(image.rgba[0], 100);
   EXPECT_EQ(image.hitPixels, 1);
@@ -254,7 +254,8 @@ TEST(FlameControlsJson, BadValuesNameTheirPath) {
     }
     return std::string("loaded");
   };
-  EXPECT_NE(error(R"({"flame": {"density_display": "cubic"}})").find("render.flame.density_display"), std::string::npos);
+  EXPECT_NE(error(R"({"flame": {"density_display": "cubic"}})").find("render.flame.density_display"),
+            std::string::npos);
   EXPECT_NE(error(R"({"flame": {"hue": 2}})").find("render.flame.hue"), std::string::npos);
   EXPECT_NE(error(R"({"flame": {"palette_keys": "0:#zz0000 1:#ffffff"}})").find("render.flame.palette_keys"),
             std::string::npos);
