@@ -10,7 +10,7 @@ namespace gridifs::cli {
 /// The sequence options of `render`.
 struct SequenceOptions {
   std::optional<std::string> frames;  // "A:B"
-  int motionBlur = 1;                 // time samples per frame
+  std::optional<int> motionBlur;      // time samples per frame (default: the project's animation.motion_blur)
   std::optional<std::string> video;   // OUT.mp4, assembled with ffmpeg
 };
 

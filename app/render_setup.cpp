@@ -58,6 +58,13 @@ RenderSetup prepareRenderOf(const Project& loaded, const std::filesystem::path& 
   // (app/verb_render.cpp), which knows --palette and merged parts.
   RenderSetup setup;
   setup.project = projectForVerbAt(loaded, file, overrides.time);
+  // Precedence: --samples, then --quality, then the project's quality, then its samples.
+  if (overrides.quality) {
+    if (overrides.samples) throw CliError(kBadInput, "--samples and --quality exclude each other: give one of them");
+    if (!(*overrides.quality >= 1e-3 && *overrides.quality <= 1e6))
+      throw CliError(kBadInput, "--quality must be between 0.001 and 1000000 samples per pixel");
+    setup.project.render.quality = *overrides.quality;
+  }
   RenderJobOptions options;
   options.threads = overrides.threads.value_or(0);
   options.width = overrides.width;

@@ -16,6 +16,7 @@ namespace gridifs::cli {
 struct RenderOverrides {
   std::optional<int> width, height, threads;
   std::optional<std::string> samples;  // parsed by parseSamples (accepts 2e7)
+  std::optional<double> quality;       // --quality: samples per output pixel (render only)
   std::optional<std::uint64_t> seed;
   std::optional<std::string> device;  // --device auto|gpu|cpu (app/render_device_option.h)
   std::optional<double> time;         // --time: the project at this time (default: its stored time)

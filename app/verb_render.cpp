@@ -8,22 +8,25 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
-#include <optional>
 #include <nlohmann/json.hpp>
+#include <optional>
 
-#include "app/cli.h"
 #include "app/chaos_verb_options.h"
+#include "app/cli.h"
 #include "app/progress_bar.h"
 #include "app/render_device_option.h"
-#include "app/render_setup.h"
-#include "app/render_sequence.h"
-#include "app/shaded_image_output.h"
 #include "app/render_parts.h"
-#include "io/project_io.h"
+#include "app/render_sequence.h"
+#include "app/render_setup.h"
+#include "app/shaded_image_output.h"
 #include "base/atomic_file.h"
 #include "base/color_space.h"
+#include "flame/palette_gradient.h"
+#include "io/project_io.h"
+#include "model/settings_tables.h"
 #include "render/flame_render.h"
 #include "render/image_file.h"
+#include "render/motion_blur.h"
 #include "render/shaded_image.h"
 
 namespace gridifs::cli {
@@ -99,26 +102,6 @@ struct FrameProgress {
   std::int64_t total = 0;      // samples of every frame of the sequence
 };
 
-/// Adds `part` (one time sample of a motion-blurred frame) into `sum`: hit counts and colour sums
-/// add up, as in Draves & Reckase's motion blur (one histogram over all time samples); the
-/// z-buffer colours are averaged later (divide by the count), the nearest depth kept.
-void accumulate(RenderImage& sum, std::vector<std::uint32_t>& rgbaSum, const RenderImage& part) {
-  if (rgbaSum.empty()) {
-    sum = part;
-    rgbaSum.assign(part.rgba.begin(), part.rgba.end());
-    return;
-  }
-  for (std::size_t i = 0; i < part.rgba.size(); ++i) rgbaSum[i] += part.rgba[i];
-  for (std::size_t i = 0; i < part.depth.size(); ++i) sum.depth[i] = std::min(sum.depth[i], part.depth[i]);
-  for (std::size_t i = 0; i < part.density.size(); ++i)
-    sum.density[i] = std::uint32_t(std::min<std::uint64_t>(std::uint64_t(sum.density[i]) + part.density[i], UINT32_MAX));
-  for (std::size_t i = 0; i < part.colorSums.size(); ++i) sum.colorSums[i] += part.colorSums[i];
-  sum.stats.samples += part.stats.samples;
-  sum.stats.badSamples += part.stats.badSamples;
-  sum.stats.plotted += part.stats.plotted;
-  sum.stats.budget += part.stats.budget;
-}
-
 /// The project as a part stores it: as rendered at the frame's time, with the job's size, samples
 /// and seed in its render settings, so that `merge` rebuilds the same job from it alone.
 std::string partProject(const RenderSetup& setup) {
@@ -126,6 +109,7 @@ std::string partProject(const RenderSetup& setup) {
   p.render.width = setup.job.width;
   p.render.height = setup.job.height;
   p.render.samples = setup.job.samples;
+  p.render.quality.reset();  // the samples above are the count rendered
   p.render.seed = setup.job.seed;
   return serializeProject(p);
 }
@@ -139,7 +123,7 @@ std::string partProject(const RenderSetup& setup) {
 std::optional<RenderImage> renderWithProgress(const std::vector<RenderSetup>& setups, const RenderJob& job,
                                               const std::string& file, const std::string& out, bool quiet,
                                               const std::string& device, const DisplaySettings* displayOverride,
-                                              FrameProgress progress, const FrameSource& source) {
+                                              FrameProgress progress, const FrameSource& source, double motionFade) {
   ProgressBar ownBar(source.merged ? "merge" : "render", quiet || source.merged);
   ProgressBar& bar = progress.bar ? *progress.bar : ownBar;
   if (!progress.bar) {
@@ -155,8 +139,6 @@ std::optional<RenderImage> renderWithProgress(const std::vector<RenderSetup>& se
     }
   }
   InterruptGuard interrupt;
-  RenderImage image;
-  std::vector<std::uint32_t> rgbaSum;
   const std::int64_t count = std::int64_t(setups.size());
   std::int64_t done = 0;
   std::vector<Accumulation> accumulations;
@@ -219,26 +201,17 @@ std::optional<RenderImage> renderWithProgress(const std::vector<RenderSetup>& se
   const std::vector<Accumulation>& sums = source.merged ? *source.merged : accumulations;
   const DisplaySettings display =
       displayOverride ? *displayOverride : DisplaySettings::fromProject(setups.front().project);
+  // Draves & Reckase 2003, §9: the time samples add into one histogram; with a motion fade the
+  // earlier ones are drawn dimmer (directional motion blur, core/render/motion_blur.h).
+  const std::vector<double> weights = motionBlurWeights(int(sums.size()), motionFade);
+  TimeSampleSum sum;
   for (std::size_t i = 0; i < sums.size(); ++i) {
     RenderImage sample;
     toRenderImage(sums[i], display, sample);
     sample.stats.budget = sample.stats.samples;
-    if (sums.size() == 1)
-      image = std::move(sample);
-    else
-      accumulate(image, rgbaSum, sample);
+    addTimeSample(sum, sample, weights[i]);
   }
-  if (sums.size() > 1) {
-    const std::uint32_t n = std::uint32_t(sums.size());
-    image.hitPixels = 0;
-    for (std::size_t i = 0; i < rgbaSum.size(); ++i) {
-      image.rgba[i] = std::uint8_t((rgbaSum[i] + n / 2) / n);
-      if (i % 4 == 3 && rgbaSum[i] > 0) {
-        image.rgba[i] = 255;  // plotted in at least one time sample
-        ++image.hitPixels;
-      }
-    }
-  }
+  const RenderImage image = finishTimeSamples(std::move(sum));
   if (!progress.bar) bar.finish();
   const RenderStats& s = image.stats;
   if (s.badFraction() >= 0.5)
@@ -251,9 +224,40 @@ std::optional<RenderImage> renderWithProgress(const std::vector<RenderSetup>& se
 
 /// Options of the flame display; empty optionals keep the project's settings.
 struct FlameOptions {
-  std::optional<std::string> mode, palette;
-  std::optional<int> bitDepth;
+  std::optional<std::string> mode, palette, densityDisplay;
+  std::optional<int> bitDepth, supersample;
+  std::optional<double> hue, filterRadius, estimatorRadius, estimatorMinimum, estimatorCurve;
   bool transparent = false;
+  /// Directional motion blur (Draves & Reckase 2003, §9), resolved from --motion-fade or the
+  /// project's animation.motion_fade by renderFrame.
+  double motionFade = 0.0;
+  std::optional<double> motionFadeOption;
+
+  /// Whether any option of the flame display's own is given.
+  bool anyFlameSetting() const {
+    return palette || densityDisplay || supersample || hue || filterRadius || estimatorRadius || estimatorMinimum ||
+           estimatorCurve;
+  }
+  /// `settings` with the given options, checked against the settings' ranges (CliError, exit 2).
+  FlameSettings applied(FlameSettings settings) const {
+    if (palette) settings.palette = *palette, settings.palette_keys.clear();
+    if (densityDisplay) settings.density_display = *densityDisplay;
+    if (supersample) settings.supersample = *supersample;
+    if (hue) settings.hue = *hue;
+    if (filterRadius) settings.filter_radius = *filterRadius;
+    if (estimatorRadius) settings.estimator_radius = *estimatorRadius;
+    if (estimatorMinimum) settings.estimator_minimum = *estimatorMinimum;
+    if (estimatorCurve) settings.estimator_curve = *estimatorCurve;
+    try {
+      validateSettings(flameSettingsTable(), settings, "render.flame");
+    } catch (const ModelError& e) {
+      // Name the option, not the project field: "render.flame.filter_radius" → "--filter-radius".
+      std::string option = e.path().substr(e.path().rfind('.') + 1);
+      std::replace(option.begin(), option.end(), '_', '-');
+      throw CliError(kBadInput, "--" + option + ": " + e.message());
+    }
+    return settings;
+  }
 };
 
 /// `--mode flame` (Draves & Reckase 2003, §4–8): the same chaos game at supersample× the size with
@@ -263,14 +267,14 @@ int runFlameRender(const std::string& file, const std::string& out, const std::v
                    const FlameOptions& options, bool quiet, const std::string& device, FrameProgress progress,
                    const FrameSource& source) {
   const RenderSetup& setup = setups.front();
-  FlameSettings settings = setup.project.render.flame;
-  if (options.palette) settings.palette = *options.palette;
+  // renderFrame applied the options to the project already (a part carries them).
+  const FlameSettings settings = setup.project.render.flame;
   std::shared_ptr<const Palette> palette;
   try {
     // Merged parts hold the palette's colour sums already; the palette file may not be here.
     if (!source.merged)
       palette =
-          std::make_shared<const Palette>(resolvePalette(settings.palette, std::filesystem::path(file).parent_path()));
+          std::make_shared<const Palette>(resolveFlamePalette(settings, std::filesystem::path(file).parent_path()));
   } catch (const PaletteError& e) {
     throw CliError(kBadInput, file + ": " + e.what());
   }
@@ -290,7 +294,7 @@ int runFlameRender(const std::string& file, const std::string& out, const std::v
   FrameSource flameSource = source;
   if (flameSource.part) flameSource.part->withoutKeys = true;
   const std::optional<RenderImage> rendered =
-      renderWithProgress(setups, job, file, out, quiet, device, nullptr, progress, flameSource);
+      renderWithProgress(setups, job, file, out, quiet, device, nullptr, progress, flameSource, options.motionFade);
   if (!rendered) return kSuccess;  // a part: written as it is
   const RenderImage& image = *rendered;
   // Hit counts, not the z-buffer: merged flame parts carry no keys.
@@ -334,7 +338,7 @@ int runShadedRender(const std::string& file, const std::string& out, const std::
                  "filled by the CPU chaos game).\n");
   const DisplaySettings display = shadedDisplaySettings(setup.project);
   const std::optional<RenderImage> rendered =
-      renderWithProgress(setups, job, file, out, quiet, "cpu", &display, progress, source);
+      renderWithProgress(setups, job, file, out, quiet, "cpu", &display, progress, source, 0.0);
   if (!rendered) return kSuccess;  // a part: written as it is
   const RenderImage& image = *rendered;
   if (image.hitPixels == 0)
@@ -354,10 +358,12 @@ int runShadedRender(const std::string& file, const std::string& out, const std::
 
 /// One image: the project at overrides.time (or its own time), or, with `blur` > 1, at `blur` times
 /// spread evenly over `shutter` seconds centred on that time, merged.
-int renderFrame(const Project& loaded, const std::string& file, const std::string& out, const RenderOverrides& overrides,
-                bool quiet, const FlameOptions& flame, int blur, double shutter, FrameProgress progress, bool warn,
-                FrameSource source = {}) {
+int renderFrame(const Project& loaded, const std::string& file, const std::string& out,
+                const RenderOverrides& overrides, bool quiet, const FlameOptions& flameOptions, int blur,
+                double shutter, FrameProgress progress, bool warn, FrameSource source = {}) {
   const std::string device = checkedDevice(overrides.device);
+  FlameOptions flame = flameOptions;
+  flame.motionFade = flame.motionFadeOption.value_or(loaded.animation ? loaded.animation->motion_fade : 0.0);
   DisplayMode mode = DisplayMode::ZBuffer;
   if (flame.mode && !parseDisplayMode(*flame.mode, mode))
     throw CliError(kBadInput, "--mode must be zbuffer, flame or shaded, not \"" + *flame.mode + "\"");
@@ -376,20 +382,26 @@ int renderFrame(const Project& loaded, const std::string& file, const std::strin
     setups.push_back(prepareRenderOf(loaded, file, at, limits::kMaxRenderSamples, warn && i == 0));
   }
   if (!flame.mode) mode = setups.front().project.render.mode;
+  if (flame.anyFlameSetting() && mode != DisplayMode::Flame)
+    throw CliError(kBadInput,
+                   "--palette, --hue, --supersample, --density-display and the filter and estimator options apply "
+                   "to --mode flame only");
+  // The flame options become the project's settings, so that a part carries them to its merge.
+  for (RenderSetup& s : setups) s.project.render.flame = flame.applied(s.project.render.flame);
   if (source.part) {
     // The part's project says how to finish it: the mode and palette as rendered.
     setups.front().project.render.mode = mode;
-    if (flame.palette) setups.front().project.render.flame.palette = *flame.palette;
     nlohmann::json options = {{"mode", std::string(displayModeName(mode))}, {"motion_blur", blur}, {"shutter", shutter}};
+    if (flame.motionFade != 0.0) options["motion_fade"] = flame.motionFade;
     source.part->options = options.dump();
   }
   const RenderSetup& setup = setups.front();
   if (mode == DisplayMode::Flame) return runFlameRender(file, out, setups, flame, quiet, device, progress, source);
-  if (flame.bitDepth || flame.transparent || flame.palette)
-    throw CliError(kBadInput, "--bit-depth, --transparent and --palette apply to --mode flame only");
+  if (flame.bitDepth || flame.transparent)
+    throw CliError(kBadInput, "--bit-depth and --transparent apply to --mode flame only");
   if (mode == DisplayMode::Shaded) return runShadedRender(file, out, setups, quiet, device, progress, source);
   const std::optional<RenderImage> rendered =
-      renderWithProgress(setups, setup.job, file, out, quiet, device, nullptr, progress, source);
+      renderWithProgress(setups, setup.job, file, out, quiet, device, nullptr, progress, source, flame.motionFade);
   if (!rendered) return kSuccess;  // a part: written as it is
   const RenderImage& image = *rendered;
   const RenderStats& s = image.stats;
@@ -430,8 +442,9 @@ int renderSequence(const std::string& file, const std::string& pattern, const Re
     const FrameProgress progress{&bar, (f - frames.first) * samplesPerFrame, frames.count() * samplesPerFrame};
     FrameSource source;
     if (part) source.part = FrameSource::PartTarget{*part, f, ""};
-    renderFrame(loaded, file, frameFileName(pattern, f), at, quiet, flame, sequence.motionBlur,
-                animation.shutter / animation.fps, progress, f == frames.first, source);
+    renderFrame(loaded, file, frameFileName(pattern, f), at, quiet, flame,
+                sequence.motionBlur.value_or(animation.motion_blur), animation.shutter / animation.fps, progress,
+                f == frames.first, source);
   }
   bar.finish();
   if (sequence.video) {
@@ -451,16 +464,18 @@ int runRender(const std::string& file, const std::string& out, const RenderOverr
   } else {
     checkOutputPath(out, {"png", "exr", "tif", "tiff"}, "the output image");
   }
-  if (sequence.motionBlur < 1 || sequence.motionBlur > kMaxMotionBlurSamples)
+  if (sequence.motionBlur && (*sequence.motionBlur < 1 || *sequence.motionBlur > kMaxMotionBlurSamples))
     throw CliError(kBadInput, "--motion-blur must be between 1 and " + std::to_string(kMaxMotionBlurSamples) +
                                   " time samples per frame");
+  if (flame.motionFadeOption && !(*flame.motionFadeOption >= 0.0 && *flame.motionFadeOption <= 16.0))
+    throw CliError(kBadInput, "--motion-fade must be between 0 (uniform motion blur) and 16");
   if (!sequence.frames) {
     if (sequence.video) throw CliError(kBadInput, "--video needs a frame sequence: add --frames A:B");
     const Project loaded = loadForVerb(file);
     const AnimationSettings animation = loaded.animation.value_or(AnimationSettings{});
     FrameSource source;
     if (part) source.part = FrameSource::PartTarget{*part, std::nullopt, ""};
-    return renderFrame(loaded, file, out, overrides, quiet, flame, sequence.motionBlur,
+    return renderFrame(loaded, file, out, overrides, quiet, flame, sequence.motionBlur.value_or(animation.motion_blur),
                        animation.shutter / animation.fps, {}, true, source);
   }
   return renderSequence(file, out, overrides, quiet, flame, sequence, part);
@@ -479,6 +494,7 @@ int finishMergedFrame(const Project& project, const std::string& file, const std
     flame.mode = options.at("mode").get<std::string>();
     blur = options.at("motion_blur").get<int>();
     shutter = options.at("shutter").get<double>();
+    flame.motionFadeOption = options.value("motion_fade", 0.0);
   } catch (const nlohmann::json::exception&) {
     throw CliError(kBadInput, "the parts' render options are damaged");
   }
@@ -503,8 +519,10 @@ namespace {
 const VerbRegistration kRender{
     {"render",
      "FILE -o OUT.(png|exr|tif) [--width W --height H --samples N --seed S --threads T "
-     "--device auto|gpu|cpu --time T] [--frames A:B --motion-blur N --video OUT.mp4] "
-     "[--mode zbuffer|flame|shaded --palette P --bit-depth B --transparent]: render headlessly",
+     "--device auto|gpu|cpu --time T --quality Q] [--frames A:B --motion-blur N --motion-fade F --video OUT.mp4] "
+     "[--mode zbuffer|flame|shaded --palette P --hue H --density-display log|linear|binary --supersample S "
+     "--filter-radius R --estimator-radius R --estimator-minimum M --estimator-curve C --bit-depth B "
+     "--transparent]: render headlessly",
      [](CLI::App& app) {
        const auto a = addChaosVerbOptions(app, "output image: .png or .tif (8-bit RGB) or .exr (float RGBA + Z)",
                                           "chaos-game iterations in total, e.g. 2e7 (default: the project's)",
@@ -529,7 +547,25 @@ const VerbRegistration kRender{
                       "printf pattern such as out_%04d.png");
        app.add_option("--motion-blur", sequence->motionBlur,
                       "time samples per frame, spread over the animation's shutter (default 0.5 of the frame "
-                      "interval); 1 = none");
+                      "interval); 1 = none (default: the project's animation.motion_blur, 1)");
+       app.add_option("--motion-fade", flame->motionFadeOption,
+                      "directional motion blur: earlier time samples drawn dimmer, weight ((i+1)/n)^FADE; "
+                      "0 = uniform (default: the project's animation.motion_fade)");
+       app.add_option("--quality", a->overrides.quality,
+                      "samples per output pixel (flam3's quality): sets the sample count from the image size; "
+                      "overrides the project's render.quality and render.samples; excludes --samples");
+       app.add_option("--hue", flame->hue, "flame mode: turn the palette's hue by this fraction of a circle (0..1)");
+       app.add_option("--density-display", flame->densityDisplay,
+                      "flame mode: log (log density), linear (hits over the densest pixel's) or binary (hit or not)");
+       app.add_option("--supersample", flame->supersample,
+                      "flame mode: histogram at N× the image size in each direction (1..8)");
+       app.add_option("--filter-radius", flame->filterRadius, "flame mode: Gaussian filter radius in pixels (0..10)");
+       app.add_option("--estimator-radius", flame->estimatorRadius,
+                      "flame mode: density estimation's widest kernel in pixels (0 = off, up to 64)");
+       app.add_option("--estimator-minimum", flame->estimatorMinimum,
+                      "flame mode: density estimation's narrowest kernel in pixels");
+       app.add_option("--estimator-curve", flame->estimatorCurve,
+                      "flame mode: how fast the kernel narrows as density grows (0.05..10)");
        app.add_option("--video", sequence->video, "with --frames: also assemble the frames into this video with ffmpeg");
        auto part = std::make_shared<std::optional<std::string>>();
        app.add_option("--part", *part,

@@ -16,6 +16,7 @@
 #include "render/compiled_ifs.h"
 #include "render/flame_render.h"
 #include "render/image_file.h"
+#include "render/motion_blur.h"
 #include "render/shaded_image.h"
 
 namespace gridifs::ui {
@@ -55,21 +56,40 @@ std::optional<std::string> checkFramePattern(const std::string& pattern) {
 
 void renderAnimationFrame(const Project& animated, long frame, const std::filesystem::path& out, int threads,
                           const std::filesystem::path& projectFolder, const std::function<bool(double)>& progress) {
-  const double fps = animated.animation.value_or(AnimationSettings{}).fps;
+  const AnimationSettings animation = animated.animation.value_or(AnimationSettings{});
   // The same preparation as `gridifs render --time`: condensation sets read from files beside
   // the project, the palette and the lights of the display mode (job/prepared_render.h).
   RenderJobOptions options;
-  options.time = double(frame) / fps;
+  options.time = double(frame) / animation.fps;
   options.threads = threads;
   options.folder = projectFolder;
   const PreparedRender render = prepareRender(animated, options);
   const Project& project = render.project;
   const RenderJob& job = render.output;
-  auto report = [&](const RenderStats& s) { return !progress || progress(std::min(1.0, s.progress())); };
   const std::string description = "GridIFS animation frame " + std::to_string(frame) +
                                   " (t = " + std::to_string(project.time) + " s), " + std::to_string(job.samples) +
                                   " samples";
-  const RenderImage image = renderToCompletion(render.ifs, render.job, render.display, report);
+  // Draves & Reckase 2003, §9, motion blur as `gridifs render --motion-blur N --motion-fade F`:
+  // the frame's samples shared among N times spread over the shutter, each with its own seed,
+  // summed into one histogram; with a fade the earlier times are drawn dimmer.
+  const int blur = project.render.mode == DisplayMode::Shaded ? 1 : std::clamp(animation.motion_blur, 1, 256);
+  const std::vector<double> weights = motionBlurWeights(blur, animation.motion_fade);
+  const double shutter = animation.shutter / animation.fps;
+  TimeSampleSum sum;
+  for (int i = 0; i < blur; ++i) {
+    auto report = [&](const RenderStats& s) { return !progress || progress(std::min(1.0, (i + s.progress()) / blur)); };
+    if (blur == 1) {
+      addTimeSample(sum, renderToCompletion(render.ifs, render.job, render.display, report), 1.0);
+      break;
+    }
+    RenderJobOptions at = options;
+    at.time = *options.time + shutter * ((i + 0.5) / blur - 0.5);
+    at.samples = job.samples / blur + (i < job.samples % blur ? 1 : 0);
+    at.seed = job.seed + std::uint64_t(i);
+    const PreparedRender sample = prepareRender(animated, at);
+    addTimeSample(sum, renderToCompletion(sample.ifs, sample.job, sample.display, report), weights[std::size_t(i)]);
+  }
+  const RenderImage image = finishTimeSamples(std::move(sum));
   switch (project.render.mode) {
     case DisplayMode::Flame: {
       // Draves & Reckase 2003, §4–8: supersampled palette colours, log-density tone mapping.

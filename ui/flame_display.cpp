@@ -1,10 +1,11 @@
 #include "ui/flame_display.h"
 
+#include <algorithm>
 #include <chrono>
 #include <memory>
 
-#include "render/flame_render.h"
 #include "flame/palette.h"
+#include "render/flame_render.h"
 
 namespace gridifs::ui {
 
@@ -24,6 +25,7 @@ bool FlameDeveloper::take(std::vector<std::uint8_t>& rgba, int& width, int& heig
   error_ = out.error;
   lastMs_ = out.ms;
   if (!out.error.empty()) return false;
+  plot_ = std::move(out.plot);
   rgba.swap(out.rgba);
   width = out.width;
   height = out.height;
@@ -41,6 +43,12 @@ void FlameDeveloper::develop(const Input& input, DevelopJob::Context& context) {
     const FlameImage image = developFlameSnapshot(input.snapshot, input.settings, input.camera, out.width, out.height,
                                                   input.background, false, 1);
     flameImageToRgba8(image, out.rgba);
+    // The histogram of figure 4 and the scale the develop used (one pass over the hit counts).
+    out.plot.histogram = densityHistogram(input.snapshot.density);
+    out.plot.scale = densityScale(input.settings, double(std::max<std::int64_t>(1, input.snapshot.stats.samples)),
+                                  flamePixelsPerUnit(input.camera, out.height) * input.settings.density_unit,
+                                  double(out.plot.histogram.maxHits));
+    out.plot.valid = true;
   } catch (const std::exception& e) {
     out.error = e.what();
   }

@@ -10,9 +10,18 @@
 #include "base/background_job.h"
 #include "render/chaos_renderer.h"
 #include "edit/document.h"
+#include "flame/density_histogram.h"
 #include "model/flame_settings.h"
 
 namespace gridifs::ui {
+
+/// What the tone popup's density plot draws (Draves & Reckase 2003, figure 4): the pixels by
+/// density of the last develop and the density scale it used.
+struct DensityPlotData {
+  DensityHistogram histogram;
+  LogDensityScale scale;
+  bool valid = false;
+};
 
 /// Develops renderer snapshots into RGBA8 flame images on one worker thread (a BackgroundJob).
 /// UI thread only; submit() and take() never wait for a develop.
@@ -29,6 +38,8 @@ class FlameDeveloper {
   const std::string& error() const { return error_; }
   /// Milliseconds the last develop took.
   double lastMs() const { return lastMs_; }
+  /// The density histogram of the last develop taken.
+  const DensityPlotData& densityPlot() const { return plot_; }
 
  private:
   struct Input {
@@ -42,6 +53,7 @@ class FlameDeveloper {
     int width = 0, height = 0;
     std::string error;
     double ms = 0.0;
+    DensityPlotData plot;
   };
   using DevelopJob = BackgroundJob<Input, Output>;
   static void develop(const Input& input, DevelopJob::Context& context);
@@ -49,6 +61,7 @@ class FlameDeveloper {
   // UI-thread state: what the last develop taken said.
   std::string error_;
   double lastMs_ = 0.0;
+  DensityPlotData plot_;
   DevelopJob job_{&FlameDeveloper::develop};  // last: destroyed first, it joins the worker
 };
 

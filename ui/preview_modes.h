@@ -15,6 +15,7 @@
 #include "ui/gl_resources.h"
 #include "ui/mesh_preview.h"
 #include "ui/modeller_state.h"
+#include "ui/palette_editor.h"
 #include "ui/view_renderer.h"
 #include "ui/volume_preview.h"
 
@@ -61,6 +62,7 @@ class PreviewModes {
  private:
   void syncFromProject(ModellerState& state);
   void drawFlameControls(ModellerState& state, EditQueue& edits);  // flame_controls.cpp
+  void drawTonePopup(ModellerState& state, EditQueue& edits, const FlameSettings& f);  // flame_controls.cpp
   void drawMeshControls(ModellerState& state);
   void drawVolumeControls(ModellerState& state);  // volume_controls.cpp
 
@@ -75,6 +77,7 @@ class PreviewModes {
   RenderTarget volumeTarget_;  // the ray march at a resolution fitted to the volume's, then scaled up
   bool volumeDirty_ = true;
   PaletteCatalog palettes_;
+  PaletteEditor paletteEditor_;
   std::string paletteError_;
   std::string checkedPalette_;
   PreviewMode shownMode_ = PreviewMode::ZBuffer;

@@ -50,12 +50,18 @@ void PreviewView::buildToolbar(ModellerState& state, EditQueue& edits) {
   for (int i = 0; i < 5; ++i)
     if (budgets[i] == project.render.samples) current = i;
   char preview[32];
-  std::snprintf(preview, sizeof preview, "%.3gM points", double(project.render.samples) / 1e6);
+  if (project.render.quality) {
+    current = -1;  // a quality (samples per pixel) decides, not one of the budgets
+    std::snprintf(preview, sizeof preview, "%.4g / pixel", *project.render.quality);
+  } else {
+    std::snprintf(preview, sizeof preview, "%.3gM points", double(project.render.samples) / 1e6);
+  }
   ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.5f);
   if (ImGui::BeginCombo("##budget", current >= 0 ? budgetNames[current] : preview)) {
     for (int i = 0; i < 5; ++i)
       if (ImGui::Selectable(budgetNames[i], i == current)) {
-        edits.commit(SetSampleBudget{budgets[i]});
+        const std::int64_t n = budgets[i];
+        edits.commit(SetSampleBudget{n});
       }
     ImGui::EndCombo();
   }

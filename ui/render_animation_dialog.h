@@ -30,6 +30,7 @@ class RenderAnimationDialog {
  private:
   void openFor(const ModellerState& state);
   void start(ModellerState& state);
+  void drawMotionBlur(ModellerState& state);
   void drawFarm(ModellerState& state);
   /// Writes the job folder of the current settings (and submits it); false with message_ set.
   bool writeFarm(ModellerState& state, bool submit);
@@ -39,6 +40,8 @@ class RenderAnimationDialog {
   std::string pattern_ = "frames/frame_%04d.png";
   int first_ = 0, last_ = 0, width_ = 0, height_ = 0;
   std::int64_t samples_ = 0;
+  int motionBlur_ = 1;       // time samples per frame (Draves & Reckase 2003, §9)
+  double motionFade_ = 0.0;  // directional motion blur: earlier time samples dimmer
   TaskPhase phase_ = TaskPhase::Options;
   std::atomic<int> framesDone_{0};
   int frameCount_ = 0;

@@ -61,6 +61,12 @@ struct AnimationSettings {
   /// the frame interval the time samples of one frame spread over, centred on the frame's time.
   /// 0.5 is film's 180° shutter.
   double shutter = 0.5;
+  /// Time samples per frame for renders of the animation (1: no motion blur); the command line's
+  /// --motion-blur overrides it.
+  int motion_blur = 1;
+  /// Directional motion blur (Draves & Reckase 2003, §9): earlier time samples are drawn dimmer,
+  /// sample i of n weighted by ((i + 1) / n)^motion_fade (normalised to average 1). 0: uniform.
+  double motion_fade = 0.0;
   bool operator==(const AnimationSettings&) const = default;
 };
 

@@ -25,14 +25,18 @@ std::vector<double> shadedChaosInputs(const RenderSettings& r) {
 
 bool sameDisplay(const RenderSettings& a, const RenderSettings& b) {
   FlameSettings toneA = a.flame, toneB = b.flame;
-  toneA.palette = toneB.palette = "";  // the palette is looked up per sample: a render input
+  // The palette (its reference, gradient keys and hue) is looked up per sample: a render input.
+  toneA.palette = toneB.palette = toneA.palette_keys = toneB.palette_keys = "";
+  toneA.hue = toneB.hue = 0.0;
   return a.background == b.background && a.depth_cue == b.depth_cue && a.mode == b.mode && toneA == toneB &&
          a.shading == b.shading;
 }
 
 bool sameRenderInput(const RenderSettings& a, const RenderSettings& b) {
-  return a.width == b.width && a.height == b.height && a.samples == b.samples && a.seed == b.seed && a.skip == b.skip &&
-         a.flame.palette == b.flame.palette && shadedChaosInputs(a) == shadedChaosInputs(b);
+  return a.width == b.width && a.height == b.height && a.samples == b.samples && a.quality == b.quality &&
+         a.seed == b.seed && a.skip == b.skip && a.flame.palette == b.flame.palette &&
+         a.flame.palette_keys == b.flame.palette_keys && a.flame.hue == b.flame.hue &&
+         shadedChaosInputs(a) == shadedChaosInputs(b);
 }
 
 Document::Document(Project project) : project_(std::move(project)), saved_(project_) {

@@ -42,7 +42,7 @@ using ProjectEdit = std::variant<
     SetOperationSelection, PlaceCenter, MoveNodes,
     // settings, camera, time (edit/settings_edits.h) and shading (edit/shading_edits.h)
     SetSettingNumber, SetDisplayMode, SetSampleBudget, SetBackground, SetPalette, SetDensityEstimation,
-    ResetFlameSettings, SetCamera, SetCameraDistance, SetTime, SetAnimation, AddLight, RemoveLight, SetLightDirection,
+    ResetFlameSettings, SetDensityDisplay, SetQuality, SetPaletteKeys, SetCamera, SetCameraDistance, SetTime, SetAnimation, AddLight, RemoveLight, SetLightDirection,
     SetLightColor, SetLightShadows, SetFogColor, SetAperture,
     // keyframes (edit/key_edits.h)
     SetKeys, RemoveKeys,

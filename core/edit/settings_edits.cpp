@@ -105,13 +105,20 @@ std::string SetDisplayMode::label() const {
   return "Z-buffer display";
 }
 
-void SetSampleBudget::apply(Project& project) const { project.render.samples = samples; }
+void SetSampleBudget::apply(Project& project) const {
+  project.render.samples = samples;
+  project.render.quality.reset();
+}
 
 void SetBackground::apply(Project& project) const { project.render.background = color; }
 
 std::string SetBackground::label() const { return renderSettingsTable().field("background").label; }
 
-void SetPalette::apply(Project& project) const { project.render.flame.palette = palette; }
+void SetPalette::apply(Project& project) const {
+  // A palette chosen (or saved from the gradient editor) replaces the gradient being edited.
+  project.render.flame.palette = palette;
+  project.render.flame.palette_keys.clear();
+}
 
 void SetDensityEstimation::apply(Project& project) const {
   FlameSettings& flame = project.render.flame;
@@ -123,9 +130,16 @@ std::string SetDensityEstimation::label() const { return on ? "Density estimatio
 void ResetFlameSettings::apply(Project& project) const {
   FlameSettings d;
   d.palette = project.render.flame.palette;
+  d.palette_keys = project.render.flame.palette_keys;
   d.supersample = project.render.flame.supersample;
   project.render.flame = d;
 }
+
+void SetDensityDisplay::apply(Project& project) const { project.render.flame.density_display = display; }
+
+void SetQuality::apply(Project& project) const { project.render.quality = quality; }
+
+void SetPaletteKeys::apply(Project& project) const { project.render.flame.palette_keys = keys; }
 
 void SetCamera::apply(Project& project) const { project.camera = camera; }
 

@@ -7,6 +7,7 @@
 // Thread-safety: plain values; apply() touches only the project given. apply() throws ModelError
 // when what it names is not in the project (a setting key, a light).
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "model/project.h"
@@ -49,6 +50,7 @@ struct SetDisplayMode {
 };
 
 /// How many chaos-game points a render takes.
+/// A sample budget replaces a quality (samples per pixel): the artist asked for this count.
 struct SetSampleBudget {
   std::int64_t samples = 20'000'000;
   void apply(Project& project) const;
@@ -78,11 +80,32 @@ struct SetDensityEstimation {
   std::string label() const;
 };
 
-/// The flame display's defaults, keeping its palette and supersampling (which are choices of the
-/// picture rather than of its tone).
+/// The flame display's defaults, keeping its palette, its gradient and supersampling (which are
+/// choices of the picture rather than of its tone).
 struct ResetFlameSettings {
   void apply(Project& project) const;
   std::string label() const { return "Flame defaults"; }
+};
+
+/// How densities become brightness: "log", "linear" or "binary" (Draves & Reckase 2003, figure 3).
+struct SetDensityDisplay {
+  std::string display = "log";
+  void apply(Project& project) const;
+  std::string label() const { return "Density display"; }
+};
+
+/// Samples per pixel for renders, or none (the sample budget decides).
+struct SetQuality {
+  std::optional<double> quality;
+  void apply(Project& project) const;
+  std::string label() const { return quality ? "Quality" : "Quality off"; }
+};
+
+/// The gradient keys being edited ("0:#000000 1:#ffffff"; empty: none), which replace the palette.
+struct SetPaletteKeys {
+  std::string keys;
+  void apply(Project& project) const;
+  std::string label() const { return keys.empty() ? "Discard gradient" : "Palette gradient"; }
 };
 
 struct SetCamera {

@@ -49,7 +49,29 @@ void hsvToRgb(const double hsv[3], double rgb[3]) {
 
 }  // namespace
 
-double LogDensityScale::alpha(double hits) const { return hits > 0.0 ? k1 * std::log1p(hits * k2) : 0.0; }
+bool parseDensityDisplay(const std::string& text, DensityDisplay& out) {
+  if (text == "log")
+    out = DensityDisplay::Log;
+  else if (text == "linear")
+    out = DensityDisplay::Linear;
+  else if (text == "binary")
+    out = DensityDisplay::Binary;
+  else
+    return false;
+  return true;
+}
+
+double LogDensityScale::alpha(double hits) const {
+  if (!(hits > 0.0)) return 0.0;
+  switch (display) {
+    case DensityDisplay::Linear:
+      return hits * linearScale;  // Draves & Reckase 2003, figure 3b
+    case DensityDisplay::Binary:
+      return 1.0;  // figure 3a: membership only
+    default:
+      return k1 * std::log1p(hits * k2);
+  }
+}
 double LogDensityScale::factor(double hits) const { return hits > 0.0 ? alpha(hits) / hits : 0.0; }
 
 LogDensityScale logDensityScale(double brightness, double samples, double pixelsPerUnit, int supersample) {
@@ -57,6 +79,13 @@ LogDensityScale logDensityScale(double brightness, double samples, double pixels
   s.k1 = brightness * kBrightnessScale;
   const double bucketsPerUnit = double(std::max(1, supersample)) * pixelsPerUnit;
   s.k2 = samples > 0.0 ? bucketsPerUnit * bucketsPerUnit / samples : 0.0;
+  return s;
+}
+
+LogDensityScale densityScale(const FlameSettings& settings, double samples, double pixelsPerUnit, double maxHits) {
+  LogDensityScale s = logDensityScale(settings.brightness, samples, pixelsPerUnit, settings.supersample);
+  if (!parseDensityDisplay(settings.density_display, s.display)) s.display = DensityDisplay::Log;
+  s.linearScale = maxHits > 0.0 ? settings.brightness / maxHits : 0.0;
   return s;
 }
 
@@ -135,7 +164,11 @@ FlameImage developFlame(const FlameHistogram& histogram, const FlameSettings& se
   if (ss < 1 || histogram.width % ss != 0 || histogram.height % ss != 0)
     throw std::invalid_argument("developFlame: the histogram is not a multiple of the supersampling");
   const int width = histogram.width / ss, height = histogram.height / ss;
-  const LogDensityScale scale = logDensityScale(settings.brightness, samples, pixelsPerUnit, ss);
+  double maxHits = 0.0;
+  if (settings.density_display == "linear")
+    for (std::size_t i = 3; i < histogram.buckets.size(); i += 4)
+      maxHits = std::max(maxHits, double(histogram.buckets[i]));
+  const LogDensityScale scale = densityScale(settings, samples, pixelsPerUnit, maxHits);
   std::unique_ptr<DensityEstimator> estimator;
   if (settings.estimator_radius > 0.0)
     estimator = std::make_unique<DensityEstimator>(settings.estimator_radius, settings.estimator_minimum,

@@ -6,6 +6,7 @@
 // Units: "accumulated" values are flam3's accumulation buffer divided by its PREFILTER_WHITE
 // (255), so a log-scaled alpha of 1 is flam3's 255. Output colors are floats in [0, 1].
 // All functions are pure (thread-safe); none throws.
+#include <string>
 #include <vector>
 
 #include "flame/flame_histogram.h"
@@ -14,6 +15,11 @@
 
 namespace gridifs {
 
+/// How hit counts become the alpha channel (FlameSettings::density_display).
+enum class DensityDisplay { Log, Linear, Binary };
+/// Parses "log" / "linear" / "binary"; false for anything else.
+bool parseDensityDisplay(const std::string& text, DensityDisplay& out);
+
 /// Draves & Reckase 2003, §4: every bucket is scaled by log(α)/α. flam3 writes this as
 /// ls = k1·log(1 + α·k2)/α with k1 = brightness·268/256 and k2 the inverse of the number of
 /// hits a bucket gets when `samples` points spread evenly over one unit² of the image plane:
@@ -21,7 +27,12 @@ namespace gridifs {
 /// so the picture's exposure does not change.
 struct LogDensityScale {
   double k1 = 1.0, k2 = 1.0;
-  /// The log-scaled alpha of a bucket with `hits` hits: k1·log(1 + hits·k2).
+  /// Draves & Reckase 2003, figure 3: log density (c, the flame display), linear (b) or binary (a).
+  DensityDisplay display = DensityDisplay::Log;
+  /// Linear display: alpha = hits·linearScale (brightness over the densest bucket's hits).
+  double linearScale = 0.0;
+  /// The scaled alpha of a bucket with `hits` hits: k1·log(1 + hits·k2) (log), hits·linearScale
+  /// (linear), 1 for any hit (binary).
   double alpha(double hits) const;
   /// ls = alpha(hits)/hits, the factor applied to all four channels (0 for no hits).
   double factor(double hits) const;
@@ -30,6 +41,10 @@ struct LogDensityScale {
 /// k1, k2 as above. `samples` counts every iteration that was plotted or fell outside the
 /// frame (flam3's nsamples); `pixelsPerUnit` is output pixels per unit of the image plane.
 LogDensityScale logDensityScale(double brightness, double samples, double pixelsPerUnit, int supersample);
+/// The scale of `settings.density_display`: logDensityScale for "log"; for "linear",
+/// linearScale = brightness / `maxHits` (the densest bucket's hits), so brightness 1 maps the
+/// densest bucket to white; "binary" needs nothing else.
+LogDensityScale densityScale(const FlameSettings& settings, double samples, double pixelsPerUnit, double maxHits);
 
 /// flam3_calc_alpha: density^(1/gamma), made linear below `threshold` so that the infinite
 /// slope of the power at 0 does not amplify sparse noise (Draves & Reckase 2003, §6).

@@ -4,8 +4,9 @@
 #include <cstdio>
 #include <sstream>
 
-#include "io/flame_import.h"
 #include "flame/palette.h"
+#include "flame/palette_gradient.h"
+#include "io/flame_import.h"
 #include "model/stack_evaluator.h"
 
 namespace gridifs {
@@ -133,14 +134,17 @@ FlameExport exportFlame(const Project& project, const std::filesystem::path& pro
     << "\" center=\"" << num(center.x) << " " << num(center.y) << "\" scale=\"" << num(ppu)
     << "\" zoom=\"0\" rotate=\"0\" oversample=\"" << fl.supersample << "\" supersample=\"" << fl.supersample
     << "\" filter=\"" << num(fl.filter_radius) << "\" filter_shape=\"gaussian\" quality=\""
-    << num(double(r.samples) / (double(r.width) * r.height)) << "\" background=\"" << num(r.background.x) << " "
-    << num(r.background.y) << " " << num(r.background.z) << "\" brightness=\"" << num(fl.brightness) << "\" gamma=\""
-    << num(fl.gamma) << "\" gamma_threshold=\"" << num(fl.gamma_threshold) << "\" vibrancy=\"" << num(fl.vibrancy)
-    << "\" highlight_power=\"" << num(fl.highlight_power) << "\" estimator_radius=\"" << num(fl.estimator_radius)
-    << "\" estimator_minimum=\"" << num(fl.estimator_minimum) << "\" estimator_curve=\"" << num(fl.estimator_curve)
-    << "\" palette_mode=\"linear\" interpolation_type=\"linear\"";
-  if (fl.palette.rfind("flam3:", 0) == 0 && fl.palette.find_first_not_of("0123456789", 6) == std::string::npos)
+    << num(double(renderSampleCount(r)) / (double(r.width) * r.height)) << "\" background=\"" << num(r.background.x)
+    << " " << num(r.background.y) << " " << num(r.background.z) << "\" brightness=\"" << num(fl.brightness)
+    << "\" gamma=\"" << num(fl.gamma) << "\" gamma_threshold=\"" << num(fl.gamma_threshold) << "\" vibrancy=\""
+    << num(fl.vibrancy) << "\" highlight_power=\"" << num(fl.highlight_power) << "\" estimator_radius=\""
+    << num(fl.estimator_radius) << "\" estimator_minimum=\"" << num(fl.estimator_minimum) << "\" estimator_curve=\""
+    << num(fl.estimator_curve) << "\" palette_mode=\"linear\" interpolation_type=\"linear\"";
+  if (fl.palette_keys.empty() && fl.palette.rfind("flam3:", 0) == 0 &&
+      fl.palette.find_first_not_of("0123456789", 6) == std::string::npos)
     x << " palette=\"" << fl.palette.substr(6) << "\"";
+  // flam3 writes its hue beside the colours it has already turned (flam3_print), as we do below.
+  if (fl.hue != 0.0) x << " hue=\"" << num(fl.hue) << "\"";
   x << " " << kFlameFrameAttribute << "=\"" << num(frame.centerX) << " " << num(frame.centerY) << " "
     << num(frame.scale) << "\">\n";
 
@@ -177,7 +181,7 @@ FlameExport exportFlame(const Project& project, const std::filesystem::path& pro
   if (project.final_function && !project.final_function->muted)
     x << "  <finalxform " << xformAttributes(*project.final_function, "final", "the final function") << "/>\n";
   try {
-    const Palette palette = resolvePalette(fl.palette, projectFolder);
+    const Palette palette = resolveFlamePalette(fl, projectFolder);
     for (int i = 0; i < Palette::kSize; ++i) {
       const Rgb& c = palette.colors[std::size_t(i)];
       x << "  <color index=\"" << i << "\" rgb=\"" << int(std::lround(c.r * 255.0f)) << " "

@@ -284,23 +284,20 @@ FlameImport importFlameGenome(const FlameGenome& genome, const FlameImportOption
 
   // Palette: the genome's own colors, else flam3's collection by number, turned by `hue` as
   // flam3 does when it takes a palette from its collection (flam3 leaves inline colors as they are).
+  // The hue stays a setting (render.flame.hue), so the artist can keep turning it.
   FlameSettings& fl = p.render.flame;
   std::optional<Palette> palette = genome.palette;
-  const double hue = std::fmod(genome.hue, 1.0);
+  const double hue = genome.hue - std::floor(genome.hue);
   if (genome.palette) {
     fl.palette = options.inlinePaletteReference;
   } else if (genome.paletteNumber >= 0) {
     fl.palette = "flam3:" + std::to_string(genome.paletteNumber);
+    fl.hue = hue;
     try {
       palette = resolvePalette(fl.palette);
-      if (hue != 0.0) {
-        palette = rotatePaletteHue(*palette, hue);
-        palette->name += " hue " + std::to_string(hue);
-        fl.palette = options.inlinePaletteReference;
-      }
+      if (hue != 0.0) palette = rotatePaletteHue(*palette, hue);
     } catch (const PaletteError&) {
-      out.warnings.push_back("palette " + fl.palette + " is not installed here; function colors are white" +
-                             std::string(hue != 0.0 ? " and the hue rotation is not applied" : ""));
+      out.warnings.push_back("palette " + fl.palette + " is not installed here; function colors are white");
       palette.reset();
     }
   } else {

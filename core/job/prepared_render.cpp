@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "flame/palette_gradient.h"
 #include "model/project_time.h"
 #include "render/flame_render.h"
 #include "render/shaded_image.h"
@@ -22,6 +23,13 @@ RenderJob outputRenderJob(const Project& project, const RenderJobOptions& option
   if (options.width) job.width = *options.width;
   if (options.height) job.height = *options.height;
   if (options.seed) job.seed = *options.seed;
+  if (project.render.quality) {
+    // Quality is samples per pixel of the image actually rendered (another size: other samples).
+    RenderSettings size = project.render;
+    size.width = job.width;
+    size.height = job.height;
+    job.samples = renderSampleCount(size);
+  }
   if (options.samples) job.samples = *options.samples;
   // The UI thread gets a core first: the modeller stays responsive while the preview renders.
   if (options.preview) job.lowPriority = true;
@@ -40,9 +48,8 @@ std::shared_ptr<const CompiledIfs> compileRenderIfs(const Document& document, co
 
 std::shared_ptr<const Palette> renderPalette(const Project& project, const std::filesystem::path& folder,
                                              bool preview) {
-  const std::string& reference = project.render.flame.palette;
   try {
-    return std::make_shared<const Palette>(resolvePalette(reference, folder));
+    return std::make_shared<const Palette>(resolveFlamePalette(project.render.flame, folder));
   } catch (const std::exception& e) {
     if (preview) return std::make_shared<const Palette>(builtinPalette(kDefaultPaletteRef));
     throw RenderJobError("render.flame.palette", e.what());

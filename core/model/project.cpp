@@ -1,8 +1,18 @@
 #include "model/project.h"
 
+#include <algorithm>
+#include <cmath>
 #include <variant>
 
 namespace gridifs {
+
+std::int64_t renderSampleCount(const RenderSettings& render) {
+  if (!render.quality) return render.samples;
+  // flam3's quality: samples per output pixel (supersampling adds buckets, not samples).
+  const double n = *render.quality * double(render.width) * double(render.height);
+  if (!(n >= 1.0)) return 1;
+  return std::int64_t(std::llround(std::min(n, 1e11)));
+}
 
 Project defaultNewProject() {
   Project p;

@@ -26,6 +26,9 @@ struct Camera {
 struct RenderSettings {
   int width = 1024, height = 768;
   std::int64_t samples = 20'000'000;
+  /// "quality": samples per output pixel (flam3's quality). When set it decides the sample count,
+  /// quality × width × height, and `samples` is not used (renderSampleCount).
+  std::optional<double> quality;
   std::uint64_t seed = 1;
   int skip = 20;
   Vec3 background{0.0};
@@ -35,6 +38,10 @@ struct RenderSettings {
   ShadingSettings shading;                  // "render.shading": lights, occlusion, fog, depth of field
   bool operator==(const RenderSettings&) const = default;
 };
+
+/// The chaos-game iterations a render of these settings runs: quality × width × height (at least
+/// 1, at most 1e11) when `quality` is set, else `samples`. Pure; never throws.
+std::int64_t renderSampleCount(const RenderSettings& render);
 
 struct Project {
   Camera camera;

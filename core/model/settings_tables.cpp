@@ -69,6 +69,17 @@ const SettingTableOf<RenderSettings>& renderSettingsTable() {
       setting<&RenderSettings::width>({.key = "width", .min = 1, .max = 16384}),
       setting<&RenderSettings::height>({.key = "height", .min = 1, .max = 16384}),
       setting<&RenderSettings::samples>({.key = "samples", .min = 1, .max = 1e11}),
+      // flam3's quality (samples per output pixel): written only when set, so older files save
+      // unchanged; when set it decides the sample count (renderSampleCount).
+      setting<&RenderSettings::quality>({.key = "quality",
+                                         .label = "Quality",
+                                         .tooltip = "Samples per output pixel; when set it decides the sample count",
+                                         .min = 1e-3,
+                                         .max = 1e6,
+                                         .sliderMin = 1.0,
+                                         .sliderMax = 5000.0,
+                                         .format = "%.0f samples/pixel",
+                                         .logarithmic = true}),
       setting<&RenderSettings::seed>({.key = "seed"}),
       setting<&RenderSettings::skip>({.key = "skip", .min = 0, .max = 100000}),
       setting<&RenderSettings::background>({.key = "background",
@@ -159,6 +170,33 @@ const SettingTableOf<FlameSettings>& flameSettingsTable() {
            setting<&FlameSettings::filter_radius>(
                {.key = "filter_radius", .label = "Filter radius", .min = 0.0, .max = 10.0}),
            setting<&FlameSettings::density_unit>({.key = "density_unit", .min = 1e-6, .max = 1e6, .omitDefault = true}),
+           // Written only when changed, so files saved before these existed save byte for byte.
+           setting<&FlameSettings::hue>(
+               {.key = "hue",
+                .label = "Hue",
+                .tooltip = "Turns the palette's hue by this fraction of a circle (flam3's hue)",
+                .min = 0.0,
+                .max = 1.0,
+                .sliderMin = 0.0,
+                .sliderMax = 1.0,
+                .format = "hue %.3f",
+                .omitDefault = true}),
+           setting<&FlameSettings::palette_keys>(
+               {.key = "palette_keys",
+                .label = "Palette keys",
+                .tooltip = "The gradient being edited; it replaces the palette while set",
+                .omitDefault = true,
+                .maxLength = 2048,
+                .accepts = isPaletteKeysSyntax,
+                .expected = "expected 2 to 64 gradient keys \"POSITION:#RRGGBB\" (positions from 0 to 1) separated by "
+                            "spaces"}),
+           setting<&FlameSettings::density_display>(
+               {.key = "density_display",
+                .label = "Density display",
+                .tooltip = "How hit counts become brightness: log density, linear or binary membership",
+                .omitDefault = true,
+                .accepts = isDensityDisplayName,
+                .expected = "expected \"log\", \"linear\" or \"binary\""}),
        },
        flameRules}};
   return table;
@@ -362,6 +400,29 @@ const SettingTableOf<AnimationSettings>& animationSettingsTable() {
                 .invalid = "the shutter must be a fraction of the frame interval between 0 and 1"}),
            setting<&AnimationSettings::loop>(
                {.key = "loop", .label = "Loop", .tooltip = "Play the range over and over"}),
+           setting<&AnimationSettings::motion_blur>(
+               {.key = "motion_blur",
+                .label = "Motion blur",
+                .tooltip = "Time samples per frame, spread over the shutter (1: no motion blur)",
+                .min = 1,
+                .max = 256,
+                .sliderMin = 1,
+                .sliderMax = 32,
+                .format = "%d time samples",
+                .omitDefault = true,
+                .invalid = "motion blur must be between 1 and 256 time samples per frame"}),
+           // Draves & Reckase 2003, §9, directional motion blur.
+           setting<&AnimationSettings::motion_fade>(
+               {.key = "motion_fade",
+                .label = "Motion fade",
+                .tooltip = "Directional motion blur: earlier time samples are drawn dimmer (0: uniform blur)",
+                .min = 0.0,
+                .max = 16.0,
+                .sliderMin = 0.0,
+                .sliderMax = 8.0,
+                .format = "fade %.2f",
+                .omitDefault = true,
+                .invalid = "the motion fade must be between 0 and 16"}),
        },
        nullptr,
        SettingWords::FiniteOnly}};

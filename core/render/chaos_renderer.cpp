@@ -432,7 +432,7 @@ RenderJob RenderJob::fromProject(const Project& project, int threads) {
   job.camera = project.camera;
   job.width = project.render.width;
   job.height = project.render.height;
-  job.samples = project.render.samples;
+  job.samples = renderSampleCount(project.render);
   job.seed = project.render.seed;
   job.skip = project.render.skip;
   job.threads = threads > 0 ? threads : int(std::max(1u, std::thread::hardware_concurrency()));

@@ -137,7 +137,11 @@ TEST(FlameCli, HueRotationMatchesFlam3) {
   ASSERT_TRUE(c.valid);
   std::printf("[import crosscheck hue 0.3] %s\n", c.summary().c_str());
   EXPECT_GE(c.corrLuma, 0.99);
-  EXPECT_TRUE(std::filesystem::exists(dir.path / "imported.palette.json"));
+  // The turn stays a setting on flam3's palette (render.flame.hue), not a turned copy.
+  const Project imported = loadProject(dir.path / "imported.gridifs");
+  EXPECT_EQ(imported.render.flame.palette.rfind("flam3:", 0), 0u) << imported.render.flame.palette;
+  EXPECT_NEAR(imported.render.flame.hue, 0.3, 1e-9);
+  EXPECT_FALSE(std::filesystem::exists(dir.path / "imported.palette.json"));
   const auto flam3 = meanColor(dir.path / "flam3.png"), gridifs = meanColor(dir.path / "gridifs.png");
   const ScratchDir plainDir("flame-import-hue-plain");
   const auto plainPng = plainDir.path / "plain.png";

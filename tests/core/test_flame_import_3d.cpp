@@ -8,6 +8,7 @@
 #include <random>
 
 #include "flame/palette.h"
+#include "flame/palette_gradient.h"
 #include "io/flame_genome.h"
 #include "io/flame_import.h"
 #include "model/stack_evaluator.h"
@@ -220,11 +221,16 @@ TEST(FlamePaletteHue, ImportTurnsACollectionPaletteButNotInlineColors) {
   options.resolution = 8;
   options.inlinePaletteReference = "file:tilted.palette.json";
   const FlameImport turned = importFlameGenome(genomes[1], options);  // palette 3, hue 0.25
-  ASSERT_TRUE(turned.palette);
-  EXPECT_EQ(turned.project.render.flame.palette, "file:tilted.palette.json");
+  // The hue stays a setting on flam3's palette, so the artist can keep turning it.
+  EXPECT_FALSE(turned.palette);
+  EXPECT_EQ(turned.project.render.flame.palette, "flam3:3");
+  EXPECT_DOUBLE_EQ(turned.project.render.flame.hue, 0.25);
   const Palette expected = rotatePaletteHue(flam3Palette("3"), 0.25);
-  EXPECT_EQ(turned.palette->colors, expected.colors);
-  EXPECT_NE(turned.palette->colors, flam3Palette("3").colors);
+  EXPECT_EQ(resolveFlamePalette(turned.project.render.flame).colors, expected.colors);
+  EXPECT_NE(expected.colors, flam3Palette("3").colors);
+  // The functions' z-buffer colours are the turned palette's.
+  const Rgb c = expected.lookup(genomes[1].xforms[0].color);
+  EXPECT_NEAR(turned.project.functions[0].color.x, c.r, 1e-6);
   // Inline colors stay as they are (flam3-render leaves them too).
   auto inline_ = parseFlameFile(R"(<flame size="10 10" hue="0.4">
       <xform weight="1" color="0" linear="1" coefs="0.5 0 0 0.5 0 0"/>

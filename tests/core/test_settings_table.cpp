@@ -106,8 +106,14 @@ TEST(SettingsTable, DefaultsAreValidAndEveryFieldIsWritten) {
   Project p = oneFunction();
   p.render.shading.dof.focus = 2.0;   // an unset optional is not written
   p.render.flame.density_unit = 2.0;  // the default is omitted
+  p.render.flame.hue = 0.1;           // likewise the flame controls' fields
+  p.render.flame.palette_keys = "0:#000000 1:#ffffff";
+  p.render.flame.density_display = "linear";
+  p.render.quality = 50.0;
   p.animation = AnimationSettings{};
   p.animation->shutter = 0.25;  // the default is omitted
+  p.animation->motion_blur = 2;
+  p.animation->motion_fade = 1.0;
   p.volume = VolumeSettings{};
   EXPECT_NO_THROW(validateProject(p));
   p.render.mode = DisplayMode::Shaded;  // writes render.shading
