@@ -117,6 +117,8 @@ void ChaosCompute::setup(const CompiledIfs& ifs, const RenderJob& job, ChainRang
   for (const CompiledFunction& f : ifs.functions)
     if (!f.points.empty())
       throw GpuUnavailable("the GPU renderer does not run condensation functions; the CPU renderer does");
+  if (ifs.hasVariations)
+    throw GpuUnavailable("the GPU renderer does not run flame variations yet; the CPU renderer does");
   job_ = job;
   // The buffers hold the share's chains only; the shader adds share.begin to a chain's local
   // index wherever the global index matters (its seed, its budget).

@@ -57,6 +57,13 @@ struct FlameImport {
 /// ("centerX centerY scale"); other programs ignore it.
 inline constexpr const char* kFlameFrameAttribute = "gridifs_frame";
 
+/// Whether `genome` is imported with native variations: a 2D genome that is not GridIFS's own
+/// grid export (no gridifs_frame). Its xforms become functions in the flame's own coordinates (X's
+/// plane z = 0 is the flame plane): a 2×2×2 grid that is the pre-affine map, the variations by
+/// name and the post map; the camera looks at the plane from below. Other genomes are sampled
+/// onto grids in a frame that fits the attractor into X.
+bool isNativeGenome(const FlameGenome& genome);
+
 /// Converts `genome`. Throws FlameError when a map cannot be sampled (no finite node) or the
 /// options are out of range.
 FlameImport importFlameGenome(const FlameGenome& genome, const FlameImportOptions& options);
