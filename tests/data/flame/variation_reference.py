@@ -706,15 +706,19 @@ POINTS = [
 WEIGHTS = [0.8, 1.0, 1.25, 0.7, -0.6, 0.45]
 # a, b, c, d, e, f of x' = a x + b y + c, y' = d x + e y + f (the dependent variations read them).
 COEFS = [0.9, -0.3, 0.7, 0.25, 1.1, -0.4]
-# Input point overrides where the common ones sit on a variation's step or out of its domain.
-POINT_OVERRIDES = {}
+# Extra (x, y, z, weight) cases where the common points leave one of a variation's branches untried.
+EXTRA_CASES = {
+    "fan": [(0.8, 0.06, 0.3, 0.9), (0.55, 0.05, 0.0, 1.1)],  # fmod(a + f, dx) > dx / 2
+    "secant2": [(1.3, 1.1, 0.0, 1.25), (-1.4, 0.9, -0.5, 1.2)],  # cos(w r) < 0
+    "split": [(0.9, 0.6, 0.2, 0.8)],  # both cosines negative
+}
 
 
 def deterministic_cases(name):
     f2, f3, param_sets, dependent = DETERMINISTIC[name]
     cases = []
-    for i, (x, y, z) in enumerate(POINT_OVERRIDES.get(name, POINTS)):
-        w = WEIGHTS[i]
+    points = [(x, y, z, w) for (x, y, z), w in zip(POINTS, WEIGHTS)] + EXTRA_CASES.get(name, [])
+    for i, (x, y, z, w) in enumerate(points):
         params = param_sets[i % len(param_sets)]
         if f3 is None:
             nx, ny = f2(x, y, w, params, COEFS)
@@ -765,6 +769,12 @@ def irwin_hall4_nodes(n):
 def discrete_nodes(n):
     """trunc(n·U) for a positive integer n: each of 0..n-1 with probability 1/n."""
     return [(k, 1.0 / n) for k in range(n)]
+
+
+def trunc_nodes(rn):
+    """trunc(rn·U) (equally floor, rn > 0 not necessarily whole): k with probability
+    P(k ≤ rn U < k + 1) = min(1, (k + 1) / rn) − k / rn."""
+    return [(k, min(1.0, (k + 1) / rn) - k / rn) for k in range(int(math.ceil(rn)))]
 
 
 def moments(f, factors):
@@ -828,6 +838,7 @@ def random_cases():
     a = 0.5 * atan_xy(x, y)
     roots = [(w * math.sqrt(r) * math.cos(a + k * PI), w * math.sqrt(r) * math.sin(a + k * PI)) for k in (0, 1)]
     add("julia", (x, y, 0.3), w, [], lambda b: roots[b], [discrete_nodes(2)], [(q, 0.5) for q in roots])
+    assert abs(roots[0][0] ** 2 - roots[0][1] ** 2 - w * w * y) < 1e-12  # flam3's θ = atan2(x, y): roots of w²(y + ix)
 
     # noise: x·(w U2) cos(2π U1), y·(w U2) sin(2π U1): E = 0, E[x²] = x² w² / 6.
     w = 0.7
@@ -838,23 +849,22 @@ def random_cases():
 
     # julian: branch t = trunc(|power| U), angle (atan2(y, x) + 2π t) / power, radius w r2^(dist/power/2).
     def julian_branches(power, dist, w):
-        n = int(abs(power))
         rr = w * r2 ** (dist / power / 2.0)
-        return [(rr * math.cos((atan_yx(x, y) + 2 * PI * t) / power),
-                 rr * math.sin((atan_yx(x, y) + 2 * PI * t) / power)) for t in range(n)]
+        return [((rr * math.cos((atan_yx(x, y) + 2 * PI * t) / power),
+                  rr * math.sin((atan_yx(x, y) + 2 * PI * t) / power)), q) for t, q in trunc_nodes(abs(power))]
 
-    w, power, dist = 0.8, 3.0, 1.5
-    bj = julian_branches(power, dist, w)
-    add("julian", (x, y, -0.4), w, [power, dist], lambda t: bj[t], [discrete_nodes(3)], [(q, 1 / 3) for q in bj])
+    for w, power, dist in ((0.8, 3.0, 1.5), (0.6, -2.0, 1.0), (0.9, 2.5, 0.7)):
+        bj = julian_branches(power, dist, w)
+        add("julian", (x, y, -0.4), w, [power, dist], lambda t, bj=bj: bj[t][0], [trunc_nodes(abs(power))], bj)
 
     # juliascope: as julian, the odd branches mirror the angle: (2π t − atan2(y, x)) / power.
-    w, power, dist = 0.75, 4.0, 0.8
-    rr = w * r2 ** (dist / power / 2.0)
-    bs = []
-    for t in range(4):
-        ang = (2 * PI * t + atan_yx(x, y)) / power if t % 2 == 0 else (2 * PI * t - atan_yx(x, y)) / power
-        bs.append((rr * math.cos(ang), rr * math.sin(ang)))
-    add("juliascope", (x, y, 0.0), w, [power, dist], lambda t: bs[t], [discrete_nodes(4)], [(q, 0.25) for q in bs])
+    for w, power, dist in ((0.75, 4.0, 0.8), (0.85, -3.0, 1.3)):
+        rr = w * r2 ** (dist / power / 2.0)
+        bs = []
+        for t, q in trunc_nodes(abs(power)):
+            ang = (2 * PI * t + atan_yx(x, y)) / power if t % 2 == 0 else (2 * PI * t - atan_yx(x, y)) / power
+            bs.append(((rr * math.cos(ang), rr * math.sin(ang)), q))
+        add("juliascope", (x, y, 0.0), w, [power, dist], lambda t, bs=bs: bs[t][0], [trunc_nodes(abs(power))], bs)
 
     # blur: radius w U2, angle 2π U1: E = 0, E[x²] = w²/6.
     w = 0.9
@@ -965,10 +975,7 @@ def random_cases():
 
     # boarders: with probability 1/4 (U ≥ 0.75) the half-offset point; otherwise pushed a quarter
     # towards the cell edge its offset points at.
-    w = 0.9
-    bx, by = 0.33, -1.58
-
-    def boarders(u):
+    def boarders(bx, by, w, u):
         rx, ry = round_half_even(bx), round_half_even(by)
         ox, oy = bx - rx, by - ry
         if u >= 0.75:
@@ -981,30 +988,33 @@ def random_cases():
             return w * (ox * 0.5 + rx + ox / oy * 0.25), w * (oy * 0.5 + ry + 0.25)
         return w * (ox * 0.5 + rx - ox / oy * 0.25), w * (oy * 0.5 + ry - 0.25)
 
-    add("boarders", (bx, by, 0.0), w, [], boarders, [U(1000)],
-        branches=[(boarders(0.9), 0.25), (boarders(0.1), 0.75)])
+    # One point per branch: |ox| < |oy| with oy ≥ 0 and < 0, |ox| ≥ |oy| with ox ≥ 0 and < 0.
+    for bx, by, w in ((0.33, -1.58, 0.9), (0.1, -1.35, 0.8), (2.3, 0.1, 1.1), (-0.4, 1.15, 0.7)):
+        add("boarders", (bx, by, 0.0), w, [], lambda u, bx=bx, by=by, w=w: boarders(bx, by, w, u), [U(1000)],
+            branches=[(boarders(bx, by, w, 0.9), 0.25), (boarders(bx, by, w, 0.1), 0.75)])
 
     # cpow: ang = (c a + d ln r + 2π floor(power U)) / power... with c = re/power, d = im/power,
     # va = 2π / power; modulus w exp(c ln r − d a).
-    w, cre, cim, cpw = 0.8, 1.3, 0.4, 3.0
-    aa, lnr = atan_yx(x, y), math.log(r)
-    vc, vd, va = cre / cpw, cim / cpw, 2 * PI / cpw
-    mm = w * math.exp(vc * lnr - vd * aa)
-    bc = [(mm * math.cos(vc * aa + vd * lnr + va * k), mm * math.sin(vc * aa + vd * lnr + va * k)) for k in range(3)]
-    add("cpow", (x, y, 0.0), w, [cre, cim, cpw], lambda k: bc[k], [discrete_nodes(3)], [(q, 1 / 3) for q in bc])
+    for w, cre, cim, cpw in ((0.8, 1.3, 0.4, 3.0), (0.7, 0.9, -0.5, 2.5)):
+        aa, lnr = atan_yx(x, y), math.log(r)
+        vc, vd, va = cre / cpw, cim / cpw, 2 * PI / cpw
+        mm = w * math.exp(vc * lnr - vd * aa)
+        bc = [((mm * math.cos(vc * aa + vd * lnr + va * k), mm * math.sin(vc * aa + vd * lnr + va * k)), q)
+              for k, q in trunc_nodes(cpw)]
+        add("cpow", (x, y, 0.0), w, [cre, cim, cpw], lambda k, bc=bc: bc[k][0], [trunc_nodes(cpw)], bc)
 
     # wedge_julia: t = trunc(|power| U); a = (atan2(y, x) + 2π t) / power;
     # c = floor((count a + π) / 2π); a' = a (1 − angle count / 2π) + c angle; radius w r2^(dist/power/2).
-    w, wangle, wcount, wpower, wdist = 0.7, 0.4, 2.0, 3.0, 1.2
-    rr = w * r2 ** (wdist / wpower / 2.0)
-    bw = []
-    for t in range(3):
-        a0 = (atan_yx(x, y) + 2 * PI * t) / wpower
-        c = math.floor((wcount * a0 + PI) / PI / 2.0)
-        a1 = a0 * (1.0 - wangle * wcount / PI / 2.0) + c * wangle
-        bw.append((rr * math.cos(a1), rr * math.sin(a1)))
-    add("wedge_julia", (x, y, 0.0), w, [wangle, wcount, wpower, wdist], lambda t: bw[t], [discrete_nodes(3)],
-        [(q, 1 / 3) for q in bw])
+    for w, wangle, wcount, wpower, wdist in ((0.7, 0.4, 2.0, 3.0, 1.2), (0.8, 0.3, 3.0, -2.5, 0.9)):
+        rr = w * r2 ** (wdist / wpower / 2.0)
+        bw = []
+        for t, q in trunc_nodes(abs(wpower)):
+            a0 = (atan_yx(x, y) + 2 * PI * t) / wpower
+            c = math.floor((wcount * a0 + PI) / PI / 2.0)
+            a1 = a0 * (1.0 - wangle * wcount / PI / 2.0) + c * wangle
+            bw.append(((rr * math.cos(a1), rr * math.sin(a1)), q))
+        add("wedge_julia", (x, y, 0.0), w, [wangle, wcount, wpower, wdist], lambda t, bw=bw: bw[t][0],
+            [trunc_nodes(abs(wpower))], bw)
 
     # pre_blur: moves the point by w (S − 2) (cos 2π U5, sin 2π U5); the moments are those of the
     # displacement (what apply returns): E = 0, E[dx²] = w² / 6.
