@@ -665,8 +665,8 @@ void GridView::buildIfsScene(ModellerState& state) {
       // Flame variations (Draves & Reckase 2003, §3): the grid is only g; draw it faintly and the
       // function's image of X's lattice lines, so the artist sees what the variations do.
       appendGridLines(*grid, lineColor(functions[f].color, 0.25f * alpha), scene_.lines);
-      const glm::vec4 color{glm::vec3(functions[f].color), alpha};
-      for (const Vec3& q : variationImage(state, f)) scene_.points.push_back(vertex(q, color, active ? 2.5f : 1.5f));
+      const glm::vec4 color = lineColor(functions[f].color, alpha);
+      for (const Vec3& q : variationImage(state, f)) scene_.points.push_back(vertex(q, color, active ? 3.0f : 2.0f));
       continue;
     }
     appendGridLines(*grid, lineColor(functions[f].color, alpha), scene_.lines);
