@@ -79,17 +79,15 @@ ChaosCompute::ChaosCompute(const GpuInfo& info, ChaosOutput output, bool accumul
       color_(accumulateColor && (output == ChaosOutput::Image || output == ChaosOutput::Voxels)),
       points_(output == ChaosOutput::Points),
       atomic64_(allowAtomic64 && info.atomic64 && output == ChaosOutput::Image) {
-  // An IFS with variations gets its own program (built on first use): the variation switch costs
-  // compile time and registers that plain grid IFSs need not pay.
-  if (output == ChaosOutput::Maps)
-    variationProgram_ = buildProgram(true);
-  else
-    plainProgram_ = buildProgram(false);
-  program_ = plainProgram_ ? plainProgram_ : variationProgram_;
+  // An IFS with variations gets a program specialised to the variations it uses (programFor),
+  // built on first use: plain grid IFSs pay nothing for them.
+  if (output != ChaosOutput::Maps) plainProgram_ = buildProgram("");
+  program_ = plainProgram_;
   glGenBuffers(kBuffers, buffers_);
 }
 
-unsigned ChaosCompute::buildProgram(bool variations) const {
+unsigned ChaosCompute::buildProgram(const std::string& usedVariations) const {
+  const bool variations = !usedVariations.empty();
   std::string source = "#version 430 core\n";
   if (atomic64_)
     source += "#extension GL_ARB_gpu_shader_int64 : require\n#extension GL_NV_shader_atomic_int64 : require\n";
@@ -97,7 +95,8 @@ unsigned ChaosCompute::buildProgram(bool variations) const {
             (color_ ? "1" : "0") + "\n#define EMIT_POINTS " + (points_ ? "1" : "0") + "\n#define BIN_VOXELS " +
             (output_ == ChaosOutput::Voxels ? "1" : "0") + "\n#define VARIATIONS " + (variations ? "1" : "0") +
             "\n#define EVALUATE_MAPS " + (output_ == ChaosOutput::Maps ? "1" : "0") + "\n";
-  if (variations) source += variationDefines() + "#line 1 1\n" + shaderSource("flame_variations.comp.glsl") + "\n";
+  if (variations)
+    source += variationDefines(usedVariations) + "#line 1 1\n" + shaderSource("flame_variations.comp.glsl") + "\n";
   source += "#line 1 0\n";
   source += shaderSource("chaos_game.comp.glsl");
   const gl::ShaderBuild shader = gl::compileShader(GL_COMPUTE_SHADER, source.c_str());
@@ -110,7 +109,20 @@ unsigned ChaosCompute::buildProgram(bool variations) const {
 ChaosCompute::~ChaosCompute() {
   glDeleteBuffers(kBuffers, buffers_);
   if (plainProgram_) glDeleteProgram(plainProgram_);
-  if (variationProgram_) glDeleteProgram(variationProgram_);
+  for (const auto& [used, program] : variationPrograms_) glDeleteProgram(program);
+}
+
+unsigned ChaosCompute::programFor(const CompiledIfs& ifs) {
+  if (!ifs.hasVariations && output_ != ChaosOutput::Maps) return plainProgram_;
+  const std::string used = usedVariations(ifs);
+  if (const auto it = variationPrograms_.find(used); it != variationPrograms_.end()) return it->second;
+  // A modeller session tries many sets of variations; keep the last few programs, not all.
+  constexpr std::size_t kKeptPrograms = 8;
+  if (variationPrograms_.size() >= kKeptPrograms) {
+    for (const auto& [key, program] : variationPrograms_) glDeleteProgram(program);
+    variationPrograms_.clear();
+  }
+  return variationPrograms_[used] = buildProgram(used);
 }
 
 void ChaosCompute::allocate(unsigned buffer, std::size_t bytes, const std::string& what) {
@@ -209,8 +221,7 @@ void ChaosCompute::setup(const CompiledIfs& ifs, const RenderJob& job, ChainRang
   for (const CompiledFunction& f : ifs.functions)
     if (!f.points.empty())
       throw GpuUnavailable("the GPU renderer does not run condensation functions; the CPU renderer does");
-  if (ifs.hasVariations && !variationProgram_) variationProgram_ = buildProgram(true);
-  program_ = ifs.hasVariations ? variationProgram_ : plainProgram_;
+  program_ = programFor(ifs);
   job_ = job;
   // The buffers hold the share's chains only; the shader adds share.begin to a chain's local
   // index wherever the global index matters (its seed, its budget).
@@ -382,6 +393,7 @@ std::vector<std::array<float, 3>> ChaosCompute::evaluateMaps(const CompiledIfs& 
                                                              std::uint64_t seed) {
   if (output_ != ChaosOutput::Maps) throw std::logic_error("evaluateMaps needs a ChaosCompute for ChaosOutput::Maps");
   const std::size_t n = std::min(functions.size(), points.size());
+  program_ = programFor(ifs);
   uploadIfs(ifs);
   // Chain slots as the shader's Chain (64 bytes): p = (x, y, z, 0), misc.x = the function.
   std::vector<std::uint32_t> slots(n * 16, 0u);

@@ -5,6 +5,7 @@
 // run on the thread whose context is current.
 #include <array>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -56,8 +57,9 @@ std::int64_t chainBudget(const RenderJob& job, ChainRange chains);
 
 class ChaosCompute {
  public:
-  /// Compiles the program variant (the one for IFSs with flame variations on first use by setup;
-  /// Maps: that one at once). Throws GpuUnavailable when the driver rejects it.
+  /// Compiles the program variant (those for IFSs with flame variations, one per set of
+  /// variations used, when setup or evaluateMaps first needs them). Throws GpuUnavailable when the
+  /// driver rejects it.
   /// accumulateColor: colour sums (Image: the flame display's; Voxels: rgb per voxel).
   ChaosCompute(const GpuInfo& info, ChaosOutput output, bool accumulateColor, bool allowAtomic64);
   ~ChaosCompute();
@@ -91,7 +93,11 @@ class ChaosCompute {
 
  private:
   void allocate(unsigned buffer, std::size_t bytes, const std::string& what);
-  unsigned buildProgram(bool variations) const;
+  /// usedVariations: empty for the plain program, else usedVariations(ifs) (gpu/variation_stage.h).
+  unsigned buildProgram(const std::string& usedVariations) const;
+  /// The program for `ifs`: the plain one, or the one specialised to its variations (built and
+  /// kept on first use).
+  unsigned programFor(const CompiledIfs& ifs);
   /// Functions, node pairs, the alias table and (with variations) the variation stages.
   void uploadIfs(const CompiledIfs& ifs);
   /// depthMin_ and depthScale_ for the 32-bit keys.
@@ -101,8 +107,9 @@ class ChaosCompute {
   ChaosOutput output_ = ChaosOutput::Image;
   bool color_ = false, points_ = false, atomic64_ = false;
   int voxels_ = 0;
-  unsigned program_ = 0;  // the program of the current setup: plainProgram_ or variationProgram_
-  unsigned plainProgram_ = 0, variationProgram_ = 0;
+  unsigned program_ = 0;  // the program of the current setup: plainProgram_ or a variation program
+  unsigned plainProgram_ = 0;
+  std::map<std::string, unsigned> variationPrograms_;  // by usedVariations(ifs)
   unsigned buffers_[10] = {};
   RenderJob job_;
   std::uint32_t chains_ = 0, count_ = 0;

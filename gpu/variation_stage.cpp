@@ -42,11 +42,25 @@ void packStage(const CompiledVariations& v, std::vector<std::uint32_t>& out) {
 
 }  // namespace
 
-std::string variationDefines() {
+std::string usedVariations(const CompiledIfs& ifs) {
+  std::string used(flameVariations().size(), '0');
+  auto mark = [&](const CompiledFunction& f) {
+    if (f.variations)
+      for (int id : f.variations->variationIds) used[std::size_t(id)] = '1';
+  };
+  for (const CompiledFunction& f : ifs.functions) mark(f);
+  if (ifs.finalFunction) mark(*ifs.finalFunction);
+  return used;
+}
+
+std::string variationDefines(const std::string& used) {
   std::string out;
   const auto& table = flameVariations();
-  for (std::size_t i = 0; i < table.size(); ++i)
-    out += std::string("#define V_") + table[i].name + " " + std::to_string(i) + "u\n";
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    const std::string name = table[i].name;
+    out += "#define V_" + name + " " + std::to_string(i) + "u\n#define USE_" + name + " " +
+           (i < used.size() && used[i] == '1' ? "1" : "0") + "\n";
+  }
   return out;
 }
 

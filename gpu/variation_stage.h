@@ -19,8 +19,13 @@
 
 namespace gridifs::gpu {
 
-/// "#define V_<name> <index>u" for every variation of flameVariations(), one a line.
-std::string variationDefines();
+/// Which variations of flameVariations() the functions of `ifs` (and its final function) use: one
+/// character per variation, '1' used, '0' not. The key of the specialised program.
+std::string usedVariations(const CompiledIfs& ifs);
+
+/// For every variation of flameVariations(), "#define V_<name> <index>u" and "#define USE_<name>
+/// 1" or "0" as `used` (usedVariations) says, one a line.
+std::string variationDefines(const std::string& used);
 
 /// The Stages buffer for `ifs`. Throws GpuUnavailable for a variation the shader's layout cannot
 /// hold (more than 8 parameters, a pre-variation other than pre_blur).

@@ -88,11 +88,9 @@ struct GpuVariationMaps : ::testing::Test {
     context = gpu::HeadlessGlContext::create().release();
     const auto start = std::chrono::steady_clock::now();
     compute = new gpu::ChaosCompute(context->info(), gpu::ChaosOutput::Maps, false, false);
-    // Drivers may compile at the first dispatch (llvmpipe does): one point through one function.
-    Project one;
-    one.functions.resize(1);
-    one.functions[0].variations = {{"julia", 1.0}};
-    compute->evaluateMaps(*compileIfs(one), {0}, {Point{0.1f, 0.2f, 0.3f}}, 1);
+    // Drivers may compile at the first dispatch (llvmpipe does): one point through the program
+    // that has every variation.
+    compute->evaluateMaps(*compileIfs(everyVariationProject()), {0}, {Point{0.1f, 0.2f, 0.3f}}, 1);
     compileSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
   static void TearDownTestSuite() {
@@ -120,14 +118,20 @@ TEST_F(GpuVariationMaps, EveryDeterministicVariationMatchesTheCpuTable) {
       for (const Point& p : inputs) functions.push_back(i), points.push_back(p);
   const std::vector<Point> gpu = compute->evaluateMaps(*ifs, functions, points, 7);
   ASSERT_EQ(gpu.size(), points.size());
+  std::vector<int> compared(table.size(), 0);
   for (std::size_t n = 0; n < points.size(); ++n) {
     const CompiledFunction& f = ifs->functions[functions[n]];
     std::uint64_t unused = 1;
     const Point cpu = f.evaluateMap(points[n], unused);
     if (!finite3(cpu)) continue;  // a pole of the variation: nothing to compare
+    ++compared[functions[n]];
     SCOPED_TRACE(std::string(table[functions[n]].name) + " at input " + std::to_string(n % inputs.size()));
     for (int d = 0; d < 3; ++d) EXPECT_NEAR(gpu[n][d], cpu[d], 2e-4 * (1.0 + std::fabs(cpu[d])));
   }
+  for (std::size_t i = 0; i < table.size(); ++i)
+    if (!table[i].random) {
+      EXPECT_GE(compared[i], 4) << table[i].name << " was compared at too few points";
+    }
 }
 
 TEST_F(GpuVariationMaps, EveryRandomVariationDrawsTheCpuDistribution) {
@@ -161,7 +165,8 @@ TEST_F(GpuVariationMaps, EveryRandomVariationDrawsTheCpuDistribution) {
 }
 
 /// Three functions with a random (julia), a dependent (popcorn) and a parametric random (julian)
-/// variation, spherical with pre_blur, and a post map: the flame vocabulary on affine grids.
+/// variation, spherical with pre_blur, and post maps, in the loop and in the final function: the
+/// flame vocabulary on affine grids.
 Project variationScene() {
   Project p;
   p.camera.distance = 3.2;
@@ -188,6 +193,12 @@ Project variationScene() {
   post.placement.translate = {0.05, 0.0, 0.0};
   c.post = post;
   p.functions = {a, b, c};
+  // A final function with a variation stage too (its own swirl and post map).
+  Function last = grid({1.0, 1.0, 1.0}, {0, 0, 0}, {0, 0, 0}, {1.0, 1.0, 1.0});
+  last.variations = {{"linear", 0.9}, {"swirl", 0.1}};
+  last.post = PostTransform{};
+  last.post->placement.rotate = {0.0, 0.0, 10.0};
+  p.final_function = last;
   return p;
 }
 
