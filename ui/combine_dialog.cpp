@@ -108,8 +108,7 @@ void CombineDialog::combine(ModellerState& state, EditQueue& edits) {
   }
   const std::size_t count = result.functions.size();
   const std::string name = loadedPath_.filename().string();
-  edits.commit(std::string("Combine (") + combineOpName(op) + ")",
-               [result = std::move(result)](Project& p) { p = result; });
+  edits.commit(std::string("Combine (") + combineOpName(op) + ")", ReplaceProject{std::move(result)});
   state.activeFunction = FunctionRef(0);
   state.activeOp = -1;
   state.info("Combined with " + name + " (" + combineOpName(op) + "): " + std::to_string(count) + " functions");

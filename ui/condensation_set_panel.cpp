@@ -37,7 +37,7 @@ const char* shapeLabel(SetShape shape) {
 
 /// One undo step per drag of the widget just drawn: the whole set is replaced.
 void setGesture(EditQueue& edits, const char* label, bool changed, FunctionRef ref, const CondensationSet& set) {
-  gestureItem(edits, label, changed, [ref, set](Project& p) { ref.in(p).set = set; });
+  gestureItem(edits, label, changed, SetCondensationSet{ref, set});
 }
 
 /// `chosen` as the project will store it: relative to the project's folder where the project
@@ -99,8 +99,7 @@ void CondensationSetPanel::drawFile(ModellerState& state, EditQueue& edits, Func
   state.probe.frame("set.path");
   editingPath_ = ImGui::IsItemActive();
   if (ImGui::IsItemDeactivatedAfterEdit() && pathText_ != current.path) {
-    const std::string path = pathText_;
-    edits.commit(mesh ? "Set mesh file" : "Set VDB file", [ref, path](Project& p) { ref.in(p).set.path = path; });
+    edits.commit(mesh ? "Set mesh file" : "Set VDB file", SetSetFile{ref, pathText_});
   }
   contextHelp(state, "The file's path, relative to the project file's folder");
   if (ImGui::Button("Browse...")) browse(state, current, current.shape);
@@ -112,8 +111,7 @@ void CondensationSetPanel::drawFile(ModellerState& state, EditQueue& edits, Func
     int fill = set.fill == SetFill::Surface ? 1 : 0;
     static const char* fills[] = {"Solid", "Surface"};
     if (ImGui::Combo("Fill", &fill, fills, 2)) {
-      const SetFill chosen = fill ? SetFill::Surface : SetFill::Solid;
-      edits.commit(fill ? "Fill surface" : "Fill solid", [ref, chosen](Project& p) { ref.in(p).set.fill = chosen; });
+      edits.commit(SetSetFill{ref, fill ? SetFill::Surface : SetFill::Solid});
     }
     state.probe.frame("set.fill");
     contextHelp(state, "Solid: the volume the mesh encloses (it must be closed); surface: a shell around its faces");
@@ -133,7 +131,7 @@ void CondensationSetPanel::drawFile(ModellerState& state, EditQueue& edits, Func
     std::string grid = set.grid;
     const bool typed = ImGui::InputText("Grid", &grid);
     state.probe.frame("set.grid");
-    gestureItem(edits, "VDB grid name", typed && !grid.empty(), [ref, grid](Project& p) { ref.in(p).set.grid = grid; });
+    gestureItem(edits, "VDB grid name", typed && !grid.empty(), SetSetGrid{ref, grid});
     contextHelp(state, "The name of the float grid in the file");
     const bool changed = dragDouble("Threshold", set.threshold, 0.005, -1e6, 1e6);
     state.probe.frame("set.threshold");
@@ -178,8 +176,7 @@ void CondensationSetPanel::draw(ModellerState& state, EditQueue& edits) {
         if (fileSet && !pathFits)
           browse(state, set, shape);
         else
-          edits.commit(std::string("Set shape: ") + setShapeName(shape),
-                       [ref, shape](Project& p) { ref.in(p).set.shape = shape; });
+          edits.commit(SetSetShape{ref, shape, std::nullopt});
       }
       state.probe.item(std::string("set.shape.") + setShapeName(c.shape));
       contextHelp(state, c.help);
@@ -210,7 +207,7 @@ void CondensationSetPanel::draw(ModellerState& state, EditQueue& edits) {
     double rotate = f.rotate;
     const bool changed = dragDouble("Rotate", rotate, 0.5, -3600.0, 3600.0, "%.1f°");
     state.probe.frame("set.rotate");
-    gestureItem(edits, "Median rotation", changed, [ref, rotate](Project& p) { ref.in(p).rotate = rotate; });
+    gestureItem(edits, "Median rotation", changed, SetMedianRotation{ref, rotate});
     contextHelp(state,
                 "The rotated median (Sokolov & Gentil, §4.1): degrees about z per unit of distance between the sets' "
                 "centres; 0 is the plain median");
@@ -225,10 +222,7 @@ void CondensationSetPanel::draw(ModellerState& state, EditQueue& edits) {
     const std::string label = newShape                  ? std::string("Set shape: ") + setShapeName(shape)
                               : shape == SetShape::Mesh ? "Set mesh file"
                                                         : "Set VDB file";
-    edits.commit(label, [target, path, shape](Project& p) {
-      target.in(p).set.shape = shape;
-      target.in(p).set.path = path;
-    });
+    edits.commit(label, SetSetShape{target, shape, path});
   }
 }
 

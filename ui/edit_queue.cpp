@@ -4,9 +4,9 @@
 
 namespace gridifs::ui {
 
-void gestureItem(EditQueue& edits, const std::string& label, bool changed, Document::Change change) {
+void gestureItem(EditQueue& edits, const std::string& label, bool changed, ProjectEdit edit) {
   if (ImGui::IsItemActivated()) edits.begin(label);
-  if (changed) edits.update(std::move(change));
+  if (changed) edits.update(std::move(edit));
   if (ImGui::IsItemDeactivated()) edits.end();
 }
 

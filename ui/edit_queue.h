@@ -9,7 +9,7 @@ namespace gridifs::ui {
 using gridifs::EditQueue;
 
 /// The undo-per-gesture pattern for the ImGui item just submitted: begin on activation,
-/// apply `change` when `changed`, end on deactivation.
-void gestureItem(EditQueue& edits, const std::string& label, bool changed, Document::Change change);
+/// apply `edit` when `changed`, end on deactivation.
+void gestureItem(EditQueue& edits, const std::string& label, bool changed, ProjectEdit edit);
 
 }  // namespace gridifs::ui

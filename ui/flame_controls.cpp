@@ -40,8 +40,7 @@ void flameSlider(ModellerState& state, EditQueue& edits, const FlameSettings& f,
   const SettingSpec& spec = flameSettingsTable().field(key);
   double value = spec.number(&f);
   keyButton(state, edits, std::string("render.flame.") + key, &value);
-  settingSlider(state, edits, spec, value, [](Project& p) -> void* { return &p.render.flame; },
-                {.probe = "flame", .min = min, .max = max});
+  settingSlider(state, edits, spec, value, SettingGroup::Flame, {.probe = "flame", .min = min, .max = max});
 }
 
 }  // namespace
@@ -97,8 +96,7 @@ void PreviewModes::drawFlameControls(ModellerState& state, EditQueue& edits) {
         ImGui::PushID(i);
         const bool selected = e.reference == f.palette;
         if (ImGui::Selectable("##entry", selected, 0, ImVec2(0, em * 1.1f))) {
-          const std::string ref = e.reference;
-          edits.commit("Palette", [ref](Project& p) { p.render.flame.palette = ref; });
+          edits.commit(SetPalette{e.reference});
         }
         if (selected && ImGui::IsWindowAppearing()) ImGui::SetScrollHereY();
         const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
@@ -143,9 +141,7 @@ void PreviewModes::drawFlameControls(ModellerState& state, EditQueue& edits) {
     sectionTitle("Density estimation (Draves & Reckase 2003, §8)");
     bool estimate = f.estimator_radius > 0.0;
     if (ImGui::Checkbox("Density estimation", &estimate)) {
-      const double radius = estimate ? std::max(FlameSettings{}.estimator_radius, f.estimator_minimum) : 0.0;
-      edits.commit(estimate ? "Density estimation on" : "Density estimation off",
-                   [radius](Project& p) { p.render.flame.estimator_radius = radius; });
+      edits.commit(SetDensityEstimation{estimate});
     }
     state.probe.item("flame.estimation");
     contextHelp(state, "Blur thin areas with a kernel that shrinks as density grows (off: faster, noisier)");
@@ -156,12 +152,7 @@ void PreviewModes::drawFlameControls(ModellerState& state, EditQueue& edits) {
     ImGui::PopItemWidth();
     ImGui::Spacing();
     if (ImGui::Button("Defaults")) {
-      edits.commit("Flame defaults", [](Project& p) {
-        FlameSettings d;
-        d.palette = p.render.flame.palette;
-        d.supersample = p.render.flame.supersample;
-        p.render.flame = d;
-      });
+      edits.commit(ResetFlameSettings{});
     }
     ImGui::SameLine();
     const double ms = flame_.developer().lastMs();

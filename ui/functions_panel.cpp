@@ -6,31 +6,16 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "edit/new_function.h"
 #include "model/contractivity.h"
 #include "model/final_function.h"
 #include "model/free_form.h"
-#include "model/transition_matrix.h"
 #include "ui/key_button.h"
 #include "ui/panels.h"
 #include "ui/widgets.h"
 
 namespace gridifs::ui {
 namespace {
-
-std::string uniqueName(const Project& p, const std::string& base) {
-  for (int n = 1;; ++n) {
-    const std::string name = base + std::to_string(n);
-    if (std::none_of(p.functions.begin(), p.functions.end(), [&](const Function& f) { return f.name == name; }))
-      return name;
-  }
-}
-
-/// Colors for new functions, spread around the hue circle.
-Vec3 newFunctionColor(std::size_t index) {
-  static const Vec3 palette[] = {{1.0, 0.6, 0.2}, {0.3, 0.7, 1.0}, {0.5, 0.95, 0.4}, {0.95, 0.35, 0.55},
-                                 {0.95, 0.85, 0.3}, {0.6, 0.45, 1.0}, {0.3, 0.95, 0.85}, {1.0, 0.45, 0.3}};
-  return palette[index % (sizeof palette / sizeof palette[0])];
-}
 
 const ImVec4 kFinalColor{0.80f, 0.62f, 1.0f, 1.0f};  // the final function's row and lattice: violet
 
@@ -54,7 +39,7 @@ void drawFunctionRow(ModellerState& state, EditQueue& edits, FunctionRef ref) {
   bool on = !f.muted;
   if (ImGui::Checkbox("##on", &on)) {
     const std::string what = last ? " final function" : " function";
-    edits.commit((on ? "Unmute" : "Mute") + what, [ref, on](Project& p) { ref.in(p).muted = !on; });
+    edits.commit((on ? "Unmute" : "Mute") + what, SetFunctionMuted{ref, !on});
   }
   state.probe.item("functions.mute." + probeName);
   contextHelp(state, last ? "A muted final function stays in the file; points are plotted as the IFS makes them"
@@ -86,7 +71,7 @@ void drawFunctionRow(ModellerState& state, EditQueue& edits, FunctionRef ref) {
 void drawName(ModellerState& state, EditQueue& edits, FunctionRef ref, const Function& f) {
   std::string name = f.name;
   const bool changed = ImGui::InputText("Name", &name);
-  gestureItem(edits, "Rename function", changed && !name.empty(), [ref, name](Project& p) { ref.in(p).name = name; });
+  gestureItem(edits, "Rename function", changed && !name.empty(), RenameFunction{ref, name});
   state.probe.frame(ref.isFinal() ? "final.name" : "function.name");
 }
 
@@ -110,9 +95,8 @@ void drawResolution(ModellerState& state, EditQueue& edits, FunctionRef ref, con
   } else if (changed && ref.isFinal()) {
     state.finalFunctionMessage.clear();  // a new resolution answers an earlier refusal
   }
-  gestureItem(edits, "Grid resolution", changed, [ref, resolution](Project& p) {
-    ref.in(p).resolution = {resolution[0], resolution[1], resolution[2]};
-  });
+  gestureItem(edits, "Grid resolution", changed,
+              SetFunctionResolution{ref, {resolution[0], resolution[1], resolution[2]}});
   contextHelp(state, bezier ? "Nodes per axis (2..8 for a Bézier lattice); the stack is re-evaluated on the new grid"
                             : "Nodes per axis (2..128); the stack is re-evaluated on the new grid");
 }
@@ -124,16 +108,16 @@ void drawPlacement(ModellerState& state, EditQueue& edits, FunctionRef ref, cons
   keyButton(state, edits, path + ".placement.translate", &pl.translate.x, 3);
   bool changed = dragVec3("Translate", pl.translate, 0.005);
   state.probe.frame("function.translate");
-  gestureItem(edits, "Move placement", changed, [ref, pl](Project& p) { ref.in(p).placement = pl; });
+  gestureItem(edits, "Move placement", changed, SetPlacement{ref, pl});
   contextHelp(state, ref.isFinal() ? "Where the final lattice sits: it moves the whole picture"
                                    : "Where the grid sits in the common initial grid; also: drag it in the IFS view");
   keyButton(state, edits, path + ".placement.rotate", &pl.rotate.x, 3);
   changed = dragVec3("Rotate", pl.rotate, 0.5, -360.0, 360.0, "%.1f°");
-  gestureItem(edits, "Rotate placement", changed, [ref, pl](Project& p) { ref.in(p).placement = pl; });
+  gestureItem(edits, "Rotate placement", changed, SetPlacement{ref, pl});
   keyButton(state, edits, path + ".placement.scale", &pl.scale.x, 3);
   changed = dragVec3("Scale", pl.scale, 0.005, -4.0, 4.0);
   state.probe.frame("function.scale");
-  gestureItem(edits, "Scale placement", changed, [ref, pl](Project& p) { ref.in(p).placement = pl; });
+  gestureItem(edits, "Scale placement", changed, SetPlacement{ref, pl});
 }
 
 /// The final function's own settings: how its lattice maps points, and its colour blend.
@@ -146,8 +130,7 @@ void drawFinalSettings(ModellerState& state, EditQueue& edits, const Function& f
   if (ImGui::BeginCombo("Interpolation", labels[bezier ? 1 : 0])) {
     if (ImGui::Selectable(labels[0], !bezier) && bezier) {
       state.finalFunctionMessage.clear();
-      edits.commit("Trilinear final lattice",
-                   [ref](Project& p) { ref.in(p).interpolation = LatticeInterpolation::Trilinear; });
+      edits.commit(SetInterpolation{ref, LatticeInterpolation::Trilinear});
     }
     state.probe.item("final.interpolation.trilinear");
     contextHelp(state, "Each cell of the lattice maps its part of X trilinearly: what you see in the grid views");
@@ -159,8 +142,7 @@ void drawFinalSettings(ModellerState& state, EditQueue& edits, const Function& f
     if (picked && !bezier) {
       if (fitsBezier) {
         state.finalFunctionMessage.clear();
-        edits.commit("Bézier final lattice",
-                     [ref](Project& p) { ref.in(p).interpolation = LatticeInterpolation::Bezier; });
+        edits.commit(SetInterpolation{ref, LatticeInterpolation::Bezier});
       } else {
         char text[200];
         std::snprintf(
@@ -189,8 +171,7 @@ void drawFinalSettings(ModellerState& state, EditQueue& edits, const Function& f
     // An imported flame's final xform also blends the colour (flam3); a new final function does not.
     float color[3] = {float(f.color.x), float(f.color.y), float(f.color.z)};
     const bool changed = ImGui::ColorEdit3("Color", color, ImGuiColorEditFlags_Float);
-    gestureItem(edits, "Final function color", changed,
-                [ref, color](Project& p) { ref.in(p).color = Vec3(color[0], color[1], color[2]); });
+    gestureItem(edits, "Final function color", changed, SetFunctionColor{ref, Vec3(color[0], color[1], color[2])});
     contextHelp(state, "Each point's colour moves towards this one by the function's color speed");
   } else {
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyle().Colors[ImGuiCol_TextDisabled]);
@@ -206,7 +187,7 @@ void addFinalFunction(ModellerState& state, EditQueue& edits) {
     state.activate(FunctionRef::finalFunction());
     return;
   }
-  edits.commit("Add final function", [](Project& p) { p.final_function = identityFinalFunction(); });
+  edits.commit(AddFinalFunction{});
   edits.after([&state] {
     state.finalSelection.clear();
     state.finalFunctionMessage.clear();
@@ -216,7 +197,7 @@ void addFinalFunction(ModellerState& state, EditQueue& edits) {
 
 void deleteFinalFunction(ModellerState& state, EditQueue& edits) {
   if (!state.document.project().final_function) return;
-  edits.commit("Remove final function", [](Project& p) { removeFinalFunction(p); });
+  edits.commit(RemoveFinalFunction{});
   edits.after([&state] {
     state.finalFunctionMessage.clear();
     state.clampIndices();  // the last function becomes active where the final one was
@@ -229,21 +210,8 @@ void addFunction(ModellerState& state, EditQueue& edits) {
     state.error("An IFS has at most " + std::to_string(limits::kMaxFunctions) + " functions.");
     return;
   }
-  Function f;
-  f.name = uniqueName(p, "f");
-  f.placement.scale = Vec3(0.5);
-  f.color = newFunctionColor(p.functions.size());
-  f.palette_index = p.functions.empty() ? 0.0 : std::min(1.0, double(p.functions.size()) / 4.0);
-  if (p.space) {
-    // A free-form IFS takes matrix functions: start with "halfway to the centroid of the control
-    // points", a contraction the artist then edits in the Matrices window.
-    const std::size_t m = p.space->control_points.size();
-    f.kind = FunctionKind::Matrix;
-    f.matrix.assign(m, std::vector<double>(m, 0.5 / double(m)));
-    for (std::size_t i = 0; i < m; ++i) f.matrix[i][i] += 0.5;
-  }
   const int index = int(p.functions.size());
-  edits.commit("Add function", [f](Project& pr) { insertFunction(pr, pr.functions.size(), f); });
+  edits.commit(AddFunction{newGridFunction(p)});
   edits.after([&state, index] { state.activate(FunctionRef(index)); });
 }
 
@@ -257,23 +225,9 @@ void addSetFunction(ModellerState& state, EditQueue& edits, FunctionKind kind) {
     state.error("A free-form IFS takes matrix functions only.");
     return;
   }
-  // A ball of radius 0.3 at the origin: well inside X and visible at once; the artist then moves
-  // it or picks another set in the set editor.
-  Function f;
-  f.kind = kind;
-  f.name = uniqueName(p, kind == FunctionKind::Median ? "median" : "cond");
-  f.set.shape = SetShape::Sphere;
-  f.set.center = Vec3{0.0};
-  f.set.radius = 0.3;
-  // The other shapes start at the ball's size, so switching the shape keeps the set in place.
-  f.set.size = Vec3{0.6};
-  f.set.major = 0.25;
-  f.set.minor = 0.08;
-  f.color = newFunctionColor(p.functions.size());
-  f.palette_index = p.functions.empty() ? 0.0 : std::min(1.0, double(p.functions.size()) / 4.0);
+  // The artist then moves the new set or picks another in the set editor.
   const int index = int(p.functions.size());
-  const std::string label = kind == FunctionKind::Median ? "Add median function" : "Add condensation function";
-  edits.commit(label, [f](Project& pr) { insertFunction(pr, pr.functions.size(), f); });
+  edits.commit(AddFunction{newSetFunction(p, kind)});
   edits.after([&state, index] { state.activate(FunctionRef(index)); });
 }
 
@@ -308,11 +262,7 @@ void drawFunctionsPanel(ModellerState& state, EditQueue& edits) {
   ImGui::SameLine();
   ImGui::BeginDisabled(finalActive);
   if (ImGui::Button("Duplicate") && count < limits::kMaxFunctions) {
-    Function copy = project.functions[std::size_t(active)];
-    copy.name = uniqueName(project, copy.name + "_");
-    edits.commit("Duplicate function", [copy, active](Project& p) {
-      insertFunction(p, std::size_t(active + 1), copy);
-    });
+    edits.commit(DuplicateFunction{active});
     edits.after([&state, active] { state.activeFunction = FunctionRef(active + 1); });
   }
   ImGui::EndDisabled();
@@ -323,7 +273,7 @@ void drawFunctionsPanel(ModellerState& state, EditQueue& edits) {
     if (finalActive) {
       deleteFinalFunction(state, edits);
     } else {
-      edits.commit("Delete function", [active](Project& p) { eraseFunction(p, std::size_t(active)); });
+      edits.commit(RemoveFunction{active});
       edits.after([&state] {
         state.activeOp = -1;
         state.clampIndices();
@@ -336,7 +286,7 @@ void drawFunctionsPanel(ModellerState& state, EditQueue& edits) {
   ImGui::SameLine();
   ImGui::BeginDisabled(finalActive || active == 0);
   if (ImGui::ArrowButton("##fup", ImGuiDir_Up)) {
-    edits.commit("Move function up", [active](Project& p) { swapFunctions(p, std::size_t(active), std::size_t(active - 1)); });
+    edits.commit(MoveFunction{active, active - 1});
     state.activeFunction = FunctionRef(active - 1);
     std::swap(state.selections[std::size_t(active)], state.selections[std::size_t(active - 1)]);
   }
@@ -344,7 +294,7 @@ void drawFunctionsPanel(ModellerState& state, EditQueue& edits) {
   ImGui::SameLine();
   ImGui::BeginDisabled(finalActive || active + 1 >= count);
   if (ImGui::ArrowButton("##fdown", ImGuiDir_Down)) {
-    edits.commit("Move function down", [active](Project& p) { swapFunctions(p, std::size_t(active), std::size_t(active + 1)); });
+    edits.commit(MoveFunction{active, active + 1});
     state.activeFunction = FunctionRef(active + 1);
     std::swap(state.selections[std::size_t(active)], state.selections[std::size_t(active + 1)]);
   }
@@ -395,26 +345,23 @@ void drawFunctionsPanel(ModellerState& state, EditQueue& edits) {
   double weight = f.weight;
   keyButton(state, edits, fpath + ".weight", &weight);
   bool changed = dragDouble("Weight", weight, 0.01, 0.0, 1000.0, "%.3f");
-  gestureItem(edits, "Function weight", changed, [fi, weight](Project& p) { p.functions[std::size_t(fi)].weight = weight; });
+  gestureItem(edits, "Function weight", changed, SetFunctionWeight{activeRef, weight});
   contextHelp(state, "Probability of choosing this function is proportional to its weight");
 
   float color[3] = {float(f.color.x), float(f.color.y), float(f.color.z)};
   changed = ImGui::ColorEdit3("Color", color, ImGuiColorEditFlags_Float);
-  gestureItem(edits, "Function color", changed, [fi, color](Project& p) {
-    p.functions[std::size_t(fi)].color = Vec3(color[0], color[1], color[2]);
-  });
+  gestureItem(edits, "Function color", changed, SetFunctionColor{activeRef, Vec3(color[0], color[1], color[2])});
 
   double paletteIndex = f.palette_index;
   changed = sliderDouble("Palette idx", paletteIndex, 0.0, 1.0);
-  gestureItem(edits, "Palette index", changed, [fi, paletteIndex](Project& p) { p.functions[std::size_t(fi)].palette_index = paletteIndex; });
+  gestureItem(edits, "Palette index", changed, SetPaletteIndex{activeRef, paletteIndex});
   contextHelp(state, "Structural color coordinate c_i for flame-style coloring (Draves & Reckase 2003, §5)");
 
   if (isSetKind(f.kind)) {
     // A set function has no grid: its set is edited in the set editor (the Operations panel's place).
     double colorSpeed = f.color_speed;
     changed = sliderDouble("Color speed", colorSpeed, 0.0, 1.0);
-    gestureItem(edits, "Color speed", changed,
-                [fi, colorSpeed](Project& p) { p.functions[std::size_t(fi)].color_speed = colorSpeed; });
+    gestureItem(edits, "Color speed", changed, SetColorSpeed{activeRef, colorSpeed});
     contextHelp(state, "How far each point's colour moves towards this function's palette index");
     ImGui::PopItemWidth();
     ImGui::TextWrapped("%s: its set is edited in the set editor below (in place of the operations).",

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <map>
 #include <utility>
 
 #include "edit/node_picking.h"
@@ -96,13 +95,6 @@ glm::vec4 lineColor(const Vec3& functionColor, float alpha) {
 glm::vec4 neutralLineColor(const Vec3& functionColor) {
   const glm::vec3 c = glm::mix(glm::vec3(functionColor), glm::vec3(0.62f, 0.66f, 0.74f), 0.72f);
   return {c, 0.9f};
-}
-
-Index3 nodeIndex(std::size_t n, const Index3& r) {
-  const int i = int(n % std::size_t(r[0]));
-  const int j = int((n / std::size_t(r[0])) % std::size_t(r[1]));
-  const int k = int(n / (std::size_t(r[0]) * std::size_t(r[1])));
-  return {i, j, k};
 }
 
 /// Whether the function has a grid that the grid views show and edit (a matrix function acts
@@ -377,9 +369,7 @@ void GridView::beginDrag(ModellerState& state, EditQueue& edits, dvec2 mouse) {
                                                     cam.orbit.target, size_.y);
     state.pointCenter = p;
     if (const Operation* op = state.op(); op && op->center.kind == Center::Kind::Point) {
-      const FunctionRef f = state.activeFunction;
-      const int o = state.activeOp;
-      edits.commit("Place center", [=](Project& pr) { f.in(pr).ops[std::size_t(o)].center.point = p; });
+      edits.commit(PlaceCenter{state.activeFunction, state.activeOp, p});
     }
     state.info("Center point placed at (" + std::to_string(p.x).substr(0, 6) + ", " + std::to_string(p.y).substr(0, 6) +
                ", " + std::to_string(p.z).substr(0, 6) + ")");
@@ -429,28 +419,9 @@ void GridView::updateDrag(ModellerState& state, EditQueue& edits, dvec2 mouse) {
     case Drag::Nodes: {
       if (firstMove) edits.begin("Move nodes");
       const Vec3 d = camera(state).dragDelta(delta.x, delta.y, anchor_, size_.y);
-      const auto& mask = state.selectionMask();
-      const Index3 res = dragFunction_.resolution;
-      Function fn = dragFunction_;
       // Successive drags extend one trailing `nodes` op instead of stacking many.
-      const bool reuse = !fn.ops.empty() && std::holds_alternative<NodesOp>(fn.ops.back().params) &&
-                         !fn.ops.back().muted && fn.ops.back().selection.empty();
-      if (!reuse) {
-        fn.ops.emplace_back();
-        fn.ops.back().params.emplace<NodesOp>();
-      }
-      auto& moves = std::get<NodesOp>(fn.ops.back().params).moves;
-      std::map<Index3, std::size_t> where;
-      for (std::size_t m = 0; m < moves.size(); ++m) where[moves[m].index] = m;
-      for (std::size_t n = 0; n < mask.size(); ++n) {
-        if (!mask[n]) continue;
-        const Index3 idx = nodeIndex(n, res);
-        if (auto it = where.find(idx); it != where.end()) moves[it->second].displacement += d;
-        else moves.push_back({idx, d});
-      }
-      const int opIndex = int(fn.ops.size()) - 1;
-      edits.update([f, fn](Project& p) { f.in(p) = fn; });
-      state.activeOp = opIndex;
+      edits.update(MoveNodes{f, dragFunction_, state.selectionMask(), d});
+      state.activeOp = nodeMoveOperation(dragFunction_);
       break;
     }
     case Drag::Handle: {
@@ -468,7 +439,7 @@ void GridView::updateDrag(ModellerState& state, EditQueue& edits, dvec2 mouse) {
         op.center.point = p;
         state.pointCenter = p;
       }
-      edits.update([f, fn](Project& pr) { f.in(pr) = fn; });
+      edits.update(SetOperation{f, state.activeOp, op});
       break;
     }
     case Drag::Placement: {
@@ -480,21 +451,19 @@ void GridView::updateDrag(ModellerState& state, EditQueue& edits, dvec2 mouse) {
         if (firstMove) edits.begin("Move set");
         CondensationSet set = dragFunction_.set;
         (shape == SetShape::Mesh ? set.placement.translate : set.center) += d;
-        edits.update([f, set](Project& p) { f.in(p).set = set; });
+        edits.update(SetCondensationSet{f, set});
         break;
       }
       if (firstMove) edits.begin("Move placement");
       const Vec3 t = dragFunction_.placement.translate + d;
-      edits.update([f, t](Project& p) { f.in(p).placement.translate = t; });
+      edits.update(MovePlacement{f, t});
       break;
     }
     case Drag::ControlPoint: {
       if (firstMove) edits.begin("Move control point");
       const Vec3 p = anchor_ + camera(state).dragDelta(delta.x, delta.y, anchor_, size_.y);
       const std::size_t j = std::size_t(controlPoint_);
-      edits.update([j, p](Project& pr) {
-        if (pr.space && j < pr.space->control_points.size()) pr.space->control_points[j] = p;
-      });
+      edits.update(MoveControlPoint{j, p});
       break;
     }
     case Drag::None: break;
@@ -571,7 +540,7 @@ void GridView::frame(ModellerState& state, EditQueue& edits) {
     ViewCamera vc{ViewAxis::User, state.document.project().camera};
     vc.frame(lo, hi, size_.x, size_.y);
     const Camera cam = vc.orbit;
-    edits.commit("Frame preview camera", [cam](Project& p) { p.camera = cam; });
+    edits.commit("Frame preview camera", SetCamera{cam});
   } else {
     camera_.frame(lo, hi, size_.x, size_.y);
   }

@@ -83,24 +83,11 @@ void keyButton(ModellerState& state, EditQueue& edits, const std::string& id, co
   }
   if (clicked) {
     if (keyState == KeyState::KeyHere) {
-      edits.commit("Remove key", [numbers](Project& p) {
-        for (const KeyedNumber& n : numbers) {
-          const auto it = p.tracks.find(n.path);
-          if (it == p.tracks.end()) continue;
-          it->second.removeKey(p.time, kSameTime);
-          if (it->second.keys.empty()) p.tracks.erase(it);
-        }
-      });
+      RemoveKeys remove;
+      for (const KeyedNumber& n : numbers) remove.paths.push_back(n.path);
+      edits.commit(std::move(remove));
     } else {
-      edits.commit("Set key", [numbers](Project& p) {
-        for (const KeyedNumber& n : numbers) {
-          KeyframeTrack& track = p.tracks[n.path];
-          Keyframe k{p.time, n.value, KeyInterpolation::Linear};
-          for (const Keyframe& old : track.keys)
-            if (std::abs(old.t - p.time) <= kSameTime) k.interp = old.interp;
-          track.setKey(k);
-        }
-      });
+      edits.commit(SetKeys{numbers});
     }
   }
   ImGui::SameLine(0.0f, ImGui::GetStyle().ItemInnerSpacing.x);

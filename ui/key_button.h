@@ -3,16 +3,11 @@
 #include <string>
 #include <vector>
 
+#include "edit/key_edits.h"
 #include "ui/edit_queue.h"
 #include "ui/modeller_state.h"
 
 namespace gridifs::ui {
-
-/// A number of the project by its path, with its current value.
-struct KeyedNumber {
-  std::string path;
-  double value = 0.0;
-};
 
 /// How a parameter stands on the timeline at the current time.
 enum class KeyState { None, Animated, KeyHere };  // not animated; animated, between keys; a key now

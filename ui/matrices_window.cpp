@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <functional>
 
 #include "model/final_function.h"
 #include "model/free_form.h"
@@ -19,21 +18,11 @@
 namespace gridifs::ui {
 namespace {
 
-enum class TransitionPreset { All, NoRepeats, Cycle };
-
-std::vector<std::vector<double>> transitionPreset(std::size_t n, TransitionPreset preset) {
-  std::vector<std::vector<double>> t(n, std::vector<double>(n, preset == TransitionPreset::Cycle ? 0.0 : 1.0));
-  for (std::size_t i = 0; i < n; ++i) {
-    if (preset == TransitionPreset::NoRepeats && n > 1) t[i][i] = 0.0;
-    if (preset == TransitionPreset::Cycle) t[i][(i + 1) % n] = 1.0;
-  }
-  return t;
-}
-
 /// One cell of a matrix: drag sets the value (one gesture), a click without a drag toggles
-/// between 0 and 1 when `toggles`.
+/// between 0 and 1 when `toggles`. `set` makes the named edit that sets the cell to a value.
+template <class SetCell>
 void matrixCell(EditQueue& edits, const char* id, double value, double minimum, bool toggles, const char* what,
-                const std::function<void(Project&, double)>& set) {
+                const SetCell& set) {
   float v = float(value);
   const bool zero = value == 0.0;
   if (zero) ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
@@ -41,8 +30,8 @@ void matrixCell(EditQueue& edits, const char* id, double value, double minimum, 
   if (zero) ImGui::PopStyleColor();
   const bool clicked = toggles && ImGui::IsItemDeactivated() && !ImGui::IsItemDeactivatedAfterEdit() &&
                        ImGui::GetIO().MouseDragMaxDistanceSqr[0] < 4.0f;
-  gestureItem(edits, what, changed, [set, v](Project& p) { set(p, double(v)); });
-  if (clicked) edits.commit(std::string("Toggle ") + what, [set, zero](Project& p) { set(p, zero ? 1.0 : 0.0); });
+  gestureItem(edits, what, changed, set(double(v)));
+  if (clicked) edits.commit(std::string("Toggle ") + what, set(zero ? 1.0 : 0.0));
 }
 
 void drawTransitions(ModellerState& state, EditQueue& edits) {
@@ -52,10 +41,9 @@ void drawTransitions(ModellerState& state, EditQueue& edits) {
   bool restricted = !project.transitions.empty();
   if (ImGui::Checkbox("Restrict transitions", &restricted)) {
     if (restricted)
-      edits.commit("Restrict transitions",
-                   [](Project& p) { p.transitions = transitionPreset(p.functions.size(), TransitionPreset::All); });
+      edits.commit("Restrict transitions", SetTransitionPreset{TransitionPreset::All});
     else
-      edits.commit("Remove transition matrix", [](Project& p) { p.transitions.clear(); });
+      edits.commit(RemoveTransitions{});
   }
   state.probe.item("matrices.restrict");
   if (ImGui::IsItemHovered())
@@ -69,9 +57,7 @@ void drawTransitions(ModellerState& state, EditQueue& edits) {
                  {"Cycle i to i+1", TransitionPreset::Cycle}};
   for (const auto& p : presets) {
     if (ImGui::SmallButton(p.label))
-      edits.commit(std::string("Transitions: ") + p.label, [preset = p.preset](Project& pr) {
-        pr.transitions = transitionPreset(pr.functions.size(), preset);
-      });
+      edits.commit(std::string("Transitions: ") + p.label, SetTransitionPreset{p.preset});
     state.probe.item(std::string("matrices.transitions.") + p.label);
     ImGui::SameLine();
   }
@@ -95,10 +81,9 @@ void drawTransitions(ModellerState& state, EditQueue& edits) {
         ImGui::TableNextColumn();
         ImGui::PushID(int(i * n + j));
         ImGui::SetNextItemWidth(cell);
-        matrixCell(edits, "##t", project.transitions[i][j], 0.0, true, "transition weight",
-                   [i, j](Project& p, double v) {
-                     if (i < p.transitions.size() && j < p.transitions[i].size()) p.transitions[i][j] = v;
-                   });
+        matrixCell(edits, "##t", project.transitions[i][j], 0.0, true, "transition weight", [i, j](double v) {
+          return SetTransitionWeight{i, j, v};
+        });
         state.probe.item("matrices.transition." + std::to_string(i) + "." + std::to_string(j));
         ImGui::PopID();
       }
@@ -137,20 +122,12 @@ void drawPresets(ModellerState& state, EditQueue& edits) {
     options.roughness = roughness;
     options.seed = std::uint64_t(std::max(seed, 0));
     const FreeFormPreset preset = presets[which];
-    edits.commit(std::string("Preset: ") + labels[which], [preset, options](Project& p) {
-      applyFreeFormPreset(p, preset, options);
-      removeFinalFunction(p);  // the preset's points sit where a lattice around X would not expect them
-    });
+    edits.commit(std::string("Preset: ") + labels[which], ApplyFreeFormPreset{preset, options});
     state.activeFunction = FunctionRef(0);
     state.activeOp = -1;
   }
   if (state.document.project().space && ImGui::Button("Back to a grid IFS")) {
-    edits.commit("Back to a grid IFS", [](Project& p) {
-      const Project fresh = defaultNewProject();
-      p.space.reset();
-      p.transitions.clear();
-      p.functions = fresh.functions;
-    });
+    edits.commit(BackToGridIfs{});
     state.activeFunction = FunctionRef(0);
     state.activeOp = -1;
   }
@@ -168,9 +145,7 @@ void drawControlPoints(ModellerState& state, EditQueue& edits) {
       char label[32];
       std::snprintf(label, sizeof label, "p%zu", j);
       const bool changed = ImGui::DragFloat3(label, v, 0.005f, -1e3f, 1e3f, "%.3f");
-      gestureItem(edits, "Move control point", changed, [j, x = Vec3{v[0], v[1], v[2]}](Project& p) {
-        if (p.space && j < p.space->control_points.size()) p.space->control_points[j] = x;
-      });
+      gestureItem(edits, "Move control point", changed, MoveControlPoint{j, Vec3{v[0], v[1], v[2]}});
       state.probe.item("matrices.point." + std::to_string(j));
       ImGui::PopID();
     }
@@ -196,12 +171,8 @@ void drawFunctionMatrix(ModellerState& state, EditQueue& edits) {
         ImGui::SetNextItemWidth(cell);
         // The edited entry is balanced by the row's diagonal (or last) entry, so the row keeps
         // summing to 1 and every intermediate state of a drag is valid.
-        matrixCell(edits, "##m", f.matrix[i][j], -1e6, false, "matrix entry", [fi, i, j](Project& p, double v) {
-          if (fi >= p.functions.size() || i >= p.functions[fi].matrix.size()) return;
-          auto& row = p.functions[fi].matrix[i];
-          const std::size_t balance = j != i ? i : (i + 1) % row.size();
-          row[balance] += row[j] - v;
-          row[j] = v;
+        matrixCell(edits, "##m", f.matrix[i][j], -1e6, false, "matrix entry", [fi = int(fi), i, j](double v) {
+          return SetMatrixEntry{fi, i, j, v};
         });
         state.probe.item("matrices.entry." + std::to_string(i) + "." + std::to_string(j));
         ImGui::PopID();

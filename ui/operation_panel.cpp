@@ -125,10 +125,7 @@ void centerAndSelection(OpEditor& e) {
     else ImGui::TextDisabled("Applies to %zu node%s (%zu box%s)", selected, selected == 1 ? "" : "s", e.op.selection.size(),
                              e.op.selection.size() == 1 ? "" : "es");
     if (ImGui::Button("Use current selection")) {
-      const Selection s = e.state.selection();
-      const FunctionRef f = e.function;
-      const int o = e.index;
-      e.edits.commit("Set operation selection", [f, o, s](Project& p) { f.in(p).ops[std::size_t(o)].selection = s; });
+      e.edits.commit(SetOperationSelection{e.function, e.index, e.state.selection()});
     }
     contextHelp(e.state, "Apply this operation to the nodes selected now (all nodes when nothing is selected)");
     ImGui::SameLine();

@@ -13,18 +13,10 @@
 namespace gridifs::ui {
 
 void OpEditor::item(const std::string& label, bool changed) {
-  const FunctionRef f = function;
-  const int o = index;
-  const Operation copy = op;
-  gestureItem(edits, label, changed, [f, o, copy](Project& p) { f.in(p).ops[std::size_t(o)] = copy; });
+  gestureItem(edits, label, changed, SetOperation{function, index, op});
 }
 
-void OpEditor::commit(const std::string& label) {
-  const FunctionRef f = function;
-  const int o = index;
-  const Operation copy = op;
-  edits.commit(label, [f, o, copy](Project& p) { f.in(p).ops[std::size_t(o)] = copy; });
-}
+void OpEditor::commit(const std::string& label) { edits.commit(label, SetOperation{function, index, op}); }
 
 namespace {
 

@@ -18,13 +18,6 @@ std::string summary(const Operation& op) {
   return s;
 }
 
-/// The keyframe tracks follow the operations when the stack changes order.
-std::string opsPath(FunctionRef function) { return function.path() + ".ops"; }
-
-void swapTracks(Project& p, FunctionRef function, int a, int b) {
-  remapTrackIndices(p.tracks, opsPath(function), [a, b](int i) { return i == a ? b : i == b ? a : i; });
-}
-
 }  // namespace
 
 void addOperation(ModellerState& state, EditQueue& edits, const OperationSpec& spec) {
@@ -38,34 +31,9 @@ void addOperation(ModellerState& state, EditQueue& edits, const OperationSpec& s
     state.error("A function has at most " + std::to_string(limits::kMaxOpsPerFunction) + " operations.");
     return;
   }
-  Operation op;
-  op.selection = state.selection();  // Gröller & Wegenkittl 1994, §4.4: the active subset applies to new ops
-  op.center.kind = state.newOpCenter;
-  op.center.point = state.pointCenter;
-  // Magnets and morphs start where the artist is working: the selection's or grid's center.
-  Vec3 anchor = state.pointCenter;
-  if (state.newOpCenter != Center::Kind::Point) {
-    const Grid& grid = state.localGrid();
-    const auto& mask = state.selectionMask();
-    Vec3 sum(0.0);
-    std::size_t n = 0;
-    const bool useMask = state.hasSelection();
-    for (std::size_t i = 0; i < grid.nodeCount(); ++i)
-      if (!useMask || mask[i]) {
-        sum += grid.nodes()[i];
-        ++n;
-      }
-    anchor = n ? sum / double(n) : Vec3(0.0);
-  }
-  op.params = spec.defaults;
-  if (spec.placeAt) spec.placeAt(op.params, anchor);
-  const FunctionRef fi = state.activeFunction;
+  const Operation op = newOperation(spec, state.selection(), state.newOpCenter, state.pointCenter, state.localGrid());
   const int at = state.activeOp < 0 ? int(f.ops.size()) : state.activeOp + 1;
-  edits.commit(std::string("Add ") + spec.title, [fi, at, op](Project& p) {
-    auto& ops = fi.in(p).ops;
-    ops.insert(ops.begin() + at, op);
-    remapTrackIndices(p.tracks, opsPath(fi), [at](int i) { return i >= at ? i + 1 : i; });
-  });
+  edits.commit(AddOperation{state.activeFunction, at, op});
   edits.after([&state, at] { state.activeOp = at; });
 }
 
@@ -73,11 +41,7 @@ void deleteActiveOperation(ModellerState& state, EditQueue& edits) {
   if (!state.op()) return;
   const FunctionRef fi = state.activeFunction;
   const int oi = state.activeOp;
-  edits.commit("Delete operation", [fi, oi](Project& p) {
-    auto& ops = fi.in(p).ops;
-    ops.erase(ops.begin() + oi);
-    remapTrackIndices(p.tracks, opsPath(fi), [oi](int i) { return i == oi ? -1 : i > oi ? i - 1 : i; });
-  });
+  edits.commit(RemoveOperation{fi, oi});
   edits.after([&state, oi] {
     state.activeOp = oi - 1;
     state.clampIndices();
@@ -170,9 +134,7 @@ void drawOperationStackPanel(ModellerState& state, EditQueue& edits) {
       const Operation& op = f.ops[std::size_t(o)];
       ImGui::PushID(o);
       bool on = !op.muted;
-      if (ImGui::Checkbox("##on", &on))
-        edits.commit(on ? "Unmute operation" : "Mute operation",
-                     [fi, o, on](Project& p) { fi.in(p).ops[std::size_t(o)].muted = !on; });
+      if (ImGui::Checkbox("##on", &on)) edits.commit(SetOperationMuted{fi, o, !on});
       contextHelp(state, "Mute: skip this operation when evaluating the stack");
       ImGui::SameLine();
       char label[64];
@@ -193,34 +155,21 @@ void drawOperationStackPanel(ModellerState& state, EditQueue& edits) {
   const int active = state.activeOp;
   ImGui::BeginDisabled(active <= 0);
   if (ImGui::ArrowButton("##up", ImGuiDir_Up)) {
-    edits.commit("Move operation up", [fi, active](Project& p) {
-      auto& ops = fi.in(p).ops;
-      std::swap(ops[std::size_t(active)], ops[std::size_t(active - 1)]);
-      swapTracks(p, fi, active, active - 1);
-    });
+    edits.commit(MoveOperation{fi, active, active - 1});
     state.activeOp = active - 1;
   }
   ImGui::EndDisabled();
   ImGui::SameLine();
   ImGui::BeginDisabled(active < 0 || active + 1 >= count);
   if (ImGui::ArrowButton("##down", ImGuiDir_Down)) {
-    edits.commit("Move operation down", [fi, active](Project& p) {
-      auto& ops = fi.in(p).ops;
-      std::swap(ops[std::size_t(active)], ops[std::size_t(active + 1)]);
-      swapTracks(p, fi, active, active + 1);
-    });
+    edits.commit(MoveOperation{fi, active, active + 1});
     state.activeOp = active + 1;
   }
   ImGui::EndDisabled();
   ImGui::SameLine();
   ImGui::BeginDisabled(active < 0);
   if (ImGui::Button("Duplicate") && count < limits::kMaxOpsPerFunction) {
-    const Operation copy = f.ops[std::size_t(active)];
-    edits.commit("Duplicate operation", [fi, active, copy](Project& p) {
-      auto& ops = fi.in(p).ops;
-      ops.insert(ops.begin() + active + 1, copy);
-      remapTrackIndices(p.tracks, opsPath(fi), [active](int i) { return i > active ? i + 1 : i; });
-    });
+    edits.commit(DuplicateOperation{fi, active});
     state.activeOp = active + 1;
   }
   ImGui::SameLine();

@@ -35,7 +35,7 @@ void OrbitController::dragProject(EditQueue& edits, glm::dvec2 mouse, ViewAxis a
   if (motion_ == Motion::None) return;
   if (firstMove) edits.begin(motion_ == Motion::Orbit ? "Orbit preview camera" : "Pan preview camera");
   const Camera cam = dragged(mouse, axis, viewHeight);
-  edits.update([cam](Project& p) { p.camera = cam; });
+  edits.update(SetCamera{cam});
 }
 
 Camera OrbitController::zoomed(Camera camera, float wheel, double minDistance) {
@@ -46,7 +46,7 @@ Camera OrbitController::zoomed(Camera camera, float wheel, double minDistance) {
 void OrbitController::zoomProject(const Camera& current, EditQueue& edits, float wheel, double now) {
   if (wheelUntil_ < 0.0) edits.begin("Zoom preview camera");
   const double distance = zoomed(current, wheel, 0.05).distance;
-  edits.update([distance](Project& p) { p.camera.distance = distance; });
+  edits.update(SetCameraDistance{distance});
   wheelUntil_ = now + kWheelRest;
 }
 

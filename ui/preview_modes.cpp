@@ -69,10 +69,7 @@ void PreviewModes::buildToolbar(ModellerState& state, EditQueue& edits) {
                              : state.previewMode == PreviewMode::Shaded ? DisplayMode::Shaded
                                                                         : DisplayMode::ZBuffer;
     if (want != state.document.project().render.mode) {
-      edits.commit(want == DisplayMode::Flame    ? "Flame display"
-                   : want == DisplayMode::Shaded ? "Shaded display"
-                                                 : "Z-buffer display",
-                   [want](Project& p) { p.render.mode = want; });
+      edits.commit(SetDisplayMode{want});
       projectMode_ = want;
     }
   }

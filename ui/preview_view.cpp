@@ -41,21 +41,19 @@ void PreviewView::build(ModellerState& state, EditQueue& edits, float framebuffe
   if (ImGui::BeginCombo("##budget", current >= 0 ? budgetNames[current] : preview)) {
     for (int i = 0; i < 5; ++i)
       if (ImGui::Selectable(budgetNames[i], i == current)) {
-        const std::int64_t n = budgets[i];
-        edits.commit("Sample budget", [n](Project& p) { p.render.samples = n; });
+        edits.commit(SetSampleBudget{budgets[i]});
       }
     ImGui::EndCombo();
   }
   contextHelp(state, "Sample budget: how many chaos-game points the preview renders before it stops");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.0f);
-  settingSlider(state, edits, renderSettingsTable(), "depth_cue", project.render,
-                +[](Project& p) -> RenderSettings& { return p.render; }, {.id = "##cue", .probe = "preview"});
+  settingSlider(state, edits, SettingGroup::Render, "depth_cue", project.render, {.id = "##cue", .probe = "preview"});
   ImGui::SameLine();
   const SettingSpec& background = renderSettingsTable().field("background");
   float bg[3] = {float(project.render.background.x), float(project.render.background.y), float(project.render.background.z)};
   const bool changed = ImGui::ColorEdit3(background.label, bg, ImGuiColorEditFlags_NoInputs);
-  gestureItem(edits, background.label, changed, [bg](Project& p) { p.render.background = Vec3(bg[0], bg[1], bg[2]); });
+  gestureItem(edits, background.label, changed, SetBackground{Vec3(bg[0], bg[1], bg[2])});
   contextHelp(state, background.tooltip);
 
   // Display mode and its controls (ui/preview_modes.cpp).
@@ -132,9 +130,7 @@ void PreviewView::build(ModellerState& state, EditQueue& edits, float framebuffe
         elevation = std::clamp(elevation, -1.55, 1.5705);
         const Vec3 direction(std::cos(elevation) * std::cos(azimuth), std::cos(elevation) * std::sin(azimuth),
                              std::sin(elevation));
-        edits.update([direction](Project& p) {
-          if (!p.render.shading.lights.empty()) p.render.shading.lights[0].direction = direction;
-        });
+        edits.update(SetLightDirection{0, direction});
       }
     } else {
       if (dragMoved_) edits.end();

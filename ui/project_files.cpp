@@ -148,7 +148,7 @@ bool ProjectFiles::importFlame(const fs::path& file, const std::string& genome) 
     // Inline palettes are kept with the application's state: the document has no folder yet.
     FlameFileImport imported = importFlameFile(file, genome, folders_.state / "palettes");
     state_.document.reset(defaultNewProject());
-    state_.document.edit("Import flame", [&](Project& p) { p = std::move(imported.project); });
+    state_.document.apply("Import flame", ReplaceProject{std::move(imported.project)});
     state_.forgetDocumentViewState();
     std::string message = "Imported " + imported.description;
     for (const std::string& w : imported.warnings) message += "; " + w;
@@ -354,7 +354,7 @@ void ProjectFiles::draw(EditQueue& edits) {
         }
         state_.document.reset(base, original);
         state_.forgetDocumentViewState();
-        edits.commit("Recover unsaved work", [recovered](Project& p) { p = recovered; });
+        edits.commit("Recover unsaved work", ReplaceProject{recovered});
         state_.info("Recovered unsaved work from " + r.when + "; save it to keep it.");
       } catch (const std::exception& e) {
         showError("Could not recover", e.what());

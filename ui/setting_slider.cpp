@@ -18,15 +18,13 @@ bool settingSliderWidget(const char* id, const SettingSpec& spec, double& value,
   return ImGui::SliderScalar(id, ImGuiDataType_Double, &value, &min, &max, spec.format, flags);
 }
 
-void settingSlider(ModellerState& state, EditQueue& edits, const SettingSpec& spec, double value,
-                   std::function<void*(Project&)> locate, const SettingSliderPlace& place) {
+void settingSlider(ModellerState& state, EditQueue& edits, const SettingSpec& spec, double value, SettingGroup group,
+                   const SettingSliderPlace& place, std::size_t light) {
   const bool own = place.min < place.max;
   const bool changed = settingSliderWidget(place.id ? place.id : spec.label, spec, value,
                                            own ? place.min : spec.sliderMin, own ? place.max : spec.sliderMax);
   state.probe.frame(place.probe + "." + spec.label);
-  const SettingSpec* field = &spec;  // tables are static and never change
-  gestureItem(edits, spec.label, changed,
-              [field, value, locate = std::move(locate)](Project& p) { field->setNumber(locate(p), value); });
+  gestureItem(edits, spec.label, changed, SetSettingNumber{group, spec.key, value, light});
   contextHelp(state, spec.tooltip);
 }
 

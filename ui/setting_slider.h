@@ -2,9 +2,9 @@
 // The slider of one number in a settings table (model/settings_tables.h): its range, format,
 // logarithmic flag, label (the undo step and the probe id) and tooltip all come from the table,
 // so the Tone popup and the Shading panel draw what reading and validation accept.
-#include <functional>
 #include <string>
 
+#include "edit/settings_edits.h"
 #include "model/settings_table.h"
 #include "ui/edit_queue.h"
 #include "ui/modeller_state.h"
@@ -23,18 +23,17 @@ struct SettingSliderPlace {
 };
 
 /// A slider that edits one number field of a settings group as one gesture (one undo step named
-/// by the table's label; its tooltip on hover). `value` is the field's current value; `locate`
-/// finds the group inside the project the edit changes.
-void settingSlider(ModellerState& state, EditQueue& edits, const SettingSpec& spec, double value,
-                   std::function<void*(Project&)> locate, const SettingSliderPlace& place);
+/// by the table's label; its tooltip on hover). `value` is the field's current value; `group`
+/// (and `light`, for a light's field) says which group of the project the edit changes.
+void settingSlider(ModellerState& state, EditQueue& edits, const SettingSpec& spec, double value, SettingGroup group,
+                   const SettingSliderPlace& place, std::size_t light = 0);
 
-/// The same for field `key` of `table`, read from `current`.
+/// The same for field `key` of `group`'s table, read from `current`.
 template <class Group>
-void settingSlider(ModellerState& state, EditQueue& edits, const SettingTableOf<Group>& table, const char* key,
-                   const Group& current, Group& (*locate)(Project&), const SettingSliderPlace& place) {
-  const SettingSpec& spec = table.field(key);
-  settingSlider(
-      state, edits, spec, spec.number(&current), [locate](Project& p) -> void* { return &locate(p); }, place);
+void settingSlider(ModellerState& state, EditQueue& edits, SettingGroup group, const char* key, const Group& current,
+                   const SettingSliderPlace& place) {
+  const SettingSpec& spec = settingTable(group).field(key);
+  settingSlider(state, edits, spec, spec.number(&current), group, place);
 }
 
 }  // namespace gridifs::ui

@@ -16,11 +16,6 @@ namespace {
 
 const double kAzimuthMin = -180.0, kAzimuthMax = 180.0, kElevationMin = -89.0, kElevationMax = 90.0;
 
-ShadingSettings& shadingOf(Project& p) { return p.render.shading; }
-AmbientOcclusionSettings& occlusionOf(Project& p) { return p.render.shading.ao; }
-FogSettings& fogOf(Project& p) { return p.render.shading.fog; }
-DepthOfFieldSettings& depthOfFieldOf(Project& p) { return p.render.shading.dof; }
-
 /// A full-width slider with its label hidden: the format names the value ("ambient %.2f").
 SettingSliderPlace fullWidth(const char* id) {
   ImGui::SetNextItemWidth(-ImGui::GetFontSize() * 0.5f);
@@ -51,45 +46,32 @@ void drawLight(ModellerState& state, EditQueue& edits, std::size_t index, const 
   bool changed = ImGui::SliderScalar("##azimuth", ImGuiDataType_Double, &azimuth, &kAzimuthMin, &kAzimuthMax,
                                      "azimuth %.0f°", ImGuiSliderFlags_AlwaysClamp);
   state.probe.frame("shading.light" + std::to_string(index) + ".azimuth");
-  gestureItem(edits, "Light direction", changed, [index, azimuth, elevation](Project& p) {
-    p.render.shading.lights.at(index).direction = fromAngles(azimuth, elevation);
-  });
+  gestureItem(edits, "Light direction", changed, SetLightDirection{index, fromAngles(azimuth, elevation)});
   contextHelp(state,
               "Where the light comes from, around the vertical axis (Alt+drag on the preview moves the key light)");
   ImGui::SetNextItemWidth(width);
   changed = ImGui::SliderScalar("##elevation", ImGuiDataType_Double, &elevation, &kElevationMin, &kElevationMax,
                                 "elevation %.0f°", ImGuiSliderFlags_AlwaysClamp);
   state.probe.frame("shading.light" + std::to_string(index) + ".elevation");
-  gestureItem(edits, "Light direction", changed, [index, azimuth, elevation](Project& p) {
-    p.render.shading.lights.at(index).direction = fromAngles(azimuth, elevation);
-  });
+  gestureItem(edits, "Light direction", changed, SetLightDirection{index, fromAngles(azimuth, elevation)});
   contextHelp(state, "How high the light stands above the horizon (90°: straight above)");
   const SettingTableOf<ShadingLight>& table = shadingLightTable();
   const SettingSpec& colorSpec = table.field("color");
   float color[3] = {float(light.color.x), float(light.color.y), float(light.color.z)};
   changed = ImGui::ColorEdit3("##color", color, ImGuiColorEditFlags_NoInputs);
-  gestureItem(edits, colorSpec.label, changed, [index, color](Project& p) {
-    p.render.shading.lights.at(index).color = Vec3(color[0], color[1], color[2]);
-  });
+  gestureItem(edits, colorSpec.label, changed, SetLightColor{index, Vec3(color[0], color[1], color[2])});
   contextHelp(state, colorSpec.tooltip);
   ImGui::SameLine();
   ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.0f);
-  settingSlider(state, edits, table.field("intensity"), light.intensity,
-                [index](Project& p) -> void* { return &p.render.shading.lights.at(index); },
-                {.id = "##intensity", .probe = "shading.light" + std::to_string(index)});
+  settingSlider(state, edits, table.field("intensity"), light.intensity, SettingGroup::Light,
+                {.id = "##intensity", .probe = "shading.light" + std::to_string(index)}, index);
   bool shadows = light.shadows;
   const SettingSpec& shadowSpec = table.field("shadows");
-  if (ImGui::Checkbox(shadowSpec.label, &shadows))
-    edits.commit(shadows ? "Light casts shadows" : "Light casts no shadows",
-                 [index, shadows](Project& p) { p.render.shading.lights.at(index).shadows = shadows; });
+  if (ImGui::Checkbox(shadowSpec.label, &shadows)) edits.commit(SetLightShadows{index, shadows});
   state.probe.item("shading.light" + std::to_string(index) + ".shadows");
   contextHelp(state, shadowSpec.tooltip);
   ImGui::SameLine();
-  if (ImGui::SmallButton("Remove light"))
-    edits.commit("Remove light", [index](Project& p) {
-      auto& lights = p.render.shading.lights;
-      if (index < lights.size()) lights.erase(lights.begin() + std::ptrdiff_t(index));
-    });
+  if (ImGui::SmallButton("Remove light")) edits.commit(RemoveLight{index});
   ImGui::PopID();
 }
 
@@ -99,35 +81,27 @@ void drawShadingPanel(ModellerState& state, EditQueue& edits) {
   const ShadingSettings& s = state.document.project().render.shading;
   for (std::size_t i = 0; i < s.lights.size(); ++i) drawLight(state, edits, i, s.lights[i]);
   if (s.lights.size() < std::size_t(limits::kMaxLights)) {
-    if (ImGui::Button("Add light"))
-      edits.commit("Add light", [](Project& p) {
-        ShadingLight fill;
-        fill.direction = Vec3(-0.6, 0.8, 0.4);
-        fill.intensity = 0.4;
-        fill.shadows = false;
-        p.render.shading.lights.push_back(fill);
-      });
+    if (ImGui::Button("Add light")) edits.commit(AddLight{});
     state.probe.item("shading.add_light");
     contextHelp(state, "Add a directional light (up to 3)");
   }
 
   sectionTitle("Surface");
   for (const auto& [key, id] : {std::pair{"ambient", "##ambient"}, {"specular", "##specular"}, {"shininess", "##shininess"}})
-    settingSlider(state, edits, shadingSettingsTable(), key, s, shadingOf, fullWidth(id));
+    settingSlider(state, edits, SettingGroup::Shading, key, s, fullWidth(id));
 
   sectionTitle("Ambient occlusion");
   for (const auto& [key, id] : {std::pair{"radius", "##aoradius"}, {"strength", "##aostrength"}, {"directions", "##aodirs"}})
-    settingSlider(state, edits, ambientOcclusionTable(), key, s.ao, occlusionOf, fullWidth(id));
+    settingSlider(state, edits, SettingGroup::AmbientOcclusion, key, s.ao, fullWidth(id));
 
   sectionTitle("Fog");
   const SettingSpec& fogColor = fogTable().field("color");
   float fog[3] = {float(s.fog.color.x), float(s.fog.color.y), float(s.fog.color.z)};
   const bool fogChanged = ImGui::ColorEdit3("##fogcolor", fog, ImGuiColorEditFlags_NoInputs);
-  gestureItem(edits, fogColor.label, fogChanged,
-              [fog](Project& p) { p.render.shading.fog.color = Vec3(fog[0], fog[1], fog[2]); });
+  gestureItem(edits, fogColor.label, fogChanged, SetFogColor{Vec3(fog[0], fog[1], fog[2])});
   contextHelp(state, fogColor.tooltip);
   ImGui::SameLine();
-  settingSlider(state, edits, fogTable(), "density", s.fog, fogOf, fullWidth("##fogdensity"));
+  settingSlider(state, edits, SettingGroup::Fog, "density", s.fog, fullWidth("##fogdensity"));
 
   sectionTitle("Depth of field");
   // An aperture needs a focus distance; the first one is the camera's distance to its target.
@@ -138,14 +112,11 @@ void drawShadingPanel(ModellerState& state, EditQueue& edits) {
   const bool changed =
       settingSliderWidget("##aperture", apertureSpec, aperture, apertureSpec.sliderMin, apertureSpec.sliderMax);
   state.probe.frame(std::string("shading.") + apertureSpec.label);
-  gestureItem(edits, apertureSpec.label, changed, [aperture, focus](Project& p) {
-    p.render.shading.dof.aperture = aperture;
-    p.render.shading.dof.focus = focus;
-  });
+  gestureItem(edits, apertureSpec.label, changed, SetAperture{aperture, focus});
   contextHelp(state, apertureSpec.tooltip);
   ImGui::SetNextItemWidth(-ImGui::GetFontSize() * 0.5f);
-  settingSlider(state, edits, depthOfFieldTable().field("focus"), focus,
-                [](Project& p) -> void* { return &depthOfFieldOf(p); }, {.id = "##focus", .probe = "shading"});
+  settingSlider(state, edits, depthOfFieldTable().field("focus"), focus, SettingGroup::DepthOfField,
+                {.id = "##focus", .probe = "shading"});
 }
 
 }  // namespace gridifs::ui

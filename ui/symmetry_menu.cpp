@@ -26,10 +26,8 @@ void drawSymmetryMenu(ModellerState& state, EditQueue& edits) {
     const bool chosen = ImGui::MenuItem(c.label);
     state.probe.item("menu.symmetry." + std::to_string(c.n));
     if (chosen) {
-      const int n = c.n;
       // About the preview's view axis, so the symmetry is what the artist sees in the preview.
-      edits.commit(std::string("Add symmetry: ") + c.label,
-                   [n](Project& p) { addSymmetry(p, n, symmetryFrameForView(p.camera)); });
+      edits.commit(std::string("Add symmetry: ") + c.label, AddSymmetry{c.n});
     }
     if (ImGui::IsItemHovered())
       state.contextHelp =

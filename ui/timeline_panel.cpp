@@ -22,7 +22,7 @@ long frameOf(double t, double fps) { return std::lround(t * fps); }
 void setTime(ModellerState& state, double t) {
   if (t == state.document.project().time) return;
   try {
-    state.document.editUnrecorded([t](Project& p) { p.time = t; });
+    state.document.applyUnrecorded(SetTime{t});
   } catch (const ModelError& e) {
     state.playback.playing = false;
     state.error(e.what());
@@ -194,7 +194,7 @@ void drawTimelinePanel(ModellerState& state, EditQueue& edits) {
   AnimationSettings edited = a;
   auto commit = [&](const char* label, bool changed) {
     if (edited.end < edited.start) edited.end = edited.start;
-    gestureItem(edits, label, changed, [edited](Project& p) { p.animation = edited; });
+    gestureItem(edits, label, changed, SetAnimation{edited});
   };
   // Ranges, formats, undo names and help come from the animation's settings table.
   const SettingTableOf<AnimationSettings>& timeline = animationSettingsTable();
@@ -216,7 +216,7 @@ void drawTimelinePanel(ModellerState& state, EditQueue& edits) {
   sameLineIfRoom(ImGui::GetFrameHeight() + ImGui::CalcTextSize(loopSpec.label).x + em);
   if (ImGui::Checkbox(loopSpec.label, &loop)) {
     edited.loop = loop;
-    edits.commit(loop ? "Loop playback" : "Play once", [edited](Project& p) { p.animation = edited; });
+    edits.commit(loop ? "Loop playback" : "Play once", SetAnimation{edited});
   }
   contextHelp(state, loopSpec.tooltip);
   sameLineIfRoom(ImGui::GetFrameHeight() + ImGui::CalcTextSize("Camera").x + em);

@@ -57,7 +57,7 @@ void Document::commit(Project before, const std::string& label) {
   push(undo_, std::move(before), label);
 }
 
-bool Document::apply(const Change& change, Project& before) {
+bool Document::applyChange(const Change& change, Project& before) {
   Project next = project_;
   change(next);
   if (rule_) next = rule_(project_, std::move(next));
@@ -72,12 +72,26 @@ bool Document::apply(const Change& change, Project& before) {
 void Document::edit(const std::string& label, const Change& change) {
   if (gesture_) endGesture();
   Project before;
-  if (apply(change, before)) commit(std::move(before), label);
+  if (applyChange(change, before)) commit(std::move(before), label);
 }
 
 void Document::editUnrecorded(const Change& change) {
   Project before;
-  apply(change, before);
+  applyChange(change, before);
+}
+
+void Document::apply(const ProjectEdit& edit) { apply(editLabel(edit), edit); }
+
+void Document::apply(const std::string& label, const ProjectEdit& edit) {
+  this->edit(label, [&edit](Project& p) { applyEdit(p, edit); });
+}
+
+void Document::applyUnrecorded(const ProjectEdit& edit) {
+  editUnrecorded([&edit](Project& p) { applyEdit(p, edit); });
+}
+
+void Document::updateGesture(const ProjectEdit& edit) {
+  updateGesture([&edit](Project& p) { applyEdit(p, edit); });
 }
 
 void Document::validate(const Project& next) {
@@ -98,7 +112,7 @@ void Document::beginGesture(const std::string& label) {
 void Document::updateGesture(const Change& change) {
   if (!gesture_) beginGesture("Edit");
   Project before;
-  apply(change, before);
+  applyChange(change, before);
 }
 
 void Document::endGesture() {

@@ -1,6 +1,7 @@
 #pragma once
 // The one Document: the project plus undo/redo by whole-project snapshots.
-// The UI edits the project only through edit()/gestures; each committed edit is one undo step.
+// The UI edits the project only through named edits (edit/project_edit.h), applied as one undo
+// step or as the updates of one gesture; edit() takes any change, for tests and headless callers.
 #include <cstdint>
 #include <filesystem>
 #include <functional>
@@ -9,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "edit/project_edit.h"
 #include "model/evaluation_cache.h"
 #include "model/grid.h"
 #include "model/project.h"
@@ -56,6 +58,14 @@ class Document {
   /// artists scrub and play without filling the history). Undo and redo keep such a change.
   void editUnrecorded(const Change& change);
 
+  /// A named edit (edit/project_edit.h) as one undo step named by its label() or by `label`:
+  /// validated like edit(); an edit that names something the project lacks throws ModelError,
+  /// and the document stays untouched either way.
+  void apply(const ProjectEdit& edit);
+  void apply(const std::string& label, const ProjectEdit& edit);
+  /// A named edit without an undo step, like editUnrecorded() (the playhead's SetTime).
+  void applyUnrecorded(const ProjectEdit& edit);
+
   /// A rule applied to every change after it is made and before it is validated, given the
   /// project before and after (the modeller's keyframing: model/project_time.h
   /// keyEditedParameters). Undo and redo apply it with `before` equal to the restored project
@@ -67,6 +77,7 @@ class Document {
   void beginGesture(const std::string& label);
   /// Throws ModelError and keeps the last valid state when the change is invalid.
   void updateGesture(const Change& change);
+  void updateGesture(const ProjectEdit& edit);
   void endGesture();
   void cancelGesture();
   bool inGesture() const { return gesture_.has_value(); }
@@ -116,7 +127,7 @@ class Document {
   void validate(const Project& next);
   /// Applies `change` to a copy, validates and publishes it; false (and nothing changed) when the
   /// change changes nothing. `before` receives the project as it was.
-  bool apply(const Change& change, Project& before);
+  bool applyChange(const Change& change, Project& before);
 
   Project project_, saved_;
   std::filesystem::path path_;

@@ -4,15 +4,23 @@
 
 namespace gridifs {
 
-void EditQueue::commit(std::string label, Document::Change change) {
-  items_.push_back({Kind::Commit, std::move(label), std::move(change)});
+void EditQueue::commit(ProjectEdit edit) {
+  std::string label = editLabel(edit);
+  commit(std::move(label), std::move(edit));
 }
-void EditQueue::begin(std::string label) { items_.push_back({Kind::Begin, std::move(label), {}}); }
-void EditQueue::update(Document::Change change) { items_.push_back({Kind::Update, {}, std::move(change)}); }
-void EditQueue::end() { items_.push_back({Kind::End, {}, {}}); }
-void EditQueue::cancel() { items_.push_back({Kind::Cancel, {}, {}}); }
-void EditQueue::undo() { items_.push_back({Kind::Undo, {}, {}}); }
-void EditQueue::redo() { items_.push_back({Kind::Redo, {}, {}}); }
+void EditQueue::commit(std::string label, ProjectEdit edit) {
+  items_.push_back({Kind::Commit, std::move(label), {}, std::move(edit)});
+}
+void EditQueue::commit(std::string label, Document::Change change) {
+  items_.push_back({Kind::Commit, std::move(label), std::move(change), {}});
+}
+void EditQueue::begin(std::string label) { items_.push_back({Kind::Begin, std::move(label), {}, {}}); }
+void EditQueue::update(ProjectEdit edit) { items_.push_back({Kind::Update, {}, {}, std::move(edit)}); }
+void EditQueue::update(Document::Change change) { items_.push_back({Kind::Update, {}, std::move(change), {}}); }
+void EditQueue::end() { items_.push_back({Kind::End, {}, {}, {}}); }
+void EditQueue::cancel() { items_.push_back({Kind::Cancel, {}, {}, {}}); }
+void EditQueue::undo() { items_.push_back({Kind::Undo, {}, {}, {}}); }
+void EditQueue::redo() { items_.push_back({Kind::Redo, {}, {}, {}}); }
 void EditQueue::after(std::function<void()> action) { after_.push_back(std::move(action)); }
 
 std::string EditQueue::apply(Document& document) {
@@ -20,11 +28,19 @@ std::string EditQueue::apply(Document& document) {
   for (Item& item : items_) {
     try {
       switch (item.kind) {
-        case Kind::Commit: document.edit(item.label, item.change); break;
+        case Kind::Commit:
+          if (item.edit)
+            document.apply(item.label, *item.edit);
+          else
+            document.edit(item.label, item.change);
+          break;
         case Kind::Begin: document.beginGesture(item.label); break;
         case Kind::Update:
           if (!document.inGesture()) document.beginGesture("Edit");
-          document.updateGesture(item.change);
+          if (item.edit)
+            document.updateGesture(*item.edit);
+          else
+            document.updateGesture(item.change);
           break;
         case Kind::End: document.endGesture(); break;
         case Kind::Cancel: document.cancelGesture(); break;

@@ -6,6 +6,7 @@
 //
 // Thread-safety: used by the thread that owns the Document.
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -15,10 +16,14 @@ namespace gridifs {
 
 class EditQueue {
  public:
-  /// One undo step.
+  /// One undo step: a named edit (edit/project_edit.h), named by its label() or by `label`.
+  void commit(ProjectEdit edit);
+  void commit(std::string label, ProjectEdit edit);
+  /// One undo step of any change (tests and headless callers; the modeller uses named edits).
   void commit(std::string label, Document::Change change);
   /// A live-previewed gesture: begin, any number of updates, end (one undo step).
   void begin(std::string label);
+  void update(ProjectEdit edit);
   void update(Document::Change change);
   void end();
   void cancel();
@@ -40,6 +45,7 @@ class EditQueue {
     Kind kind;
     std::string label;
     Document::Change change;
+    std::optional<ProjectEdit> edit;  // instead of `change`
   };
   std::vector<Item> items_;
   std::vector<std::function<void()>> after_;

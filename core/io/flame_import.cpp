@@ -344,7 +344,8 @@ FlameImport importFlameGenome(const FlameGenome& genome, const FlameImportOption
     throw FlameError("the resolution must be between 2 and " + std::to_string(limits::kMaxResolution));
   FlameImport out;
   out.warnings = genome.warnings;
-  if (!isNativeGenome(genome)) out.frame = chooseFrame(genome, out.warnings);
+  const bool native = isNativeGenome(genome) && !options.sampleOntoGrids;
+  if (!native) out.frame = chooseFrame(genome, out.warnings);
   Project& p = out.project;
 
   // Palette: the genome's own colors, else flam3's collection by number, turned by `hue` as
@@ -384,7 +385,6 @@ FlameImport importFlameGenome(const FlameGenome& genome, const FlameImportOption
 
   // 2D genomes keep their variations natively, in the flame's own coordinates; 3D genomes (their
   // camera turns the space) and GridIFS's own grid exports (gridifs_frame) are sampled onto grids.
-  const bool native = isNativeGenome(genome);
   std::set<std::string> dropped;
   auto convert = [&](const FlameXform& x, const std::string& name) {
     if (native) return nativeXform(x, name);
@@ -414,7 +414,7 @@ FlameImport importFlameGenome(const FlameGenome& genome, const FlameImportOption
   if (!dropped.empty()) {
     std::string list;
     for (const auto& n : dropped) list += (list.empty() ? "" : ", ") + n;
-    out.warnings.push_back("the random variations " + list + " of this 3D genome were left out (its maps are sampled onto grids)");
+    out.warnings.push_back("the random variations " + list + " of this genome were left out (its maps are sampled onto grids)");
   }
   // chaos → transitions (flam3's xaos: row i weights the xform that follows xform i).
   bool restricted = false;

@@ -40,6 +40,9 @@ struct FlameImportOptions {
   /// genomes, and 3D ones whose xforms are affine in z as the camera sees it) or
   /// clamp(R/2, 2, 32) (see gridResolution in the implementation).
   int resolution = 64;
+  /// Sample every xform onto a grid (the sampled import of 3D genomes) instead of keeping a 2D
+  /// genome's variations natively: for artists who want to sculpt the map's grid.
+  bool sampleOntoGrids = false;
   /// The palette reference to store when the genome carries its own colors (the caller saves
   /// FlameImport::palette there), e.g. "file:name.palette.json".
   std::string inlinePaletteReference;

@@ -45,9 +45,9 @@ void readFunctionFields(const json& f, const std::string& path, Function& fn) {
       post.matrix = rows;
     } else {
       if (auto v = it->find("translate"); v != it->end())
-        post.placement.translate = readVec3(*v, join(p, "translate"), -1e9, 1e9);
-      if (auto v = it->find("rotate"); v != it->end()) post.placement.rotate = readVec3(*v, join(p, "rotate"), -1e9, 1e9);
-      if (auto v = it->find("scale"); v != it->end()) post.placement.scale = readVec3(*v, join(p, "scale"), -1e9, 1e9);
+        post.placement.translate = readVec3(*v, join(p, "translate"), -limits::kMaxCoordinate, limits::kMaxCoordinate);
+      if (auto v = it->find("rotate"); v != it->end()) post.placement.rotate = readVec3(*v, join(p, "rotate"), -limits::kMaxCoordinate, limits::kMaxCoordinate);
+      if (auto v = it->find("scale"); v != it->end()) post.placement.scale = readVec3(*v, join(p, "scale"), -limits::kMaxCoordinate, limits::kMaxCoordinate);
     }
     fn.post = post;
   }

@@ -7,9 +7,9 @@
 // 3D forms. Each variation acts on the point (x, y, z) and equals flam3's on the z = 0 plane:
 // - the planar ones (most of the catalogue) act on (x, y) and carry z as w·z, so that a blend whose
 //   weights sum to 1 keeps z (JWildfire's and Apophysis 7X's "preserve z");
-// - linear, spherical, bubble, eyefish, blur and gaussian_blur have the natural 3D form (linear:
-//   w·p; spherical: w·p/|p|²; bubble: w·p/(|p|²/4 + 1); eyefish: 2w·p/(|p| + 1); blur and
-//   gaussian_blur: a random direction on the sphere); julia and the other planar ones keep z;
+// - linear, spherical, bubble and eyefish have the natural 3D form (linear: w·p; spherical:
+//   w·p/|p|²; bubble: w·p/(|p|²/4 + 1); eyefish: 2w·p/(|p| + 1));
+// - the random ones (julia, blur, …) are planar too: they draw flam3's 2D values and carry w·z;
 // - zscale, ztranslate, zcone and flatten are the z variations of Apophysis 7X's 3D extension.
 // Everything here is a pure function of its arguments (random ones advance only the stream they
 // are handed): thread-safe.

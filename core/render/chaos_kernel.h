@@ -236,6 +236,13 @@ struct ChainState {
     row[lane] = 0;
     age[lane] = 0;
   }
+  /// A bad value of a flame variation (spherical at 0, log of 0, …): flam3 replaces the point by a
+  /// fresh random one and goes on without a new fuse (Draves & Reckase 2003, §2), so an IFS whose
+  /// maps often fail still plots; colour, skip count and transition row stay.
+  void replacePoint(int lane) {
+    const std::uint64_t a = rng.next(), b = rng.next();
+    p[lane] = v4f{Rng::signedUnit(a), Rng::signedUnit(a >> 24), Rng::signedUnit(b), 0.0f};
+  }
   /// A fresh chain set for stream (seed, worker).
   static ChainState start(std::uint64_t seed, std::uint64_t worker, int skip) {
     ChainState st;
@@ -347,7 +354,10 @@ template <bool kRestricted, bool kRestarts, bool kCondensation = false, class Pl
   const v4f col = st.color[lane] + (f.color - st.color[lane]) * f.speed;  // Draves & Reckase 2003, §5: c = mix(c, c_i, speed)
   if (!inBounds(p, ifs.escapeBound)) [[unlikely]] {
     ++bad;
-    st.restartLane(lane, ifs.skip);
+    if (kCondensation && ifs.variations)
+      st.replacePoint(lane);  // as flam3 does: a fresh random point, the chain goes on
+    else
+      st.restartLane(lane, ifs.skip);
     return 0;
   }
   return advanceAndPlot<kRestricted>(st, lane, ifs, plot, bad, p, col, nextRow);

@@ -1,0 +1,61 @@
+#pragma once
+// The vocabulary of named edits: every change the modeller makes to a project, as a plain value
+// that says what it does (SetFunctionWeight{ref, 0.5}) instead of a function that does it. The
+// Document applies one as an undo step or a gesture update (edit/document.h); tests build the same
+// values the panels do. Each alternative has apply(Project&) and label() (its undo step's name);
+// the rules for new functions and operations are in edit/new_function.h and edit/operation_edits.h.
+//
+// Thread-safety: plain values; applyEdit touches only the project given. applyEdit throws
+// ModelError when the edit names something the project does not have (a function, operation,
+// light, cell or setting); the project may then be half changed, which is why the Document
+// applies edits to a copy.
+#include <string>
+#include <variant>
+
+#include "edit/function_edits.h"
+#include "edit/key_edits.h"
+#include "edit/matrix_edits.h"
+#include "edit/operation_edits.h"
+#include "edit/set_edits.h"
+#include "edit/settings_edits.h"
+#include "edit/shading_edits.h"
+
+namespace gridifs {
+
+/// Replaces the whole project (an import, a combination with another IFS, recovered work), as
+/// one undo step that brings the old project back.
+struct ReplaceProject {
+  Project project;
+  void apply(Project& target) const;
+  std::string label() const { return "Replace project"; }
+};
+
+using ProjectEdit = std::variant<
+    // the function list and each function (edit/function_edits.h)
+    AddFunction, DuplicateFunction, RemoveFunction, MoveFunction, AddFinalFunction, RemoveFinalFunction, RenameFunction,
+    SetFunctionMuted, SetFunctionResolution, SetPlacement, MovePlacement, SetInterpolation, SetFunctionWeight,
+    SetFunctionColor, SetPaletteIndex, SetColorSpeed, AddSymmetry,
+    // condensation and median sets (edit/set_edits.h)
+    SetCondensationSet, SetSetShape, SetSetFile, SetSetFill, SetSetGrid, SetMedianRotation,
+    // the operation stack and node drags (edit/operation_edits.h)
+    AddOperation, RemoveOperation, MoveOperation, DuplicateOperation, SetOperationMuted, SetOperation,
+    SetOperationSelection, PlaceCenter, MoveNodes,
+    // settings, camera, time (edit/settings_edits.h) and shading (edit/shading_edits.h)
+    SetSettingNumber, SetDisplayMode, SetSampleBudget, SetBackground, SetPalette, SetDensityEstimation,
+    ResetFlameSettings, SetCamera, SetCameraDistance, SetTime, SetAnimation, AddLight, RemoveLight, SetLightDirection,
+    SetLightColor, SetLightShadows, SetFogColor, SetAperture,
+    // keyframes (edit/key_edits.h)
+    SetKeys, RemoveKeys,
+    // transitions and free-form IFS (edit/matrix_edits.h)
+    SetTransitionPreset, RemoveTransitions, SetTransitionWeight, SetMatrixEntry, MoveControlPoint, ApplyFreeFormPreset,
+    BackToGridIfs,
+    // the whole project
+    ReplaceProject>;
+
+/// Applies `edit` to `project`. Throws ModelError as described above.
+void applyEdit(Project& project, const ProjectEdit& edit);
+
+/// The name of `edit`'s undo step ("Function weight", "Add Twist").
+std::string editLabel(const ProjectEdit& edit);
+
+}  // namespace gridifs
