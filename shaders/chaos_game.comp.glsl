@@ -100,8 +100,12 @@ uint mix32(uint x) {
 
 float signedUnit(uint bits) { return float(bits >> 8) * (2.0 / 16777216.0) - 1.0; }
 
+vec4 randomPoint(inout uvec4 rng) {
+  return vec4(signedUnit(nextRandom(rng)), signedUnit(nextRandom(rng)), signedUnit(nextRandom(rng)), 0.0);
+}
+
 void restartChain(inout Chain ch) {
-  ch.p = vec4(signedUnit(nextRandom(ch.rng)), signedUnit(nextRandom(ch.rng)), signedUnit(nextRandom(ch.rng)), 0.0);
+  ch.p = randomPoint(ch.rng);
   ch.color = vec4(0.5, 0.5, 0.5, float(nextRandom(ch.rng) >> 8) * (1.0 / 16777216.0));
   ch.misc.y = uSkip;
 }
@@ -271,7 +275,14 @@ void main() {
 #endif
     if (!inBounds(p)) {
       ++tally.x;
+#if VARIATIONS
+      // A bad value of a flame variation (spherical at 0, log of 0, …): as flam3 and the CPU
+      // kernel, a fresh random point and the chain goes on, without a new skip (Draves & Reckase
+      // 2003, §2); colour and skip count stay.
+      ch.p = randomPoint(ch.rng);
+#else
       restartChain(ch);
+#endif
       continue;
     }
     ch.p.xyz = p;
