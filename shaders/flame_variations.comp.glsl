@@ -289,7 +289,6 @@ vec2 vMobius(vec3 p, float w, vec4 q, vec4 q2) {
   return vec2(k * (ru * rv + iu * iv), k * (iu * rv - ru * iv));
 }
 
-
 // The complex functions (exp, log, sin, …) of z = x + iy.
 vec2 cExp(float x, float y) { return exp(x) * vec2(cos(y), sin(y)); }
 vec2 cLog(float x, float y) { return vec2(0.5 * log(x * x + y * y), atan2(y, x)); }
@@ -786,13 +785,13 @@ vec3 applyVariationStage(uint head, uint terms, vec3 p, inout uvec4 rng) {
   bool flatten = false;
   for (uint i = 0u; i < terms; ++i) {
     const uvec4 t = stages[head + 5u + 3u * i];
-    vec4 u = vec4(0.0);
-    float u4 = 0.0;
-    if ((t.z & kRandom) != 0u) {
-      u = vec4(uniform01(rng), uniform01(rng), uniform01(rng), uniform01(rng));
-      u4 = uniform01(rng);
-    }
     if ((t.z & kPre) == 0u) {
+      vec4 u = vec4(0.0);
+      float u4 = 0.0;
+      if ((t.z & kRandom) != 0u) {
+        u = vec4(uniform01(rng), uniform01(rng), uniform01(rng), uniform01(rng));
+        u4 = uniform01(rng);
+      }
       const float w = uintBitsToFloat(t.y);
       const uint at = head + 6u + 3u * i;
       const vec4 q = uintBitsToFloat(stages[at]), q2 = uintBitsToFloat(stages[at + 1u]);
