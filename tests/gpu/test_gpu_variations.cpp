@@ -13,8 +13,10 @@
 #include "gpu/correlation.h"
 #include "gpu/gpu_chaos_renderer.h"
 #include "gpu/headless_gl_context.h"
+#include "gpu/render_device.h"
 #include "model/flame_variations.h"
 #include "render/compiled_ifs.h"
+#include "volume/measure_attractor.h"
 
 namespace gridifs {
 namespace {
@@ -276,6 +278,37 @@ TEST(GpuVariations, SameSeedSameBytesOtherSeedOtherImage) {
   job.seed = 6;
   const RenderImage c = renderGpu(one, ifs, job);
   EXPECT_NE(a.density, c.density);
+}
+
+TEST(GpuVariations, DensityVolumeMatchesTheCpuVolume) {
+  // The voxel-binning program with variations: the same measure over X as the CPU's binning.
+  const Project p = variationScene();
+  VolumeSettings settings;
+  settings.resolution = 32;
+  settings.samples = 1'000'000;
+  VolumeJob cpuJob;
+  cpuJob.settings = settings;
+  cpuJob.threads = 2;
+  VolumeJob gpuJob;
+  gpuJob.settings = settings;
+  gpuJob.binner = [](const CompiledIfs& ifs, const VolumeJob& j, std::vector<std::uint32_t>& counts,
+                     std::vector<float>& colors) {
+    RenderJob chaos;
+    chaos.samples = j.settings.samples;
+    chaos.seed = j.settings.seed;
+    chaos.skip = j.settings.skip;
+    gpu::GpuVoxelCounts out = gpu::binVoxelsGpu(ifs, chaos, j.settings.resolution, !colors.empty(), {});
+    counts = std::move(out.counts);
+    if (!colors.empty()) colors = std::move(out.colorSums);
+    return true;
+  };
+  const DensityVolume cpu = computeDensityVolume(p, cpuJob);
+  const DensityVolume g = computeDensityVolume(p, gpuJob);
+  ASSERT_EQ(g.density.size(), cpu.density.size());
+  EXPECT_NEAR(g.totalMass / cpu.totalMass, 1.0, 0.03);               // the same share of points lands in X
+  const double density = test::correlation(cpu.density, g.density);  // per voxel
+  EXPECT_GE(density, 0.99);
+  RecordProperty("volume_density_correlation", std::to_string(density));
 }
 
 }  // namespace
