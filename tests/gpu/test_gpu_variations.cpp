@@ -1,13 +1,18 @@
 // Flame variations on the GPU (label `gpu`, llvmpipe on CI): every variation of the table through
 // the shader's own map against the CPU's (deterministic ones point by point at float tolerance,
-// random ones by their distributions), and a render with several variations, pre_blur and a post
-// map against the CPU's picture.
+// random ones by their distributions), and a render with several variations, pre_blur and post
+// maps against the CPU's picture and density volume.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
 
 #include "gpu/chaos_compute.h"
 #include "gpu/correlation.h"
@@ -87,20 +92,20 @@ double levyExcess(std::vector<float> a, std::vector<float> b, double delta) {
 
 struct GpuVariationMaps : ::testing::Test {
   static void SetUpTestSuite() {
-    context = gpu::HeadlessGlContext::create().release();
+    context = gpu::HeadlessGlContext::create();
     const auto start = std::chrono::steady_clock::now();
-    compute = new gpu::ChaosCompute(context->info(), gpu::ChaosOutput::Maps, false, false);
+    compute = std::make_unique<gpu::ChaosCompute>(context->info(), gpu::ChaosOutput::Maps, false, false);
     // Drivers may compile at the first dispatch (llvmpipe does): one point through the program
-    // that has every variation.
+    // that has every variation (Mesa's shader cache may hold it from an earlier run).
     compute->evaluateMaps(*compileIfs(everyVariationProject()), {0}, {Point{0.1f, 0.2f, 0.3f}}, 1);
     compileSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   }
   static void TearDownTestSuite() {
-    delete compute;
-    delete context;
+    compute.reset();  // its GL objects need the context
+    context.reset();
   }
-  static inline gpu::HeadlessGlContext* context = nullptr;
-  static inline gpu::ChaosCompute* compute = nullptr;
+  static inline std::unique_ptr<gpu::HeadlessGlContext> context;
+  static inline std::unique_ptr<gpu::ChaosCompute> compute;
   static inline double compileSeconds = 0.0;
 };
 
