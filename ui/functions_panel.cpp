@@ -336,6 +336,7 @@ void drawFunctionsPanel(ModellerState& state, EditQueue& edits) {
     drawFinalSettings(state, edits, f);
     drawResolution(state, edits, activeRef, f);
     drawPlacement(state, edits, activeRef, f);
+    drawVariationsSection(state, edits, activeRef, f);
     ImGui::PopItemWidth();
     return;
   }
@@ -382,6 +383,7 @@ void drawFunctionsPanel(ModellerState& state, EditQueue& edits) {
   }
   drawResolution(state, edits, activeRef, f);
   drawPlacement(state, edits, activeRef, f);
+  drawVariationsSection(state, edits, activeRef, f);
   ImGui::PopItemWidth();
 
   // Contractivity (Gröller & Wegenkittl 1994, §1.1): an IFS function must shrink distances.

@@ -66,6 +66,8 @@ class ModellerState {
   /// Why the Functions panel refused a change of the final function (a Bézier lattice with too
   /// many nodes); shown there until the artist changes its resolution or interpolation.
   std::string finalFunctionMessage;
+  /// The Variations section's search text.
+  std::string variationFilter;
   double statusTime = 0.0;
   /// Context help for the status line (Gröller & Wegenkittl 1994, §4.2), set each frame by the hovered widget or view.
   std::string contextHelp;

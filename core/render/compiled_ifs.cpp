@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <glm/geometric.hpp>
 #include <string>
 
 #include "base/hash.h"
@@ -230,6 +231,27 @@ std::array<float, 3> CompiledFunction::evaluate(std::array<float, 3> p) const {
     const float b = b0 + (b1 - b0) * f[2];
     out[d] = a + (b - a) * f[0];
   }
+  return out;
+}
+
+std::vector<Vec3> functionImageSamples(const Function& function, const Grid& evaluated, int lines, int samples) {
+  const CompiledFunction compiled = compileFunction(function, evaluated, 0);
+  std::uint64_t random = 0x243F6A8885A308D3ull;
+  std::vector<Vec3> out;
+  out.reserve(std::size_t(3 * lines * lines * samples));
+  auto at = [](int i, int n) { return n <= 1 ? 0.0f : -1.0f + 2.0f * float(i) / float(n - 1); };
+  for (int axis = 0; axis < 3; ++axis)
+    for (int a = 0; a < lines; ++a)
+      for (int b = 0; b < lines; ++b)
+        for (int s = 0; s < samples; ++s) {
+          std::array<float, 3> u{};
+          u[std::size_t(axis)] = at(s, samples);
+          u[std::size_t((axis + 1) % 3)] = at(a, lines);
+          u[std::size_t((axis + 2) % 3)] = at(b, lines);
+          const std::array<float, 3> q = compiled.evaluateMap(u, random);
+          const Vec3 p(q[0], q[1], q[2]);
+          if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && glm::length(p) < 1e6) out.push_back(p);
+        }
   return out;
 }
 

@@ -136,6 +136,13 @@ CompiledFunction compileFunction(const Function& function, const Grid& evaluated
 CompiledFunction compileMatrixFunction(const Function& function, const FreeFormSpace& space, std::uint32_t pad,
                                        std::size_t sourceIndex);
 
+/// What a function does to X, for the IFS view: its map f (with its variations and post map) at
+/// `samples` points along each of lines × lines lattice lines per axis of X. Random variations
+/// draw from a fixed stream, so the cloud they make is the same every time. Non-finite and far
+/// (beyond 1e6) images are left out. Throws ModelError as compileFunction.
+std::vector<Vec3> functionImageSamples(const Function& function, const Grid& evaluated, int lines = 9,
+                                       int samples = 48);
+
 /// Builds the alias table for `weights` (all ≥ 0, at least one > 0). Exposed for tests.
 std::vector<AliasEntry> buildAliasTable(const std::vector<double>& weights);
 
