@@ -327,8 +327,10 @@ KernelVariationTerm makeKernelVariationTerm(const VariationTerm& term) {
 }
 
 // flatten: every body, its helpers and the stream's draws inline into this one loop (GCC would
-// otherwise keep the larger bodies as calls, with the point passed through memory).
-[[gnu::flatten]] FlamePoint evaluateKernelVariations(const KernelVariationTerm* terms, std::size_t count, bool anyPre,
+// otherwise keep the larger bodies as calls, with the point passed through memory). No SLP
+// vectorisation: it summed the terms as pairs loaded from the switch's scalar stores, a
+// store-forwarding stall on every term.
+[[gnu::flatten, gnu::optimize("no-tree-slp-vectorize")]] FlamePoint evaluateKernelVariations(const KernelVariationTerm* terms, std::size_t count, bool anyPre,
                                                      FlamePoint p, const FlameAffine& coefs, std::uint64_t* random) {
   // The order of operations and of random draws is evaluateVariations's.
   VariationInput in{p.x, p.y, p.z, &coefs, nullptr, random};
