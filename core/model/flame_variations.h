@@ -92,4 +92,20 @@ struct VariationTerm {
 FlamePoint evaluateVariations(const VariationTerm* terms, std::size_t count, FlamePoint p, const FlameAffine& coefs,
                               std::uint64_t* random);
 
+/// A term as the chaos kernel runs it: the variation's body by number (an inline dispatch, not a
+/// call through FlameVariation::apply) and its flags at hand.
+struct KernelVariationTerm {
+  std::int32_t body = -1;
+  bool pre = false, writesZ = false, flatten = false;
+  double weight = 0.0;
+  const double* params = nullptr;
+};
+/// The kernel form of `term` (whose variation is one of flameVariations()).
+KernelVariationTerm makeKernelVariationTerm(const VariationTerm& term);
+/// evaluateVariations as the chaos kernel runs it: the same terms, operations and random draws, with
+/// sin, cos and atan2 from model/kernel_math.h (within 1e-9 relative of the library's, far below
+/// the renderer's float points) and the bodies inlined. `anyPre`: some term is a pre-variation.
+FlamePoint evaluateKernelVariations(const KernelVariationTerm* terms, std::size_t count, bool anyPre, FlamePoint p,
+                                    const FlameAffine& coefs, std::uint64_t* random);
+
 }  // namespace gridifs

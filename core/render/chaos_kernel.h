@@ -180,26 +180,28 @@ template <int I>
   const v4i ci = __builtin_convertvector(c, v4i);
   const std::size_t idx = std::uint32_t(ci[0]) + f.strideJ * std::uint32_t(ci[1]) + f.strideK * std::uint32_t(ci[2]);
   const NodePair* base = f.pairs + idx;
-  v8f p00, p10, p01, p11;
-  std::memcpy(&p00, base, 32);
-  std::memcpy(&p10, base + f.strideJ, 32);
-  std::memcpy(&p01, base + f.strideK, 32);
-  std::memcpy(&p11, base + f.strideJ + f.strideK, 32);
-  const v8f ty = __builtin_shufflevector(t, t, 1, 1, 1, 1, 1, 1, 1, 1);
-  const v8f tz = __builtin_shufflevector(t, t, 2, 2, 2, 2, 2, 2, 2, 2);
-  const v8f e0 = p00 + (p10 - p00) * ty;
-  const v8f e1 = p01 + (p11 - p01) * ty;
-  const v8f e = e0 + (e1 - e0) * tz;
-  const v4f a = __builtin_shufflevector(e, e, 0, 1, 2, 3), b = __builtin_shufflevector(e, e, 4, 5, 6, 7);
+  // In 4-wide halves: applyVariations is not one of the kernel's AVX2 clones, and SSE2 builds
+  // 8-wide broadcasts through the stack, a store-forwarding stall on every step. The same float
+  // operations per lane as the 8-wide form.
+  const NodePair* n10 = base + f.strideJ;
+  const NodePair* n01 = base + f.strideK;
+  const NodePair* n11 = base + f.strideJ + f.strideK;
+  const v4f ty = splat<1>(t), tz = splat<2>(t);
+  const v4f a0 = load4(base->a) + (load4(n10->a) - load4(base->a)) * ty;
+  const v4f b0 = load4(base->b) + (load4(n10->b) - load4(base->b)) * ty;
+  const v4f a1 = load4(n01->a) + (load4(n11->a) - load4(n01->a)) * ty;
+  const v4f b1 = load4(n01->b) + (load4(n11->b) - load4(n01->b)) * ty;
+  const v4f a = a0 + (a1 - a0) * tz, b = b0 + (b1 - b0) * tz;
   return a + (b - a) * splat<0>(t);
 }
 
 /// f(p) of a function with variations (Draves & Reckase 2003, §3): the extrapolated grid map, then
-/// post(Σ w_i V_i) in double precision, drawing random variations from the chain's stream.
+/// post(Σ w_i V_i) in double precision, drawing random variations from the chain's stream
+/// (CompiledVariations::applyKernel: the bodies inlined, sin, cos and atan2 inline).
 [[gnu::noinline]] inline v4f applyVariations(const HotFunction& f, v4f p, std::uint64_t& random) {
   const v4f q = applyExtrapolated(f, p);
-  const std::array<double, 3> r = f.variations->apply({q[0], q[1], q[2]}, random);
-  return v4f{float(r[0]), float(r[1]), float(r[2]), 0.0f};
+  const std::array<float, 3> r = f.variations->applyKernel(q[0], q[1], q[2], random);
+  return v4f{r[0], r[1], r[2], 0.0f};
 }
 
 /// Whether every coordinate is finite and within the escape bound (NaN fails).

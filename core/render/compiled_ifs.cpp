@@ -120,13 +120,19 @@ std::shared_ptr<const CompiledVariations> compileVariations(const Function& func
     chosen.emplace_back(&v, weight);
     out->random |= v.random;
   }
-  for (std::size_t i = 0; i < chosen.size(); ++i)
+  for (std::size_t i = 0; i < chosen.size(); ++i) {
     out->terms.push_back({chosen[i].first, chosen[i].second, out->params.data() + out->paramOffsets[i]});
+    out->kernelTerms.push_back(makeKernelVariationTerm(out->terms.back()));
+    out->anyPre |= chosen[i].first->pre;
+  }
   out->coefs = affineFit(evaluated);
   if (function.post) {
     const auto m = function.post->affine();
     for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 4; ++c) out->post[r][c] = m[std::size_t(r)][std::size_t(c)];
+      for (int c = 0; c < 4; ++c) {
+        out->post[r][c] = m[std::size_t(r)][std::size_t(c)];
+        out->hasPost |= out->post[r][c] != (r == c ? 1.0 : 0.0);
+      }
   }
   return out;
 }
@@ -206,8 +212,7 @@ std::array<double, 3> CompiledVariations::apply(std::array<double, 3> q, std::ui
 std::array<float, 3> CompiledFunction::evaluateMap(std::array<float, 3> p, std::uint64_t& random) const {
   if (!variations) return evaluate(p);
   const std::array<float, 3> q = evaluateExtrapolated(p);
-  const std::array<double, 3> r = variations->apply({q[0], q[1], q[2]}, random);
-  return {float(r[0]), float(r[1]), float(r[2])};
+  return variations->applyKernel(q[0], q[1], q[2], random);
 }
 
 std::array<float, 3> CompiledFunction::evaluate(std::array<float, 3> p) const {

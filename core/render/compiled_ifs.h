@@ -31,12 +31,27 @@ struct CompiledVariations {
   FlameAffine coefs;                // the affine fit of g that the dependent variations read
   double post[3][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};
   bool random = false;              // some term draws random numbers
+  /// `terms` as the chaos kernel runs them (evaluateKernelVariations), and whether one is a
+  /// pre-variation and whether `post` is not the identity (the kernel skips it then).
+  std::vector<KernelVariationTerm> kernelTerms;
+  bool anyPre = false;
+  bool hasPost = false;
   CompiledVariations() = default;
   CompiledVariations(const CompiledVariations&) = delete;  // terms point into params
   CompiledVariations& operator=(const CompiledVariations&) = delete;
 
   /// The variation stage applied to the grid's image q = g(p); draws from `random` when a term is random.
   std::array<double, 3> apply(std::array<double, 3> q, std::uint64_t& random) const;
+  /// The same as the chaos kernel evaluates it (evaluateKernelVariations: the same draws, sin, cos
+  /// and atan2 within 1e-9 relative), in float as the kernel keeps its points.
+  [[gnu::always_inline]] std::array<float, 3> applyKernel(float x, float y, float z, std::uint64_t& random) const {
+    const FlamePoint s =
+        evaluateKernelVariations(kernelTerms.data(), kernelTerms.size(), anyPre, {x, y, z}, coefs, &random);
+    if (!hasPost) return {float(s.x), float(s.y), float(s.z)};
+    std::array<float, 3> out{};
+    for (int r = 0; r < 3; ++r) out[r] = float(post[r][0] * s.x + post[r][1] * s.y + post[r][2] * s.z + post[r][3]);
+    return out;
+  }
 };
 
 /// One function of the snapshot. Immutable after compileIfs; thread-safe to read.
