@@ -1,4 +1,4 @@
-// gridifs import-flame IN.flame -o OUT.gridifs [--genome N|NAME] [--resolution R] [--list]:
+// gridifs import-flame IN.flame -o OUT.gridifs [--genome N|NAME] [--grids] [--resolution R] [--list]:
 // a flame genome (flam3, Apophysis, JWildfire, Fractorium) as a GridIFS project.
 #include <cstdio>
 #include <fstream>
@@ -34,7 +34,7 @@ int listGenomes(const std::string& file) {
 }
 
 int runImportFlame(const std::string& file, const std::string& out, const std::string& genome, int resolution,
-                   bool list) {
+                   bool list, bool grids) {
   if (list) return listGenomes(file);
   if (out.empty()) throw CliError(kBadInput, "import-flame needs -o OUT.gridifs (or --list)");
   checkOutputPath(out, {"gridifs"}, "the project");
@@ -44,6 +44,7 @@ int runImportFlame(const std::string& file, const std::string& out, const std::s
   const auto genomes = readGenomes(file);
   FlameImportOptions options;
   options.resolution = resolution;
+  options.sampleOntoGrids = grids;
   const std::filesystem::path outPath(out);
   const std::filesystem::path paletteFile = outPath.parent_path() / (outPath.stem().string() + ".palette.json");
   options.inlinePaletteReference = "file:" + paletteFile.filename().string();
@@ -66,19 +67,24 @@ int runImportFlame(const std::string& file, const std::string& out, const std::s
 }
 
 const VerbRegistration kImportFlame{
-    {"import-flame", "IN.flame -o OUT.gridifs [--genome N|NAME] [--resolution R] [--list]: a flame genome as a project",
+    {"import-flame", "IN.flame -o OUT.gridifs [--genome N|NAME] [--grids] [--resolution R] [--list]: a flame genome as a project",
      [](CLI::App& app) {
        auto file = std::make_shared<std::string>();
        auto out = std::make_shared<std::string>();
        auto genome = std::make_shared<std::string>();
        auto resolution = std::make_shared<int>(64);
        auto list = std::make_shared<bool>(false);
+       auto grids = std::make_shared<bool>(false);
        app.add_option("IN", *file, "flame file (.flame, .flam3 or .xml)")->required();
        app.add_option("-o,--output", *out, "output project (.gridifs)");
        app.add_option("--genome", *genome, "which genome: its index (0, 1, ...) or its name (default: the first)");
-       app.add_option("--resolution", *resolution, "grid nodes per axis for non-linear xforms (2..128, default 64)");
+       app.add_flag("--grids", *grids,
+                    "sample every xform onto a grid to sculpt (random variations are left out) instead of keeping "
+                    "the variations");
+       app.add_option("--resolution", *resolution,
+                      "grid nodes per axis for sampled non-linear xforms (2..128, default 64)");
        app.add_flag("--list", *list, "list the file's genomes and exit");
-       return [=] { return runImportFlame(*file, *out, *genome, *resolution, *list); };
+       return [=] { return runImportFlame(*file, *out, *genome, *resolution, *list, *grids); };
      }}};
 
 }  // namespace

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "app/cli.h"
+#include "render/compiled_ifs.h"
 
 namespace gridifs::cli {
 namespace {
@@ -26,6 +27,12 @@ int runEval(const std::string& file, const std::string& which, std::optional<dou
   Document document(loadForVerbAt(file, time));
   const std::size_t index = resolveFunction(document.project(), which, file);
   const auto grid = evaluateForVerb(document, index, file);
+  // A function with flame variations is its grid map extrapolated, then the variation stage, as
+  // the chaos game runs it (in float); random variations draw from a fixed stream.
+  const Function& function = document.project().functions[index];
+  std::optional<CompiledFunction> compiled;
+  if (function.hasVariationStage()) compiled = compileFunction(function, *grid, index);
+  std::uint64_t random = 1;
   std::string line;
   std::size_t lineNumber = 0;
   std::string output;
@@ -39,7 +46,13 @@ int runEval(const std::string& file, const std::string& which, std::optional<dou
       throw CliError(kBadInput, "stdin line " + std::to_string(lineNumber) + " is not three numbers \"x y z\"");
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
       throw CliError(kBadInput, "stdin line " + std::to_string(lineNumber) + " has a non-finite coordinate");
-    const Vec3 q = grid->evaluate(p);
+    Vec3 q;
+    if (compiled) {
+      const auto r = compiled->evaluateMap({float(p.x), float(p.y), float(p.z)}, random);
+      q = Vec3(r[0], r[1], r[2]);
+    } else {
+      q = grid->evaluate(p);
+    }
     char buffer[96];
     std::snprintf(buffer, sizeof buffer, "%.9g %.9g %.9g\n", q.x, q.y, q.z);
     output += buffer;

@@ -406,8 +406,9 @@ int renderFrame(const Project& loaded, const std::string& file, const std::strin
   const RenderImage& image = *rendered;
   const RenderStats& s = image.stats;
   if (s.badSamples > 0)
-    std::fprintf(stderr, "warning: %s: %.3g%% of the samples were non-finite or escaped (chains restarted).\n",
-                 file.c_str(), 100.0 * s.badFraction());
+    std::fprintf(stderr,
+                 "warning: %s: %lld samples (%.3g%%) were non-finite or escaped and were replaced by fresh points.\n",
+                 file.c_str(), static_cast<long long>(s.badSamples), 100.0 * s.badFraction());
   if (image.hitPixels == 0)
     std::fprintf(stderr, "warning: %s: no point landed in the %dx%d frame; check the camera.\n", file.c_str(),
                  image.width, image.height);

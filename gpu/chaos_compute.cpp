@@ -3,22 +3,28 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <stdexcept>
 #include <string>
 
 #include "gl_common/shader_build.h"
 #include "gpu/embedded_compute_shaders.h"
+#include "gpu/variation_stage.h"
 #include "render/sample_chunks.h"
 
 namespace gridifs::gpu {
 namespace {
 
-enum Binding { kFunctions, kNodes, kAlias, kChains, kTallies, kKeys, kDensity, kColorSums, kPalette };
+enum Binding { kFunctions, kNodes, kAlias, kChains, kTallies, kKeys, kDensity, kColorSums, kPalette, kStages };
+constexpr int kBuffers = 10;
 
 constexpr std::uint32_t kGroupSize = 64;  // local_size_x in the shader
 constexpr std::uint32_t kMaxChains = 1u << 18;
+/// Points may go far beyond X under variations (spherical, julia near 0): the CPU kernel's bound then.
+constexpr float kVariationEscapeBound = 1e10f;
 
 /// One function as the shader's `Fn` (std430: 64 bytes).
 struct GpuFunction {
@@ -70,27 +76,53 @@ std::int64_t chainBudget(const RenderJob& job, ChainRange chains) {
 ChaosCompute::ChaosCompute(const GpuInfo& info, ChaosOutput output, bool accumulateColor, bool allowAtomic64)
     : info_(info),
       output_(output),
-      color_(accumulateColor && output != ChaosOutput::Points),
+      color_(accumulateColor && (output == ChaosOutput::Image || output == ChaosOutput::Voxels)),
       points_(output == ChaosOutput::Points),
       atomic64_(allowAtomic64 && info.atomic64 && output == ChaosOutput::Image) {
+  // An IFS with variations gets a program specialised to the variations it uses (programFor),
+  // built on first use: plain grid IFSs pay nothing for them.
+  if (output != ChaosOutput::Maps) plainProgram_ = buildProgram("");
+  program_ = plainProgram_;
+  glGenBuffers(kBuffers, buffers_);
+}
+
+unsigned ChaosCompute::buildProgram(const std::string& usedVariations) const {
+  const bool variations = !usedVariations.empty();
   std::string source = "#version 430 core\n";
   if (atomic64_)
     source += "#extension GL_ARB_gpu_shader_int64 : require\n#extension GL_NV_shader_atomic_int64 : require\n";
   source += std::string("#define ATOMIC64 ") + (atomic64_ ? "1" : "0") + "\n#define ACCUMULATE_COLOR " +
             (color_ ? "1" : "0") + "\n#define EMIT_POINTS " + (points_ ? "1" : "0") + "\n#define BIN_VOXELS " +
-            (output == ChaosOutput::Voxels ? "1" : "0") + "\n#line 1\n";
+            (output_ == ChaosOutput::Voxels ? "1" : "0") + "\n#define VARIATIONS " + (variations ? "1" : "0") +
+            "\n#define EVALUATE_MAPS " + (output_ == ChaosOutput::Maps ? "1" : "0") + "\n";
+  if (variations)
+    source += variationDefines(usedVariations) + "#line 1 1\n" + shaderSource("flame_variations.comp.glsl") + "\n";
+  source += "#line 1 0\n";
   source += shaderSource("chaos_game.comp.glsl");
   const gl::ShaderBuild shader = gl::compileShader(GL_COMPUTE_SHADER, source.c_str());
   if (!shader.id) throw GpuUnavailable("the GPU driver rejected the chaos-game shader: " + shader.log);
   const gl::ShaderBuild program = gl::linkProgram({shader.id});
   if (!program.id) throw GpuUnavailable("the GPU driver could not link the chaos-game shader: " + program.log);
-  program_ = program.id;
-  glGenBuffers(9, buffers_);
+  return program.id;
 }
 
 ChaosCompute::~ChaosCompute() {
-  glDeleteBuffers(9, buffers_);
-  glDeleteProgram(program_);
+  glDeleteBuffers(kBuffers, buffers_);
+  if (plainProgram_) glDeleteProgram(plainProgram_);
+  for (const auto& [used, program] : variationPrograms_) glDeleteProgram(program);
+}
+
+unsigned ChaosCompute::programFor(const CompiledIfs& ifs) {
+  if (!ifs.hasVariations && output_ != ChaosOutput::Maps) return plainProgram_;
+  const std::string used = usedVariations(ifs);
+  if (const auto it = variationPrograms_.find(used); it != variationPrograms_.end()) return it->second;
+  // A modeller session tries many sets of variations; keep the last few programs, not all.
+  constexpr std::size_t kKeptPrograms = 8;
+  if (variationPrograms_.size() >= kKeptPrograms) {
+    for (const auto& [key, program] : variationPrograms_) glDeleteProgram(program);
+    variationPrograms_.clear();
+  }
+  return variationPrograms_[used] = buildProgram(used);
 }
 
 void ChaosCompute::allocate(unsigned buffer, std::size_t bytes, const std::string& what) {
@@ -107,29 +139,7 @@ void ChaosCompute::allocate(unsigned buffer, std::size_t bytes, const std::strin
     throw GpuUnavailable("the GPU is out of memory for " + what + " (" + megabytes(bytes) + ")");
 }
 
-void ChaosCompute::setup(const CompiledIfs& ifs, const RenderJob& job, ChainRange share, int voxelResolution) {
-  // The compute shader walks grid functions chosen independently; the CPU renderer takes the
-  // rest (auto falls back to it).
-  if (ifs.barycentricSize > 0)
-    throw GpuUnavailable("the GPU renderer does not run free-form (control point) IFSs; the CPU renderer does");
-  if (!ifs.transitionAlias.empty())
-    throw GpuUnavailable("the GPU renderer does not follow transition matrices; the CPU renderer does");
-  for (const CompiledFunction& f : ifs.functions)
-    if (!f.points.empty())
-      throw GpuUnavailable("the GPU renderer does not run condensation functions; the CPU renderer does");
-  job_ = job;
-  // The buffers hold the share's chains only; the shader adds share.begin to a chain's local
-  // index wherever the global index matters (its seed, its budget).
-  const std::uint32_t chains = share.size();
-  chains_ = chains;
-  count_ = std::uint32_t(ifs.functions.size());
-  issued_ = 0;
-  budgetBase_ = budgetExtra_ = extraHere_ = 0;
-  if (job.samples > 0 && share.total > 0) {
-    budgetBase_ = std::uint64_t(job.samples) / share.total;
-    budgetExtra_ = std::uint64_t(job.samples) % share.total;
-    extraHere_ = std::uint64_t(chainBudget(job, share)) - budgetBase_ * chains;
-  }
+void ChaosCompute::uploadIfs(const CompiledIfs& ifs) {
   // The compiled IFS: functions (then the final function) and their node pairs.
   std::vector<GpuFunction> functions;
   std::vector<float> nodes;
@@ -155,14 +165,35 @@ void ChaosCompute::setup(const CompiledIfs& ifs, const RenderJob& job, ChainRang
   std::vector<std::uint32_t> alias;
   for (const AliasEntry& e : ifs.alias) alias.insert(alias.end(), {e.threshold, e.alias});
 
-  const OrbitCamera camera(job.camera, job.width, job.height);
-  const OrbitCamera::PixelRows rows = camera.pixelRows();
+  auto upload = [&](Binding b, const void* data, std::size_t bytes, const std::string& what) {
+    allocate(buffers_[b], bytes, what);
+    glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(bytes), data);
+  };
+  upload(kFunctions, functions.data(), functions.size() * sizeof(GpuFunction), "the IFS");
+  upload(kNodes, nodes.data(), nodes.size() * sizeof(float), "the IFS's grids");
+  upload(kAlias, alias.data(), alias.size() * 4, "the IFS");
+  if (ifs.hasVariations || output_ == ChaosOutput::Maps) {
+    const std::vector<std::uint32_t> stages = packVariationStages(ifs);
+    upload(kStages, stages.data(), stages.size() * 4, "the IFS's variations");
+  }
+}
+
+void ChaosCompute::depthRange(const CompiledIfs& ifs, const RenderJob& job, const OrbitCamera& camera) {
   // 32-bit keys quantise depth linearly over the depth range the plotted points can have: a
   // trilinear lookup is a convex combination of a cell's nodes, so every plotted point lies within
   // the depth range of the nodes of the functions that produce it (the final function's, if any).
-  // It depends on the IFS and the camera only, never on the chain range: the keys of a render's
-  // parts mean the same depths, so their minimum is the whole render's.
+  // Variations move points beyond the nodes: their range comes from a short pilot chaos game on
+  // the CPU (points outside it take the nearest end step). Either way it depends on the IFS and
+  // the camera only, never on the chain range: the keys of a render's parts mean the same depths,
+  // so their minimum is the whole render's.
   float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+  if (ifs.hasVariations && output_ == ChaosOutput::Image && !atomic64_ &&
+      variationDepthRange(ifs, camera, job.skip, lo, hi)) {
+    depthMin_ = lo;
+    depthScale_ = 65534.0f / (hi - lo);
+    return;
+  }
+  const OrbitCamera::PixelRows rows = camera.pixelRows();
   auto range = [&](const CompiledFunction& f) {
     for (const NodePair& p : f.pairs)
       for (const float* q : {p.a, p.b}) {
@@ -178,18 +209,42 @@ void ChaosCompute::setup(const CompiledIfs& ifs, const RenderJob& job, ChainRang
   lo = std::max(lo, float(camera.nearPlane()));
   depthMin_ = lo;
   depthScale_ = hi > lo ? 65534.0f / (hi - lo) : 0.0f;  // 0xFFFF.... stays the empty key
+}
+
+void ChaosCompute::setup(const CompiledIfs& ifs, const RenderJob& job, ChainRange share, int voxelResolution) {
+  // The compute shader walks grid functions chosen independently; the CPU renderer takes the
+  // rest (auto falls back to it).
+  if (ifs.barycentricSize > 0)
+    throw GpuUnavailable("the GPU renderer does not run free-form (control point) IFSs; the CPU renderer does");
+  if (!ifs.transitionAlias.empty())
+    throw GpuUnavailable("the GPU renderer does not follow transition matrices; the CPU renderer does");
+  for (const CompiledFunction& f : ifs.functions)
+    if (!f.points.empty())
+      throw GpuUnavailable("the GPU renderer does not run condensation functions; the CPU renderer does");
+  program_ = programFor(ifs);
+  job_ = job;
+  // The buffers hold the share's chains only; the shader adds share.begin to a chain's local
+  // index wherever the global index matters (its seed, its budget).
+  const std::uint32_t chains = share.size();
+  chains_ = chains;
+  count_ = std::uint32_t(ifs.functions.size());
+  issued_ = 0;
+  budgetBase_ = budgetExtra_ = extraHere_ = 0;
+  if (job.samples > 0 && share.total > 0) {
+    budgetBase_ = std::uint64_t(job.samples) / share.total;
+    budgetExtra_ = std::uint64_t(job.samples) % share.total;
+    extraHere_ = std::uint64_t(chainBudget(job, share)) - budgetBase_ * chains;
+  }
+  const OrbitCamera camera(job.camera, job.width, job.height);
+  const OrbitCamera::PixelRows rows = camera.pixelRows();
+  depthRange(ifs, job, camera);
 
   voxels_ = output_ == ChaosOutput::Voxels ? voxelResolution : 0;
   const std::size_t n = std::size_t(voxels_);
   pixels_ = points_ ? 0 : voxels_ > 0 ? n * n * n : std::size_t(job.width) * std::size_t(job.height);
   const std::string image = voxels_ > 0 ? std::to_string(voxels_) + "³ volume"
                                         : std::to_string(job.width) + "×" + std::to_string(job.height) + " image";
-  allocate(buffers_[kFunctions], functions.size() * sizeof(GpuFunction), "the IFS");
-  glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(functions.size() * sizeof(GpuFunction)), functions.data());
-  allocate(buffers_[kNodes], nodes.size() * sizeof(float), "the IFS's grids");
-  glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(nodes.size() * sizeof(float)), nodes.data());
-  allocate(buffers_[kAlias], alias.size() * 4, "the IFS");
-  glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(alias.size() * 4), alias.data());
+  uploadIfs(ifs);
   allocate(buffers_[kChains], std::size_t(chains) * 64, "the chains");
   allocate(buffers_[kTallies], std::size_t(chains) * 8, "the chains");
   const std::uint32_t ones = 0xFFFFFFFFu, zero = 0;
@@ -225,7 +280,7 @@ void ChaosCompute::setup(const CompiledIfs& ifs, const RenderJob& job, ChainRang
       glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(palette.size() * sizeof(float)), palette.data());
     }
   }
-  for (int b = 0; b < 9; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(b), buffers_[b]);
+  for (int b = 0; b < kBuffers; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(b), buffers_[b]);
 
   glUseProgram(program_);
   auto loc = [&](const char* name) { return glGetUniformLocation(program_, name); };
@@ -234,7 +289,8 @@ void ChaosCompute::setup(const CompiledIfs& ifs, const RenderJob& job, ChainRang
   glUniform1ui(loc("uCount"), count_);
   glUniform1i(loc("uHasFinal"), ifs.finalFunction ? 1 : 0);
   glUniform1ui(loc("uSkip"), std::uint32_t(job.skip));
-  glUniform1f(loc("uEscape"), limits::kEscapeBound);
+  glUniform1f(loc("uEscape"), ifs.hasVariations ? std::max(limits::kEscapeBound, kVariationEscapeBound)
+                                                 : limits::kEscapeBound);
   glUniform2ui(loc("uSeed"), std::uint32_t(job.seed), std::uint32_t(job.seed >> 32));
   glUniform2ui(loc("uBudget"), std::uint32_t(budgetBase_), std::uint32_t(budgetExtra_));
   glUniform1i(loc("uUnlimited"), job.samples <= 0 ? 1 : 0);
@@ -329,6 +385,37 @@ void ChaosCompute::readPoints(std::vector<float>& slots, std::uint32_t iteration
   slots.resize(std::size_t(iterations) * chains_ * 8);
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffers_[kKeys]);
   glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(slots.size() * 4), slots.data());
+}
+
+std::vector<std::array<float, 3>> ChaosCompute::evaluateMaps(const CompiledIfs& ifs,
+                                                             const std::vector<std::uint32_t>& functions,
+                                                             const std::vector<std::array<float, 3>>& points,
+                                                             std::uint64_t seed) {
+  if (output_ != ChaosOutput::Maps) throw std::logic_error("evaluateMaps needs a ChaosCompute for ChaosOutput::Maps");
+  const std::size_t n = std::min(functions.size(), points.size());
+  program_ = programFor(ifs);
+  uploadIfs(ifs);
+  // Chain slots as the shader's Chain (64 bytes): p = (x, y, z, 0), misc.x = the function.
+  std::vector<std::uint32_t> slots(n * 16, 0u);
+  for (std::size_t i = 0; i < n; ++i) {
+    std::memcpy(&slots[16 * i], points[i].data(), 12);
+    slots[16 * i + 12] = functions[i];
+  }
+  allocate(buffers_[kChains], slots.size() * 4, "the points");
+  glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(slots.size() * 4), slots.data());
+  for (int b = 0; b < kBuffers; ++b) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, GLuint(b), buffers_[b]);
+  glUseProgram(program_);
+  auto loc = [&](const char* name) { return glGetUniformLocation(program_, name); };
+  glUniform1ui(loc("uChains"), std::uint32_t(n));
+  glUniform1ui(loc("uChainBase"), 0);
+  glUniform2ui(loc("uSeed"), std::uint32_t(seed), std::uint32_t(seed >> 32));
+  if (n > 0) glDispatchCompute(std::uint32_t((n + kGroupSize - 1) / kGroupSize), 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffers_[kChains]);
+  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, GLsizeiptr(slots.size() * 4), slots.data());
+  std::vector<std::array<float, 3>> out(n);
+  for (std::size_t i = 0; i < n; ++i) std::memcpy(out[i].data(), &slots[16 * i], 12);
+  return out;
 }
 
 }  // namespace gridifs::gpu

@@ -3,7 +3,9 @@
 // and the image buffers in shader storage buffers, one dispatch per slice of iterations, and the
 // read-back of the buffers. Internal to GpuChaosRenderer and generatePointsGpu; every call must
 // run on the thread whose context is current.
+#include <array>
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -14,8 +16,9 @@
 namespace gridifs::gpu {
 
 /// What a dispatch writes: a projected image (z-buffer, density, flame colour sums), every plotted
-/// point (export-points), or hits per voxel of a lattice over X (the density volume).
-enum class ChaosOutput { Image, Points, Voxels };
+/// point (export-points), hits per voxel of a lattice over X (the density volume), or (tests) the
+/// images f(p) of given points under given functions (evaluateMaps).
+enum class ChaosOutput { Image, Points, Voxels, Maps };
 
 /// The buffers as read back: the raw keys, densities and fixed-point colour sums (Voxels: density
 /// and colorSums per voxel, 6 words a voxel).
@@ -54,7 +57,9 @@ std::int64_t chainBudget(const RenderJob& job, ChainRange chains);
 
 class ChaosCompute {
  public:
-  /// Compiles the program variant. Throws GpuUnavailable when the driver rejects it.
+  /// Compiles the program variant (those for IFSs with flame variations, one per set of
+  /// variations used, when setup or evaluateMaps first needs them). Throws GpuUnavailable when the
+  /// driver rejects it.
   /// accumulateColor: colour sums (Image: the flame display's; Voxels: rgb per voxel).
   ChaosCompute(const GpuInfo& info, ChaosOutput output, bool accumulateColor, bool allowAtomic64);
   ~ChaosCompute();
@@ -77,19 +82,35 @@ class ChaosCompute {
   std::int64_t samplesDone() const;
   /// Whether every chain of the range has spent its budget (at once for an empty range).
   bool finished() const;
+  /// Maps only (tests): f_{functions[i]}(points[i]) for every i, through the shader's own map
+  /// (the grid lookup, extrapolated where the function has variations, then its variation stage),
+  /// random variations drawing from stream i under `seed`. Waits for the result.
+  std::vector<std::array<float, 3>> evaluateMaps(const CompiledIfs& ifs, const std::vector<std::uint32_t>& functions,
+                                                 const std::vector<std::array<float, 3>>& points, std::uint64_t seed);
   /// The chains this setup plays (the range's size).
   std::uint32_t chains() const { return chains_; }
   bool atomic64() const { return atomic64_; }
 
  private:
   void allocate(unsigned buffer, std::size_t bytes, const std::string& what);
+  /// usedVariations: empty for the plain program, else usedVariations(ifs) (gpu/variation_stage.h).
+  unsigned buildProgram(const std::string& usedVariations) const;
+  /// The program for `ifs`: the plain one, or the one specialised to its variations (built and
+  /// kept on first use).
+  unsigned programFor(const CompiledIfs& ifs);
+  /// Functions, node pairs, the alias table and (with variations) the variation stages.
+  void uploadIfs(const CompiledIfs& ifs);
+  /// depthMin_ and depthScale_ for the 32-bit keys.
+  void depthRange(const CompiledIfs& ifs, const RenderJob& job, const OrbitCamera& camera);
 
   GpuInfo info_;
   ChaosOutput output_ = ChaosOutput::Image;
   bool color_ = false, points_ = false, atomic64_ = false;
   int voxels_ = 0;
-  unsigned program_ = 0;
-  unsigned buffers_[9] = {};
+  unsigned program_ = 0;  // the program of the current setup: plainProgram_ or a variation program
+  unsigned plainProgram_ = 0;
+  std::map<std::string, unsigned> variationPrograms_;  // by usedVariations(ifs)
+  unsigned buffers_[10] = {};
   RenderJob job_;
   std::uint32_t chains_ = 0, count_ = 0;
   // Every chain's budget is budgetBase_ (+1 for the first budgetExtra_ of the job's chains);

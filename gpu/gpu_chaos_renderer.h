@@ -17,8 +17,9 @@
 // the GPU's chains are not the CPU's chunks).
 // Z-buffer keys: with GL_NV_shader_atomic_int64 the CPU renderer's 64-bit key (depth bits << 32 |
 // rgba8): depth order and colour exact. Without it, a 32-bit key: depth quantised to 16 bits
-// linearly over the depth range of the IFS's nodes (1/65536 of the scene's depth) and colour to
-// RGB565; nearer points still win except within that step, and colours have 5-6-5 bits.
+// linearly over the depth range of the IFS's nodes (with flame variations: of a short pilot chaos
+// game; 1/65536 of the scene's depth) and colour to RGB565; nearer points still win except within
+// that step, and colours have 5-6-5 bits.
 //
 // Threading: as ChaosRenderer (one controlling thread calls the public methods). snapshot() shows
 // the buffers as of the renderer thread's last read-back (it asks for a new one, at most every

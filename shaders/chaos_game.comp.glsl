@@ -11,6 +11,8 @@
 //   BIN_VOXELS        1: count every plotted point in its voxel of an n³ lattice over X = [-1, 1]³
 //                     instead of projecting it (the density volume; Sokolov & Gentil §3.4's
 //                     measure binned), with ACCUMULATE_COLOR: fixed-point rgb sums per voxel.
+//   VARIATIONS        1: functions may have flame variations (flame_variations.comp.glsl, prepended).
+//   EVALUATE_MAPS     1: no chaos game; map given points through one function each (tests).
 layout(local_size_x = 64) in;
 
 struct Fn {
@@ -98,19 +100,18 @@ uint mix32(uint x) {
 
 float signedUnit(uint bits) { return float(bits >> 8) * (2.0 / 16777216.0) - 1.0; }
 
+vec4 randomPoint(inout uvec4 rng) {
+  return vec4(signedUnit(nextRandom(rng)), signedUnit(nextRandom(rng)), signedUnit(nextRandom(rng)), 0.0);
+}
+
 void restartChain(inout Chain ch) {
-  ch.p = vec4(signedUnit(nextRandom(ch.rng)), signedUnit(nextRandom(ch.rng)), signedUnit(nextRandom(ch.rng)), 0.0);
+  ch.p = randomPoint(ch.rng);
   ch.color = vec4(0.5, 0.5, 0.5, float(nextRandom(ch.rng) >> 8) * (1.0 / 16777216.0));
   ch.misc.y = uSkip;
 }
 
-// p = f(p): clamp to X, locate the cell, trilinear interpolation of the distorted nodes (the same
-// operations as CompiledFunction::evaluate).
-vec3 applyFunction(uint fi, vec3 p) {
-  const Fn f = fns[fi];
-  p = clamp(p, vec3(-1.0), vec3(1.0));
-  const vec3 s = (p + 1.0) * f.toLattice.xyz;
-  const vec3 c = min(floor(s), f.maxCell.xyz);
+// The trilinear interpolation of function f's distorted nodes at lattice coordinate s in cell c.
+vec3 interpolateCell(const Fn f, const vec3 s, const vec3 c) {
   const vec3 t = s - c;
   const uvec3 ci = uvec3(c);
   const uint i00 = 2u * (f.pairOffset + ci.x + f.strideJ * ci.y + f.strideK * ci.z);
@@ -125,7 +126,41 @@ vec3 applyFunction(uint fi, vec3 p) {
   return (ea + (eb - ea) * t.x).xyz;
 }
 
-bool inBounds(vec3 p) { return all(lessThanEqual(abs(p), vec3(uEscape))); }  // false for NaN
+// p = f(p): clamp to X, locate the cell, trilinear interpolation of the distorted nodes (the same
+// operations as CompiledFunction::evaluate).
+vec3 applyFunction(uint fi, vec3 p) {
+  const Fn f = fns[fi];
+  p = clamp(p, vec3(-1.0), vec3(1.0));
+  const vec3 s = (p + 1.0) * f.toLattice.xyz;
+  return interpolateCell(f, s, min(floor(s), f.maxCell.xyz));
+}
+
+#if VARIATIONS
+// The grid map of a function with variations, continued beyond X from its border cells (as
+// CompiledFunction::evaluateExtrapolated): p is not clamped, the cell is.
+vec3 applyExtrapolated(uint fi, vec3 p) {
+  const Fn f = fns[fi];
+  const vec3 s = (p + 1.0) * f.toLattice.xyz;
+  return interpolateCell(f, s, max(min(floor(s), f.maxCell.xyz), vec3(0.0)));
+}
+#endif
+
+// The whole map f of function fi: with a variation stage (stages[fi].x, the stage's offset, is
+// not ~0) post(Σ w_i V_i) of the extrapolated grid map, drawing from the chain's stream; else the
+// grid map.
+vec3 mapPoint(uint fi, vec3 p, inout uvec4 rng) {
+#if VARIATIONS
+  const uvec4 stage = stages[fi];
+  if (stage.x != 0xFFFFFFFFu) return applyVariationStage(stage.x, stage.y, applyExtrapolated(fi, p), rng);
+#endif
+  return applyFunction(fi, p);
+}
+
+// Whether every coordinate is finite and within the escape bound, compared on the bits as the CPU
+// does (false for NaN and infinities even where a compiler assumes IEEE comparisons away).
+bool inBounds(vec3 p) {
+  return all(lessThanEqual(floatBitsToUint(p) & 0x7FFFFFFFu, uvec3(floatBitsToUint(uEscape))));
+}
 
 uint chooseFunction(inout uvec4 rng) {
   uint column, low;
@@ -190,6 +225,28 @@ bool plot(vec3 q, vec4 col) {
 }
 #endif
 
+// The stream of job chain `id` under uSeed.
+uvec4 seedStream(uint id) {
+  uvec4 rng = uvec4(mix32(uSeed.x ^ mix32(id)), mix32(uSeed.y ^ mix32(id + 0x9e3779b9u)),
+                    mix32(uSeed.x + mix32(id ^ 0x85ebca6bu)), mix32(uSeed.y + mix32(id ^ 0xc2b2ae35u)));
+  if (all(equal(rng, uvec4(0u)))) rng.x = 1u;
+  for (int k = 0; k < 4; ++k) nextRandom(rng);
+  return rng;
+}
+
+#if EVALUATE_MAPS
+// Tests: slot i holds a point (p) and a function index (misc.x); f(p) replaces the point, drawn
+// from stream uChainBase + i. The same mapPoint as the chaos game's, so the tests check the code
+// that renders.
+void main() {
+  const uint chain = gl_GlobalInvocationID.x;
+  if (chain >= uChains) return;
+  Chain ch = chains[chain];
+  ch.rng = seedStream(uChainBase + chain);
+  ch.p.xyz = mapPoint(ch.misc.x, ch.p.xyz, ch.rng);
+  chains[chain] = ch;
+}
+#else
 void main() {
   const uint chain = gl_GlobalInvocationID.x;  // the slot in this dispatch's buffers
   if (chain >= uChains) return;
@@ -198,10 +255,7 @@ void main() {
     // Seed and budget from the chain's index in the whole job, so that a chain plays the same
     // points in a render part as in the whole render (the parts' sums are then the whole's).
     const uint id = uChainBase + chain;
-    ch.rng = uvec4(mix32(uSeed.x ^ mix32(id)), mix32(uSeed.y ^ mix32(id + 0x9e3779b9u)),
-                   mix32(uSeed.x + mix32(id ^ 0x85ebca6bu)), mix32(uSeed.y + mix32(id ^ 0xc2b2ae35u)));
-    if (all(equal(ch.rng, uvec4(0u)))) ch.rng.x = 1u;
-    for (int k = 0; k < 4; ++k) nextRandom(ch.rng);
+    ch.rng = seedStream(id);
     restartChain(ch);
     ch.misc.x = uUnlimited ? 0xFFFFFFFFu : uBudget.x + (id < uBudget.y ? 1u : 0u);
     chains[chain] = ch;
@@ -213,7 +267,7 @@ void main() {
   const uint n = min(ch.misc.x, uIterations);
   for (uint k = 0u; k < n; ++k) {
     const uint fi = chooseFunction(ch.rng);
-    const vec3 p = applyFunction(fi, ch.p.xyz);
+    const vec3 p = mapPoint(fi, ch.p.xyz, ch.rng);
     const Fn f = fns[fi];
     const vec4 col = ch.color + (f.color - ch.color) * f.speed;  // c = mix(c, c_i, speed)
 #if EMIT_POINTS
@@ -221,7 +275,14 @@ void main() {
 #endif
     if (!inBounds(p)) {
       ++tally.x;
+#if VARIATIONS
+      // A bad value of a flame variation (spherical at 0, log of 0, …): as flam3 and the CPU
+      // kernel, a fresh random point and the chain goes on, without a new skip (Draves & Reckase
+      // 2003, §2); colour and skip count stay.
+      ch.p = randomPoint(ch.rng);
+#else
       restartChain(ch);
+#endif
       continue;
     }
     ch.p.xyz = p;
@@ -234,7 +295,7 @@ void main() {
     vec4 qc = col;
     if (uHasFinal) {
       const Fn g = fns[uCount];
-      q = applyFunction(uCount, p);
+      q = mapPoint(uCount, p, ch.rng);
       if (!inBounds(q)) {
         ++tally.x;
         continue;
@@ -256,3 +317,4 @@ void main() {
   chains[chain] = ch;
   tallies[chain] = tally;
 }
+#endif

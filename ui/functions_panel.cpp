@@ -370,6 +370,7 @@ void drawActiveFunction(ModellerState& state, EditQueue& edits, FunctionsPanelSt
     drawFinalSettings(state, edits, f);
     drawResolution(state, edits, activeRef, f);
     drawPlacement(state, edits, activeRef, f);
+    drawVariationsSection(state, edits, panel, activeRef, f);
     ImGui::PopItemWidth();
     return;
   }
@@ -416,6 +417,7 @@ void drawActiveFunction(ModellerState& state, EditQueue& edits, FunctionsPanelSt
   }
   drawResolution(state, edits, activeRef, f);
   drawPlacement(state, edits, activeRef, f);
+  drawVariationsSection(state, edits, panel, activeRef, f);
   ImGui::PopItemWidth();
   drawContractivity(state, panel, fi);
 }

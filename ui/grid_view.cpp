@@ -9,6 +9,7 @@
 
 #include "edit/node_picking.h"
 #include "model/stack_evaluator.h"
+#include "render/compiled_ifs.h"
 
 namespace gridifs::ui {
 namespace {
@@ -597,6 +598,24 @@ void GridView::buildFunctionScene(ModellerState& state) {
   }
 }
 
+const std::vector<Vec3>& GridView::variationImage(ModellerState& state, std::size_t function) {
+  const std::uint64_t revision = state.document.revisions().geometry;
+  if (revision != variationImageRevision_) {
+    variationImages_.clear();
+    variationImageRevision_ = revision;
+  }
+  auto [it, added] = variationImages_.try_emplace(function);
+  if (added) {
+    try {
+      const Project& project = state.document.project();
+      it->second = functionImageSamples(project.functions[function], *state.document.evaluatedGrid(function));
+    } catch (const ModelError&) {
+      it->second.clear();
+    }
+  }
+  return it->second;
+}
+
 void GridView::buildIfsScene(ModellerState& state) {
   appendCube(scene_.lines, {0.62f, 0.65f, 0.72f, 0.55f});
   appendAxes(scene_.lines);
@@ -642,6 +661,14 @@ void GridView::buildIfsScene(ModellerState& state) {
     }
     const bool active = state.activeFunction == FunctionRef(int(f));
     const float alpha = functions[f].muted ? 0.2f : active ? 0.95f : 0.45f;
+    if (functions[f].hasVariationStage()) {
+      // Flame variations (Draves & Reckase 2003, §3): the grid is only g; draw it faintly and the
+      // function's image of X's lattice lines, so the artist sees what the variations do.
+      appendGridLines(*grid, lineColor(functions[f].color, 0.25f * alpha), scene_.lines);
+      const glm::vec4 color = lineColor(functions[f].color, alpha);
+      for (const Vec3& q : variationImage(state, f)) scene_.points.push_back(vertex(q, color, active ? 3.0f : 2.0f));
+      continue;
+    }
     appendGridLines(*grid, lineColor(functions[f].color, alpha), scene_.lines);
     if (active && grid->nodeCount() <= 30000)
       for (const Vec3& p : grid->nodes()) scene_.points.push_back(vertex(p, {glm::vec3(functions[f].color), 1.0f}, 4.5f));

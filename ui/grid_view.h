@@ -6,6 +6,7 @@
 // after the edits are applied (the fixed frame order of ui/modeller_app.cpp).
 #include <cstdint>
 #include <glm/vec2.hpp>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -72,6 +73,9 @@ class GridView {
   void zoom(ModellerState& state, EditQueue& edits, float wheel);
   void buildFunctionScene(ModellerState& state);
   void buildIfsScene(ModellerState& state);
+  /// Function `function`'s image of X's lattice lines (a function with variations), cached until
+  /// the geometry changes.
+  const std::vector<Vec3>& variationImage(ModellerState& state, std::size_t function);
   bool usesProjectCamera() const { return content_ == Content::Ifs && camera_.axis == ViewAxis::User; }
 
   /// Everything a view's picture depends on; equal keys mean the texture is still valid.
@@ -97,6 +101,8 @@ class GridView {
   std::string id_;
   RenderTarget target_;
   ViewScene scene_;
+  std::map<std::size_t, std::vector<Vec3>> variationImages_;
+  std::uint64_t variationImageRevision_ = 0;
   glm::dvec2 size_{1.0, 1.0};  // logical pixels
   float framebufferScale_ = 1.0f;
   bool hovered_ = false;

@@ -20,11 +20,16 @@ struct FunctionsPanelState {
     double bound = 0.0;
     bool valid = false;
   } contractivity;
+  std::string variationFilter;  // the Variations section's search text
 };
 /// functions_panel.cpp: the IFS's functions — add, duplicate, delete, reorder, mute, rename,
 /// weight, color, palette index, resolution, placement (Gröller & Wegenkittl 1994, §4.5) — and
 /// the final function below them: add, remove, mute, interpolation, resolution, placement.
 void drawFunctionsPanel(ModellerState& state, EditQueue& edits, FunctionsPanelState& panel);
+/// variations_panel.cpp: the flame variations of function `ref` (its Variations section): blend
+/// weights and parameters as keyable sliders, a searchable list to add one, the post transform.
+void drawVariationsSection(ModellerState& state, EditQueue& edits, FunctionsPanelState& panel, FunctionRef ref,
+                           const Function& f);
 /// operation_stack_panel.cpp: add operations (with the current selection) and reorder, mute,
 /// delete and pick them in the active function's stack.
 void drawOperationStackPanel(ModellerState& state, EditQueue& edits);

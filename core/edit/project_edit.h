@@ -19,6 +19,7 @@
 #include "edit/set_edits.h"
 #include "edit/settings_edits.h"
 #include "edit/shading_edits.h"
+#include "edit/variation_edits.h"
 
 namespace gridifs {
 
@@ -37,6 +38,8 @@ using ProjectEdit = std::variant<
     SetFunctionColor, SetPaletteIndex, SetColorSpeed, AddSymmetry,
     // condensation and median sets (edit/set_edits.h)
     SetCondensationSet, SetSetShape, SetSetFile, SetSetFill, SetSetGrid, SetMedianRotation,
+    // flame variations (edit/variation_edits.h)
+    SetVariationWeight, AddVariation, RemoveVariation, SetVariationParameter, SetPostTransform,
     // the operation stack and node drags (edit/operation_edits.h)
     AddOperation, RemoveOperation, MoveOperation, DuplicateOperation, SetOperationMuted, SetOperation,
     SetOperationSelection, PlaceCenter, MoveNodes,

@@ -80,6 +80,28 @@ std::string coefsText(const FlameAffine& f) {
   return num(f.a) + " " + num(f.d) + " " + num(f.b) + " " + num(f.e) + " " + num(f.c) + " " + num(f.f);
 }
 
+/// A function's variations and their parameters as xform attributes (linear 1 without any).
+std::string variationAttributes(const Function& fn, const std::string& label, std::vector<std::string>& warnings) {
+  std::string text;
+  for (const auto& [name, weight] : fn.variations) text += (text.empty() ? "" : " ") + name + "=\"" + num(weight) + "\"";
+  if (text.empty()) text = "linear=\"1\"";
+  for (const auto& [attribute, value] : fn.variation_params) text += " " + attribute + "=\"" + num(value) + "\"";
+  if (fn.post) {
+    const auto m = fn.post->affine();
+    if (m[0][2] != 0.0 || m[1][2] != 0.0 || m[2][0] != 0.0 || m[2][1] != 0.0 || m[2][3] != 0.0)
+      warnings.push_back(label + "'s post map moves points out of the plane z = 0; its plane part is exported");
+  }
+  return text;
+}
+
+/// The post map's plane part as the xform's `post` attribute (none when it has no post map).
+std::string postAttribute(const Function& fn) {
+  if (!fn.post) return "";
+  const auto m = fn.post->affine();
+  const FlameAffine f{m[0][0], m[0][1], m[0][3], m[1][0], m[1][1], m[1][3]};
+  return " post=\"" + coefsText(f) + "\"";
+}
+
 }  // namespace
 
 FlameAffine fitAffine(const Grid& g, double& maxError) {
@@ -116,23 +138,33 @@ FlameExport exportFlame(const Project& project, const std::filesystem::path& pro
                      "a free-form (control point) IFS has no flame form: its maps act on barycentric "
                      "coordinates, not on the plane");
   FlameExport out;
-  // The flame plane is X's z = 0 plane with y flipped (image rows go down with y); the frame
-  // is recorded so that importing the file again restores the same grids.
+  // A project with flame variations lives in the flame's own coordinates (X's plane z = 0 is the
+  // flame plane, seen from below: see isNativeGenome); its maps are written as they are.
+  bool native = project.final_function && project.final_function->hasVariationStage();
+  for (const Function& fn : project.functions) native |= fn.hasVariationStage();
+  // Otherwise the flame plane is X's z = 0 plane with y flipped (image rows go down with y); the
+  // frame is recorded so that importing the file again restores the same grids.
   FlameFrame frame;
   frame.scale = project.render.flame.density_unit;  // flam3's exposure counts density per flame unit
   const Camera& cam = project.camera;
   const RenderSettings& r = project.render;
-  if (!(cam.ortho && cam.pitch == 90.0))
+  if (native) frame.scale = 1.0;
+  if (!native && !(cam.ortho && cam.pitch == 90.0))
     out.warnings.push_back(
         "the camera is not an orthographic view from above; the flame frames its target and extent seen from above");
+  if (native && !(cam.ortho && cam.pitch == -90.0))
+    out.warnings.push_back(
+        "the camera is not an orthographic view of the plane from below; the flame frames its target and extent");
   const double halfH = cam.distance * std::tan(cam.fov * 3.14159265358979323846 / 360.0);
   const double ppu = r.height / (2.0 * halfH) * frame.scale;
-  const FlamePoint center = frame.fromX({cam.target.x, cam.target.y});
+  const FlamePoint center = native ? FlamePoint{cam.target.x, cam.target.y} : frame.fromX({cam.target.x, cam.target.y});
+  double rotate = native ? std::remainder(-90.0 - cam.yaw, 360.0) : 0.0;
+  if (rotate == 0.0) rotate = 0.0;  // no "-0"
   const FlameSettings& fl = r.flame;
   std::ostringstream x;
   x << "<flame name=\"" << xmlEscape(name) << "\" version=\"GridIFS\" size=\"" << r.width << " " << r.height
     << "\" center=\"" << num(center.x) << " " << num(center.y) << "\" scale=\"" << num(ppu)
-    << "\" zoom=\"0\" rotate=\"0\" oversample=\"" << fl.supersample << "\" supersample=\"" << fl.supersample
+    << "\" zoom=\"0\" rotate=\"" << num(rotate) << "\" oversample=\"" << fl.supersample << "\" supersample=\"" << fl.supersample
     << "\" filter=\"" << num(fl.filter_radius) << "\" filter_shape=\"gaussian\" quality=\""
     << num(double(renderSampleCount(r)) / (double(r.width) * r.height)) << "\" background=\"" << num(r.background.x)
     << " " << num(r.background.y) << " " << num(r.background.z) << "\" brightness=\"" << num(fl.brightness)
@@ -145,8 +177,10 @@ FlameExport exportFlame(const Project& project, const std::filesystem::path& pro
     x << " palette=\"" << fl.palette.substr(6) << "\"";
   // flam3 writes its hue beside the colours it has already turned (flam3_print), as we do below.
   if (fl.hue != 0.0) x << " hue=\"" << num(fl.hue) << "\"";
-  x << " " << kFlameFrameAttribute << "=\"" << num(frame.centerX) << " " << num(frame.centerY) << " "
-    << num(frame.scale) << "\">\n";
+  if (!native)
+    x << " " << kFlameFrameAttribute << "=\"" << num(frame.centerX) << " " << num(frame.centerY) << " "
+      << num(frame.scale) << "\"";
+  x << ">\n";
 
   std::vector<std::size_t> kept;
   for (std::size_t i = 0; i < project.functions.size(); ++i)
@@ -163,6 +197,10 @@ FlameExport exportFlame(const Project& project, const std::filesystem::path& pro
                              "(largest node error " +
                              buffer + ")");
     }
+    if (native)
+      return "color=\"" + num(fn.palette_index) + "\" color_speed=\"" + num(fn.color_speed) + "\" " +
+             variationAttributes(fn, label, out.warnings) + " coefs=\"" + coefsText(fit) + "\"" + postAttribute(fn) +
+             " name=\"" + xmlEscape(fn.name) + "\"";
     return "color=\"" + num(fn.palette_index) + "\" color_speed=\"" + num(fn.color_speed) + "\" linear=\"1\" coefs=\"" +
            coefsText(toFlame(fit, frame)) + "\" name=\"" + xmlEscape(fn.name) + "\"";
   };

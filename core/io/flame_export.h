@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "io/flame_variations.h"
+#include "model/flame_variations.h"
 #include "model/grid.h"
 #include "model/project.h"
 

@@ -64,7 +64,7 @@ bool isVariationParameter(const std::string& name) {
 }
 
 FlameXform parseXform(const pugi::xml_node& node, const std::string& where, bool isFinal,
-                      std::set<std::string>& randomLeftOut, std::set<std::string>& unknownLeftOut) {
+                      std::set<std::string>& unknownLeftOut) {
   FlameXform x;
   x.weight = number(node, "weight", isFinal ? 0.0 : 0.5, where);
   if (!isFinal && x.weight < 0.0) fail(where + " has a negative weight");
@@ -108,10 +108,6 @@ FlameXform parseXform(const pugi::xml_node& node, const std::string& where, bool
       const auto v = numbers(a.value(), where + " parameter " + name);
       if (v.size() != 1) fail(where + " parameter " + name + " needs one number");
       x.params[name] = v[0];
-    } else if (isRandomFlameVariation(name)) {
-      if (numbers(a.value(), where + " variation " + name) != std::vector<double>{0.0}) randomLeftOut.insert(name);
-    } else if (isRandomFlameVariationParameter(name)) {
-      continue;  // belongs to a random variation already reported
     } else {
       unknownLeftOut.insert(name);
     }
@@ -201,7 +197,7 @@ FlameGenome parseGenome(const pugi::xml_node& flame, std::size_t index) {
     g.frameHint = std::array<double, 3>{v[0], v[1], v[2]};
   }
 
-  std::set<std::string> randomLeftOut, unknownLeftOut;
+  std::set<std::string> unknownLeftOut;
   std::array<Rgb, Palette::kSize> colors{};
   int colorEntries = 0;
   for (const pugi::xml_node child : flame.children()) {
@@ -210,11 +206,11 @@ FlameGenome parseGenome(const pugi::xml_node& flame, std::size_t index) {
       if (g.xforms.size() >= std::size_t(flame_limits::kMaxXforms))
         fail(where + " has more than " + std::to_string(flame_limits::kMaxXforms) + " xforms");
       g.xforms.push_back(
-          parseXform(child, where + " xform " + std::to_string(g.xforms.size()), false, randomLeftOut, unknownLeftOut));
+          parseXform(child, where + " xform " + std::to_string(g.xforms.size()), false, unknownLeftOut));
       g.xforms.back().preserveZ = preserveZ;
     } else if (tag == "finalxform") {
       if (g.finalXform) fail(where + " has more than one finalxform");
-      g.finalXform = parseXform(child, where + " finalxform", true, randomLeftOut, unknownLeftOut);
+      g.finalXform = parseXform(child, where + " finalxform", true, unknownLeftOut);
       g.finalXform->preserveZ = preserveZ;
     } else if (tag == "color") {
       const int i = int(number(child, "index", -1.0, where + " color"));
@@ -253,11 +249,6 @@ FlameGenome parseGenome(const pugi::xml_node& flame, std::size_t index) {
     if (number(flame, name, 0.0, where) != 0.0) camera += std::string(camera.empty() ? "" : ", ") + name;
   if (!camera.empty())
     g.warnings.push_back("the camera settings " + camera + " have no GridIFS equivalent and were left out");
-  if (!randomLeftOut.empty()) {
-    std::string list;
-    for (const auto& n : randomLeftOut) list += (list.empty() ? "" : ", ") + n;
-    g.warnings.push_back("the random variations " + list + " have no closed form and were left out");
-  }
   if (!unknownLeftOut.empty()) {
     std::string list;
     for (const auto& n : unknownLeftOut) list += (list.empty() ? "" : ", ") + n;
@@ -298,17 +289,31 @@ FlamePoint applyAffine3(const FlameAffine& xy, const std::optional<FlameAffine>&
 
 }  // namespace
 
+static bool isGenomeZVariation(const std::string& name) {
+  return name == "linear" || name == "linear3D" || name == "zscale" || name == "ztranslate" || name == "zcone" ||
+         name == "flatten";
+}
+
 FlamePoint FlameXform::apply(FlamePoint p) const {
   const FlamePoint t = applyAffine3(coefs, yz, zx, p);
-  VariationInput in{t.x, t.y, coefs, &params, t.z};
   FlamePoint sum;
   bool flatten = false;
+  std::uint64_t random = 0x9E3779B97F4A7C15ull;  // only the importer's extent search evaluates random ones
   for (const auto& [name, weight] : variations) {
     const FlameVariation* v = findFlameVariation(name);
+    std::vector<double> values;
+    for (const auto& [attribute, fallback] : v->params) {
+      const auto it = params.find(attribute);
+      values.push_back(it == params.end() ? fallback : it->second);
+    }
+    // The genome's own 3D semantics (Apophysis 7X, JWildfire): planar variations see the plane
+    // and drop z unless the genome preserves it; only the z variations and linear write z.
+    const bool zVariation = isGenomeZVariation(name);
+    const VariationInput in{t.x, t.y, zVariation ? t.z : 0.0, &coefs, values.data(), &random};
     const FlamePoint q = v->apply(in, weight);
     sum.x += q.x;
     sum.y += q.y;
-    if (flameVariationWritesZ(name))
+    if (zVariation)
       sum.z += q.z;
     else if (preserveZ)
       sum.z += weight * t.z;
@@ -332,7 +337,7 @@ bool FlameXform::xyDependsOnZ() const {
 bool FlameXform::isThreeD() const {
   if (yz || zx || postYz || postZx) return true;
   return std::any_of(variations.begin(), variations.end(),
-                     [](const auto& v) { return flameVariationWritesZ(v.first) && v.first != "linear"; });
+                     [](const auto& v) { return isGenomeZVariation(v.first) && v.first != "linear"; });
 }
 
 std::vector<FlameGenome> parseFlameFile(const std::string& xmlText) {

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "flame/palette.h"
-#include "io/flame_variations.h"
+#include "model/flame_variations.h"
 
 namespace gridifs {
 

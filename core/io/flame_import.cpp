@@ -5,6 +5,7 @@
 #include <cmath>
 #include <fstream>
 #include <random>
+#include <set>
 
 #include "io/project_io.h"
 #include "model/stack_evaluator.h"
@@ -19,6 +20,47 @@ constexpr double kPi = 3.14159265358979323846;
 constexpr double kNodeClamp = 1e4;
 
 double clampCoordinate(double v) { return std::isfinite(v) ? std::clamp(v, -kNodeClamp, kNodeClamp) : kNodeClamp; }
+
+/// A 2D genome's xform as a function with native variations: a 2×2×2 grid whose corners are the
+/// pre-affine map's images (it extrapolates, so it is that map on the whole plane; z goes to the
+/// plane z = 0), the xform's variations and parameters by name, and its post map.
+Function nativeXform(const FlameXform& x, const std::string& name) {
+  Function fn;
+  fn.name = name;
+  fn.resolution = {2, 2, 2};
+  fn.weight = x.weight;
+  fn.palette_index = x.color;
+  fn.color_speed = x.color_speed;
+  NodesOp nodes;
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 2; ++i) {
+        const Vec3 u(-1.0 + 2.0 * i, -1.0 + 2.0 * j, -1.0 + 2.0 * k);
+        const FlamePoint q = x.coefs.apply({u.x, u.y, 0.0});
+        nodes.moves.push_back({{i, j, k}, Vec3(q.x, q.y, 0.0) - u});
+      }
+  fn.ops.push_back(Operation{nodes, Center{}, Selection{}, false});
+  for (const auto& [variation, weight] : x.variations) fn.variations[variation] += weight;
+  for (const auto& [attribute, value] : x.params) fn.variation_params[attribute] = value;
+  if (!x.post.isIdentity()) {
+    const FlameAffine& m = x.post;
+    fn.post = PostTransform{{}, std::array<std::array<double, 4>, 3>{{{m.a, m.b, 0.0, m.c}, {m.d, m.e, 0.0, m.f},
+                                                                      {0.0, 0.0, 1.0, 0.0}}}};
+  }
+  return fn;
+}
+
+/// The xform without its random variations: a grid samples a map, and random ones have none.
+FlameXform withoutRandomVariations(const FlameXform& x, std::set<std::string>& dropped) {
+  FlameXform out = x;
+  out.variations.clear();
+  for (const auto& v : x.variations)
+    if (isRandomFlameVariation(v.first))
+      dropped.insert(v.first);
+    else
+      out.variations.push_back(v);
+  return out;
+}
 
 /// A robust extent of the attractor: a short chaos game in double precision with the genome's
 /// weights and chaos rows; returns the 0.5 % and 99.5 % quantiles of x, y and z in the flame
@@ -274,12 +316,36 @@ double flameSamplingError(const Function& function, const FlameXform& map, const
   return worst;
 }
 
+namespace {
+
+/// The camera of a natively imported genome: X holds the flame's own plane, so an orthographic
+/// camera looks at z = 0 from below (pitch -90°), where x runs right and y down as in flam3's
+/// image; yaw -90° - rotate turns the view as flam3's `rotate` does (points plotted at
+/// R(rotate)·(p - centre)). flam3 counts density per unit of its plane, which is X's unit here.
+void frameNatively(const FlameGenome& genome, Camera& cam, FlameSettings& flame) {
+  cam.ortho = true;
+  cam.pitch = -90.0;
+  cam.yaw = -90.0 - genome.rotate;
+  cam.target = Vec3(genome.centerX, genome.centerY, 0.0);
+  const double halfH = 0.5 * genome.height / genome.pixelsPerUnit();
+  cam.fov = 2.0 * std::atan(0.5) * 180.0 / kPi;  // 53.13°: halfH = distance / 2
+  cam.distance = 2.0 * halfH;
+  if (!(cam.distance >= 1e-3 && cam.distance <= 1e4))
+    throw FlameError("the genome's view is too small or too large to frame");
+  flame.density_unit = 1.0;
+}
+
+}  // namespace
+
+bool isNativeGenome(const FlameGenome& genome) { return !genome.threeD && !genome.frameHint; }
+
 FlameImport importFlameGenome(const FlameGenome& genome, const FlameImportOptions& options) {
   if (options.resolution < 2 || options.resolution > limits::kMaxResolution)
     throw FlameError("the resolution must be between 2 and " + std::to_string(limits::kMaxResolution));
   FlameImport out;
   out.warnings = genome.warnings;
-  out.frame = chooseFrame(genome, out.warnings);
+  const bool native = isNativeGenome(genome) && !options.sampleOntoGrids;
+  if (!native) out.frame = chooseFrame(genome, out.warnings);
   Project& p = out.project;
 
   // Palette: the genome's own colors, else flam3's collection by number, turned by `hue` as
@@ -314,25 +380,38 @@ FlameImport importFlameGenome(const FlameGenome& genome, const FlameImportOption
     out.palette = palette;
   }
 
+  // 2D genomes keep their variations natively, in the flame's own coordinates; 3D genomes (their
+  // camera turns the space) and GridIFS's own grid exports (gridifs_frame) are sampled onto grids.
+  std::set<std::string> dropped;
+  auto convert = [&](const FlameXform& x, const std::string& name) {
+    if (native) return nativeXform(x, name);
+    const FlameXform sampled = withoutRandomVariations(x, dropped);
+    Function fn = sampleXform(sampled, out.frame, options.resolution, name);
+    fn.sampling_error = flameSamplingError(fn, sampled, out.frame);
+    return fn;
+  };
   for (std::size_t i = 0; i < genome.xforms.size(); ++i) {
     const FlameXform& x = genome.xforms[i];
-    Function fn = sampleXform(x, out.frame, options.resolution, x.name.empty() ? "x" + std::to_string(i + 1) : x.name);
+    Function fn = convert(x, x.name.empty() ? "x" + std::to_string(i + 1) : x.name);
     if (palette) {
       const Rgb c = palette->lookup(x.color);
       fn.color = Vec3(c.r, c.g, c.b);
     }
-    fn.sampling_error = flameSamplingError(fn, x, out.frame);
     p.functions.push_back(std::move(fn));
   }
   if (genome.finalXform) {
-    Function fn = sampleXform(*genome.finalXform, out.frame, options.resolution, "final");
+    Function fn = convert(*genome.finalXform, "final");
     fn.weight = 1.0;
     if (palette) {
       const Rgb c = palette->lookup(genome.finalXform->color);
       fn.color = Vec3(c.r, c.g, c.b);
     }
-    fn.sampling_error = flameSamplingError(fn, *genome.finalXform, out.frame);
     p.final_function = std::move(fn);
+  }
+  if (!dropped.empty()) {
+    std::string list;
+    for (const auto& n : dropped) list += (list.empty() ? "" : ", ") + n;
+    out.warnings.push_back("the random variations " + list + " of this genome were left out (its maps are sampled onto grids)");
   }
   // chaos → transitions (flam3's xaos: row i weights the xform that follows xform i).
   bool restricted = false;
@@ -417,6 +496,7 @@ FlameImport importFlameGenome(const FlameGenome& genome, const FlameImportOption
   fl.estimator_curve = clamped(genome.estimator_curve, 0.05, 10.0, "estimator_curve");
   fl.filter_radius = clamped(genome.filter, 0.0, 10.0, "filter");
   fl.density_unit = out.frame.scale;  // keeps flam3's exposure (hits per pixel of its plane)
+  if (native) frameNatively(genome, p.camera, fl);
   try {
     validateProject(p);
   } catch (const ModelError& e) {

@@ -40,6 +40,9 @@ struct FlameImportOptions {
   /// genomes, and 3D ones whose xforms are affine in z as the camera sees it) or
   /// clamp(R/2, 2, 32) (see gridResolution in the implementation).
   int resolution = 64;
+  /// Sample every xform onto a grid (the sampled import of 3D genomes) instead of keeping a 2D
+  /// genome's variations natively: for artists who want to sculpt the map's grid.
+  bool sampleOntoGrids = false;
   /// The palette reference to store when the genome carries its own colors (the caller saves
   /// FlameImport::palette there), e.g. "file:name.palette.json".
   std::string inlinePaletteReference;
@@ -56,6 +59,13 @@ struct FlameImport {
 /// The attribute exported flames carry so that importing them again restores the same frame
 /// ("centerX centerY scale"); other programs ignore it.
 inline constexpr const char* kFlameFrameAttribute = "gridifs_frame";
+
+/// Whether `genome` is imported with native variations: a 2D genome that is not GridIFS's own
+/// grid export (no gridifs_frame). Its xforms become functions in the flame's own coordinates (X's
+/// plane z = 0 is the flame plane): a 2×2×2 grid that is the pre-affine map, the variations by
+/// name and the post map; the camera looks at the plane from below. Other genomes are sampled
+/// onto grids in a frame that fits the attractor into X.
+bool isNativeGenome(const FlameGenome& genome);
 
 /// Converts `genome`. Throws FlameError when a map cannot be sampled (no finite node) or the
 /// options are out of range.

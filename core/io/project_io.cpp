@@ -9,6 +9,7 @@
 #include "base/bounded_read.h"
 #include "io/animation_json.h"
 #include "io/free_form_io.h"
+#include "io/variation_io.h"
 #include "io/json_read.h"
 #include "io/operation_json.h"
 #include "io/settings_json.h"
@@ -153,6 +154,7 @@ Function readFunction(const json& f, const std::string& path, std::size_t index)
   }
   free_form_io::readFunctionFields(f, path, fn);
   volume_io::readSetFunctionFields(f, path, fn);
+  variation_io::readFunctionFields(f, path, fn);
   return fn;
 }
 
@@ -212,6 +214,7 @@ ordered_json writeFunction(const Function& f) {
   for (const Operation& op : f.ops) ops.push_back(writeOperation(op));
   o["ops"] = ops;
   free_form_io::writeGridFunctionFields(f, o);
+  variation_io::writeFunctionFields(f, o);
   return o;
 }
 

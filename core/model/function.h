@@ -1,11 +1,13 @@
 #pragma once
 // One function of the IFS: a grid resolution, an op stack and a placement.
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "model/condensation_set.h"
 #include "model/function_kind.h"
+#include "model/function_variations.h"
 #include "model/operation.h"
 #include "model/placement.h"
 
@@ -33,6 +35,15 @@ struct Function {
   /// "rotate" of a Median function: degrees per unit of distance between the sets' centres, about z
   /// (Sokolov & Gentil, §4.1: the rotated median).
   double rotate = 0.0;
+  /// "variations": the flame variations' weights by name (f(p) = post(Σ w_i V_i(g(p))), see
+  /// model/function_variations.h); empty: f = g. Grid functions only.
+  std::map<std::string, double> variations;
+  /// "variation_params": the variations' parameters by flam3's attribute names (`rings2_val`).
+  std::map<std::string, double> variation_params;
+  /// "post": the affine map after the variations (Draves & Reckase 2003, §3.1).
+  std::optional<PostTransform> post;
+  /// Whether f differs from its grid map g (variations or a post transform).
+  bool hasVariationStage() const { return !variations.empty() || post.has_value(); }
   /// "interpolation": how the final function's lattice maps points (ignored in the loop).
   LatticeInterpolation interpolation = LatticeInterpolation::Trilinear;
   bool operator==(const Function&) const = default;

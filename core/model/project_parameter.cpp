@@ -429,7 +429,38 @@ class ParameterResolver {
       return operation(fn.ops[std::size_t(o)]);
     }
     if (key == "interpolation" && fn.interpolation != LatticeInterpolation::Trilinear) return text();
+    // Positions follow io/variation_io's reader: the variations, their parameters, the post map.
+    if (key == "variations") {
+      position(9);
+      return namedNumber(fn.variations, Where::VariationWeight);
+    }
+    if (key == "variation_params") {
+      position(10);
+      return namedNumber(fn.variation_params, Where::VariationParam);
+    }
+    if (key == "post" && fn.post) {
+      position(14);
+      if (!fn.post->matrix) return placement(Where::PostPlacement, Reader::Bounded, 0.0, 0.0);
+      if (end() || token() != "matrix") return end() ? Lookup::NotANumber : Lookup::Missing;
+      if (end()) return Lookup::NotANumber;
+      const int row = index(3);
+      if (row < 0) return Lookup::Missing;
+      p_.a_ = row;
+      return component(4, Where::PostMatrix, Reader::Bounded, 0.0, 0.0);
+    }
     return Lookup::Missing;
+  }
+
+  /// A number of a {"name": number} object (a function's variations or their parameters), at
+  /// the name's place in the file's sorted order.
+  Lookup namedNumber(const std::map<std::string, double>& values, Where where) {
+    if (end()) return values.empty() ? Lookup::Missing : Lookup::NotANumber;
+    const std::string name(token());
+    const auto it = values.find(name);
+    if (it == values.end()) return Lookup::Missing;
+    position(int(std::distance(values.begin(), it)));
+    p_.key_ = name;
+    return number(where, Reader::Bounded, Storage::Double);
   }
 
   Lookup set(const CondensationSet& set) {
@@ -677,6 +708,16 @@ void* ProjectParameter::locate(Project& project) const {
       return &fn.matrix[std::size_t(a_)][std::size_t(c_)];
     case Where::MedianRotate:
       return &fn.rotate;
+    case Where::VariationWeight:
+      return &fn.variations.at(key_);
+    case Where::VariationParam:
+      return &fn.variation_params.at(key_);
+    case Where::PostPlacement: {
+      Placement& p = fn.post->placement;
+      return vectorComponent(b_ == 0 ? p.translate : b_ == 1 ? p.rotate : p.scale);
+    }
+    case Where::PostMatrix:
+      return &(*fn.post->matrix)[std::size_t(a_)][std::size_t(c_)];
     case Where::SetCenter:
       return vectorComponent(fn.set.center);
     case Where::SetRadius:
@@ -912,6 +953,14 @@ std::string ProjectParameter::path() const {
       return item(item(fn + ".matrix", a_), c_);
     case Where::MedianRotate:
       return fn + ".rotate";
+    case Where::VariationWeight:
+      return fn + ".variations." + key_;
+    case Where::VariationParam:
+      return fn + ".variation_params." + key_;
+    case Where::PostPlacement:
+      return item(fn + ".post." + kPlacementKeys[b_], c_);
+    case Where::PostMatrix:
+      return item(item(fn + ".post.matrix", a_), c_);
     case Where::SetCenter:
       return item(fn + ".set.center", c_);
     case Where::SetRadius:

@@ -71,6 +71,10 @@ class ProjectParameter {
     Placement,        // function `f`: `b` 0 translate, 1 rotate, 2 scale, component `c`
     MatrixEntry,      // function `f`: row `a`, column `c`
     MedianRotate,     // function `f`
+    VariationWeight,  // function `f`: the weight of variation `key`
+    VariationParam,   // function `f`: variation parameter `key`
+    PostPlacement,    // function `f`'s post map: `b` 0 translate, 1 rotate, 2 scale, component `c`
+    PostMatrix,       // function `f`'s post matrix: row `a`, column `c`
     SetCenter,        // function `f`'s set: component `c`
     SetRadius,        // ...
     SetSize,          // ... component `c`
@@ -123,6 +127,7 @@ class ProjectParameter {
   /// parameter (OpParam and the rows below it, DensityParam).
   const FieldSchema* field_ = nullptr;
   std::size_t offset_ = 0;  // DensityParam: the field's offset in FractalFieldParams
+  std::string key_;         // VariationWeight, VariationParam: the name
   /// Positions along the file's reading order, level by level (the root's member, the
   /// function, the field, ...), so sorting by it sorts numbers as reading meets them.
   std::array<std::int32_t, 9> order_{};

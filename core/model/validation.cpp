@@ -77,6 +77,13 @@ void validate(const Project& project, const Project* trusted) {
         fail(item(join(path, "resolution"), d), "expected an integer between 2 and 128");
     totalNodes += std::int64_t(fn.resolution[0]) * fn.resolution[1] * fn.resolution[2];
     if (!(fn.weight >= 0.0) || !std::isfinite(fn.weight)) fail(join(path, "weight"), "expected a non-negative weight");
+    if (fn.hasVariationStage() && fn.kind != FunctionKind::Grid)
+      fail(join(path, "variations"), "flame variations apply to grid functions only");
+    try {
+      validateFunctionVariations(fn.variations, fn.variation_params);
+    } catch (const ModelError& e) {
+      throw e.under(path);
+    }
     if (before && before->ops == fn.ops) return;  // calculator parses and morph solves are the cost
     for (std::size_t o = 0; o < fn.ops.size(); ++o) {
       try {

@@ -5,6 +5,7 @@
 // P·λ = Σ_j λ_j p_j. The compiled rows also hold (T·P)_i, so the plotted point comes out of the
 // same pass over the rows: q = Σ_i λ_i (T·P)_i. Colour, skip, escape, the final function and the
 // plotters are those of chaos_kernel.h.
+#include <algorithm>
 #include <vector>
 
 #include "render/chaos_kernel.h"
@@ -45,7 +46,10 @@ inline HotIfs makeHotIfs(const CompiledIfs& compiled, std::vector<HotFunction>& 
   ifs.count = std::uint32_t(compiled.functions.size());
   ifs.finalFunction = compiled.finalFunction ? &hot.back() : nullptr;
   ifs.skip = skip;
-  ifs.escapeBound = escapeBound;
+  // flam3 keeps points up to 1e10 before it calls them bad: spherical and its kin bring far points
+  // back, so an IFS with variations keeps them too.
+  ifs.escapeBound = compiled.hasVariations ? std::max(escapeBound, 1e10f) : escapeBound;
+  ifs.variations = compiled.hasVariations;
   ifs.restartInterval = compiled.restartInterval;
   for (const CompiledFunction& f : compiled.functions) ifs.condensation |= !f.points.empty();
   attachBarycentric(ifs, compiled);

@@ -9,6 +9,7 @@
 // (r, g, b, c) towards the function's (color, palette_index) with its color_speed; a non-finite or
 // escaped point restarts the chain; past `skip`, apply the final function (not in the loop) and
 // hand the point to the plotter.
+#include <array>
 #include <atomic>
 #include <bit>
 #include <cstdint>
@@ -89,6 +90,7 @@ struct alignas(64) HotFunction {
   const float* matrix;  // a free-form IFS's matrix rows (CompiledFunction::matrix), else null
   const float* points;  // a condensation function's samples of its set (x y z 0 each), else null
   std::uint32_t pointCount;
+  const CompiledVariations* variations;  // the flame variation stage, else null
 };
 
 inline HotFunction makeHot(const CompiledFunction& f) {
@@ -105,6 +107,7 @@ inline HotFunction makeHot(const CompiledFunction& f) {
   h.matrix = f.matrix.empty() ? nullptr : f.matrix.data();
   h.points = f.points.empty() ? nullptr : f.points.data();
   h.pointCount = std::uint32_t(f.points.size() / 4);
+  h.variations = f.variations.get();
   return h;
 }
 
@@ -161,6 +164,46 @@ template <int I>
   return a + (b - a) * splat<0>(t);
 }
 
+/// The grid map continued beyond X from its border cells (a function with variations, see
+/// model/function_variations.h): the same float operations as CompiledFunction::evaluateExtrapolated.
+[[gnu::always_inline]] inline v4f applyExtrapolated(const HotFunction& f, v4f p) {
+  const v4f one = {1.0f, 1.0f, 1.0f, 1.0f};
+  const v4f s = (p + one) * f.toLattice;
+  v4f c = __builtin_convertvector(__builtin_convertvector(s, v4i), v4f);
+  c = f.maxCell < c ? f.maxCell : c;
+#if defined(__SSE2__)
+  c = v4f(_mm_max_ps(__m128(c), _mm_setzero_ps()));  // NaN → 0
+#else
+  c = c > 0.0f ? c : v4f{};
+#endif
+  const v4f t = s - c;
+  const v4i ci = __builtin_convertvector(c, v4i);
+  const std::size_t idx = std::uint32_t(ci[0]) + f.strideJ * std::uint32_t(ci[1]) + f.strideK * std::uint32_t(ci[2]);
+  const NodePair* base = f.pairs + idx;
+  // In 4-wide halves: applyVariations is not one of the kernel's AVX2 clones, and SSE2 builds
+  // 8-wide broadcasts through the stack, a store-forwarding stall on every step. The same float
+  // operations per lane as the 8-wide form.
+  const NodePair* n10 = base + f.strideJ;
+  const NodePair* n01 = base + f.strideK;
+  const NodePair* n11 = base + f.strideJ + f.strideK;
+  const v4f ty = splat<1>(t), tz = splat<2>(t);
+  const v4f a0 = load4(base->a) + (load4(n10->a) - load4(base->a)) * ty;
+  const v4f b0 = load4(base->b) + (load4(n10->b) - load4(base->b)) * ty;
+  const v4f a1 = load4(n01->a) + (load4(n11->a) - load4(n01->a)) * ty;
+  const v4f b1 = load4(n01->b) + (load4(n11->b) - load4(n01->b)) * ty;
+  const v4f a = a0 + (a1 - a0) * tz, b = b0 + (b1 - b0) * tz;
+  return a + (b - a) * splat<0>(t);
+}
+
+/// f(p) of a function with variations (Draves & Reckase 2003, §3): the extrapolated grid map, then
+/// post(Σ w_i V_i) in double precision, drawing random variations from the chain's stream
+/// (CompiledVariations::applyKernel: the bodies inlined, sin, cos and atan2 inline).
+[[gnu::noinline]] inline v4f applyVariations(const HotFunction& f, v4f p, std::uint64_t& random) {
+  const v4f q = applyExtrapolated(f, p);
+  const std::array<float, 3> r = f.variations->applyKernel(q[0], q[1], q[2], random);
+  return v4f{r[0], r[1], r[2], 0.0f};
+}
+
 /// Whether every coordinate is finite and within the escape bound (NaN fails).
 [[gnu::always_inline]] inline bool inBounds(v4f p, float bound) {
   const v4f b = {bound, bound, bound, bound};
@@ -195,6 +238,13 @@ struct ChainState {
     row[lane] = 0;
     age[lane] = 0;
   }
+  /// A bad value of a flame variation (spherical at 0, log of 0, …): flam3 replaces the point by a
+  /// fresh random one and goes on without a new fuse (Draves & Reckase 2003, §2), so an IFS whose
+  /// maps often fail still plots; colour, skip count and transition row stay.
+  void replacePoint(int lane) {
+    const std::uint64_t a = rng.next(), b = rng.next();
+    p[lane] = v4f{Rng::signedUnit(a), Rng::signedUnit(a >> 24), Rng::signedUnit(b), 0.0f};
+  }
   /// A fresh chain set for stream (seed, worker).
   static ChainState start(std::uint64_t seed, std::uint64_t worker, int skip) {
     ChainState st;
@@ -218,9 +268,11 @@ struct HotIfs {
   /// Free-form IFS (barycentric_kernel.h): m coordinates and the padded size in blocks of 8
   /// floats; 0 blocks for a grid IFS.
   std::uint32_t barycentricSize = 0, barycentricBlocks = 0;
-  /// Whether some function is a constant condensation (HotFunction::points): the loop with the
-  /// jump to a set is a separate instantiation, so grid-only IFSs run the loop they always ran.
+  /// Whether some function is a constant condensation (HotFunction::points) or has flame
+  /// variations (HotFunction::variations): the loop that checks for them is a separate
+  /// instantiation, so plain grid IFSs run the loop they always ran.
   bool condensation = false;
+  bool variations = false;
 
   [[gnu::always_inline]] std::uint32_t choose(std::uint64_t r) const {
     const std::uint32_t column = std::uint32_t((std::uint64_t(std::uint32_t(r >> 32)) * count) >> 32);
@@ -267,7 +319,7 @@ template <bool kRestricted, class Plot>
   }
   if (ifs.finalFunction) {
     const HotFunction& g = *ifs.finalFunction;
-    const v4f q = apply(g, p);
+    const v4f q = g.variations ? applyVariations(g, p, st.rng.state) : apply(g, p);
     if (!inBounds(q, ifs.escapeBound)) [[unlikely]] {
       ++bad;
       return 0;
@@ -279,8 +331,9 @@ template <bool kRestricted, class Plot>
 
 /// One iteration of one lane; returns what the plotter returned (1 when it plotted the point at once). kRestricted: walk the
 /// transition matrix's Markov chain (Thollot et al. §3.2) instead of independent choices.
-/// kCondensation: a function with points is Barnsley's condensation map (Sokolov & Gentil, §3.1):
-/// the point jumps to a uniformly random sample of its set.
+/// kCondensation: the loop for functions of other kinds: a function with points is Barnsley's
+/// condensation map (Sokolov & Gentil, §3.1), the point jumps to a uniformly random sample of its
+/// set; a function with variations runs its variation stage.
 template <bool kRestricted, bool kRestarts, bool kCondensation = false, class Plot>
 [[gnu::always_inline]] inline int stepLane(ChainState& st, int lane, const HotIfs& ifs, Plot& plot, std::int64_t& bad) {
   if constexpr (kRestarts)
@@ -292,6 +345,8 @@ template <bool kRestricted, bool kRestarts, bool kCondensation = false, class Pl
     if (f.points) {
       const std::uint64_t r = std::uint32_t(st.rng.next());
       p = load4(f.points + 4 * ((r * f.pointCount) >> 32));
+    } else if (f.variations) {
+      p = applyVariations(f, st.p[lane], st.rng.state);
     } else {
       p = apply(f, st.p[lane]);
     }
@@ -301,7 +356,10 @@ template <bool kRestricted, bool kRestarts, bool kCondensation = false, class Pl
   const v4f col = st.color[lane] + (f.color - st.color[lane]) * f.speed;  // Draves & Reckase 2003, §5: c = mix(c, c_i, speed)
   if (!inBounds(p, ifs.escapeBound)) [[unlikely]] {
     ++bad;
-    st.restartLane(lane, ifs.skip);
+    if (kCondensation && ifs.variations)
+      st.replacePoint(lane);  // as flam3 does: a fresh random point, the chain goes on
+    else
+      st.restartLane(lane, ifs.skip);
     return 0;
   }
   return advanceAndPlot<kRestricted>(st, lane, ifs, plot, bad, p, col, nextRow);
@@ -331,8 +389,8 @@ template <class Plot>
   ChainState local = st;
   const std::int64_t rounds = count / kLanes;
   static_assert(kLanes == 4);
-  if (ifs.condensation) [[unlikely]] {
-    // Condensation maps (Sokolov & Gentil, §3.1) in their own instantiations.
+  if (ifs.condensation || ifs.variations) [[unlikely]] {
+    // Condensation maps (Sokolov & Gentil, §3.1) and flame variations in their own instantiations.
     auto lanes = [&]<bool kRestricted, bool kRestarts>() {
       for (std::int64_t n = 0; n < rounds; ++n)
         for (int l = 0; l < kLanes; ++l) plotted += stepLane<kRestricted, kRestarts, true>(local, l, ifs, plot, bad);

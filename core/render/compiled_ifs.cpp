@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <glm/geometric.hpp>
 #include <string>
 
 #include "base/hash.h"
@@ -30,6 +31,8 @@ void compileColor(const Function& function, CompiledFunction& out) {
 /// the skipped first steps cost 2%, short enough that a render's millions of restarts sample each
 /// part of the attractor in proportion.
 constexpr std::uint32_t kRestartInterval = 1024;
+
+std::shared_ptr<const CompiledVariations> compileVariations(const Function& function, const Grid& evaluated);
 
 /// The padded barycentric size of the kernel's blocks: 8, 16, 32 or 64 floats.
 std::uint32_t barycentricPadFor(std::size_t m) {
@@ -66,8 +69,75 @@ CompiledFunction compileFunction(const Function& function, const Grid& evaluated
   }
   compileColor(function, out);
   out.sourceIndex = sourceIndex;
+  if (function.hasVariationStage()) out.variations = compileVariations(function, evaluated);
   return out;
 }
+
+namespace {
+
+/// The least-squares affine fit x' = a·x + b·y + c, y' = d·x + e·y + f of the grid's nodes (x and y
+/// only): for an affine grid, the grid map itself. Dependent variations read it.
+FlameAffine affineFit(const Grid& grid) {
+  // Normal equations over (x, y, 1); the nodes of a lattice make them well conditioned.
+  double m[3][3] = {}, rx[3] = {}, ry[3] = {};
+  const Index3 n = grid.resolution();
+  for (int k = 0; k < n[2]; ++k)
+    for (int j = 0; j < n[1]; ++j)
+      for (int i = 0; i < n[0]; ++i) {
+        const double u[3] = {-1.0 + 2.0 * i / (n[0] - 1), -1.0 + 2.0 * j / (n[1] - 1), 1.0};
+        const Vec3 q = grid.node(i, j, k);
+        for (int r = 0; r < 3; ++r) {
+          for (int c = 0; c < 3; ++c) m[r][c] += u[r] * u[c];
+          rx[r] += u[r] * q.x;
+          ry[r] += u[r] * q.y;
+        }
+      }
+  // The lattice is symmetric about 0, so the system is diagonal.
+  FlameAffine a;
+  a.a = rx[0] / m[0][0];
+  a.b = rx[1] / m[1][1];
+  a.c = rx[2] / m[2][2];
+  a.d = ry[0] / m[0][0];
+  a.e = ry[1] / m[1][1];
+  a.f = ry[2] / m[2][2];
+  return a;
+}
+
+std::shared_ptr<const CompiledVariations> compileVariations(const Function& function, const Grid& evaluated) {
+  auto out = std::make_shared<CompiledVariations>();
+  std::vector<std::pair<const FlameVariation*, double>> chosen;
+  for (const auto& [name, weight] : function.variations) {
+    const int id = flameVariationIndex(name);
+    if (id < 0) throw ModelError("variations." + name, "\"" + name + "\" is not a flame variation");
+    if (weight == 0.0) continue;
+    const FlameVariation& v = flameVariations()[std::size_t(id)];
+    out->variationIds.push_back(id);
+    out->paramOffsets.push_back(std::uint32_t(out->params.size()));
+    for (const auto& [attribute, fallback] : v.params) {
+      const auto it = function.variation_params.find(attribute);
+      out->params.push_back(it == function.variation_params.end() ? fallback : it->second);
+    }
+    chosen.emplace_back(&v, weight);
+    out->random |= v.random;
+  }
+  for (std::size_t i = 0; i < chosen.size(); ++i) {
+    out->terms.push_back({chosen[i].first, chosen[i].second, out->params.data() + out->paramOffsets[i]});
+    out->kernelTerms.push_back(makeKernelVariationTerm(out->terms.back()));
+    out->anyPre |= chosen[i].first->pre;
+  }
+  out->coefs = affineFit(evaluated);
+  if (function.post) {
+    const auto m = function.post->affine();
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 4; ++c) {
+        out->post[r][c] = m[std::size_t(r)][std::size_t(c)];
+        out->hasPost |= out->post[r][c] != (r == c ? 1.0 : 0.0);
+      }
+  }
+  return out;
+}
+
+}  // namespace
 
 CompiledFunction compileMatrixFunction(const Function& function, const FreeFormSpace& space, std::uint32_t pad,
                                        std::size_t sourceIndex) {
@@ -93,16 +163,26 @@ CompiledFunction compileMatrixFunction(const Function& function, const FreeFormS
   return out;
 }
 
-std::array<float, 3> CompiledFunction::evaluate(std::array<float, 3> p) const {
-  // Must perform exactly the float operations of the renderer's kernel (chaos_kernel.h).
-  float s[3], f[3];
-  int cell[3];
+namespace {
+
+/// The lattice cell and the position in it. `extrapolate`: p is not clamped to X, the cell is
+/// clamped to the lattice and the position may lie outside [0, 1] (the border cell continued).
+void locateCell(const CompiledFunction& fn, std::array<float, 3> p, bool extrapolate, int cell[3], float f[3]) {
   for (int d = 0; d < 3; ++d) {
-    s[d] = (clampToX(p[d]) + 1.0f) * toLattice[d];
-    const float c = std::min(float(int(s[d])), maxCell[d]);
+    const float s = ((extrapolate ? p[d] : clampToX(p[d])) + 1.0f) * fn.toLattice[d];
+    float c = std::min(float(int(s)), fn.maxCell[d]);
+    if (extrapolate) c = c > 0.0f ? c : 0.0f;  // NaN → 0, as the kernel's maxps
     cell[d] = int(c);
-    f[d] = s[d] - c;
+    f[d] = s - c;
   }
+}
+
+}  // namespace
+
+std::array<float, 3> CompiledFunction::evaluateExtrapolated(std::array<float, 3> p) const {
+  float f[3];
+  int cell[3];
+  locateCell(*this, p, true, cell, f);
   const std::size_t idx =
       std::size_t(cell[0]) + pairStrideJ * std::size_t(cell[1]) + pairStrideK * std::size_t(cell[2]);
   const NodePair& p00 = pairs[idx];
@@ -119,6 +199,64 @@ std::array<float, 3> CompiledFunction::evaluate(std::array<float, 3> p) const {
     const float b = b0 + (b1 - b0) * f[2];
     out[d] = a + (b - a) * f[0];
   }
+  return out;
+}
+
+std::array<double, 3> CompiledVariations::apply(std::array<double, 3> q, std::uint64_t& random) const {
+  const FlamePoint sum = evaluateVariations(terms.data(), terms.size(), {q[0], q[1], q[2]}, coefs, &random);
+  std::array<double, 3> out{};
+  for (int r = 0; r < 3; ++r) out[r] = post[r][0] * sum.x + post[r][1] * sum.y + post[r][2] * sum.z + post[r][3];
+  return out;
+}
+
+std::array<float, 3> CompiledFunction::evaluateMap(std::array<float, 3> p, std::uint64_t& random) const {
+  if (!variations) return evaluate(p);
+  const std::array<float, 3> q = evaluateExtrapolated(p);
+  return variations->applyKernel(q[0], q[1], q[2], random);
+}
+
+std::array<float, 3> CompiledFunction::evaluate(std::array<float, 3> p) const {
+  // Must perform exactly the float operations of the renderer's kernel (chaos_kernel.h).
+  float f[3];
+  int cell[3];
+  locateCell(*this, p, false, cell, f);
+  const std::size_t idx =
+      std::size_t(cell[0]) + pairStrideJ * std::size_t(cell[1]) + pairStrideK * std::size_t(cell[2]);
+  const NodePair& p00 = pairs[idx];
+  const NodePair& p10 = pairs[idx + pairStrideJ];
+  const NodePair& p01 = pairs[idx + pairStrideK];
+  const NodePair& p11 = pairs[idx + pairStrideJ + pairStrideK];
+  std::array<float, 3> out{};
+  for (int d = 0; d < 3; ++d) {
+    const float a0 = p00.a[d] + (p10.a[d] - p00.a[d]) * f[1];
+    const float b0 = p00.b[d] + (p10.b[d] - p00.b[d]) * f[1];
+    const float a1 = p01.a[d] + (p11.a[d] - p01.a[d]) * f[1];
+    const float b1 = p01.b[d] + (p11.b[d] - p01.b[d]) * f[1];
+    const float a = a0 + (a1 - a0) * f[2];
+    const float b = b0 + (b1 - b0) * f[2];
+    out[d] = a + (b - a) * f[0];
+  }
+  return out;
+}
+
+std::vector<Vec3> functionImageSamples(const Function& function, const Grid& evaluated, int lines, int samples) {
+  const CompiledFunction compiled = compileFunction(function, evaluated, 0);
+  std::uint64_t random = 0x243F6A8885A308D3ull;
+  std::vector<Vec3> out;
+  out.reserve(std::size_t(3 * lines * lines * samples));
+  auto at = [](int i, int n) { return n <= 1 ? 0.0f : -1.0f + 2.0f * float(i) / float(n - 1); };
+  for (int axis = 0; axis < 3; ++axis)
+    for (int a = 0; a < lines; ++a)
+      for (int b = 0; b < lines; ++b)
+        for (int s = 0; s < samples; ++s) {
+          std::array<float, 3> u{};
+          u[std::size_t(axis)] = at(s, samples);
+          u[std::size_t((axis + 1) % 3)] = at(a, lines);
+          u[std::size_t((axis + 2) % 3)] = at(b, lines);
+          const std::array<float, 3> q = compiled.evaluateMap(u, random);
+          const Vec3 p(q[0], q[1], q[2]);
+          if (std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z) && glm::length(p) < 1e6) out.push_back(p);
+        }
   return out;
 }
 
@@ -245,6 +383,8 @@ std::shared_ptr<const CompiledIfs> compileWith(const Project& project,
       throw e.under("final");
     }
   }
+  for (const CompiledFunction& f : ifs->functions) ifs->hasVariations |= f.variations != nullptr;
+  if (ifs->finalFunction) ifs->hasVariations |= ifs->finalFunction->variations != nullptr;
   return ifs;
 }
 

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "model/evaluation_cache.h"
+#include "model/flame_variations.h"
 #include "model/project.h"
 
 namespace gridifs {
@@ -18,6 +19,39 @@ namespace gridifs {
 struct alignas(32) NodePair {
   float a[4];
   float b[4];
+};
+
+/// A function's variation stage (model/function_variations.h): f(p) = post(Σ w_i V_i(g(p))) with g
+/// the grid map extrapolated beyond X. Immutable; `terms` point into `params`.
+struct CompiledVariations {
+  std::vector<VariationTerm> terms;
+  std::vector<double> params;       // every term's parameters, in table order, one term after another
+  std::vector<int> variationIds;    // each term's index in flameVariations() (the GPU's numbering)
+  std::vector<std::uint32_t> paramOffsets;  // where each term's parameters start in `params`
+  FlameAffine coefs;                // the affine fit of g that the dependent variations read
+  double post[3][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};
+  bool random = false;              // some term draws random numbers
+  /// `terms` as the chaos kernel runs them (evaluateKernelVariations), and whether one is a
+  /// pre-variation and whether `post` is not the identity (the kernel skips it then).
+  std::vector<KernelVariationTerm> kernelTerms;
+  bool anyPre = false;
+  bool hasPost = false;
+  CompiledVariations() = default;
+  CompiledVariations(const CompiledVariations&) = delete;  // terms point into params
+  CompiledVariations& operator=(const CompiledVariations&) = delete;
+
+  /// The variation stage applied to the grid's image q = g(p); draws from `random` when a term is random.
+  std::array<double, 3> apply(std::array<double, 3> q, std::uint64_t& random) const;
+  /// The same as the chaos kernel evaluates it (evaluateKernelVariations: the same draws, sin, cos
+  /// and atan2 within 1e-9 relative), in float as the kernel keeps its points.
+  [[gnu::always_inline]] std::array<float, 3> applyKernel(float x, float y, float z, std::uint64_t& random) const {
+    const FlamePoint s =
+        evaluateKernelVariations(kernelTerms.data(), kernelTerms.size(), anyPre, {x, y, z}, coefs, &random);
+    if (!hasPost) return {float(s.x), float(s.y), float(s.z)};
+    std::array<float, 3> out{};
+    for (int r = 0; r < 3; ++r) out[r] = float(post[r][0] * s.x + post[r][1] * s.y + post[r][2] * s.z + post[r][3]);
+    return out;
+  }
 };
 
 /// One function of the snapshot. Immutable after compileIfs; thread-safe to read.
@@ -44,9 +78,18 @@ struct CompiledFunction {
   /// random samples of its set as x y z 0, of which the chaos game picks one at random.
   std::vector<float> points;
 
+  /// The variation stage, or null when f = g.
+  std::shared_ptr<const CompiledVariations> variations;
+
   /// Reference (scalar) evaluation, identical in result to the renderer's inner loop:
   /// clamp p to X (NaN → -1), locate the cell, interpolate trilinearly in float.
   std::array<float, 3> evaluate(std::array<float, 3> p) const;
+  /// The grid map extrapolated beyond X from its border cells (functions with variations), in the
+  /// kernel's float operations.
+  std::array<float, 3> evaluateExtrapolated(std::array<float, 3> p) const;
+  /// The whole map f, as the kernel runs it: with variations, the extrapolated grid map then the
+  /// variation stage (drawing from `random`); without, evaluate().
+  std::array<float, 3> evaluateMap(std::array<float, 3> p, std::uint64_t& random) const;
 };
 
 /// Walker's alias method: one 64-bit random number picks a function by weight in O(1).
@@ -86,6 +129,8 @@ struct CompiledIfs {
   /// Free-form IFS: m barycentric coordinates (0 for a grid IFS), padded to a multiple of 8.
   std::uint32_t barycentricSize = 0, barycentricPad = 0;
   std::uint32_t barycentricStride() const { return barycentricPad + 8; }
+  /// Whether some function (or the final one) has a variation stage.
+  bool hasVariations = false;
 
   /// Maps a 64-bit random number to a function index by weight: the high 32 bits pick the
   /// column, the low 32 bits decide between it and its alias.
@@ -105,6 +150,13 @@ CompiledFunction compileFunction(const Function& function, const Grid& evaluated
 /// padded size (a multiple of 8, at least m). Throws ModelError when an entry is not finite.
 CompiledFunction compileMatrixFunction(const Function& function, const FreeFormSpace& space, std::uint32_t pad,
                                        std::size_t sourceIndex);
+
+/// What a function does to X, for the IFS view: its map f (with its variations and post map) at
+/// `samples` points along each of lines × lines lattice lines per axis of X. Random variations
+/// draw from a fixed stream, so the cloud they make is the same every time. Non-finite and far
+/// (beyond 1e6) images are left out. Throws ModelError as compileFunction.
+std::vector<Vec3> functionImageSamples(const Function& function, const Grid& evaluated, int lines = 9,
+                                       int samples = 48);
 
 /// Builds the alias table for `weights` (all ≥ 0, at least one > 0). Exposed for tests.
 std::vector<AliasEntry> buildAliasTable(const std::vector<double>& weights);

@@ -67,7 +67,7 @@ ParameterLookup lookup(const Project& project, const std::string& path) {
 }
 
 // A grid function with every operation, a center point, a selection and a muted operation; a
-// final function, transitions, a volume with a field, a timeline with a shutter, flame and
+// function with flame variations and a post map, a final function with a post matrix, transitions, a volume with a field, a timeline with a shutter, flame and
 // shading settings that are written only when changed.
 const char* const kEveryGridField = R"({
   "format": "gridifs", "version": 1, "time": 0.5,
@@ -92,9 +92,12 @@ const char* const kEveryGridField = R"({
       {"type": "field", "amplitude": [0.1, 0.1, 0.1], "octaves": 3, "seed": 3, "wind": [0.2, 0, 0],
        "period": [0, 0, 0, 4]}
     ]},
-    {"name": "b", "weight": 2, "placement": {"translate": [0.5, 0, 0], "scale": [0.5, 0.5, 0.5]}}
+    {"name": "b", "weight": 2, "placement": {"translate": [0.5, 0, 0], "scale": [0.5, 0.5, 0.5]},
+     "variations": {"julian": 0.3, "linear": 0.7}, "variation_params": {"julian_dist": 1, "julian_power": 3},
+     "post": {"rotate": [0, 0, 15], "scale": [1, 1, 1], "translate": [0.1, 0, 0]}}
   ],
-  "final": {"name": "final", "placement": {"scale": [0.9, 0.9, 0.9]}},
+  "final": {"name": "final", "placement": {"scale": [0.9, 0.9, 0.9]}, "variations": {"spherical": 1},
+            "post": {"matrix": [[1, 0.1, 0, 0], [0, 1, 0, 0.2], [0, 0, 1, 0]]}},
   "transitions": [[1, 1], [1, 0.5]],
   "volume": {"resolution": 32, "field": {"strength": 0.5, "scale": 0.5, "seed": 2, "wind": [0.1, 0, 0]}}
 })";

@@ -1,0 +1,46 @@
+#include "edit/variation_edits.h"
+
+#include "base/errors.h"
+#include "model/flame_variations.h"
+
+namespace gridifs {
+namespace {
+
+const FlameVariation& knownVariation(const std::string& name) {
+  const FlameVariation* v = findFlameVariation(name);
+  if (!v) throw ModelError("variations." + name, "\"" + name + "\" is not a flame variation");
+  return *v;
+}
+
+}  // namespace
+
+void SetVariationWeight::apply(Project& project) const {
+  knownVariation(name);
+  function.in(project).variations[name] = weight;
+}
+
+void AddVariation::apply(Project& project) const {
+  knownVariation(name);
+  Function& f = function.in(project);
+  if (f.variations.count(name)) return;
+  f.variations[name] = f.variations.empty() ? 1.0 : 0.5;
+}
+
+void RemoveVariation::apply(Project& project) const {
+  const FlameVariation& v = knownVariation(name);
+  Function& f = function.in(project);
+  if (!f.variations.erase(name))
+    throw ModelError("variations." + name, "the function does not use variation " + name);
+  for (const auto& [attribute, fallback] : v.params) f.variation_params.erase(attribute);
+}
+
+void SetVariationParameter::apply(Project& project) const {
+  int variation = -1, parameter = -1;
+  if (!findVariationParameter(attribute, variation, parameter))
+    throw ModelError("variation_params." + attribute, "\"" + attribute + "\" is not a parameter of any flame variation");
+  function.in(project).variation_params[attribute] = value;
+}
+
+void SetPostTransform::apply(Project& project) const { function.in(project).post = post; }
+
+}  // namespace gridifs

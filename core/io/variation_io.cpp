@@ -1,0 +1,75 @@
+#include "io/variation_io.h"
+
+#include "io/json_read.h"
+#include "model/validation.h"
+
+namespace gridifs::variation_io {
+
+using namespace json_read;
+using ordered_json = nlohmann::ordered_json;
+
+namespace {
+
+std::map<std::string, double> readNumbers(const json& j, const std::string& path) {
+  requireObject(j, path);
+  std::map<std::string, double> out;
+  for (const auto& [key, value] : j.items()) out[key] = readFinite(value, join(path, key));
+  return out;
+}
+
+ordered_json writeNumbers(const std::map<std::string, double>& values) {
+  ordered_json o = ordered_json::object();
+  for (const auto& [key, value] : values) o[key] = value;
+  return o;
+}
+
+}  // namespace
+
+void readFunctionFields(const json& f, const std::string& path, Function& fn) {
+  if (auto it = f.find("variations"); it != f.end()) fn.variations = readNumbers(*it, join(path, "variations"));
+  if (auto it = f.find("variation_params"); it != f.end())
+    fn.variation_params = readNumbers(*it, join(path, "variation_params"));
+  if (auto it = f.find("post"); it != f.end() && !it->is_null()) {
+    const std::string p = join(path, "post");
+    requireObject(*it, p);
+    PostTransform post;
+    if (auto m = it->find("matrix"); m != it->end()) {
+      const std::string mp = join(p, "matrix");
+      if (!m->is_array() || m->size() != 3) fail(mp, "expected 3 rows of 4 numbers");
+      std::array<std::array<double, 4>, 3> rows{};
+      for (std::size_t r = 0; r < 3; ++r) {
+        const json& row = (*m)[r];
+        if (!row.is_array() || row.size() != 4) fail(item(mp, r), "expected a row of 4 numbers");
+        for (std::size_t c = 0; c < 4; ++c) rows[r][c] = readFinite(row[c], item(item(mp, r), c));
+      }
+      post.matrix = rows;
+    } else {
+      if (auto v = it->find("translate"); v != it->end())
+        post.placement.translate = readVec3(*v, join(p, "translate"), -limits::kMaxCoordinate, limits::kMaxCoordinate);
+      if (auto v = it->find("rotate"); v != it->end()) post.placement.rotate = readVec3(*v, join(p, "rotate"), -limits::kMaxCoordinate, limits::kMaxCoordinate);
+      if (auto v = it->find("scale"); v != it->end()) post.placement.scale = readVec3(*v, join(p, "scale"), -limits::kMaxCoordinate, limits::kMaxCoordinate);
+    }
+    fn.post = post;
+  }
+}
+
+void writeFunctionFields(const Function& fn, ordered_json& out) {
+  if (!fn.variations.empty()) out["variations"] = writeNumbers(fn.variations);
+  if (!fn.variation_params.empty()) out["variation_params"] = writeNumbers(fn.variation_params);
+  if (fn.post) {
+    ordered_json post = ordered_json::object();
+    if (fn.post->matrix) {
+      ordered_json rows = ordered_json::array();
+      for (const auto& row : *fn.post->matrix) rows.push_back({row[0], row[1], row[2], row[3]});
+      post["matrix"] = rows;
+    } else {
+      const Placement& pl = fn.post->placement;
+      post["rotate"] = {pl.rotate.x, pl.rotate.y, pl.rotate.z};
+      post["scale"] = {pl.scale.x, pl.scale.y, pl.scale.z};
+      post["translate"] = {pl.translate.x, pl.translate.y, pl.translate.z};
+    }
+    out["post"] = post;
+  }
+}
+
+}  // namespace gridifs::variation_io

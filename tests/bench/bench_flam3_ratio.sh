@@ -1,0 +1,92 @@
+#!/usr/bin/env bash
+# The variation kernel against flam3-render, whole process, one thread, same genome, same samples
+# (quality × width × height): each genome of tests/data/flame/bench/ is imported with
+# `gridifs import-flame`, then flam3-render (nthreads=1) and `gridifs render --threads 1` run in
+# alternation REPEAT times (default 3); the table gives median wall and CPU (user + system) seconds
+# and the medians of the per-round ratios flam3 / gridifs (r_wall, r_cpu: the default device, which
+# probes the GPU first; r_gcpu: wall with --device cpu). With BASELINE=/path/to/older/gridifs that binary runs in the same
+# rounds (before/after from one run). Then the canonical 3D grid scene (tests/bench/canonical_scene.h)
+# against flam3's 3-function Sierpinski at the same samples, as scripts/bench-whole-process measures
+# it, when the build has bench_gpu (which writes the scene). Not run by ctest: timings need a quiet machine.
+# usage: tests/bench/bench_flam3_ratio.sh [BUILD_DIR]   (default: build)
+set -euo pipefail
+ROOT="$(cd "$(dirname "$0")/../.." && pwd)"
+BUILD="$(cd "${1:-$ROOT/build}" && pwd)"
+G="${GRIDIFS:-$BUILD/app/gridifs}"
+REPEAT="${REPEAT:-3}"
+BASELINE="${BASELINE:-}"
+WORK="$(mktemp -d "${TMPDIR:-/tmp}/gridifs-flam3ratio.XXXXXX")"
+trap 'rm -rf "$WORK"' EXIT
+
+measure() {  # "wall cpu" seconds of "$@" (cpu: user + system)
+  /usr/bin/time -f "%e %U %S" -o "$WORK/time" "$@" >/dev/null 2>&1 || echo "failed: $*" >&2
+  tail -1 "$WORK/time" | awk '{printf "%s %.2f", $1, $2 + $3}'
+}
+median() { python3 -c "import statistics,sys; print('%.2f' % statistics.median(float(a) for a in sys.argv[1:]))" "$@"; }
+ratio() { python3 -c "print($1 / $2)"; }
+
+# name  flam3-genome  gridifs-project  samples: one table row. Columns: medians of flam3's wall and
+# CPU seconds, gridifs's (default device, then --device cpu, then BASELINE), and the medians of the
+# per-round ratios flam3 / gridifs, wall and CPU.
+run_case() {
+  local name="$1" flame="$2" project="$3" samples="$4"
+  local fw=() fc=() gw=() gc=() cw=() bw=() bc=() rw=() rc=() rcw=() rbw=() rbc=()
+  for ((i = 0; i < REPEAT; ++i)); do
+    local f g c b
+    read -r -a f <<<"$(measure env nthreads=1 seed=1 out="$WORK/flam3.png" sh -c "flam3-render < '$flame'")"
+    read -r -a g <<<"$(measure "$G" render "$project" -o "$WORK/g.png" --samples "$samples" --threads 1 -q)"
+    read -r -a c <<<"$(measure "$G" render "$project" -o "$WORK/c.png" --samples "$samples" --threads 1 -q --device cpu)"
+    fw+=("${f[0]}") fc+=("${f[1]}") gw+=("${g[0]}") gc+=("${g[1]}") cw+=("${c[0]}")
+    rw+=("$(ratio "${f[0]}" "${g[0]}")") rc+=("$(ratio "${f[1]}" "${g[1]}")") rcw+=("$(ratio "${f[0]}" "${c[0]}")")
+    if [[ -n "$BASELINE" ]]; then
+      read -r -a b <<<"$(measure "$BASELINE" render "$project" -o "$WORK/b.png" --samples "$samples" --threads 1 -q)"
+      bw+=("${b[0]}") bc+=("${b[1]}") rbw+=("$(ratio "${f[0]}" "${b[0]}")") rbc+=("$(ratio "${f[1]}" "${b[1]}")")
+    fi
+  done
+  printf "%-18s %9s %5s/%-5s %5s/%-5s %6s %6sx %6sx %6sx" "$name" "$samples" "$(median "${fw[@]}")" \
+    "$(median "${fc[@]}")" "$(median "${gw[@]}")" "$(median "${gc[@]}")" "$(median "${cw[@]}")" \
+    "$(median "${rw[@]}")" "$(median "${rc[@]}")" "$(median "${rcw[@]}")"
+  [[ -n "$BASELINE" ]] && printf "   %5s/%-5s %6sx %6sx" "$(median "${bw[@]}")" "$(median "${bc[@]}")" \
+    "$(median "${rbw[@]}")" "$(median "${rbc[@]}")"
+  printf "\n"
+}
+
+echo "one thread, whole process, median of $REPEAT alternating rounds; load $(cut -d' ' -f1-3 /proc/loadavg), $(nproc) cores"
+printf "%-18s %9s %11s %11s %6s %7s %7s %7s" genome samples "flam3 w/cpu" "gridifs w/c" "g_cpu" \
+  "r_wall" "r_cpu" "r_gcpu"
+[[ -n "$BASELINE" ]] && printf "   %11s %7s %7s" "base w/cpu" "rb_wall" "rb_cpu"
+printf "\n"
+# GENOMES: the genomes to time (default all of tests/data/flame/bench/; "none" for the canonical row only).
+GENOMES="${GENOMES:-$(ls "$ROOT"/tests/data/flame/bench/*.flame)}"
+[[ "$GENOMES" == none ]] && GENOMES=""
+for flame in $GENOMES; do
+  name="$(basename "$flame" .flame)"
+  "$G" import-flame "$flame" -o "$WORK/$name.gridifs" >/dev/null
+  samples=$(python3 -c "import json; print(json.load(open('$WORK/$name.gridifs'))['render']['samples'])")
+  run_case "$name" "$flame" "$WORK/$name.gridifs" "$samples"
+done
+
+if [[ -x "$BUILD/tests/bench_gpu" ]]; then
+  QUALITY="${QUALITY:-20}"
+  "$BUILD/tests/bench_gpu" --write-scene "$WORK/canonical.gridifs"
+  cat > "$WORK/sierpinski.flame" <<FLAME
+<flame name="sierpinski" version="3.1.1" size="1024 1024" center="0 0" scale="400" quality="$QUALITY"
+ supersample="1" filter="0" temporal_samples="1" background="0 0 0" brightness="4" gamma="4" vibrancy="1"
+ estimator_radius="0" estimator_minimum="0" estimator_curve="0.4" palette="0">
+   <xform weight="0.333333" color="0" linear="1" coefs="0.5 0 0 0.5 -0.5 -0.5"/>
+   <xform weight="0.333333" color="0.5" linear="1" coefs="0.5 0 0 0.5 0.5 -0.5"/>
+   <xform weight="0.333333" color="1" linear="1" coefs="0.5 0 0 0.5 0 0.5"/>
+</flame>
+FLAME
+  # The canonical scene at 1024² (its own mode), flam3's Sierpinski genome at the same samples.
+  samples=$((QUALITY * 1024 * 1024))
+  cp "$WORK/canonical.gridifs" "$WORK/canonical_1024.gridifs"
+  python3 - "$WORK/canonical_1024.gridifs" <<'PY'
+import json, sys
+p = sys.argv[1]; d = json.load(open(p)); d["render"]["width"] = 1024; d["render"]["height"] = 1024
+json.dump(d, open(p, "w"))
+PY
+  run_case "canonical-3d-grid" "$WORK/sierpinski.flame" "$WORK/canonical_1024.gridifs" "$samples"
+else
+  echo "(no $BUILD/tests/bench_gpu: build it for the canonical 3D grid scene row)"
+fi
