@@ -3,6 +3,8 @@
 // test_flam3_crosscheck.cpp), round trips, genome selection and bad input.
 #include <gtest/gtest.h>
 
+#include <glm/geometric.hpp>
+
 #include <array>
 #include <cstdio>
 #include <nlohmann/json.hpp>
@@ -210,8 +212,9 @@ TEST(FlameCli, ListAndSelectGenomes) {
   EXPECT_NE(list.out.find("+ final"), std::string::npos);
   const ScratchDir dir("flame-select");
   const auto out = dir.path / "h.gridifs";
+  // --grids samples the xforms onto grids to sculpt (the import of 3D genomes).
   const CommandResult byName = runGridifs("import-flame " + quote((kData / "nonlinear.flame").string()) +
-                                          " --genome horseshoe-final --resolution 24 -o " + quote(out.string()));
+                                          " --genome horseshoe-final --grids --resolution 24 -o " + quote(out.string()));
   ASSERT_EQ(byName.exitCode, 0) << byName.err;
   const Project p = loadProject(out);
   ASSERT_EQ(p.functions.size(), 3u);
@@ -226,6 +229,17 @@ TEST(FlameCli, ListAndSelectGenomes) {
   const auto j = nlohmann::json::parse(info.out);
   EXPECT_GT(j["functions"][0]["sampling_error"].get<double>(), 0.0);
   EXPECT_LT(j["functions"][2]["sampling_error"].get<double>(), 1e-12);
+  // Without --grids the variations are kept by name: nothing is sampled.
+  const auto native = dir.path / "native.gridifs";
+  const CommandResult kept = runGridifs("import-flame " + quote((kData / "nonlinear.flame").string()) +
+                                        " --genome horseshoe-final -o " + quote(native.string()));
+  ASSERT_EQ(kept.exitCode, 0) << kept.err;
+  EXPECT_EQ(kept.err, "");
+  const Project n = loadProject(native);
+  EXPECT_EQ(n.functions[0].variations, (std::map<std::string, double>{{"horseshoe", 0.7}, {"linear", 0.3}}));
+  EXPECT_FALSE(n.functions[0].sampling_error);
+  ASSERT_TRUE(n.final_function);
+  EXPECT_EQ(n.final_function->variations, (std::map<std::string, double>{{"bubble", 1.0}}));
 }
 
 TEST(FlameCli, PalettesRandomVariationsAndWarnings) {
@@ -249,8 +263,20 @@ TEST(FlameCli, PalettesRandomVariationsAndWarnings) {
   const CommandResult w =
       runGridifs("import-flame " + quote((kData / "color_entries.flame").string()) + " -o " + quote(out2.string()));
   ASSERT_EQ(w.exitCode, 0) << w.err;
-  EXPECT_NE(w.err.find("random variations blur, julia"), std::string::npos) << w.err;
+  // Random variations are kept like the others; an unknown attribute is named.
+  EXPECT_EQ(w.err.find("random variations"), std::string::npos) << w.err;
   EXPECT_NE(w.err.find("hemisphere"), std::string::npos) << w.err;
+  bool blur = false, julia = false;
+  for (const Function& f : loadProject(out2).functions) {
+    blur |= f.variations.count("blur") > 0;
+    julia |= f.variations.count("julia") > 0;
+  }
+  EXPECT_TRUE(blur && julia);
+  // Sampled onto grids, a random variation has no map: it is left out, with a warning.
+  const CommandResult sampled = runGridifs("import-flame " + quote((kData / "color_entries.flame").string()) +
+                                           " --grids -o " + quote((dir.path / "grids.gridifs").string()));
+  ASSERT_EQ(sampled.exitCode, 0) << sampled.err;
+  EXPECT_NE(sampled.err.find("random variations blur, julia"), std::string::npos) << sampled.err;
 }
 
 TEST(FlameCli, ExportThenImportIsTheIdentityForAffineProjects) {
@@ -286,7 +312,7 @@ TEST(FlameCli, ExportThenImportIsTheIdentityForAffineProjects) {
 TEST(FlameCli, ExportOfANonAffineProjectWarnsAndFits) {
   const ScratchDir dir("flame-export-fit");
   const auto project = dir.path / "n.gridifs", flame = dir.path / "n.flame";
-  ASSERT_EQ(runGridifs("import-flame " + quote((kData / "nonlinear.flame").string()) + " --resolution 16 -o " +
+  ASSERT_EQ(runGridifs("import-flame " + quote((kData / "nonlinear.flame").string()) + " --grids --resolution 16 -o " +
                        quote(project.string()))
                 .exitCode,
             0);
@@ -296,6 +322,38 @@ TEST(FlameCli, ExportOfANonAffineProjectWarnsAndFits) {
   const auto genomes = loadFlameFile(flame);
   ASSERT_EQ(genomes.size(), 1u);
   EXPECT_EQ(genomes[0].xforms.size(), 3u);
+}
+
+TEST(FlameCli, ExportThenImportIsTheIdentityForProjectsWithVariations) {
+  const ScratchDir dir("flame-export-variations");
+  const auto project = dir.path / "v.gridifs", flame = dir.path / "v.flame", back = dir.path / "back.gridifs";
+  ASSERT_EQ(runGridifs("import-flame " + quote((kData / "nonlinear.flame").string()) + " --genome 1 -o " +
+                       quote(project.string()))
+                .exitCode,
+            0);
+  const CommandResult e = runGridifs("export-flame " + quote(project.string()) + " -o " + quote(flame.string()));
+  ASSERT_EQ(e.exitCode, 0) << e.err;
+  EXPECT_EQ(e.err, "");  // the variations are written as they are: nothing to fit
+  const CommandResult i = runGridifs("import-flame " + quote(flame.string()) + " -o " + quote(back.string()));
+  ASSERT_EQ(i.exitCode, 0) << i.err;
+  const Project a = loadProject(project), b = loadProject(back);
+  ASSERT_EQ(a.functions.size(), b.functions.size());
+  for (std::size_t f = 0; f < a.functions.size(); ++f) {
+    EXPECT_EQ(a.functions[f].variations, b.functions[f].variations);
+    EXPECT_EQ(a.functions[f].variation_params, b.functions[f].variation_params);
+    EXPECT_EQ(a.functions[f].post, b.functions[f].post);
+    EXPECT_EQ(a.functions[f].weight, b.functions[f].weight);
+    EXPECT_EQ(a.functions[f].palette_index, b.functions[f].palette_index);
+    // The pre-affine grid comes back to the last bits of its coefficients.
+    const auto ga = evaluateFunctionAt(a.functions[f], ""), gb = evaluateFunctionAt(b.functions[f], "");
+    for (std::size_t n = 0; n < ga->nodeCount(); ++n)
+      EXPECT_LT(glm::length(ga->nodes()[n] - gb->nodes()[n]), 1e-12);
+  }
+  EXPECT_EQ(a.camera.yaw, b.camera.yaw);
+  EXPECT_NEAR(a.camera.target.x, b.camera.target.x, 1e-12);
+  EXPECT_NEAR(a.camera.distance, b.camera.distance, 1e-12);
+  ASSERT_TRUE(b.final_function);
+  EXPECT_EQ(a.final_function->variations, b.final_function->variations);
 }
 
 TEST(FlameCli, BadInputExitsTwoAndWritesNothing) {
