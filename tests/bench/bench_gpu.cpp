@@ -10,6 +10,8 @@
 #include "render/chaos_renderer.h"
 #include "render/compiled_ifs.h"
 #include "gpu/gpu_chaos_renderer.h"
+#include "io/flame_genome.h"
+#include "io/flame_import.h"
 #include "io/project_io.h"
 
 namespace gridifs {
@@ -39,11 +41,32 @@ gpu::GpuChaosRenderer& gpuRenderer32() {
   return renderer;
 }
 
-void run(benchmark::State& state, Renderer& renderer, RenderJob job) {
+/// A flame genome with native variations (random julia, blur and julian, a deterministic blend and
+/// a post map): tests/data/flame/bench/mixed_random.flame at 1024².
+const Project& variationScene() {
+  static const Project project = [] {
+    Project p = importFlameGenome(parseFlameFile(R"(<flame name="mixed-random" size="1024 1024" center="0.2 -0.1"
+        scale="280" rotate="30" quality="200" brightness="4" gamma="3" palette="12">
+      <xform weight="1" color="0" julia="0.8" spherical="0.2" coefs="0.7 0.3 -0.3 0.7 0.3 0.1"/>
+      <xform weight="0.7" color="0.7" blur="0.3" heart="0.7" coefs="0.5 -0.2 0.2 0.5 -0.5 0.3" post="0.9 0.1 -0.1 0.9 0.1 0"/>
+      <xform weight="0.5" color="1" julian="1" julian_power="5" julian_dist="0.5" coefs="0.8 0 0 0.8 0 -0.4"/>
+    </flame>)")[0], {}).project;
+    return p;
+  }();
+  return project;
+}
+
+const std::shared_ptr<const CompiledIfs>& variationIfs() {
+  static const auto compiled = compileIfs(variationScene());
+  return compiled;
+}
+
+void run(benchmark::State& state, Renderer& renderer, RenderJob job,
+         const std::shared_ptr<const CompiledIfs>& compiled = ifs()) {
   std::int64_t samples = 0;
   double seconds = 0.0;
   for (auto _ : state) {
-    renderer.restart(ifs(), job);
+    renderer.restart(compiled, job);
     renderer.waitUntilDone({}, 0.002);
     const RenderStats s = renderer.stats();
     samples += s.samples;
@@ -75,6 +98,22 @@ void BM_GpuFlameColourSums(benchmark::State& state) {
   run(state, gpuRenderer(), job);
 }
 
+void BM_GpuFlameVariations(benchmark::State& state) {
+  RenderJob job = RenderJob::fromProject(variationScene(), 1);
+  job.samples = state.range(0);
+  job.accumulateColor = true;
+  state.SetLabel(gpuRenderer().info().renderer);
+  run(state, gpuRenderer(), job, variationIfs());
+}
+
+void BM_CpuFlameVariations(benchmark::State& state) {
+  RenderJob job = RenderJob::fromProject(variationScene(), int(state.range(1)));
+  job.samples = state.range(0);
+  job.accumulateColor = true;
+  ChaosRenderer cpu;
+  run(state, cpu, job, variationIfs());
+}
+
 void BM_CpuOneThread(benchmark::State& state) {
   RenderJob job = RenderJob::fromProject(canonicalScene(), 1);
   job.samples = state.range(0);
@@ -94,6 +133,13 @@ BENCHMARK(BM_GpuZBuffer)
     ->UseRealTime()
     ->Iterations(1);
 BENCHMARK(BM_GpuFlameColourSums)->Arg(50'000'000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK(BM_GpuFlameVariations)->Arg(50'000'000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK(BM_CpuFlameVariations)
+    ->Args({20'000'000, 1})
+    ->Args({50'000'000, 16})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1);
 BENCHMARK(BM_CpuOneThread)
     ->Args({50'000'000, 0})
     ->Args({50'000'000, 1})
@@ -113,6 +159,7 @@ void registerHardwareSizes() {
     benchmark::RegisterBenchmark("BM_GpuZBuffer/large", BM_GpuZBuffer)->Arg(samples)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
     benchmark::RegisterBenchmark("BM_GpuZBuffer32BitKeys/large", BM_GpuZBuffer32BitKeys)->Arg(samples)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
     benchmark::RegisterBenchmark("BM_GpuFlameColourSums/large", BM_GpuFlameColourSums)->Arg(samples)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+    benchmark::RegisterBenchmark("BM_GpuFlameVariations/large", BM_GpuFlameVariations)->Arg(samples / 4)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
   }
 }
 
