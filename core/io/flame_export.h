@@ -9,16 +9,12 @@
 #include <vector>
 
 #include "model/flame_variations.h"
+#include "model/grid_affine_fit.h"
 #include "model/grid.h"
 #include "model/project.h"
 
 namespace gridifs {
 
-/// The least-squares affine map (x, y) → (x', y') through every node of `evaluated`, in X
-/// coordinates (x' = a·x + b·y + c, y' = d·x + e·y + f). `maxError` receives the largest
-/// distance between a node and the fit (including the node's z), 0 up to rounding for an affine
-/// grid that keeps z at 0.
-FlameAffine fitAffine(const Grid& evaluated, double& maxError);
 
 struct FlameExport {
   std::string xml;

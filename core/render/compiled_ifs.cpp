@@ -8,6 +8,7 @@
 
 #include "base/hash.h"
 #include "model/bezier_lattice.h"
+#include "model/grid_affine_fit.h"
 #include "model/stack_evaluator.h"
 #include "model/transition_matrix.h"
 
@@ -75,33 +76,6 @@ CompiledFunction compileFunction(const Function& function, const Grid& evaluated
 
 namespace {
 
-/// The least-squares affine fit x' = a·x + b·y + c, y' = d·x + e·y + f of the grid's nodes (x and y
-/// only): for an affine grid, the grid map itself. Dependent variations read it.
-FlameAffine affineFit(const Grid& grid) {
-  // Normal equations over (x, y, 1); the nodes of a lattice make them well conditioned.
-  double m[3][3] = {}, rx[3] = {}, ry[3] = {};
-  const Index3 n = grid.resolution();
-  for (int k = 0; k < n[2]; ++k)
-    for (int j = 0; j < n[1]; ++j)
-      for (int i = 0; i < n[0]; ++i) {
-        const double u[3] = {-1.0 + 2.0 * i / (n[0] - 1), -1.0 + 2.0 * j / (n[1] - 1), 1.0};
-        const Vec3 q = grid.node(i, j, k);
-        for (int r = 0; r < 3; ++r) {
-          for (int c = 0; c < 3; ++c) m[r][c] += u[r] * u[c];
-          rx[r] += u[r] * q.x;
-          ry[r] += u[r] * q.y;
-        }
-      }
-  // The lattice is symmetric about 0, so the system is diagonal.
-  FlameAffine a;
-  a.a = rx[0] / m[0][0];
-  a.b = rx[1] / m[1][1];
-  a.c = rx[2] / m[2][2];
-  a.d = ry[0] / m[0][0];
-  a.e = ry[1] / m[1][1];
-  a.f = ry[2] / m[2][2];
-  return a;
-}
 
 std::shared_ptr<const CompiledVariations> compileVariations(const Function& function, const Grid& evaluated) {
   auto out = std::make_shared<CompiledVariations>();
@@ -125,7 +99,8 @@ std::shared_ptr<const CompiledVariations> compileVariations(const Function& func
     out->kernelTerms.push_back(makeKernelVariationTerm(out->terms.back()));
     out->anyPre |= chosen[i].first->pre;
   }
-  out->coefs = affineFit(evaluated);
+  double fitError = 0.0;  // a distorted grid's dependent variations read its closest affine map
+  out->coefs = fitAffine(evaluated, fitError);
   if (function.post) {
     const auto m = function.post->affine();
     for (int r = 0; r < 3; ++r)
@@ -177,18 +152,15 @@ void locateCell(const CompiledFunction& fn, std::array<float, 3> p, bool extrapo
   }
 }
 
-}  // namespace
-
-std::array<float, 3> CompiledFunction::evaluateExtrapolated(std::array<float, 3> p) const {
-  float f[3];
-  int cell[3];
-  locateCell(*this, p, true, cell, f);
+/// The trilinear interpolation in cell `cell` at position `f`, in the kernel's float operations:
+/// along y, then z, then x (the node pairs hold both x ends of an edge).
+std::array<float, 3> interpolateCell(const CompiledFunction& fn, const int cell[3], const float f[3]) {
   const std::size_t idx =
-      std::size_t(cell[0]) + pairStrideJ * std::size_t(cell[1]) + pairStrideK * std::size_t(cell[2]);
-  const NodePair& p00 = pairs[idx];
-  const NodePair& p10 = pairs[idx + pairStrideJ];
-  const NodePair& p01 = pairs[idx + pairStrideK];
-  const NodePair& p11 = pairs[idx + pairStrideJ + pairStrideK];
+      std::size_t(cell[0]) + fn.pairStrideJ * std::size_t(cell[1]) + fn.pairStrideK * std::size_t(cell[2]);
+  const NodePair& p00 = fn.pairs[idx];
+  const NodePair& p10 = fn.pairs[idx + fn.pairStrideJ];
+  const NodePair& p01 = fn.pairs[idx + fn.pairStrideK];
+  const NodePair& p11 = fn.pairs[idx + fn.pairStrideJ + fn.pairStrideK];
   std::array<float, 3> out{};
   for (int d = 0; d < 3; ++d) {
     const float a0 = p00.a[d] + (p10.a[d] - p00.a[d]) * f[1];
@@ -200,6 +172,15 @@ std::array<float, 3> CompiledFunction::evaluateExtrapolated(std::array<float, 3>
     out[d] = a + (b - a) * f[0];
   }
   return out;
+}
+
+}  // namespace
+
+std::array<float, 3> CompiledFunction::evaluateExtrapolated(std::array<float, 3> p) const {
+  float f[3];
+  int cell[3];
+  locateCell(*this, p, true, cell, f);
+  return interpolateCell(*this, cell, f);
 }
 
 std::array<double, 3> CompiledVariations::apply(std::array<double, 3> q, std::uint64_t& random) const {
@@ -220,23 +201,7 @@ std::array<float, 3> CompiledFunction::evaluate(std::array<float, 3> p) const {
   float f[3];
   int cell[3];
   locateCell(*this, p, false, cell, f);
-  const std::size_t idx =
-      std::size_t(cell[0]) + pairStrideJ * std::size_t(cell[1]) + pairStrideK * std::size_t(cell[2]);
-  const NodePair& p00 = pairs[idx];
-  const NodePair& p10 = pairs[idx + pairStrideJ];
-  const NodePair& p01 = pairs[idx + pairStrideK];
-  const NodePair& p11 = pairs[idx + pairStrideJ + pairStrideK];
-  std::array<float, 3> out{};
-  for (int d = 0; d < 3; ++d) {
-    const float a0 = p00.a[d] + (p10.a[d] - p00.a[d]) * f[1];
-    const float b0 = p00.b[d] + (p10.b[d] - p00.b[d]) * f[1];
-    const float a1 = p01.a[d] + (p11.a[d] - p01.a[d]) * f[1];
-    const float b1 = p01.b[d] + (p11.b[d] - p01.b[d]) * f[1];
-    const float a = a0 + (a1 - a0) * f[2];
-    const float b = b0 + (b1 - b0) * f[2];
-    out[d] = a + (b - a) * f[0];
-  }
-  return out;
+  return interpolateCell(*this, cell, f);
 }
 
 std::vector<Vec3> functionImageSamples(const Function& function, const Grid& evaluated, int lines, int samples) {

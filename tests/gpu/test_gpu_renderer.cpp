@@ -9,6 +9,7 @@
 #include "gpu/gpu_chaos_renderer.h"
 #include "gpu/render_device.h"
 #include "gpu/correlation.h"
+#include "gpu_test_support.h"
 #include "io/project_io.h"
 #include "core/renderer_scenes.h"
 
@@ -27,33 +28,6 @@ RenderImage renderGpu(GpuChaosRenderer& gpu, std::shared_ptr<const CompiledIfs> 
 }
 
 using test::correlation;
-
-/// Densities over 2×2 blocks (the sampling noise of single pixels at test sample counts would
-/// dominate the correlation) and the alpha mask.
-std::vector<double> blockDensity(const RenderImage& image) {
-  std::vector<double> out;
-  for (int y = 0; y + 1 < image.height; y += 2)
-    for (int x = 0; x + 1 < image.width; x += 2) {
-      double s = 0;
-      for (int dy = 0; dy < 2; ++dy)
-        for (int dx = 0; dx < 2; ++dx) s += image.density[std::size_t(y + dy) * image.width + std::size_t(x + dx)];
-      out.push_back(s);
-    }
-  return out;
-}
-
-std::vector<double> blockAlpha(const RenderImage& image) {
-  std::vector<double> out;
-  for (int y = 0; y + 1 < image.height; y += 2)
-    for (int x = 0; x + 1 < image.width; x += 2) {
-      double s = 0;
-      for (int dy = 0; dy < 2; ++dy)
-        for (int dx = 0; dx < 2; ++dx)
-          s += image.rgba[(std::size_t(y + dy) * image.width + std::size_t(x + dx)) * 4 + 3];
-      out.push_back(s);
-    }
-  return out;
-}
 
 TEST(GpuRenderer, OpensAHeadlessContextWithCompute) {
   GpuChaosRenderer gpu;
@@ -91,8 +65,8 @@ TEST(GpuRenderer, EveryExampleMatchesTheCpuImage) {
     EXPECT_EQ(g.stats.samples, job.samples);
     EXPECT_TRUE(g.stats.done);
     EXPECT_NEAR(double(g.stats.plotted) / double(job.samples), double(cpu.stats.plotted) / double(job.samples), 0.02);
-    const double density = correlation(blockDensity(cpu), blockDensity(g));
-    const double alpha = correlation(blockAlpha(cpu), blockAlpha(g));
+    const double density = correlation(test::blockDensity(cpu), test::blockDensity(g));
+    const double alpha = correlation(test::blockAlpha(cpu), test::blockAlpha(g));
     EXPECT_GE(density, 0.99);
     EXPECT_GE(alpha, 0.99);
     // In the XML report (--gtest_output=xml): the figures behind docs/RENDERER.md.

@@ -16,6 +16,7 @@
 
 #include "gpu/chaos_compute.h"
 #include "gpu/correlation.h"
+#include "gpu_test_support.h"
 #include "gpu/gpu_chaos_renderer.h"
 #include "gpu/headless_gl_context.h"
 #include "gpu/render_device.h"
@@ -217,18 +218,6 @@ RenderImage renderGpu(gpu::GpuChaosRenderer& renderer, std::shared_ptr<const Com
   return image;
 }
 
-/// Hits over 2×2 blocks (single pixels are dominated by sampling noise at test sample counts).
-std::vector<double> blockDensity(const RenderImage& image) {
-  std::vector<double> out;
-  for (int y = 0; y + 1 < image.height; y += 2)
-    for (int x = 0; x + 1 < image.width; x += 2) {
-      double s = 0;
-      for (int dy = 0; dy < 2; ++dy)
-        for (int dx = 0; dx < 2; ++dx) s += image.density[std::size_t(y + dy) * image.width + std::size_t(x + dx)];
-      out.push_back(s);
-    }
-  return out;
-}
 
 RenderJob sceneJob(const Project& p, std::uint64_t seed) {
   RenderJob job = RenderJob::fromProject(p, 2);
@@ -256,7 +245,7 @@ TEST(GpuVariations, RenderMatchesTheCpuPicture) {
   EXPECT_NEAR(double(g.stats.plotted) / double(job.samples), double(cpu.stats.plotted) / double(job.samples), 0.02);
   EXPECT_NEAR(double(g.stats.badSamples) / double(job.samples), double(cpu.stats.badSamples) / double(job.samples),
               0.002);
-  const double density = test::correlation(blockDensity(cpu), blockDensity(g));
+  const double density = test::correlation(test::blockDensity(cpu), test::blockDensity(g));
   EXPECT_GE(density, 0.99);
   EXPECT_NEAR(double(g.hitPixels), double(cpu.hitPixels), 0.03 * double(cpu.hitPixels) + 8);
   RecordProperty("density_correlation", std::to_string(density));
@@ -294,19 +283,7 @@ TEST(GpuVariations, DensityVolumeMatchesTheCpuVolume) {
   VolumeJob cpuJob;
   cpuJob.settings = settings;
   cpuJob.threads = 2;
-  VolumeJob gpuJob;
-  gpuJob.settings = settings;
-  gpuJob.binner = [](const CompiledIfs& ifs, const VolumeJob& j, std::vector<std::uint32_t>& counts,
-                     std::vector<float>& colors) {
-    RenderJob chaos;
-    chaos.samples = j.settings.samples;
-    chaos.seed = j.settings.seed;
-    chaos.skip = j.settings.skip;
-    gpu::GpuVoxelCounts out = gpu::binVoxelsGpu(ifs, chaos, j.settings.resolution, !colors.empty(), {});
-    counts = std::move(out.counts);
-    if (!colors.empty()) colors = std::move(out.colorSums);
-    return true;
-  };
+  const VolumeJob gpuJob = test::gpuVolumeJob(settings);
   const DensityVolume cpu = computeDensityVolume(p, cpuJob);
   const DensityVolume g = computeDensityVolume(p, gpuJob);
   ASSERT_EQ(g.density.size(), cpu.density.size());

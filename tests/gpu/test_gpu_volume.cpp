@@ -9,6 +9,7 @@
 
 #include "gpu/render_device.h"
 #include "gpu/correlation.h"
+#include "gpu_test_support.h"
 #include "io/project_io.h"
 #include "volume/measure_attractor.h"
 
@@ -30,23 +31,6 @@ std::vector<float> blocks(const std::vector<float>& v, int n, int channels = 1, 
   return out;
 }
 
-VolumeJob gpuJob(const VolumeSettings& settings) {
-  VolumeJob job;
-  job.settings = settings;
-  job.binner = [](const CompiledIfs& ifs, const VolumeJob& j, std::vector<std::uint32_t>& counts,
-                  std::vector<float>& colors) {
-    RenderJob chaos;
-    chaos.samples = j.settings.samples;
-    chaos.seed = j.settings.seed;
-    chaos.skip = j.settings.skip;
-    gpu::GpuVoxelCounts out = gpu::binVoxelsGpu(ifs, chaos, j.settings.resolution, !colors.empty(), {});
-    EXPECT_EQ(out.samples, j.settings.samples);
-    counts = std::move(out.counts);
-    if (!colors.empty()) colors = std::move(out.colorSums);
-    return true;
-  };
-  return job;
-}
 
 VolumeSettings testSettings() {
   VolumeSettings s;
@@ -69,7 +53,7 @@ TEST(GpuVolume, EveryGridExampleMatchesTheCpuVolume) {
     cpuJob.settings = testSettings();
     cpuJob.threads = 2;
     const DensityVolume cpu = computeDensityVolume(project, cpuJob);
-    const DensityVolume g = computeDensityVolume(project, gpuJob(testSettings()));
+    const DensityVolume g = computeDensityVolume(project, test::gpuVolumeJob(testSettings()));
     ASSERT_EQ(g.density.size(), cpu.density.size());
     EXPECT_NEAR(g.totalMass / cpu.totalMass, 1.0, 0.03);  // the same share of points lands in X
     const double density = correlation(blocks(cpu.density, 32), blocks(g.density, 32));
@@ -97,12 +81,12 @@ TEST(GpuVolume, SameSeedSameVolumeOtherSeedOtherVolume) {
   const Project project = loadProject(std::filesystem::path(GRIDIFS_ASSETS) / "twisted_functions.gridifs");
   VolumeSettings s = testSettings();
   s.samples = 500'000;
-  const DensityVolume a = computeDensityVolume(project, gpuJob(s));
-  const DensityVolume b = computeDensityVolume(project, gpuJob(s));
+  const DensityVolume a = computeDensityVolume(project, test::gpuVolumeJob(s));
+  const DensityVolume b = computeDensityVolume(project, test::gpuVolumeJob(s));
   EXPECT_EQ(a.density, b.density);
   EXPECT_EQ(a.color, b.color);
   s.seed = 2;
-  const DensityVolume c = computeDensityVolume(project, gpuJob(s));
+  const DensityVolume c = computeDensityVolume(project, test::gpuVolumeJob(s));
   EXPECT_NE(a.density, c.density);
 }
 

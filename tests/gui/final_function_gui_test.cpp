@@ -12,16 +12,6 @@ using namespace gridifs::gui_test;
 
 namespace {
 
-std::string fileText(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-void saveAndWait(App& app) {
-  pressKeys("ctrl+s");
-  app.waitFor([](const nlohmann::json& j) { return !j["dirty"].get<bool>(); });
-}
-
 void keepShot(const TempFolder& home, const std::string& name) {
   if (const char* keep = std::getenv("GRIDIFS_GUI_SHOTS")) {  // for a person to look at
     run("import -window root '" + (home.path / name).string() + "'");

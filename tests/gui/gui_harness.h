@@ -249,6 +249,18 @@ inline void dragFrom(int x0, int y0, int x1, int y1, int steps = 12) {
 }
 
 /// The screen as the X server shows it (ImageMagick's import), cropped to `r`, RGB floats.
+/// A file's bytes (the tests compare saved projects byte for byte).
+inline std::string fileText(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+/// Ctrl+S, then waits until the modeller reports the project saved.
+inline void saveAndWait(App& app) {
+  pressKeys("ctrl+s");
+  app.waitFor([](const nlohmann::json& j) { return !j["dirty"].get<bool>(); });
+}
+
 inline std::vector<float> grabScreen(const TempFolder& home, const Rect& r) {
   const fs::path file = home.path / "grab.png";
   EXPECT_EQ(run("import -window root '" + file.string() + "'"), 0);

@@ -7,16 +7,6 @@ using namespace gridifs::gui_test;
 
 namespace {
 
-std::string fileText(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-void saveAndWait(App& app) {
-  pressKeys("ctrl+s");
-  app.waitFor([](const nlohmann::json& j) { return !j["dirty"].get<bool>(); });
-}
-
 /// Scrolls the Functions panel (whose Name field was at `anchor` before any scrolling) until
 /// `item` is in sight and returns its place.
 std::optional<Rect> scrollTo(App& app, const Rect& anchor, const std::string& item) {
