@@ -4,7 +4,7 @@
 #include "app/cli.h"
 
 #ifdef GRIDIFS_HAVE_GUI
-#include "ui/modeller_app.h"
+#include "ui/shell/modeller_app.h"
 #endif
 
 namespace gridifs::cli {

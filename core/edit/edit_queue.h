@@ -2,7 +2,7 @@
 // Edits collected while the UI is built and applied to the Document afterwards (the fixed
 // frame order: build UI → apply edits). Widgets edit local copies and enqueue one
 // change; a slider drag is one gesture (begin on IsItemActivated, end on deactivation).
-// Headless: the modeller's widgets fill it (ui/edit_queue.h), tests drive it directly.
+// Headless: the modeller's widgets fill it (ui/base/edit_queue.h), tests drive it directly.
 //
 // Thread-safety: used by the thread that owns the Document.
 #include <functional>

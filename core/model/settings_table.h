@@ -3,7 +3,7 @@
 // field is a FieldSchema (model/field_schema.h) whose owner is the group: its JSON key, type,
 // valid range, slider range, number format, label and tooltip. Project reading and writing
 // (io/settings_json), validation (validateSettings), keyframe tracks (model/project_parameter)
-// and the panels' sliders (ui/setting_slider) are loops over or look-ups in these tables, so a
+// and the panels' sliders (ui/panels/setting_slider) are loops over or look-ups in these tables, so a
 // new setting is one member with its default plus one table entry (model/settings_tables.cpp).
 //
 // A field's default is the member initializer of its group struct: reading starts from a

@@ -1,6 +1,6 @@
-// The numbered file names of File › Render animation (ui/animation_frames.h): checked without a
+// The numbered file names of File › Render animation (ui/dialogs/animation_frames.h): checked without a
 // window, like the window placement rules.
-#include "ui/animation_frames.h"
+#include "ui/dialogs/animation_frames.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

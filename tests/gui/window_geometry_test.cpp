@@ -1,7 +1,7 @@
 // The window-placement rules without a display: the first window's size from a work area, a
 // remembered window fitted to the monitors present (several of them, which Xvfb cannot show), and
 // the settings file's round trip and its refusal of anything that is not a plausible geometry.
-#include "ui/window_geometry.h"
+#include "ui/shell/window_geometry.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>

@@ -1,0 +1,229 @@
+// The set editor of a condensation or median function: Barnsley's constant condensation map
+// onto its set, or Sokolov & Gentil's condensation function M(·, C) (§3.2) with the rotated
+// median of §4.1. Every drag is one undo step; every change bumps the geometry revision, so the
+// preview restarts and the views redraw the set.
+#include "ui/panels/condensation_set_panel.h"
+
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+#include <algorithm>
+
+#include "ui/base/widgets.h"
+
+namespace gridifs::ui {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct ShapeChoice {
+  SetShape shape;
+  const char* label;
+  const char* help;
+};
+const ShapeChoice kShapes[] = {
+    {SetShape::Sphere, "Sphere", "A ball: centre and radius"},
+    {SetShape::Box, "Box", "An axis-aligned box: centre and full edge lengths"},
+    {SetShape::Torus, "Torus", "A ring: centre, major and minor radius, axis of revolution"},
+    {SetShape::Mesh, "Mesh file", "An OBJ, PLY, STL or OFF mesh, filled or as its surface, placed in X"},
+    {SetShape::Vdb, "VDB file", "The voxels of a VDB float grid at or above a threshold"},
+};
+
+const char* shapeLabel(SetShape shape) {
+  for (const ShapeChoice& c : kShapes)
+    if (c.shape == shape) return c.label;
+  return "?";
+}
+
+/// One undo step per drag of the widget just drawn: the whole set is replaced.
+void setGesture(EditQueue& edits, const char* label, bool changed, FunctionRef ref, const CondensationSet& set) {
+  gestureItem(edits, label, changed, SetCondensationSet{ref, set});
+}
+
+/// `chosen` as the project will store it: relative to the project's folder where the project
+/// has a file, else as chosen.
+std::string storedPath(const ModellerState& state, const fs::path& chosen) {
+  if (state.document.path().empty()) return chosen.string();
+  std::error_code ec;
+  const fs::path folder = fs::absolute(state.projectFolder(), ec);
+  const fs::path relative = fs::absolute(chosen, ec).lexically_normal().lexically_relative(folder.lexically_normal());
+  return relative.empty() ? chosen.string() : relative.generic_string();
+}
+
+void drawPrimitive(ModellerState& state, EditQueue& edits, FunctionRef ref, const CondensationSet& current) {
+  CondensationSet set = current;
+  bool changed = dragVec3("Center", set.center, 0.005, -2.0, 2.0);
+  state.probe.frame("set.center");
+  setGesture(edits, "Move set", changed, ref, set);
+  contextHelp(state, "Where the set's centre sits in X = [-1, 1]³");
+  switch (set.shape) {
+    case SetShape::Sphere:
+      changed = dragDouble("Radius", set.radius, 0.002, 0.001, 10.0);
+      state.probe.frame("set.radius");
+      setGesture(edits, "Sphere radius", changed, ref, set);
+      break;
+    case SetShape::Box:
+      changed = dragVec3("Size", set.size, 0.004, 0.001, 20.0);
+      state.probe.frame("set.size");
+      setGesture(edits, "Box size", changed, ref, set);
+      contextHelp(state, "The box's full edge lengths along x, y and z");
+      break;
+    case SetShape::Torus:
+      changed = dragDouble("Major", set.major, 0.002, 0.001, 10.0);
+      state.probe.frame("set.major");
+      setGesture(edits, "Torus major radius", changed, ref, set);
+      contextHelp(state, "Distance from the centre to the tube's centre line");
+      changed = dragDouble("Minor", set.minor, 0.002, 0.001, 10.0);
+      state.probe.frame("set.minor");
+      setGesture(edits, "Torus minor radius", changed, ref, set);
+      contextHelp(state, "The tube's radius");
+      changed = dragVec3("Axis", set.axis, 0.01, -1.0, 1.0);
+      if (glm::length(set.axis) < 1e-6) set.axis = current.axis;  // a zero axis has no plane of revolution
+      setGesture(edits, "Torus axis", changed, ref, set);
+      contextHelp(state, "The axis the ring turns about (any length; it is normalized)");
+      break;
+    case SetShape::Mesh:
+    case SetShape::Vdb:
+      break;
+  }
+}
+
+}  // namespace
+
+void CondensationSetPanel::drawFile(ModellerState& state, EditQueue& edits, FunctionRef ref,
+                                    const CondensationSet& current) {
+  const bool mesh = current.shape == SetShape::Mesh;
+  // The file name: typed (committed on Enter or when the field loses focus) or browsed.
+  if (!editingPath_) pathText_ = current.path;
+  ImGui::InputText("File", &pathText_);
+  state.probe.frame("set.path");
+  editingPath_ = ImGui::IsItemActive();
+  if (ImGui::IsItemDeactivatedAfterEdit() && pathText_ != current.path) {
+    edits.commit(mesh ? "Set mesh file" : "Set VDB file", SetSetFile{ref, pathText_});
+  }
+  contextHelp(state, "The file's path, relative to the project file's folder");
+  if (ImGui::Button("Browse...")) browse(state, current, current.shape);
+  state.probe.item("set.browse");
+  contextHelp(state, mesh ? "Pick an OBJ, PLY, STL or OFF mesh" : "Pick an OpenVDB file");
+
+  CondensationSet set = current;
+  if (mesh) {
+    int fill = set.fill == SetFill::Surface ? 1 : 0;
+    static const char* fills[] = {"Solid", "Surface"};
+    if (ImGui::Combo("Fill", &fill, fills, 2)) {
+      edits.commit(SetSetFill{ref, fill ? SetFill::Surface : SetFill::Solid});
+    }
+    state.probe.frame("set.fill");
+    contextHelp(state, "Solid: the volume the mesh encloses (it must be closed); surface: a shell around its faces");
+    if (ImGui::CollapsingHeader("Placement", ImGuiTreeNodeFlags_DefaultOpen)) {
+      bool changed = dragVec3("Translate", set.placement.translate, 0.005);
+      state.probe.frame("set.translate");
+      setGesture(edits, "Move set mesh", changed, ref, set);
+      changed = dragVec3("Rotate", set.placement.rotate, 0.5, -360.0, 360.0, "%.1f°");
+      setGesture(edits, "Rotate set mesh", changed, ref, set);
+      changed = dragVec3("Scale", set.placement.scale, 0.005, -20.0, 20.0);
+      for (int d = 0; d < 3; ++d)
+        if (set.placement.scale[d] == 0.0) set.placement.scale[d] = current.placement.scale[d];  // never flat
+      setGesture(edits, "Scale set mesh", changed, ref, set);
+      contextHelp(state, "The mesh's own coordinates are scaled, then rotated, then moved into X");
+    }
+  } else {
+    std::string grid = set.grid;
+    const bool typed = ImGui::InputText("Grid", &grid);
+    state.probe.frame("set.grid");
+    gestureItem(edits, "VDB grid name", typed && !grid.empty(), SetSetGrid{ref, grid});
+    contextHelp(state, "The name of the float grid in the file");
+    const bool changed = dragDouble("Threshold", set.threshold, 0.005, -1e6, 1e6);
+    state.probe.frame("set.threshold");
+    setGesture(edits, "VDB threshold", changed, ref, set);
+    contextHelp(state, "Voxels whose value is at least this belong to the set");
+  }
+}
+
+void CondensationSetPanel::browse(ModellerState& state, const CondensationSet& set, SetShape shape) {
+  const bool mesh = shape == SetShape::Mesh;
+  browsing_ = state.activeFunction;
+  browsingFor_ = shape;
+  const fs::path folder = state.projectFolder();
+  const fs::path start = set.path.empty() ? folder : (folder / set.path).parent_path();
+  std::error_code ec;
+  browser_.open(FileBrowser::Mode::Open, fs::is_directory(start, ec) ? start : folder, {},
+                mesh ? std::vector<std::string>{".obj", ".ply", ".stl", ".off"} : std::vector<std::string>{".vdb"},
+                mesh ? "Condensation mesh" : "Condensation VDB");
+}
+
+void CondensationSetPanel::draw(ModellerState& state, EditQueue& edits) {
+  state.clampIndices();
+  const FunctionRef ref = state.activeFunction;
+  const Function& f = state.function();
+  if (!isSetKind(f.kind)) return;
+  const CondensationSet& set = f.set;
+  const bool median = f.kind == FunctionKind::Median;
+  ImGui::TextColored(ImVec4(float(f.color.x), float(f.color.y), float(f.color.z), 1.0f), "%s", f.name.c_str());
+  ImGui::SameLine();
+  ImGui::TextDisabled(median ? "median: f_C = M(·, C)" : "condensation: onto C");
+  ImGui::PushItemWidth(-ImGui::CalcTextSize("Threshold_").x);
+
+  if (ImGui::BeginCombo("Set", shapeLabel(set.shape))) {
+    for (const ShapeChoice& c : kShapes) {
+      if (ImGui::Selectable(c.label, c.shape == set.shape) && c.shape != set.shape) {
+        const SetShape shape = c.shape;
+        // A file set needs its file first: the browser picks it, and the shape and the file
+        // become one undo step (a mesh path is no VDB path, and the other way round).
+        const bool fileSet = shape == SetShape::Mesh || shape == SetShape::Vdb;
+        const bool isVdbPath = fs::path(set.path).extension() == ".vdb";
+        const bool pathFits = !set.path.empty() && isVdbPath == (shape == SetShape::Vdb);
+        if (fileSet && !pathFits)
+          browse(state, set, shape);
+        else
+          edits.commit(SetSetShape{ref, shape, std::nullopt});
+      }
+      state.probe.item(std::string("set.shape.") + setShapeName(c.shape));
+      contextHelp(state, c.help);
+    }
+    ImGui::EndCombo();
+  }
+  state.probe.frame("set.shape");
+  contextHelp(state, "What the set is: a primitive, a mesh file or a VDB file");
+
+  // The drawing the views show, made (and so checked) by the core voxelizer: its sentence is the
+  // message when the set cannot be used.
+  const SetOutlineCache::Drawing& drawing = state.setOutlines.get(set, state.projectFolder(), ref.path() + ".set");
+  message_ = drawing.error;
+  if (!drawing.error.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.6f, 0.3f, 1.0f));
+    ImGui::TextWrapped("%s", drawing.error.c_str());
+    ImGui::PopStyleColor();
+    state.probe.item("set.message");
+    ImGui::TextDisabled("The preview keeps its last picture; Ctrl+Z returns to the last good set.");
+  }
+
+  if (set.shape == SetShape::Mesh || set.shape == SetShape::Vdb)
+    drawFile(state, edits, ref, set);
+  else
+    drawPrimitive(state, edits, ref, set);
+
+  if (median) {
+    double rotate = f.rotate;
+    const bool changed = dragDouble("Rotate", rotate, 0.5, -3600.0, 3600.0, "%.1f°");
+    state.probe.frame("set.rotate");
+    gestureItem(edits, "Median rotation", changed, SetMedianRotation{ref, rotate});
+    contextHelp(state,
+                "The rotated median (Sokolov & Gentil, §4.1): degrees about z per unit of distance between the sets' "
+                "centres; 0 is the plain median");
+  }
+  ImGui::PopItemWidth();
+
+  if (auto chosen = browser_.draw(state.probe)) {
+    const std::string path = storedPath(state, *chosen);
+    const FunctionRef target = browsing_;
+    const SetShape shape = browsingFor_;
+    const bool newShape = browsing_.in(state.document.project()).set.shape != shape;
+    const std::string label = newShape                  ? std::string("Set shape: ") + setShapeName(shape)
+                              : shape == SetShape::Mesh ? "Set mesh file"
+                                                        : "Set VDB file";
+    edits.commit(label, SetSetShape{target, shape, path});
+  }
+}
+
+}  // namespace gridifs::ui

@@ -1,0 +1,222 @@
+// The Matrices window: the transition matrix of a graph-directed IFS (which function may follow
+// which; Thollot, Zair, Tosan & Vandorpe 1997, §3.2) and, in a free-form project, the control
+// points and the active function's barycentric matrix (§3.1), with presets for both. Every
+// change is one undo step through the edit queue; drags are one gesture.
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "model/final_function.h"
+#include "model/free_form.h"
+#include "model/free_form_presets.h"
+#include "model/transition_matrix.h"
+#include "ui/panels/panels.h"
+#include "ui/base/widgets.h"
+
+namespace gridifs::ui {
+namespace {
+
+/// One cell of a matrix: drag sets the value (one gesture), a click without a drag toggles
+/// between 0 and 1 when `toggles`. `set` makes the named edit that sets the cell to a value.
+template <class SetCell>
+void matrixCell(EditQueue& edits, const char* id, double value, double minimum, bool toggles, const char* what,
+                const SetCell& set) {
+  float v = float(value);
+  const bool zero = value == 0.0;
+  if (zero) ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  const bool changed = ImGui::DragFloat(id, &v, 0.01f, float(minimum), 1e6f, "%.3g", ImGuiSliderFlags_AlwaysClamp);
+  if (zero) ImGui::PopStyleColor();
+  const bool clicked = toggles && ImGui::IsItemDeactivated() && !ImGui::IsItemDeactivatedAfterEdit() &&
+                       ImGui::GetIO().MouseDragMaxDistanceSqr[0] < 4.0f;
+  gestureItem(edits, what, changed, set(double(v)));
+  if (clicked) edits.commit(std::string("Toggle ") + what, set(zero ? 1.0 : 0.0));
+}
+
+void drawTransitions(ModellerState& state, EditQueue& edits) {
+  const Project& project = state.document.project();
+  const std::size_t n = project.functions.size();
+  sectionTitle("Transitions (which function may follow which)");
+  bool restricted = !project.transitions.empty();
+  if (ImGui::Checkbox("Restrict transitions", &restricted)) {
+    if (restricted)
+      edits.commit("Restrict transitions", SetTransitionPreset{TransitionPreset::All});
+    else
+      edits.commit(RemoveTransitions{});
+  }
+  state.probe.item("matrices.restrict");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Row i weights the functions that may follow function i; 0 forbids that step");
+  ImGui::SameLine();
+  const struct {
+    const char* label;
+    TransitionPreset preset;
+  } presets[] = {{"All", TransitionPreset::All},
+                 {"No repeats", TransitionPreset::NoRepeats},
+                 {"Cycle i to i+1", TransitionPreset::Cycle}};
+  for (const auto& p : presets) {
+    if (ImGui::SmallButton(p.label))
+      edits.commit(std::string("Transitions: ") + p.label, SetTransitionPreset{p.preset});
+    state.probe.item(std::string("matrices.transitions.") + p.label);
+    ImGui::SameLine();
+  }
+  ImGui::NewLine();
+  if (!restricted || project.transitions.size() != n) return;
+  const float cell = ImGui::CalcTextSize("0.000").x + ImGui::GetStyle().FramePadding.x * 2;
+  if (ImGui::BeginTable("transitions", int(n) + 1, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollX,
+                        ImVec2(0, 0))) {
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::TextDisabled("after \\ next");
+    for (std::size_t j = 0; j < n; ++j) {
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(project.functions[j].name.c_str());
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(project.functions[i].name.c_str());
+      for (std::size_t j = 0; j < n; ++j) {
+        ImGui::TableNextColumn();
+        ImGui::PushID(int(i * n + j));
+        ImGui::SetNextItemWidth(cell);
+        matrixCell(edits, "##t", project.transitions[i][j], 0.0, true, "transition weight", [i, j](double v) {
+          return SetTransitionWeight{i, j, v};
+        });
+        state.probe.item("matrices.transition." + std::to_string(i) + "." + std::to_string(j));
+        ImGui::PopID();
+      }
+    }
+    ImGui::EndTable();
+  }
+}
+
+void drawPresets(ModellerState& state, EditQueue& edits, MatricesWindowState& choice) {
+  sectionTitle("Free-form presets (control points and matrices)");
+  int& which = choice.preset;
+  float& split = choice.split;
+  float& roughness = choice.roughness;
+  int& seed = choice.seed;
+  const FreeFormPreset presets[] = {FreeFormPreset::BezierCurve, FreeFormPreset::BezierPatch,
+                                    FreeFormPreset::Sierpinski, FreeFormPreset::SierpinskiPatch};
+  const char* labels[] = {"Cubic Bezier curve", "Bicubic Bezier patch", "Sierpinski gasket (3 points)",
+                          "Sierpinski gasket on a patch"};
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 14);
+  ImGui::Combo("Preset", &which, labels, 4);
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 14);
+  ImGui::SliderFloat("Split r", &split, 0.05f, 0.95f, "%.2f");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Where de Casteljau subdivision cuts the curve in two");
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 14);
+  ImGui::SliderFloat("Roughness", &roughness, 0.0f, 0.5f, "%.2f");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Perturbs the subdivision matrices (rows still sum to 1): smooth shapes become fractal");
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 14);
+  ImGui::InputInt("Seed", &seed);
+  const bool replace = ImGui::Button("Replace the functions with this preset");
+  state.probe.item("matrices.apply_preset");
+  if (replace) {
+    FreeFormPresetOptions options;
+    options.split = split;
+    options.roughness = roughness;
+    options.seed = std::uint64_t(std::max(seed, 0));
+    const FreeFormPreset preset = presets[which];
+    edits.commit(std::string("Preset: ") + labels[which], ApplyFreeFormPreset{preset, options});
+    state.activeFunction = FunctionRef(0);
+    state.activeOp = -1;
+  }
+  if (state.document.project().space && ImGui::Button("Back to a grid IFS")) {
+    edits.commit(BackToGridIfs{});
+    state.activeFunction = FunctionRef(0);
+    state.activeOp = -1;
+  }
+}
+
+void drawControlPoints(ModellerState& state, EditQueue& edits) {
+  const Project& project = state.document.project();
+  const auto& points = project.space->control_points;
+  sectionTitle("Control points");
+  if (ImGui::BeginChild("points",
+                        ImVec2(0, std::min(float(points.size()) + 0.5f, 6.5f) * ImGui::GetFrameHeightWithSpacing()))) {
+    for (std::size_t j = 0; j < points.size(); ++j) {
+      ImGui::PushID(int(j));
+      float v[3] = {float(points[j].x), float(points[j].y), float(points[j].z)};
+      char label[32];
+      std::snprintf(label, sizeof label, "p%zu", j);
+      const bool changed = ImGui::DragFloat3(label, v, 0.005f, -1e3f, 1e3f, "%.3f");
+      gestureItem(edits, "Move control point", changed, MoveControlPoint{j, Vec3{v[0], v[1], v[2]}});
+      state.probe.item("matrices.point." + std::to_string(j));
+      ImGui::PopID();
+    }
+  }
+  ImGui::EndChild();
+}
+
+void drawFunctionMatrix(ModellerState& state, EditQueue& edits) {
+  const Project& project = state.document.project();
+  if (state.activeFunction.isFinal()) return;  // the final function is a lattice, never a matrix
+  const std::size_t fi = std::size_t(std::clamp(state.activeFunction.index(), 0, int(project.functions.size()) - 1));
+  const Function& f = project.functions[fi];
+  if (f.kind != FunctionKind::Matrix) return;
+  const std::size_t m = f.matrix.size();
+  sectionTitle(("Matrix of " + f.name + " (coordinates <- coordinates x matrix; rows sum to 1)").c_str());
+  const float cell = ImGui::CalcTextSize("-0.000").x + ImGui::GetStyle().FramePadding.x * 2;
+  if (ImGui::BeginTable("matrix", int(m) + 1, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollX)) {
+    for (std::size_t i = 0; i < m; ++i) {
+      ImGui::TableNextRow();
+      for (std::size_t j = 0; j < m; ++j) {
+        ImGui::TableNextColumn();
+        ImGui::PushID(int(i * m + j));
+        ImGui::SetNextItemWidth(cell);
+        // The edited entry is balanced by the row's diagonal (or last) entry, so the row keeps
+        // summing to 1 and every intermediate state of a drag is valid.
+        matrixCell(edits, "##m", f.matrix[i][j], -1e6, false, "matrix entry", [fi = int(fi), i, j](double v) {
+          return SetMatrixEntry{fi, i, j, v};
+        });
+        state.probe.item("matrices.entry." + std::to_string(i) + "." + std::to_string(j));
+        ImGui::PopID();
+      }
+      ImGui::TableNextColumn();
+      double sum = 0.0;
+      for (double v : f.matrix[i]) sum += v;
+      ImGui::TextDisabled("sum %.6g", sum);
+    }
+    ImGui::EndTable();
+  }
+  ImGui::TextDisabled("Dragging an entry balances the row on its diagonal entry (the next one on the diagonal).");
+  const double c = simplexContraction(f.matrix);
+  if (c >= 1.0)
+    ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "Not a contraction of the simplex (%.3g).", c);
+  else
+    ImGui::TextDisabled("Contracts the simplex by %.3g.", c);
+}
+
+}  // namespace
+
+void drawMatricesWindow(ModellerState& state, EditQueue& edits, MatricesWindowState& window) {
+  if (!state.showMatrices) return;
+  const ImGuiViewport* vp = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos(ImVec2(vp->WorkPos.x + vp->WorkSize.x * 0.5f, vp->WorkPos.y + vp->WorkSize.y * 0.5f),
+                          ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowSize(ImVec2(std::min(ImGui::GetFontSize() * 40, vp->WorkSize.x * 0.95f),
+                                  std::min(ImGui::GetFontSize() * 38, vp->WorkSize.y * 0.9f)),
+                           ImGuiCond_Appearing);
+  if (!ImGui::Begin("Matrices", &state.showMatrices, ImGuiWindowFlags_NoCollapse)) {
+    ImGui::End();
+    return;
+  }
+  state.probe.window("window.matrices");
+  // A floating window over the tiled panels: in front when it opens, or it may open behind one.
+  if (ImGui::IsWindowAppearing()) ImGui::SetWindowFocus();
+  drawPresets(state, edits, window);
+  ImGui::Spacing();
+  drawTransitions(state, edits);
+  ImGui::Spacing();
+  if (state.document.project().space) {
+    drawControlPoints(state, edits);
+    drawFunctionMatrix(state, edits);
+  }
+  ImGui::End();
+}
+
+}  // namespace gridifs::ui
