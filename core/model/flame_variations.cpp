@@ -330,7 +330,12 @@ KernelVariationTerm makeKernelVariationTerm(const VariationTerm& term) {
 // otherwise keep the larger bodies as calls, with the point passed through memory). No SLP
 // vectorisation: it summed the terms as pairs loaded from the switch's scalar stores, a
 // store-forwarding stall on every term.
-[[gnu::flatten, gnu::optimize("no-tree-slp-vectorize")]] FlamePoint evaluateKernelVariations(const KernelVariationTerm* terms, std::size_t count, bool anyPre,
+#if defined(__GNUC__) && !defined(__clang__)
+#define GRIDIFS_KERNEL_SUM_ATTRIBUTES [[gnu::flatten, gnu::optimize("no-tree-slp-vectorize")]]
+#else
+#define GRIDIFS_KERNEL_SUM_ATTRIBUTES [[gnu::flatten]]  // clang: no per-function optimisation switches
+#endif
+GRIDIFS_KERNEL_SUM_ATTRIBUTES FlamePoint evaluateKernelVariations(const KernelVariationTerm* terms, std::size_t count, bool anyPre,
                                                      FlamePoint p, const FlameAffine& coefs, std::uint64_t* random) {
   // The order of operations and of random draws is evaluateVariations's.
   VariationInput in{p.x, p.y, p.z, &coefs, nullptr, random};
