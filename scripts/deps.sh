@@ -9,6 +9,8 @@ GRIDIFS_PACKAGES=(
   xvfb xauth xdotool x11-utils imagemagick mesa-utils libgl1-mesa-dri fonts-dejavu-core
   flam3-utils flam3-palette clang libclang-rt-14-dev libtbb-dev libpugixml-dev
   libegl-dev libegl-mesa0 libopenvdb-dev libboost-iostreams-dev libnanoflann-dev ffmpeg zlib1g-dev
+  # scripts/figures (its thumbnails through oiiotool, above).
+  python3
   # scripts/slurm-local: a one-node Slurm for the render-job tests; ss picks its free ports.
   slurm-wlm munge iproute2
 )
