@@ -1,7 +1,6 @@
 #include "model/free_form_basis.h"
 
 #include <cmath>
-#include <utility>
 
 #include "base/errors.h"
 
@@ -16,25 +15,25 @@ double factorial(int n) {
 
 double binomial(int n, int k) { return factorial(n) / (factorial(k) * factorial(n - k)); }
 
-/// The cardinal B-spline of degree n, supported on [0, n + 1]: the truncated-power formula
-/// M_n(x) = 1/n! Σ_k (−1)^k C(n + 1, k) (x − k)_+^n.
+/// The cardinal B-spline of degree n, supported on [0, n + 1], by the Cox–de Boor recursion
+/// M_n(x) = (x·M_{n−1}(x) + (n + 1 − x)·M_{n−1}(x − 1)) / n (stable, unlike the truncated powers).
 double cardinalBSpline(int n, double x) {
-  if (x <= 0.0 || x >= n + 1) return 0.0;
-  double s = 0.0;
-  for (int k = 0; k <= n + 1 && k < x; ++k) s += (k % 2 ? -1.0 : 1.0) * binomial(n + 1, k) * std::pow(x - k, n);
-  return s / factorial(n);
+  if (x < 0.0 || x >= n + 1) return 0.0;
+  if (n == 0) return 1.0;
+  return (x * cardinalBSpline(n - 1, x) + (n + 1 - x) * cardinalBSpline(n - 1, x - 1.0)) / n;
 }
 
-/// M with N(x_k)·M = N(s(x_k)) at n + 1 points: the matrix of t ↦ s(t) in the basis N.
-template <class Basis, class Map>
-BarycentricMatrix collocate(int count, const Basis& basis, const Map& map) {
-  BarycentricMatrix c, r;
-  for (int k = 0; k < count; ++k) {
-    const double t = (k + 0.5) / count;
-    c.push_back(basis(t));
-    r.push_back(basis(map(t)));
-  }
-  return solveLinear(std::move(c), std::move(r));
+/// The subdivision matrix of one degree-n segment: row j is fine control point `first` + j of
+/// the Lane–Riesenfeld refinement P'_m = Σ_i c_{m − 2i} P_i, c_k = C(n + 1, k) / 2^n.
+BarycentricMatrix bsplineSubdivision(int n, int first) {
+  const std::size_t m = std::size_t(n) + 1;
+  BarycentricMatrix t(m, std::vector<double>(m, 0.0));
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const int k = first + j - 2 * i;
+      if (k >= 0 && k <= n + 1) t[std::size_t(j)][std::size_t(i)] = binomial(n + 1, k) / std::ldexp(1.0, n);
+    }
+  return t;
 }
 
 }  // namespace
@@ -66,15 +65,9 @@ std::vector<double> uniformBSpline(int degree, double t) {
   return n;
 }
 
-BarycentricMatrix bsplineSubdivisionLeft(int degree) {
-  return collocate(degree + 1, [degree](double t) { return uniformBSpline(degree, t); },
-                   [](double t) { return 0.5 * t; });
-}
+BarycentricMatrix bsplineSubdivisionLeft(int degree) { return bsplineSubdivision(degree, degree); }
 
-BarycentricMatrix bsplineSubdivisionRight(int degree) {
-  return collocate(degree + 1, [degree](double t) { return uniformBSpline(degree, t); },
-                   [](double t) { return 0.5 + 0.5 * t; });
-}
+BarycentricMatrix bsplineSubdivisionRight(int degree) { return bsplineSubdivision(degree, degree + 1); }
 
 std::vector<std::vector<int>> simplexIndices(int dim, int degree) {
   std::vector<std::vector<int>> out;

@@ -1,9 +1,10 @@
 #pragma once
 // Bases of free-form IFSs and the linear algebra that turns a map of the parameter space into a
 // matrix of barycentric coordinates (Thollot, Zair, Tosan & Vandorpe 1997, §5.2–5.3): when the
-// basis B spans a space of polynomials that a map T keeps (B∘T = B·M for one matrix M), M is
-// found by collocation, B(x_k)·M = B(T x_k) at as many points x_k as there are basis functions.
-// Rows of M sum to 1 whenever the basis sums to 1 (a partition of unity).
+// basis B spans a space of polynomials that a map T keeps (B∘T = B·M for one matrix M), M can be
+// found by collocation, B(x_k)·M = B(T x_k) at as many points x_k as there are basis functions
+// (solveLinear; model/free_form_deformation.cpp does so). Rows of M sum to 1 whenever the basis
+// sums to 1 (a partition of unity).
 //
 // Thread-safety: pure functions of their arguments. solveLinear throws ModelError("", …) for a
 // singular system.
@@ -21,7 +22,8 @@ BarycentricMatrix solveLinear(BarycentricMatrix a, BarycentricMatrix b);
 std::vector<double> uniformBSpline(int degree, double t);
 
 /// The standard uniform subdivision matrices of a degree-n B-spline segment (the Lane–Riesenfeld
-/// refinement restricted to one segment): N(t/2) = N(t)·left, N((1 + t)/2) = N(t)·right.
+/// refinement restricted to one segment, exact binomial weights over 2^n): N(t/2) = N(t)·left,
+/// N((1 + t)/2) = N(t)·right.
 BarycentricMatrix bsplineSubdivisionLeft(int degree);
 BarycentricMatrix bsplineSubdivisionRight(int degree);
 

@@ -31,7 +31,7 @@ void write(const fs::path& file, const std::string& text) { std::ofstream(file) 
 
 TEST(FreeFormCli, PresetsOfADegree) {
   const fs::path dir = tempDir();
-  for (const std::string& name : {"bezier-curve", "bspline-curve", "bezier-patch", "bspline-patch"}) {
+  for (const std::string name : {"bezier-curve", "bspline-curve", "bezier-patch", "bspline-patch"}) {
     const fs::path out = dir / (name + ".gridifs");
     const CommandResult r = runGridifs("free-form -o " + quote(out.string()) + " --preset " + name + " --degree 5");
     ASSERT_EQ(r.exitCode, 0) << r.err;
