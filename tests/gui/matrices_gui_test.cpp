@@ -70,6 +70,11 @@ TEST(MatricesGui, MapsAGridIfsOntoAControlNetAndAddsAPoint) {
   ASSERT_TRUE(add);
   clickRect(*add);
   probe = app.waitFor([](const nlohmann::json& j) { return j["undo"] == "Add control point"; });
+  EXPECT_EQ(probe["undo"], "Add control point");
+  run("import -window root '" + (home.path / "control_net.png").string() + "'");
+  if (const char* keep = std::getenv("GRIDIFS_GUI_SHOTS"))  // for a person to look at
+    fs::copy_file(home.path / "control_net.png", fs::path(keep) / "control_net.png",
+                  fs::copy_options::overwrite_existing);
   pressKeys("ctrl+s");
   app.waitFor([](const nlohmann::json& j) { return !j["dirty"].get<bool>(); });
   const gridifs::Project saved = gridifs::loadProject(project);

@@ -205,6 +205,13 @@ void drawControlPoints(ModellerState& state, EditQueue& edits) {
   const Project& project = state.document.project();
   const auto& points = project.space->control_points;
   sectionTitle("Control points");
+  ImGui::BeginDisabled(points.size() >= std::size_t(limits::kMaxControlPoints));
+  if (ImGui::SmallButton("Add control point")) edits.commit(AddControlPoint{});
+  ImGui::EndDisabled();
+  state.probe.item("matrices.add_point");
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("A Bezier curve is degree-elevated (same curve); otherwise the new point has a zero column "
+                      "and the mean row, so nothing moves until you edit its column");
   if (ImGui::BeginChild("points",
                         ImVec2(0, std::min(float(points.size()) + 0.5f, 6.5f) * ImGui::GetFrameHeightWithSpacing()))) {
     for (std::size_t j = 0; j < points.size(); ++j) {
@@ -226,13 +233,6 @@ void drawControlPoints(ModellerState& state, EditQueue& edits) {
     }
   }
   ImGui::EndChild();
-  ImGui::BeginDisabled(points.size() >= std::size_t(limits::kMaxControlPoints));
-  if (ImGui::Button("Add control point")) edits.commit(AddControlPoint{});
-  ImGui::EndDisabled();
-  state.probe.item("matrices.add_point");
-  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-    ImGui::SetTooltip("A Bezier curve is degree-elevated (same curve); otherwise the new point has a zero column "
-                      "and the mean row, so nothing moves until you edit its column");
 }
 
 /// The joints a hand edit broke (Thollot et al. 1997, §5.3.2), against the project as it was
