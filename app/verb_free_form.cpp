@@ -25,8 +25,10 @@ struct FreeFormArgs {
 Project presetProject(const FreeFormArgs& a) {
   FreeFormPreset preset;
   if (!parseFreeFormPreset(a.preset, preset))
-    throw CliError(kBadInput, "--preset must be bezier-curve, bezier-patch, bspline-curve, bspline-patch, "
-                              "sierpinski or sierpinski-patch, not \"" + a.preset + "\"");
+    throw CliError(kBadInput,
+                   "--preset must be bezier-curve, bezier-patch, bspline-curve, bspline-patch, "
+                   "sierpinski or sierpinski-patch, not \"" +
+                       a.preset + "\"");
   FreeFormPresetOptions options;
   options.degree = a.degree.value_or(3);
   options.split = a.split;
@@ -45,17 +47,18 @@ Project presetProject(const FreeFormArgs& a) {
 Project mappedProject(const FreeFormArgs& a) {
   ControlNetOptions options;
   if (!parseControlNetShape(a.net, options.shape))
-    throw CliError(kBadInput, "--net must be flat, elliptic-paraboloid or hyperbolic-paraboloid, not \"" + a.net + "\"");
+    throw CliError(kBadInput,
+                   "--net must be flat, elliptic-paraboloid or hyperbolic-paraboloid, not \"" + a.net + "\"");
   options.degree = a.degree.value_or(2);
   options.height = a.height;
   const Project grid = loadForVerb(a.from);
   try {
     ControlNetResult result = mapOntoControlNet(grid, options);
-    for (const std::string& note : result.notes) std::fprintf(stderr, "gridifs: note: %s: %s\n", a.from.c_str(), note.c_str());
+    for (const std::string& note : result.notes)
+      std::fprintf(stderr, "gridifs: note: %s: %s\n", a.from.c_str(), note.c_str());
     return std::move(result.project);
   } catch (const ModelError& e) {
-    if (e.path() == "degree" || e.path() == "height")
-      throw CliError(kBadInput, "--" + e.path() + ": " + e.message());
+    if (e.path() == "degree" || e.path() == "height") throw CliError(kBadInput, "--" + e.path() + ": " + e.message());
     throw CliError(kBadInput, "cannot map " + a.from + " onto a control net: " + e.what());
   }
 }
@@ -91,8 +94,9 @@ const VerbRegistration kFreeForm{
        app.add_option("--split", a->split, "r of the Bézier presets' de Casteljau subdivision, in (0, 1)");
        app.add_option("--roughness", a->roughness, "0..1: blends the Bézier and Sierpinski matrices into fractal ones");
        app.add_option("--seed", a->seed, "seed of the roughness");
-       app.add_option("--net", a->net, "the control net's shape: flat (the identity), elliptic-paraboloid, "
-                                       "hyperbolic-paraboloid");
+       app.add_option("--net", a->net,
+                      "the control net's shape: flat (the identity), elliptic-paraboloid, "
+                      "hyperbolic-paraboloid");
        app.add_option("--height", a->height, "height of the paraboloids, in half-widths of the attractor");
        return [a] { return runFreeForm(*a); };
      }}};

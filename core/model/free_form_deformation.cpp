@@ -29,8 +29,8 @@ Affine fitAffine3(const Grid& g, double& maxError) {
   const Index3 n = g.resolution();
   BarycentricMatrix normal(4, std::vector<double>(4, 0.0)), rhs(4, std::vector<double>(3, 0.0));
   auto lattice = [&](int i, int j, int k) {
-    return std::array<double, 4>{-1.0 + 2.0 * i / (n[0] - 1), -1.0 + 2.0 * j / (n[1] - 1),
-                                 -1.0 + 2.0 * k / (n[2] - 1), 1.0};
+    return std::array<double, 4>{-1.0 + 2.0 * i / (n[0] - 1), -1.0 + 2.0 * j / (n[1] - 1), -1.0 + 2.0 * k / (n[2] - 1),
+                                 1.0};
   };
   for (int k = 0; k < n[2]; ++k)
     for (int j = 0; j < n[1]; ++j)
@@ -227,7 +227,8 @@ ControlNetResult mapOntoControlNet(const Project& grid, const ControlNetOptions&
   out.functions.clear();
   for (std::size_t i = 0; i < grid.functions.size(); ++i) {
     BarycentricMatrix moved;
-    for (const Vec3& x : domain) moved.push_back(simplexBernstein(n, indices, barycentric(simplex, applyAffine(maps[i], x), dim)));
+    for (const Vec3& x : domain)
+      moved.push_back(simplexBernstein(n, indices, barycentric(simplex, applyAffine(maps[i], x), dim)));
     const Function& g = grid.functions[i];
     Function f;
     f.kind = FunctionKind::Matrix;

@@ -29,9 +29,9 @@ bool parseControlNetShape(const std::string& name, ControlNetShape& out);
 inline constexpr int kMaxPlanarNetDegree = 7, kMaxSpatialNetDegree = 5;
 
 struct ControlNetOptions {
-  int degree = 2;                          // total degree n of the net, 1..7 (plane) or 1..5 (space)
+  int degree = 2;  // total degree n of the net, 1..7 (plane) or 1..5 (space)
   ControlNetShape shape = ControlNetShape::Flat;
-  double height = 0.5;                     // h of the paraboloids, in half-widths of the attractor
+  double height = 0.5;  // h of the paraboloids, in half-widths of the attractor
 };
 
 struct ControlNetResult {

@@ -112,8 +112,8 @@ void addPatchJoints(const Project& project, const PatchLayout& g, std::vector<Fr
         out.push_back({g.at[i * g.rows + k], g.at[(i + 1) * g.rows + k], true,
                        edgeGap(rightEdge, t(i, k), leftEdge, t(i + 1, k))});
       if (k < b)
-        out.push_back({g.at[i * g.rows + k], g.at[i * g.rows + k + 1], true,
-                       edgeGap(topEdge, t(i, k), bottomEdge, t(i, k + 1))});
+        out.push_back(
+            {g.at[i * g.rows + k], g.at[i * g.rows + k + 1], true, edgeGap(topEdge, t(i, k), bottomEdge, t(i, k + 1))});
     }
 }
 
@@ -156,8 +156,7 @@ std::vector<FreeFormJoint> brokenJoints(const Project& before, const Project& af
   const auto held = freeFormJoints(before);
   for (const FreeFormJoint& j : failingJoints(after))
     for (const FreeFormJoint& h : held)
-      if (h.first == j.first && h.second == j.second && h.edge == j.edge && h.gap <= kJointTolerance)
-        out.push_back(j);
+      if (h.first == j.first && h.second == j.second && h.edge == j.edge && h.gap <= kJointTolerance) out.push_back(j);
   return out;
 }
 
@@ -172,7 +171,8 @@ std::string describeJoint(const Project& project, const FreeFormJoint& joint) {
       << joint.gap << "); a fractal patch needs them equal";
   else
     s << name(joint.first) << " -> " << name(joint.second) << ": the end of " << name(joint.first)
-      << " is not the start of " << name(joint.second) << " (gap " << joint.gap << "); a fractal curve needs them equal";
+      << " is not the start of " << name(joint.second) << " (gap " << joint.gap
+      << "); a fractal curve needs them equal";
   return s.str();
 }
 

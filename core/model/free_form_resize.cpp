@@ -35,7 +35,8 @@ bool isBezierCurve(const Project& project, double* r) {
   const double split = left[1][1];  // row 1 of the left half is (1 − r, r, 0, …)
   if (!(split > 0.0 && split < 1.0)) return false;
   const int degree = int(m) - 1;
-  if (!near(left, deCasteljauLeft(degree, split)) || !near(project.functions[1].matrix, deCasteljauRight(degree, split)))
+  if (!near(left, deCasteljauLeft(degree, split)) ||
+      !near(project.functions[1].matrix, deCasteljauRight(degree, split)))
     return false;
   if (r) *r = split;
   return true;
@@ -44,8 +45,8 @@ bool isBezierCurve(const Project& project, double* r) {
 void addControlPoint(Project& project, std::optional<Vec3> point) {
   const std::size_t m = pointCount(project);
   if (m + 1 > std::size_t(limits::kMaxControlPoints))
-    throw ModelError(kPoints, "a free-form IFS has at most " + std::to_string(limits::kMaxControlPoints) +
-                                  " control points");
+    throw ModelError(kPoints,
+                     "a free-form IFS has at most " + std::to_string(limits::kMaxControlPoints) + " control points");
   auto& points = project.space->control_points;
   double r = 0.5;
   if (isBezierCurve(project, &r)) {
@@ -80,8 +81,8 @@ void removeControlPoint(Project& project, std::size_t index) {
   if (index >= m)
     throw ModelError(std::string(kPoints) + "[" + std::to_string(index) + "]", "the project has no such control point");
   if (m - 1 < std::size_t(limits::kMinControlPoints))
-    throw ModelError(kPoints, "a free-form IFS needs at least " + std::to_string(limits::kMinControlPoints) +
-                                  " control points");
+    throw ModelError(kPoints,
+                     "a free-form IFS needs at least " + std::to_string(limits::kMinControlPoints) + " control points");
   auto& points = project.space->control_points;
   double r = 0.5;
   const bool bezier = isBezierCurve(project, &r);

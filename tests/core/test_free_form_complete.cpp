@@ -214,7 +214,8 @@ TEST(FreeFormResize, ABezierCurveIsDegreeElevatedAndReducedAndStaysBezier) {
   EXPECT_TRUE(isBezierCurve(p, &r));
   EXPECT_DOUBLE_EQ(r, 0.5);
   for (double t : {0.0, 0.3, 0.8, 1.0})
-    EXPECT_LT(glm::length(deCasteljau(p.space->control_points, t) - deCasteljau(cubic.space->control_points, t)), 1e-12);
+    EXPECT_LT(glm::length(deCasteljau(p.space->control_points, t) - deCasteljau(cubic.space->control_points, t)),
+              1e-12);
   EXPECT_NO_THROW(validateProject(p));
   applyEdit(p, RemoveControlPoint{2});
   ASSERT_EQ(p.space->control_points.size(), 4u);
@@ -254,7 +255,8 @@ TEST(ControlNet, AFlatNetReproducesThePlanarAttractorOfRotatingMaps) {
   // A dragon-like IFS whose maps rotate: a tensor-product patch could not carry them, a
   // triangular net of any degree can.
   Project grid = defaultNewProject();
-  grid.functions = {affine("turn", 0.7071, 45, {-0.3, 0.0, 0.0}, 0.5), affine("back", 0.7071, 135, {0.3, 0.0, 0.0}, 0.5)};
+  grid.functions = {affine("turn", 0.7071, 45, {-0.3, 0.0, 0.0}, 0.5),
+                    affine("back", 0.7071, 135, {0.3, 0.0, 0.0}, 0.5)};
   const auto reference = chaosPoints(grid, 40000);
   for (int degree : {1, 2, 4}) {
     ControlNetOptions options;
