@@ -29,6 +29,10 @@ Project presetProject(const FreeFormArgs& a) {
                    "--preset must be bezier-curve, bezier-patch, bspline-curve, bspline-patch, "
                    "sierpinski or sierpinski-patch, not \"" +
                        a.preset + "\"");
+  if ((preset == FreeFormPreset::BSplineCurve || preset == FreeFormPreset::BSplinePatch) && a.roughness != 0.0)
+    throw CliError(kBadInput,
+                   "--roughness: the B-spline presets stay smooth (blending their rows would break the "
+                   "joint between the halves)");
   FreeFormPresetOptions options;
   options.degree = a.degree.value_or(3);
   options.split = a.split;

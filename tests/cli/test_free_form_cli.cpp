@@ -71,6 +71,7 @@ TEST(FreeFormCli, BadInputExitsTwoAndWritesNothing) {
   expectBad(o + " --preset bezier-curve --degree 0", "--degree");
   expectBad(o + " --preset bezier-curve --split 1.5", "--split");
   expectBad(o + " --preset teapot", "--preset");
+  expectBad(o + " --preset bspline-curve --roughness 0.3", "--roughness");
   expectBad(o + " --from " + quote(kGasket) + " --degree 9", "--degree");
   expectBad(o + " --from " + quote(kGasket) + " --net cone", "--net");
   expectBad(o, "exactly one of");
