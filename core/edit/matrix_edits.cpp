@@ -3,6 +3,7 @@
 #include "base/errors.h"
 #include "edit/edit_refs.h"
 #include "model/final_function.h"
+#include "model/free_form_resize.h"
 
 namespace gridifs {
 
@@ -64,6 +65,12 @@ void ApplyFreeFormPreset::apply(Project& project) const {
 }
 
 std::string ApplyFreeFormPreset::label() const { return std::string("Preset: ") + freeFormPresetName(preset); }
+
+void AddControlPoint::apply(Project& project) const { addControlPoint(project, point); }
+
+void RemoveControlPoint::apply(Project& project) const { removeControlPoint(project, index); }
+
+void MapOntoControlNet::apply(Project& project) const { project = mapOntoControlNet(project, options).project; }
 
 void BackToGridIfs::apply(Project& project) const {
   const Project fresh = defaultNewProject();

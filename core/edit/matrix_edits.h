@@ -6,9 +6,11 @@
 //
 // Thread-safety: plain values; apply() touches only the project given. apply() throws ModelError
 // when a function, cell or control point it names is not in the project.
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "model/free_form_deformation.h"
 #include "model/free_form_presets.h"
 #include "model/project.h"
 
@@ -72,6 +74,29 @@ struct ApplyFreeFormPreset {
   void apply(Project& project) const;
   /// "Preset: " and the preset's name.
   std::string label() const;
+};
+
+/// Adds a control point; every matrix grows with it (model/free_form_resize.h says how: a
+/// Bézier curve is degree-elevated, anything else gets a zero column and a mean row).
+struct AddControlPoint {
+  std::optional<Vec3> point;  // default: the centroid of the others
+  void apply(Project& project) const;
+  std::string label() const { return "Add control point"; }
+};
+
+/// Removes control point `index`; every matrix shrinks with it (model/free_form_resize.h).
+struct RemoveControlPoint {
+  std::size_t index = 0;
+  void apply(Project& project) const;
+  std::string label() const { return "Remove control point"; }
+};
+
+/// F̂: replaces a grid project by the free-form one whose matrices are its functions on a
+/// control net (model/free_form_deformation.h); the final function is kept.
+struct MapOntoControlNet {
+  ControlNetOptions options;
+  void apply(Project& project) const;
+  std::string label() const { return "Map onto a control net"; }
 };
 
 /// Leaves a free-form IFS: no space, no transitions, and the functions of a new project.

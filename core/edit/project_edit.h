@@ -51,7 +51,7 @@ using ProjectEdit = std::variant<
     SetKeys, RemoveKeys,
     // transitions and free-form IFS (edit/matrix_edits.h)
     SetTransitionPreset, RemoveTransitions, SetTransitionWeight, SetMatrixEntry, MoveControlPoint, ApplyFreeFormPreset,
-    BackToGridIfs,
+    BackToGridIfs, AddControlPoint, RemoveControlPoint, MapOntoControlNet,
     // the whole project
     ReplaceProject>;
 

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "base/hash.h"
+#include "model/free_form_basis.h"
 
 namespace gridifs {
 namespace {
@@ -73,13 +74,17 @@ const char* freeFormPresetName(FreeFormPreset preset) {
       return "sierpinski";
     case FreeFormPreset::SierpinskiPatch:
       return "sierpinski-patch";
+    case FreeFormPreset::BSplineCurve:
+      return "bspline-curve";
+    case FreeFormPreset::BSplinePatch:
+      return "bspline-patch";
   }
   return "bezier-curve";
 }
 
 bool parseFreeFormPreset(const std::string& name, FreeFormPreset& out) {
   for (FreeFormPreset p : {FreeFormPreset::BezierCurve, FreeFormPreset::BezierPatch, FreeFormPreset::Sierpinski,
-                           FreeFormPreset::SierpinskiPatch})
+                           FreeFormPreset::SierpinskiPatch, FreeFormPreset::BSplineCurve, FreeFormPreset::BSplinePatch})
     if (name == freeFormPresetName(p)) {
       out = p;
       return true;
@@ -115,71 +120,112 @@ BarycentricMatrix deCasteljauRight(int degree, double r) {
   return t;
 }
 
-std::vector<Vec3> defaultCurveControlPoints() {
-  return {{-0.9, 0.0, -0.6}, {-0.4, 0.3, 0.9}, {0.4, -0.3, -0.9}, {0.9, 0.0, 0.6}};  // +z is up
+std::vector<Vec3> defaultCurveControlPoints(int degree) {
+  if (degree == 3) return {{-0.9, 0.0, -0.6}, {-0.4, 0.3, 0.9}, {0.4, -0.3, -0.9}, {0.9, 0.0, 0.6}};  // +z is up
+  // A zigzag polygon along x, gentler at its ends, turning a little in y.
+  std::vector<Vec3> points;
+  for (int i = 0; i <= degree; ++i) {
+    const double u = double(i) / degree, end = (i == 0 || i == degree) ? 0.6 : 1.0;
+    points.push_back(Vec3{-0.9 + 1.8 * u, 0.3 * std::sin(2.0 * M_PI * u), 0.8 * end * (i % 2 ? 1.0 : -1.0)});
+  }
+  return points;
 }
 
-std::vector<Vec3> defaultPatchControlPoints() {
+std::vector<Vec3> defaultPatchControlPoints(int degree) {
   std::vector<Vec3> points;
-  const double z[4][4] = {{0.0, 0.3, 0.2, -0.1}, {0.2, 0.8, 0.6, 0.1}, {-0.1, 0.5, 0.9, 0.2}, {-0.3, 0.0, 0.2, 0.0}};
-  for (int i = 0; i < 4; ++i)
-    for (int k = 0; k < 4; ++k) points.push_back(Vec3{-0.9 + 0.6 * i, -0.9 + 0.6 * k, z[i][k] - 0.3});
+  if (degree == 3) {
+    const double z[4][4] = {{0.0, 0.3, 0.2, -0.1}, {0.2, 0.8, 0.6, 0.1}, {-0.1, 0.5, 0.9, 0.2}, {-0.3, 0.0, 0.2, 0.0}};
+    for (int i = 0; i < 4; ++i)
+      for (int k = 0; k < 4; ++k) points.push_back(Vec3{-0.9 + 0.6 * i, -0.9 + 0.6 * k, z[i][k] - 0.3});
+    return points;
+  }
+  // A bump, higher towards one corner, over the square [-0.9, 0.9]².
+  for (int i = 0; i <= degree; ++i)
+    for (int k = 0; k <= degree; ++k) {
+      const double u = double(i) / degree, v = double(k) / degree;
+      points.push_back(Vec3{-0.9 + 1.8 * u, -0.9 + 1.8 * v,
+                            1.1 * std::sin(M_PI * u) * std::sin(M_PI * v) * (0.6 + 0.4 * u) - 0.3});
+    }
   return points;
 }
 
 std::vector<Vec3> defaultTriangleControlPoints() { return {{-0.9, -0.75, 0.0}, {0.9, -0.75, 0.0}, {0.0, 0.85, 0.0}}; }
 
-void applyFreeFormPreset(Project& project, FreeFormPreset preset, const FreeFormPresetOptions& options) {
+namespace {
+
+void checkOptions(const FreeFormPresetOptions& options) {
+  if (!(options.degree >= kMinPresetDegree && options.degree <= kMaxPresetDegree))
+    throw ModelError("degree", "expected a degree between " + std::to_string(kMinPresetDegree) + " and " +
+                                   std::to_string(kMaxPresetDegree) + ", found " + std::to_string(options.degree));
   if (!(options.split > 0.0 && options.split < 1.0)) throw ModelError("split", "expected a number between 0 and 1");
   if (!(options.roughness >= 0.0 && options.roughness <= 1.0))
     throw ModelError("roughness", "expected a number between 0 and 1");
+}
+
+/// Thollot et al. 1997, §5.4.2: a patch is the attractor of the tensor products of its curves'
+/// matrices, piece qIK = s-half I ⊗ t-half K; the gasket (§5.5) keeps three of the four quarters.
+void addPatchPieces(Project& project, const BarycentricMatrix* s[2], const BarycentricMatrix* t[2], bool gasket) {
+  int c = 0;
+  for (int i = 0; i < 2; ++i)
+    for (int k = 0; k < 2; ++k) {
+      if (gasket && i == 1 && k == 1) continue;
+      project.functions.push_back(matrixFunction("q" + std::to_string(i) + std::to_string(k),
+                                                 kroneckerProduct(*s[i], *t[k]), kColors[c], c / 3.0));
+      ++c;
+    }
+}
+
+void addSierpinski(Project& project, const FreeFormPresetOptions& options) {
+  project.space->control_points = defaultTriangleControlPoints();
+  for (std::size_t k = 0; k < 3; ++k) {
+    // λ ← (λ + e_k)/2: every row is half itself and half corner k.
+    BarycentricMatrix t(3, std::vector<double>(3, 0.0));
+    for (std::size_t i = 0; i < 3; ++i) {
+      t[i][i] += 0.5;
+      t[i][k] += 0.5;
+    }
+    if (options.roughness != 0.0)
+      for (std::size_t i = 0; i < 3; ++i)
+        if (i != k) perturbRow(t[i], options.roughness, options.seed, 10 * k + i);
+    project.functions.push_back(matrixFunction("corner " + std::to_string(k + 1), t, kColors[k], k / 2.0));
+  }
+}
+
+}  // namespace
+
+void applyFreeFormPreset(Project& project, FreeFormPreset preset, const FreeFormPresetOptions& options) {
+  checkOptions(options);
   project.functions.clear();
   project.transitions.clear();
   project.space = FreeFormSpace{};
-  const double r = options.split;
-  BarycentricMatrix left = deCasteljauLeft(3, r), right = deCasteljauRight(3, r);
+  const int n = options.degree;
+  const bool bspline = preset == FreeFormPreset::BSplineCurve || preset == FreeFormPreset::BSplinePatch;
+  BarycentricMatrix left = bspline ? bsplineSubdivisionLeft(n) : deCasteljauLeft(n, options.split);
+  BarycentricMatrix right = bspline ? bsplineSubdivisionRight(n) : deCasteljauRight(n, options.split);
   switch (preset) {
     case FreeFormPreset::BezierCurve:
-      roughenHalves(left, right, options.roughness, options.seed, 1);
-      project.space->control_points = defaultCurveControlPoints();
+    case FreeFormPreset::BSplineCurve:
+      if (!bspline) roughenHalves(left, right, options.roughness, options.seed, 1);
+      project.space->control_points = defaultCurveControlPoints(n);
       project.functions.push_back(matrixFunction("left", left, kColors[0], 0.0));
       project.functions.push_back(matrixFunction("right", right, kColors[1], 1.0));
       break;
     case FreeFormPreset::BezierPatch:
+    case FreeFormPreset::BSplinePatch:
     case FreeFormPreset::SierpinskiPatch: {
-      // Thollot et al. 1997, §5.4.2: the patch is the attractor of the tensor products of the
-      // curves' matrices; the gasket (§5.5) keeps three of the four quarters.
       BarycentricMatrix left2 = left, right2 = right;
-      roughenHalves(left, right, options.roughness, options.seed, 1);
-      roughenHalves(left2, right2, options.roughness, options.seed, 2);
-      project.space->control_points = defaultPatchControlPoints();
+      if (!bspline) {
+        roughenHalves(left, right, options.roughness, options.seed, 1);
+        roughenHalves(left2, right2, options.roughness, options.seed, 2);
+      }
+      project.space->control_points = defaultPatchControlPoints(n);
       const BarycentricMatrix* s[2] = {&left, &right};
       const BarycentricMatrix* t[2] = {&left2, &right2};
-      const char* names[2] = {"0", "1"};
-      int c = 0;
-      for (int i = 0; i < 2; ++i)
-        for (int k = 0; k < 2; ++k) {
-          if (preset == FreeFormPreset::SierpinskiPatch && i == 1 && k == 1) continue;
-          project.functions.push_back(matrixFunction(std::string("q") + names[i] + names[k],
-                                                     kroneckerProduct(*s[i], *t[k]), kColors[c], c / 3.0));
-          ++c;
-        }
+      addPatchPieces(project, s, t, preset == FreeFormPreset::SierpinskiPatch);
       break;
     }
     case FreeFormPreset::Sierpinski:
-      project.space->control_points = defaultTriangleControlPoints();
-      for (std::size_t k = 0; k < 3; ++k) {
-        // λ ← (λ + e_k)/2: every row is half itself and half corner k.
-        BarycentricMatrix t(3, std::vector<double>(3, 0.0));
-        for (std::size_t i = 0; i < 3; ++i) {
-          t[i][i] += 0.5;
-          t[i][k] += 0.5;
-        }
-        if (options.roughness != 0.0)
-          for (std::size_t i = 0; i < 3; ++i)
-            if (i != k) perturbRow(t[i], options.roughness, options.seed, 10 * k + i);
-        project.functions.push_back(matrixFunction("corner " + std::to_string(k + 1), t, kColors[k], k / 2.0));
-      }
+      addSierpinski(project, options);
       break;
   }
 }

@@ -51,3 +51,44 @@ TEST(MatricesGui, TransitionAndFreeFormPresetsAreUndoableEdits) {
   clickRect(*discard);
   EXPECT_EQ(app.waitExit(), 0);
 }
+
+TEST(MatricesGui, MapsAGridIfsOntoAControlNetAndAddsAPoint) {
+  if (!haveDisplay()) GTEST_SKIP() << "no X display (run under xvfb-run)";
+  TempFolder home;
+  const fs::path project = exampleCopy(home, "sierpinski_tetrahedron.gridifs");
+  App app(home, {project.string()});
+  nlohmann::json probe = app.waitForPreview();
+  pressKeys("m");
+  const std::optional<Rect> map = app.waitForStableRect("matrices.map_onto_net");
+  ASSERT_TRUE(map) << "the Matrices window has no control-net button for a grid project";
+  std::uint64_t restarts = app.probe()["preview"]["restarts"];
+  clickRect(*map);
+  probe = app.waitForPreview(restarts);
+  EXPECT_EQ(probe["undo"], "Map onto a control net");
+  EXPECT_EQ(probe["functions"].get<std::size_t>(), 4u);
+  const std::optional<Rect> add = app.waitForStableRect("matrices.add_point");
+  ASSERT_TRUE(add);
+  clickRect(*add);
+  probe = app.waitFor([](const nlohmann::json& j) { return j["undo"] == "Add control point"; });
+  EXPECT_EQ(probe["undo"], "Add control point");
+  run("import -window root '" + (home.path / "control_net.png").string() + "'");
+  if (const char* keep = std::getenv("GRIDIFS_GUI_SHOTS"))  // for a person to look at
+    fs::copy_file(home.path / "control_net.png", fs::path(keep) / "control_net.png",
+                  fs::copy_options::overwrite_existing);
+  pressKeys("ctrl+s");
+  app.waitFor([](const nlohmann::json& j) { return !j["dirty"].get<bool>(); });
+  const gridifs::Project saved = gridifs::loadProject(project);
+  ASSERT_TRUE(saved.space);
+  EXPECT_EQ(saved.space->control_points.size(), 11u);  // a quadratic tetrahedron's 10, and one
+  EXPECT_EQ(saved.functions[0].matrix.size(), 11u);
+  // One undo step each: back to the net, then to the grid IFS.
+  pressKeys("ctrl+z");
+  app.waitFor([](const nlohmann::json& j) { return j["undo"] == "Map onto a control net"; });
+  pressKeys("ctrl+z");
+  probe = app.waitFor([](const nlohmann::json& j) { return j["undo"] != "Map onto a control net"; });
+  pressKeys("ctrl+q");
+  const std::optional<Rect> discard = app.waitForStableRect("unsaved.discard");
+  ASSERT_TRUE(discard);
+  clickRect(*discard);
+  EXPECT_EQ(app.waitExit(), 0);
+}

@@ -5,11 +5,14 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 
 #include "model/final_function.h"
 #include "model/free_form.h"
+#include "model/free_form_deformation.h"
+#include "model/free_form_joints.h"
 #include "model/free_form_presets.h"
 #include "model/transition_matrix.h"
 #include "ui/panels/panels.h"
@@ -92,38 +95,63 @@ void drawTransitions(ModellerState& state, EditQueue& edits) {
   }
 }
 
+/// "Cubic Bezier curve", "Biquadratic uniform B-spline patch": the undo step's name.
+std::string presetLabel(const char* label, FreeFormPreset preset, int degree) {
+  static const char* const names[] = {"Linear", "Quadratic", "Cubic", "Quartic", "Quintic", "Sextic", "Septic"};
+  if (preset == FreeFormPreset::Sierpinski) return label;
+  std::string name = names[std::clamp(degree, 1, 7) - 1];
+  const bool patch = preset != FreeFormPreset::BezierCurve && preset != FreeFormPreset::BSplineCurve;
+  if (patch) name = "Bi" + std::string(1, char(std::tolower(name[0]))) + name.substr(1);
+  if (preset == FreeFormPreset::SierpinskiPatch) return std::string(label) + " (" + name + ")";
+  std::string rest = label;
+  rest[0] = char(std::tolower(rest[0]));  // "Cubic uniform B-spline curve"
+  if (rest.rfind("bezier", 0) == 0) rest[0] = 'B';
+  return name + " " + rest;
+}
+
 void drawPresets(ModellerState& state, EditQueue& edits, MatricesWindowState& choice) {
   sectionTitle("Free-form presets (control points and matrices)");
-  int& which = choice.preset;
-  float& split = choice.split;
-  float& roughness = choice.roughness;
-  int& seed = choice.seed;
-  const FreeFormPreset presets[] = {FreeFormPreset::BezierCurve, FreeFormPreset::BezierPatch,
-                                    FreeFormPreset::Sierpinski, FreeFormPreset::SierpinskiPatch};
-  const char* labels[] = {"Cubic Bezier curve", "Bicubic Bezier patch", "Sierpinski gasket (3 points)",
-                          "Sierpinski gasket on a patch"};
-  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 14);
-  ImGui::Combo("Preset", &which, labels, 4);
-  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 14);
-  ImGui::SliderFloat("Split r", &split, 0.05f, 0.95f, "%.2f");
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("Where de Casteljau subdivision cuts the curve in two");
-  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 14);
-  ImGui::SliderFloat("Roughness", &roughness, 0.0f, 0.5f, "%.2f");
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("Perturbs the subdivision matrices (rows still sum to 1): smooth shapes become fractal");
-  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 14);
-  ImGui::InputInt("Seed", &seed);
+  const FreeFormPreset presets[] = {FreeFormPreset::BezierCurve,  FreeFormPreset::BezierPatch,
+                                    FreeFormPreset::BSplineCurve, FreeFormPreset::BSplinePatch,
+                                    FreeFormPreset::Sierpinski,   FreeFormPreset::SierpinskiPatch};
+  const char* labels[] = {"Bezier curve",           "Bezier patch",
+                          "Uniform B-spline curve", "Uniform B-spline patch",
+                          "Sierpinski gasket (3 points)", "Sierpinski gasket on a patch"};
+  const float width = ImGui::GetFontSize() * 14;
+  ImGui::SetNextItemWidth(width);
+  ImGui::Combo("Preset", &choice.preset, labels, 6);
+  state.probe.item("matrices.preset");
+  const FreeFormPreset preset = presets[std::clamp(choice.preset, 0, 5)];
+  if (preset != FreeFormPreset::Sierpinski) {
+    ImGui::SetNextItemWidth(width);
+    ImGui::SliderInt("Degree", &choice.degree, kMinPresetDegree, kMaxPresetDegree);
+    state.probe.item("matrices.degree");
+  }
+  const bool bspline = preset == FreeFormPreset::BSplineCurve || preset == FreeFormPreset::BSplinePatch;
+  if (!bspline) {
+    ImGui::SetNextItemWidth(width);
+    ImGui::SliderFloat("Split r", &choice.split, 0.05f, 0.95f, "%.2f");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Where de Casteljau subdivision cuts the curve in two");
+    ImGui::SetNextItemWidth(width);
+    ImGui::SliderFloat("Roughness", &choice.roughness, 0.0f, 0.5f, "%.2f");
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("Perturbs the subdivision matrices (rows still sum to 1): smooth shapes become fractal");
+    ImGui::SetNextItemWidth(width);
+    ImGui::InputInt("Seed", &choice.seed);
+  }
   const bool replace = ImGui::Button("Replace the functions with this preset");
   state.probe.item("matrices.apply_preset");
   if (replace) {
     FreeFormPresetOptions options;
-    options.split = split;
-    options.roughness = roughness;
-    options.seed = std::uint64_t(std::max(seed, 0));
-    const FreeFormPreset preset = presets[which];
-    edits.commit(std::string("Preset: ") + labels[which], ApplyFreeFormPreset{preset, options});
+    options.degree = std::clamp(choice.degree, kMinPresetDegree, kMaxPresetDegree);
+    options.split = choice.split;
+    options.roughness = bspline ? 0.0 : choice.roughness;
+    options.seed = std::uint64_t(std::max(choice.seed, 0));
+    edits.commit("Preset: " + presetLabel(labels[choice.preset], preset, options.degree),
+                 ApplyFreeFormPreset{preset, options});
     state.activeFunction = FunctionRef(0);
     state.activeOp = -1;
+    choice.jointBaseline.reset();
   }
   if (state.document.project().space && ImGui::Button("Back to a grid IFS")) {
     edits.commit(BackToGridIfs{});
@@ -132,10 +160,58 @@ void drawPresets(ModellerState& state, EditQueue& edits, MatricesWindowState& ch
   }
 }
 
+/// F̂ (Thollot et al. 1997, §5.5): this grid IFS's functions as matrices on a control net.
+void drawControlNet(ModellerState& state, EditQueue& edits, MatricesWindowState& choice) {
+  sectionTitle("Map this IFS onto a control net");
+  const float width = ImGui::GetFontSize() * 14;
+  const char* shapes[] = {"Flat (move the points to deform)", "Elliptic paraboloid", "Hyperbolic paraboloid"};
+  ImGui::SetNextItemWidth(width);
+  ImGui::Combo("Net", &choice.netShape, shapes, 3);
+  ImGui::SetNextItemWidth(width);
+  ImGui::SliderInt("Net degree", &choice.netDegree, 1, kMaxPlanarNetDegree);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("Total degree of the net: a triangle's (n+1)(n+2)/2 points, a tetrahedron's up to degree 5");
+  if (choice.netShape != 0) {
+    ImGui::SetNextItemWidth(width);
+    ImGui::SliderFloat("Height", &choice.netHeight, -2.0f, 2.0f, "%.2f");
+  }
+  const bool map = ImGui::Button("Map onto the net");
+  state.probe.item("matrices.map_onto_net");
+  if (map) {
+    MapOntoControlNet edit;
+    edit.options.degree = choice.netDegree;
+    edit.options.shape = ControlNetShape(std::clamp(choice.netShape, 0, 2));
+    edit.options.height = choice.netHeight;
+    try {
+      // Tried first so that a project the net cannot take says why here, next to the button.
+      const ControlNetResult result = mapOntoControlNet(state.document.project(), edit.options);
+      choice.netMessage = result.notes.empty() ? std::string() : result.notes.front();
+      edits.commit(edit);
+      state.activeFunction = FunctionRef(0);
+      state.activeOp = -1;
+      choice.jointBaseline.reset();
+    } catch (const ModelError& e) {
+      choice.netMessage = e.what();
+    }
+  }
+  if (!choice.netMessage.empty()) {
+    ImGui::PushTextWrapPos(0.0f);
+    ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "%s", choice.netMessage.c_str());
+    ImGui::PopTextWrapPos();
+  }
+}
+
 void drawControlPoints(ModellerState& state, EditQueue& edits) {
   const Project& project = state.document.project();
   const auto& points = project.space->control_points;
   sectionTitle("Control points");
+  ImGui::BeginDisabled(points.size() >= std::size_t(limits::kMaxControlPoints));
+  if (ImGui::SmallButton("Add control point")) edits.commit(AddControlPoint{});
+  ImGui::EndDisabled();
+  state.probe.item("matrices.add_point");
+  if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+    ImGui::SetTooltip("A Bezier curve is degree-elevated (same curve); otherwise the new point has a zero column "
+                      "and the mean row, so nothing moves until you edit its column");
   if (ImGui::BeginChild("points",
                         ImVec2(0, std::min(float(points.size()) + 0.5f, 6.5f) * ImGui::GetFrameHeightWithSpacing()))) {
     for (std::size_t j = 0; j < points.size(); ++j) {
@@ -146,13 +222,52 @@ void drawControlPoints(ModellerState& state, EditQueue& edits) {
       const bool changed = ImGui::DragFloat3(label, v, 0.005f, -1e3f, 1e3f, "%.3f");
       gestureItem(edits, "Move control point", changed, MoveControlPoint{j, Vec3{v[0], v[1], v[2]}});
       state.probe.item("matrices.point." + std::to_string(j));
+      ImGui::SameLine();
+      ImGui::BeginDisabled(points.size() <= std::size_t(limits::kMinControlPoints));
+      if (ImGui::SmallButton("x")) edits.commit(RemoveControlPoint{j});
+      ImGui::EndDisabled();
+      state.probe.item("matrices.remove_point." + std::to_string(j));
+      if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+        ImGui::SetTooltip("Remove this point; every matrix loses its row and column");
       ImGui::PopID();
     }
   }
   ImGui::EndChild();
 }
 
-void drawFunctionMatrix(ModellerState& state, EditQueue& edits) {
+/// The joints a hand edit broke (Thollot et al. 1997, §5.3.2), against the project as it was
+/// before the first edit that broke one: a gasket, whose pieces never joined, never warns.
+bool sameShape(const Project& a, const Project& b) {
+  return a.functions.size() == b.functions.size() && a.space && b.space &&
+         a.space->control_points.size() == b.space->control_points.size();
+}
+
+void drawJointWarnings(ModellerState& state, MatricesWindowState& window) {
+  const Project& project = state.document.project();
+  if (window.jointBaseline && !sameShape(*window.jointBaseline, project)) window.jointBaseline.reset();
+  if (!window.jointBaseline) return;
+  if (window.jointRevision != state.document.revision()) {
+    window.jointRevision = state.document.revision();
+    window.jointWarnings.clear();
+    for (const FreeFormJoint& j : brokenJoints(*window.jointBaseline, project))
+      window.jointWarnings.push_back(describeJoint(project, j));
+  }
+  ImGui::PushTextWrapPos(0.0f);
+  for (const std::string& w : window.jointWarnings) ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "%s", w.c_str());
+  ImGui::PopTextWrapPos();
+  state.probe.item("matrices.joint_warnings");
+}
+
+/// A matrix cell is about to be edited: the joints are judged against the project as it is now,
+/// unless an earlier edit already broke one (then against the project before that edit).
+void startMatrixEdit(const Project& project, MatricesWindowState& window) {
+  if (!window.jointBaseline || !sameShape(*window.jointBaseline, project) ||
+      brokenJoints(*window.jointBaseline, project).empty())
+    window.jointBaseline = project;
+  window.jointRevision = 0;
+}
+
+void drawFunctionMatrix(ModellerState& state, EditQueue& edits, MatricesWindowState& window) {
   const Project& project = state.document.project();
   if (state.activeFunction.isFinal()) return;  // the final function is a lattice, never a matrix
   const std::size_t fi = std::size_t(std::clamp(state.activeFunction.index(), 0, int(project.functions.size()) - 1));
@@ -173,6 +288,7 @@ void drawFunctionMatrix(ModellerState& state, EditQueue& edits) {
         matrixCell(edits, "##m", f.matrix[i][j], -1e6, false, "matrix entry", [fi = int(fi), i, j](double v) {
           return SetMatrixEntry{fi, i, j, v};
         });
+        if (ImGui::IsItemActivated()) startMatrixEdit(project, window);
         state.probe.item("matrices.entry." + std::to_string(i) + "." + std::to_string(j));
         ImGui::PopID();
       }
@@ -189,6 +305,7 @@ void drawFunctionMatrix(ModellerState& state, EditQueue& edits) {
     ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.3f, 1.0f), "Not a contraction of the simplex (%.3g).", c);
   else
     ImGui::TextDisabled("Contracts the simplex by %.3g.", c);
+  drawJointWarnings(state, window);
 }
 
 }  // namespace
@@ -210,11 +327,15 @@ void drawMatricesWindow(ModellerState& state, EditQueue& edits, MatricesWindowSt
   if (ImGui::IsWindowAppearing()) ImGui::SetWindowFocus();
   drawPresets(state, edits, window);
   ImGui::Spacing();
+  if (!state.document.project().space) {
+    drawControlNet(state, edits, window);
+    ImGui::Spacing();
+  }
   drawTransitions(state, edits);
   ImGui::Spacing();
   if (state.document.project().space) {
     drawControlPoints(state, edits);
-    drawFunctionMatrix(state, edits);
+    drawFunctionMatrix(state, edits, window);
   }
   ImGui::End();
 }

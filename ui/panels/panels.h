@@ -2,6 +2,7 @@
 // The modeller's panels, one per file: each draws from the Document (through the
 // ModellerState) and emits edits; none holds geometry logic.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -61,12 +62,19 @@ void drawSelectionPanel(ModellerState& state, EditQueue& edits, SelectionPanelSt
 /// field, one undo step per slider drag.
 void drawShadingPanel(ModellerState& state, EditQueue& edits);
 
-/// What the Matrices window keeps between frames: the free-form preset it would apply next (not
-/// saved).
+/// What the Matrices window keeps between frames: the free-form preset it would apply next, the
+/// control net a grid project would be mapped onto, and the joints a hand edit of a matrix broke
+/// (the project as it was before the first such edit; not saved).
 struct MatricesWindowState {
-  int preset = 0;
+  int preset = 0, degree = 3;
   float split = 0.5f, roughness = 0.0f;
   int seed = 1;
+  int netDegree = 2, netShape = 0;
+  float netHeight = 0.5f;
+  std::optional<Project> jointBaseline;
+  std::vector<std::string> jointWarnings;
+  std::uint64_t jointRevision = 0;  // of the document when jointWarnings were found
+  std::string netMessage;           // why the last mapping onto a control net failed
 };
 /// matrices_window.cpp: the transition matrix, and a free-form IFS's control points and
 /// matrices, with presets (Function › Matrices…).
