@@ -491,6 +491,17 @@ class ParameterResolver {
           return number(Where::SetThreshold, Reader::SetNumber, Storage::Double);
         }
         return Lookup::Missing;
+      case SetShape::Image:
+        if (key == "image" || key == "thickness" || key == "invert") return text();
+        if (key == "placement") {
+          position(1);
+          return placement(Where::SetPlacement, Reader::SetNumber, 0.0, 0.0);
+        }
+        if (key == "threshold") {
+          position(1);
+          return number(Where::SetThreshold, Reader::SetNumber, Storage::Double);
+        }
+        return Lookup::Missing;
     }
     if (set.shape == SetShape::Sphere && key == "radius") {
       position(1);
