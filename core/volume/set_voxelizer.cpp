@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <mutex>
 
 #include <glm/mat3x3.hpp>
@@ -142,10 +143,12 @@ VoxelSet voxelizeSet(const CondensationSet& set, const VoxelLattice& lattice,
       break;
     case SetShape::Image:
       out.voxels = imageVoxels(set, lattice, file, jsonPath);
-      if (out.voxels.empty())
+      if (out.voxels.empty()) {
+        char threshold[32];
+        std::snprintf(threshold, sizeof threshold, "%g", set.threshold);
         fail(jsonPath + ".threshold", "the drawing " + file.string() + " has no pixel darker than the threshold " +
-                                          std::to_string(set.threshold) + (set.invert ? " (inverted)" : "") +
-                                          " inside X at resolution " + std::to_string(lattice.n));
+                                          threshold + (set.invert ? " once inverted" : "") + " inside X at resolution " + std::to_string(lattice.n));
+      }
       break;
   }
   normalizeVoxels(out.voxels);
