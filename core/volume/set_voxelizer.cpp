@@ -97,7 +97,10 @@ std::vector<std::uint32_t> imageVoxels(const CondensationSet& set, const VoxelLa
   }
   const glm::dmat3 back = glm::inverse(forward);
   const double scale = 2.0 / std::max(image.width, image.height);  // X units per pixel
-  const double halfW = 0.5 * image.width * scale, halfH = 0.5 * image.height * scale, halfT = 0.5 * set.thickness;
+  // At least half a voxel either side of z = 0, so that a drawing thinner than the lattice (the
+  // editor's 32³ outline of a 0.05 slab) still has its two middle layers instead of none.
+  const double halfW = 0.5 * image.width * scale, halfH = 0.5 * image.height * scale,
+               halfT = std::max(0.5 * set.thickness, 0.5 * lattice.voxelSize());
   Index3 lo{lattice.n - 1, lattice.n - 1, lattice.n - 1}, hi{0, 0, 0};
   for (int corner = 0; corner < 8; ++corner) {
     const Vec3 q{(corner & 1) ? halfW : -halfW, (corner & 2) ? halfH : -halfH, (corner & 4) ? halfT : -halfT};

@@ -215,6 +215,10 @@ TEST(SetIterates, DrawingIsASlabOfItsDarkPixels) {
   const VoxelSet light = voxelizeSet(set, lattice, dir.path, "set");
   EXPECT_EQ(light.size(), dark.size());
   for (std::uint32_t v : light.voxels) EXPECT_GT(lattice.centre(v).x, 0.0);
+  // Thinner than a voxel: still the two middle layers (z = ±1/32), not nothing.
+  set.thickness = 0.001;
+  EXPECT_EQ(voxelizeSet(set, lattice, dir.path, "set").size(), 16u * 16u * 2u);
+  set.thickness = 0.25;
   // Placed like a mesh: moved up by 0.25.
   set.invert = false;
   set.placement.translate = Vec3{0.0, 0.25, 0.0};
