@@ -34,17 +34,19 @@ def sketches():
                        ["PNG8:" + os.path.join(HERE, name)], check=True)
 
 
+# The projects are written in GridIFS's saved form (its key order, every number with a decimal
+# point, every field), so that loading and saving one changes nothing.
 def drawing(path, thickness=0.04):
     return {"image": path, "threshold": 0.5, "thickness": thickness, "invert": False,
-            "placement": {"translate": [0, 0, 0], "rotate": [0, 0, 0], "scale": [1, 1, 1]}}
+            "placement": {"translate": [0.0, 0.0, 0.0], "rotate": [0.0, 0.0, 0.0], "scale": [1.0, 1.0, 1.0]}}
 
 
 def median(name, image, weight=1.0, rotate=0.0, palette_index=0.0):
     return {"name": name, "kind": "median", "weight": weight, "rotate": rotate, "set": drawing(image),
-            "color": [0, 0, 0], "palette_index": palette_index}
+            "color": [0.0, 0.0, 0.0], "palette_index": palette_index, "color_speed": 0.5, "muted": False}
 
 
-def project(name, functions, start=None, mode="zbuffer", background=(1, 1, 1), iterations=300):
+def project(name, functions, start=None, mode="zbuffer", background=(1.0, 1.0, 1.0), iterations=300):
     volume = {"resolution": 128, "iterations": iterations, "skip": 20, "seed": 1, "samples": 20000000}
     if start:
         volume["start"] = start
@@ -54,10 +56,12 @@ def project(name, functions, start=None, mode="zbuffer", background=(1, 1, 1), i
                     "ortho": True},
          "render": {"width": 512, "height": 512, "samples": 3000000, "seed": 1, "skip": 20,
                     "background": list(background), "depth_cue": 0.0, "mode": mode,
-                    "flame": {"palette": "gray", "brightness": 4.0, "gamma": 2.2}},
+                    "flame": {"palette": "gray", "brightness": 4.0, "gamma": 2.2, "gamma_threshold": 0.01,
+                              "vibrancy": 1.0, "highlight_power": 1.0, "supersample": 1, "estimator_radius": 9.0,
+                              "estimator_minimum": 0.0, "estimator_curve": 0.4, "filter_radius": 0.5}},
          "functions": functions, "volume": volume}
     with open(os.path.join(HERE, name), "w") as out:
-        json.dump(p, out, indent=2)
+        out.write(json.dumps(p, indent=2) + "\n")
 
 
 def projects():
@@ -66,10 +70,10 @@ def projects():
     project("book_of_drawings.gridifs", comma_and_l, start=drawing("bananas.png"))
     project("rotated_median.gridifs",
             [median("A", "comma.png"), median("B", "letter_l.png", rotate=120.0, palette_index=1.0)],
-            mode="flame", background=(0, 0, 0), iterations=2000)
+            mode="flame", background=(0.0, 0.0, 0.0), iterations=2000)
     project("sketch_creature.gridifs",
             [median("A", "creature.png", weight=2.0), median("B", "creature_balls.png", palette_index=1.0)],
-            mode="flame", background=(0, 0, 0), iterations=2000)
+            mode="flame", background=(0.0, 0.0, 0.0), iterations=2000)
 
 
 if __name__ == "__main__":

@@ -1,5 +1,6 @@
 // The book of drawings (Sokolov & Gentil, §3.3, figure 8): every page f_σ1 ∘ … ∘ f_σ6 (S) of two
-// median functions onto drawings at 128³, starting from a third drawing: 2 + 4 + … + 64 = 126 set
+// median functions at 128³, onto drawings starting from a third drawing, and onto solid meshes
+// starting from X: 2 + 4 + … + 64 = 126 set
 // images, computed as `gridifs volume --depth 6 --pages` does (without writing the 64 files), and
 // with each page's density volume made as the VDB writer needs it. Also the set iterate A_6.
 #include <benchmark/benchmark.h>
@@ -14,8 +15,8 @@ namespace {
 
 const std::filesystem::path kFolder = std::string(GRIDIFS_ASSETS) + "/volumes";
 
-void BM_BookOfDrawings(benchmark::State& state) {
-  const Project project = loadProject(kFolder / "book_of_drawings.gridifs");
+void book(benchmark::State& state, const char* file) {
+  const Project project = loadProject(kFolder / file);
   const VoxelLattice lattice{int(state.range(0))};
   for (auto _ : state) {
     const auto start = std::chrono::steady_clock::now();
@@ -34,7 +35,13 @@ void BM_BookOfDrawings(benchmark::State& state) {
     state.counters["mean_page_voxels"] = voxels / double(pages);
   }
 }
+/// The 2D book of figure 8: drawings as slabs, from the bananas.
+void BM_BookOfDrawings(benchmark::State& state) { book(state, "book_of_drawings.gridifs"); }
 BENCHMARK(BM_BookOfDrawings)->Arg(128)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
+
+/// The same in 3D: solid comma and L meshes, from the whole of X (2 M voxels).
+void BM_BookOfSolids(benchmark::State& state) { book(state, "comma_to_letter.gridifs"); }
+BENCHMARK(BM_BookOfSolids)->Arg(128)->Iterations(1)->Unit(benchmark::kSecond)->UseRealTime();
 
 void BM_SetIterate(benchmark::State& state) {
   const Project project = loadProject(kFolder / "book_of_drawings.gridifs");

@@ -29,7 +29,7 @@ std::string drawingProject(const std::string& extraFunction = "", const std::str
       {"name": "A", "kind": "median", "color": [0, 0, 0], "set": {"image": "comma.png", "thickness": 0.2}},
       {"name": "B", "kind": "median", "color": [0, 0, 0], "set": {"image": "letter_l.png", "thickness": 0.2}})") +
          extraFunction + R"(],
-    "volume": {"resolution": 32, "iterations": 40, "skip": 5)" +
+    "volume": {"resolution": 32, "iterations": 60, "skip": 20)" +
          (start.empty() ? "" : R"(, "start": )" + start) + "}}";
 }
 

@@ -76,11 +76,9 @@ TEST(SetIterates, DeterministicAlgorithmEqualsTheUnionOfImagesStepByStep) {
   EXPECT_EQ(iterateSets(system, start, 1, 1), a1);
   EXPECT_EQ(iterateSets(system, start, 2, 2), a2);
   EXPECT_NE(a1, a2);
-  // Both condensation sets are fixed points of their maps, so they stay in every iterate.
-  const VoxelSet a6 = iterateSets(system, start, 6, 2);
-  for (const SetFunction& f : system.functions)
-    EXPECT_TRUE(std::includes(a6.voxels.begin(), a6.voxels.end(), f.condensation().voxels.begin(),
-                              f.condensation().voxels.end()));
+  // A median of a union is not the union of medians, so the condensation sets need not stay in
+  // every iterate (only M(C, C) = C is sure); the iterates stay non-empty.
+  EXPECT_FALSE(iterateSets(system, start, 6, 2).empty());
 }
 
 TEST(SetIterates, ConstantMapsMakeTheCondensationSetFromTheFirstStep) {
@@ -150,7 +148,7 @@ TEST(SetIterates, DensityVolumeAndItsPoints) {
     EXPECT_TRUE(std::binary_search(set.voxels.begin(), set.voxels.end(), lattice.index(i, j, k)));
   }
   EXPECT_TRUE(sampleDensityVolume(setDensityVolume(VoxelSet{lattice, {}}), 10, 1).empty());
-  Project project;
+  Project project = defaultNewProject();
   project.functions.front().color = Vec3{0.0, 0.5, 1.0};
   const auto ifs = compileVolumePoints(project, volume, 1000);
   ASSERT_EQ(ifs->functions.size(), 1u);
