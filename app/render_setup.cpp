@@ -11,6 +11,8 @@
 #include "model/contractivity.h"
 #include "model/free_form.h"
 #include "job/prepared_render.h"
+#include "volume/measure_attractor.h"
+#include "volume/volume_points.h"
 
 namespace gridifs::cli {
 
@@ -86,6 +88,21 @@ RenderSetup prepareRenderOf(const Project& loaded, const std::filesystem::path& 
     validateRenderJob(job);
   } catch (const ModelError& e) {
     throw CliError(kBadInput, file.string() + ": " + e.message());
+  }
+  if (overrides.volume || usesSetIteration(setup.project)) {
+    // Median functions map sets, not points: the renderer draws the points of their density
+    // volume (what `gridifs volume` writes), computed here from the project's "volume" settings.
+    VolumeJob volumeJob;
+    volumeJob.settings = setup.project.volume.value_or(VolumeSettings{});
+    volumeJob.threads = options.threads;
+    volumeJob.projectFolder = options.folder.empty() ? std::filesystem::path(".") : options.folder;
+    try {
+      setup.ifs = compileVolumePoints(setup.project, overrides.volume ? *overrides.volume
+                                                                      : computeDensityVolume(setup.project, volumeJob));
+    } catch (const ModelError& e) {
+      throw CliError(kBadInput, file.string() + ": " + e.what());
+    }
+    return setup;
   }
   Document document(setup.project);
   try {

@@ -9,6 +9,7 @@
 
 #include "base/text_format.h"
 #include "render/chaos_renderer.h"
+#include "volume/density_volume.h"
 
 namespace gridifs::cli {
 
@@ -20,6 +21,9 @@ struct RenderOverrides {
   std::optional<std::uint64_t> seed;
   std::optional<std::string> device;  // --device auto|gpu|cpu (app/render_device_option.h)
   std::optional<double> time;         // --time: the project at this time (default: its stored time)
+  /// For a project with median functions: draw the points of this volume (a page of the book of
+  /// drawings) instead of computing the project's density volume.
+  std::shared_ptr<const DensityVolume> volume;
 };
 
 struct RenderSetup {
@@ -41,6 +45,11 @@ RenderSetup prepareRender(const std::filesystem::path& file, const RenderOverrid
 /// the contractivity warnings (once per sequence, not once per frame).
 RenderSetup prepareRenderOf(const Project& loaded, const std::filesystem::path& file,
                             const RenderOverrides& overrides, std::int64_t maxSamples, bool warn = true);
+
+/// One image of `loaded` as `gridifs render` makes it in the project's display mode, written to
+/// `out` (.png, .exr, .tif). Throws CliError as render does.
+int renderImageOf(const Project& loaded, const std::string& file, const std::string& out,
+                  const RenderOverrides& overrides, bool quiet);
 
 /// Refuses an output path whose extension is not in `allowed` or whose folder does not exist or is
 /// not writable (CliError(2), one sentence naming the path).

@@ -7,10 +7,12 @@
 
 #include "app/cli.h"
 #include "app/progress_bar.h"
+#include "app/set_iterate_output.h"
 #include "io/project_io.h"
 #include "mesh/deterministic_ifs.h"
 #include "mesh/mesh_io.h"
 #include "volume/condensation_mesh.h"
+#include "volume/measure_attractor.h"
 
 namespace gridifs::cli {
 namespace {
@@ -49,6 +51,21 @@ int runExportMesh(const ExportMeshArgs& a) {
     throw CliError(kBadInput, e.what());
   }
   const MeshFormat format = *meshFormatFromPath(output);
+  if (usesSetIteration(loadForVerbAt(a.file, a.time))) {
+    // Median functions map voxel sets (Sokolov & Gentil, §3.2): the deterministic algorithm runs
+    // over sets from volume.start, and the mesh is the iso-surface of A_D.
+    if (a.base != "cube" || a.subdivide || a.smooth || a.fit)
+      throw CliError(kBadInput, a.file + ": with median functions A_D starts from the project's volume.start set, so "
+                                         "--base, --subdivide, --smooth and --fit do not apply");
+    SetIterateRequest r;
+    r.file = a.file;
+    r.out = a.output;
+    r.depth = a.depth;
+    r.threads = a.threads > 0 ? std::optional<int>(a.threads) : std::nullopt;
+    r.time = a.time;
+    r.ascii = a.ascii;
+    return runSetIterates(r);
+  }
   Document document(loadForVerbAt(a.file, a.time));
   DeterministicIfs ifs;
   try {

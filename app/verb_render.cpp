@@ -515,6 +515,11 @@ int finishMergedFrame(const Project& project, const std::string& file, const std
   return renderFrame(project, file, out, overrides, true, flame, blur, shutter, {}, false, source);
 }
 
+int renderImageOf(const Project& loaded, const std::string& file, const std::string& out,
+                  const RenderOverrides& overrides, bool quiet) {
+  return renderFrame(loaded, file, out, overrides, quiet, FlameOptions{}, 1, 0.0, {}, false);
+}
+
 namespace {
 
 const VerbRegistration kRender{

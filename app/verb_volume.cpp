@@ -8,6 +8,7 @@
 #include "app/render_device_option.h"
 #include "app/render_setup.h"
 #include "app/render_parts.h"
+#include "app/set_iterate_output.h"
 #include "io/project_io.h"
 #include "model/validation.h"
 #include "volume/measure_attractor.h"
@@ -23,6 +24,8 @@ struct VolumeArgs {
   std::optional<std::uint64_t> seed;
   std::optional<double> time;
   std::optional<std::string> part;
+  std::optional<int> depth;
+  bool pages = false;
   bool quiet = false;
 };
 
@@ -66,6 +69,23 @@ int runVolumePart(const VolumeArgs& a, const Project& project, VolumeJob& job, c
 }
 
 int runVolume(const VolumeArgs& a) {
+  if (a.depth || a.pages) {
+    // Sokolov & Gentil, §3.3: the deterministic algorithm over sets instead of the measure attractor.
+    if (!a.depth) throw CliError(kBadInput, "--pages needs --depth D: the book of drawings has N^D pages");
+    if (a.part || a.iterations || a.samples || a.seed || a.device)
+      throw CliError(kBadInput, "--depth computes the set iterate itself; --part, --iterations, --samples, --seed and "
+                                "--device are for the measure attractor");
+    SetIterateRequest r;
+    r.file = a.file;
+    r.out = a.out;
+    r.depth = *a.depth;
+    r.pages = a.pages;
+    r.resolution = a.resolution;
+    r.threads = a.threads;
+    r.time = a.time;
+    r.quiet = a.quiet;
+    return runSetIterates(r);
+  }
   std::optional<RenderPart> part;
   if (a.part) {
     part = parsePart(*a.part);
@@ -131,7 +151,8 @@ int runVolume(const VolumeArgs& a) {
 const VerbRegistration kVolume{
     {"volume",
      "FILE -o OUT.vdb [--resolution N --iterations K --samples S --seed S --threads T --time T --device D]: the "
-     "measure attractor as an OpenVDB density volume",
+     "measure attractor as an OpenVDB density volume; with --depth D [--pages]: the set iterate A_D or every page "
+     "of the book of drawings, as .vdb, .png/.exr or .obj/.ply/.stl/.off",
      [](CLI::App& app) {
        auto a = std::make_shared<VolumeArgs>();
        app.add_option("FILE", a->file, "project file (.gridifs)")->required();
@@ -151,6 +172,13 @@ const VerbRegistration kVolume{
        app.add_option("--part", a->part,
                       "bin part K of N (K/N) of the chaos-game points into -o OUT.gpart; gridifs merge makes "
                       "the .vdb");
+       app.add_option("--depth", a->depth,
+                      "the deterministic algorithm over sets: A_D = C ∪ ⋃ f_i(A_(D-1)) from volume.start "
+                      "(default: all of X), 0 to 64; -o OUT.vdb (density 1 inside), OUT.png/.exr (drawn as "
+                      "render draws), OUT.obj/.ply/.stl/.off (iso-surface)");
+       app.add_flag("--pages", a->pages,
+                    "with --depth: every page f_s1(...f_sD(start)) of the book of drawings, -o a pattern such as "
+                    "page_%03d.png numbered by the address s1...sD in base N (at most 4096 pages)");
        app.add_flag("-q,--quiet", a->quiet, "no progress bar");
        return [a] { return runVolume(*a); };
      }}};

@@ -4,7 +4,7 @@
 // core/render/image_file.cpp, and a stale plugin from an older build is refused by its version.
 #include <stddef.h>
 
-#define GRIDIFS_IMAGE_IO_ABI_VERSION 1
+#define GRIDIFS_IMAGE_IO_ABI_VERSION 2
 
 #ifdef __cplusplus
 extern "C" {
@@ -28,6 +28,15 @@ int gridifs_image_io_abi_version(void);
 
 /// Writes the image. Returns 1 on success; 0 with a message (no trailing newline) in `error`.
 int gridifs_image_io_write(const struct GridifsImageRequest* request, char* error, size_t errorSize);
+
+/// Receives a read image's grey levels: width × height values in [0, 1], rows top first.
+typedef void (*GridifsGreyReceiver)(void* context, int width, int height, const float* grey);
+
+/// Reads the image at `path` (any format OpenImageIO reads) as grey levels: the luminance
+/// (Rec. 709 weights) of its colour channels, composited over white by its alpha channel when it
+/// has one. Returns 1 on success; 0 with a message in `error`.
+int gridifs_image_io_read_grey(const char* path, GridifsGreyReceiver receive, void* context, char* error,
+                               size_t errorSize);
 
 #ifdef __cplusplus
 }

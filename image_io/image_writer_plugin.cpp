@@ -3,6 +3,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -89,5 +90,34 @@ extern "C" __attribute__((visibility("default"))) int gridifs_image_io_write(con
     return failWith(e.what(), error, errorSize);
   } catch (...) {
     return failWith("", error, errorSize);
+  }
+}
+
+extern "C" __attribute__((visibility("default"))) int gridifs_image_io_read_grey(const char* path,
+                                                                                 GridifsGreyReceiver receive,
+                                                                                 void* context, char* error,
+                                                                                 size_t errorSize) {
+  try {
+    auto in = OIIO::ImageInput::open(path);
+    if (!in) return failWith(OIIO::geterror(), error, errorSize);
+    const OIIO::ImageSpec spec = in->spec();
+    const int w = spec.width, h = spec.height, c = spec.nchannels;
+    if (w <= 0 || h <= 0 || c <= 0) return failWith("the image has no pixels", error, errorSize);
+    if (std::int64_t(w) * h > std::int64_t(16384) * 16384) return failWith("the image is larger than 16384 × 16384", error, errorSize);
+    std::vector<float> pixels(std::size_t(w) * std::size_t(h) * std::size_t(c));
+    if (!in->read_image(0, 0, 0, c, OIIO::TypeDesc::FLOAT, pixels.data())) return failWith(in->geterror(), error, errorSize);
+    const int alpha = spec.alpha_channel >= 0 ? spec.alpha_channel : (c == 2 || c == 4 ? c - 1 : -1);
+    const int colours = alpha >= 0 ? c - 1 : c;
+    std::vector<float> grey(std::size_t(w) * std::size_t(h));
+    for (std::size_t i = 0; i < grey.size(); ++i) {
+      const float* px = &pixels[i * std::size_t(c)];
+      float g = colours >= 3 ? 0.2126f * px[0] + 0.7152f * px[1] + 0.0722f * px[2] : px[0];
+      if (alpha >= 0) g = g * px[alpha] + (1.0f - px[alpha]);
+      grey[i] = std::clamp(g, 0.0f, 1.0f);
+    }
+    receive(context, w, h, grey.data());
+    return 1;
+  } catch (const std::exception& e) {
+    return failWith(e.what(), error, errorSize);
   }
 }

@@ -58,10 +58,12 @@ struct SetSetGrid {
   std::string label() const { return "VDB grid name"; }
 };
 
-/// Degrees about z per unit of distance between the sets' centres (Sokolov & Gentil, §4.1).
+/// Degrees per unit of distance between the sets' centres (Sokolov & Gentil, §4.1) and, when
+/// given, the axis of that rotation.
 struct SetMedianRotation {
   FunctionRef function;
   double rotate = 0.0;
+  std::optional<Vec3> axis;
   void apply(Project& project) const;
   std::string label() const { return "Median rotation"; }
 };

@@ -49,11 +49,22 @@ std::string readText(const json& j, const std::string& path) {
 
 ordered_json vec(const Vec3& v) { return ordered_json::array({v.x, v.y, v.z}); }
 
+void readPlacement(const json& s, const std::string& path, CondensationSet& set) {
+  if (auto pl = s.find("placement"); pl != s.end()) {
+    const std::string p = path + ".placement";
+    if (!pl->is_object()) fail(p, "expected an object with translate, rotate and scale");
+    set.placement.translate = readVec3(*pl, "translate", p, Vec3{0.0});
+    set.placement.rotate = readVec3(*pl, "rotate", p, Vec3{0.0});
+    set.placement.scale = readVec3(*pl, "scale", p, Vec3{1.0});
+  }
+}
+
 CondensationSet readSet(const json& s, const std::string& path) {
-  if (!s.is_object()) fail(path, "expected an object with \"primitive\", \"mesh\" or \"vdb\"");
+  if (!s.is_object()) fail(path, "expected an object with \"primitive\", \"mesh\", \"vdb\" or \"image\"");
   CondensationSet set;
-  const int sources = int(s.contains("primitive")) + int(s.contains("mesh")) + int(s.contains("vdb"));
-  if (sources != 1) fail(path, "expected exactly one of \"primitive\", \"mesh\" or \"vdb\"");
+  const int sources =
+      int(s.contains("primitive")) + int(s.contains("mesh")) + int(s.contains("vdb")) + int(s.contains("image"));
+  if (sources != 1) fail(path, "expected exactly one of \"primitive\", \"mesh\", \"vdb\" or \"image\"");
   auto allowOnly = [&](std::initializer_list<const char*> keys) {
     for (auto it = s.begin(); it != s.end(); ++it) {
       bool known = false;
@@ -81,6 +92,18 @@ CondensationSet readSet(const json& s, const std::string& path) {
     } else {
       fail(path + ".primitive", "expected \"sphere\", \"box\" or \"torus\", found \"" + name.substr(0, 32) + "\"");
     }
+  } else if (auto image = s.find("image"); image != s.end()) {
+    // A drawing (Sokolov & Gentil's sketches): its dark pixels as a slab on z = 0, placed like a mesh.
+    set.shape = SetShape::Image;
+    allowOnly({"image", "threshold", "thickness", "invert", "placement"});
+    set.path = readText(*image, path + ".image");
+    set.threshold = readFinite(s, "threshold", path, set.threshold);
+    set.thickness = readFinite(s, "thickness", path, set.thickness);
+    if (auto inv = s.find("invert"); inv != s.end()) {
+      if (!inv->is_boolean()) fail(path + ".invert", "expected true or false");
+      set.invert = inv->get<bool>();
+    }
+    readPlacement(s, path, set);
   } else if (auto mesh = s.find("mesh"); mesh != s.end()) {
     set.shape = SetShape::Mesh;
     allowOnly({"mesh", "fill", "placement"});
@@ -94,13 +117,7 @@ CondensationSet readSet(const json& s, const std::string& path) {
       else
         fail(path + ".fill", "expected \"solid\" or \"surface\"");
     }
-    if (auto pl = s.find("placement"); pl != s.end()) {
-      const std::string p = path + ".placement";
-      if (!pl->is_object()) fail(p, "expected an object with translate, rotate and scale");
-      set.placement.translate = readVec3(*pl, "translate", p, Vec3{0.0});
-      set.placement.rotate = readVec3(*pl, "rotate", p, Vec3{0.0});
-      set.placement.scale = readVec3(*pl, "scale", p, Vec3{1.0});
-    }
+    readPlacement(s, path, set);
   } else {
     set.shape = SetShape::Vdb;
     allowOnly({"vdb", "grid", "threshold"});
@@ -144,6 +161,15 @@ ordered_json writeSet(const CondensationSet& set) {
       o["grid"] = set.grid;
       o["threshold"] = set.threshold;
       break;
+    case SetShape::Image:
+      o["image"] = set.path;
+      o["threshold"] = set.threshold;
+      o["thickness"] = set.thickness;
+      o["invert"] = set.invert;
+      o["placement"] = {{"translate", vec(set.placement.translate)},
+                        {"rotate", vec(set.placement.rotate)},
+                        {"scale", vec(set.placement.scale)}};
+      break;
   }
   return o;
 }
@@ -152,7 +178,7 @@ ordered_json writeSet(const CondensationSet& set) {
 
 void readSetFunctionFields(const json& f, const std::string& path, Function& fn) {
   if (!isSetKind(fn.kind)) {
-    for (const char* key : {"set", "rotate"})
+    for (const char* key : {"set", "rotate", "rotate_axis"})
       if (f.contains(key))
         fail(path + "." + key,
              "only a function of kind \"condensation\" or \"median\" has a \"" + std::string(key) + "\"");
@@ -165,10 +191,13 @@ void readSetFunctionFields(const json& f, const std::string& path, Function& fn)
   auto it = f.find("set");
   if (it == f.end()) fail(path + ".set", "a \"" + std::string(functionKindName(fn.kind)) + "\" function needs its set");
   fn.set = readSet(*it, path + ".set");
-  if (fn.kind == FunctionKind::Median)
+  if (fn.kind == FunctionKind::Median) {
     fn.rotate = readFinite(f, "rotate", path, 0.0);
-  else if (f.contains("rotate"))
-    fail(path + ".rotate", "only a \"median\" function is rotated");
+    fn.rotate_axis = readVec3(f, "rotate_axis", path, Vec3{0.0, 0.0, 1.0});
+  } else {
+    for (const char* key : {"rotate", "rotate_axis"})
+      if (f.contains(key)) fail(path + "." + key, "only a \"median\" function is rotated");
+  }
 }
 
 ordered_json writeSetFunction(const Function& fn) {
@@ -176,7 +205,10 @@ ordered_json writeSetFunction(const Function& fn) {
   o["name"] = fn.name;
   o["kind"] = functionKindName(fn.kind);
   o["weight"] = fn.weight;
-  if (fn.kind == FunctionKind::Median) o["rotate"] = fn.rotate;
+  if (fn.kind == FunctionKind::Median) {
+    o["rotate"] = fn.rotate;
+    if (fn.rotate_axis != Vec3{0.0, 0.0, 1.0}) o["rotate_axis"] = vec(fn.rotate_axis);
+  }
   o["set"] = writeSet(fn.set);
   o["color"] = vec(fn.color);
   o["palette_index"] = fn.palette_index;
@@ -222,6 +254,7 @@ std::optional<VolumeSettings> readVolume(const json& root) {
   readSettingFields(volumeSettingsTable(), *it, "volume", &v);
   if (auto field = it->find("field"); field != it->end() && !field->is_null())
     v.field = readDensityField(*field, "volume.field");
+  if (auto start = it->find("start"); start != it->end() && !start->is_null()) v.start = readSet(*start, "volume.start");
   return v;
 }
 
@@ -229,6 +262,7 @@ void writeVolume(const Project& project, ordered_json& root) {
   if (!project.volume) return;
   ordered_json volume = writeSettings(volumeSettingsTable(), *project.volume);
   if (project.volume->field) volume["field"] = writeDensityField(*project.volume->field);
+  if (project.volume->start) volume["start"] = writeSet(*project.volume->start);
   root["volume"] = volume;
 }
 

@@ -26,6 +26,8 @@ const char* setShapeName(SetShape shape) {
       return "mesh";
     case SetShape::Vdb:
       return "vdb";
+    case SetShape::Image:
+      return "image";
   }
   return "sphere";
 }
@@ -50,13 +52,18 @@ void checkCondensationSet(const CondensationSet& set, const std::string& path) {
       if (!(set.minor > 0.0 && set.minor <= 10.0)) fail(path + ".minor", "expected a radius between 0 and 10");
       if (!finite(set.axis) || glm::length(set.axis) < 1e-9) fail(path + ".axis", "expected a non-zero axis");
       break;
+    case SetShape::Image:
+      if (set.path.empty()) fail(path + ".image", "expected a file name");
+      if (!(set.threshold >= 0.0 && set.threshold <= 1.0)) fail(path + ".threshold", "expected a number between 0 and 1");
+      if (!(set.thickness > 0.0 && set.thickness <= 2.0)) fail(path + ".thickness", "expected a thickness between 0 and 2");
+      [[fallthrough]];
     case SetShape::Mesh:
     case SetShape::Vdb:
       if (set.path.empty()) fail(path + (set.shape == SetShape::Mesh ? ".mesh" : ".vdb"), "expected a file name");
       if (set.shape == SetShape::Vdb && set.grid.empty()) fail(path + ".grid", "expected a grid name");
       if (set.shape == SetShape::Vdb && !std::isfinite(set.threshold))
         fail(path + ".threshold", "expected a finite number");
-      if (set.shape == SetShape::Mesh) {
+      if (set.shape == SetShape::Mesh || set.shape == SetShape::Image) {
         const Placement& p = set.placement;
         if (!finite(p.translate) || !finite(p.rotate) || !finite(p.scale))
           fail(path + ".placement", "expected finite numbers");
@@ -83,6 +90,7 @@ bool primitiveContains(const CondensationSet& set, const Vec3& p) {
     }
     case SetShape::Mesh:
     case SetShape::Vdb:
+    case SetShape::Image:
       break;
   }
   return false;
@@ -98,6 +106,7 @@ Vec3 primitiveHalfExtent(const CondensationSet& set) {
       return Vec3{set.major + set.minor};
     case SetShape::Mesh:
     case SetShape::Vdb:
+    case SetShape::Image:
       break;
   }
   return Vec3{0.0};
@@ -105,7 +114,7 @@ Vec3 primitiveHalfExtent(const CondensationSet& set) {
 
 std::vector<Vec3> samplePrimitive(const CondensationSet& set, std::size_t count, std::uint64_t seed) {
   std::vector<Vec3> out;
-  if (set.shape == SetShape::Mesh || set.shape == SetShape::Vdb) return out;
+  if (set.shape == SetShape::Mesh || set.shape == SetShape::Vdb || set.shape == SetShape::Image) return out;
   const Vec3 half = primitiveHalfExtent(set);
   out.reserve(count);
   std::uint64_t state = seed;

@@ -1,6 +1,6 @@
 #pragma once
 // A condensation set C ⊂ X (Sokolov & Gentil, §3.1–3.2): a built-in primitive, a mesh file placed
-// in X, or a level set of a VDB grid. Only the description; voxelization lives in volume/.
+// in X, a level set of a VDB grid, or a drawing (the paper's black-ink sketches) as a thin slab. Only the description; voxelization lives in volume/.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -9,7 +9,7 @@
 
 namespace gridifs {
 
-enum class SetShape { Sphere, Box, Torus, Mesh, Vdb };
+enum class SetShape { Sphere, Box, Torus, Mesh, Vdb, Image };
 
 /// "fill" of a mesh set: the enclosed volume or the surface alone.
 enum class SetFill { Solid, Surface };
@@ -26,7 +26,10 @@ struct CondensationSet {
   SetFill fill = SetFill::Solid;
   Placement placement;           // mesh: placement(q) = T + R·(S·q)
   std::string grid = "density";  // VDB: the grid's name
-  double threshold = 0.5;        // VDB: voxels whose value is at least this belong to the set
+  double threshold = 0.5;        // VDB: voxels whose value is at least this belong to the set;
+                                 // image: pixels darker than this (after `invert`) belong to it
+  double thickness = 0.05;       // image: the slab's thickness along z (placed like a mesh)
+  bool invert = false;           // image: light pixels belong to the set instead of dark ones
   bool operator==(const CondensationSet&) const = default;
 };
 

@@ -35,6 +35,8 @@ struct Function {
   /// "rotate" of a Median function: degrees per unit of distance between the sets' centres, about z
   /// (Sokolov & Gentil, §4.1: the rotated median).
   double rotate = 0.0;
+  /// "rotate_axis" of a Median function: the axis of that rotation (need not be unit length).
+  Vec3 rotate_axis{0.0, 0.0, 1.0};
   /// "variations": the flame variations' weights by name (f(p) = post(Σ w_i V_i(g(p))), see
   /// model/function_variations.h); empty: f = g. Grid functions only.
   std::map<std::string, double> variations;

@@ -330,6 +330,13 @@ class ParameterResolver {
     if (end()) return Lookup::NotANumber;
     const std::string_view key = token();
     const VolumeSettings& v = *project_.volume;
+    if (key == "start") {
+      // The deterministic algorithm's start set: the set accessors with no function.
+      if (!v.start) return Lookup::Missing;
+      position(int(volumeSettingsTable().fields.size()) + 1);
+      p_.f_ = ProjectParameter::kStartSet;
+      return set(*v.start);
+    }
     if (key != "field") return settingField(volumeSettingsTable(), Group::Volume, &v, key);
     if (!v.field) return Lookup::Missing;
     position(int(volumeSettingsTable().fields.size()));
@@ -401,6 +408,10 @@ class ParameterResolver {
         if (key == "rotate" && fn.kind == FunctionKind::Median) {
           position(13);
           return number(Where::MedianRotate, Reader::SetNumber, Storage::Double);
+        }
+        if (key == "rotate_axis" && fn.kind == FunctionKind::Median && fn.rotate_axis != Vec3{0.0, 0.0, 1.0}) {
+          position(14);
+          return component(3, Where::MedianRotateAxis, Reader::SetNumber, 0.0, 0.0);
         }
         return Lookup::Missing;
       case FunctionKind::Grid:
@@ -489,6 +500,21 @@ class ParameterResolver {
         if (key == "threshold") {
           position(1);
           return number(Where::SetThreshold, Reader::SetNumber, Storage::Double);
+        }
+        return Lookup::Missing;
+      case SetShape::Image:
+        if (key == "image" || key == "invert") return text();
+        if (key == "placement") {
+          position(3);
+          return placement(Where::SetPlacement, Reader::SetNumber, 0.0, 0.0);
+        }
+        if (key == "threshold") {
+          position(1);
+          return number(Where::SetThreshold, Reader::SetNumber, Storage::Double);
+        }
+        if (key == "thickness") {
+          position(2);
+          return number(Where::SetThickness, Reader::SetNumber, Storage::Double);
         }
         return Lookup::Missing;
     }
@@ -688,7 +714,35 @@ void* ProjectParameter::locate(Project& project) const {
     default:
       break;
   }
+  auto setField = [&](CondensationSet& set) -> void* {
+    switch (where_) {
+      case Where::SetCenter:
+        return vectorComponent(set.center);
+      case Where::SetRadius:
+        return &set.radius;
+      case Where::SetSize:
+        return vectorComponent(set.size);
+      case Where::SetMajor:
+        return &set.major;
+      case Where::SetMinor:
+        return &set.minor;
+      case Where::SetAxis:
+        return vectorComponent(set.axis);
+      case Where::SetPlacement: {
+        Placement& p = set.placement;
+        return vectorComponent(b_ == 0 ? p.translate : b_ == 1 ? p.rotate : p.scale);
+      }
+      case Where::SetThreshold:
+        return &set.threshold;
+      case Where::SetThickness:
+        return &set.thickness;
+      default:
+        return nullptr;
+    }
+  };
+  if (f_ == kStartSet) return setField(*project.volume->start);
   Function& fn = f_ < 0 ? *project.final_function : project.functions[std::size_t(f_)];
+  if (void* field = setField(fn.set)) return field;
   switch (where_) {
     case Where::Resolution:
       return &fn.resolution[std::size_t(c_)];
@@ -708,6 +762,8 @@ void* ProjectParameter::locate(Project& project) const {
       return &fn.matrix[std::size_t(a_)][std::size_t(c_)];
     case Where::MedianRotate:
       return &fn.rotate;
+    case Where::MedianRotateAxis:
+      return vectorComponent(fn.rotate_axis);
     case Where::VariationWeight:
       return &fn.variations.at(key_);
     case Where::VariationParam:
@@ -718,24 +774,7 @@ void* ProjectParameter::locate(Project& project) const {
     }
     case Where::PostMatrix:
       return &(*fn.post->matrix)[std::size_t(a_)][std::size_t(c_)];
-    case Where::SetCenter:
-      return vectorComponent(fn.set.center);
-    case Where::SetRadius:
-      return &fn.set.radius;
-    case Where::SetSize:
-      return vectorComponent(fn.set.size);
-    case Where::SetMajor:
-      return &fn.set.major;
-    case Where::SetMinor:
-      return &fn.set.minor;
-    case Where::SetAxis:
-      return vectorComponent(fn.set.axis);
-    case Where::SetPlacement: {
-      Placement& p = fn.set.placement;
-      return vectorComponent(b_ == 0 ? p.translate : b_ == 1 ? p.rotate : p.scale);
-    }
-    case Where::SetThreshold:
-      return &fn.set.threshold;
+
     default:
       break;
   }
@@ -933,7 +972,33 @@ std::string ProjectParameter::path() const {
     default:
       break;
   }
+  auto setPath = [&](const std::string& set) -> std::string {
+    switch (where_) {
+      case Where::SetCenter:
+        return item(set + ".center", c_);
+      case Where::SetRadius:
+        return set + ".radius";
+      case Where::SetSize:
+        return item(set + ".size", c_);
+      case Where::SetMajor:
+        return set + ".major";
+      case Where::SetMinor:
+        return set + ".minor";
+      case Where::SetAxis:
+        return item(set + ".axis", c_);
+      case Where::SetPlacement:
+        return item(set + ".placement." + kPlacementKeys[b_], c_);
+      case Where::SetThreshold:
+        return set + ".threshold";
+      case Where::SetThickness:
+        return set + ".thickness";
+      default:
+        return {};
+    }
+  };
+  if (f_ == kStartSet) return setPath("volume.start");
   const std::string fn = f_ < 0 ? std::string("final") : item("functions", f_);
+  if (std::string p = setPath(fn + ".set"); !p.empty()) return p;
   switch (where_) {
     case Where::Resolution:
       return item(fn + ".resolution", c_);
@@ -953,6 +1018,8 @@ std::string ProjectParameter::path() const {
       return item(item(fn + ".matrix", a_), c_);
     case Where::MedianRotate:
       return fn + ".rotate";
+    case Where::MedianRotateAxis:
+      return item(fn + ".rotate_axis", c_);
     case Where::VariationWeight:
       return fn + ".variations." + key_;
     case Where::VariationParam:
@@ -961,22 +1028,7 @@ std::string ProjectParameter::path() const {
       return item(fn + ".post." + kPlacementKeys[b_], c_);
     case Where::PostMatrix:
       return item(item(fn + ".post.matrix", a_), c_);
-    case Where::SetCenter:
-      return item(fn + ".set.center", c_);
-    case Where::SetRadius:
-      return fn + ".set.radius";
-    case Where::SetSize:
-      return item(fn + ".set.size", c_);
-    case Where::SetMajor:
-      return fn + ".set.major";
-    case Where::SetMinor:
-      return fn + ".set.minor";
-    case Where::SetAxis:
-      return item(fn + ".set.axis", c_);
-    case Where::SetPlacement:
-      return item(fn + ".set.placement." + kPlacementKeys[b_], c_);
-    case Where::SetThreshold:
-      return fn + ".set.threshold";
+
     default:
       break;
   }

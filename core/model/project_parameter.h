@@ -71,6 +71,7 @@ class ProjectParameter {
     Placement,        // function `f`: `b` 0 translate, 1 rotate, 2 scale, component `c`
     MatrixEntry,      // function `f`: row `a`, column `c`
     MedianRotate,     // function `f`
+    MedianRotateAxis, // function `f`: component `c`
     VariationWeight,  // function `f`: the weight of variation `key`
     VariationParam,   // function `f`: variation parameter `key`
     PostPlacement,    // function `f`'s post map: `b` 0 translate, 1 rotate, 2 scale, component `c`
@@ -83,6 +84,7 @@ class ProjectParameter {
     SetAxis,          // ... component `c`
     SetPlacement,     // ... `b` 0 translate, 1 rotate, 2 scale, component `c`
     SetThreshold,     // ...
+    SetThickness,     // ... (a drawing)
     Transition,       // row `a`, column `c`
     ControlPoint,     // point `a`, component `c`
     DensityStrength,  // volume.field.strength
@@ -120,7 +122,8 @@ class ProjectParameter {
   Reader reader_ = Reader::Version;
   Storage storage_ = Storage::None;
   bool fragile_ = false;
-  int f_ = 0;  // function index; -1: the final function
+  static constexpr int kStartSet = -2;
+  int f_ = 0;  // function index; -1: the final function; kStartSet: volume.start
   int o_ = 0, a_ = 0, b_ = 0, c_ = 0;
   double lo_ = 0.0, hi_ = 0.0;  // the reader's range
   /// The field's description (model/field_schema.h): a setting (Setting) or an operation's

@@ -42,11 +42,16 @@ void checkCondensationFunctions(const Project& project) {
     checkCondensationSet(fn.set, join(path, "set"));
     if (!std::isfinite(fn.rotate) || std::abs(fn.rotate) > 1e5)
       fail(join(path, "rotate"), "expected degrees per unit distance between -100000 and 100000");
+    const Vec3& axis = fn.rotate_axis;
+    if (!std::isfinite(axis.x) || !std::isfinite(axis.y) || !std::isfinite(axis.z) ||
+        !(std::abs(axis.x) + std::abs(axis.y) + std::abs(axis.z) > 1e-9))
+      fail(join(path, "rotate_axis"), "expected a non-zero axis");
   }
   if (project.final_function && isSetKind(project.final_function->kind))
     fail("final.kind", "the final function must be a grid (a lattice)");
   if (project.volume) {
     validateSettings(volumeSettingsTable(), *project.volume, "volume");
+    if (project.volume->start) checkCondensationSet(*project.volume->start, "volume.start");
     if (const auto& field = project.volume->field) {
       if (!std::isfinite(field->strength) || field->strength < 0.0 || field->strength > kMaxDensityFieldStrength)
         fail("volume.field.strength", "expected a number between 0 and 100");

@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "anim/fractal_field.h"
+#include "model/condensation_set.h"
 
 namespace gridifs {
 
@@ -27,6 +28,9 @@ struct VolumeSettings {
   std::uint64_t seed = 1;
   std::int64_t samples = 20'000'000;  // chaos-game points (projects without median functions)
   std::optional<VolumeDensityField> field;  // none: the measure attractor's density as it is
+  /// "start": the set S the deterministic algorithm over sets starts from (Sokolov & Gentil, §3.3:
+  /// "an arbitrary non-empty compact subset"); none: the whole of X.
+  std::optional<CondensationSet> start;
   bool operator==(const VolumeSettings&) const = default;
 };
 

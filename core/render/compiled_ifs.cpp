@@ -261,7 +261,7 @@ constexpr std::size_t kCondensationSamples = 1 << 16;
 
 CompiledFunction compileCondensationFunction(const Function& f, const CondensationSampler& sampler, std::size_t index) {
   std::vector<Vec3> samples;
-  if (f.set.shape == SetShape::Mesh || f.set.shape == SetShape::Vdb) {
+  if (f.set.shape == SetShape::Mesh || f.set.shape == SetShape::Vdb || f.set.shape == SetShape::Image) {
     if (!sampler) throw ModelError("set", "a set read from a file needs its project folder to be sampled");
     samples = sampler(index);
   } else {

@@ -15,9 +15,11 @@ namespace {
 constexpr const char* kPluginFile = "libgridifs_image_io.so";
 
 using WriteFunction = int (*)(const GridifsImageRequest*, char*, size_t);
+using ReadGreyFunction = int (*)(const char*, GridifsGreyReceiver, void*, char*, size_t);
 
 struct ImageWriter {
   WriteFunction write = nullptr;
+  ReadGreyFunction readGrey = nullptr;
   std::string problem;  // why it could not be loaded
 };
 
@@ -25,10 +27,12 @@ ImageWriter load() {
   const PluginLibrary plugin = loadPluginLibrary(kPluginFile, "GRIDIFS_IMAGE_IO", GRIDIFS_IMAGE_IO_BUILD_DIR,
                                                  "gridifs_image_io_abi_version", GRIDIFS_IMAGE_IO_ABI_VERSION,
                                                  "the image library");
-  if (!plugin.handle) return {nullptr, plugin.problem};
+  if (!plugin.handle) return {nullptr, nullptr, plugin.problem};
   const auto write = reinterpret_cast<WriteFunction>(plugin.symbol("gridifs_image_io_write"));
-  if (!write) return {nullptr, std::string("the image library (") + kPluginFile + ") is from another version of GridIFS"};
-  return {write, {}};
+  const auto readGrey = reinterpret_cast<ReadGreyFunction>(plugin.symbol("gridifs_image_io_read_grey"));
+  if (!write || !readGrey)
+    return {nullptr, nullptr, std::string("the image library (") + kPluginFile + ") is from another version of GridIFS"};
+  return {write, readGrey, {}};
 }
 
 struct Loading {
@@ -78,6 +82,22 @@ void write(const std::filesystem::path& file, const ImageFileLayout& layout, boo
 }
 
 }  // namespace
+
+GreyImage readGreyImage(const std::filesystem::path& file) {
+  const ImageWriter& plugin = writer(std::launch::deferred);
+  if (!plugin.readGrey) throw IoError("cannot read " + file.string() + ": " + plugin.problem);
+  GreyImage image;
+  auto receive = [](void* context, int width, int height, const float* grey) {
+    auto& out = *static_cast<GreyImage*>(context);
+    out.width = width;
+    out.height = height;
+    out.grey.assign(grey, grey + std::size_t(width) * std::size_t(height));
+  };
+  char message[1024] = {};
+  if (!plugin.readGrey(file.c_str(), receive, &image, message, sizeof message))
+    throw IoError("cannot read " + file.string() + ": " + message);
+  return image;
+}
 
 void startLoadingImageWriter() {
   Loading& state = loading();

@@ -26,6 +26,16 @@ struct ImageFileLayout {
 void writeImageFile(const std::filesystem::path& file, const ImageFileLayout& layout, const std::uint8_t* pixels);
 void writeImageFile(const std::filesystem::path& file, const ImageFileLayout& layout, const float* pixels);
 
+/// A grey image: width × height levels in [0, 1], rows top first.
+struct GreyImage {
+  int width = 0, height = 0;
+  std::vector<float> grey;
+};
+
+/// Reads an image file (PNG, JPEG, EXR, … through OpenImageIO) as grey levels: the luminance of
+/// its colours, over white where it is transparent. Throws IoError("cannot read FILE: …").
+GreyImage readGreyImage(const std::filesystem::path& file);
+
 /// Starts loading the image library on a helper thread, so that a later write does not wait for
 /// it (call as soon as it is known that an image will be written). Safe to call more than once.
 void startLoadingImageWriter();

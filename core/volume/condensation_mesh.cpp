@@ -6,7 +6,9 @@
 #include "mesh/base_mesh.h"
 #include "mesh/mesh_io.h"
 #include "model/stack_evaluator.h"
+#include "volume/set_voxelizer.h"
 #include "volume/vdb_io.h"
+#include "volume/voxel_set_mesh.h"
 
 namespace gridifs {
 namespace {
@@ -119,6 +121,8 @@ IfsMesh condensationSetMesh(const CondensationSet& set, const std::filesystem::p
       return fileMesh(set, projectFolder / set.path, jsonPath);
     case SetShape::Vdb:
       return vdbMesh(set, projectFolder / set.path, jsonPath);
+    case SetShape::Image:
+      return voxelSetMesh(voxelizeSet(set, VoxelLattice{kImageMeshResolution}, projectFolder, jsonPath));
   }
   return sphereMesh(set);
 }

@@ -48,7 +48,8 @@ DensityVolume iterateSets(const Project& project, const VolumeJob& job) {
     switch (f.kind) {
       case FunctionKind::Median:
         functions.push_back(
-            SetFunction::median(voxelizeSet(f.set, lattice, job.projectFolder, path + ".set"), f.rotate));
+            SetFunction::median(voxelizeSet(f.set, lattice, job.projectFolder, path + ".set"), f.rotate,
+                                f.rotate_axis));
         break;
       case FunctionKind::Condensation:
         functions.push_back(SetFunction::constant(voxelizeSet(f.set, lattice, job.projectFolder, path + ".set")));

@@ -156,6 +156,7 @@ struct SetFunction::Impl {
   enum class Kind { Median, Constant, PointMap } kind;
   VoxelSet set;
   double rotate = 0.0;
+  Vec3 axis{0.0, 0.0, 1.0};  // unit length
   std::unique_ptr<NearestVoxel> nearest;  // median: the k-d tree of `set`
   /// Median: the answer of `nearest` per lattice voxel once asked (kUnknown before). The sets of
   /// the iteration keep revisiting the same region, so most left-median queries become one load.
@@ -171,12 +172,14 @@ SetFunction::SetFunction(SetFunction&&) noexcept = default;
 SetFunction& SetFunction::operator=(SetFunction&&) noexcept = default;
 SetFunction::~SetFunction() = default;
 
-SetFunction SetFunction::median(VoxelSet condensation, double rotateDegreesPerUnit) {
+SetFunction SetFunction::median(VoxelSet condensation, double rotateDegreesPerUnit, Vec3 axis) {
   auto impl = std::make_unique<Impl>();
   impl->kind = Impl::Kind::Median;
   impl->lattice = condensation.lattice;
   impl->set = std::move(condensation);
   impl->rotate = rotateDegreesPerUnit;
+  const double length = glm::length(axis);
+  impl->axis = length > 0.0 && std::isfinite(length) ? axis / length : Vec3{0.0, 0.0, 1.0};
   impl->nearest = std::make_unique<NearestVoxel>(impl->set, 0);
   impl->centroid = latticeCentroid(impl->set);
   if (impl->lattice.n <= 256) impl->memo.assign(impl->lattice.voxelCount(), kUnknown);
@@ -201,6 +204,7 @@ SetFunction SetFunction::pointMap(CompiledFunction map, VoxelLattice lattice) {
 }
 
 const VoxelSet& SetFunction::condensation() const { return impl_->set; }
+bool SetFunction::isConstant() const { return impl_->kind == Impl::Kind::Constant; }
 
 void SetFunction::apply(const VoxelSet& in, VoxelSet& out, SetScratch& scratch, int threads) const {
   const Impl& f = *impl_;
@@ -253,6 +257,16 @@ void SetFunction::apply(const VoxelSet& in, VoxelSet& out, SetScratch& scratch, 
     pivot = 0.5 * (centreB + f.centroid);
   }
   const double cosA = std::cos(angle), sinA = std::sin(angle);
+  // About z the rotation keeps the midpoint's z exactly (the paper's drawings lie in a plane);
+  // about any other axis, Rodrigues' rotation matrix R = cos·I + sin·[k]× + (1 − cos)·k kᵀ.
+  const bool aboutZ = f.axis == Vec3{0.0, 0.0, 1.0};
+  double rot[3][3];
+  {
+    const Vec3& k = f.axis;
+    const double cross[3][3] = {{0.0, -k.z, k.y}, {k.z, 0.0, -k.x}, {-k.y, k.x, 0.0}};
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) rot[r][c] = (r == c ? cosA : 0.0) + sinA * cross[r][c] + (1.0 - cosA) * k[r] * k[c];
+  }
   auto midpoint = [&](const Index3& a, const Index3& b, std::uint32_t tie) -> std::uint32_t {
     int m[3];
     if (angle == 0.0) {
@@ -262,8 +276,17 @@ void SetFunction::apply(const VoxelSet& in, VoxelSet& out, SetScratch& scratch, 
         m[d] = (sum + ((sum & 1) ? int((tie >> d) & 1u) : 0)) >> 1;
       }
     } else {
-      const double x = 0.5 * (a[0] + b[0]) - pivot.x, y = 0.5 * (a[1] + b[1]) - pivot.y;
-      const double r[3] = {pivot.x + cosA * x - sinA * y, pivot.y + sinA * x + cosA * y, 0.5 * (a[2] + b[2])};
+      double r[3];
+      if (aboutZ) {
+        const double x = 0.5 * (a[0] + b[0]) - pivot.x, y = 0.5 * (a[1] + b[1]) - pivot.y;
+        r[0] = pivot.x + cosA * x - sinA * y;
+        r[1] = pivot.y + sinA * x + cosA * y;
+        r[2] = 0.5 * (a[2] + b[2]);
+      } else {
+        const double q[3] = {0.5 * (a[0] + b[0]) - pivot.x, 0.5 * (a[1] + b[1]) - pivot.y,
+                             0.5 * (a[2] + b[2]) - pivot.z};
+        for (int d = 0; d < 3; ++d) r[d] = pivot[d] + rot[d][0] * q[0] + rot[d][1] * q[1] + rot[d][2] * q[2];
+      }
       for (int d = 0; d < 3; ++d) {
         m[d] = int(std::lround(r[d]));
         if (m[d] < 0 || m[d] >= n) return kNone;

@@ -19,9 +19,10 @@ struct SetScratch {
 class SetFunction {
  public:
   /// f_C = M(·, C): the union of the left median D_B(C) and the right median D_C(B) (§3.2);
-  /// `rotateDegreesPerUnit` ≠ 0 rotates the median about z, around the point midway between the
-  /// centroids of B and C, by that many degrees per unit of distance between them (§4.1).
-  static SetFunction median(VoxelSet condensation, double rotateDegreesPerUnit);
+  /// `rotateDegreesPerUnit` ≠ 0 rotates the median about `axis` (z by default; need not be unit
+  /// length, must not be zero), around the point midway between the centroids of B and C, by that
+  /// many degrees per unit of distance between them (§4.1).
+  static SetFunction median(VoxelSet condensation, double rotateDegreesPerUnit, Vec3 axis = Vec3{0.0, 0.0, 1.0});
   /// f(B) = C for every B.
   static SetFunction constant(VoxelSet condensation);
   /// f(B) = {g(x) : x ∈ B} for a point map g of X: each voxel is supersampled 2×2×2 so that a
@@ -39,6 +40,8 @@ class SetFunction {
 
   /// The condensation set (empty for a point map).
   const VoxelSet& condensation() const;
+  /// Whether f is Barnsley's constant map (f(B) = C for every B).
+  bool isConstant() const;
 
  private:
   struct Impl;

@@ -90,6 +90,7 @@ LineSegments primitiveOutline(const CondensationSet& set, int segmentsPerLoop) {
     }
     case SetShape::Mesh:
     case SetShape::Vdb:
+    case SetShape::Image:
       break;
   }
   return out;
@@ -179,6 +180,7 @@ LineSegments setOutline(const CondensationSet& set, const std::filesystem::path&
       return meshOutline(readMeshFile(projectFolder / set.path), set.placement, maxSegments);
     }
     case SetShape::Vdb:
+    case SetShape::Image:
       return voxelOutline(voxelizeSet(set, VoxelLattice{resolution}, projectFolder, jsonPath), maxSegments);
   }
   return {};

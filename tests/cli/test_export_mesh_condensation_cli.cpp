@@ -73,14 +73,11 @@ TEST(CliExportMeshCondensation, BadSetsExitTwoAndWriteNothing) {
             project(R"({"name": "t", "kind": "condensation", "set": {"mesh": "no_tree.obj", "fill": "solid"}})"));
   writeText(dir.path / "garbage.gridifs",
             project(R"({"name": "t", "kind": "condensation", "set": {"mesh": "garbage.obj", "fill": "solid"}})"));
-  writeText(dir.path / "median.gridifs",
-            project(R"({"name": "m", "kind": "median", "set": {"primitive": "sphere", "radius": 0.3}})"));
   writeText(dir.path / "old.ply", "previous content");
   struct Case {
     std::string file, names;
   };
-  for (const Case& c : {Case{"missing.gridifs", "no_tree.obj"}, Case{"garbage.gridifs", "garbage.obj"},
-                        Case{"median.gridifs", "median"}}) {
+  for (const Case& c : {Case{"missing.gridifs", "no_tree.obj"}, Case{"garbage.gridifs", "garbage.obj"}}) {
     SCOPED_TRACE(c.file);
     const auto r = runGridifs("export-mesh " + quote((dir.path / c.file).string()) + " -o " +
                               quote((dir.path / "old.ply").string()) + " --depth 3");

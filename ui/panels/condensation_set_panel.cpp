@@ -27,6 +27,7 @@ const ShapeChoice kShapes[] = {
     {SetShape::Torus, "Torus", "A ring: centre, major and minor radius, axis of revolution"},
     {SetShape::Mesh, "Mesh file", "An OBJ, PLY, STL or OFF mesh, filled or as its surface, placed in X"},
     {SetShape::Vdb, "VDB file", "The voxels of a VDB float grid at or above a threshold"},
+    {SetShape::Image, "Drawing", "A PNG, JPEG or EXR drawing: its dark pixels as a thin slab on z = 0, placed in X"},
 };
 
 const char* shapeLabel(SetShape shape) {
@@ -84,8 +85,27 @@ void drawPrimitive(ModellerState& state, EditQueue& edits, FunctionRef ref, cons
       break;
     case SetShape::Mesh:
     case SetShape::Vdb:
+    case SetShape::Image:
       break;
   }
+}
+
+/// A drawing's threshold, thickness and inversion (Sokolov & Gentil's sketches as sets).
+void drawImageFields(ModellerState& state, EditQueue& edits, FunctionRef ref, const CondensationSet& current) {
+  CondensationSet set = current;
+  bool changed = dragDouble("Threshold", set.threshold, 0.005, 0.0, 1.0);
+  state.probe.frame("set.threshold");
+  setGesture(edits, "Drawing threshold", changed, ref, set);
+  contextHelp(state, "Pixels darker than this grey level (0 black, 1 white) belong to the set");
+  changed = dragDouble("Thickness", set.thickness, 0.001, 0.001, 2.0);
+  state.probe.frame("set.thickness");
+  setGesture(edits, "Drawing thickness", changed, ref, set);
+  contextHelp(state, "The slab's thickness along z, before the placement");
+  set = current;
+  if (ImGui::Checkbox("Invert", &set.invert)) edits.commit(set.invert ? "Invert drawing" : "Drawing not inverted",
+                                                           SetCondensationSet{ref, set});
+  state.probe.frame("set.invert");
+  contextHelp(state, "Light pixels belong to the set instead of dark ones");
 }
 
 }  // namespace
@@ -93,21 +113,24 @@ void drawPrimitive(ModellerState& state, EditQueue& edits, FunctionRef ref, cons
 void CondensationSetPanel::drawFile(ModellerState& state, EditQueue& edits, FunctionRef ref,
                                     const CondensationSet& current) {
   const bool mesh = current.shape == SetShape::Mesh;
+  const bool image = current.shape == SetShape::Image;
   // The file name: typed (committed on Enter or when the field loses focus) or browsed.
   if (!editingPath_) pathText_ = current.path;
   ImGui::InputText("File", &pathText_);
   state.probe.frame("set.path");
   editingPath_ = ImGui::IsItemActive();
   if (ImGui::IsItemDeactivatedAfterEdit() && pathText_ != current.path) {
-    edits.commit(mesh ? "Set mesh file" : "Set VDB file", SetSetFile{ref, pathText_});
+    edits.commit(mesh ? "Set mesh file" : image ? "Set drawing file" : "Set VDB file", SetSetFile{ref, pathText_});
   }
   contextHelp(state, "The file's path, relative to the project file's folder");
   if (ImGui::Button("Browse...")) browse(state, current, current.shape);
   state.probe.item("set.browse");
-  contextHelp(state, mesh ? "Pick an OBJ, PLY, STL or OFF mesh" : "Pick an OpenVDB file");
+  contextHelp(state, mesh ? "Pick an OBJ, PLY, STL or OFF mesh" : image ? "Pick a PNG, JPEG or EXR drawing" : "Pick an OpenVDB file");
 
   CondensationSet set = current;
-  if (mesh) {
+  if (image) drawImageFields(state, edits, ref, current);
+  if (mesh || image) {
+    if (mesh) {
     int fill = set.fill == SetFill::Surface ? 1 : 0;
     static const char* fills[] = {"Solid", "Surface"};
     if (ImGui::Combo("Fill", &fill, fills, 2)) {
@@ -115,6 +138,7 @@ void CondensationSetPanel::drawFile(ModellerState& state, EditQueue& edits, Func
     }
     state.probe.frame("set.fill");
     contextHelp(state, "Solid: the volume the mesh encloses (it must be closed); surface: a shell around its faces");
+    }
     if (ImGui::CollapsingHeader("Placement", ImGuiTreeNodeFlags_DefaultOpen)) {
       bool changed = dragVec3("Translate", set.placement.translate, 0.005);
       state.probe.frame("set.translate");
@@ -142,14 +166,17 @@ void CondensationSetPanel::drawFile(ModellerState& state, EditQueue& edits, Func
 
 void CondensationSetPanel::browse(ModellerState& state, const CondensationSet& set, SetShape shape) {
   const bool mesh = shape == SetShape::Mesh;
+  const bool image = shape == SetShape::Image;
   browsing_ = state.activeFunction;
   browsingFor_ = shape;
   const fs::path folder = state.projectFolder();
   const fs::path start = set.path.empty() ? folder : (folder / set.path).parent_path();
   std::error_code ec;
   browser_.open(FileBrowser::Mode::Open, fs::is_directory(start, ec) ? start : folder, {},
-                mesh ? std::vector<std::string>{".obj", ".ply", ".stl", ".off"} : std::vector<std::string>{".vdb"},
-                mesh ? "Condensation mesh" : "Condensation VDB");
+                mesh    ? std::vector<std::string>{".obj", ".ply", ".stl", ".off"}
+                : image ? std::vector<std::string>{".png", ".jpg", ".jpeg", ".exr"}
+                        : std::vector<std::string>{".vdb"},
+                mesh ? "Condensation mesh" : image ? "Condensation drawing" : "Condensation VDB");
 }
 
 void CondensationSetPanel::draw(ModellerState& state, EditQueue& edits) {
@@ -170,9 +197,14 @@ void CondensationSetPanel::draw(ModellerState& state, EditQueue& edits) {
         const SetShape shape = c.shape;
         // A file set needs its file first: the browser picks it, and the shape and the file
         // become one undo step (a mesh path is no VDB path, and the other way round).
-        const bool fileSet = shape == SetShape::Mesh || shape == SetShape::Vdb;
-        const bool isVdbPath = fs::path(set.path).extension() == ".vdb";
-        const bool pathFits = !set.path.empty() && isVdbPath == (shape == SetShape::Vdb);
+        const bool fileSet = shape == SetShape::Mesh || shape == SetShape::Vdb || shape == SetShape::Image;
+        auto kindOfPath = [](const std::string& p) {
+          const std::string ext = fs::path(p).extension().string();
+          if (ext == ".vdb") return SetShape::Vdb;
+          if (ext == ".png" || ext == ".jpg" || ext == ".jpeg" || ext == ".exr") return SetShape::Image;
+          return SetShape::Mesh;
+        };
+        const bool pathFits = !set.path.empty() && kindOfPath(set.path) == shape;
         if (fileSet && !pathFits)
           browse(state, set, shape);
         else
@@ -198,7 +230,7 @@ void CondensationSetPanel::draw(ModellerState& state, EditQueue& edits) {
     ImGui::TextDisabled("The preview keeps its last picture; Ctrl+Z returns to the last good set.");
   }
 
-  if (set.shape == SetShape::Mesh || set.shape == SetShape::Vdb)
+  if (set.shape == SetShape::Mesh || set.shape == SetShape::Vdb || set.shape == SetShape::Image)
     drawFile(state, edits, ref, set);
   else
     drawPrimitive(state, edits, ref, set);
@@ -207,10 +239,16 @@ void CondensationSetPanel::draw(ModellerState& state, EditQueue& edits) {
     double rotate = f.rotate;
     const bool changed = dragDouble("Rotate", rotate, 0.5, -3600.0, 3600.0, "%.1f°");
     state.probe.frame("set.rotate");
-    gestureItem(edits, "Median rotation", changed, SetMedianRotation{ref, rotate});
+    gestureItem(edits, "Median rotation", changed, SetMedianRotation{ref, rotate, std::nullopt});
     contextHelp(state,
-                "The rotated median (Sokolov & Gentil, §4.1): degrees about z per unit of distance between the sets' "
-                "centres; 0 is the plain median");
+                "The rotated median (Sokolov & Gentil, §4.1): degrees about the axis per unit of distance between the "
+                "sets' centres; 0 is the plain median");
+    Vec3 axis = f.rotate_axis;
+    bool axisChanged = dragVec3("Axis", axis, 0.01, -1.0, 1.0);
+    if (glm::length(axis) < 1e-6) axisChanged = false;  // a zero axis turns nothing
+    state.probe.frame("set.rotate_axis");
+    gestureItem(edits, "Median rotation axis", axisChanged, SetMedianRotation{ref, f.rotate, axis});
+    contextHelp(state, "The axis the median turns about (any length; z by default)");
   }
   ImGui::PopItemWidth();
 
@@ -221,6 +259,7 @@ void CondensationSetPanel::draw(ModellerState& state, EditQueue& edits) {
     const bool newShape = browsing_.in(state.document.project()).set.shape != shape;
     const std::string label = newShape                  ? std::string("Set shape: ") + setShapeName(shape)
                               : shape == SetShape::Mesh ? "Set mesh file"
+                              : shape == SetShape::Image ? "Set drawing file"
                                                         : "Set VDB file";
     edits.commit(label, SetSetShape{target, shape, path});
   }

@@ -451,7 +451,7 @@ void GridView::updateDrag(ModellerState& state, EditQueue& edits, dvec2 mouse) {
         if (shape == SetShape::Vdb) break;
         if (firstMove) edits.begin("Move set");
         CondensationSet set = dragFunction_.set;
-        (shape == SetShape::Mesh ? set.placement.translate : set.center) += d;
+        (shape == SetShape::Mesh || shape == SetShape::Image ? set.placement.translate : set.center) += d;
         edits.update(SetCondensationSet{f, set});
         break;
       }
