@@ -89,7 +89,7 @@ TEST(VolumeRenderGui, SetsOnlyProjectOpensInVolumeModeAndMatchesTheCommandLine) 
   };
   const double same = meanAbsDifference(screen, cli("same.png", ""));
   RecordProperty("preview_vs_cli_mean_abs_difference", std::to_string(same));
-  EXPECT_LT(same, 2.0) << "the preview and the command line differ (mean difference in 8-bit levels)";
+  EXPECT_LT(same, 1.0) << "the preview and the command line differ (mean difference in 8-bit levels)";
   // A picture of other settings is told apart: the comparison can fail.
   fs::path thinner = home.path / "thin.gridifs";
   std::string text = fileText(file);
@@ -101,7 +101,9 @@ TEST(VolumeRenderGui, SetsOnlyProjectOpensInVolumeModeAndMatchesTheCommandLine) 
                 std::to_string(h)),
             0);
   const double other = meanAbsDifference(screen, composedAndScaled(out, project.render.background, image.w, image.h));
-  EXPECT_GT(other, 4.0 * same + 2.0);
+  // (Most of the picture is background, so the mean difference of a thinner cloud is a few levels.)
+  EXPECT_GT(other, 5.0 * same);
+  EXPECT_GT(other, 1.0);
 }
 
 TEST(VolumeRenderGui, TheChosenModeIsSavedAndReopened) {
