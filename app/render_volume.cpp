@@ -139,8 +139,8 @@ int runVolumeRender(const std::string& file, const std::string& out, const Rende
                                   "^3 voxels, " + volume_render_io::volumeDisplayName(settings.display) + " display";
   writeVolumeImage(image, out, description);
   if (!quiet)
-    std::fprintf(stderr, "volume %d^3 in %.2f s, ray march %dx%d in %.2f s\n", settings.resolution, volumeSeconds, width,
-                 height, marchSeconds);
+    std::fprintf(stderr, "volume %d^3 in %.2f s, ray march %dx%d in %.2f s\n", settings.resolution, volumeSeconds,
+                 width, height, marchSeconds);
   return kSuccess;
 }
 

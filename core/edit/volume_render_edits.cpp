@@ -27,8 +27,10 @@ void SetTransferFunction::apply(Project& project) const {
   for (std::size_t i = 0; i < stops.size(); ++i) {
     const std::string path = "render.volume.transfer[" + std::to_string(i) + "]";
     const TransferStop& s = stops[i];
-    if (!(s.density >= 0.0 && s.density <= 1.0)) throw ModelError(path + ".density", "expected a number between 0 and 1");
-    if (!(s.opacity >= 0.0 && s.opacity <= 1.0)) throw ModelError(path + ".opacity", "expected a number between 0 and 1");
+    if (!(s.density >= 0.0 && s.density <= 1.0))
+      throw ModelError(path + ".density", "expected a number between 0 and 1");
+    if (!(s.opacity >= 0.0 && s.opacity <= 1.0))
+      throw ModelError(path + ".opacity", "expected a number between 0 and 1");
     for (int c = 0; c < 3; ++c)
       if (!(s.color[c] >= 0.0 && s.color[c] <= 1000.0))
         throw ModelError(path + ".color", "expected 3 numbers between 0 and 1000");
@@ -47,9 +49,8 @@ void SetVolumeRenderResolution::apply(Project& project) const {
 
 StoredPreviewMode previewModeOnOpen(const Project& project) {
   if (project.preview_mode) return *project.preview_mode;
-  const bool allSets = !project.functions.empty() &&
-                       std::all_of(project.functions.begin(), project.functions.end(),
-                                   [](const Function& f) { return isSetKind(f.kind); });
+  const bool allSets = !project.functions.empty() && std::all_of(project.functions.begin(), project.functions.end(),
+                                                                 [](const Function& f) { return isSetKind(f.kind); });
   if (allSets) return StoredPreviewMode::Volume;
   switch (project.render.mode) {
     case DisplayMode::Flame:
@@ -62,8 +63,6 @@ StoredPreviewMode previewModeOnOpen(const Project& project) {
   return StoredPreviewMode::ZBuffer;
 }
 
-std::vector<TransferStop> defaultTransferStops() {
-  return {{0.0, Vec3(1.0), 0.0}, {1.0, Vec3(1.0), 1.0}};
-}
+std::vector<TransferStop> defaultTransferStops() { return {{0.0, Vec3(1.0), 0.0}, {1.0, Vec3(1.0), 1.0}}; }
 
 }  // namespace gridifs

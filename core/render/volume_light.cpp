@@ -69,7 +69,8 @@ std::vector<float> lightOpticalDepth(const std::vector<float>& density, int n, c
               const int ub = ib + (corner & 1), uc = ic + (corner >> 1);
               if (ub < 0 || uc < 0 || ub >= n || uc >= n) continue;
               const float w = ((corner & 1) ? wb : 1.0f - wb) * ((corner >> 1) ? wc : 1.0f - wc);
-              const std::size_t q = std::size_t(previous) * stride[a] + std::size_t(ub) * stride[b] + std::size_t(uc) * stride[c];
+              const std::size_t q =
+                  std::size_t(previous) * stride[a] + std::size_t(ub) * stride[b] + std::size_t(uc) * stride[c];
               dq += w * depth[q];
               rq += w * d[q];
             }

@@ -33,7 +33,8 @@ void paletteAt(const std::vector<float>& palette, float d, float* rgb) {
   const int i = std::min(int(x), 254);
   const float w = x - float(i);
   for (int c = 0; c < 3; ++c)
-    rgb[c] = palette[3 * std::size_t(i) + std::size_t(c)] * (1.0f - w) + palette[3 * std::size_t(i + 1) + std::size_t(c)] * w;
+    rgb[c] = palette[3 * std::size_t(i) + std::size_t(c)] * (1.0f - w) +
+             palette[3 * std::size_t(i + 1) + std::size_t(c)] * w;
 }
 
 /// A per-pixel offset of the first step in [0, 1), so the step pattern reads as fine noise instead
@@ -72,7 +73,8 @@ inline Sample sampleAt(const ShadedVolume& s, float u, float v, float w) {
       const int a = i + (corner & 1), b = j + ((corner >> 1) & 1), d = k + ((corner >> 2) & 1);
       const bool inside = a >= 0 && b >= 0 && d >= 0 && a < n && b < n && d < n;
       for (int ch = 0; ch < 4; ++ch)
-        c[corner][ch] = inside ? base[sx * std::size_t(a) + sy * std::size_t(b) + sz * std::size_t(d) + std::size_t(ch)] : 0.0f;
+        c[corner][ch] =
+            inside ? base[sx * std::size_t(a) + sy * std::size_t(b) + sz * std::size_t(d) + std::size_t(ch)] : 0.0f;
     }
   }
   float out[4];
@@ -228,7 +230,8 @@ ShadedVolume shadeVolume(const ClassifiedVolume& c, const VolumeLook& look, int 
   for (int k = 0; k < n; ++k)
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) {
-        if (!(out.voxels[4 * (std::size_t(i) + std::size_t(n) * (std::size_t(j) + std::size_t(n) * std::size_t(k))) + 3] > 0.0f))
+        if (!(out.voxels[4 * (std::size_t(i) + std::size_t(n) * (std::size_t(j) + std::size_t(n) * std::size_t(k))) +
+                         3] > 0.0f))
           continue;
         const int idx[3] = {i, j, k};
         for (int a = 0; a < 3; ++a) {
@@ -242,7 +245,8 @@ ShadedVolume shadeVolume(const ClassifiedVolume& c, const VolumeLook& look, int 
               const int a = i + di, b = j + dj, d = k + dk;
               const int ba = std::clamp(a < 0 ? 0 : a / B, 0, nb - 1), bb = std::clamp(b < 0 ? 0 : b / B, 0, nb - 1),
                         bd = std::clamp(d < 0 ? 0 : d / B, 0, nb - 1);
-              out.occupied[std::size_t(ba) + std::size_t(nb) * (std::size_t(bb) + std::size_t(nb) * std::size_t(bd))] = 1;
+              out.occupied[std::size_t(ba) + std::size_t(nb) * (std::size_t(bb) + std::size_t(nb) * std::size_t(bd))] =
+                  1;
             }
       }
   return out;

@@ -38,7 +38,7 @@ struct VolumeLook {
   Vec3 towardLight{0.0, 0.0, 1.0};  // direction towards the light (need not be unit length)
   Vec3 lightColor{1.0};             // colour × intensity
   double ambient = 0.2;
-  Vec3 background{0.0};             // what the preview composites over (the image keeps alpha)
+  Vec3 background{0.0};  // what the preview composites over (the image keeps alpha)
   bool operator==(const VolumeLook&) const = default;
   /// Whether two looks classify a volume alike (stage 1: transfer function, palette, light direction).
   bool classifiesLike(const VolumeLook& other) const {
@@ -63,9 +63,9 @@ ClassifiedVolume classifyVolume(const VolumeSource& source, const VolumeLook& lo
 /// empty neighbour keeps the colour) and extinction per world unit, and the occupied blocks.
 struct ShadedVolume {
   int n = 0;
-  std::vector<float> voxels;  // 4 per voxel
-  int blocks = 0;             // blocks per axis (kVolumeBlock voxels each)
-  std::vector<std::uint8_t> occupied;  // blocks³: whether a sample in the block can see extinction
+  std::vector<float> voxels;                    // 4 per voxel
+  int blocks = 0;                               // blocks per axis (kVolumeBlock voxels each)
+  std::vector<std::uint8_t> occupied;           // blocks³: whether a sample in the block can see extinction
   int lo[3] = {0, 0, 0}, hi[3] = {-1, -1, -1};  // voxel index bounds of the extinction (inclusive)
 };
 inline constexpr int kVolumeBlock = 8;
@@ -85,8 +85,8 @@ inline constexpr float kEmptyVolumeDepth = 1e10f;
 
 /// Stage 3: the ray march at width × height through `camera`. `threads` ≤ 0: every hardware
 /// thread; the image does not depend on the count. Throws ModelError for a bad camera or size.
-VolumeImage marchVolume(const ShadedVolume& shaded, const VolumeLook& look, const Camera& camera, int width,
-                        int height, int threads);
+VolumeImage marchVolume(const ShadedVolume& shaded, const VolumeLook& look, const Camera& camera, int width, int height,
+                        int threads);
 
 /// All three stages.
 VolumeImage renderVolumeImage(const VolumeSource& source, const VolumeLook& look, const Camera& camera, int width,

@@ -5,7 +5,6 @@
 // classify (transfer function and the shadow's optical depth), shade, march, and the CPU seconds
 // of all threads for the whole render (render_cpu_seconds).
 #include <benchmark/benchmark.h>
-
 #include <sys/resource.h>
 
 #include <chrono>

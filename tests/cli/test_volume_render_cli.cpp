@@ -2,9 +2,8 @@
 // sets, Sokolov & Gentil) lit and as an X-ray, PNG with alpha and EXR with depth; bad
 // render.volume values, an absurd resolution and wrong options → exit 2, one sentence, nothing
 // written.
-#include <gtest/gtest.h>
-
 #include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
 
 #include <algorithm>
 #include <fstream>
@@ -61,7 +60,8 @@ const std::string kSmall = " --resolution 32 --width 96 --height 72 -q";
 TEST(VolumeRenderCli, LitPngHasAlphaAndXrayIsGrey) {
   ScratchDir dir("volume-render-cli");
   const fs::path lit = dir.path / "lit.png", xray = dir.path / "xray.png";
-  CommandResult r = runGridifs("render " + quote(cloudCopy(dir).string()) + " --mode volume -o " + quote(lit.string()) + kSmall);
+  CommandResult r =
+      runGridifs("render " + quote(cloudCopy(dir).string()) + " --mode volume -o " + quote(lit.string()) + kSmall);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const Image a = readImage(lit);
   ASSERT_EQ(a.channels, 4);
@@ -95,10 +95,12 @@ TEST(VolumeRenderCli, ExrCarriesDepthAndTheSameSettingsGiveTheSameImage) {
   const fs::path project = cloudCopy(dir, R"({"transfer": [{"density": 0, "color": [0.2, 0.3, 0.8], "opacity": 0},
       {"density": 0.3, "color": [1, 0.8, 0.6], "opacity": 0.6}, {"density": 1, "color": [1, 1, 1], "opacity": 1}]})");
   const fs::path a = dir.path / "a.exr", b = dir.path / "b.exr";
-  ASSERT_EQ(runGridifs("render " + quote(project.string()) + " --mode volume -o " + quote(a.string()) + kSmall).exitCode, 0);
-  ASSERT_EQ(runGridifs("render " + quote(project.string()) + " --mode volume --threads 1 -o " + quote(b.string()) + kSmall)
-                .exitCode,
-            0);
+  ASSERT_EQ(
+      runGridifs("render " + quote(project.string()) + " --mode volume -o " + quote(a.string()) + kSmall).exitCode, 0);
+  ASSERT_EQ(
+      runGridifs("render " + quote(project.string()) + " --mode volume --threads 1 -o " + quote(b.string()) + kSmall)
+          .exitCode,
+      0);
   const Image ia = readImage(a), ib = readImage(b);
   ASSERT_EQ(ia.names, (std::vector<std::string>{"R", "G", "B", "A", "Z"}));
   EXPECT_EQ(ia.pixels, ib.pixels);
@@ -122,8 +124,8 @@ TEST(VolumeRenderCli, BadInputExitsTwoNamingTheProblemAndWritesNothing) {
   ScratchDir dir("volume-render-cli");
   const fs::path out = dir.path / "out.png";
   const auto expectRefused = [&](const fs::path& project, const std::string& options, const std::string& needle) {
-    const CommandResult r = runGridifs("render " + quote(project.string()) + " --mode volume -o " + quote(out.string()) +
-                                       " -q" + options);
+    const CommandResult r =
+        runGridifs("render " + quote(project.string()) + " --mode volume -o " + quote(out.string()) + " -q" + options);
     EXPECT_EQ(r.exitCode, 2) << options << ": " << r.err;
     EXPECT_NE(r.err.find(needle), std::string::npos) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
@@ -138,7 +140,8 @@ TEST(VolumeRenderCli, BadInputExitsTwoNamingTheProblemAndWritesNothing) {
   expectRefused(cloudCopy(dir), " --resolution 100000", "--resolution");
   expectRefused(cloudCopy(dir), " --resolution 64 --frames 0:3", "--frames");
   const fs::path tif = dir.path / "out.tif";
-  const CommandResult r = runGridifs("render " + quote(cloudCopy(dir).string()) + " --mode volume -o " + quote(tif.string()));
+  const CommandResult r =
+      runGridifs("render " + quote(cloudCopy(dir).string()) + " --mode volume -o " + quote(tif.string()));
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_FALSE(fs::exists(tif));
 }

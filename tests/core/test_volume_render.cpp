@@ -25,7 +25,8 @@ VolumeSource ball(int n, const Vec3& c, double r) {
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) {
         const Vec3 p(-1.0 + (2 * i + 1.0) / n, -1.0 + (2 * j + 1.0) / n, -1.0 + (2 * k + 1.0) / n);
-        if (glm::length(p - c) <= r) s.density[std::size_t(i) + std::size_t(n) * (std::size_t(j) + std::size_t(n) * k)] = 1.0f;
+        if (glm::length(p - c) <= r)
+          s.density[std::size_t(i) + std::size_t(n) * (std::size_t(j) + std::size_t(n) * k)] = 1.0f;
       }
   return s;
 }
@@ -42,7 +43,9 @@ float alphaAt(const VolumeImage& image, int x, int y) {
   return image.rgba[4 * (std::size_t(y) * image.width + std::size_t(x)) + 3];
 }
 
-float redAt(const VolumeImage& image, int x, int y) { return image.rgba[4 * (std::size_t(y) * image.width + std::size_t(x))]; }
+float redAt(const VolumeImage& image, int x, int y) {
+  return image.rgba[4 * (std::size_t(y) * image.width + std::size_t(x))];
+}
 
 TEST(VolumeRaymarch, ABallIsOpaqueInTheMiddleAndEmptyAtTheCorners) {
   VolumeLook look;

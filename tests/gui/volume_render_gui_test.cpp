@@ -21,8 +21,8 @@ fs::path cloudCopy(const TempFolder& home, const std::string& volume = "") {
   return file;
 }
 
-/// The PNG (straight alpha in the file, premultiplied as OpenImageIO reads it) over `background`, sampled at the centres of a w × h grid the way a
-/// linearly filtered texture is drawn (texel centres at (i + 0.5) / width).
+/// The PNG (straight alpha in the file, premultiplied as OpenImageIO reads it) over `background`, sampled at the
+/// centres of a w × h grid the way a linearly filtered texture is drawn (texel centres at (i + 0.5) / width).
 std::vector<float> composedAndScaled(const fs::path& png, const gridifs::Vec3& background, int w, int h) {
   OIIO::ImageBuf buf(png.string());
   const OIIO::ImageSpec& spec = buf.spec();
@@ -34,7 +34,8 @@ std::vector<float> composedAndScaled(const fs::path& png, const gridifs::Vec3& b
     for (int c = 0; c < 3; ++c) {
       const float a = src[4 * p + 3];
       // The preview's 8-bit picture of the same premultiplied colour.
-      rgb[3 * p + c] = std::round(std::clamp(src[4 * p + c] + float(background[c]) * (1.0f - a), 0.0f, 1.0f) * 255.0f) / 255.0f;
+      rgb[3 * p + c] =
+          std::round(std::clamp(src[4 * p + c] + float(background[c]) * (1.0f - a), 0.0f, 1.0f) * 255.0f) / 255.0f;
     }
   std::vector<float> out(std::size_t(w) * h * 3);
   for (int y = 0; y < h; ++y)
@@ -96,10 +97,10 @@ TEST(VolumeRenderGui, SetsOnlyProjectOpensInVolumeModeAndMatchesTheCommandLine) 
   text.replace(text.find("\"density_scale\": 16"), 19, "\"density_scale\": 2");
   std::ofstream(thinner) << text;
   const fs::path out = home.path / "thin.png";
-  ASSERT_EQ(run(std::string(GRIDIFS_EXE) + " render '" + thinner.string() + "' --mode volume -q -o '" + out.string() +
-                "' --resolution " + std::to_string(n) + " --width " + std::to_string(w) + " --height " +
-                std::to_string(h)),
-            0);
+  ASSERT_EQ(
+      run(std::string(GRIDIFS_EXE) + " render '" + thinner.string() + "' --mode volume -q -o '" + out.string() +
+          "' --resolution " + std::to_string(n) + " --width " + std::to_string(w) + " --height " + std::to_string(h)),
+      0);
   const double other = meanAbsDifference(screen, composedAndScaled(out, project.render.background, image.w, image.h));
   // (Most of the picture is background, so the mean difference of a thinner cloud is a few levels.)
   EXPECT_GT(other, 5.0 * same);
@@ -121,6 +122,7 @@ TEST(VolumeRenderGui, TheChosenModeIsSavedAndReopened) {
   }
   EXPECT_EQ(gridifs::loadProject(file).preview_mode, gridifs::StoredPreviewMode::Mesh);
   App again(home, {file.string()});
-  const nlohmann::json probe = again.waitFor([](const nlohmann::json& j) { return j["preview_modes"]["mode"] == "mesh"; });
+  const nlohmann::json probe =
+      again.waitFor([](const nlohmann::json& j) { return j["preview_modes"]["mode"] == "mesh"; });
   EXPECT_EQ(probe["preview_modes"]["mode"], "mesh");
 }

@@ -121,7 +121,8 @@ void TransferEditor::draw(ModellerState& state, EditQueue& edits) {
     if (edges[widest + 1] - edges[widest] > 2e-3) {
       more.push_back(stopAt(stops, d));
       more.back().density = d;
-      std::sort(more.begin(), more.end(), [](const TransferStop& a, const TransferStop& b) { return a.density < b.density; });
+      std::sort(more.begin(), more.end(),
+                [](const TransferStop& a, const TransferStop& b) { return a.density < b.density; });
       edits.commit(SetTransferFunction{more});
     }
   }

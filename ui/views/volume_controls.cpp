@@ -6,8 +6,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "ui/views/preview_modes.h"
 #include "ui/base/widgets.h"
+#include "ui/views/preview_modes.h"
 
 namespace gridifs::ui {
 

@@ -29,7 +29,8 @@ constexpr int kPointPasses = 8;
 std::uint64_t volumeBytes(const Project& project, int n) {
   const std::uint64_t voxels = std::uint64_t(n) * std::uint64_t(n) * std::uint64_t(n);
   const std::uint64_t functions = project.functions.size();
-  return voxels * (4 + 12 + 4 + 12 + 20 + 16 + 4 * (2 + functions)) * 2;  // ×2: a frame in flight and one on the UI side
+  return voxels * (4 + 12 + 4 + 12 + 20 + 16 + 4 * (2 + functions)) *
+         2;  // ×2: a frame in flight and one on the UI side
 }
 
 }  // namespace

@@ -147,11 +147,11 @@ class VolumePreview {
   std::string paletteRef_;
   std::vector<float> palette_;
   std::filesystem::path paletteFolder_;
-  FramePtr source_;  // the newest computed frame taken (what a classification starts from)
-  std::optional<Classified> classified_;  // the newest classification of source_
+  FramePtr source_;                         // the newest computed frame taken (what a classification starts from)
+  std::optional<Classified> classified_;    // the newest classification of source_
   std::optional<ImageInput> imageRequest_;  // the picture last asked for
   bool imageCurrent_ = false;               // texture_ holds the picture of imageRequest_
-  int threads_ = 1;  // the threads of the last request
+  int threads_ = 1;                         // the threads of the last request
   StreamTexture texture_;
 
   // Last: destroyed first, they stop and join their workers before the rest goes.
