@@ -18,6 +18,7 @@
 #include "app/render_parts.h"
 #include "app/render_sequence.h"
 #include "app/render_setup.h"
+#include "app/render_volume.h"
 #include "app/shaded_image_output.h"
 #include "base/atomic_file.h"
 #include "base/color_space.h"
@@ -366,7 +367,7 @@ int renderFrame(const Project& loaded, const std::string& file, const std::strin
   flame.motionFade = flame.motionFadeOption.value_or(loaded.animation ? loaded.animation->motion_fade : 0.0);
   DisplayMode mode = DisplayMode::ZBuffer;
   if (flame.mode && !parseDisplayMode(*flame.mode, mode))
-    throw CliError(kBadInput, "--mode must be zbuffer, flame or shaded, not \"" + *flame.mode + "\"");
+    throw CliError(kBadInput, "--mode must be zbuffer, flame, shaded or volume, not \"" + *flame.mode + "\"");
   std::vector<RenderSetup> setups;
   const double time = overrides.time.value_or(loaded.time);
   for (int i = 0; i < blur; ++i) {
@@ -457,7 +458,16 @@ int renderSequence(const std::string& file, const std::string& pattern, const Re
 }
 
 int runRender(const std::string& file, const std::string& out, const RenderOverrides& overrides, bool quiet,
-              const FlameOptions& flame, const SequenceOptions& sequence, const std::optional<std::string>& partText) {
+              const FlameOptions& flame, const SequenceOptions& sequence, const std::optional<std::string>& partText,
+              std::optional<int> volumeResolution) {
+  if (flame.mode && *flame.mode == "volume") {
+    if (partText || sequence.frames || sequence.motionBlur || sequence.video)
+      throw CliError(kBadInput, "--mode volume renders one image: leave out --part, --frames, --motion-blur and --video");
+    if (flame.anyFlameSetting() || flame.bitDepth || flame.transparent || flame.motionFadeOption)
+      throw CliError(kBadInput, "the flame options apply to --mode flame, not to --mode volume");
+    return runVolumeRender(file, out, overrides, volumeResolution, quiet);
+  }
+  if (volumeResolution) throw CliError(kBadInput, "--resolution applies to --mode volume only");
   std::optional<RenderPart> part;
   if (partText) {
     part = parsePart(*partText);
@@ -526,7 +536,7 @@ const VerbRegistration kRender{
     {"render",
      "FILE -o OUT.(png|exr|tif) [--width W --height H --samples N --seed S --threads T "
      "--device auto|gpu|cpu --time T --quality Q] [--frames A:B --motion-blur N --motion-fade F --video OUT.mp4] "
-     "[--mode zbuffer|flame|shaded --palette P --hue H --density-display log|linear|binary --supersample S "
+     "[--mode zbuffer|flame|shaded|volume --resolution N --palette P --hue H --density-display log|linear|binary --supersample S "
      "--filter-radius R --estimator-radius R --estimator-minimum M --estimator-curve C --bit-depth B "
      "--transparent]: render headlessly",
      [](CLI::App& app) {
@@ -538,8 +548,13 @@ const VerbRegistration kRender{
        auto flame = std::make_shared<FlameOptions>();
        app.add_option("--mode", flame->mode,
                       "zbuffer (nearest surface), flame (log density, palette colors) or shaded "
-                      "(lights, shadows, occlusion, fog; EXR adds N.x N.y N.z AO shadow); "
+                      "(lights, shadows, occlusion, fog; EXR adds N.x N.y N.z AO shadow) or volume (the density "
+                      "volume ray-marched from render.volume, lit or X-ray; PNG/EXR with alpha, EXR adds Z); "
                       "default: the project's render.mode");
+       auto volumeResolution = std::make_shared<std::optional<int>>();
+       app.add_option("--resolution", *volumeResolution,
+                      "volume mode: voxels per axis of the density volume, 16 to 512 (default: render.volume.resolution, "
+                      "or 128)");
        app.add_option("--palette", flame->palette,
                       "flame palette: a built-in name (ember, ice, ...), flam3:N, "
                       "flam3:NAME or file:PATH.json (default: the project's)");
@@ -578,7 +593,8 @@ const VerbRegistration kRender{
                       "render part K of N (K/N, 0 ≤ K < N) of the sample budget and write its accumulation to "
                       "-o OUT.gpart (with --frames: a pattern, one part file per frame); gridifs merge "
                       "makes the image");
-       return [=] { return runRender(a->file, a->out, a->overrides, a->quiet, *flame, *sequence, *part); };
+       return [=] { return runRender(a->file, a->out, a->overrides, a->quiet, *flame, *sequence, *part, *volumeResolution);
+       };
      }}};
 
 }  // namespace

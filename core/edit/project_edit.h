@@ -20,6 +20,7 @@
 #include "edit/settings_edits.h"
 #include "edit/shading_edits.h"
 #include "edit/variation_edits.h"
+#include "edit/volume_render_edits.h"
 
 namespace gridifs {
 
@@ -52,6 +53,8 @@ using ProjectEdit = std::variant<
     // transitions and free-form IFS (edit/matrix_edits.h)
     SetTransitionPreset, RemoveTransitions, SetTransitionWeight, SetMatrixEntry, MoveControlPoint, ApplyFreeFormPreset,
     BackToGridIfs, AddControlPoint, RemoveControlPoint, MapOntoControlNet,
+    // the volume ray march and the stored preview mode (edit/volume_render_edits.h)
+    SetVolumeDensityScale, SetVolumeDisplay, SetTransferFunction, SetVolumeRenderResolution, SetPreviewMode,
     // the whole project
     ReplaceProject>;
 

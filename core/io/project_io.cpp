@@ -15,6 +15,7 @@
 #include "io/settings_json.h"
 #include "io/shading_io.h"
 #include "io/volume_io.h"
+#include "io/volume_render_io.h"
 #include "model/operation_table.h"
 #include "model/project_time.h"
 #include "model/settings_tables.h"
@@ -268,6 +269,7 @@ Project parseProject(const std::string& text) {
     }
     if (auto fl = it->find("flame"); fl != it->end()) r.flame = readSettings(flameSettingsTable(), *fl, "render.flame");
     if (auto sh = it->find("shading"); sh != it->end()) r.shading = readShadingSettings(*sh, "render.shading");
+    if (auto vr = it->find("volume"); vr != it->end()) r.volume = volume_render_io::readVolumeRender(*vr, "render.volume");
   }
   auto functions = root.find("functions");
   if (functions == root.end()) fail("functions", "the project has no functions");
@@ -299,6 +301,7 @@ Project parseProject(const std::string& text) {
   readAnimation(root, project);
   project.space = free_form_io::readSpace(root);
   project.volume = volume_io::readVolume(root);
+  project.preview_mode = volume_render_io::readPreviewMode(root);
   validateProject(project);
   checkTrackPaths(project);
   return project;
@@ -316,6 +319,7 @@ std::string serializeProject(const Project& project) {
   // Written when it says something: files that never used shading save as they always have.
   if (r.mode == DisplayMode::Shaded || !(r.shading == ShadingSettings{}))
     root["render"]["shading"] = writeShadingSettings(r.shading);
+  if (r.volume) root["render"]["volume"] = volume_render_io::writeVolumeRender(*r.volume);
   ordered_json functions = ordered_json::array();
   for (const Function& f : project.functions) functions.push_back(writeFunction(f));
   free_form_io::writeSpace(project, root);
@@ -323,6 +327,7 @@ std::string serializeProject(const Project& project) {
   if (project.final_function) root["final"] = writeFunction(*project.final_function);
   if (!project.transitions.empty()) root["transitions"] = project.transitions;
   volume_io::writeVolume(project, root);
+  volume_render_io::writeView(project, root);
   writeAnimation(project, root);
   return root.dump(2) + "\n";
 }

@@ -8,6 +8,7 @@
 #include "model/free_form_space.h"
 #include "model/function.h"
 #include "model/shading_settings.h"
+#include "model/volume_render_settings.h"
 #include "model/volume_settings.h"
 
 namespace gridifs {
@@ -36,6 +37,8 @@ struct RenderSettings {
   DisplayMode mode = DisplayMode::ZBuffer;  // "render.mode": "zbuffer" | "flame" | "shaded"
   FlameSettings flame;                      // "render.flame": the flame display (Draves & Reckase 2003, §4–8)
   ShadingSettings shading;                  // "render.shading": lights, occlusion, fog, depth of field
+  /// "render.volume": the volume ray march (render --mode volume, the Volume preview); absent: defaults.
+  std::optional<VolumeRenderSettings> volume;
   bool operator==(const RenderSettings&) const = default;
 };
 
@@ -61,6 +64,8 @@ struct Project {
   std::optional<FreeFormSpace> space;
   /// "volume": the density volume's settings (Sokolov & Gentil, §3.4); absent until first set.
   std::optional<VolumeSettings> volume;
+  /// "view.preview_mode": the modeller's preview mode when last saved; absent: chosen on open.
+  std::optional<StoredPreviewMode> preview_mode;
   bool operator==(const Project&) const = default;
 };
 

@@ -11,8 +11,10 @@
 namespace gridifs {
 
 /// Optical depth towards the light of each voxel centre of an n³ volume covering X = [-1, 1]³
-/// (`density` indexed x + n·(y + n·z), trilinearly interpolated between voxel centres), in world
-/// units: a uniform density 1 over a path of length L gives L. `towardLight` need not be unit
+/// (`density` indexed x + n·(y + n·z), interpolated between voxel centres), in world units: a
+/// uniform density 1 over a path of length L gives L. One sweep of slices along the light's
+/// dominant axis (bilinear between slices, trapezoid rule along the ray): exact for lights along
+/// an axis, O(n³). `towardLight` need not be unit
 /// length (zero: no shadowing, all 0). Voxels far from any density (more than one voxel) are
 /// left 0: a ray march never weighs them. `threads` ≤ 0: every hardware thread.
 std::vector<float> lightOpticalDepth(const std::vector<float>& density, int n, const Vec3& towardLight, int threads);

@@ -3,6 +3,8 @@
 // worked out by hand for fields whose trilinear interpolation is piecewise linear.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
 #include <cstddef>
 
 #include "render/volume_light.h"
@@ -48,6 +50,48 @@ TEST(VolumeLight, ABlockerShadowsWhatLiesBehindIt) {
   EXPECT_LT(sideways[at(n, 4, 12, 12)], 0.5 * 2.0 / n);
   // Far from any density nothing is computed (the ray march never weighs it).
   EXPECT_EQ(depth[at(n, 2, 2, 2)], 0.0f);
+}
+
+/// The optical depth by brute force: a fine midpoint march of the trilinear field towards the light.
+double marchedDepth(const std::vector<float>& d, int n, int i, int j, int k, Vec3 l) {
+  l /= std::sqrt(l.x * l.x + l.y * l.y + l.z * l.z);
+  auto at3 = [&](int a, int b, int c) -> double {
+    if (a < 0 || b < 0 || c < 0 || a >= n || b >= n || c >= n) return 0.0;
+    return d[at(n, a, b, c)];
+  };
+  const double h = 0.02;
+  double sum = 0.0;
+  for (double t = 0.5 * h; t < 2.0 * n; t += h) {
+    const double x = i + l.x * t, y = j + l.y * t, z = k + l.z * t;
+    const int x0 = int(std::floor(x)), y0 = int(std::floor(y)), z0 = int(std::floor(z));
+    const double fx = x - x0, fy = y - y0, fz = z - z0;
+    double v = 0.0;
+    for (int c = 0; c < 8; ++c)
+      v += ((c & 1) ? fx : 1 - fx) * ((c & 2) ? fy : 1 - fy) * ((c & 4) ? fz : 1 - fz) *
+           at3(x0 + (c & 1), y0 + ((c >> 1) & 1), z0 + ((c >> 2) & 1));
+    sum += v * h;
+  }
+  return sum * 2.0 / n;
+}
+
+TEST(VolumeLight, AnObliqueLightMatchesAMarchOfTheInterpolatedField) {
+  // A smooth blob: the sweep's interpolation between slices stays within a few percent of the
+  // exact integral of the trilinear field (bilinear interpolation of the depth slice by slice
+  // smooths its peak a little: about 4% low at the blob's centre here).
+  const int n = 32;
+  std::vector<float> density(std::size_t(n * n * n));
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const double x = (i - 15.5) / 8.0, y = (j - 15.5) / 8.0, z = (k - 15.5) / 8.0;
+        density[at(n, i, j, k)] = float(std::exp(-(x * x + y * y + z * z)));
+      }
+  const Vec3 light(0.8, -0.5, 0.35);
+  const std::vector<float> depth = lightOpticalDepth(density, n, light, 2);
+  for (const auto& v : {std::array<int, 3>{16, 16, 16}, {8, 20, 12}, {20, 10, 22}, {4, 28, 6}}) {
+    const double expected = marchedDepth(density, n, v[0], v[1], v[2], light);
+    EXPECT_NEAR(depth[at(n, v[0], v[1], v[2])], expected, 0.07 * expected + 1e-3) << v[0] << " " << v[1] << " " << v[2];
+  }
 }
 
 TEST(VolumeLight, NoLightOrAMismatchedVolumeLeavesEverythingLit) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "edit/node_picking.h"
+#include "edit/volume_render_edits.h"
 #include "model/project_time.h"
 #include "model/stack_evaluator.h"
 
@@ -23,6 +24,26 @@ void ModellerState::forgetDocumentViewState() {
   finalSelection.clear();
   finalFunctionMessage.clear();
   clampIndices();
+  // A project opens the way it was saved; one of sets only (median and condensation functions)
+  // in the Volume mode, the only one that can show it.
+  switch (previewModeOnOpen(document.project())) {
+    case StoredPreviewMode::Flame:
+      previewMode = PreviewMode::Flame;
+      break;
+    case StoredPreviewMode::Shaded:
+      previewMode = PreviewMode::Shaded;
+      break;
+    case StoredPreviewMode::Mesh:
+      previewMode = PreviewMode::Mesh;
+      break;
+    case StoredPreviewMode::Volume:
+      previewMode = PreviewMode::Volume;
+      break;
+    case StoredPreviewMode::ZBuffer:
+      previewMode = PreviewMode::ZBuffer;
+      break;
+  }
+  ++documentOpens;
 }
 
 void ModellerState::clampIndices() {

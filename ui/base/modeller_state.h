@@ -78,6 +78,9 @@ class ModellerState {
   bool showMatrices = false;  // the Matrices window (transitions, free-form control points and matrices)
   int maximizedGridView = -1;  // -1: the four views; 0..3: one of them fills the window
   PreviewMode previewMode = PreviewMode::ZBuffer;
+  /// Bumped when a project is opened or made (forgetDocumentViewState): what the preview mode was
+  /// set to then is the project's, not the artist's choice.
+  std::uint64_t documentOpens = 0;
   bool previewPaused = false;
   /// The timeline (ui/panels/timeline_panel.cpp): whether it plays, and from which time at which clock.
   struct Playback {

@@ -73,6 +73,7 @@ void PreviewModes::buildToolbar(ModellerState& state, EditQueue& edits) {
       projectMode_ = want;
     }
   }
+  recordPreviewMode(state, edits);
   // The mode's controls on a row of their own under the switch, kept (empty) in the modes without
   // controls: the image below keeps its size when the mode changes, so the chaos game does not
   // restart, and five modes and their controls do not fit one row of a narrow preview.
@@ -81,9 +82,31 @@ void PreviewModes::buildToolbar(ModellerState& state, EditQueue& edits) {
   else if (state.previewMode == PreviewMode::Mesh)
     drawMeshControls(state);
   else if (state.previewMode == PreviewMode::Volume)
-    drawVolumeControls(state);
+    drawVolumeControls(state, edits);
   else
     ImGui::Dummy(ImVec2(1.0f, ImGui::GetFrameHeight()));
+}
+
+void PreviewModes::recordPreviewMode(ModellerState& state, EditQueue& edits) {
+  // The mode a project was opened in (or a menu's undo of render.mode put it in) is the
+  // baseline; a switch from it is the artist's choice, stored in view.preview_mode without an
+  // undo step (a way of looking, not a change of the IFS; it still makes the project unsaved).
+  if (!recordedKnown_ || state.documentOpens != recordedOpen_) {
+    recordedKnown_ = true;
+    recordedOpen_ = state.documentOpens;
+    recordedMode_ = state.previewMode;
+    return;
+  }
+  if (state.previewMode == recordedMode_) return;
+  recordedMode_ = state.previewMode;
+  const StoredPreviewMode stored = state.previewMode == PreviewMode::Flame    ? StoredPreviewMode::Flame
+                                   : state.previewMode == PreviewMode::Shaded ? StoredPreviewMode::Shaded
+                                   : state.previewMode == PreviewMode::Mesh   ? StoredPreviewMode::Mesh
+                                   : state.previewMode == PreviewMode::Volume ? StoredPreviewMode::Volume
+                                                                              : StoredPreviewMode::ZBuffer;
+  if (state.document.project().preview_mode == stored) return;
+  Document* document = &state.document;
+  edits.after([document, stored] { document->applyUnrecorded(SetPreviewMode{stored}); });
 }
 
 void PreviewModes::drawMeshControls(ModellerState& state) {
@@ -206,28 +229,23 @@ bool PreviewModes::drawVolume(ModellerState& state, RenderTarget& target, ViewRe
   const Project& p = state.document.project();
   const glm::ivec2 size(width, height);
   if (!visible) return true;
-  if (!volumeDirty_ && size == volumeSize_ && state.document.revision() == volumeRevision_ &&
-      volume_.view.densityScale == volumeScale_ && moving == volumeMoving_)
-    return true;
   // An N³ volume has no detail finer than a few pixels per voxel: the ray march runs at most
-  // 8 pixels per voxel across (4 while the camera moves) and is scaled up, which keeps software
-  // GL responsive and costs nothing visible.
+  // 8 pixels per voxel across (4 while the camera moves) and is scaled up, which keeps the
+  // picture responsive and costs nothing visible.
   const int side = std::max({width, height, 1});
   const int cap = std::max(volume_.resolution(), kVolumePreviewResolutions[0]) * (moving ? 4 : 8);
   const double scale = std::min(1.0, double(cap) / double(side));
   const int lw = std::max(1, int(std::lround(width * scale))), lh = std::max(1, int(std::lround(height * scale)));
-  volumeTarget_.resize(lw, lh);
-  glBindTexture(GL_TEXTURE_2D, volumeTarget_.texture());
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glBindTexture(GL_TEXTURE_2D, 0);
-  volume_.draw(volumeTarget_, p);
+  volume_.requestImage(p, lw, lh);
+  if (!volumeDirty_ && size == volumeSize_ && state.document.revision() == volumeRevision_) return true;
   target.resize(width, height);
-  renderer.drawImage(target, volumeTarget_.texture(), lw, lh, glm::vec3(p.render.background));
-  volumeMoving_ = moving;
+  if (volume_.texture() && volume_.error().empty())
+    renderer.drawImage(target, volume_.texture(), volume_.imageWidth(), volume_.imageHeight(),
+                       glm::vec3(p.render.background));
+  else
+    renderer.drawImage(target, 0, 0, 0, glm::vec3(p.render.background));
   volumeSize_ = size;
   volumeRevision_ = state.document.revision();
-  volumeScale_ = volume_.view.densityScale;
   volumeDirty_ = false;
   return true;
 }
@@ -240,7 +258,7 @@ std::string PreviewModes::overlayMessage(const ModellerState& state) const {
 bool PreviewModes::busy() const {
   if (shownMode_ == PreviewMode::Flame) return flame_.developer().busy();
   if (shownMode_ == PreviewMode::Mesh) return mesh_.building();
-  if (shownMode_ == PreviewMode::Volume) return volume_.computing();
+  if (shownMode_ == PreviewMode::Volume) return volume_.busy();
   return false;
 }
 
@@ -260,6 +278,10 @@ nlohmann::json PreviewModes::probeJson() const {
           {"shaded_error", shadedError_},
           {"volume_computing", volume_.computing()},
           {"volume_finished", volume_.finished()},
+          {"volume_picture_final", volume_.pictureFinal()},
+          {"volume_images", volume_.images()},
+          {"volume_image_width", volume_.imageWidth()},
+          {"volume_image_height", volume_.imageHeight()},
           {"volume_done", volume_.done()},
           {"volume_total", volume_.total()},
           {"volume_resolution", volume_.resolution()},

@@ -17,6 +17,7 @@
 #include "ui/base/modeller_state.h"
 #include "ui/views/palette_editor.h"
 #include "ui/gl/view_renderer.h"
+#include "ui/views/transfer_editor.h"
 #include "ui/views/volume_preview.h"
 
 namespace gridifs::ui {
@@ -64,17 +65,21 @@ class PreviewModes {
   void drawFlameControls(ModellerState& state, EditQueue& edits);  // flame_controls.cpp
   void drawTonePopup(ModellerState& state, EditQueue& edits, const FlameSettings& f);  // flame_controls.cpp
   void drawMeshControls(ModellerState& state);
-  void drawVolumeControls(ModellerState& state);  // volume_controls.cpp
+  void drawVolumeControls(ModellerState& state, EditQueue& edits);  // volume_controls.cpp
+  /// Records the preview mode the artist chose in the project (view.preview_mode, no undo step).
+  void recordPreviewMode(ModellerState& state, EditQueue& edits);
+  PreviewMode recordedMode_ = PreviewMode::ZBuffer;
+  bool recordedKnown_ = false;
+  const Document* recordedDocument_ = nullptr;
+  std::uint64_t recordedOpen_ = 0;
 
   FlameDisplay flame_;
   MeshPreview mesh_;
   VolumePreview volume_;
+  TransferEditor transfer_;
   // What the volume target shows, to redraw only on change.
   std::uint64_t volumeRevision_ = 0;  // Document::revision(): any edit redraws (light, background, palette)
   glm::ivec2 volumeSize_{0, 0};
-  float volumeScale_ = -1.0f;
-  bool volumeMoving_ = false;
-  RenderTarget volumeTarget_;  // the ray march at a resolution fitted to the volume's, then scaled up
   bool volumeDirty_ = true;
   PaletteCatalog palettes_;
   PaletteEditor paletteEditor_;

@@ -1,18 +1,21 @@
 // The volume mode's controls in the preview's second toolbar row: the preview resolution, the
-// density scale and the computation's progress or why it failed.
+// density scale, the display (lit or X-ray), the transfer function's window and the computation's
+// progress or why it failed. Density scale, display and transfer function are the project's
+// render.volume, which `gridifs render --mode volume` draws the same way.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
-#include "ui/views/preview_modes.h"
 #include "ui/base/widgets.h"
+#include "ui/views/preview_modes.h"
 
 namespace gridifs::ui {
 
-void PreviewModes::drawVolumeControls(ModellerState& state) {
+void PreviewModes::drawVolumeControls(ModellerState& state, EditQueue& edits) {
   const float em = ImGui::GetFontSize();
   VolumeView& view = volume_.view;
   const Project& project = state.document.project();
+  const VolumeRenderSettings settings = project.render.volume.value_or(VolumeRenderSettings{});
   const int cap = VolumePreview::effectiveResolution(project, kMaxVolumeResolution);
   char current[32];
   std::snprintf(current, sizeof current, "%d³", VolumePreview::effectiveResolution(project, view.resolution));
@@ -27,21 +30,36 @@ void PreviewModes::drawVolumeControls(ModellerState& state) {
     ImGui::EndCombo();
   }
   state.probe.item("preview.volume.resolution");
-  char help[200];
+  char help[240];
   std::snprintf(help, sizeof help,
                 "Preview resolution: voxels per side of the previewed volume (at most the project's volume "
-                "resolution, %d; lower fills faster)",
-                cap);
+                "resolution, %d; lower fills faster). The command line renders at %d³ (render.volume.resolution)",
+                cap, settings.resolution);
   contextHelp(state, help);
   ImGui::SameLine();
   ImGui::SetNextItemWidth(em * 8.0f);
-  float scale = view.densityScale;
-  if (ImGui::SliderFloat("##volumedensity", &scale, 0.5f, 500.0f, "density %.3g", ImGuiSliderFlags_Logarithmic))
-    view.densityScale = std::clamp(scale, 0.5f, 500.0f);
+  float scale = float(settings.density_scale);
+  const bool scaled =
+      ImGui::SliderFloat("##volumedensity", &scale, 0.5f, 500.0f, "density %.3g", ImGuiSliderFlags_Logarithmic);
+  gestureItem(edits, "Volume density scale", scaled, SetVolumeDensityScale{std::clamp(double(scale), 0.5, 500.0)});
   state.probe.item("preview.volume.density");
   contextHelp(state,
               "Density scale: how much light the densest voxels absorb per unit of length (higher: thicker, "
               "darker shadows); only the picture changes, not the volume");
+  ImGui::SameLine();
+  int display = settings.display == VolumeDisplay::Xray ? 1 : 0;
+  static const char* displays[] = {"Lit", "X-ray"};
+  ImGui::SetNextItemWidth(em * 4.5f);
+  if (ImGui::Combo("##volumedisplay", &display, displays, 2))
+    edits.commit(SetVolumeDisplay{display == 1 ? VolumeDisplay::Xray : VolumeDisplay::Lit});
+  state.probe.item("preview.volume.display");
+  contextHelp(state,
+              "Lit: emission and absorption with one light and self-shadowing. X-ray: grey summed density, as in "
+              "Sokolov & Gentil's figures");
+  ImGui::SameLine();
+  if (ImGui::Button(settings.transfer.empty() ? "Transfer..." : "Transfer*...")) transfer_.toggle();
+  state.probe.item("preview.volume.transfer");
+  contextHelp(state, "The transfer function: density to colour and opacity (saved in the project)");
   ImGui::SameLine();
   if (!volume_.error().empty()) {
     ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "cannot show the volume");
@@ -53,6 +71,7 @@ void PreviewModes::drawVolumeControls(ModellerState& state) {
   } else if (volume_.resolution() > 0) {
     ImGui::TextDisabled("%d³ voxels", volume_.resolution());
   }
+  transfer_.draw(state, edits);
 }
 
 }  // namespace gridifs::ui

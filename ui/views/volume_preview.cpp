@@ -3,11 +3,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <glm/gtc/type_ptr.hpp>
-#include <glm/mat4x4.hpp>
 
 #include "base/system_memory.h"
-#include "render/volume_light.h"
+#include "flame/palette.h"
+#include "model/palette_reference.h"
 #include "volume/measure_attractor.h"
 
 namespace gridifs::ui {
@@ -15,7 +14,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-/// How often the worker publishes a partial volume: the shadow precompute and the upload cost a
+/// How often the worker publishes a partial volume: the classification and the ray march cost a
 /// little each time, and a few pictures a second read as a steady fill.
 constexpr double kPublishSeconds = 0.35;
 
@@ -24,38 +23,23 @@ constexpr double kPublishSeconds = 0.35;
 constexpr int kPointPasses = 8;
 
 /// Bytes a preview at resolution n needs at most: the worker's counts, colour sums, the published
-/// frame (density, colour, shadow) and the voxel sets of a set iteration (the current set, its
-/// image and one voxelized set per function, each at worst every voxel).
+/// frame (density, colour), its classification (albedo, opacity, shadow) and shading (4 per
+/// voxel), and the voxel sets of a set iteration (the current set, its image and one voxelized
+/// set per function, each at worst every voxel).
 std::uint64_t volumeBytes(const Project& project, int n) {
   const std::uint64_t voxels = std::uint64_t(n) * std::uint64_t(n) * std::uint64_t(n);
   const std::uint64_t functions = project.functions.size();
-  return voxels * (4 + 12 + 4 + 12 + 4 + 4 * (2 + functions)) * 2;  // ×2: a frame in flight and one on the UI side
-}
-
-void setTextureParameters(GLenum target, GLint filter) {
-  glTexParameteri(target, GL_TEXTURE_MIN_FILTER, filter);
-  glTexParameteri(target, GL_TEXTURE_MAG_FILTER, filter);
-  glTexParameteri(target, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTexParameteri(target, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  glTexParameteri(target, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+  return voxels * (4 + 12 + 4 + 12 + 20 + 16 + 4 * (2 + functions)) *
+         2;  // ×2: a frame in flight and one on the UI side
 }
 
 }  // namespace
 
 VolumePreview::VolumePreview() = default;
-
-VolumePreview::~VolumePreview() {
-  const GLuint textures[] = {density_, color_, lightDepth_, palette_};
-  for (GLuint t : textures)
-    if (t) glDeleteTextures(1, &t);
-  if (vao_) glDeleteVertexArrays(1, &vao_);
-}
+VolumePreview::~VolumePreview() = default;
 
 Vec3 VolumePreview::lightDirection(const Project& project) {
-  const auto& lights = project.render.shading.lights;
-  // The key light of the shading settings, so the volume and the shaded display agree; a project
-  // without lights gets the shading settings' default key light.
-  const Vec3 d = lights.empty() ? ShadingLight{}.direction : lights[0].direction;
+  const Vec3 d = volumeLookOf(project).towardLight;
   const double length = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
   return length > 0.0 ? d / length : Vec3(0.0, 0.0, 1.0);
 }
@@ -65,14 +49,32 @@ int VolumePreview::effectiveResolution(const Project& project, int requested) {
   return std::clamp(std::min(requested, cap), kMinVolumeResolution, kMaxVolumeResolution);
 }
 
+VolumeLook VolumePreview::lookOf(const Project& project) {
+  VolumeLook look = volumeLookOf(project);
+  // The palette colours the density where the functions share one colour (no colour volume).
+  if (palette_.empty() || paletteRef_ != project.render.flame.palette) {
+    paletteRef_ = project.render.flame.palette;
+    Palette palette;
+    try {
+      palette = resolvePalette(paletteRef_, paletteFolder_);
+    } catch (const std::exception&) {
+      palette = builtinPalette(kDefaultPaletteRef);  // the flame controls say why
+    }
+    palette_.clear();
+    for (const Rgb& c : palette.colors) palette_.insert(palette_.end(), {c.r, c.g, c.b});
+  }
+  look.palette = palette_;
+  return look;
+}
+
 void VolumePreview::update(const Document& document, int threads) {
   const Project& project = document.project();
   paletteFolder_ = document.path().parent_path();
-  const Vec3 light = lightDirection(project);
-  if (!(light == light_)) {
-    light_ = light;
-    relightSource();  // the volume on screen gets its shadow again; a running one's frames on arrival
-  }
+  const VolumeLook look = lookOf(project);
+  const bool reclassify = !haveLook_ || !look.classifiesLike(look_);
+  look_ = look;
+  haveLook_ = true;
+  if (reclassify) classifySource();  // the volume on screen gets its new look; a running one's frames on arrival
   const int resolution = effectiveResolution(project, view.resolution);
   // The measure depends on the functions (and their sets) and on the volume settings; the Document
   // bumps the geometry revision when a new time changes a function (keys, fields, calculators).
@@ -86,7 +88,6 @@ void VolumePreview::update(const Document& document, int threads) {
   requestedResolution_ = resolution;
   ++restarts_;
   setIteration_ = usesSetIteration(project);
-  hasColor_ = hasColorVolume(project);
 
   compute_.cancel();  // stale work stops at its next poll
   error_.clear();
@@ -102,7 +103,6 @@ void VolumePreview::update(const Document& document, int threads) {
   request.folder = document.path().parent_path();
   request.resolution = resolution;
   request.threads = threads_ = std::max(1, threads);
-  request.light = light_;
   compute_.submit(std::move(request));
 }
 
@@ -112,8 +112,8 @@ void VolumePreview::suspend() {
   haveRequest_ = false;
 }
 
-void VolumePreview::relightSource() {
-  if (source_) relight_.submit({source_, light_, threads_});
+void VolumePreview::classifySource() {
+  if (source_) classify_.submit({source_, look_, threads_});
 }
 
 void VolumePreview::compute(const Request& request, ComputeJob::Context& context) {
@@ -188,31 +188,47 @@ void VolumePreview::compute(const Request& request, ComputeJob::Context& context
 
 void VolumePreview::publish(const Request& request, ComputeJob::Context& context, const std::vector<float>& counts,
                             const std::vector<float>& colorSums, bool final) {
-  if (context.stale()) return;  // spare the shadow of a volume nobody will see
+  if (context.stale()) return;  // spare the copy of a volume nobody will see
   auto frame = std::make_shared<Frame>();
-  frame->n = request.resolution;
+  frame->volume.n = request.resolution;
   frame->final = final;
-  frame->density = counts;
+  frame->volume.density = counts;
   float largest = 0.0f;
   for (float c : counts) largest = std::max(largest, c);
   if (!colorSums.empty()) {
-    frame->color.resize(colorSums.size());
+    frame->volume.color.resize(colorSums.size());
     for (std::size_t v = 0; v < counts.size(); ++v)
       for (int c = 0; c < 3; ++c)
-        frame->color[3 * v + std::size_t(c)] = counts[v] > 0.0f ? colorSums[3 * v + std::size_t(c)] / counts[v] : 0.0f;
+        frame->volume.color[3 * v + std::size_t(c)] =
+            counts[v] > 0.0f ? colorSums[3 * v + std::size_t(c)] / counts[v] : 0.0f;
   }
   if (largest > 0.0f)
-    for (float& d : frame->density) d /= largest;
-  frame->light = request.light;
-  frame->lightDepth = lightOpticalDepth(frame->density, frame->n, request.light, request.threads);
+    for (float& d : frame->volume.density) d /= largest;
   context.publish(std::move(frame));
 }
 
-void VolumePreview::relight(const Relight& relight, RelightJob::Context& context) {
-  auto frame = std::make_shared<Frame>(*relight.source);
-  frame->light = relight.light;
-  frame->lightDepth = lightOpticalDepth(frame->density, frame->n, relight.light, relight.threads);
-  context.publish({relight.source, std::move(frame)});
+void VolumePreview::classify(const ClassifyInput& input, ClassifyJob::Context& context) {
+  auto volume = std::make_shared<ClassifiedVolume>(classifyVolume(input.source->volume, input.look, input.threads));
+  context.publish({input.source, input.look, std::move(volume)});
+}
+
+void VolumePreview::march(const ImageInput& input, ImageJob::Context& context) {
+  Picture picture;
+  picture.input = input;
+  try {
+    const ShadedVolume shaded = shadeVolume(*input.classified.volume, input.look, input.threads);
+    if (context.stale()) return;
+    const VolumeImage image = marchVolume(shaded, input.look, input.camera, input.width, input.height, input.threads);
+    picture.rgba = image.composited(input.look.background);
+  } catch (const std::exception&) {
+    // A degenerate camera (validated elsewhere) shows the background only.
+    picture.rgba.assign(std::size_t(input.width) * std::size_t(input.height) * 4, 255);
+    for (std::size_t p = 0; p < picture.rgba.size() / 4; ++p)
+      for (int c = 0; c < 3; ++c)
+        picture.rgba[4 * p + std::size_t(c)] =
+            std::uint8_t(std::lround(std::clamp(input.look.background[c], 0.0, 1.0) * 255.0));
+  }
+  context.publish(std::move(picture));
 }
 
 bool VolumePreview::upload() {
@@ -223,109 +239,50 @@ bool VolumePreview::upload() {
       return true;
     }
     source_ = frame;
-    // The light turned while this frame was computed: show it now, and its new shadow when ready.
-    if (frame->light == light_)
-      relight_.cancel();  // an older frame's shadow is moot
-    else
-      relightSource();
-    uploadFrame(*frame);
-    return true;
+    shownResolution_ = frame->volume.n;
+    shownFinal_ = frame->final;
+    error_.clear();
+    ++uploads_;
+    classifySource();
   }
-  if (auto relit = relight_.poll()) {
-    if (relit->value.source != source_) return false;  // a newer volume came meanwhile (it has its own shadow)
-    uploadFrame(*relit->value.frame);
-    return true;
+  if (auto classified = classify_.poll()) {
+    // Kept only when it is the newest volume in the newest look (an older one is moot).
+    if (classified->value.source == source_ && classified->value.look.classifiesLike(look_))
+      classified_ = std::move(classified->value);
   }
-  return false;
+  bool changed = false;
+  if (auto picture = image_.poll()) {
+    Picture& p = picture->value;
+    texture_.upload(p.input.width, p.input.height, p.rgba.data());
+    // Scaled up to the view: linear filtering, as a texture of the volume would be.
+    glBindTexture(GL_TEXTURE_2D, texture_.id());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    imageCurrent_ = imageRequest_ && p.input == *imageRequest_;
+    ++images_;
+    changed = true;
+  }
+  return changed;
 }
 
-void VolumePreview::uploadFrame(const Frame& frame) {
-  const GLsizei n = frame.n;
-  auto upload3d = [n](GLuint& texture, GLint internal, GLenum format, const std::vector<float>& data) {
-    if (!texture) glGenTextures(1, &texture);
-    glBindTexture(GL_TEXTURE_3D, texture);
-    setTextureParameters(GL_TEXTURE_3D, GL_LINEAR);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    glTexImage3D(GL_TEXTURE_3D, 0, internal, n, n, n, 0, format, GL_FLOAT, data.data());
-  };
-  upload3d(density_, GL_R16F, GL_RED, frame.density);
-  upload3d(lightDepth_, GL_R16F, GL_RED, frame.lightDepth);
-  hasColor_ = !frame.color.empty();
-  if (hasColor_) upload3d(color_, GL_RGB16F, GL_RGB, frame.color);
-  glBindTexture(GL_TEXTURE_3D, 0);
-  shownResolution_ = frame.n;
-  shownFinal_ = frame.final;
-  error_.clear();
-  ++uploads_;
+void VolumePreview::requestImage(const Project& project, int width, int height) {
+  if (!classified_ || !error_.empty()) return;
+  ImageInput input;
+  input.classified = *classified_;
+  input.look = look_;
+  input.camera = project.camera;
+  input.width = std::max(1, width);
+  input.height = std::max(1, height);
+  input.threads = threads_;
+  if (imageRequest_ && input == *imageRequest_) return;
+  imageRequest_ = input;
+  imageCurrent_ = false;
+  image_.submit(std::move(input));
 }
 
-void VolumePreview::draw(const RenderTarget& target, const Project& project) {
-  target.bind();
-  glDisable(GL_SCISSOR_TEST);
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_BLEND);
-  const glm::vec3 background(project.render.background);
-  glClearColor(background.x, background.y, background.z, 1.0f);
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  if (density_ && error_.empty() && shownResolution_ > 0) {
-    if (!program_) program_.emplace("fullscreen.vert.glsl", "volume.frag.glsl");
-    // The palette colours the density where the functions share one colour (no colour volume).
-    if (!palette_ || paletteRef_ != project.render.flame.palette) {
-      paletteRef_ = project.render.flame.palette;
-      Palette palette;
-      try {
-        palette = resolvePalette(paletteRef_, paletteFolder_);
-      } catch (const std::exception&) {
-        palette = builtinPalette(kDefaultPaletteRef);  // the flame controls say why
-      }
-      std::vector<float> rgb;
-      for (const Rgb& c : palette.colors) rgb.insert(rgb.end(), {c.r, c.g, c.b});
-      if (!palette_) glGenTextures(1, &palette_);
-      glBindTexture(GL_TEXTURE_2D, palette_);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-      glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGB16F, Palette::kSize, 1, 0, GL_RGB, GL_FLOAT, rgb.data());
-    }
-    try {
-      const OrbitCamera camera(project.camera, target.width(), target.height());
-      const glm::mat4 inverse = glm::inverse(camera.projectionF() * camera.viewF());
-      const auto& lights = project.render.shading.lights;
-      const glm::vec3 lightColor = lights.empty() ? glm::vec3(1.0f) : glm::vec3(lights[0].color * lights[0].intensity);
-      const GLuint program = program_->id();
-      glUseProgram(program);
-      glUniform4f(program_->uniform("uRect"), -1.0f, -1.0f, 1.0f, 1.0f);
-      glUniformMatrix4fv(program_->uniform("uInverseViewProjection"), 1, GL_FALSE, glm::value_ptr(inverse));
-      glUniform3f(program_->uniform("uLightColor"), lightColor.x, lightColor.y, lightColor.z);
-      glUniform1f(program_->uniform("uAmbient"), float(project.render.shading.ambient));
-      glUniform3f(program_->uniform("uBackground"), background.x, background.y, background.z);
-      glUniform1f(program_->uniform("uDensityScale"), view.densityScale);
-      glUniform1f(program_->uniform("uStep"), 1.0f / float(shownResolution_));  // half a voxel
-      glUniform1i(program_->uniform("uHasColor"), hasColor_ ? 1 : 0);
-      glUniform1i(program_->uniform("uDensity"), 0);
-      glUniform1i(program_->uniform("uLightDepth"), 1);
-      glUniform1i(program_->uniform("uColor"), 2);
-      glUniform1i(program_->uniform("uPalette"), 3);
-      glActiveTexture(GL_TEXTURE0);
-      glBindTexture(GL_TEXTURE_3D, density_);
-      glActiveTexture(GL_TEXTURE1);
-      glBindTexture(GL_TEXTURE_3D, lightDepth_);
-      glActiveTexture(GL_TEXTURE2);
-      glBindTexture(GL_TEXTURE_3D, hasColor_ ? color_ : density_);
-      glActiveTexture(GL_TEXTURE3);
-      glBindTexture(GL_TEXTURE_2D, palette_);
-      if (!vao_) glGenVertexArrays(1, &vao_);
-      glBindVertexArray(vao_);
-      glDrawArrays(GL_TRIANGLES, 0, 3);
-      glBindVertexArray(0);
-      glUseProgram(0);
-      glActiveTexture(GL_TEXTURE0);
-    } catch (const std::exception&) {
-      // A degenerate camera (validated elsewhere) draws the background only.
-    }
-  }
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+bool VolumePreview::pictureFinal() const {
+  return finished() && imageCurrent_ && classified_ && classified_->source == source_ &&
+         classified_->look.classifiesLike(look_) && imageRequest_ && imageRequest_->look == look_;
 }
 
 }  // namespace gridifs::ui
