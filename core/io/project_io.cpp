@@ -14,6 +14,7 @@
 #include "io/operation_json.h"
 #include "io/settings_json.h"
 #include "io/shading_io.h"
+#include "io/states_io.h"
 #include "io/volume_io.h"
 #include "model/operation_table.h"
 #include "model/project_time.h"
@@ -296,6 +297,7 @@ Project parseProject(const std::string& text) {
       project.transitions.push_back(std::move(weights));
     }
   }
+  project.states = states_io::readStates(root, project.functions);
   readAnimation(root, project);
   project.space = free_form_io::readSpace(root);
   project.volume = volume_io::readVolume(root);
@@ -322,6 +324,7 @@ std::string serializeProject(const Project& project) {
   root["functions"] = functions;
   if (project.final_function) root["final"] = writeFunction(*project.final_function);
   if (!project.transitions.empty()) root["transitions"] = project.transitions;
+  states_io::writeStates(project, root);
   volume_io::writeVolume(project, root);
   writeAnimation(project, root);
   return root.dump(2) + "\n";
