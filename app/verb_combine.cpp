@@ -1,5 +1,5 @@
-// gridifs combine A.gridifs B.gridifs --op union|concat|product|shuffle|intersection|composition|matrix-union -o C.gridifs: two projects
-// as one (core/model/ifs_combination.h says what each operation builds).
+// gridifs combine A.gridifs B.gridifs --op union|concat|product|shuffle|intersection|composition|matrix-union -o
+// C.gridifs: two projects as one (core/model/ifs_combination.h says what each operation builds).
 #include "app/cli.h"
 #include "app/render_setup.h"
 #include "io/project_io.h"
@@ -11,8 +11,9 @@ namespace {
 int runCombine(const std::string& first, const std::string& second, const std::string& opName, const std::string& out) {
   CombineOp op;
   if (!parseCombineOp(opName, op))
-    throw CliError(kBadInput, "--op must be union, concat, product, shuffle, intersection, composition or matrix-union, not \"" + opName +
-                                         "\"");
+    throw CliError(kBadInput,
+                   "--op must be union, concat, product, shuffle, intersection, composition or matrix-union, not \"" +
+                       opName + "\"");
   checkOutputPath(out, {"gridifs"}, "the combined project");
   const Project a = loadForVerb(first), b = loadForVerb(second);
   Project combined;
@@ -32,7 +33,9 @@ int runCombine(const std::string& first, const std::string& second, const std::s
 }
 
 const VerbRegistration kCombine{
-    {"combine", "A.gridifs B.gridifs --op union|concat|product|shuffle|intersection|composition|matrix-union -o C.gridifs: two projects as one",
+    {"combine",
+     "A.gridifs B.gridifs --op union|concat|product|shuffle|intersection|composition|matrix-union -o C.gridifs: two "
+     "projects as one",
      [](CLI::App& app) {
        auto a = std::make_shared<std::string>();
        auto b = std::make_shared<std::string>();

@@ -46,8 +46,8 @@ std::vector<std::uint32_t> readStateList(const json& obj, const char* key, std::
   for (std::size_t k = 0; k < it->size(); ++k) {
     const std::int64_t q = readInteger((*it)[k], item(path, k), 0, std::int64_t(kMaxFileStates) - 1);
     if (std::size_t(q) >= n)
-      fail(item(path, k), "state " + std::to_string(q) + " does not exist (the matrix has " + std::to_string(n) +
-                              " states)");
+      fail(item(path, k),
+           "state " + std::to_string(q) + " does not exist (the matrix has " + std::to_string(n) + " states)");
     out.push_back(std::uint32_t(q));
   }
   std::sort(out.begin(), out.end());
@@ -73,7 +73,8 @@ std::optional<IfsStates> readStates(const json& root, const std::vector<Function
     const std::string rp = item("states.matrix", i);
     if (!row.is_array()) fail(rp, std::string("expected an array of entries, found ") + typeName(row));
     if (row.size() != n)
-      fail(rp, "expected " + std::to_string(n) + " entries (the matrix is square), found " + std::to_string(row.size()));
+      fail(rp,
+           "expected " + std::to_string(n) + " entries (the matrix is square), found " + std::to_string(row.size()));
     s.matrix.emplace_back();
     for (std::size_t j = 0; j < n; ++j) {
       const json& entry = row[j];

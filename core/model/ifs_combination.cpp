@@ -205,11 +205,14 @@ using MatrixOp = IfsMatrix (*)(const IfsMatrix&, const IfsMatrix&);
 /// A's points, so the words read B's part first (outermost): the paper's H̃_B ◇ H̃_A.
 IfsMatrix concatBThenA(const IfsMatrix& a, const IfsMatrix& b) { return concatenation(b, a); }
 
-/// The result of `op` on the two projects' matrices, stored as states.
-void storeStates(Project& out, const Project& a, const Project& b, const std::vector<std::uint32_t>& mapB,
-                 MatrixOp op) {
+/// The result of `op` on the two projects' matrices, stored as states. Throws ModelError (empty
+/// path) when the operation does not apply or its result has no attractor.
+void storeStates(Project& out, const Project& a, const Project& b, const std::vector<std::uint32_t>& mapB, MatrixOp op,
+                 const char* name) {
   const IfsMatrix ma = ifsMatrixOf(a), mb = relabel(ifsMatrixOf(b), mapB);
-  setIfsMatrix(out, op(ma, mb));
+  const IfsMatrix result = op(ma, mb);
+  requireAttractor(result, name);
+  setIfsMatrix(out, result);
 }
 
 Project matrixCombination(const Project& a, const Project& b, CombineOp op) {
@@ -258,11 +261,7 @@ Project matrixCombination(const Project& a, const Project& b, CombineOp op) {
   } else {
     out = joinFunctions(a, b, byName, mapB, name);
   }
-  try {
-    storeStates(out, a, b, mapB, fn);
-  } catch (const ModelError& e) {
-    fail(std::string("the ") + name + " has no attractor: " + e.message());
-  }
+  storeStates(out, a, b, mapB, fn, name);
   return out;
 }
 
@@ -289,8 +288,8 @@ const char* combineOpName(CombineOp op) {
 }
 
 bool parseCombineOp(const std::string& name, CombineOp& out) {
-  for (CombineOp op : {CombineOp::Union, CombineOp::Concat, CombineOp::Product, CombineOp::Shuffle, CombineOp::Intersection,
-                      CombineOp::Composition, CombineOp::MatrixUnion})
+  for (CombineOp op : {CombineOp::Union, CombineOp::Concat, CombineOp::Product, CombineOp::Shuffle,
+                       CombineOp::Intersection, CombineOp::Composition, CombineOp::MatrixUnion})
     if (name == combineOpName(op)) {
       out = op;
       return true;

@@ -318,10 +318,10 @@ bool hasAttractor(const IfsMatrix& m) {
 }
 
 void requireAttractor(const IfsMatrix& m, const std::string& what) {
-  if (m.initial.empty()) fail("the " + what + " has no initial state (Q_I is empty), so its attractor is empty");
-  if (m.final.empty()) fail("the " + what + " has no final state (Q_F is empty), so its attractor is empty");
+  if (m.initial.empty()) fail("the " + what + " has no initial state (Q_I is empty), so it has no attractor");
+  if (m.final.empty()) fail("the " + what + " has no final state (Q_F is empty), so it has no attractor");
   if (trimmed(lettersOnly(m)).initial.empty())
-    fail("the " + what + " has no path from an initial to a final state, so its attractor is empty");
+    fail("the " + what + " has no path from an initial to a final state, so it has no attractor");
   if (!hasAttractor(m))
     fail("the " + what + " accepts only finitely many words (no cycle between its initial and final states), so " +
          "it has no attractor");

@@ -14,9 +14,9 @@ void checkStateList(const std::vector<std::uint32_t>& list, std::size_t n, const
     throw ModelError(path, std::string("the ") + name + " state set is empty, so the attractor would be empty");
   for (std::size_t k = 0; k < list.size(); ++k)
     if (list[k] >= n)
-      throw ModelError(path + "[" + std::to_string(k) + "]",
-                       "state " + std::to_string(list[k]) + " does not exist (the matrix has " + std::to_string(n) +
-                           " states)");
+      throw ModelError(
+          path + "[" + std::to_string(k) + "]",
+          "state " + std::to_string(list[k]) + " does not exist (the matrix has " + std::to_string(n) + " states)");
 }
 
 }  // namespace
@@ -128,7 +128,8 @@ StateExpansion expandStates(const Project& project, const std::vector<char>& act
   const auto components = stateComponents(m);
   for (std::size_t c = 0; c < components.size(); ++c)
     for (std::size_t q : components[c]) componentOf[q] = c;
-  for (std::size_t k = 0; k < x.function.size(); ++k) x.internal.push_back(componentOf[x.from[k]] == componentOf[x.to[k]]);
+  for (std::size_t k = 0; k < x.function.size(); ++k)
+    x.internal.push_back(componentOf[x.from[k]] == componentOf[x.to[k]]);
   const std::size_t v = x.function.size();
   x.follows.assign(v, std::vector<char>(v, 0));
   for (std::size_t a = 0; a < v; ++a)
