@@ -69,8 +69,9 @@ TEST(CombineMatricesCli, EveryOperationOnGridProjects) {
       const Project c = loadProject(out);
       ASSERT_TRUE(c.states) << op;
       EXPECT_TRUE(c.transitions.empty());
+      // --samples counts chaos-game steps: with states the skip phase and hidden steps plot nothing.
       const auto points = exportPoints(out, dir.path / "c.ply", 3000);
-      EXPECT_GT(points.size(), 2000u) << op;
+      EXPECT_GT(points.size(), 150u) << op;
     }
   }
   // The corner with itself entrywise is the corner: every point in f1's corner copy.
@@ -97,7 +98,7 @@ TEST(CombineMatricesCli, FreeFormProjectsWithTheSameControlPoints) {
     const auto out = dir.path / (std::string(op) + ".gridifs");
     const CommandResult r = combine(dir.path / "a.gridifs", dir.path / "a.gridifs", op, out);
     ASSERT_EQ(r.exitCode, 0) << op << ": " << r.err;
-    EXPECT_GT(exportPoints(out, dir.path / "c.ply", 2000).size(), 1000u) << op;
+    EXPECT_GT(exportPoints(out, dir.path / "c.ply", 2000).size(), 400u) << op;
   }
 }
 
