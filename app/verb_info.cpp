@@ -7,10 +7,44 @@
 #include "app/render_device_option.h"
 #include "model/contractivity.h"
 #include "model/free_form.h"
+#include "model/state_expansion.h"
 #include "model/transition_matrix.h"
 
 namespace gridifs::cli {
 namespace {
+
+/// The strongly connected components of a project's useful states (reachable from Q_I and reaching
+/// Q_F), in the file's state numbers; `cyclic` says whether a component reads words of every length
+/// (a part of the attractor) or is passed through once.
+struct StateComponent {
+  std::vector<std::size_t> states;
+  bool cyclic = false;
+};
+
+std::vector<StateComponent> stateComponentsOf(const Project& p) {
+  std::vector<StateComponent> out;
+  if (!p.states) return out;
+  std::vector<std::size_t> kept;
+  const IfsMatrix useful = trimmed(toIfsMatrix(*p.states), &kept);
+  for (const auto& component : stateComponents(useful)) {
+    StateComponent c;
+    for (std::size_t s : component) c.states.push_back(kept[s]);
+    c.cyclic = component.size() > 1 || !useful.entries[component[0]][component[0]].empty();
+    out.push_back(std::move(c));
+  }
+  return out;
+}
+
+std::string stateList(const std::vector<std::size_t>& states) {
+  std::string list = "{";
+  for (std::size_t k = 0; k < states.size(); ++k) list += (k ? " " : "") + std::to_string(states[k]);
+  return list + "}";
+}
+
+template <class T>
+std::vector<std::size_t> widen(const std::vector<T>& v) {
+  return std::vector<std::size_t>(v.begin(), v.end());
+}
 
 struct FunctionReport {
   const Function* function;
@@ -55,6 +89,7 @@ int runInfo(const std::string& file, bool asJson, const std::optional<std::strin
   bool allContractive = true;
   for (const auto& r : reports) allContractive &= r.function->muted || r.contractivity.bound < 1.0;
   const auto components = transitionComponents(p);
+  const auto stateComps = stateComponentsOf(p);
   if (asJson) {
     nlohmann::ordered_json out;
     out["file"] = file;
@@ -82,7 +117,15 @@ int runInfo(const std::string& file, bool asJson, const std::optional<std::strin
     out["functions"] = list;
     out["transitions"] = !p.transitions.empty();
     if (p.space) out["control_points"] = p.space->control_points.size();
-    out["strongly_connected"] = components.size() <= 1;
+    out["strongly_connected"] = components.size() <= 1 && stateComps.size() <= 1;
+    if (p.states) {
+      nlohmann::ordered_json comps = nlohmann::ordered_json::array();
+      for (const auto& c : stateComps) comps.push_back({{"states", c.states}, {"cyclic", c.cyclic}});
+      out["states"] = {{"count", p.states->matrix.size()},
+                       {"initial", p.states->initial},
+                       {"final", p.states->final},
+                       {"components", comps}};
+    }
     out["contractive"] = allContractive;
     out["render_device"] = gpu ? "gpu" : "cpu";
     out["render_device_detail"] = deviceLine;
@@ -113,6 +156,13 @@ int runInfo(const std::string& file, bool asJson, const std::optional<std::strin
       std::printf("  free-form space: %zu control points (contractivity of a matrix: its contraction of the simplex)\n",
                   p.space->control_points.size());
     if (!p.transitions.empty()) std::printf("  transition matrix: %zu x %zu\n", p.transitions.size(), p.transitions.size());
+    if (p.states) {
+      std::printf("  states: %zu, initial %s, final %s\n", p.states->matrix.size(),
+                  stateList(widen(p.states->initial)).c_str(), stateList(widen(p.states->final)).c_str());
+      for (const auto& c : stateComps)
+        std::printf("  strongly connected component %s: %s\n", stateList(c.states).c_str(),
+                    c.cyclic ? "a cycle (part of the attractor)" : "passed through once (no cycle)");
+    }
   }
   if (components.size() > 1) {
     std::string list;
@@ -126,6 +176,13 @@ int runInfo(const std::string& file, bool asJson, const std::optional<std::strin
                  "attractor are only reached transiently.\n",
                  list.c_str());
   }
+  std::size_t cyclic = 0;
+  for (const auto& c : stateComps) cyclic += c.cyclic;
+  if (cyclic > 1)
+    std::fprintf(stderr,
+                 "warning: the state graph has %zu strongly connected parts with cycles: the chaos game reaches "
+                 "each from its own chains, restarted regularly.\n",
+                 cyclic);
   for (std::size_t i = 0; i < reports.size(); ++i) {
     const auto& r = reports[i];
     if (!r.function->muted && r.contractivity.bound >= 1.0 && r.function->kind == FunctionKind::Matrix)

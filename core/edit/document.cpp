@@ -198,7 +198,8 @@ void Document::changed(const Project& before) {
   };
   // The control points of a free-form IFS are geometry too: every matrix function plots through them.
   if (now.functions != before.functions || now.final_function != before.final_function ||
-      now.transitions != before.transitions || now.space != before.space || (now.time != before.time && readsTime(now)))
+      now.transitions != before.transitions || now.states != before.states || now.space != before.space ||
+      (now.time != before.time && readsTime(now)))
     revisions_.geometry = revision_;
   if (now.camera != before.camera) revisions_.camera = revision_;
   if (!sameRenderInput(now.render, before.render)) revisions_.render = revision_;

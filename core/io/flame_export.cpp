@@ -93,6 +93,10 @@ FlameExport exportFlame(const Project& project, const std::filesystem::path& pro
     throw ModelError("space",
                      "a free-form (control point) IFS has no flame form: its maps act on barycentric "
                      "coordinates, not on the plane");
+  if (project.states)
+    throw ModelError("states",
+                     "a flame genome has no states: its chaos matrix says which xform may follow which, and "
+                     "cannot hold an IFS matrix with initial and final states");
   FlameExport out;
   // A project with flame variations lives in the flame's own coordinates (X's plane z = 0 is the
   // flame plane, seen from below: see isNativeGenome); its maps are written as they are.

@@ -9,11 +9,12 @@
 #include "base/bounded_read.h"
 #include "io/animation_json.h"
 #include "io/free_form_io.h"
-#include "io/variation_io.h"
 #include "io/json_read.h"
 #include "io/operation_json.h"
 #include "io/settings_json.h"
 #include "io/shading_io.h"
+#include "io/states_io.h"
+#include "io/variation_io.h"
 #include "io/volume_io.h"
 #include "io/volume_render_io.h"
 #include "model/operation_table.h"
@@ -298,6 +299,7 @@ Project parseProject(const std::string& text) {
       project.transitions.push_back(std::move(weights));
     }
   }
+  project.states = states_io::readStates(root, project.functions);
   readAnimation(root, project);
   project.space = free_form_io::readSpace(root);
   project.volume = volume_io::readVolume(root);
@@ -326,6 +328,7 @@ std::string serializeProject(const Project& project) {
   root["functions"] = functions;
   if (project.final_function) root["final"] = writeFunction(*project.final_function);
   if (!project.transitions.empty()) root["transitions"] = project.transitions;
+  states_io::writeStates(project, root);
   volume_io::writeVolume(project, root);
   volume_render_io::writeView(project, root);
   writeAnimation(project, root);

@@ -12,6 +12,7 @@
 #include "base/text_format.h"
 #include "model/bezier_lattice.h"
 #include "model/stack_evaluator.h"
+#include "model/state_expansion.h"
 #include "model/transition_matrix.h"
 
 namespace gridifs {
@@ -64,6 +65,25 @@ DeterministicIfs snapshotWith(const Project& project, GridOf gridOf, FinalOf fin
   for (const auto& row : rows) {
     ifs.follows.emplace_back();
     for (double w : row) ifs.follows.back().push_back(w > 0.0 ? 1 : 0);
+  }
+  if (project.states) {
+    if (!ifs.condensations.empty())
+      throw ModelError("functions[" + std::to_string(ifs.condensations.front().functionIndex) + "].kind",
+                       "the deterministic algorithm does not build condensation functions together with states; "
+                       "their chaos-game points export with export-points");
+    // The maps become the virtual functions of the states, each a copy of its function's map.
+    std::vector<char> active(project.functions.size(), 0);
+    std::vector<std::size_t> mapOf(project.functions.size(), 0);
+    for (std::size_t k = 0; k < ifs.maps.size(); ++k) {
+      active[ifs.maps[k].functionIndex] = 1;
+      mapOf[ifs.maps[k].functionIndex] = k;
+    }
+    const StateExpansion x = expandStates(project, active);
+    std::vector<DeterministicMap> maps;
+    for (std::size_t f : x.function) maps.push_back(ifs.maps[mapOf[f]]);
+    ifs.maps = std::move(maps);
+    ifs.follows = x.follows;
+    for (StateStep step : x.step) ifs.last.push_back(step != StateStep::Hidden);
   }
   if (project.final_function && !project.final_function->muted) {
     ifs.finalGrid = finalOf();
@@ -158,7 +178,8 @@ DeterministicPlan planDeterministic(const DeterministicIfs& ifs, const MeshCount
       words.swap(next);
     }
     plan.copies = 0;
-    for (std::uint64_t w : words) plan.copies = add(plan.copies, w);
+    for (std::size_t b = 0; b < words.size(); ++b)
+      if (ifs.mayBeLast(b)) plan.copies = add(plan.copies, words[b]);
   }
   plan.total = {mul(plan.copies, base.vertices), mul(plan.copies, base.edges), mul(plan.copies, base.faces),
                 mul(plan.copies, base.corners)};
@@ -281,6 +302,18 @@ void buildDeterministicMesh(const DeterministicIfs& ifs, const IfsMesh& base, co
   const int n = options.depth;
   // With a transition matrix only the allowed words are built; codes[c] is copy c's address code
   // (ascending), so copies stay sorted by address as in the unrestricted case.
+  // viable[r][d]: after map d, r more maps can be applied ending with one that may be last
+  // (always, without states: every row of a transition matrix allows some map).
+  std::vector<std::vector<char>> viable(std::size_t(std::max(n, 0)) + 1, std::vector<char>(N, 1));
+  if (!ifs.last.empty()) {
+    for (std::size_t d = 0; d < N; ++d) viable[0][d] = ifs.mayBeLast(d);
+    for (std::size_t r = 1; r < viable.size(); ++r)
+      for (std::size_t d = 0; d < N; ++d) {
+        char any = 0;
+        for (std::size_t e = 0; e < N && !any; ++e) any = ifs.allows(d, e) && viable[r - 1][e];
+        viable[r][d] = any;
+      }
+  }
   std::vector<std::uint64_t> codes;
   if (!ifs.follows.empty()) {
     std::uint64_t span = 1;
@@ -295,7 +328,8 @@ void buildDeterministicMesh(const DeterministicIfs& ifs, const IfsMesh& base, co
             return;
           }
           for (std::size_t d = 0; d < N; ++d)
-            if (j == 1 || ifs.allows(previous, d)) walk(j + 1, d, code + d * scale, scale * N);
+            if ((j == 1 || ifs.allows(previous, d)) && viable[std::size_t(n - j)][d])
+              walk(j + 1, d, code + d * scale, scale * N);
         };
     walk(1, 0, 0, 1);
     std::sort(codes.begin(), codes.end());
@@ -379,11 +413,12 @@ void buildDeterministicMesh(const DeterministicIfs& ifs, const IfsMesh& base, co
               digit[std::size_t(j)] = rest % N;
               rest /= N;
               if (j > 1 && !ifs.allows(digit[std::size_t(j - 1)], digit[std::size_t(j)])) return;  // forbidden
+              if (!viable[std::size_t(depth - j)][digit[std::size_t(j)]]) return;  // no allowed word goes on
             }
             // The smallest digit ≥ from that may be applied at step j after step j − 1 (N: none).
             auto firstAllowed = [&](int j, std::size_t from) {
               for (std::size_t d = from; d < N; ++d)
-                if (j == 1 || ifs.allows(digit[std::size_t(j - 1)], d)) return d;
+                if ((j == 1 || ifs.allows(digit[std::size_t(j - 1)], d)) && viable[std::size_t(depth - j)][d]) return d;
               return N;
             };
             for (int j = fixedLevels + 1; j <= depth; ++j) digit[std::size_t(j)] = firstAllowed(j, 0);

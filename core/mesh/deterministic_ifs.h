@@ -52,8 +52,13 @@ struct DeterministicIfs {
   /// The transition matrix over `maps`: follows[a][b] when map b may be applied right after map a
   /// (Thollot et al. §3.2: only the allowed words are built). Empty: every word.
   std::vector<std::vector<char>> follows;
+  /// With an IFS matrix with states (model/state_expansion.h, the maps being its virtual
+  /// functions): last[b] when map b may be applied last, i.e. its word starts in an initial state.
+  /// Empty: every map.
+  std::vector<char> last;
   /// Whether the word applying maps digit[0], digit[1], … in that order is allowed.
   bool allows(std::size_t previous, std::size_t next) const { return follows.empty() || follows[previous][next]; }
+  bool mayBeLast(std::size_t map) const { return last.empty() || last[map]; }
 };
 
 /// Reads evaluated grids through `evaluation` (the Document's cache): call on the thread that

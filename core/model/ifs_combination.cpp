@@ -3,6 +3,8 @@
 #include <algorithm>
 
 #include "model/free_form.h"
+#include "model/ifs_matrix_ops.h"
+#include "model/state_expansion.h"
 #include "model/validation.h"
 
 namespace gridifs {
@@ -160,6 +162,109 @@ Project shuffle(const Project& a, const Project& b) {
   return out;
 }
 
+/// Both function lists (weights normalised per project) for an operation on the two matrices:
+/// `byName` makes B's functions that share a name with one of A's that function. Free-form
+/// projects must share their control points. `mapB` receives each B function's new index.
+Project joinFunctions(const Project& a, const Project& b, bool byName, std::vector<std::uint32_t>& mapB,
+                      const char* name) {
+  if (a.space && a.space->control_points != b.space->control_points)
+    fail(std::string(name) +
+         " of two free-form projects needs the same control points (their functions then act on the same space)");
+  Project out = a;
+  out.functions.clear();
+  out.transitions.clear();
+  out.states.reset();
+  const double wa = activeWeight(a), wb = activeWeight(b);
+  for (const Function& f : a.functions) {
+    Function g = f;
+    g.weight = f.weight / wa;
+    out.functions.push_back(std::move(g));
+  }
+  mapB.clear();
+  for (const Function& f : b.functions) {
+    std::size_t same = a.functions.size();
+    if (byName)
+      for (std::size_t k = 0; k < a.functions.size() && same == a.functions.size(); ++k)
+        if (a.functions[k].name == f.name) same = k;
+    if (same < a.functions.size()) {
+      mapB.push_back(std::uint32_t(same));
+      continue;
+    }
+    mapB.push_back(std::uint32_t(out.functions.size()));
+    Function g = f;
+    g.weight = f.weight / wb;
+    out.functions.push_back(std::move(g));
+  }
+  checkCount(out.functions.size(), "combined IFS");
+  return out;
+}
+
+using MatrixOp = IfsMatrix (*)(const IfsMatrix&, const IfsMatrix&);
+
+/// `concat A B` lets A's chains continue into B's maps, as it always has: B's maps are applied to
+/// A's points, so the words read B's part first (outermost): the paper's H̃_B ◇ H̃_A.
+IfsMatrix concatBThenA(const IfsMatrix& a, const IfsMatrix& b) { return concatenation(b, a); }
+
+/// The result of `op` on the two projects' matrices, stored as states. Throws ModelError (empty
+/// path) when the operation does not apply or its result has no attractor.
+void storeStates(Project& out, const Project& a, const Project& b, const std::vector<std::uint32_t>& mapB, MatrixOp op,
+                 const char* name) {
+  const IfsMatrix ma = ifsMatrixOf(a), mb = relabel(ifsMatrixOf(b), mapB);
+  const IfsMatrix result = op(ma, mb);
+  requireAttractor(result, name);
+  setIfsMatrix(out, result);
+}
+
+Project matrixCombination(const Project& a, const Project& b, CombineOp op) {
+  const char* name = combineOpName(op);
+  std::vector<std::uint32_t> mapB;
+  const bool byName = op == CombineOp::Intersection || op == CombineOp::MatrixUnion;
+  MatrixOp fn = nullptr;
+  switch (op) {
+    case CombineOp::Union:
+      fn = blockUnion;
+      break;
+    case CombineOp::Concat:
+      fn = concatBThenA;
+      break;
+    case CombineOp::Product:
+      fn = tensorProduct;
+      break;
+    case CombineOp::Shuffle:
+      fn = tensorSum;
+      break;
+    case CombineOp::Intersection:
+      fn = matrixIntersection;
+      break;
+    case CombineOp::Composition:
+      fn = matrixComposition;
+      break;
+    case CombineOp::MatrixUnion:
+      fn = matrixUnion;
+      break;
+  }
+  Project out;
+  if (op == CombineOp::Union && a.space) {
+    // Different spaces are fine for a union: the functions embed as unionOrConcat embeds them.
+    Project sa = a, sb = b;
+    sa.transitions.clear(), sb.transitions.clear(), sa.states.reset(), sb.states.reset();
+    out = unionOrConcat(sa, sb, false);
+    out.transitions.clear();
+    mapB.clear();
+    for (std::size_t k = 0; k < b.functions.size(); ++k) mapB.push_back(std::uint32_t(a.functions.size() + k));
+  } else if (op == CombineOp::Shuffle && a.space) {
+    Project sa = a, sb = b;
+    sa.transitions.clear(), sb.transitions.clear(), sa.states.reset(), sb.states.reset();
+    out = shuffle(sa, sb);
+    mapB.clear();
+    for (std::size_t k = 0; k < b.functions.size(); ++k) mapB.push_back(std::uint32_t(a.functions.size() + k));
+  } else {
+    out = joinFunctions(a, b, byName, mapB, name);
+  }
+  storeStates(out, a, b, mapB, fn, name);
+  return out;
+}
+
 }  // namespace
 
 const char* combineOpName(CombineOp op) {
@@ -172,12 +277,19 @@ const char* combineOpName(CombineOp op) {
       return "product";
     case CombineOp::Shuffle:
       return "shuffle";
+    case CombineOp::Intersection:
+      return "intersection";
+    case CombineOp::Composition:
+      return "composition";
+    case CombineOp::MatrixUnion:
+      return "matrix-union";
   }
   return "union";
 }
 
 bool parseCombineOp(const std::string& name, CombineOp& out) {
-  for (CombineOp op : {CombineOp::Union, CombineOp::Concat, CombineOp::Product, CombineOp::Shuffle})
+  for (CombineOp op : {CombineOp::Union, CombineOp::Concat, CombineOp::Product, CombineOp::Shuffle,
+                       CombineOp::Intersection, CombineOp::Composition, CombineOp::MatrixUnion})
     if (name == combineOpName(op)) {
       out = op;
       return true;
@@ -196,25 +308,29 @@ Project combineProjects(const Project& a, const Project& b, CombineOp op) {
         "the two projects have different final functions, and the combination can apply only one; make them equal "
         "or remove one");
   const char* name = combineOpName(op);
+  const bool stated = a.states || b.states;
   Project out;
   switch (op) {
     case CombineOp::Union:
-      out = unionOrConcat(a, b, false);
+      out = stated ? matrixCombination(a, b, op) : unionOrConcat(a, b, false);
       break;
     case CombineOp::Concat:
-      if (freeA)
-        fail(
-            "concat needs two grid projects: one free-form space's points cannot be fed through the other's "
-            "matrices (use union, product or shuffle)");
-      out = unionOrConcat(a, b, true);
+      // Grid projects without states keep the concat they always had (A's chains may continue
+      // into B's maps); the rest is the paper's concatenation of the matrices.
+      out = !stated && !freeA ? unionOrConcat(a, b, true) : matrixCombination(a, b, op);
       break;
     case CombineOp::Product:
+      if (freeA && stated)
+        fail("product of free-form projects steps both IFSs at once and cannot follow states; use shuffle");
+      out = freeA ? product(a, b) : matrixCombination(a, b, op);
+      break;
     case CombineOp::Shuffle:
-      if (!freeA)
-        fail(std::string(name) +
-             " needs two free-form projects (with control points); grid projects combine with "
-             "union or concat");
-      out = op == CombineOp::Product ? product(a, b) : shuffle(a, b);
+      out = freeA && !stated ? shuffle(a, b) : matrixCombination(a, b, op);
+      break;
+    case CombineOp::Intersection:
+    case CombineOp::Composition:
+    case CombineOp::MatrixUnion:
+      out = matrixCombination(a, b, op);
       break;
   }
   try {

@@ -19,6 +19,25 @@
 //           languages, §4.2) on the same space: the same sum A + B, reached by interleaving
 //           the two IFSs instead of stepping both at once.
 //
+//
+// With states (model/state_expansion.h), and for the operations below, the result is the IFS
+// matrix the paper's operation gives (model/ifs_matrix_ops.h) on the two projects' matrices
+// (ifsMatrixOf: a project without states is one state, or one state per function with transitions):
+//  union        (with states) the block matrix: the union of the two attractors.
+//  concat       (with states, or free-form projects with the same control points) as above, A's
+//               chains continue into B's maps: the words L_B·L_A (B's maps outermost), the block
+//               matrix with the identity from B's final states to A's initial ones, H̃_B ◇ H̃_A.
+//               Grid projects without states keep the concat above, which is the same attractor.
+//  product      grid projects: the tensor product H̃ ⊗ H̃′, entries H̃_ij ∪ H̃′_kl (§4.1).
+//  shuffle      grid projects: the tensor sum (§4.2); free-form projects with states: the tensor sum
+//               with the functions lifted to the product space as above.
+//  intersection, matrix-union  entrywise on matrices with the same states; functions of the two
+//               projects with the same name are the same function (A's is kept).
+//  composition  (H̃H̃′)_ij = ⋃_k H̃_ik H̃′_kj, stored through intermediate states.
+// A result without attractor (an empty intersection, no path from Q_I to Q_F) is refused.
+// Free-form projects need the same control points for every operation but union, product and
+// shuffle.
+//
 // Weights are normalised per project so that each contributes in proportion to its own weights
 // (union/concat/shuffle: each project's total becomes 1; product: w_a·w_b). Camera and render
 // settings come from A. The final functions must be equal (or both absent).
@@ -30,9 +49,9 @@
 
 namespace gridifs {
 
-enum class CombineOp { Union, Concat, Product, Shuffle };
+enum class CombineOp { Union, Concat, Product, Shuffle, Intersection, Composition, MatrixUnion };
 
-/// "union", "concat", "product", "shuffle".
+/// "union", "concat", "product", "shuffle", "intersection", "composition", "matrix-union".
 const char* combineOpName(CombineOp op);
 bool parseCombineOp(const std::string& name, CombineOp& out);
 

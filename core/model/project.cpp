@@ -50,6 +50,9 @@ std::size_t approximateMemory(const Project& project) {
   for (const auto& [path, track] : project.tracks)
     bytes += 64 + path.capacity() + track.keys.capacity() * sizeof(Keyframe);  // 64: a map node
   if (project.space) bytes += project.space->control_points.capacity() * sizeof(Vec3);
+  if (project.states)
+    for (const auto& row : project.states->matrix)
+      for (const auto& entry : row) bytes += sizeof(entry) + entry.capacity() * sizeof(std::uint32_t);
   return bytes;
 }
 

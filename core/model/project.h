@@ -7,6 +7,7 @@
 #include "model/flame_settings.h"
 #include "model/free_form_space.h"
 #include "model/function.h"
+#include "model/ifs_states.h"
 #include "model/shading_settings.h"
 #include "model/volume_render_settings.h"
 #include "model/volume_settings.h"
@@ -54,6 +55,9 @@ struct Project {
   /// "transitions": N×N weights, after function i the next is j with probability
   /// ∝ weight_j · transitions[i][j] (core/transition_matrix.h). Empty: unrestricted.
   std::vector<std::vector<double>> transitions;
+  /// "states": an IFS matrix with states and initial/final state sets (model/state_expansion.h);
+  /// a project has either this or `transitions`.
+  std::optional<IfsStates> states;
   /// "time": the current time in seconds; fractal fields and the calculator's `t` read it.
   double time = 0.0;
   /// "animation": the timeline; absent in projects that were never animated.

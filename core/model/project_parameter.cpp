@@ -100,6 +100,8 @@ class ParameterResolver {
 
   /// The path reached a string or a switch: not a number, and nothing lies inside.
   Lookup text() const { return end() ? Lookup::NotANumber : Lookup::Missing; }
+  /// Any path inside a structure that holds no parameters.
+  Lookup structure() const { return Lookup::NotANumber; }
 
   Lookup number(Where where, Reader reader, Storage storage, double lo = 0.0, double hi = 0.0) {
     if (!end()) return Lookup::Missing;
@@ -195,6 +197,9 @@ class ParameterResolver {
     }
     // The tracks' own keys are not parameters: keying a key would change the animation itself.
     if (key == "tracks" && !project_.tracks.empty()) return text();
+    // Nor are the states' function and state indices: keying one would change the matrix's
+    // structure, not a quantity (Thollot et al. §3.2).
+    if (key == "states" && project_.states) return structure();
     if (key == "space" && project_.space) {
       position(8);
       if (end()) return Lookup::NotANumber;

@@ -11,6 +11,20 @@ namespace {
 std::string rowPath(std::size_t i) { return "transitions[" + std::to_string(i) + "]"; }
 std::string entryPath(std::size_t i, std::size_t j) { return rowPath(i) + "[" + std::to_string(j) + "]"; }
 
+/// Renumbers the functions named by the project's states (`to` returns -1 for a removed one).
+template <class Map>
+void remapStates(Project& project, Map to) {
+  if (!project.states) return;
+  for (auto& row : project.states->matrix)
+    for (auto& entry : row) {
+      std::vector<std::uint32_t> kept;
+      for (std::uint32_t f : entry)
+        if (const int g = to(int(f)); g >= 0) kept.push_back(std::uint32_t(g));
+      std::sort(kept.begin(), kept.end());
+      entry = std::move(kept);
+    }
+}
+
 }  // namespace
 
 void checkTransitions(const Project& project) {
@@ -117,6 +131,7 @@ void insertFunction(Project& project, std::size_t index, Function function) {
   project.functions.insert(project.functions.begin() + std::ptrdiff_t(index), std::move(function));
   const int at = int(index);
   remapTrackIndices(project.tracks, "functions", [at](int i) { return i >= at ? i + 1 : i; });
+  remapStates(project, [at](int i) { return i >= at ? i + 1 : i; });
   auto& t = project.transitions;
   if (t.empty()) return;
   for (auto& row : t) row.insert(row.begin() + std::ptrdiff_t(std::min(index, row.size())), 1.0);
@@ -128,6 +143,7 @@ void eraseFunction(Project& project, std::size_t index) {
   project.functions.erase(project.functions.begin() + std::ptrdiff_t(index));
   const int at = int(index);
   remapTrackIndices(project.tracks, "functions", [at](int i) { return i == at ? -1 : i > at ? i - 1 : i; });
+  remapStates(project, [at](int i) { return i == at ? -1 : i > at ? i - 1 : i; });
   auto& t = project.transitions;
   if (t.empty()) return;
   if (index < t.size()) t.erase(t.begin() + std::ptrdiff_t(index));
@@ -144,6 +160,7 @@ void swapFunctions(Project& project, std::size_t a, std::size_t b) {
   std::swap(project.functions[a], project.functions[b]);
   const int ia = int(a), ib = int(b);
   remapTrackIndices(project.tracks, "functions", [ia, ib](int i) { return i == ia ? ib : i == ib ? ia : i; });
+  remapStates(project, [ia, ib](int i) { return i == ia ? ib : i == ib ? ia : i; });
   auto& t = project.transitions;
   if (t.size() != project.functions.size()) return;
   std::swap(t[a], t[b]);

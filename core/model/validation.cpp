@@ -7,6 +7,7 @@
 #include "model/free_form.h"
 #include "model/operation_table.h"
 #include "model/settings_tables.h"
+#include "model/state_expansion.h"
 #include "model/transition_matrix.h"
 
 namespace gridifs {
@@ -114,6 +115,7 @@ void validate(const Project& project, const Project* trusted) {
   if (anyActive && !(totalWeight > 0.0))
     fail("functions", "every active function has weight 0 (weights must not all be zero)");
   checkTransitions(project);
+  checkStates(project);
   checkFreeForm(project);
   checkCondensationFunctions(project);
 }

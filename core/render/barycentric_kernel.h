@@ -39,7 +39,8 @@ inline HotIfs makeHotIfs(const CompiledIfs& compiled, std::vector<HotFunction>& 
   ifs.functions = hot.data();
   ifs.alias = compiled.alias.data();
   if (!compiled.transitionWalk.empty()) {
-    if (compiled.transitionWalk.size() != (compiled.functions.size() + 1) * compiled.functions.size())
+    if (compiled.transitionWalk.size() !=
+        (compiled.stateRowsOffset ? 2 : 1) * (compiled.functions.size() + 1) * compiled.functions.size())
       throw ModelError("transitions", "the compiled transition rows do not match the functions");
     ifs.transitionWalk = compiled.transitionWalk.data();
   }
@@ -51,6 +52,7 @@ inline HotIfs makeHotIfs(const CompiledIfs& compiled, std::vector<HotFunction>& 
   ifs.escapeBound = compiled.hasVariations ? std::max(escapeBound, 1e10f) : escapeBound;
   ifs.variations = compiled.hasVariations;
   ifs.restartInterval = compiled.restartInterval;
+  ifs.stateRowsOffset = compiled.stateRowsOffset;
   for (const CompiledFunction& f : compiled.functions) ifs.condensation |= !f.points.empty();
   attachBarycentric(ifs, compiled);
   return ifs;
@@ -122,7 +124,7 @@ template <int kBlocks, bool kRestricted, class Plot>
     bs.restartLane(st, lane, ifs.skip, ifs.barycentricSize);
     return 0;
   }
-  std::memcpy(lambda, next, sizeof next);
+  if (!kRestricted || !(nextRow & kTransitionPeek)) std::memcpy(lambda, next, sizeof next);  // a peek stays
   return advanceAndPlot<kRestricted>(st, lane, ifs, plot, bad, q, col, nextRow);
 }
 

@@ -265,6 +265,8 @@ struct HotIfs {
   float escapeBound = 1e5f;
   /// CompiledIfs::restartInterval: restart a lane after this many steps (0: never).
   std::uint32_t restartInterval = 0;
+  /// CompiledIfs::stateRowsOffset.
+  std::uint32_t stateRowsOffset = 0;
   /// Free-form IFS (barycentric_kernel.h): m coordinates and the padded size in blocks of 8
   /// floats; 0 blocks for a grid IFS.
   std::uint32_t barycentricSize = 0, barycentricBlocks = 0;
@@ -310,9 +312,36 @@ struct ChainCounters {
 template <bool kRestricted, class Plot>
 [[gnu::always_inline]] inline int advanceAndPlot(ChainState& st, int lane, const HotIfs& ifs, Plot& plot,
                                                  std::int64_t& bad, v4f p, v4f col, std::uint32_t nextRow) {
-  st.p[lane] = p;
-  st.color[lane] = col;
-  if constexpr (kRestricted) st.row[lane] = nextRow;
+  if constexpr (kRestricted) {
+    // An IFS matrix with states (model/state_expansion.h): a peek plots its image and leaves the
+    // lane as it was (its point is not yet on the attractor while skipping); a hidden step moves
+    // the lane without plotting.
+    if (nextRow & kTransitionFlags) [[unlikely]] {
+      if (nextRow & kTransitionSkipPhase) {
+        st.p[lane] = p;
+        st.color[lane] = col;
+        st.row[lane] = (nextRow & kTransitionRowMask) + (st.skipLeft[lane] <= 1 ? ifs.stateRowsOffset : 0);
+        if (st.skipLeft[lane] > 0) --st.skipLeft[lane];
+        return 0;
+      }
+      if (nextRow & kTransitionPeek) {
+        if (st.skipLeft[lane] > 0) return 0;
+      } else {
+        st.p[lane] = p;
+        st.color[lane] = col;
+        st.row[lane] = nextRow & kTransitionRowMask;
+        if (st.skipLeft[lane] > 0) --st.skipLeft[lane];
+        return 0;
+      }
+    } else {
+      st.p[lane] = p;
+      st.color[lane] = col;
+      st.row[lane] = nextRow;
+    }
+  } else {
+    st.p[lane] = p;
+    st.color[lane] = col;
+  }
   if (st.skipLeft[lane] > 0) {
     --st.skipLeft[lane];
     return 0;

@@ -10,6 +10,7 @@
 #include "model/bezier_lattice.h"
 #include "model/grid_affine_fit.h"
 #include "model/stack_evaluator.h"
+#include "model/state_expansion.h"
 #include "model/transition_matrix.h"
 
 namespace gridifs {
@@ -32,6 +33,9 @@ void compileColor(const Function& function, CompiledFunction& out) {
 /// the skipped first steps cost 2%, short enough that a render's millions of restarts sample each
 /// part of the attractor in proportion.
 constexpr std::uint32_t kRestartInterval = 1024;
+/// The same for an IFS matrix with states, whose chains often end in one fixed point after their
+/// last transient step: short, so the transient parts are drawn often.
+constexpr std::uint32_t kStateRestartInterval = 128;
 
 std::shared_ptr<const CompiledVariations> compileVariations(const Function& function, const Grid& evaluated);
 
@@ -279,6 +283,79 @@ CompiledFunction compileCondensationFunction(const Function& f, const Condensati
   return c;
 }
 
+/// The kernel's transition walk from one row of relative weights per function (`rows`, the
+/// first-function row being ifs.alias).
+void buildTransitionWalk(CompiledIfs& ifs, const std::vector<std::vector<double>>& rows) {
+  for (const auto& row : rows) {
+    const auto table = buildAliasTable(row);
+    ifs.transitionAlias.insert(ifs.transitionAlias.end(), table.begin(), table.end());
+  }
+  ifs.transitionAlias.insert(ifs.transitionAlias.end(), ifs.alias.begin(), ifs.alias.end());
+  const std::size_t n = ifs.functions.size();
+  auto rowAfter = [n](std::uint32_t function) { return std::uint32_t((std::size_t(function) + 1) * n); };
+  for (std::size_t row = 0; row <= n; ++row) {
+    const std::size_t source = row == 0 ? n : row - 1;  // the first-function row is last in transitionAlias
+    for (std::size_t c = 0; c < n; ++c) {
+      const AliasEntry& e = ifs.transitionAlias[source * n + c];
+      ifs.transitionWalk.push_back({e.threshold, e.alias, rowAfter(std::uint32_t(c)), rowAfter(e.alias)});
+    }
+  }
+}
+
+/// An IFS matrix with states: the compiled functions become its virtual functions
+/// (model/state_expansion.h), each a copy of its function, and `weights` theirs. The walk has the
+/// skip phase's rows 0 … n (inside strongly connected parts) then the plotting rows n + 1 … 2n + 1.
+void compileStates(const Project& project, CompiledIfs& ifs, std::vector<double>& weights) {
+  std::vector<char> active(project.functions.size(), 0);
+  std::vector<std::size_t> compiledOf(project.functions.size(), 0);
+  for (std::size_t c = 0; c < ifs.functions.size(); ++c) {
+    active[ifs.functions[c].sourceIndex] = 1;
+    compiledOf[ifs.functions[c].sourceIndex] = c;
+  }
+  const StateExpansion x = expandStates(project, active);
+  std::vector<CompiledFunction> virtualFunctions;
+  weights.clear();
+  for (std::size_t f : x.function) {
+    virtualFunctions.push_back(ifs.functions[compiledOf[f]]);
+    weights.push_back(project.functions[f].weight);
+  }
+  ifs.functions = std::move(virtualFunctions);
+  ifs.alias = buildAliasTable(weights);
+  const std::size_t n = x.function.size();
+  auto rowOf = [&](std::size_t v, bool skipPhase) {
+    std::vector<double> row(n, 0.0);
+    bool any = false;
+    for (std::size_t w = 0; w < n; ++w)
+      if (x.follows[v][w] && (!skipPhase || x.internal[w])) row[w] = weights[w], any = true;
+    return any ? row : weights;  // a peek's row is never read
+  };
+  std::vector<double> firstSkip(n, 0.0);
+  for (std::size_t w = 0; w < n; ++w) firstSkip[w] = x.internal[w] ? weights[w] : 0.0;
+  std::vector<std::vector<double>> rows{firstSkip};
+  for (std::size_t v = 0; v < n; ++v) rows.push_back(rowOf(v, true));
+  rows.push_back(weights);
+  for (std::size_t v = 0; v < n; ++v) rows.push_back(rowOf(v, false));
+  ifs.stateRowsOffset = std::uint32_t((n + 1) * n);
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    const auto table = buildAliasTable(rows[r]);
+    ifs.transitionAlias.insert(ifs.transitionAlias.end(), table.begin(), table.end());
+    const bool skipPhase = r <= n;
+    const std::uint32_t base = skipPhase ? 0 : ifs.stateRowsOffset;
+    auto rowAfter = [&](std::uint32_t c) {
+      const std::uint32_t offset = std::uint32_t((std::size_t(c) + 1) * n) + base;
+      if (skipPhase) return offset | kTransitionSkipPhase;
+      if (x.step[c] == StateStep::Peek) return std::uint32_t(r * n) | kTransitionPeek;
+      return x.step[c] == StateStep::Hidden ? offset | kTransitionHidden : offset;
+    };
+    for (std::size_t c = 0; c < n; ++c)
+      ifs.transitionWalk.push_back(
+          {table[c].threshold, table[c].alias, rowAfter(std::uint32_t(c)), rowAfter(table[c].alias)});
+  }
+  // Chains pass through the transient parts once: restart them often, each from a tail inside a
+  // strongly connected part (the skip phase), so every part is drawn.
+  ifs.restartInterval = kStateRestartInterval;
+}
+
 std::shared_ptr<const CompiledIfs> compileWith(const Project& project,
                                                const std::function<std::shared_ptr<const Grid>(std::size_t)>& gridOf,
                                                const std::function<std::shared_ptr<const Grid>()>& finalGrid,
@@ -314,30 +391,21 @@ std::shared_ptr<const CompiledIfs> compileWith(const Project& project,
     }
     weights.push_back(f.weight);
   }
-  ifs->alias = buildAliasTable(weights);
+  if (project.states) {
+    compileStates(project, *ifs, weights);
+  } else {
+    ifs->alias = buildAliasTable(weights);
+    std::vector<std::size_t> active;
+    for (const CompiledFunction& f : ifs->functions) active.push_back(f.sourceIndex);
+    const auto rows = activeTransitionWeights(project, active);
+    if (!rows.empty()) {
+      buildTransitionWalk(*ifs, rows);
+      if (transitionComponents(project).size() > 1) ifs->restartInterval = kRestartInterval;
+    }
+  }
   double total = 0.0;
   for (double w : weights) total += w;
   for (double w : weights) ifs->probabilities.push_back(w / total);
-  std::vector<std::size_t> active;
-  for (const CompiledFunction& f : ifs->functions) active.push_back(f.sourceIndex);
-  const auto rows = activeTransitionWeights(project, active);
-  if (!rows.empty()) {
-    for (const auto& row : rows) {
-      const auto table = buildAliasTable(row);
-      ifs->transitionAlias.insert(ifs->transitionAlias.end(), table.begin(), table.end());
-    }
-    ifs->transitionAlias.insert(ifs->transitionAlias.end(), ifs->alias.begin(), ifs->alias.end());
-    const std::size_t n = ifs->functions.size();
-    auto rowAfter = [n](std::uint32_t function) { return std::uint32_t((std::size_t(function) + 1) * n); };
-    for (std::size_t row = 0; row <= n; ++row) {
-      const std::size_t source = row == 0 ? n : row - 1;  // the first-function row is last in transitionAlias
-      for (std::size_t c = 0; c < n; ++c) {
-        const AliasEntry& e = ifs->transitionAlias[source * n + c];
-        ifs->transitionWalk.push_back({e.threshold, e.alias, rowAfter(std::uint32_t(c)), rowAfter(e.alias)});
-      }
-    }
-    if (transitionComponents(project).size() > 1) ifs->restartInterval = kRestartInterval;
-  }
   if (project.final_function && !project.final_function->muted) {
     try {
       auto grid = finalGrid();

@@ -108,6 +108,20 @@ struct TransitionStep {
   std::uint32_t aliasRow;  // the row after `alias`
 };
 
+/// Flags on TransitionStep::keepRow and aliasRow for an IFS matrix with states
+/// (model/state_expansion.h): the function moves the point without plotting it (its word does not
+/// start in an initial state), or plots its image of the point and leaves the chain as it was (its
+/// word can go no further). The row offset is the rest of the bits.
+/// While a chain skips its first points it stays inside one strongly connected part with a cycle
+/// (rows flagged kTransitionSkipPhase, the first n + 1 rows), so that the point it starts plotting
+/// from lies on a tail every infinite word can end with; then it moves to the rows after
+/// CompiledIfs::stateRowsOffset.
+inline constexpr std::uint32_t kTransitionHidden = 1u << 31;
+inline constexpr std::uint32_t kTransitionPeek = 1u << 30;
+inline constexpr std::uint32_t kTransitionSkipPhase = 1u << 29;
+inline constexpr std::uint32_t kTransitionFlags = kTransitionHidden | kTransitionPeek | kTransitionSkipPhase;
+inline constexpr std::uint32_t kTransitionRowMask = kTransitionSkipPhase - 1;
+
 /// The whole snapshot. Immutable; share it as shared_ptr<const CompiledIfs> across threads.
 struct CompiledIfs {
   std::vector<CompiledFunction> functions;  // unmuted functions with weight > 0, in project order
@@ -119,13 +133,17 @@ struct CompiledIfs {
   /// usual weights). Empty when the project has no matrix (the unrestricted chaos game).
   std::vector<AliasEntry> transitionAlias;
   /// transitionAlias as the kernel walks it: row 0 picks a chain's first function, row i + 1 the
-  /// function after function i (offset (i + 1)·n); empty without a matrix.
+  /// function after function i (offset (i + 1)·n); empty without a matrix. With states, `functions`
+  /// are the virtual functions of model/state_expansion.h and the row offsets carry their flags.
   std::vector<TransitionStep> transitionWalk;
   /// With transitions whose graph is not strongly connected, a chain never leaves the closed part
   /// it falls into (a union's half, a concatenation's second IFS) and never revisits transient
   /// parts. Restarting each chain after this many steps samples every part as the first-function
   /// weights say, whatever the number of chains; 0 (strongly connected, or no matrix): never.
   std::uint32_t restartInterval = 0;
+  /// With states: transitionWalk holds 2(n + 1) rows, the skip phase's then the plotting ones, and
+  /// this is the offset between a function's two rows; 0 without states.
+  std::uint32_t stateRowsOffset = 0;
   /// Free-form IFS: m barycentric coordinates (0 for a grid IFS), padded to a multiple of 8.
   std::uint32_t barycentricSize = 0, barycentricPad = 0;
   std::uint32_t barycentricStride() const { return barycentricPad + 8; }

@@ -144,14 +144,22 @@ TEST(CombineCli, BadInputExitsTwoAndWritesNothing) {
   applyFreeFormPreset(freeForm, FreeFormPreset::Sierpinski);
   saveProject(freeForm, dir.path / "free.gridifs");
   std::ofstream(dir.path / "broken.gridifs") << "{\"format\": \"gridifs\"";
+  Project other = freeForm;
+  other.space->control_points[0].x += 0.25;
+  saveProject(other, dir.path / "other.gridifs");
+  // The same maps under other names: an intersection with nothing in common.
+  Project renamed = loadProject(kSierpinski);
+  for (Function& fn : renamed.functions) fn.name += "'";
+  const auto moved = dir.path / "renamed.gridifs";
+  saveProject(renamed, moved);
   const std::string s = quote(kSierpinski), f = quote((dir.path / "free.gridifs").string());
   const struct {
     std::string args, message;
   } cases[] = {
-      {s + " " + s + " --op intersect", "--op must be union, concat, product or shuffle"},
-      {s + " " + s + " --op product", "product needs two free-form projects"},
+      {s + " " + s + " --op intersect", "--op must be union, concat, product, shuffle, intersection"},
+      {s + " " + quote(moved.string()) + " --op intersection", "has no attractor"},
       {s + " " + f + " --op union", "combine needs two of the same kind"},
-      {f + " " + f + " --op concat", "concat needs two grid projects"},
+      {f + " " + quote((dir.path / "other.gridifs").string()) + " --op concat", "needs the same control points"},
       {s + " " + quote((dir.path / "broken.gridifs").string()) + " --op union", "broken.gridifs"},
       {s + " " + quote((dir.path / "missing.gridifs").string()) + " --op union", "missing.gridifs"},
   };

@@ -21,18 +21,26 @@ struct OpChoice {
   const char* help;
 };
 
-// Thollot, Zair, Tosan & Vandorpe 1997, §4.2 (union, concatenation, shuffle) and §5.4 (product).
+// Thollot, Zair, Tosan & Vandorpe 1997, §4.1 (intersection, composition, matrix union), §4.2 (union,
+// concatenation, shuffle) and §5.4 (product).
 constexpr OpChoice kOps[] = {
     {CombineOp::Union, "Union", "Both function lists side by side: the attractor is the union of the two attractors"},
     {CombineOp::Concat, "Concatenation",
      "As union, and a function of the open project may be followed by one of the second: its points continue "
      "through the second project's maps"},
     {CombineOp::Product, "Product",
-     "Tensor product of every pair of matrices on the sums of the control points: the attractor is the sum of the "
-     "two (two curves give a patch)"},
+     "Free-form: tensor product of every pair of matrices on the sums of the control points, the attractor is the "
+     "sum of the two (two curves give a patch); grid: the tensor product of the two IFS matrices"},
     {CombineOp::Shuffle, "Shuffle",
      "Tensor sum: the two IFSs' matrices interleaved on the sums of the control points; the same sum of the two "
      "attractors, reached one step at a time"},
+    {CombineOp::Intersection, "Intersection",
+     "Entrywise on two IFS matrices with the same states: only the maps both allow between the same states "
+     "(functions with the same name are the same)"},
+    {CombineOp::Composition, "Composition",
+     "The product of the two IFS matrices: a map of the open project, then one of the second, between states"},
+    {CombineOp::MatrixUnion, "Matrix union",
+     "Entrywise on two IFS matrices with the same states: every map either allows between the same states"},
 };
 
 std::string upperFirst(std::string s) {

@@ -43,7 +43,7 @@ class CombineDialog {
   std::uint64_t loadedRevision_ = 0;
   std::optional<Project> other_;
   std::string loadError_;               // why the second file could not be read (empty when it was)
-  std::array<std::string, 4> reasons_;  // per operation: why it is not possible (empty when it is)
+  std::array<std::string, 7> reasons_;  // per operation: why it is not possible (empty when it is)
   std::string message_;                 // the last Combine's error, shown under the buttons
 };
 
