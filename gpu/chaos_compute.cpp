@@ -18,8 +18,8 @@
 namespace gridifs::gpu {
 namespace {
 
-enum Binding { kFunctions, kNodes, kAlias, kChains, kTallies, kKeys, kDensity, kColorSums, kPalette, kStages };
-constexpr int kBuffers = 10;
+enum Binding { kFunctions, kNodes, kAlias, kChains, kTallies, kKeys, kDensity, kColorSums, kPalette, kStages, kTransitionWalk };
+constexpr int kBuffers = 11;
 
 constexpr std::uint32_t kGroupSize = 64;  // local_size_x in the shader
 constexpr std::uint32_t kMaxChains = 1u << 18;
@@ -172,6 +172,12 @@ void ChaosCompute::uploadIfs(const CompiledIfs& ifs) {
   upload(kFunctions, functions.data(), functions.size() * sizeof(GpuFunction), "the IFS");
   upload(kNodes, nodes.data(), nodes.size() * sizeof(float), "the IFS's grids");
   upload(kAlias, alias.data(), alias.size() * 4, "the IFS");
+  // The transition walk as the CPU kernel reads it (one uvec4 per entry); a placeholder entry when
+  // the chain game is unrestricted, so the binding always has storage.
+  std::vector<std::uint32_t> walk;
+  for (const TransitionStep& e : ifs.transitionWalk) walk.insert(walk.end(), {e.threshold, e.alias, e.keepRow, e.aliasRow});
+  if (walk.empty()) walk.assign(4, 0u);
+  upload(kTransitionWalk, walk.data(), walk.size() * 4, "the IFS's transitions");
   if (ifs.hasVariations || output_ == ChaosOutput::Maps) {
     const std::vector<std::uint32_t> stages = packVariationStages(ifs);
     upload(kStages, stages.data(), stages.size() * 4, "the IFS's variations");
@@ -212,12 +218,11 @@ void ChaosCompute::depthRange(const CompiledIfs& ifs, const RenderJob& job, cons
 }
 
 void ChaosCompute::setup(const CompiledIfs& ifs, const RenderJob& job, ChainRange share, int voxelResolution) {
-  // The compute shader walks grid functions chosen independently; the CPU renderer takes the
-  // rest (auto falls back to it).
+  // The compute shader walks grid functions, chosen independently or by transition rows (a
+  // transition matrix or an IFS matrix with states); the CPU renderer takes the rest (auto falls
+  // back to it).
   if (ifs.barycentricSize > 0)
     throw GpuUnavailable("the GPU renderer does not run free-form (control point) IFSs; the CPU renderer does");
-  if (!ifs.transitionAlias.empty())
-    throw GpuUnavailable("the GPU renderer does not follow transition matrices; the CPU renderer does");
   for (const CompiledFunction& f : ifs.functions)
     if (!f.points.empty())
       throw GpuUnavailable("the GPU renderer does not run condensation functions; the CPU renderer does");
@@ -304,6 +309,9 @@ void ChaosCompute::setup(const CompiledIfs& ifs, const RenderJob& job, ChainRang
   glUniform2f(loc("uDepthQuant"), depthMin_, depthScale_);
   glUniform1i(loc("uPalette"), job.palette && voxels_ == 0 ? 1 : 0);
   glUniform1ui(loc("uVoxels"), std::uint32_t(voxels_));
+  glUniform1i(loc("uTransitions"), ifs.transitionWalk.empty() ? 0 : 1);
+  glUniform1ui(loc("uRestartInterval"), ifs.transitionWalk.empty() ? 0u : ifs.restartInterval);
+  glUniform1ui(loc("uStateRowsOffset"), ifs.stateRowsOffset);
   glUniform1ui(loc("uMode"), 0);
   if (chains > 0) glDispatchCompute((chains + kGroupSize - 1) / kGroupSize, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);

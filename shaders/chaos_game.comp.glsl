@@ -26,7 +26,7 @@ struct Chain {
   vec4 p;      // xyz
   vec4 color;  // r g b c
   uvec4 rng;   // xoshiro128** state
-  uvec4 misc;  // iterations left, skip left
+  uvec4 misc;  // iterations left, skip left, transition row, steps since the last restart
 };
 
 layout(std430, binding = 0) readonly buffer Functions { Fn fns[]; };
@@ -34,6 +34,8 @@ layout(std430, binding = 1) readonly buffer Nodes { vec4 nodes[]; };  // node pa
 layout(std430, binding = 2) readonly buffer Alias { uvec2 aliasTable[]; };
 layout(std430, binding = 3) buffer Chains { Chain chains[]; };
 layout(std430, binding = 4) buffer Tallies { uvec2 tallies[]; };  // per chain: bad, plotted
+// CompiledIfs::transitionWalk (threshold, alias, keepRow, aliasRow), read only when uTransitions.
+layout(std430, binding = 10) readonly buffer TransitionWalk { uvec4 walk[]; };
 #if EMIT_POINTS
 layout(std430, binding = 5) writeonly buffer Points { vec4 points[]; };  // xyz valid, rgb 0 per slot
 #elif BIN_VOXELS
@@ -72,6 +74,18 @@ uniform uint uStride;
 uniform vec2 uDepthQuant;  // 32-bit keys: q = (depth - x) · y in [0, 65535]
 uniform bool uPalette;
 uniform uint uVoxels;      // BIN_VOXELS: voxels per axis
+uniform bool uTransitions;       // walk the transition rows (a transition matrix or states)
+uniform uint uRestartInterval;   // CompiledIfs::restartInterval (0: never)
+uniform uint uStateRowsOffset;   // CompiledIfs::stateRowsOffset (0 without states)
+
+// The flags on a transition row offset for an IFS matrix with states, as the CPU kernel's
+// (render/compiled_ifs.h): hidden (move without plotting), peek (plot the image, keep the chain),
+// skip phase (the chain stays in one strongly connected part while it skips).
+const uint kHidden = 1u << 31;
+const uint kPeek = 1u << 30;
+const uint kSkipPhase = 1u << 29;
+const uint kTransitionFlags = kHidden | kPeek | kSkipPhase;
+const uint kRowMask = kSkipPhase - 1u;
 
 uint rotl(uint x, int k) { return (x << k) | (x >> (32 - k)); }
 
@@ -108,6 +122,8 @@ void restartChain(inout Chain ch) {
   ch.p = randomPoint(ch.rng);
   ch.color = vec4(0.5, 0.5, 0.5, float(nextRandom(ch.rng) >> 8) * (1.0 / 16777216.0));
   ch.misc.y = uSkip;
+  ch.misc.z = 0u;  // the first-function row
+  ch.misc.w = 0u;
 }
 
 // The trilinear interpolation of function f's distorted nodes at lattice coordinate s in cell c.
@@ -167,6 +183,17 @@ uint chooseFunction(inout uvec4 rng) {
   umulExtended(nextRandom(rng), uCount, column, low);
   const uvec2 e = aliasTable[column];
   return nextRandom(rng) < e.x ? column : e.y;
+}
+
+// The next function by the transition row at `row` (Thollot et al. §3.2: the matrix's Markov
+// chain), which becomes the row after that function: the same alias draw as chooseFunction.
+uint chooseAfter(inout uint row, inout uvec4 rng) {
+  uint column, low;
+  umulExtended(nextRandom(rng), uCount, column, low);
+  const uvec4 e = walk[row + column];
+  const bool keep = nextRandom(rng) < e.x;
+  row = keep ? e.z : e.w;
+  return keep ? column : e.y;
 }
 
 #if ACCUMULATE_COLOR
@@ -266,7 +293,9 @@ void main() {
   uvec2 tally = tallies[chain];
   const uint n = min(ch.misc.x, uIterations);
   for (uint k = 0u; k < n; ++k) {
-    const uint fi = chooseFunction(ch.rng);
+    if (uRestartInterval > 0u && ++ch.misc.w > uRestartInterval) restartChain(ch);
+    uint nextRow = ch.misc.z;
+    const uint fi = uTransitions ? chooseAfter(nextRow, ch.rng) : chooseFunction(ch.rng);
     const vec3 p = mapPoint(fi, ch.p.xyz, ch.rng);
     const Fn f = fns[fi];
     const vec4 col = ch.color + (f.color - ch.color) * f.speed;  // c = mix(c, c_i, speed)
@@ -285,11 +314,33 @@ void main() {
 #endif
       continue;
     }
-    ch.p.xyz = p;
-    ch.color = col;
-    if (ch.misc.y > 0u) {
-      --ch.misc.y;
-      continue;
+    if ((nextRow & kTransitionFlags) != 0u) {
+      // An IFS matrix with states, as the CPU kernel's advanceAndPlot: a skip-phase step moves the
+      // chain and, with its last skip, enters the plotting rows; a hidden step moves it without
+      // plotting; a peek plots its image and leaves the chain as it was.
+      if ((nextRow & kSkipPhase) != 0u) {
+        ch.p.xyz = p;
+        ch.color = col;
+        ch.misc.z = (nextRow & kRowMask) + (ch.misc.y <= 1u ? uStateRowsOffset : 0u);
+        if (ch.misc.y > 0u) --ch.misc.y;
+        continue;
+      }
+      if ((nextRow & kPeek) == 0u) {
+        ch.p.xyz = p;
+        ch.color = col;
+        ch.misc.z = nextRow & kRowMask;
+        if (ch.misc.y > 0u) --ch.misc.y;
+        continue;
+      }
+      if (ch.misc.y > 0u) continue;
+    } else {
+      ch.p.xyz = p;
+      ch.color = col;
+      ch.misc.z = nextRow;
+      if (ch.misc.y > 0u) {
+        --ch.misc.y;
+        continue;
+      }
     }
     vec3 q = p;
     vec4 qc = col;

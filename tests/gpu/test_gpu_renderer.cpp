@@ -46,9 +46,9 @@ TEST(GpuRenderer, EveryExampleMatchesTheCpuImage) {
   for (const auto& file : files) {
     SCOPED_TRACE(file.filename().string());
     const Project project = loadProject(file);
-    if (project.space || !project.transitions.empty()) {
-      // Free-form IFSs and transition matrices run on the CPU only: the GPU renderer must say
-      // so instead of drawing something else.
+    if (project.space) {
+      // Free-form IFSs run on the CPU only: the GPU renderer must say so instead of drawing
+      // something else.
       EXPECT_THROW(renderGpu(gpu, compileIfs(project), RenderJob::fromProject(project, 1),
                              DisplaySettings::fromProject(project)),
                    gpu::GpuUnavailable);
