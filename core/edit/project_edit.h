@@ -12,6 +12,7 @@
 #include <string>
 #include <variant>
 
+#include "edit/construction_edits.h"
 #include "edit/function_edits.h"
 #include "edit/key_edits.h"
 #include "edit/matrix_edits.h"
@@ -52,6 +53,8 @@ using ProjectEdit = std::variant<
     // transitions and free-form IFS (edit/matrix_edits.h)
     SetTransitionPreset, RemoveTransitions, SetTransitionWeight, SetMatrixEntry, MoveControlPoint, ApplyFreeFormPreset,
     BackToGridIfs,
+    // the construction tree (edit/construction_edits.h)
+    AddConstructionLeaf, GroupConstructionNodes, SetConstructionOp, RemoveConstructionNode, ReloadConstructionLeaves,
     // the whole project
     ReplaceProject>;
 

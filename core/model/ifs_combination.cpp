@@ -217,6 +217,9 @@ Project combineProjects(const Project& a, const Project& b, CombineOp op) {
       out = op == CombineOp::Product ? product(a, b) : shuffle(a, b);
       break;
   }
+  // A's construction tree does not describe the combination (a tree over both is built in the
+  // modeller's tree window, or by hand).
+  out.construction.reset();
   try {
     validateProject(out);
   } catch (const ModelError& e) {

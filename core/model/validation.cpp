@@ -111,6 +111,7 @@ void validate(const Project& project, const Project* trusted) {
   checkTransitions(project);
   checkFreeForm(project);
   checkCondensationFunctions(project);
+  if (project.construction) checkConstructionTree(*project.construction);
 }
 
 }  // namespace
