@@ -3,7 +3,6 @@
 #include <algorithm>
 
 #include "base/errors.h"
-
 #include "model/ifs_combination.h"
 #include "model/project.h"
 
