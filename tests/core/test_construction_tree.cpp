@@ -3,6 +3,7 @@
 // bad tree gives (with their JSON paths), and the named edits as undo steps.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
