@@ -206,8 +206,14 @@ void ConstructionTreePanel::drawAddLeaf(ModellerState& state, EditQueue& edits) 
       ConstructionNode leaf;
       leaf.kind = ConstructionNode::Kind::File;
       leaf.file = leafPath(state, fileText_);
+      // The version read now is the one watched from: a save right after it counts as an edit.
+      std::error_code ec;
+      const Seen read{fs::last_write_time(file, ec), fs::file_size(file, ec)};
       leaf.loaded = std::make_shared<const Project>(loadProject(file));
-      if (tryCommit(state, edits, AddConstructionLeaf{at, leaf, std::nullopt})) fileText_.clear();
+      if (tryCommit(state, edits, AddConstructionLeaf{at, leaf, std::nullopt})) {
+        if (!ec) seen_[fs::absolute(file).lexically_normal().string()] = read;
+        fileText_.clear();
+      }
     } catch (const std::exception& e) {
       error_ = fileText_ + ": " + e.what();
     }
