@@ -164,7 +164,8 @@ TEST(ConstructionTree, BadTreesNameTheirJsonPath) {
     return modelErrorText([&] { loadProject(dir.path / "p.gridifs"); });
   };
   EXPECT_EQ(loadWith(R"({"root": {"op": "xor", "children": [{"file": "t.gridifs"}, {"file": "t.gridifs"}]}})"),
-            "construction.root.op: unknown operation \"xor\" (expected union, concat, product or shuffle)");
+            "construction.root.op: unknown operation \"xor\" (expected " + constructionOpList() + ")");
+  EXPECT_EQ(constructionOpList().rfind("union, concat, product", 0), 0u);
   EXPECT_EQ(loadWith(R"({"root": {"op": "concat", "children": [{"file": "t.gridifs"}]}})"),
             "construction.root.children: concat takes 2 operands, not 1");
   EXPECT_EQ(loadWith(R"({"root": {"op": "union", "children": [{"file": "t.gridifs"}, {"file": "gone.gridifs"}]}})"),
