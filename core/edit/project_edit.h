@@ -12,6 +12,7 @@
 #include <string>
 #include <variant>
 
+#include "edit/construction_edits.h"
 #include "edit/function_edits.h"
 #include "edit/key_edits.h"
 #include "edit/matrix_edits.h"
@@ -55,6 +56,8 @@ using ProjectEdit = std::variant<
     BackToGridIfs, AddControlPoint, RemoveControlPoint, MapOntoControlNet,
     // the volume ray march and the stored preview mode (edit/volume_render_edits.h)
     SetVolumeDensityScale, SetVolumeDisplay, SetTransferFunction, SetVolumeRenderResolution, SetPreviewMode,
+    // the construction tree (edit/construction_edits.h)
+    AddConstructionLeaf, GroupConstructionNodes, SetConstructionOp, RemoveConstructionNode, ReloadConstructionLeaves,
     // the whole project
     ReplaceProject>;
 

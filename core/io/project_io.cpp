@@ -8,6 +8,7 @@
 #include "base/atomic_file.h"
 #include "base/bounded_read.h"
 #include "io/animation_json.h"
+#include "io/construction_io.h"
 #include "io/free_form_io.h"
 #include "io/json_read.h"
 #include "io/operation_json.h"
@@ -229,36 +230,9 @@ std::string lineColumn(const std::string& text, std::size_t byte) {
   return "line " + std::to_string(line) + ", column " + std::to_string(column);
 }
 
-}  // namespace
-
-Project parseProject(const std::string& text) {
-  if (text.size() > limits::kMaxFileBytes) fail("", "the file is larger than 64 MiB");
-  if (text.find_first_not_of(" \t\r\n") == std::string::npos) fail("", "the file is empty");
-  checkDepth(text);
-  json root;
-  try {
-    root = json::parse(text);
-  } catch (const json::parse_error& e) {
-    std::string what = e.what();
-    const std::size_t lastContent = text.find_last_not_of(" \t\r\n");
-    const bool truncated = what.find("unexpected end of input") != std::string::npos ||
-                           (lastContent != std::string::npos && e.byte >= lastContent + 1);
-    fail("", std::string(truncated ? "the JSON ends too early (truncated?)" : "the file is not valid JSON") +
-                 " at " + lineColumn(text, e.byte == 0 ? 0 : e.byte - 1));
-  } catch (const json::exception&) {
-    fail("", "the file contains a number too large to represent");
-  }
-  requireObject(root, "");
-  if (auto it = root.find("format"); it == root.end() || !it->is_string() || it->get<std::string>() != "gridifs")
-    fail("format", "expected \"gridifs\" (this is not a GridIFS project)");
-  auto version = root.find("version");
-  if (version == root.end()) fail("version", "the project has no version");
-  if (!version->is_number_integer() || version->get<std::int64_t>() != kProjectFormatVersion) {
-    std::string found = version->dump();
-    if (found.size() > 20) found = found.substr(0, 20) + "…";
-    fail("version", "unsupported version " + found + " (this GridIFS reads version " +
-                        std::to_string(kProjectFormatVersion) + ")");
-  }
+/// Everything but the format and version: a project's object, or a construction part's (its
+/// functions, transitions and space; a part holds no construction of its own).
+Project readProjectBody(const json& root, bool withConstruction) {
   Project project;
   if (auto it = root.find("camera"); it != root.end()) project.camera = readSettings(cameraTable(), *it, "camera");
   if (auto it = root.find("render"); it != root.end()) {
@@ -304,9 +278,51 @@ Project parseProject(const std::string& text) {
   project.space = free_form_io::readSpace(root);
   project.volume = volume_io::readVolume(root);
   project.preview_mode = volume_render_io::readPreviewMode(root);
+  if (withConstruction) {
+    project.construction = construction_io::readConstruction(root, [](const json& part, const std::string& path) {
+      try {
+        return readProjectBody(part, false);
+      } catch (const ModelError& e) {
+        throw e.under(path);
+      }
+    });
+  }
   validateProject(project);
   checkTrackPaths(project);
   return project;
+}
+
+}  // namespace
+
+Project parseProject(const std::string& text) {
+  if (text.size() > limits::kMaxFileBytes) fail("", "the file is larger than 64 MiB");
+  if (text.find_first_not_of(" \t\r\n") == std::string::npos) fail("", "the file is empty");
+  checkDepth(text);
+  json root;
+  try {
+    root = json::parse(text);
+  } catch (const json::parse_error& e) {
+    std::string what = e.what();
+    const std::size_t lastContent = text.find_last_not_of(" \t\r\n");
+    const bool truncated = what.find("unexpected end of input") != std::string::npos ||
+                           (lastContent != std::string::npos && e.byte >= lastContent + 1);
+    fail("", std::string(truncated ? "the JSON ends too early (truncated?)" : "the file is not valid JSON") +
+                 " at " + lineColumn(text, e.byte == 0 ? 0 : e.byte - 1));
+  } catch (const json::exception&) {
+    fail("", "the file contains a number too large to represent");
+  }
+  requireObject(root, "");
+  if (auto it = root.find("format"); it == root.end() || !it->is_string() || it->get<std::string>() != "gridifs")
+    fail("format", "expected \"gridifs\" (this is not a GridIFS project)");
+  auto version = root.find("version");
+  if (version == root.end()) fail("version", "the project has no version");
+  if (!version->is_number_integer() || version->get<std::int64_t>() != kProjectFormatVersion) {
+    std::string found = version->dump();
+    if (found.size() > 20) found = found.substr(0, 20) + "…";
+    fail("version", "unsupported version " + found + " (this GridIFS reads version " +
+                        std::to_string(kProjectFormatVersion) + ")");
+  }
+  return readProjectBody(root, true);
 }
 
 std::string serializeProject(const Project& project) {
@@ -332,13 +348,48 @@ std::string serializeProject(const Project& project) {
   volume_io::writeVolume(project, root);
   volume_render_io::writeView(project, root);
   writeAnimation(project, root);
+  construction_io::writeConstruction(project, root, [](const Project& part, ordered_json& out) {
+    ordered_json functions = ordered_json::array();
+    for (const Function& f : part.functions) functions.push_back(writeFunction(f));
+    free_form_io::writeSpace(part, out);
+    out["functions"] = functions;
+    if (!part.transitions.empty()) out["transitions"] = part.transitions;
+  });
   return root.dump(2) + "\n";
 }
 
-Project loadProject(const std::filesystem::path& file) {
+namespace {
+
+/// Reads `file` and the leaves of its construction tree; `chain` holds the files being read
+/// around it, this one included.
+Project loadProjectIn(const std::filesystem::path& file, std::vector<std::filesystem::path>& chain) {
   const std::optional<std::string> text = readBoundedFile(file, limits::kMaxFileBytes, "project file");
   if (!text) fail("", "the file is larger than 64 MiB");
-  return parseProject(*text);
+  Project project = parseProject(*text);
+  if (project.construction) {
+    construction_io::readLeafFiles(*project.construction, file.parent_path(), chain, loadProjectIn);
+    // The leaves may have changed since the file was saved: its functions are the tree's value now.
+    reevaluateConstruction(project);
+    validateProject(project);
+  }
+  return project;
+}
+
+}  // namespace
+
+Project loadProject(const std::filesystem::path& file) {
+  std::vector<std::filesystem::path> chain{construction_io::chainKey(file)};
+  return loadProjectIn(file, chain);
+}
+
+void readConstructionLeaves(Project& project, const std::filesystem::path& projectFile) {
+  if (!project.construction) return;
+  std::vector<std::filesystem::path> chain;
+  if (!projectFile.empty()) chain.push_back(construction_io::chainKey(projectFile));
+  const std::filesystem::path folder = projectFile.empty() ? std::filesystem::path(".") : projectFile.parent_path();
+  construction_io::readLeafFiles(*project.construction, folder, chain, loadProjectIn);
+  reevaluateConstruction(project);
+  validateProject(project);
 }
 
 void saveProject(const Project& project, const std::filesystem::path& file) {

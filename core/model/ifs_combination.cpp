@@ -333,6 +333,9 @@ Project combineProjects(const Project& a, const Project& b, CombineOp op) {
       out = matrixCombination(a, b, op);
       break;
   }
+  // A's construction tree does not describe the combination (a tree over both is built in the
+  // modeller's tree window, or by hand).
+  out.construction.reset();
   try {
     validateProject(out);
   } catch (const ModelError& e) {

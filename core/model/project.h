@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "anim/keyframe_track.h"
+#include "model/construction_tree.h"
 #include "model/flame_settings.h"
 #include "model/free_form_space.h"
 #include "model/function.h"
@@ -70,6 +71,9 @@ struct Project {
   std::optional<VolumeSettings> volume;
   /// "view.preview_mode": the modeller's preview mode when last saved; absent: chosen on open.
   std::optional<StoredPreviewMode> preview_mode;
+  /// "construction": the tree whose value the functions, transitions and space are (Thollot et
+  /// al. §4.3, model/construction_tree.h); absent in projects built without one.
+  std::optional<ConstructionTree> construction;
   bool operator==(const Project&) const = default;
 };
 

@@ -118,6 +118,7 @@ void validate(const Project& project, const Project* trusted) {
   checkStates(project);
   checkFreeForm(project);
   checkCondensationFunctions(project);
+  if (project.construction) checkConstructionTree(*project.construction);
 }
 
 }  // namespace

@@ -40,6 +40,7 @@ void drawHelpWindow(ModellerState& state) {
       {"Left, Right", "One frame back / forward (Shift: to the first / last frame)"},
       {"F1", "This window"},
       {"M", "The Matrices window: transitions, control points, free-form matrices and presets"},
+      {"T", "The Construction tree window: leaves (project files, parts) combined by matrix operations"},
       {"Ctrl+Q", "Quit (asks before losing unsaved work)"},
   };
   static const Row mouse[] = {

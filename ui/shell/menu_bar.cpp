@@ -85,6 +85,8 @@ float drawMenuBar(AppCommands& app) {
       if (ImGui::MenuItem("Add median function")) addSetFunction(s, app.edits, FunctionKind::Median);
     }
     if (ImGui::MenuItem("Matrices...", "M", s.showMatrices)) s.showMatrices = !s.showMatrices;
+    if (ImGui::MenuItem("Construction tree...", "T", s.showConstruction)) s.showConstruction = !s.showConstruction;
+    s.probe.item("menu.construction");
     drawSymmetryMenu(s, app.edits);  // ui/shell/symmetry_menu.cpp
     ImGui::Separator();
     const bool haveFinal = d.project().final_function.has_value();
@@ -192,6 +194,7 @@ void handleKey(AppCommands& app, const ImGuiIO& io, bool ctrl, bool shift, bool 
   if (pressed(GLFW_KEY_SPACE)) s.previewPaused = !s.previewPaused;
   if (pressed(GLFW_KEY_F1)) s.showHelp = !s.showHelp;
   if (pressed(GLFW_KEY_M)) s.showMatrices = !s.showMatrices;
+  if (pressed(GLFW_KEY_T)) s.showConstruction = !s.showConstruction;
   for (int v = 0; v < 4; ++v)
     if (pressed(GLFW_KEY_1 + v) || pressed(GLFW_KEY_KP_1 + v)) toggleView(s, v);
 }

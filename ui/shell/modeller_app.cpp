@@ -31,6 +31,7 @@
 #include "ui/shell/panel_layout.h"
 #include "ui/panels/panels.h"
 #include "ui/views/preview_view.h"
+#include "ui/panels/construction_tree_panel.h"
 #include "ui/shell/project_files.h"
 #include "render/image_file.h"
 #include "ui/gl/screenshot.h"
@@ -140,6 +141,7 @@ class ModellerApp {
   OperationPanelState operationPanel_;
   SelectionPanelState selectionPanel_;
   MatricesWindowState matricesWindow_;  // Function > Matrices
+  ConstructionTreePanel constructionTree_;  // Function > Construction tree
   std::unique_ptr<AppCommands> commands_;
   std::string iniPath_, title_;
   bool resetLayout_ = false;
@@ -319,6 +321,7 @@ void ModellerApp::buildUi() {
   }
   drawHelpWindow(state_);
   drawMatricesWindow(state_, edits_, matricesWindow_);
+  constructionTree_.draw(state_, edits_);
   files_.draw(edits_);
   export_.draw(state_);
   animation_.draw(state_);
@@ -373,6 +376,7 @@ void ModellerApp::writeProbe(double frameMs) {
   j["export"] = export_.probeJson();
   j["render_animation"] = animation_.probeJson();
   j["combine"] = combine_.probeJson();
+  j["construction"] = constructionTree_.probeJson(state_);
   const Project& project = state_.document.project();
   nlohmann::json tracks = nlohmann::json::object();
   for (const auto& [path, track] : project.tracks) {

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "base/atomic_file.h"
+#include "base/bounded_read.h"
 #include "io/project_io.h"
 #include "io/flame_import.h"
 
@@ -18,6 +19,16 @@ namespace gridifs::ui {
 namespace fs = std::filesystem;
 
 namespace {
+
+/// Autosaved work: a construction tree's file leaves are found beside the original project (or
+/// where their absolute paths say, for an untitled one), not beside the autosave.
+Project loadRecovered(const fs::path& autosave, const fs::path& original) {
+  const std::optional<std::string> text = readBoundedFile(autosave, limits::kMaxFileBytes, "project file");
+  if (!text) throw IoError(autosave.string() + " is larger than 64 MiB");
+  Project project = parseProject(*text);
+  if (project.construction) readConstructionLeaves(project, original);
+  return project;
+}
 
 fs::path xdgFolder(const char* variable, const char* fallback) {
   if (const char* v = std::getenv(variable); v && *v && fs::path(v).is_absolute()) return fs::path(v) / "gridifs";
@@ -342,7 +353,7 @@ void ProjectFiles::draw(EditQueue& edits) {
     };
     if (ImGui::Button("Recover", button)) {
       try {
-        Project recovered = loadProject(r.file);
+        Project recovered = loadRecovered(r.file, r.original);
         Project base = defaultNewProject();
         fs::path original = r.original;
         std::error_code ec;
