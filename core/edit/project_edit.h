@@ -12,6 +12,7 @@
 #include <string>
 #include <variant>
 
+#include "edit/field_layer_edits.h"
 #include "edit/function_edits.h"
 #include "edit/key_edits.h"
 #include "edit/matrix_edits.h"
@@ -47,6 +48,8 @@ using ProjectEdit = std::variant<
     SetSettingNumber, SetDisplayMode, SetSampleBudget, SetBackground, SetPalette, SetDensityEstimation,
     ResetFlameSettings, SetDensityDisplay, SetQuality, SetPaletteKeys, SetCamera, SetCameraDistance, SetTime, SetAnimation, AddLight, RemoveLight, SetLightDirection,
     SetLightColor, SetLightShadows, SetFogColor, SetAperture,
+    // the volume's field layers (edit/field_layer_edits.h)
+    AddFieldLayer, RemoveFieldLayer, SetFieldLayer,
     // keyframes (edit/key_edits.h)
     SetKeys, RemoveKeys,
     // transitions and free-form IFS (edit/matrix_edits.h)
