@@ -18,8 +18,9 @@ struct AddFieldLayer {
   std::string label() const;
 };
 
-/// Removes layer `layer`; the next one moves up. Removing layer 0 drops the keyframe tracks of
-/// volume.field.*, which named it.
+/// Removes layer `layer` and its keyframe tracks; the next ones move up with theirs. Tracks are
+/// renamed as the file spells the layers (volume.field.KEY for one, volume.field[i].KEY for a list),
+/// also by AddFieldLayer.
 struct RemoveFieldLayer {
   std::size_t layer = 0;
   void apply(Project& project) const;

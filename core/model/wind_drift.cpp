@@ -16,11 +16,14 @@ void clearDrift(Function& function) {
 /// The field whose wind component the canonical parameter path names, or null.
 FractalFieldParams* windOf(Project& project, const std::string& path, int& component) {
   static const std::regex kOpWind(R"(^(?:functions\[(\d+)\]|(final))\.ops\[(\d+)\]\.wind\[([012])\]$)");
-  static const std::regex kVolumeWind(R"(^volume\.field\.wind\[([012])\]$)");
+  static const std::regex kVolumeWind(R"(^volume\.field(?:\[(\d+)\])?\.wind\[([012])\]$)");
   std::smatch m;
   if (std::regex_match(path, m, kVolumeWind)) {
-    component = std::stoi(m[1].str());
-    return project.volume && project.volume->field ? &project.volume->field->field : nullptr;
+    component = std::stoi(m[2].str());
+    if (!project.volume || !project.volume->field) return nullptr;
+    const std::size_t layer = m[1].matched ? std::stoul(m[1].str()) : 0;
+    if (layer == 0) return &project.volume->field->field;
+    return layer <= project.volume->more_fields.size() ? &project.volume->more_fields[layer - 1].field : nullptr;
   }
   if (!std::regex_match(path, m, kOpWind)) return nullptr;
   component = std::stoi(m[4].str());

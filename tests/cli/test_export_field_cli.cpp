@@ -14,6 +14,7 @@
 namespace gridifs {
 namespace {
 
+using namespace test_support;
 namespace fs = std::filesystem;
 
 struct Image {

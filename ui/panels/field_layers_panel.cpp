@@ -2,8 +2,8 @@
 // ("Animation of fractal objects", §2) that shape the measure attractor's density, lay clouds of
 // their own or raise a mountain (his fig. 6), each optionally blended with a shape (fig. 3). Every
 // parameter of the field operation but its amplitude, from the operation table, with the layer's
-// strength, role, height and shape; one undo step per slider drag, key buttons on the first
-// layer's keyable numbers (keyframe tracks reach it as volume.field.*).
+// strength, role, height and shape; one undo step per slider drag, key buttons on the numbers
+// (tracks volume.field.KEY, or volume.field[i].KEY when there are several layers).
 #include <imgui.h>
 
 #include <algorithm>
@@ -38,9 +38,12 @@ struct LayerEditor {
     gestureItem(edits, label, changed, SetFieldLayer{index, value});
   }
   void commit(const std::string& label) { edits.commit(label, SetFieldLayer{index, value}); }
-  /// The key button of a number keyframe tracks reach (the first layer's volume.field.KEY).
+  bool list = false;  // several layers: tracks name them volume.field[i]
+
+  /// The key button of the layer's number `key` (volume.field.KEY, or volume.field[i].KEY in a list).
   void key(const std::string& key, const double* values, int components) {
-    if (index == 0) keyButton(state, edits, "volume.field." + key, values, components);
+    const std::string layer = list ? "volume.field[" + std::to_string(index) + "]" : std::string("volume.field");
+    keyButton(state, edits, layer + "." + key, values, components);
   }
 };
 
@@ -62,10 +65,12 @@ void drawRole(LayerEditor& e) {
   contextHelp(e.state, "How much the field counts: the density's weight 1 + strength·field, the cloud's density "
                        "strength·field, the mountain's height strength·field");
   if (e.value.role == FieldRole::Density) return;
+  e.key("height", &e.value.height, 1);
   changed = sliderDouble("Height", e.value.height, -1.0, 1.0, "%.3f");
   e.item("Field layer height", changed, "height");
   contextHelp(e.state, "The layer's plane z = height (the cloud's middle, the mountain's base)");
   if (e.value.role != FieldRole::Cloud) return;
+  e.key("thickness", &e.value.thickness, 1);
   changed = sliderDouble("Thickness", e.value.thickness, 0.0, 1.0, "%.3f");
   e.item("Cloud thickness", changed, "thickness");
   contextHelp(e.state, "The cloud's full thickness where it is densest");
@@ -124,16 +129,18 @@ void drawShape(LayerEditor& e) {
     changed = sliderDouble("Minor", set.minor, 0.01, 1.0, "%.3f");
     e.item("Field shape minor radius", changed, "shape.minor");
   }
+  e.key("blend", &e.value.blend, 1);
   changed = sliderDouble("Blend", e.value.blend, 0.0, 1.0, "%.3f");
   e.item("Field blend", changed, "blend");
   contextHelp(e.state, "0: the field alone; 1: the shape alone");
+  e.key("softness", &e.value.softness, 1);
   changed = sliderDouble("Softness", e.value.softness, 0.01, 1.0, "%.3f");
   e.item("Field shape softness", changed, "softness");
   contextHelp(e.state, "The distance over which the shape goes from inside (1) to outside (−1)");
 }
 
 void drawLayer(ModellerState& state, EditQueue& edits, std::size_t index, const VolumeDensityField& layer) {
-  LayerEditor e{state, edits, index, layer};
+  LayerEditor e{state, edits, index, layer, fieldLayerCount(state.document.project()) > 1};
   char title[48];
   std::snprintf(title, sizeof title, "Layer %zu: %s", index + 1, toString(layer.role));
   sectionTitle(title);
