@@ -2,6 +2,7 @@
 // operation or the volume's field layers as a heightfield mesh (Colonna, "Animation of fractal
 // objects": fractal mountains and the earthquake of fig. 5) and as a colour-mapped picture (his
 // fig. 2; the field blended with a shape, fig. 3; mountains under clouds, fig. 6).
+#include <cstdio>
 #include <regex>
 
 #include "app/cli.h"
@@ -137,6 +138,14 @@ void keepOctaves(ChosenField& chosen, int octaves) {
   }
 }
 
+/// An EXR channel's name: "layer00_terrain", … (OpenEXR stores channels sorted by name, so the
+/// two-digit index keeps them in the layers' order).
+std::string layerChannel(std::size_t index, FieldRole role) {
+  char name[32];
+  std::snprintf(name, sizeof name, "layer%02zu_%s", index, toString(role));
+  return name;
+}
+
 Palette imagePalette(const std::string& name) {
   try {
     return builtinPalette(name);
@@ -150,7 +159,7 @@ void writeImage(const ExportFieldArgs& a, const ChosenField& chosen, double t, c
   for (std::size_t i = 0; i < chosen.layers.size(); ++i) {
     const VolumeDensityField& layer = *chosen.layers[i];
     planes.push_back({fieldLayerPlane(layer, a.size, fieldLayerPlaneHeight(layer), t), layer.role, layer.strength,
-                      chosen.layers.size() == 1 ? std::string("Y") : std::string(toString(layer.role)) + std::to_string(i)});
+                      chosen.layers.size() == 1 ? std::string("Y") : layerChannel(i, layer.role)});
   }
   try {
     writeFieldImage(a.image, planes, a.size, palette);

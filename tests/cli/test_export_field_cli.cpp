@@ -99,7 +99,7 @@ TEST(ExportFieldImage, ExrKeepsTheRawValuesOfEveryLayer) {
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const Image image = readImage(exr);
   ASSERT_EQ(image.channels, 3);
-  EXPECT_EQ(image.names, (std::vector<std::string>{"terrain0", "cloud1", "density2"}));
+  EXPECT_EQ(image.names, (std::vector<std::string>{"layer00_terrain", "layer01_cloud", "layer02_density"}));
   // Pixel (i, j) of the top row is y = 1 − 1/16: the layer's value there, as the core computes it.
   const Project p = parseProject(kScene);
   const std::vector<const VolumeDensityField*> layers = fieldLayers(*p.volume);
