@@ -931,9 +931,10 @@ void fieldStepDisplace(const FractalField& field, std::vector<Vec3>& nodes, cons
   }
   if (selected.empty()) return;
 
-  // The sample points s = (q + wind·t, t), wrapped (Colonna §3.2).
+  // The sample points s = (q + ∫₀ᵗ wind, t), wrapped (Colonna §3.2).
+  const Vec3 shift = p.windShift(t);
   const auto sampleOf = [&](const Vec3& q) {
-    const FieldPoint s = field.wrapped({q.x + p.wind.x * t, q.y + p.wind.y * t, q.z + p.wind.z * t, t});
+    const FieldPoint s = field.wrapped({q.x + shift.x, q.y + shift.y, q.z + shift.z, t});
     return Vec3{s[0], s[1], s[2]};
   };
   const double time = field.wrapped({0.0, 0.0, 0.0, t})[3];

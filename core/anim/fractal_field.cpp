@@ -97,7 +97,8 @@ FieldPoint FractalField::wrapped(FieldPoint s) const {
 }
 
 Vec3 FractalField::displacement(const Vec3& q, double t) const {
-  const FieldPoint s = wrapped({q.x + params_.wind.x * t, q.y + params_.wind.y * t, q.z + params_.wind.z * t, t});
+  const Vec3 shift = params_.windShift(t);
+  const FieldPoint s = wrapped({q.x + shift.x, q.y + shift.y, q.z + shift.z, t});
   Vec3 sum{0.0, 0.0, 0.0};
   for (int k = 0; k < levelCount_; ++k) {
     const Level& level = levels_[k];

@@ -18,6 +18,7 @@
 // Thread-safety: a FractalField is immutable after construction; evaluate it from any thread.
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -45,6 +46,12 @@ struct FractalFieldParams {
   std::uint64_t seed = 0;                            // axis a uses seed + a (modulo 2^64)
   Vec3 wind{0.0, 0.0, 0.0};                          // shift of the sample point per unit time
   std::array<double, 4> period{0.0, 0.0, 0.0, 0.0};  // Lx, Ly, Lz, Lt; 0 = not periodic
+  /// Not a file field: the wind's displacement ∫₀ᵗ wind(τ) dτ at the project's time when the
+  /// wind is keyed (set with the project at a moment, model/wind_drift.h); none: wind·t.
+  std::optional<Vec3> drift;
+
+  /// The shift of the sample point at time t: the integral of the wind from 0 to t.
+  Vec3 windShift(double t) const { return drift ? *drift : wind * t; }
 
   static constexpr int kMaxOctaves = 16;
   bool operator==(const FractalFieldParams&) const = default;
@@ -59,7 +66,7 @@ class FractalField {
   /// positive, periods non-negative).
   explicit FractalField(const FractalFieldParams& params);
 
-  /// amplitude ⊙ (F_S(s), F_S+1(s), F_S+2(s)) with s = (q + wind·t, t), wrapped by the periods.
+  /// amplitude ⊙ (F_S(s), F_S+1(s), F_S+2(s)) with s = (q + windShift(t), t), wrapped by the periods.
   Vec3 displacement(const Vec3& q, double t) const;
 
   /// nodes[n] += displacement(nodes[n], t) for every n with mask[n] set, up to single-precision

@@ -71,6 +71,59 @@ double KeyframeTrack::valueAt(double t) const {
   return a.v;
 }
 
+namespace {
+
+// The antiderivatives of the cubic Hermite basis (h00, h10, h01, h11) in u, zero at u = 0.
+struct HermitePrimitive {
+  double h00, h10, h01, h11;
+};
+HermitePrimitive hermitePrimitive(double u) {
+  const double u2 = u * u, u3 = u2 * u, u4 = u3 * u;
+  return {u4 / 2 - u3 + u, u4 / 4 - 2 * u3 / 3 + u2 / 2, -u4 / 2 + u3, u4 / 4 - u3 / 3};
+}
+
+// ∫ over the part [u0, u1] of segment i (keys[i] to keys[i + 1]) of the track's value, in seconds.
+double segmentIntegral(const std::vector<Keyframe>& keys, std::size_t i, double u0, double u1) {
+  const Keyframe& a = keys[i];
+  const Keyframe& b = keys[i + 1];
+  const double h = b.t - a.t;
+  switch (a.interp) {
+    case KeyInterpolation::Step:
+      return h * a.v * (u1 - u0);
+    case KeyInterpolation::Linear:
+      return h * (a.v * (u1 - u0) + (b.v - a.v) * (u1 * u1 - u0 * u0) / 2);
+    case KeyInterpolation::Smooth: {
+      const double m0 = tangentAt(keys, i) * h, m1 = tangentAt(keys, i + 1) * h;
+      const HermitePrimitive p1 = hermitePrimitive(u1), p0 = hermitePrimitive(u0);
+      return h * ((p1.h00 - p0.h00) * a.v + (p1.h10 - p0.h10) * m0 + (p1.h01 - p0.h01) * b.v + (p1.h11 - p0.h11) * m1);
+    }
+  }
+  return 0.0;
+}
+
+// ∫ from the first key's time to t of the track's value (negative before the first key).
+double primitiveAt(const std::vector<Keyframe>& keys, double t) {
+  const double first = keys.front().t;
+  if (t <= first) return (t - first) * keys.front().v;
+  double sum = 0.0;
+  for (std::size_t i = 0; i + 1 < keys.size(); ++i) {
+    const double h = keys[i + 1].t - keys[i].t;
+    if (t >= keys[i + 1].t) {
+      sum += segmentIntegral(keys, i, 0.0, 1.0);
+      continue;
+    }
+    return sum + segmentIntegral(keys, i, 0.0, (t - keys[i].t) / h);
+  }
+  return sum + (t - keys.back().t) * keys.back().v;
+}
+
+}  // namespace
+
+double KeyframeTrack::integral(double t0, double t1) const {
+  if (keys.empty()) return 0.0;
+  return primitiveAt(keys, t1) - primitiveAt(keys, t0);
+}
+
 void KeyframeTrack::validate() const {
   if (keys.empty()) throw ModelError("", "a track needs at least one key");
   for (std::size_t i = 0; i < keys.size(); ++i) {

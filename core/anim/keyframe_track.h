@@ -33,6 +33,9 @@ struct KeyframeTrack {
 
   /// The track's value at time t. Expects at least one key.
   double valueAt(double t) const;
+  /// ∫ from t0 to t1 of valueAt(τ) dτ (negative when t1 < t0), exact for every interpolation: the
+  /// segments are constant, linear or cubic polynomials and the ends hold constant values.
+  double integral(double t0, double t1) const;
   /// Throws ModelError (path "[i].t", "[i].v") for an empty track, keys out of time order or
   /// duplicated, and non-finite times or values.
   void validate() const;

@@ -13,6 +13,7 @@
 #include <variant>
 
 #include "edit/construction_edits.h"
+#include "edit/field_layer_edits.h"
 #include "edit/function_edits.h"
 #include "edit/key_edits.h"
 #include "edit/matrix_edits.h"
@@ -49,6 +50,8 @@ using ProjectEdit = std::variant<
     SetSettingNumber, SetDisplayMode, SetSampleBudget, SetBackground, SetPalette, SetDensityEstimation,
     ResetFlameSettings, SetDensityDisplay, SetQuality, SetPaletteKeys, SetCamera, SetCameraDistance, SetTime, SetAnimation, AddLight, RemoveLight, SetLightDirection,
     SetLightColor, SetLightShadows, SetFogColor, SetAperture,
+    // the volume's field layers (edit/field_layer_edits.h)
+    AddFieldLayer, RemoveFieldLayer, SetFieldLayer,
     // keyframes (edit/key_edits.h)
     SetKeys, RemoveKeys,
     // transitions and free-form IFS (edit/matrix_edits.h)

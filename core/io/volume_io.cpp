@@ -5,6 +5,7 @@
 #include "io/json_read.h"
 #include "io/operation_json.h"
 #include "io/settings_json.h"
+#include "model/field_layer.h"
 #include "model/operation_table.h"
 #include "model/settings_tables.h"
 
@@ -222,6 +223,47 @@ namespace {
 // The field operation's parameters that a density field carries: all but the amplitude.
 bool isDensityFieldParam(const ParamSpec& spec) { return std::string_view(spec.key) != "amplitude"; }
 
+// A layer's role and placement in the scene, and the shape it is blended with (Colonna's
+// figures 3 and 6); each is written only when it differs from the single field's default, so a
+// file with one plain field saves as before.
+void readLayerFields(const json& object, const std::string& path, VolumeDensityField& field) {
+  if (auto it = object.find("role"); it != object.end()) {
+    const std::string word = readText(*it, path + ".role");
+    if (!parseFieldRole(word, field.role))
+      fail(path + ".role", "expected \"density\", \"cloud\" or \"terrain\", found \"" + word.substr(0, 32) + "\"");
+  }
+  if (auto it = object.find("height"); it != object.end())
+    field.height = json_read::readNumber(*it, path + ".height", -kMaxFieldLayerExtent, kMaxFieldLayerExtent);
+  if (auto it = object.find("thickness"); it != object.end())
+    field.thickness = json_read::readNumber(*it, path + ".thickness", 0.0, kMaxFieldLayerExtent);
+  if (auto it = object.find("shape"); it != object.end() && !it->is_null()) {
+    field.shape = readSet(*it, path + ".shape");
+    if (field.shape->shape == SetShape::Mesh || field.shape->shape == SetShape::Vdb)
+      fail(path + ".shape", "a field's shape must be a sphere, a box or a torus");
+  }
+  if (auto it = object.find("blend"); it != object.end())
+    field.blend = json_read::readNumber(*it, path + ".blend", 0.0, 1.0);
+  if (auto it = object.find("softness"); it != object.end()) {
+    field.softness = json_read::readNumber(*it, path + ".softness", 0.0, kMaxFieldLayerExtent);
+    if (field.softness <= 0.0) fail(path + ".softness", "expected a positive number of at most 1000");
+  }
+}
+
+void writeLayerFields(const VolumeDensityField& field, ordered_json& o) {
+  const VolumeDensityField defaults;
+  if (field.role != defaults.role) o["role"] = toString(field.role);
+  if (field.role != FieldRole::Density || field.height != defaults.height) o["height"] = field.height;
+  if (field.role == FieldRole::Cloud || field.thickness != defaults.thickness) o["thickness"] = field.thickness;
+  if (field.shape) {
+    o["shape"] = writeSet(*field.shape);
+    o["blend"] = field.blend;
+    o["softness"] = field.softness;
+  } else {
+    if (field.blend != defaults.blend) o["blend"] = field.blend;
+    if (field.softness != defaults.softness) o["softness"] = field.softness;
+  }
+}
+
 VolumeDensityField readDensityField(const json& object, const std::string& path) {
   json_read::requireObject(object, path);
   VolumeDensityField field;
@@ -231,6 +273,7 @@ VolumeDensityField readDensityField(const json& object, const std::string& path)
   for (const ParamSpec& spec : findOperation("field")->params)
     if (isDensityFieldParam(spec)) operation_json::readParam(spec, object, path, params);
   field.field = std::get<FieldOp>(params);
+  readLayerFields(object, path, field);
   return field;
 }
 
@@ -240,7 +283,26 @@ ordered_json writeDensityField(const VolumeDensityField& field) {
   const OpParams params = field.field;
   for (const ParamSpec& spec : findOperation("field")->params)
     if (isDensityFieldParam(spec)) o[spec.key] = operation_json::writeParam(spec, params);
+  writeLayerFields(field, o);
   return o;
+}
+
+// "field": one layer as an object, or a list of layers (Colonna's fig. 6: mountains and clouds).
+void readFieldLayers(const json& field, VolumeSettings& v) {
+  if (!field.is_array()) {
+    v.field = readDensityField(field, "volume.field");
+    return;
+  }
+  if (field.empty()) return;
+  if (field.size() > kMaxFieldLayers)
+    fail("volume.field", "expected at most " + std::to_string(kMaxFieldLayers) + " field layers");
+  for (std::size_t i = 0; i < field.size(); ++i) {
+    VolumeDensityField layer = readDensityField(field[i], "volume.field[" + std::to_string(i) + "]");
+    if (i == 0)
+      v.field = std::move(layer);
+    else
+      v.more_fields.push_back(std::move(layer));
+  }
 }
 
 }  // namespace
@@ -252,8 +314,7 @@ std::optional<VolumeSettings> readVolume(const json& root) {
   // Validated with the rest of the project (validateProject), after the functions.
   VolumeSettings v;
   readSettingFields(volumeSettingsTable(), *it, "volume", &v);
-  if (auto field = it->find("field"); field != it->end() && !field->is_null())
-    v.field = readDensityField(*field, "volume.field");
+  if (auto field = it->find("field"); field != it->end() && !field->is_null()) readFieldLayers(*field, v);
   if (auto start = it->find("start"); start != it->end() && !start->is_null()) v.start = readSet(*start, "volume.start");
   return v;
 }
@@ -261,7 +322,13 @@ std::optional<VolumeSettings> readVolume(const json& root) {
 void writeVolume(const Project& project, ordered_json& root) {
   if (!project.volume) return;
   ordered_json volume = writeSettings(volumeSettingsTable(), *project.volume);
-  if (project.volume->field) volume["field"] = writeDensityField(*project.volume->field);
+  if (project.volume->field && project.volume->more_fields.empty()) {
+    volume["field"] = writeDensityField(*project.volume->field);
+  } else if (project.volume->field) {
+    ordered_json layers = ordered_json::array({writeDensityField(*project.volume->field)});
+    for (const VolumeDensityField& layer : project.volume->more_fields) layers.push_back(writeDensityField(layer));
+    volume["field"] = layers;
+  }
   if (project.volume->start) volume["start"] = writeSet(*project.volume->start);
   root["volume"] = volume;
 }

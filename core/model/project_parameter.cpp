@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "model/field_layer.h"
 #include "model/settings_tables.h"
 
 namespace gridifs {
@@ -22,6 +23,14 @@ std::string show(double v) {
 }
 
 std::string item(const std::string& path, int index) { return path + "[" + std::to_string(index) + "]"; }
+
+/// Layer `a` of volume.field: the field itself, or one of the layers after it.
+VolumeDensityField& fieldLayerOf(Project& project, int a) {
+  return a == 0 ? *project.volume->field : project.volume->more_fields[std::size_t(a - 1)];
+}
+
+/// How the file names layer `a`: "volume.field" for one field, "volume.field[a]" in a list.
+std::string layerPathOf(bool list, int a) { return list ? item("volume.field", a) : std::string("volume.field"); }
 
 /// A range bound of a setting read with SettingWords::IntegerRange as an integer (the table's
 /// INT64_MAX is stored as the double 2^63), as io/settings_json reads it.
@@ -346,11 +355,22 @@ class ParameterResolver {
     if (!v.field) return Lookup::Missing;
     position(int(volumeSettingsTable().fields.size()));
     if (end()) return Lookup::NotANumber;
+    // One layer is an object; several are a list (io/volume_io).
+    const VolumeDensityField* layer = &*v.field;
+    if (!v.more_fields.empty()) {
+      const int i = index(1 + v.more_fields.size());
+      if (i < 0) return Lookup::Missing;
+      p_.layerList_ = true;
+      p_.a_ = i;
+      if (i > 0) layer = &v.more_fields[std::size_t(i - 1)];
+      if (end()) return Lookup::NotANumber;
+    }
     const std::string_view field = token();
     if (field == "strength") {
       position(0);
       return number(Where::DensityStrength, Reader::Number, Storage::Double, 0.0, kMaxDensityFieldStrength);
     }
+    if (const Lookup found = layerField(*layer, field); found != Lookup::Missing) return found;
     // The field operation's parameters but its amplitude (io/volume_io).
     const std::vector<ParamSpec>& params = findOperation("field")->params;
     for (std::size_t i = 0; i < params.size(); ++i) {
@@ -364,6 +384,42 @@ class ParameterResolver {
       p_.offset_ = std::size_t(static_cast<const char*>(s.locate(&probe)) -
                                reinterpret_cast<const char*>(&std::get<FieldOp>(probe)));
       return simpleParam(s, Where::DensityParam);
+    }
+    return Lookup::Missing;
+  }
+
+  /// A field layer's role, placement and shape (io/volume_io's writeLayerFields: each is in the
+  /// file only while it differs from the single field's default, as there).
+  Lookup layerField(const VolumeDensityField& layer, std::string_view key) {
+    const VolumeDensityField defaults;
+    const int after = int(findOperation("field")->params.size()) + 1;
+    if (key == "role") return layer.role != defaults.role ? text() : Lookup::Missing;
+    struct Row {
+      const char* key;
+      bool written;
+      double lo, hi;
+    };
+    const Row rows[] = {
+        {"height", layer.role != FieldRole::Density || layer.height != defaults.height, -kMaxFieldLayerExtent,
+         kMaxFieldLayerExtent},
+        {"thickness", layer.role == FieldRole::Cloud || layer.thickness != defaults.thickness, 0.0,
+         kMaxFieldLayerExtent},
+        {"blend", layer.shape || layer.blend != defaults.blend, 0.0, 1.0},
+        {"softness", layer.shape || layer.softness != defaults.softness, 0.0, kMaxFieldLayerExtent},
+    };
+    for (int b = 0; b < 4; ++b) {
+      if (key != rows[b].key) continue;
+      if (!rows[b].written) return Lookup::Missing;
+      position(after + 1 + b);
+      p_.b_ = b;
+      p_.fragile_ = true;
+      return number(Where::LayerNumber, Reader::Number, Storage::Double, rows[b].lo, rows[b].hi);
+    }
+    if (key == "shape" && layer.shape) {
+      position(after + 5);
+      p_.layerShape_ = true;
+      p_.fragile_ = true;
+      return set(*layer.shape);
     }
     return Lookup::Missing;
   }
@@ -708,9 +764,13 @@ void* ProjectParameter::locate(Project& project) const {
     case Where::ControlPoint:
       return vectorComponent(project.space->control_points[std::size_t(a_)]);
     case Where::DensityStrength:
-      return &project.volume->field->strength;
+      return &fieldLayerOf(project, a_).strength;
     case Where::DensityParam: {
-      return fieldComponent(reinterpret_cast<char*>(&project.volume->field->field) + offset_);
+      return fieldComponent(reinterpret_cast<char*>(&fieldLayerOf(project, a_).field) + offset_);
+    }
+    case Where::LayerNumber: {
+      VolumeDensityField& layer = fieldLayerOf(project, a_);
+      return b_ == 0 ? &layer.height : b_ == 1 ? &layer.thickness : b_ == 2 ? &layer.blend : &layer.softness;
     }
     case Where::Time:
       return &project.time;
@@ -746,6 +806,7 @@ void* ProjectParameter::locate(Project& project) const {
     }
   };
   if (f_ == kStartSet) return setField(*project.volume->start);
+  if (layerShape_) return setField(*fieldLayerOf(project, a_).shape);
   Function& fn = f_ < 0 ? *project.final_function : project.functions[std::size_t(f_)];
   if (void* field = setField(fn.set)) return field;
   switch (where_) {
@@ -965,10 +1026,14 @@ std::string ProjectParameter::path() const {
     case Where::ControlPoint:
       return item(item("space.control_points", a_), c_);
     case Where::DensityStrength:
-      return "volume.field.strength";
+      return layerPathOf(layerList_, a_) + ".strength";
     case Where::DensityParam: {
-      const std::string field = std::string("volume.field.") + field_->key;
+      const std::string field = layerPathOf(layerList_, a_) + "." + field_->key;
       return field_->type == ParamType::Vector ? item(field, c_) : field;
+    }
+    case Where::LayerNumber: {
+      static const char* keys[] = {"height", "thickness", "blend", "softness"};
+      return layerPathOf(layerList_, a_) + "." + keys[b_];
     }
     case Where::Time:
       return "time";
@@ -1002,6 +1067,7 @@ std::string ProjectParameter::path() const {
     }
   };
   if (f_ == kStartSet) return setPath("volume.start");
+  if (layerShape_) return setPath(layerPathOf(layerList_, a_) + ".shape");
   const std::string fn = f_ < 0 ? std::string("final") : item("functions", f_);
   if (std::string p = setPath(fn + ".set"); !p.empty()) return p;
   switch (where_) {
@@ -1033,7 +1099,6 @@ std::string ProjectParameter::path() const {
       return item(fn + ".post." + kPlacementKeys[b_], c_);
     case Where::PostMatrix:
       return item(item(fn + ".post.matrix", a_), c_);
-
     default:
       break;
   }

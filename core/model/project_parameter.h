@@ -87,8 +87,9 @@ class ProjectParameter {
     SetThickness,     // ... (a drawing)
     Transition,       // row `a`, column `c`
     ControlPoint,     // point `a`, component `c`
-    DensityStrength,  // volume.field.strength
-    DensityParam,     // volume.field: `param`, component `c`
+    DensityStrength,  // volume.field (layer `a`).strength
+    DensityParam,     // volume.field (layer `a`): `param`, component `c`
+    LayerNumber,      // volume.field (layer `a`): `b` 0 height, 1 thickness, 2 blend, 3 softness
     Time,
     Version,
   };
@@ -131,6 +132,8 @@ class ProjectParameter {
   const FieldSchema* field_ = nullptr;
   std::size_t offset_ = 0;  // DensityParam: the field's offset in FractalFieldParams
   std::string key_;         // VariationWeight, VariationParam: the name
+  bool layerList_ = false;  // volume.field is a list: its layers are volume.field[a]
+  bool layerShape_ = false; // the Set* rows name the shape of field layer `a`, not a function's set
   /// Positions along the file's reading order, level by level (the root's member, the
   /// function, the field, ...), so sorting by it sorts numbers as reading meets them.
   std::array<std::int32_t, 9> order_{};

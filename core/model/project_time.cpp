@@ -12,6 +12,7 @@
 #include "model/project_parameter.h"
 #include "model/settings_tables.h"
 #include "model/validation.h"
+#include "model/wind_drift.h"
 
 namespace gridifs {
 namespace {
@@ -109,16 +110,21 @@ Project projectAtTime(const Project& project, double t) {
   if (project.tracks.empty()) {
     Project at = project;
     at.time = t;
+    applyWindDrift(at);
     return at;
   }
   const std::vector<Keyed> keyed = resolveTracks(project);
   Project at = project;
   applyTracks(at, keyed, t);
+  applyWindDrift(at);
   return at;
 }
 
 Project keyEditedParameters(const Project& before, Project next) {
-  if (next.tracks.empty()) return next;
+  if (next.tracks.empty()) {
+    applyWindDrift(next);  // a drift left from removed wind keys goes
+    return next;
+  }
   std::vector<Keyed> keyed;
   keyed.reserve(next.tracks.size());
   for (auto& [path, track] : next.tracks) {
@@ -136,6 +142,7 @@ Project keyEditedParameters(const Project& before, Project next) {
   }
   if (!std::isfinite(next.time)) throw ModelError("time", "expected a finite number");
   applyTracks(next, keyed, next.time);
+  applyWindDrift(next);
   return next;
 }
 

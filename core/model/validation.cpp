@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "model/calculator.h"
+#include "model/field_layer.h"
 #include "model/free_form.h"
 #include "model/operation_table.h"
 #include "model/settings_tables.h"
@@ -52,16 +53,15 @@ void checkCondensationFunctions(const Project& project) {
     fail("final.kind", "the final function must be a grid (a lattice)");
   if (project.volume) {
     validateSettings(volumeSettingsTable(), *project.volume, "volume");
-    if (project.volume->start) checkCondensationSet(*project.volume->start, "volume.start");
-    if (const auto& field = project.volume->field) {
-      if (!std::isfinite(field->strength) || field->strength < 0.0 || field->strength > kMaxDensityFieldStrength)
-        fail("volume.field.strength", "expected a number between 0 and 100");
-      try {
-        validateOperationParams(OpParams{field->field});
-      } catch (const ModelError& e) {
-        throw e.under("volume.field");
-      }
-    }
+    const VolumeSettings& volume = *project.volume;
+    if (volume.start) checkCondensationSet(*volume.start, "volume.start");
+    if (!volume.field && !volume.more_fields.empty())
+      fail("volume.field", "further field layers need a first one");
+    // A single field is "volume.field"; a list's layers are "volume.field[i]".
+    const bool list = !volume.more_fields.empty();
+    if (volume.field) checkFieldLayer(*volume.field, list ? "volume.field[0]" : "volume.field");
+    for (std::size_t i = 0; i < volume.more_fields.size(); ++i)
+      checkFieldLayer(volume.more_fields[i], "volume.field[" + std::to_string(i + 1) + "]");
   }
 }
 

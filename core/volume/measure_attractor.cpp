@@ -276,7 +276,7 @@ DensityVolume developVoxels(const Project& project, const VolumeJob& job, const 
   std::vector<float> colors(acc.colorSums.size());
   for (std::size_t i = 0; i < colors.size(); ++i) colors[i] = float(double(acc.colorSums[i]) * (1.0 / kColorFixedScale));
   DensityVolume volume = finishBinning(VoxelLattice{acc.resolution}, acc.counts, std::move(colors));
-  if (job.settings.field && !cancelled(job)) modulateDensity(volume, *job.settings.field, project.time, job.threads);
+  if (!cancelled(job)) applyFieldLayers(volume, job.settings, project.time, job.threads);
   return volume;
 }
 
@@ -292,7 +292,8 @@ DensityVolume binPoints(const Project& project, const VolumeJob& job) {
     if (job.binner(*compiled, job, counts, colors)) return finishBinning(lattice, counts, std::move(colors));
   }
   VolumeJob cpu = job;
-  cpu.settings.field.reset();  // computeDensityVolume modulates once, after either path
+  cpu.settings.field.reset();  // computeDensityVolume applies the field layers once, after either path
+  cpu.settings.more_fields.clear();
   return developVoxels(project, cpu, accumulateVoxels(project, job));
 }
 
@@ -318,7 +319,7 @@ bool hasColorVolume(const Project& project) {
 
 DensityVolume computeDensityVolume(const Project& project, const VolumeJob& job) {
   DensityVolume volume = usesSetIteration(project) ? iterateSets(project, job) : binPoints(project, job);
-  if (job.settings.field && !cancelled(job)) modulateDensity(volume, *job.settings.field, project.time, job.threads);
+  if (!cancelled(job)) applyFieldLayers(volume, job.settings, project.time, job.threads);
   return volume;
 }
 

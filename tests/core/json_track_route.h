@@ -11,6 +11,7 @@
 #include "base/errors.h"
 #include "io/project_io.h"
 #include "model/project_time.h"
+#include "model/wind_drift.h"
 
 namespace gridifs::json_track_route {
 
@@ -62,9 +63,11 @@ inline void checkTrackPaths(const Project& project) {
 
 inline Project projectAtTime(const Project& project, double t) {
   if (!std::isfinite(t)) throw ModelError("time", "expected a finite number");
+  // The wind's drift is no number of the file: the same function derives it from the tracks.
   if (project.tracks.empty()) {
     Project at = project;
     at.time = t;
+    applyWindDrift(at);
     return at;
   }
   json document = json::parse(serializeProject(project));
@@ -78,6 +81,7 @@ inline Project projectAtTime(const Project& project, double t) {
     Project at = parseProject(withoutTracks.dump());
     at.tracks = project.tracks;
     json_track_route::checkTrackPaths(at);
+    applyWindDrift(at);
     return at;
   } catch (const ModelError& e) {
     std::ostringstream when;
@@ -87,7 +91,10 @@ inline Project projectAtTime(const Project& project, double t) {
 }
 
 inline Project keyEditedParameters(const Project& before, Project next) {
-  if (next.tracks.empty()) return next;
+  if (next.tracks.empty()) {
+    applyWindDrift(next);
+    return next;
+  }
   const json was = json::parse(serializeProject(before));
   const json now = json::parse(serializeProject(next));
   for (auto& [path, track] : next.tracks) {

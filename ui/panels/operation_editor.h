@@ -27,6 +27,10 @@ struct OpEditor {
   void commit(const std::string& label);
 };
 
+/// The widget of one Number, Integer, Seed, Vector or Choice parameter; true when it changed.
+/// Also draws the field parameters of the volume's field layers (field_layers_panel.cpp).
+bool scalarWidget(const ParamSpec& s, OpParams& params);
+
 /// The Expression parameters of an operation, drawn together: what the artist types stays in the
 /// field; only text that passes the operation's rules reaches the Document.
 void drawExpressionParams(OpEditor& e, const OperationSpec& spec);

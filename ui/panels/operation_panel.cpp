@@ -22,7 +22,8 @@ std::string lowercase(std::string text) {
   return text;
 }
 
-/// The widget of one Number, Integer, Seed, Vector or Choice parameter; true when it changed.
+}  // namespace
+
 bool scalarWidget(const ParamSpec& s, OpParams& params) {
   const bool slider = s.sliderMin < s.sliderMax;
   switch (s.type) {
@@ -58,6 +59,8 @@ bool scalarWidget(const ParamSpec& s, OpParams& params) {
     default: return false;
   }
 }
+
+namespace {
 
 void drawParams(OpEditor& e, const OperationSpec& spec) {
   bool expressionsDrawn = false;

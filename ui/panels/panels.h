@@ -61,6 +61,9 @@ void drawSelectionPanel(ModellerState& state, EditQueue& edits, SelectionPanelSt
 /// shading_panel.cpp: the shaded display's lights, ambient, specular, occlusion, fog and depth of
 /// field, one undo step per slider drag.
 void drawShadingPanel(ModellerState& state, EditQueue& edits);
+/// field_layers_panel.cpp: the volume's fractal field layers (role, strength, field parameters,
+/// the shape a field is blended with), one undo step per slider drag.
+void drawFieldLayersPanel(ModellerState& state, EditQueue& edits);
 
 /// What the Matrices window keeps between frames: the free-form preset it would apply next, the
 /// control net a grid project would be mapped onto, and the joints a hand edit of a matrix broke

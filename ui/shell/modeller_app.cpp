@@ -319,6 +319,16 @@ void ModellerApp::buildUi() {
     state_.probe.window("panel.shading");
     ImGui::End();
   }
+  if (state_.previewMode == PreviewMode::Volume) {
+    // The volume's field layers beside the cloud they shape (placed once; the artist may move it).
+    const ImVec2 ifsPos = panels_.pos[std::size_t(Panel::Ifs)];
+    const float em = ImGui::GetFontSize();
+    ImGui::SetNextWindowPos(ImVec2(ifsPos.x, ifsPos.y), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(em * 20.0f, em * 30.0f), ImGuiCond_FirstUseEver);
+    if (ImGui::Begin("Field layers")) drawFieldLayersPanel(state_, edits_);
+    state_.probe.window("panel.fieldlayers");
+    ImGui::End();
+  }
   drawHelpWindow(state_);
   drawMatricesWindow(state_, edits_, matricesWindow_);
   constructionTree_.draw(state_, edits_);
