@@ -19,7 +19,7 @@ namespace gridifs::gpu {
 namespace {
 
 enum Binding { kFunctions, kNodes, kAlias, kChains, kTallies, kKeys, kDensity, kColorSums, kPalette, kStages, kTransitionWalk };
-constexpr int kBuffers = 11;
+constexpr int kBuffers = kTransitionWalk + 1;
 
 constexpr std::uint32_t kGroupSize = 64;  // local_size_x in the shader
 constexpr std::uint32_t kMaxChains = 1u << 18;
@@ -83,6 +83,7 @@ ChaosCompute::ChaosCompute(const GpuInfo& info, ChaosOutput output, bool accumul
   // built on first use: plain grid IFSs pay nothing for them.
   if (output != ChaosOutput::Maps) plainProgram_ = buildProgram("");
   program_ = plainProgram_;
+  static_assert(kBuffers == kBufferCount, "a buffer per binding");
   glGenBuffers(kBuffers, buffers_);
 }
 

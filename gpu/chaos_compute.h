@@ -110,7 +110,9 @@ class ChaosCompute {
   unsigned program_ = 0;  // the program of the current setup: plainProgram_ or a variation program
   unsigned plainProgram_ = 0;
   std::map<std::string, unsigned> variationPrograms_;  // by usedVariations(ifs)
-  unsigned buffers_[10] = {};
+  /// One storage buffer per binding of chaos_game.comp.glsl (chaos_compute.cpp's Binding).
+  static constexpr int kBufferCount = 11;
+  unsigned buffers_[kBufferCount] = {};
   RenderJob job_;
   std::uint32_t chains_ = 0, count_ = 0;
   // Every chain's budget is budgetBase_ (+1 for the first budgetExtra_ of the job's chains);

@@ -53,6 +53,7 @@ double primitiveSignedDistance(const CondensationSet& set, const Vec3& p) {
     }
     case SetShape::Mesh:
     case SetShape::Vdb:
+    case SetShape::Image:
       break;
   }
   return 0.0;
@@ -132,7 +133,7 @@ void checkFieldLayer(const VolumeDensityField& layer, const std::string& path) {
   if (!std::isfinite(layer.softness) || layer.softness <= 0.0 || layer.softness > kMaxFieldLayerExtent)
     fail("softness", "expected a positive number of at most 1000");
   if (layer.shape) {
-    if (layer.shape->shape == SetShape::Mesh || layer.shape->shape == SetShape::Vdb)
+    if (layer.shape->shape == SetShape::Mesh || layer.shape->shape == SetShape::Vdb || layer.shape->shape == SetShape::Image)
       fail("shape", "a field's shape must be a sphere, a box or a torus");
     checkCondensationSet(*layer.shape, path + ".shape");
   }

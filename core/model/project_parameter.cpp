@@ -532,7 +532,8 @@ class ParameterResolver {
     if (it == values.end()) return Lookup::Missing;
     position(int(std::distance(values.begin(), it)));
     p_.key_ = name;
-    return number(where, Reader::Bounded, Storage::Double);
+    // As io/variation_io reads them (json_read::readFinite): any number of magnitude at most 1e6.
+    return number(where, Reader::Finite, Storage::Double);
   }
 
   Lookup set(const CondensationSet& set) {

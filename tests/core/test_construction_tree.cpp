@@ -158,6 +158,7 @@ TEST(ConstructionTree, FileLeavesAreReadBesideTheProjectAndFollowTheirFile) {
 TEST(ConstructionTree, BadTreesNameTheirJsonPath) {
   TempDir dir;
   saveProject(ring(3, 0.5, "t"), dir.path / "t.gridifs");
+  saveProject(ring(4, 0.4, "s"), dir.path / "s.gridifs");
   const std::string head = R"({"format": "gridifs", "version": 1, "functions": [{"name": "f"}], "construction": )";
   auto loadWith = [&](const std::string& construction) {
     writeText(dir.path / "p.gridifs", head + construction + "}");
@@ -178,9 +179,11 @@ TEST(ConstructionTree, BadTreesNameTheirJsonPath) {
             "operation)");
   EXPECT_EQ(loadWith(R"({"parts": [{"name": "x", "functions": [{"weight": -1}]}], "root": {"part": "x"}})"),
             "construction.parts[0].functions[0].weight: expected a number between 0 and 1e+09, found -1");
-  // product needs free-form operands: the operation's failure names its node.
-  const std::string product = loadWith(R"({"root": {"op": "product", "children": [{"file": "t.gridifs"}, {"file": "t.gridifs"}]}})");
-  EXPECT_EQ(product.rfind("construction.root: product failed: ", 0), 0u) << product;
+  // Two IFSs without a function of the same name intersect in no word, so the intersection has no
+  // attractor: the operation's failure names its node.
+  const std::string meet =
+      loadWith(R"({"root": {"op": "intersection", "children": [{"file": "t.gridifs"}, {"file": "s.gridifs"}]}})");
+  EXPECT_EQ(meet.rfind("construction.root: intersection failed: ", 0), 0u) << meet;
 }
 
 TEST(ConstructionTree, CyclesThroughFilesAreRefused) {
@@ -216,7 +219,7 @@ TEST(ConstructionTree, EditsAreUndoStepsAndReevaluate) {
   EXPECT_GT(doc.project().transitions[0][3], 0.0);
   // An operation that cannot apply to these operands is refused; the document keeps its state.
   const Project before = doc.project();
-  EXPECT_NE(modelErrorText([&] { doc.apply(SetConstructionOp{{}, "shuffle"}); }).find("shuffle failed"),
+  EXPECT_NE(modelErrorText([&] { doc.apply(SetConstructionOp{{}, "intersection"}); }).find("intersection failed"),
             std::string::npos);
   EXPECT_EQ(doc.project(), before);
   // Removing an operand leaves the other in the operation's place.

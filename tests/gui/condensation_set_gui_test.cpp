@@ -1,7 +1,7 @@
 // Set functions in the modeller: a median function added from the Functions panel, its set made a
 // box and sized in the set editor, saved (the file holds the box), undone back to the original
 // file byte for byte; a mesh path that cannot be read shows the voxelizer's sentence in the set
-// editor, and the modeller goes on.
+// editor, and the modeller goes on; the key buttons beside a set's numbers key them.
 #include "gui_harness.h"
 
 using namespace gridifs::gui_test;
@@ -156,5 +156,37 @@ TEST(CondensationSetGui, AMeshThatCannotBeReadIsToldInTheSetEditor) {
   probe = app.waitFor([](const nlohmann::json& j) { return j["undo"] == "Set shape: mesh" && j["set_message"] == ""; });
   EXPECT_EQ(probe["undo"], "Set shape: mesh");
   EXPECT_EQ(probe["set_message"], "");
+  EXPECT_EQ(::waitpid(app.pid(), nullptr, WNOHANG), 0) << "the modeller stopped";
+}
+
+TEST(CondensationSetGui, KeyButtonsBesideTheSetsNumbersKeyThemAndUndoRemovesTheKey) {
+  if (!haveDisplay()) GTEST_SKIP() << "no X display (run under xvfb-run)";
+  TempFolder home;
+  const fs::path project = exampleCopy(home, "sierpinski_tetrahedron.gridifs");
+  const std::size_t before = gridifs::loadProject(project).functions.size();
+  App app(home, {project.string()});
+  nlohmann::json probe = app.waitForPreview();
+  addSetFunction(app, "median");
+  probe = app.waitFor([](const nlohmann::json& j) { return j["undo"] == "Add median function"; });
+  ASSERT_EQ(probe["undo"], "Add median function");
+
+  // The new median's sphere radius and its rotation each have a key button.
+  const std::string fn = "functions[" + std::to_string(before) + "]";
+  auto keys = [](const nlohmann::json& j, const std::string& path) -> std::size_t {
+    const auto& tracks = j["timeline"]["tracks"];
+    return tracks.contains(path) ? tracks[path].size() : 0;
+  };
+  ASSERT_TRUE(app.waitForStableRect("key." + fn + ".rotate")) << "no key button beside the median's rotation";
+  const std::optional<Rect> radius = app.waitForStableRect("key." + fn + ".set.radius");
+  ASSERT_TRUE(radius) << "no key button beside the sphere's radius";
+  clickRect(*radius);
+  probe = app.waitFor([&](const nlohmann::json& j) { return keys(j, fn + ".set.radius") == 1; });
+  ASSERT_EQ(keys(probe, fn + ".set.radius"), 1u) << probe["timeline"]["tracks"].dump();
+  EXPECT_EQ(probe["undo"], "Set key");
+
+  pressKeys("ctrl+z");
+  probe = app.waitFor([&](const nlohmann::json& j) { return keys(j, fn + ".set.radius") == 0; });
+  EXPECT_EQ(keys(probe, fn + ".set.radius"), 0u);
+  EXPECT_EQ(probe["undo"], "Add median function");
   EXPECT_EQ(::waitpid(app.pid(), nullptr, WNOHANG), 0) << "the modeller stopped";
 }

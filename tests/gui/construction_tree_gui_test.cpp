@@ -75,12 +75,13 @@ TEST(ConstructionTreeGui, BuildsATreeFollowsAnEditedLeafAndUndoes) {
   probe = app.waitFor([](const nlohmann::json& j) { return j["undo"] == "Operation: concat"; });
   EXPECT_EQ(probe["construction"]["root_op"], "concat");
 
-  // A product of two grid projects cannot be built: the reason shows in the window, nothing changes.
-  const std::optional<Rect> product = app.waitForStableRect("tree.op.product");
-  ASSERT_TRUE(product);
-  clickRect(*product);
+  // Two IFSs without a function of the same name have no word in common, so their intersection
+  // has no attractor: the reason shows in the window, nothing changes.
+  const std::optional<Rect> meet = app.waitForStableRect("tree.op.intersection");
+  ASSERT_TRUE(meet);
+  clickRect(*meet);
   probe = app.waitFor([](const nlohmann::json& j) { return !j["construction"]["error"].get<std::string>().empty(); });
-  EXPECT_NE(probe["construction"]["error"].get<std::string>().find("product failed"), std::string::npos);
+  EXPECT_NE(probe["construction"]["error"].get<std::string>().find("intersection failed"), std::string::npos);
   EXPECT_EQ(probe["undo"], "Operation: concat");
   EXPECT_TRUE(probe["rects"].contains("tree.error"));
 

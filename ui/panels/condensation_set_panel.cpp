@@ -10,6 +10,7 @@
 #include <algorithm>
 
 #include "ui/base/widgets.h"
+#include "ui/panels/key_button.h"
 
 namespace gridifs::ui {
 namespace {
@@ -41,6 +42,13 @@ void setGesture(EditQueue& edits, const char* label, bool changed, FunctionRef r
   gestureItem(edits, label, changed, SetCondensationSet{ref, set});
 }
 
+/// The key button of the set's number `key` (functions[i].set.KEY): every number of a set is
+/// keyable (the rotated median's too), as the paper's morphing sequences animate them.
+void setKey(ModellerState& state, EditQueue& edits, FunctionRef ref, const std::string& key, const double* values,
+            int components = 1) {
+  keyButton(state, edits, ref.path() + ".set." + key, values, components);
+}
+
 /// `chosen` as the project will store it: relative to the project's folder where the project
 /// has a file, else as chosen.
 std::string storedPath(const ModellerState& state, const fs::path& chosen) {
@@ -53,31 +61,37 @@ std::string storedPath(const ModellerState& state, const fs::path& chosen) {
 
 void drawPrimitive(ModellerState& state, EditQueue& edits, FunctionRef ref, const CondensationSet& current) {
   CondensationSet set = current;
+  setKey(state, edits, ref, "center", &current.center.x, 3);
   bool changed = dragVec3("Center", set.center, 0.005, -2.0, 2.0);
   state.probe.frame("set.center");
   setGesture(edits, "Move set", changed, ref, set);
   contextHelp(state, "Where the set's centre sits in X = [-1, 1]³");
   switch (set.shape) {
     case SetShape::Sphere:
+      setKey(state, edits, ref, "radius", &current.radius);
       changed = dragDouble("Radius", set.radius, 0.002, 0.001, 10.0);
       state.probe.frame("set.radius");
       setGesture(edits, "Sphere radius", changed, ref, set);
       break;
     case SetShape::Box:
+      setKey(state, edits, ref, "size", &current.size.x, 3);
       changed = dragVec3("Size", set.size, 0.004, 0.001, 20.0);
       state.probe.frame("set.size");
       setGesture(edits, "Box size", changed, ref, set);
       contextHelp(state, "The box's full edge lengths along x, y and z");
       break;
     case SetShape::Torus:
+      setKey(state, edits, ref, "major", &current.major);
       changed = dragDouble("Major", set.major, 0.002, 0.001, 10.0);
       state.probe.frame("set.major");
       setGesture(edits, "Torus major radius", changed, ref, set);
       contextHelp(state, "Distance from the centre to the tube's centre line");
+      setKey(state, edits, ref, "minor", &current.minor);
       changed = dragDouble("Minor", set.minor, 0.002, 0.001, 10.0);
       state.probe.frame("set.minor");
       setGesture(edits, "Torus minor radius", changed, ref, set);
       contextHelp(state, "The tube's radius");
+      setKey(state, edits, ref, "axis", &current.axis.x, 3);
       changed = dragVec3("Axis", set.axis, 0.01, -1.0, 1.0);
       if (glm::length(set.axis) < 1e-6) set.axis = current.axis;  // a zero axis has no plane of revolution
       setGesture(edits, "Torus axis", changed, ref, set);
@@ -93,10 +107,12 @@ void drawPrimitive(ModellerState& state, EditQueue& edits, FunctionRef ref, cons
 /// A drawing's threshold, thickness and inversion (Sokolov & Gentil's sketches as sets).
 void drawImageFields(ModellerState& state, EditQueue& edits, FunctionRef ref, const CondensationSet& current) {
   CondensationSet set = current;
+  setKey(state, edits, ref, "threshold", &current.threshold);
   bool changed = dragDouble("Threshold", set.threshold, 0.005, 0.0, 1.0);
   state.probe.frame("set.threshold");
   setGesture(edits, "Drawing threshold", changed, ref, set);
   contextHelp(state, "Pixels darker than this grey level (0 black, 1 white) belong to the set");
+  setKey(state, edits, ref, "thickness", &current.thickness);
   changed = dragDouble("Thickness", set.thickness, 0.001, 0.001, 2.0);
   state.probe.frame("set.thickness");
   setGesture(edits, "Drawing thickness", changed, ref, set);
@@ -140,11 +156,14 @@ void CondensationSetPanel::drawFile(ModellerState& state, EditQueue& edits, Func
     contextHelp(state, "Solid: the volume the mesh encloses (it must be closed); surface: a shell around its faces");
     }
     if (ImGui::CollapsingHeader("Placement", ImGuiTreeNodeFlags_DefaultOpen)) {
+      setKey(state, edits, ref, "placement.translate", &current.placement.translate.x, 3);
       bool changed = dragVec3("Translate", set.placement.translate, 0.005);
       state.probe.frame("set.translate");
       setGesture(edits, "Move set mesh", changed, ref, set);
+      setKey(state, edits, ref, "placement.rotate", &current.placement.rotate.x, 3);
       changed = dragVec3("Rotate", set.placement.rotate, 0.5, -360.0, 360.0, "%.1f°");
       setGesture(edits, "Rotate set mesh", changed, ref, set);
+      setKey(state, edits, ref, "placement.scale", &current.placement.scale.x, 3);
       changed = dragVec3("Scale", set.placement.scale, 0.005, -20.0, 20.0);
       for (int d = 0; d < 3; ++d)
         if (set.placement.scale[d] == 0.0) set.placement.scale[d] = current.placement.scale[d];  // never flat
@@ -157,6 +176,7 @@ void CondensationSetPanel::drawFile(ModellerState& state, EditQueue& edits, Func
     state.probe.frame("set.grid");
     gestureItem(edits, "VDB grid name", typed && !grid.empty(), SetSetGrid{ref, grid});
     contextHelp(state, "The name of the float grid in the file");
+    setKey(state, edits, ref, "threshold", &current.threshold);
     const bool changed = dragDouble("Threshold", set.threshold, 0.005, -1e6, 1e6);
     state.probe.frame("set.threshold");
     setGesture(edits, "VDB threshold", changed, ref, set);
@@ -236,6 +256,7 @@ void CondensationSetPanel::draw(ModellerState& state, EditQueue& edits) {
     drawPrimitive(state, edits, ref, set);
 
   if (median) {
+    keyButton(state, edits, ref.path() + ".rotate", &f.rotate);
     double rotate = f.rotate;
     const bool changed = dragDouble("Rotate", rotate, 0.5, -3600.0, 3600.0, "%.1f°");
     state.probe.frame("set.rotate");
@@ -243,6 +264,7 @@ void CondensationSetPanel::draw(ModellerState& state, EditQueue& edits) {
     contextHelp(state,
                 "The rotated median (Sokolov & Gentil, §4.1): degrees about the axis per unit of distance between the "
                 "sets' centres; 0 is the plain median");
+    keyButton(state, edits, ref.path() + ".rotate_axis", &f.rotate_axis.x, 3);
     Vec3 axis = f.rotate_axis;
     bool axisChanged = dragVec3("Axis", axis, 0.01, -1.0, 1.0);
     if (glm::length(axis) < 1e-6) axisChanged = false;  // a zero axis turns nothing
