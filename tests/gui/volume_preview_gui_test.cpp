@@ -37,7 +37,8 @@ double brightness(const std::array<double, 3>& c) { return c[0] + c[1] + c[2]; }
 
 bool volumeFinished(const nlohmann::json& j, std::uint64_t afterRestarts) {
   const auto& m = j["preview_modes"];
-  return m["mode"] == "volume" && m["volume_finished"].get<bool>() &&
+  // Finished means the picture too: the ray march of the finished volume is on screen.
+  return m["mode"] == "volume" && m["volume_finished"].get<bool>() && m["volume_picture_final"].get<bool>() &&
          m["volume_restarts"].get<std::uint64_t>() > afterRestarts && !j["modal"].get<bool>();
 }
 
