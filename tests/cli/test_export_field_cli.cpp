@@ -9,6 +9,7 @@
 
 #include "io/project_io.h"
 #include "model/field_layer.h"
+#include "tests/cli/image_file_read.h"
 #include "tests/cli/run_command.h"
 
 namespace gridifs {
@@ -17,25 +18,9 @@ namespace {
 using namespace test_support;
 namespace fs = std::filesystem;
 
-struct Image {
-  int width = 0, height = 0, channels = 0;
-  std::vector<std::string> names;
-  std::vector<float> pixels;
-};
+using Image = ImageFile;
 
-Image readImage(const fs::path& file) {
-  Image image;
-  auto in = OIIO::ImageInput::open(file.string());
-  if (!in) return image;
-  const OIIO::ImageSpec& spec = in->spec();
-  image.width = spec.width;
-  image.height = spec.height;
-  image.channels = spec.nchannels;
-  image.names = spec.channelnames;
-  image.pixels.resize(std::size_t(spec.width) * spec.height * spec.nchannels);
-  in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data());
-  return image;
-}
+Image readImage(const fs::path& file) { return readImageFile(file); }
 
 const char* kScene = R"({
   "format": "gridifs", "version": 1,
