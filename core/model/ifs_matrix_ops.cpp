@@ -4,6 +4,7 @@
 #include <functional>
 
 #include "base/errors.h"
+#include "model/transition_matrix.h"
 
 namespace gridifs {
 namespace {
@@ -270,42 +271,7 @@ IfsMatrix trimmed(const IfsMatrix& m, std::vector<std::size_t>* kept) {
 }
 
 std::vector<std::vector<std::size_t>> stateComponents(const IfsMatrix& m) {
-  // Tarjan's strongly connected components.
-  const std::size_t n = m.size();
-  std::vector<int> index(n, -1), low(n, 0);
-  std::vector<char> onStack(n, 0);
-  std::vector<std::size_t> stack;
-  std::vector<std::vector<std::size_t>> components;
-  int counter = 0;
-  std::function<void(std::size_t)> visit = [&](std::size_t v) {
-    index[v] = low[v] = counter++;
-    stack.push_back(v);
-    onStack[v] = 1;
-    for (std::size_t w = 0; w < n; ++w) {
-      if (m.entries[v][w].empty()) continue;
-      if (index[w] < 0) {
-        visit(w);
-        low[v] = std::min(low[v], low[w]);
-      } else if (onStack[w]) {
-        low[v] = std::min(low[v], index[w]);
-      }
-    }
-    if (low[v] != index[v]) return;
-    std::vector<std::size_t> component;
-    std::size_t w;
-    do {
-      w = stack.back();
-      stack.pop_back();
-      onStack[w] = 0;
-      component.push_back(w);
-    } while (w != v);
-    std::sort(component.begin(), component.end());
-    components.push_back(std::move(component));
-  };
-  for (std::size_t v = 0; v < n; ++v)
-    if (index[v] < 0) visit(v);
-  std::sort(components.begin(), components.end());
-  return components;
+  return stronglyConnectedComponents(m.size(), [&](std::size_t v, std::size_t w) { return !m.entries[v][w].empty(); });
 }
 
 bool hasAttractor(const IfsMatrix& m) {

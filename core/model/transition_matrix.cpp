@@ -82,13 +82,8 @@ std::vector<std::vector<double>> activeTransitionWeights(const Project& project,
   return rows;
 }
 
-std::vector<std::vector<std::size_t>> transitionComponents(const Project& project) {
-  // Tarjan's strongly connected components over the active functions.
-  const std::vector<std::size_t> active = activeFunctionIndices(project);
-  const std::size_t n = active.size();
-  auto edge = [&](std::size_t a, std::size_t b) {
-    return project.transitions.empty() || project.transitions[active[a]][active[b]] > 0.0;
-  };
+std::vector<std::vector<std::size_t>> stronglyConnectedComponents(
+    std::size_t n, const std::function<bool(std::size_t, std::size_t)>& edge) {
   std::vector<int> index(n, -1), low(n, 0);
   std::vector<bool> onStack(n, false);
   std::vector<std::size_t> stack;
@@ -107,22 +102,33 @@ std::vector<std::vector<std::size_t>> transitionComponents(const Project& projec
         low[v] = std::min(low[v], index[w]);
       }
     }
-    if (low[v] == index[v]) {
-      std::vector<std::size_t> component;
-      std::size_t w;
-      do {
-        w = stack.back();
-        stack.pop_back();
-        onStack[w] = false;
-        component.push_back(active[w]);
-      } while (w != v);
-      std::sort(component.begin(), component.end());
-      components.push_back(std::move(component));
-    }
+    if (low[v] != index[v]) return;
+    std::vector<std::size_t> component;
+    std::size_t w;
+    do {
+      w = stack.back();
+      stack.pop_back();
+      onStack[w] = false;
+      component.push_back(w);
+    } while (w != v);
+    std::sort(component.begin(), component.end());
+    components.push_back(std::move(component));
   };
   for (std::size_t v = 0; v < n; ++v)
     if (index[v] < 0) visit(v);
   std::sort(components.begin(), components.end());
+  return components;
+}
+
+std::vector<std::vector<std::size_t>> transitionComponents(const Project& project) {
+  // Over the active functions; `active` ascends, so the components keep their order as indices.
+  const std::vector<std::size_t> active = activeFunctionIndices(project);
+  std::vector<std::vector<std::size_t>> components =
+      stronglyConnectedComponents(active.size(), [&](std::size_t a, std::size_t b) {
+        return project.transitions.empty() || project.transitions[active[a]][active[b]] > 0.0;
+      });
+  for (auto& component : components)
+    for (std::size_t& v : component) v = active[v];
   return components;
 }
 

@@ -7,6 +7,7 @@
 //
 // Everything here is a pure function of its arguments: thread-safe.
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "model/project.h"
@@ -28,6 +29,11 @@ std::vector<std::size_t> activeFunctionIndices(const Project& project);
 /// ModelError (`transitions[i]`) when a row allows no active function.
 std::vector<std::vector<double>> activeTransitionWeights(const Project& project,
                                                          const std::vector<std::size_t>& active);
+
+/// Strongly connected components (Tarjan) of the graph on vertices 0..n-1 with an edge a → b
+/// where `edge(a, b)`: each component's vertices ascending, the components in ascending order.
+std::vector<std::vector<std::size_t>> stronglyConnectedComponents(
+    std::size_t n, const std::function<bool(std::size_t, std::size_t)>& edge);
 
 /// Strongly connected components of the transition graph over the active functions
 /// (edge i → j when transitions[i][j] > 0; every edge when there is no matrix). One vector of

@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
+#include "exported_points.h"
 #include "io/project_io.h"
 #include "model/free_form_presets.h"
 #include "run_command.h"
@@ -17,27 +18,6 @@ using namespace gridifs::test_support;
 namespace {
 
 const std::string kSierpinski = std::string(GRIDIFS_ASSETS) + "/sierpinski_tetrahedron.gridifs";
-
-/// The points of a binary PLY written by export-points.
-std::vector<Vec3> readPly(const std::filesystem::path& file) {
-  const std::string data = slurp(file);
-  const std::size_t end = data.find("end_header\n");
-  std::vector<Vec3> out;
-  if (end == std::string::npos) return out;
-  for (std::size_t at = end + 11; at + 15 <= data.size(); at += 15) {
-    float xyz[3];
-    std::memcpy(xyz, data.data() + at, 12);
-    out.emplace_back(xyz[0], xyz[1], xyz[2]);
-  }
-  return out;
-}
-
-std::vector<Vec3> exportPoints(const std::filesystem::path& project, const std::filesystem::path& ply, int samples) {
-  const CommandResult r = runGridifs("export-points " + quote(project.string()) + " -o " + quote(ply.string()) +
-                                     " --samples " + std::to_string(samples) + " --device cpu");
-  EXPECT_EQ(r.exitCode, 0) << r.err;
-  return readPly(ply);
-}
 
 double nearest(const std::vector<Vec3>& cloud, Vec3 p) {
   double best = 1e9;

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <glm/geometric.hpp>
 
+#include "exported_points.h"
 #include "io/project_io.h"
 #include "model/free_form_presets.h"
 #include "model/state_expansion.h"
@@ -17,26 +18,6 @@ using namespace gridifs::test_support;
 namespace {
 
 const std::string kSierpinski = std::string(GRIDIFS_ASSETS) + "/sierpinski_tetrahedron.gridifs";
-
-std::vector<Vec3> readPly(const std::filesystem::path& file) {
-  const std::string data = slurp(file);
-  const std::size_t end = data.find("end_header\n");
-  std::vector<Vec3> out;
-  if (end == std::string::npos) return out;
-  for (std::size_t at = end + 11; at + 15 <= data.size(); at += 15) {
-    float xyz[3];
-    std::memcpy(xyz, data.data() + at, 12);
-    out.emplace_back(xyz[0], xyz[1], xyz[2]);
-  }
-  return out;
-}
-
-std::vector<Vec3> exportPoints(const std::filesystem::path& project, const std::filesystem::path& ply, int samples) {
-  const CommandResult r = runGridifs("export-points " + quote(project.string()) + " -o " + quote(ply.string()) +
-                                     " --samples " + std::to_string(samples) + " --device cpu");
-  EXPECT_EQ(r.exitCode, 0) << r.err;
-  return readPly(ply);
-}
 
 CommandResult combine(const std::filesystem::path& a, const std::filesystem::path& b, const std::string& op,
                       const std::filesystem::path& out) {
