@@ -61,6 +61,24 @@ const std::shared_ptr<const CompiledIfs>& variationIfs() {
   return compiled;
 }
 
+/// An IFS matrix with states at 1024² (Thollot, Zair, Tosan & Vandorpe, §4: the tensor product of
+/// two state IFSs of their fig. 4.3, assets/matrices/fig4_3_tensor_product.gridifs): the chains
+/// walk transition rows, with hidden and peek steps, on both devices.
+const Project& stateScene() {
+  static const Project project = [] {
+    Project p = loadProject(std::string(GRIDIFS_ASSETS) + "/matrices/fig4_3_tensor_product.gridifs");
+    p.render.width = 1024;
+    p.render.height = 1024;
+    return p;
+  }();
+  return project;
+}
+
+const std::shared_ptr<const CompiledIfs>& stateIfs() {
+  static const auto compiled = compileIfs(stateScene());
+  return compiled;
+}
+
 void run(benchmark::State& state, Renderer& renderer, RenderJob job,
          const std::shared_ptr<const CompiledIfs>& compiled = ifs()) {
   std::int64_t samples = 0;
@@ -114,6 +132,20 @@ void BM_CpuFlameVariations(benchmark::State& state) {
   run(state, cpu, job, variationIfs());
 }
 
+void BM_GpuStateMatrix(benchmark::State& state) {
+  RenderJob job = RenderJob::fromProject(stateScene(), 1);
+  job.samples = state.range(0);
+  state.SetLabel(gpuRenderer().info().renderer);
+  run(state, gpuRenderer(), job, stateIfs());
+}
+
+void BM_CpuStateMatrix(benchmark::State& state) {
+  RenderJob job = RenderJob::fromProject(stateScene(), int(state.range(1)));
+  job.samples = state.range(0);
+  ChaosRenderer cpu;
+  run(state, cpu, job, stateIfs());
+}
+
 void BM_CpuOneThread(benchmark::State& state) {
   RenderJob job = RenderJob::fromProject(canonicalScene(), 1);
   job.samples = state.range(0);
@@ -140,6 +172,13 @@ BENCHMARK(BM_CpuFlameVariations)
     ->Unit(benchmark::kMillisecond)
     ->UseRealTime()
     ->Iterations(1);
+BENCHMARK(BM_GpuStateMatrix)->Arg(50'000'000)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+BENCHMARK(BM_CpuStateMatrix)
+    ->Args({20'000'000, 1})
+    ->Args({50'000'000, 16})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->Iterations(1);
 BENCHMARK(BM_CpuOneThread)
     ->Args({50'000'000, 0})
     ->Args({50'000'000, 1})
@@ -160,6 +199,7 @@ void registerHardwareSizes() {
     benchmark::RegisterBenchmark("BM_GpuZBuffer32BitKeys/large", BM_GpuZBuffer32BitKeys)->Arg(samples)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
     benchmark::RegisterBenchmark("BM_GpuFlameColourSums/large", BM_GpuFlameColourSums)->Arg(samples)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
     benchmark::RegisterBenchmark("BM_GpuFlameVariations/large", BM_GpuFlameVariations)->Arg(samples / 4)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+    benchmark::RegisterBenchmark("BM_GpuStateMatrix/large", BM_GpuStateMatrix)->Arg(samples)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
   }
 }
 
