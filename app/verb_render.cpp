@@ -13,6 +13,7 @@
 
 #include "app/chaos_verb_options.h"
 #include "app/cli.h"
+#include "app/heap_warmup.h"
 #include "app/progress_bar.h"
 #include "app/render_device_option.h"
 #include "app/render_parts.h"
@@ -144,6 +145,8 @@ std::optional<RenderImage> renderWithProgress(const std::vector<RenderSetup>& se
   std::int64_t done = 0;
   std::vector<Accumulation> accumulations;
   std::string used = "cpu";
+  bool warmed = source.part.has_value();
+  if (!warmed) keepFreedMemory();
   for (std::int64_t i = 0; i < count && !source.merged; ++i) {
     const RenderSetup& setup = setups[std::size_t(i)];
     RenderJob part = job;
@@ -158,7 +161,15 @@ std::optional<RenderImage> renderWithProgress(const std::vector<RenderSetup>& se
             // workers run: dlopen holds the dynamic loader's lock while it maps and relocates
             // OpenImageIO's ~230 libraries (0.2 s), and started earlier it kept the main thread
             // waiting on that lock before the workers could start.
-            if (!source.part) startLoadingImageWriter();
+            if (!source.part) {
+              startLoadingImageWriter();
+              // Once the library is in, the main thread has nothing to do until the chaos game
+              // ends: it prepares the memory the output will need (app/heap_warmup.h).
+              if (!warmed && imageWriterLoaded()) {
+                warmHeap(renderOutputBytes(job.width, job.height, job.accumulateColor));
+                warmed = true;
+              }
+            }
             bar.update(progress.before + done + s.samples, progress.total, s.pointsPerSecond);
             return !gInterrupted.load();
           },
@@ -210,7 +221,7 @@ std::optional<RenderImage> renderWithProgress(const std::vector<RenderSetup>& se
     RenderImage sample;
     toRenderImage(sums[i], display, sample);
     sample.stats.budget = sample.stats.samples;
-    addTimeSample(sum, sample, weights[i]);
+    addTimeSample(sum, std::move(sample), weights[i]);
   }
   const RenderImage image = finishTimeSamples(std::move(sum));
   if (!progress.bar) bar.finish();

@@ -1,5 +1,6 @@
 #include "render/image_file.h"
 
+#include <chrono>
 #include <cstdlib>
 #include <future>
 #include <mutex>
@@ -102,6 +103,11 @@ GreyImage readGreyImage(const std::filesystem::path& file) {
 void startLoadingImageWriter() {
   Loading& state = loading();
   std::call_once(state.started, [&] { state.writer = std::async(std::launch::async, load).share(); });
+}
+
+bool imageWriterLoaded() {
+  const Loading& state = loading();
+  return state.writer.valid() && state.writer.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
 }
 
 void writeImageFile(const std::filesystem::path& file, const ImageFileLayout& layout, const std::uint8_t* pixels) {

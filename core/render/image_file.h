@@ -40,6 +40,10 @@ GreyImage readGreyImage(const std::filesystem::path& file);
 /// it (call as soon as it is known that an image will be written). Safe to call more than once.
 void startLoadingImageWriter();
 
+/// Whether the loading that startLoadingImageWriter began has finished (false before it began).
+/// Call on the thread that called startLoadingImageWriter.
+bool imageWriterLoaded();
+
 /// The Z value of pixels without points in EXR files (Blender's convention for "background").
 inline constexpr float kEmptyPixelDepth = 1e10f;
 

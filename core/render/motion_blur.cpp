@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <stdexcept>
+#include <utility>
 
 namespace gridifs {
 
@@ -17,16 +18,19 @@ std::vector<double> motionBlurWeights(int n, double fade) {
   return w;
 }
 
-void addTimeSample(TimeSampleSum& sum, const RenderImage& sample, double weight) {
+void addTimeSample(TimeSampleSum& sum, RenderImage&& sample, double weight) {
   ++sum.count;
   if (sum.count == 1) {
-    sum.image = sample;
-    sum.rgbaSum.resize(sample.rgba.size());
-    for (std::size_t i = 0; i < sample.rgba.size(); ++i) sum.rgbaSum[i] = weight * sample.rgba[i];
+    sum.image = std::move(sample);
+    sum.firstWeight = weight;
     if (weight != 1.0)
       for (std::size_t i = 0; i < sum.image.colorSums.size(); ++i)
-        if (i % 4 != 3) sum.image.colorSums[i] = float(weight * sample.colorSums[i]);
+        if (i % 4 != 3) sum.image.colorSums[i] = float(weight * sum.image.colorSums[i]);
     return;
+  }
+  if (sum.rgbaSum.empty()) {
+    sum.rgbaSum.resize(sum.image.rgba.size());
+    for (std::size_t i = 0; i < sum.image.rgba.size(); ++i) sum.rgbaSum[i] = sum.firstWeight * sum.image.rgba[i];
   }
   RenderImage& image = sum.image;
   if (sample.rgba.size() != image.rgba.size() || sample.density.size() != image.density.size() ||
@@ -45,6 +49,10 @@ void addTimeSample(TimeSampleSum& sum, const RenderImage& sample, double weight)
   image.stats.badSamples += sample.stats.badSamples;
   image.stats.plotted += sample.stats.plotted;
   image.stats.budget += sample.stats.budget;
+}
+
+void addTimeSample(TimeSampleSum& sum, const RenderImage& sample, double weight) {
+  addTimeSample(sum, RenderImage(sample), weight);
 }
 
 RenderImage finishTimeSamples(TimeSampleSum&& sum) {

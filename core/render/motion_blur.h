@@ -21,13 +21,17 @@ std::vector<double> motionBlurWeights(int n, double fade);
 /// One motion-blurred frame being summed: the image so far and its display colours' weighted sums.
 struct TimeSampleSum {
   RenderImage image;
-  std::vector<double> rgbaSum;  // 4 per pixel: Σ w·rgba of the display image
+  /// 4 per pixel: Σ w·rgba of the display image; made when the second sample comes, so that a
+  /// frame of one time sample (every render without motion blur) costs no copy of its buffers.
+  std::vector<double> rgbaSum;
+  double firstWeight = 1.0;
   int count = 0;
 };
 
 /// Adds time sample `sample` with colour weight `weight`: hit counts add (saturating), the flame
 /// colour sums (Σr, Σg, Σb) add scaled by the weight and Σc unscaled, the nearest depth is kept,
 /// the display colour is summed with the weight, the statistics add up.
+void addTimeSample(TimeSampleSum& sum, RenderImage&& sample, double weight);
 void addTimeSample(TimeSampleSum& sum, const RenderImage& sample, double weight);
 
 /// The summed frame: the display colour is the weighted mean of the samples' (alpha 255 where any

@@ -212,6 +212,42 @@ TEST(DirectionalMotionBlur, EarlierSamplesAreDimmerAndStillShapesUnchanged) {
   EXPECT_EQ(image.hitPixels, 1);
 }
 
+TEST(MotionBlur, OneTimeSampleIsTheSampleAndThreeAverageTheirColours) {
+  RenderImage a;
+  a.width = 2;
+  a.height = 1;
+  a.rgba = {90, 30, 0, 255, 0, 0, 0, 0};
+  a.depth = {2.f, INFINITY};
+  a.density = {3, 0};
+  a.colorSums = {1.f, 2.f, 3.f, 4.f, 0.f, 0.f, 0.f, 0.f};
+  a.hitPixels = 1;
+  {
+    TimeSampleSum one;
+    addTimeSample(one, RenderImage(a), 1.0);  // moved in: no copy of the buffers
+    EXPECT_TRUE(one.rgbaSum.empty());
+    const RenderImage image = finishTimeSamples(std::move(one));
+    EXPECT_EQ(image.rgba, a.rgba);
+    EXPECT_EQ(image.depth, a.depth);
+    EXPECT_EQ(image.density, a.density);
+    EXPECT_EQ(image.colorSums, a.colorSums);
+  }
+  RenderImage b = a, c = a;
+  b.rgba = {30, 30, 30, 255, 0, 0, 0, 0};
+  b.depth = {1.f, INFINITY};
+  c.rgba = {0, 0, 0, 0, 60, 60, 60, 255};  // only the second pixel
+  c.depth = {INFINITY, 5.f};
+  c.density = {0, 2};
+  TimeSampleSum three;
+  addTimeSample(three, a, 1.0);
+  addTimeSample(three, std::move(b), 1.0);
+  addTimeSample(three, c, 1.0);
+  const RenderImage image = finishTimeSamples(std::move(three));
+  EXPECT_EQ(image.rgba, (std::vector<std::uint8_t>{40, 20, 10, 255, 20, 20, 20, 255}));
+  EXPECT_EQ(image.depth, (std::vector<float>{1.f, 5.f}));
+  EXPECT_EQ(image.density, (std::vector<std::uint32_t>{6, 2}));
+  EXPECT_EQ(image.hitPixels, 2);
+}
+
 TEST(RenderQuality, SetsTheSampleCountFromTheImageSize) {
   RenderSettings r;
   r.width = 100, r.height = 80, r.samples = 12345;
