@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
+#include <system_error>
 
 #include "gpu/chaos_compute.h"
 #include "gpu/gpu_chaos_renderer.h"
@@ -34,11 +36,29 @@ std::string softwareReason(const GpuInfo& info) {
   return "the only OpenGL here is " + info.renderer + ", a software rasterizer slower than the CPU renderer";
 }
 
+/// Whether the system has a device node through which EGL can reach a hardware GPU: a DRM render
+/// node (Mesa's drivers), NVIDIA's control device or WSL's GPU. Without one, `auto` skips the EGL
+/// probe, which loads Mesa only to find its software rasterizer (tens of milliseconds before the
+/// first sample of every render on such a machine).
+bool hasGpuDeviceNode() {
+  std::error_code error;
+  for (const char* node : {"/dev/nvidiactl", "/dev/dxg"})
+    if (std::filesystem::exists(node, error)) return true;
+  for (const auto& entry : std::filesystem::directory_iterator("/dev/dri", error))
+    if (entry.path().filename().string().rfind("renderD", 0) == 0) return true;
+  return false;
+}
+
+constexpr const char* kNoGpuDeviceNode =
+    "this machine has no GPU device (no /dev/dri render node, /dev/nvidiactl or /dev/dxg)";
+
 }  // namespace
 
 RendererChoice openRenderer(RenderDevice device) {
   RendererChoice choice;
-  if (device != RenderDevice::Cpu) {
+  if (device == RenderDevice::Auto && !hasGpuDeviceNode()) {
+    choice.fallbackReason = kNoGpuDeviceNode;
+  } else if (device != RenderDevice::Cpu) {
     try {
       auto gpu = std::make_unique<GpuChaosRenderer>();
       if (device == RenderDevice::Gpu || !gpu->info().software) {
@@ -73,6 +93,10 @@ DeviceReport reportDevice(RenderDevice device) {
   DeviceReport report;
   if (device == RenderDevice::Cpu) {
     report.description = "cpu (as asked)";
+    return report;
+  }
+  if (device == RenderDevice::Auto && !hasGpuDeviceNode()) {
+    report.description = std::string("cpu: ") + kNoGpuDeviceNode;
     return report;
   }
   try {

@@ -545,7 +545,11 @@ struct ZBufferPlot {
   /// the blended RGB; lane 3 still sums c.
   const v4f* palette = nullptr;
 
-  static constexpr int kChunk = 256;
+  // Every sample of a chunk has its lines prefetched before the first is written: 256 samples
+  // of one line each for the z-buffer, and 64 for the flame display, whose colour sums are a second
+  // line per sample (with 256, the first prefetched lines were gone again by their turn: 64 takes
+  // 4–5 % fewer CPU seconds for a 400×300 flame, the same image).
+  static constexpr int kChunk = kAccumulateColor ? 64 : 256;
   static constexpr int kGroup = 8;  // samples projected at once
   static_assert(kChunk % kGroup == 0);
   v4f points[kChunk] = {};
