@@ -296,7 +296,8 @@ int runFlameRender(const std::string& file, const std::string& out, const std::v
     throw CliError(kBadInput, std::string("--bit-depth must be ") +
                                   (exr ? "16 (half) or 32 (float) for EXR" : "8 or 16 for PNG and TIFF"));
   // Supersampled, with a gutter around the frame, palette colors per sample (core/flame_render.h).
-  const RenderJob job = flameRenderJob(setup.job, settings, palette);
+  RenderJob job = flameRenderJob(setup.job, settings, palette);
+  job.depthKeys = false;  // developed from hit counts and colour sums alone
   const int ss = std::max(1, settings.supersample);
   try {
     validateRenderJob(job);

@@ -544,6 +544,8 @@ struct ZBufferPlot {
   /// receive the palette color at c for every sample, as flam3 does (Draves & Reckase 2003, §5), instead of
   /// the blended RGB; lane 3 still sums c.
   const v4f* palette = nullptr;
+  /// False: hit counts (and colour sums) only, the keys stay kEmptyKey (RenderJob::depthKeys).
+  bool keys = true;
 
   // Every sample of a chunk has its lines prefetched before the first is written: 256 samples
   // of one line each for the z-buffer, and 64 for the flame display, whose colour sums are a second
@@ -616,17 +618,19 @@ struct ZBufferPlot {
       const v8u row = v8u(__builtin_convertvector(inside ? iy : v8f{}, v8i));
       const v8u pixel = inside ? row * stride + column : v8u{} + kOutside;
       std::memcpy(pixels + i, &pixel, sizeof pixel);
-      const v8u depthBits = v8u(depth);
-      std::memcpy(depths + i, &depthBits, sizeof depthBits);
-      v8f red, green, blue, c;
-      transposeEight(colors + i, red, green, blue, c);
-      v8u r8, g8, b8, c8;
-      channelByte(red, r8);
-      channelByte(green, g8);
-      channelByte(blue, b8);
-      channelByte(c, c8);
-      const v8u colour = r8 | g8 << 8 | b8 << 16 | c8 << 24;
-      std::memcpy(packed + i, &colour, sizeof colour);
+      if (keys) {
+        const v8u depthBits = v8u(depth);
+        std::memcpy(depths + i, &depthBits, sizeof depthBits);
+        v8f red, green, blue, c;
+        transposeEight(colors + i, red, green, blue, c);
+        v8u r8, g8, b8, c8;
+        channelByte(red, r8);
+        channelByte(green, g8);
+        channelByte(blue, b8);
+        channelByte(c, c8);
+        const v8u colour = r8 | g8 << 8 | b8 << 16 | c8 << 24;
+        std::memcpy(packed + i, &colour, sizeof colour);
+      }
       for (int k = 0; k < kGroup; ++k) {
         if (pixels[i + k] == kOutside) continue;
         ++inImage;
@@ -634,10 +638,18 @@ struct ZBufferPlot {
         if constexpr (kAccumulateColor) __builtin_prefetch(colorSums + std::size_t(pixels[i + k]) * 4, 1);
       }
     }
-    for (int i = 0; i < count; ++i) {
-      if (pixels[i] == kOutside) continue;
-      commit(cells[pixels[i]], (std::uint64_t(depths[i]) << 32) | packed[i]);
-      if constexpr (kAccumulateColor) addColor(colorSums + std::size_t(pixels[i]) * 4, colors[i]);
+    if (keys) {
+      for (int i = 0; i < count; ++i) {
+        if (pixels[i] == kOutside) continue;
+        commit(cells[pixels[i]], (std::uint64_t(depths[i]) << 32) | packed[i]);
+        if constexpr (kAccumulateColor) addColor(colorSums + std::size_t(pixels[i]) * 4, colors[i]);
+      }
+    } else {
+      for (int i = 0; i < count; ++i) {
+        if (pixels[i] == kOutside) continue;
+        countHit(cells[pixels[i]]);
+        if constexpr (kAccumulateColor) addColor(colorSums + std::size_t(pixels[i]) * 4, colors[i]);
+      }
     }
     plotted += inImage;
     count = 0;
@@ -647,6 +659,10 @@ struct ZBufferPlot {
   [[gnu::always_inline]] static void commit(PixelCell& cell, std::uint64_t key) {
     std::atomic_ref<std::uint64_t> z(cell.key);
     if (key < z.load(std::memory_order_relaxed)) z.store(key, std::memory_order_relaxed);
+    countHit(cell);
+  }
+
+  [[gnu::always_inline]] static void countHit(PixelCell& cell) {
     std::atomic_ref<std::uint32_t> d(cell.density);
     const std::uint32_t n = d.load(std::memory_order_relaxed);
     d.store(n + (n != 0xFFFFFFFFu), std::memory_order_relaxed);  // saturating

@@ -221,6 +221,7 @@ template <bool kColor>
                                                 kernel::ChainCounters& counters) {
   kernel::ZBufferPlot<kColor> plot{job.camera, w.cells.data(), w.colorSums.data(),
                                    job.palette.empty() ? nullptr : job.palette.data()};
+  plot.keys = job.job.depthKeys;
   kernel::runChain(chain, job.hotIfs, count, plot, counters);
 }
 
@@ -289,9 +290,11 @@ GRIDIFS_KERNEL_CLONES void runBarycentricBatch(kernel::ChainState& chain, kernel
   if (job.job.accumulateColor) {
     kernel::ZBufferPlot<true> plot{job.camera, w.cells.data(), w.colorSums.data(),
                                    job.palette.empty() ? nullptr : job.palette.data()};
+    plot.keys = job.job.depthKeys;
     kernel::runBarycentricChain(chain, bary, job.hotIfs, count, plot, counters);
   } else {
     kernel::ZBufferPlot<false> plot{job.camera, w.cells.data(), w.colorSums.data(), nullptr};
+    plot.keys = job.job.depthKeys;
     kernel::runBarycentricChain(chain, bary, job.hotIfs, count, plot, counters);
   }
 }
@@ -625,7 +628,10 @@ void ChaosRenderer::accumulation(Accumulation& out) const {
 
   // The workers' buffers combine by minimum (keys) and integer sums (counts, colour sums), which
   // do not depend on the order of the workers or on which chunks each one played.
-  out.keys.assign(n, kEmptyKey);
+  if (job->job.depthKeys)
+    out.keys.assign(n, kEmptyKey);
+  else
+    out.keys.clear();  // RenderJob::depthKeys: the flame display's job keeps none
   out.density.assign(n, 0);
   auto keyOf = [](const kernel::PixelCell& c) {
     return std::atomic_ref<const std::uint64_t>(c.key).load(std::memory_order_relaxed);
@@ -635,10 +641,10 @@ void ChaosRenderer::accumulation(Accumulation& out) const {
   };
   for (const Worker* w : ready) {
     const kernel::PixelCell* cells = w->cells.data();
-    for (std::size_t i = 0; i < n; ++i) {
-      out.keys[i] = std::min(out.keys[i], keyOf(cells[i]));
+    if (!out.keys.empty())
+      for (std::size_t i = 0; i < n; ++i) out.keys[i] = std::min(out.keys[i], keyOf(cells[i]));
+    for (std::size_t i = 0; i < n; ++i)
       out.density[i] = std::uint32_t(std::min<std::uint64_t>(out.density[i] + countOf(cells[i]), 0xFFFFFFFFu));
-    }
   }
   if (job->job.accumulateColor) {
     out.colorSums.assign(n * 4, 0);

@@ -63,6 +63,11 @@ struct RenderJob {
   /// With accumulateColor: when set, colorSums hold the sums of this palette's color
   /// at each sample's c (flam3's structural coloring, Draves & Reckase 2003, §5) instead of the blended RGB.
   std::shared_ptr<const Palette> palette;
+  /// Whether the workers keep the z-buffer's keys (nearest depth and colour). The flame display
+  /// develops hit counts and colour sums alone, so its command-line renders turn them off: the
+  /// plotter then skips each sample's depth and colour packing and its key's compare and store,
+  /// and accumulation() hands out no keys. The GPU renderer keeps them either way.
+  bool depthKeys = true;
   /// Run the workers at a lower OS priority (Linux: nice 10) so that the UI thread always gets a
   /// core first on a machine with few cores (the GUI's preview). Does not change the image.
   bool lowPriority = false;

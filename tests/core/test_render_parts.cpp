@@ -308,6 +308,29 @@ TEST(RenderDeterminism, OneAndFourThreadsGiveTheSameAccumulation) {
   }
 }
 
+TEST(RenderDeterminism, AFlameJobWithoutKeysCountsAndSumsAsOneWithThem) {
+  Scene s = sceneFor("flame");
+  s.job.threads = 2;
+  const Accumulation withKeys = accumulateToCompletion(s.ifs, s.job);
+  s.job.depthKeys = false;  // what the command line's flame renders ask for
+  const Accumulation without = accumulateToCompletion(s.ifs, s.job);
+  EXPECT_TRUE(without.keys.empty());
+  EXPECT_FALSE(withKeys.keys.empty());
+  EXPECT_TRUE(without.density == withKeys.density);
+  EXPECT_TRUE(without.colorSums == withKeys.colorSums);
+  EXPECT_EQ(without.plotted, withKeys.plotted);
+  EXPECT_GT(without.plotted, 100'000);
+  // And its parts add up to it as the keyed ones do.
+  RenderJob part = s.job;
+  part.part = RenderPart{1, 2};
+  Accumulation sum = accumulateToCompletion(s.ifs, part);
+  part.part = RenderPart{0, 2};
+  sum.add(accumulateToCompletion(s.ifs, part));
+  EXPECT_TRUE(sum.density == without.density);
+  EXPECT_TRUE(sum.colorSums == without.colorSums);
+  EXPECT_TRUE(sum.keys.empty());
+}
+
 TEST(RenderDeterminism, ThePartsOfARenderAddUpToTheWholeRender) {
   for (const std::string kind : {"zbuffer", "flame", "shaded"}) {
     SCOPED_TRACE(kind);
