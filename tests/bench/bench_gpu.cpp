@@ -128,6 +128,7 @@ void BM_CpuFlameVariations(benchmark::State& state) {
   RenderJob job = RenderJob::fromProject(variationScene(), int(state.range(1)));
   job.samples = state.range(0);
   job.accumulateColor = true;
+  job.depthKeys = false;  // as `gridifs render --mode flame` asks
   ChaosRenderer cpu;
   run(state, cpu, job, variationIfs());
 }
