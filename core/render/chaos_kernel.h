@@ -91,6 +91,7 @@ struct alignas(64) HotFunction {
   const float* points;  // a condensation function's samples of its set (x y z 0 each), else null
   std::uint32_t pointCount;
   const CompiledVariations* variations;  // the flame variation stage, else null
+  const float* affine;                   // CompiledFunction::affineColumns when the grid's map is affine, else null
 };
 
 inline HotFunction makeHot(const CompiledFunction& f) {
@@ -108,6 +109,7 @@ inline HotFunction makeHot(const CompiledFunction& f) {
   h.points = f.points.empty() ? nullptr : f.points.data();
   h.pointCount = std::uint32_t(f.points.size() / 4);
   h.variations = f.variations.get();
+  h.affine = f.affine ? &f.affineColumns[0][0] : nullptr;
   return h;
 }
 
@@ -167,6 +169,11 @@ template <int I>
 /// The grid map continued beyond X from its border cells (a function with variations, see
 /// model/function_variations.h): the same float operations as CompiledFunction::evaluateExtrapolated.
 [[gnu::always_inline]] inline v4f applyExtrapolated(const HotFunction& f, v4f p) {
+  if (f.affine) {
+    // An affine grid (CompiledFunction::affine): its map, continued beyond X, is affine.
+    return load4(f.affine) * splat<0>(p) + load4(f.affine + 4) * splat<1>(p) + load4(f.affine + 8) * splat<2>(p) +
+           load4(f.affine + 12);
+  }
   const v4f one = {1.0f, 1.0f, 1.0f, 1.0f};
   const v4f s = (p + one) * f.toLattice;
   v4f c = __builtin_convertvector(__builtin_convertvector(s, v4i), v4f);

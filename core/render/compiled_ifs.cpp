@@ -48,6 +48,35 @@ std::uint32_t barycentricPadFor(std::size_t m) {
 
 }  // namespace
 
+namespace {
+
+/// Sets CompiledFunction::affine and affineColumns from the evaluated grid (see there).
+void compileAffineMap(const Grid& evaluated, CompiledFunction& out) {
+  const Index3 n = evaluated.resolution();
+  if (n[0] < 2 || n[1] < 2 || n[2] < 2) return;
+  const Vec3 origin = evaluated.node(0, 0, 0);
+  // q(p) = origin + Σ_d (p_d + 1)/2 · edge_d, edge_d from the origin to the far corner along d.
+  const Vec3 edge[3] = {evaluated.node(n[0] - 1, 0, 0) - origin, evaluated.node(0, n[1] - 1, 0) - origin,
+                        evaluated.node(0, 0, n[2] - 1) - origin};
+  for (int k = 0; k < n[2]; ++k)
+    for (int j = 0; j < n[1]; ++j)
+      for (int i = 0; i < n[0]; ++i) {
+        const double u[3] = {double(i) / double(n[0] - 1), double(j) / double(n[1] - 1), double(k) / double(n[2] - 1)};
+        const Vec3 node = evaluated.node(i, j, k);
+        const Vec3 predicted = origin + u[0] * edge[0] + u[1] * edge[1] + u[2] * edge[2];
+        for (int d = 0; d < 3; ++d)
+          if (!(std::abs(node[d] - predicted[d]) <= 1e-6 * (1.0 + std::abs(node[d])))) return;
+      }
+  // In X coordinates: q = origin + Σ_d edge_d/2 + Σ_d p_d · edge_d/2.
+  for (int d = 0; d < 3; ++d) {
+    for (int r = 0; r < 3; ++r) out.affineColumns[d][r] = float(0.5 * edge[d][r]);
+    out.affineColumns[3][d] = float(origin[d] + 0.5 * (edge[0][d] + edge[1][d] + edge[2][d]));
+  }
+  out.affine = true;
+}
+
+}  // namespace
+
 CompiledFunction compileFunction(const Function& function, const Grid& evaluated, std::size_t sourceIndex) {
   if (!allFinite(evaluated)) throw ModelError("", "the evaluated grid has non-finite nodes");
   const Index3 n = evaluated.resolution();
@@ -74,7 +103,10 @@ CompiledFunction compileFunction(const Function& function, const Grid& evaluated
   }
   compileColor(function, out);
   out.sourceIndex = sourceIndex;
-  if (function.hasVariationStage()) out.variations = compileVariations(function, evaluated);
+  if (function.hasVariationStage()) {
+    out.variations = compileVariations(function, evaluated);
+    compileAffineMap(evaluated, out);
+  }
   return out;
 }
 
@@ -181,6 +213,14 @@ std::array<float, 3> interpolateCell(const CompiledFunction& fn, const int cell[
 }  // namespace
 
 std::array<float, 3> CompiledFunction::evaluateExtrapolated(std::array<float, 3> p) const {
+  if (affine) {
+    // The kernel's float operations (chaos_kernel.h applyExtrapolated), lane by lane.
+    std::array<float, 3> out{};
+    for (int d = 0; d < 3; ++d)
+      out[d] =
+          affineColumns[0][d] * p[0] + affineColumns[1][d] * p[1] + affineColumns[2][d] * p[2] + affineColumns[3][d];
+    return out;
+  }
   float f[3];
   int cell[3];
   locateCell(*this, p, true, cell, f);

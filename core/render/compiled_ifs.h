@@ -67,6 +67,12 @@ struct CompiledFunction {
   float color[4] = {1.0f, 1.0f, 1.0f, 0.0f};
   float colorSpeed = 0.5f;
   double weight = 1.0;
+  /// Whether the grid's map is affine (every node within 1e-6·(1 + |node|) of the map through the
+  /// origin corner and its three neighbouring corners, as every imported flame xform's is): then a
+  /// function with variations evaluates its extrapolated grid map as that affine map, q = c1 +
+  /// cx·x + cy·y + cz·z (columns, lane 3 zero), instead of a cell's lookup and seven lerps.
+  bool affine = false;
+  float affineColumns[4][4] = {};
   /// Index in Project::functions (or SIZE_MAX for the final function).
   std::size_t sourceIndex = 0;
   /// A matrix function of a free-form IFS (Thollot et al. 1997, §3.1; `pairs` is then empty): m

@@ -7,14 +7,18 @@
 #include <cmath>
 #include <random>
 
+#include <nlohmann/json.hpp>
+
 #include "flame/palette.h"
 #include "io/flame_genome.h"
 #include "io/flame_import.h"
 #include "io/project_io.h"
+#include "model/stack_evaluator.h"
 #include "model/validation.h"
 #include "render/accumulation.h"
 #include "render/camera.h"
 #include "render/chaos_renderer.h"
+#include "render/chaos_kernel.h"
 #include "render/compiled_ifs.h"
 
 using namespace gridifs;
@@ -71,6 +75,41 @@ TEST(FunctionVariations, TheCompiledMapIsTheGenomesMapOnTheWholePlane) {
       EXPECT_NEAR(got[1], expected.y, tolerance) << i << " at " << p.x << ", " << p.y;
       EXPECT_EQ(got[2], 0.0f);
     }
+}
+
+TEST(FunctionVariations, AnAffineGridMapsAsItsAffineMapInTheKernelAndTheReference) {
+  const Project imported = importFlameGenome(parseFlameFile(kGenome)[0], {}).project;
+  // The same project with one node of the first grid moved: no longer affine.
+  nlohmann::json j = nlohmann::json::parse(serializeProject(imported));
+  ASSERT_EQ(j["functions"][0]["ops"][0]["type"], "nodes");
+  j["functions"][0]["ops"][0]["moves"][0][3][0] = j["functions"][0]["ops"][0]["moves"][0][3][0].get<double>() + 0.3;
+  const Project bent = parseProject(j.dump());
+  const auto affine = compileIfs(imported), notAffine = compileIfs(bent);
+  for (const CompiledFunction& f : affine->functions) EXPECT_TRUE(f.affine);  // every xform is affine
+  EXPECT_FALSE(notAffine->functions[0].affine);
+  EXPECT_TRUE(notAffine->functions[1].affine);
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<float> u(-3.0f, 3.0f);
+  for (const auto* ifs : {affine.get(), notAffine.get()})
+    for (const CompiledFunction& f : ifs->functions) {
+      const kernel::HotFunction hot = kernel::makeHot(f);
+      for (int n = 0; n < 200; ++n) {
+        const std::array<float, 3> p{u(rng), u(rng), u(rng)};
+        const kernel::v4f q = kernel::applyExtrapolated(hot, kernel::v4f{p[0], p[1], p[2], 0.0f});
+        const std::array<float, 3> expected = f.evaluateExtrapolated(p);
+        for (int d = 0; d < 3; ++d) EXPECT_EQ(q[d], expected[d]) << "the kernel's float operations, bit for bit";
+      }
+    }
+  // The affine map is the trilinear one: at the grid's nodes (and beyond X) within float rounding.
+  const CompiledFunction& f = affine->functions[2];
+  const Grid evaluated = evaluateFunction(imported.functions[2]);
+  for (int k = 0; k < 2; ++k)
+    for (int jj = 0; jj < 2; ++jj)
+      for (int i = 0; i < 2; ++i) {
+        const std::array<float, 3> at{i ? 1.0f : -1.0f, jj ? 1.0f : -1.0f, k ? 1.0f : -1.0f};
+        const std::array<float, 3> q = f.evaluateExtrapolated(at);
+        for (int d = 0; d < 3; ++d) EXPECT_NEAR(q[d], evaluated.node(i, jj, k)[d], 1e-5);
+      }
 }
 
 TEST(FunctionVariations, TheCameraOfANativeImportPlacesPointsWhereFlam3Does) {
