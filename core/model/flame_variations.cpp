@@ -72,6 +72,15 @@ using ApplyFn = FlamePoint (*)(const VariationInput&, double);
 constexpr ApplyFn kPreciseBodies[] = {GRIDIFS_VARIATION_BODIES(GRIDIFS_POINTER)};
 #undef GRIDIFS_POINTER
 
+// Each kernel body on its own, with the helpers and draws inlined (kernelVariationBody).
+#define GRIDIFS_KERNEL_BODY(name) \
+  [[gnu::flatten]] FlamePoint kernel_##name(const VariationInput& in, double w) { return fast::name(in, w); }
+GRIDIFS_VARIATION_BODIES(GRIDIFS_KERNEL_BODY)
+#undef GRIDIFS_KERNEL_BODY
+#define GRIDIFS_KERNEL_POINTER(name) kernel_##name,
+constexpr ApplyFn kKernelBodies[] = {GRIDIFS_VARIATION_BODIES(GRIDIFS_KERNEL_POINTER)};
+#undef GRIDIFS_KERNEL_POINTER
+
 /// One term of the kernel's sum, its body inlined by the switch.
 [[gnu::always_inline]] inline FlamePoint applyKernelBody(std::int32_t id, const VariationInput& in, double w) {
   switch (id) {
@@ -335,6 +344,10 @@ KernelVariationTerm makeKernelVariationTerm(const VariationTerm& term) {
 #else
 #define GRIDIFS_KERNEL_SUM_ATTRIBUTES [[gnu::flatten]]  // clang: no per-function optimisation switches
 #endif
+KernelBodyFn kernelVariationBody(std::int32_t body) {
+  return body >= 0 && body < body::kCount ? kKernelBodies[body] : nullptr;
+}
+
 GRIDIFS_KERNEL_SUM_ATTRIBUTES FlamePoint evaluateKernelVariations(const KernelVariationTerm* terms, std::size_t count, bool anyPre,
                                                      FlamePoint p, const FlameAffine& coefs, std::uint64_t* random) {
   // The order of operations and of random draws is evaluateVariations's.

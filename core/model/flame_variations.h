@@ -107,5 +107,10 @@ KernelVariationTerm makeKernelVariationTerm(const VariationTerm& term);
 /// the renderer's float points) and the bodies inlined. `anyPre`: some term is a pre-variation.
 FlamePoint evaluateKernelVariations(const KernelVariationTerm* terms, std::size_t count, bool anyPre, FlamePoint p,
                                     const FlameAffine& coefs, std::uint64_t* random);
+/// The kernel's body of one term (KernelVariationTerm::body), compiled on its own: what a function
+/// of a single term calls directly, without the loop over terms and the switch of
+/// evaluateKernelVariations (the same operations and draws).
+using KernelBodyFn = FlamePoint (*)(const VariationInput&, double);
+KernelBodyFn kernelVariationBody(std::int32_t body);
 
 }  // namespace gridifs

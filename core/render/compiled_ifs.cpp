@@ -135,6 +135,8 @@ std::shared_ptr<const CompiledVariations> compileVariations(const Function& func
     out->kernelTerms.push_back(makeKernelVariationTerm(out->terms.back()));
     out->anyPre |= chosen[i].first->pre;
   }
+  if (out->kernelTerms.size() == 1 && !out->kernelTerms[0].pre && !out->kernelTerms[0].flatten)
+    out->singleBody = kernelVariationBody(out->kernelTerms[0].body);
   double fitError = 0.0;  // a distorted grid's dependent variations read its closest affine map
   out->coefs = fitAffine(evaluated, fitError);
   if (function.post) {

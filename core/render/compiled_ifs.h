@@ -36,6 +36,8 @@ struct CompiledVariations {
   std::vector<KernelVariationTerm> kernelTerms;
   bool anyPre = false;
   bool hasPost = false;
+  /// A stage of one term that is neither a pre-variation nor flatten: its body, called directly.
+  KernelBodyFn singleBody = nullptr;
   CompiledVariations() = default;
   CompiledVariations(const CompiledVariations&) = delete;  // terms point into params
   CompiledVariations& operator=(const CompiledVariations&) = delete;
@@ -45,8 +47,18 @@ struct CompiledVariations {
   /// The same as the chaos kernel evaluates it (evaluateKernelVariations: the same draws, sin, cos
   /// and atan2 within 1e-9 relative), in float as the kernel keeps its points.
   [[gnu::always_inline]] std::array<float, 3> applyKernel(float x, float y, float z, std::uint64_t& random) const {
-    const FlamePoint s =
-        evaluateKernelVariations(kernelTerms.data(), kernelTerms.size(), anyPre, {x, y, z}, coefs, &random);
+    FlamePoint s;
+    if (singleBody) {
+      // evaluateKernelVariations's sum of one term, without its loop and switch.
+      const KernelVariationTerm& t = kernelTerms[0];
+      const VariationInput in{x, y, z, &coefs, t.params, &random};
+      const FlamePoint q = singleBody(in, t.weight);
+      s.x += q.x;  // from 0, as the sum does: -0 becomes +0 there too
+      s.y += q.y;
+      s.z += t.writesZ ? q.z : t.weight * in.z;
+    } else {
+      s = evaluateKernelVariations(kernelTerms.data(), kernelTerms.size(), anyPre, {x, y, z}, coefs, &random);
+    }
     if (!hasPost) return {float(s.x), float(s.y), float(s.z)};
     std::array<float, 3> out{};
     for (int r = 0; r < 3; ++r) out[r] = float(post[r][0] * s.x + post[r][1] * s.y + post[r][2] * s.z + post[r][3]);

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <random>
 #include <string>
 #include <vector>
@@ -66,6 +67,41 @@ TEST(KernelVariations, EveryVariationAgreesWithTheReferencePath) {
           << ", " << got.z << "), reference (" << want.x << ", " << want.y << ", " << want.z << ")";
     }
   }
+}
+
+TEST(KernelVariations, ABodyCalledOnItsOwnIsTheSumOfOneTermBitForBit) {
+  // What a function of a single term runs (CompiledVariations::singleBody): the same numbers and
+  // draws as the sum, -0 included.
+  std::mt19937_64 gen(12);
+  std::uniform_real_distribution<double> coord(-2.0, 2.0), weight(0.2, 1.5), jitter(-0.5, 0.5);
+  int checked = 0;
+  for (const FlameVariation& v : flameVariations()) {
+    std::vector<double> params;
+    for (const auto& [name, fallback] : v.params) params.push_back(fallback + jitter(gen));
+    const VariationTerm term{&v, weight(gen), params.data()};
+    const KernelVariationTerm kernel = makeKernelVariationTerm(term);
+    if (kernel.pre || kernel.flatten) continue;
+    const KernelBodyFn body = kernelVariationBody(kernel.body);
+    ASSERT_NE(body, nullptr) << v.name;
+    ++checked;
+    for (int i = 0; i < 200; ++i) {
+      const FlamePoint p = i == 0 ? FlamePoint{0.0, -0.0, 0.0} : FlamePoint{coord(gen), coord(gen), coord(gen)};
+      const FlameAffine coefs{0.8 + jitter(gen), jitter(gen), jitter(gen), jitter(gen), 0.8 + jitter(gen), jitter(gen)};
+      const std::uint64_t seed = gen();
+      std::uint64_t s1 = seed, s2 = seed;
+      const FlamePoint sum = evaluateKernelVariations(&kernel, 1, false, p, coefs, &s1);
+      const FlamePoint q = body(VariationInput{p.x, p.y, p.z, &coefs, kernel.params, &s2}, kernel.weight);
+      FlamePoint single;
+      single.x += q.x;
+      single.y += q.y;
+      single.z += kernel.writesZ ? q.z : kernel.weight * p.z;
+      EXPECT_EQ(s1, s2) << v.name;
+      EXPECT_EQ(std::memcmp(&sum, &single, sizeof sum), 0)
+          << v.name << " at (" << p.x << ", " << p.y << ", " << p.z << ")";
+    }
+  }
+  EXPECT_GT(checked, 90);
+  EXPECT_EQ(kernelVariationBody(-1), nullptr);
 }
 
 TEST(KernelVariations, SumsWithPreVariationsAndFlattenAgree) {
