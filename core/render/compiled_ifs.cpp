@@ -135,8 +135,12 @@ std::shared_ptr<const CompiledVariations> compileVariations(const Function& func
     out->kernelTerms.push_back(makeKernelVariationTerm(out->terms.back()));
     out->anyPre |= chosen[i].first->pre;
   }
-  if (out->kernelTerms.size() == 1 && !out->kernelTerms[0].pre && !out->kernelTerms[0].flatten)
-    out->singleBody = kernelVariationBody(out->kernelTerms[0].body);
+  const bool direct = out->kernelTerms.size() <= std::size_t(CompiledVariations::kDirectTerms) &&
+                      std::none_of(out->kernelTerms.begin(), out->kernelTerms.end(),
+                                   [](const KernelVariationTerm& t) { return t.pre || t.flatten; });
+  if (direct)
+    for (const KernelVariationTerm& t : out->kernelTerms)
+      out->directBodies[out->directCount++] = kernelVariationBody(t.body);
   double fitError = 0.0;  // a distorted grid's dependent variations read its closest affine map
   out->coefs = fitAffine(evaluated, fitError);
   if (function.post) {

@@ -36,8 +36,12 @@ struct CompiledVariations {
   std::vector<KernelVariationTerm> kernelTerms;
   bool anyPre = false;
   bool hasPost = false;
-  /// A stage of one term that is neither a pre-variation nor flatten: its body, called directly.
-  KernelBodyFn singleBody = nullptr;
+  /// A stage of at most kDirectTerms terms without pre-variations and flatten (most flame
+  /// xforms): each term's body, called directly in the kernel instead of through the loop and the
+  /// switch of evaluateKernelVariations (the same sum, in the same order, with the same draws).
+  static constexpr int kDirectTerms = 4;
+  KernelBodyFn directBodies[kDirectTerms] = {};
+  int directCount = 0;
   CompiledVariations() = default;
   CompiledVariations(const CompiledVariations&) = delete;  // terms point into params
   CompiledVariations& operator=(const CompiledVariations&) = delete;
@@ -48,14 +52,17 @@ struct CompiledVariations {
   /// and atan2 within 1e-9 relative), in float as the kernel keeps its points.
   [[gnu::always_inline]] std::array<float, 3> applyKernel(float x, float y, float z, std::uint64_t& random) const {
     FlamePoint s;
-    if (singleBody) {
-      // evaluateKernelVariations's sum of one term, without its loop and switch.
-      const KernelVariationTerm& t = kernelTerms[0];
-      const VariationInput in{x, y, z, &coefs, t.params, &random};
-      const FlamePoint q = singleBody(in, t.weight);
-      s.x += q.x;  // from 0, as the sum does: -0 becomes +0 there too
-      s.y += q.y;
-      s.z += t.writesZ ? q.z : t.weight * in.z;
+    if (directCount > 0) {
+      // evaluateKernelVariations's sum, from 0 (so -0 becomes +0 as there), term by term.
+      VariationInput in{x, y, z, &coefs, nullptr, &random};
+      for (int i = 0; i < directCount; ++i) {
+        const KernelVariationTerm& t = kernelTerms[std::size_t(i)];
+        in.param = t.params;
+        const FlamePoint q = directBodies[i](in, t.weight);
+        s.x += q.x;
+        s.y += q.y;
+        s.z += t.writesZ ? q.z : t.weight * in.z;
+      }
     } else {
       s = evaluateKernelVariations(kernelTerms.data(), kernelTerms.size(), anyPre, {x, y, z}, coefs, &random);
     }
