@@ -72,15 +72,11 @@ DeterministicIfs snapshotWith(const Project& project, GridOf gridOf, FinalOf fin
                        "the deterministic algorithm does not build condensation functions together with states; "
                        "their chaos-game points export with export-points");
     // The maps become the virtual functions of the states, each a copy of its function's map.
-    std::vector<char> active(project.functions.size(), 0);
-    std::vector<std::size_t> mapOf(project.functions.size(), 0);
-    for (std::size_t k = 0; k < ifs.maps.size(); ++k) {
-      active[ifs.maps[k].functionIndex] = 1;
-      mapOf[ifs.maps[k].functionIndex] = k;
-    }
-    const StateExpansion x = expandStates(project, active);
+    std::vector<std::size_t> present, position;
+    for (const DeterministicMap& m : ifs.maps) present.push_back(m.functionIndex);
+    const StateExpansion x = expandStatesOver(project, present, position);
     std::vector<DeterministicMap> maps;
-    for (std::size_t f : x.function) maps.push_back(ifs.maps[mapOf[f]]);
+    for (std::size_t k : position) maps.push_back(ifs.maps[k]);
     ifs.maps = std::move(maps);
     ifs.follows = x.follows;
     for (StateStep step : x.step) ifs.last.push_back(step != StateStep::Hidden);

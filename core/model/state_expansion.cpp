@@ -137,4 +137,18 @@ StateExpansion expandStates(const Project& project, const std::vector<char>& act
   return x;
 }
 
+StateExpansion expandStatesOver(const Project& project, const std::vector<std::size_t>& present,
+                                std::vector<std::size_t>& position) {
+  std::vector<char> active(project.functions.size(), 0);
+  std::vector<std::size_t> at(project.functions.size(), 0);
+  for (std::size_t k = 0; k < present.size(); ++k) {
+    active[present[k]] = 1;
+    at[present[k]] = k;
+  }
+  StateExpansion x = expandStates(project, active);
+  position.clear();
+  for (std::size_t f : x.function) position.push_back(at[f]);
+  return x;
+}
+
 }  // namespace gridifs

@@ -69,4 +69,9 @@ inline constexpr std::size_t kMaxVirtualFunctions = 1024;
 /// nothing of the attractor is left with those functions or the expansion is too large.
 StateExpansion expandStates(const Project& project, const std::vector<char>& active);
 
+/// expandStates over the functions a compiled form holds: present[k] is the project index of its
+/// k-th function (each index at most once). `position` receives each virtual function's k.
+StateExpansion expandStatesOver(const Project& project, const std::vector<std::size_t>& present,
+                                std::vector<std::size_t>& position);
+
 }  // namespace gridifs

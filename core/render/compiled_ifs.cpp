@@ -352,18 +352,14 @@ void buildTransitionWalk(CompiledIfs& ifs, const std::vector<std::vector<double>
 /// (model/state_expansion.h), each a copy of its function, and `weights` theirs. The walk has the
 /// skip phase's rows 0 … n (inside strongly connected parts) then the plotting rows n + 1 … 2n + 1.
 void compileStates(const Project& project, CompiledIfs& ifs, std::vector<double>& weights) {
-  std::vector<char> active(project.functions.size(), 0);
-  std::vector<std::size_t> compiledOf(project.functions.size(), 0);
-  for (std::size_t c = 0; c < ifs.functions.size(); ++c) {
-    active[ifs.functions[c].sourceIndex] = 1;
-    compiledOf[ifs.functions[c].sourceIndex] = c;
-  }
-  const StateExpansion x = expandStates(project, active);
+  std::vector<std::size_t> present, position;
+  for (const CompiledFunction& f : ifs.functions) present.push_back(f.sourceIndex);
+  const StateExpansion x = expandStatesOver(project, present, position);
   std::vector<CompiledFunction> virtualFunctions;
   weights.clear();
-  for (std::size_t f : x.function) {
-    virtualFunctions.push_back(ifs.functions[compiledOf[f]]);
-    weights.push_back(project.functions[f].weight);
+  for (std::size_t v = 0; v < position.size(); ++v) {
+    virtualFunctions.push_back(ifs.functions[position[v]]);
+    weights.push_back(project.functions[x.function[v]].weight);
   }
   ifs.functions = std::move(virtualFunctions);
   ifs.alias = buildAliasTable(weights);
