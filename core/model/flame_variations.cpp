@@ -97,14 +97,6 @@ constexpr ApplyFn kKernelBodies[] = {GRIDIFS_VARIATION_BODIES(GRIDIFS_KERNEL_POI
 
 }  // namespace
 
-double variationUniform(std::uint64_t& state) {
-  // The chaos kernel's generator (render/chaos_kernel.h Rng::next), 53 bits into [0, 1).
-  state += 0xA0761D6478BD642Full;
-  const unsigned __int128 m = (unsigned __int128)state * (state ^ 0xE7037ED1A0B428DBull);
-  const std::uint64_t bits = std::uint64_t(m >> 64) ^ std::uint64_t(m);
-  return double(bits >> 11) * 0x1.0p-53;
-}
-
 const std::vector<FlameVariation>& flameVariations() {
   using namespace precise;
   // Flags: random, pre, writesZ, dependent.

@@ -35,7 +35,14 @@ struct FlameAffine {
 
 /// The random numbers a random variation draws: the chaos game's own stream (wyrand, Wang Yi),
 /// so a render stays a function of its seed. `state` is the stream's state, advanced in place.
-double variationUniform(std::uint64_t& state);
+/// Inline: the batched variations draw up to eight per round of the chaos game.
+inline double variationUniform(std::uint64_t& state) {
+  // The chaos kernel's generator (render/chaos_kernel.h Rng::next), 53 bits into [0, 1).
+  state += 0xA0761D6478BD642Full;
+  const unsigned __int128 m = (unsigned __int128)state * (state ^ 0xE7037ED1A0B428DBull);
+  const std::uint64_t bits = std::uint64_t(m >> 64) ^ std::uint64_t(m);
+  return double(bits >> 11) * 0x1.0p-53;
+}
 
 /// What a variation sees: the point (after the function's grid map, or the genome's pre-affine
 /// map), the affine coefficients that the dependent variations (waves, popcorn, rings, fan) read,

@@ -51,6 +51,7 @@ inline HotIfs makeHotIfs(const CompiledIfs& compiled, std::vector<HotFunction>& 
   // back, so an IFS with variations keeps them too.
   ifs.escapeBound = compiled.hasVariations ? std::max(escapeBound, 1e10f) : escapeBound;
   ifs.variations = compiled.hasVariations;
+  ifs.batched = compiled.batchedVariations.get();
   ifs.restartInterval = compiled.restartInterval;
   ifs.stateRowsOffset = compiled.stateRowsOffset;
   for (const CompiledFunction& f : compiled.functions) ifs.condensation |= !f.points.empty();

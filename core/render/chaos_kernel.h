@@ -16,6 +16,7 @@
 #include <cstring>
 
 #include "base/hash.h"
+#include "render/batched_variations.h"
 #include "render/camera.h"
 #include "render/compiled_ifs.h"
 
@@ -282,6 +283,8 @@ struct HotIfs {
   /// instantiation, so plain grid IFSs run the loop they always ran.
   bool condensation = false;
   bool variations = false;
+  /// CompiledIfs::batchedVariations: the variation stage of a round's four chains at once.
+  const BatchedVariations* batched = nullptr;
 
   [[gnu::always_inline]] std::uint32_t choose(std::uint64_t r) const {
     const std::uint32_t column = std::uint32_t((std::uint64_t(std::uint32_t(r >> 32)) * count) >> 32);
@@ -365,6 +368,33 @@ template <bool kRestricted, class Plot>
   return plot(p, col);
 }
 
+/// One iteration of all four lanes of an IFS whose variation stages run batched
+/// (HotIfs::batched): each lane picks its function and maps its point through the function's grid,
+/// then the variations of all four run at once, then each lane moves and plots as stepLane's do.
+/// Returns the plotters' sum.
+template <class Plot>
+[[gnu::always_inline]] inline int stepBatchedRound(ChainState& st, const HotIfs& ifs, Plot& plot, std::int64_t& bad) {
+  std::uint32_t fn[kLanes];
+  v4f q[kLanes];
+  for (int l = 0; l < kLanes; ++l) {
+    fn[l] = ifs.choose(st.rng.next());
+    q[l] = applyExtrapolated(ifs.functions[fn[l]], st.p[l]);
+  }
+  ifs.batched->apply(fn, q, st.rng.state);
+  int plotted = 0;
+  for (int l = 0; l < kLanes; ++l) {
+    const HotFunction& f = ifs.functions[fn[l]];
+    const v4f col = st.color[l] + (f.color - st.color[l]) * f.speed;  // Draves & Reckase 2003, §5
+    if (!inBounds(q[l], ifs.escapeBound)) [[unlikely]] {
+      ++bad;
+      st.replacePoint(l);  // as flam3 does: a fresh random point, the chain goes on
+      continue;
+    }
+    plotted += advanceAndPlot<false>(st, l, ifs, plot, bad, q[l], col, 0);
+  }
+  return plotted;
+}
+
 /// One iteration of one lane; returns what the plotter returned (1 when it plotted the point at once). kRestricted: walk the
 /// transition matrix's Markov chain (Thollot et al. §3.2) instead of independent choices.
 /// kCondensation: the loop for functions of other kinds: a function with points is Barnsley's
@@ -425,7 +455,11 @@ template <class Plot>
   ChainState local = st;
   const std::int64_t rounds = count / kLanes;
   static_assert(kLanes == 4);
-  if (ifs.condensation || ifs.variations) [[unlikely]] {
+  if (ifs.batched) [[unlikely]] {
+    // Flame variations, four lanes at a time; a last partial round lane by lane.
+    for (std::int64_t n = 0; n < rounds; ++n) plotted += stepBatchedRound(local, ifs, plot, bad);
+    for (int l = 0; l < int(count % kLanes); ++l) plotted += stepLane<false, false, true>(local, l, ifs, plot, bad);
+  } else if (ifs.condensation || ifs.variations) [[unlikely]] {
     // Condensation maps (Sokolov & Gentil, §3.1) and flame variations in their own instantiations.
     auto lanes = [&]<bool kRestricted, bool kRestarts>() {
       for (std::int64_t n = 0; n < rounds; ++n)

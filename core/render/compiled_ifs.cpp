@@ -12,6 +12,7 @@
 #include "model/stack_evaluator.h"
 #include "model/state_expansion.h"
 #include "model/transition_matrix.h"
+#include "render/batched_variations.h"
 
 namespace gridifs {
 namespace {
@@ -460,6 +461,7 @@ std::shared_ptr<const CompiledIfs> compileWith(const Project& project,
   }
   for (const CompiledFunction& f : ifs->functions) ifs->hasVariations |= f.variations != nullptr;
   if (ifs->finalFunction) ifs->hasVariations |= ifs->finalFunction->variations != nullptr;
+  if (ifs->hasVariations) ifs->batchedVariations = batchVariations(*ifs);
   return ifs;
 }
 

@@ -14,6 +14,8 @@
 
 namespace gridifs {
 
+struct BatchedVariations;
+
 /// Two x-neighbouring distorted nodes (i, j, k) and (i+1, j, k), each as x y z 0: one 32-byte
 /// aligned load gives both ends of a cell edge, so a trilinear lookup is 4 loads (Gröller & Wegenkittl 1994, §1.3).
 struct alignas(32) NodePair {
@@ -174,6 +176,9 @@ struct CompiledIfs {
   std::uint32_t barycentricStride() const { return barycentricPad + 8; }
   /// Whether some function (or the final one) has a variation stage.
   bool hasVariations = false;
+  /// The functions' variation stages for four chains at once (render/batched_variations.h), when
+  /// every function has one the batch can run; else null and each chain runs its own.
+  std::shared_ptr<const BatchedVariations> batchedVariations;
 
   /// Maps a 64-bit random number to a function index by weight: the high 32 bits pick the
   /// column, the low 32 bits decide between it and its alias.
