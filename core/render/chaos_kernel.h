@@ -631,17 +631,20 @@ struct ZBufferPlot {
       points[i] = v4f{} + __builtin_nanf("");
       colors[i] = v4f{};
     }
-    constexpr std::uint32_t kOutside = ~0u;
-    alignas(32) std::uint32_t pixels[kChunk];
+    // The samples that land in the image, as indices into the chunk, in sample order: the loops
+    // below run over them without a branch per sample (which mispredicted wherever a fifth of
+    // the samples fall outside, as spherical flames' do).
+    alignas(32) std::uint32_t pixels[kChunk];  // 0 for a sample outside
     alignas(32) std::uint32_t depths[kChunk];
     alignas(32) std::uint32_t packed[kChunk];
+    std::uint16_t landed[kChunk];
+    int landedCount = 0;
     v8f rows[4][4];  // rows[r][c]: coefficient c (x, y, z, constant) of row r (x·w, y·w, w, depth)
     const v4f* columns[4] = {&cam.cx, &cam.cy, &cam.cz, &cam.c1};
     for (int r = 0; r < 4; ++r)
       for (int c = 0; c < 4; ++c) rows[r][c] = v8f{} + (*columns[c])[r];
     const v8f width = v8f{} + cam.size[0], height = v8f{} + cam.size[1], nearPlane = v8f{} + cam.nearPlane;
     const v8u stride = v8u{} + cam.stride;
-    std::int64_t inImage = 0;
     for (int i = 0; i < n; i += kGroup) {
       v8f x, y, z, unused;
       transposeEight(points + i, x, y, z, unused);
@@ -657,7 +660,7 @@ struct ZBufferPlot {
           (depth > nearPlane) & (ix >= v8f{}) & (ix < width) & (iy >= v8f{}) & (iy < height);
       const v8u column = v8u(__builtin_convertvector(inside ? ix : v8f{}, v8i));
       const v8u row = v8u(__builtin_convertvector(inside ? iy : v8f{}, v8i));
-      const v8u pixel = inside ? row * stride + column : v8u{} + kOutside;
+      const v8u pixel = row * stride + column;
       std::memcpy(pixels + i, &pixel, sizeof pixel);
       if (keys) {
         const v8u depthBits = v8u(depth);
@@ -673,26 +676,27 @@ struct ZBufferPlot {
         std::memcpy(packed + i, &colour, sizeof colour);
       }
       for (int k = 0; k < kGroup; ++k) {
-        if (pixels[i + k] == kOutside) continue;
-        ++inImage;
+        // Outside samples prefetch pixel 0 (a line already at hand) and are not listed.
         __builtin_prefetch(cells + pixels[i + k], 1);
         if constexpr (kAccumulateColor) __builtin_prefetch(colorSums + std::size_t(pixels[i + k]) * 4, 1);
+        landed[landedCount] = std::uint16_t(i + k);
+        landedCount += inside[k] != 0;  // the NaN padding is outside
       }
     }
     if (keys) {
-      for (int i = 0; i < count; ++i) {
-        if (pixels[i] == kOutside) continue;
+      for (int j = 0; j < landedCount; ++j) {
+        const int i = landed[j];
         commit(cells[pixels[i]], (std::uint64_t(depths[i]) << 32) | packed[i]);
         if constexpr (kAccumulateColor) addColor(colorSums + std::size_t(pixels[i]) * 4, colors[i]);
       }
     } else {
-      for (int i = 0; i < count; ++i) {
-        if (pixels[i] == kOutside) continue;
+      for (int j = 0; j < landedCount; ++j) {
+        const int i = landed[j];
         countHit(cells[pixels[i]]);
         if constexpr (kAccumulateColor) addColor(colorSums + std::size_t(pixels[i]) * 4, colors[i]);
       }
     }
-    plotted += inImage;
+    plotted += landedCount;
     count = 0;
   }
 
