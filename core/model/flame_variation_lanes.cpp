@@ -222,9 +222,14 @@ LaneBodyFn laneVariationBody(const char* name) {
                                                                    std::uint64_t& random) const {
   const std::size_t count = slots.size();
   VariationLanes in;
-  in.x = v4f{q[0][0], q[1][0], q[2][0], q[3][0]};
-  in.y = v4f{q[0][1], q[1][1], q[2][1], q[3][1]};
-  in.z = v4f{q[0][2], q[1][2], q[2][2], q[3][2]};
+  // The four points as x, y and z rows.
+  const v4f q01 = __builtin_shufflevector(q[0], q[1], 0, 4, 1, 5),
+            q23 = __builtin_shufflevector(q[2], q[3], 0, 4, 1, 5);
+  const v4f z01 = __builtin_shufflevector(q[0], q[1], 2, 6, 3, 7),
+            z23 = __builtin_shufflevector(q[2], q[3], 2, 6, 3, 7);
+  in.x = __builtin_shufflevector(q01, q23, 0, 1, 4, 5);
+  in.y = __builtin_shufflevector(q01, q23, 2, 3, 6, 7);
+  in.z = __builtin_shufflevector(z01, z23, 0, 1, 4, 5);
   in.random = &random;
   const std::uint32_t masks[4] = {slotMask[fn[0]], slotMask[fn[1]], slotMask[fn[2]], slotMask[fn[3]]};
   const float* weightRows[4] = {&weights[fn[0] * count], &weights[fn[1] * count], &weights[fn[2] * count],
@@ -238,8 +243,9 @@ LaneBodyFn laneVariationBody(const char* name) {
     if (active == 0) continue;
     in.active = active;
     in.weight = v4f{weightRows[0][s], weightRows[1][s], weightRows[2][s], weightRows[3][s]};
-    for (int l = 0; l < 4; ++l) in.params[l] = paramRows[l][s];
     const Slot& slot = slots[s];
+    if (slot.params)
+      for (int l = 0; l < 4; ++l) in.params[l] = paramRows[l][s];
     v4f dx{}, dy{}, dz{};
     switch (slot.lanes) {
 #define GRIDIFS_CASE(name) \
@@ -269,20 +275,27 @@ LaneBodyFn laneVariationBody(const char* name) {
     sy += dy;
     sz += dz;
   }
+  if (anyFlatten)
+    for (int l = 0; l < 4; ++l)
+      if (flatten[fn[l]]) sz[l] = 0.0f;
+  // Back to one point per chain, lane 3 zero.
+  const v4f xy01 = __builtin_shufflevector(sx, sy, 0, 4, 1, 5), xy23 = __builtin_shufflevector(sx, sy, 2, 6, 3, 7);
+  const v4f z0 = __builtin_shufflevector(sz, v4f{}, 0, 4, 1, 5), z1 = __builtin_shufflevector(sz, v4f{}, 2, 6, 3, 7);
+  q[0] = __builtin_shufflevector(xy01, z0, 0, 1, 4, 5);
+  q[1] = __builtin_shufflevector(xy01, z0, 2, 3, 6, 7);
+  q[2] = __builtin_shufflevector(xy23, z1, 0, 1, 4, 5);
+  q[3] = __builtin_shufflevector(xy23, z1, 2, 3, 6, 7);
+  if (!anyPost) return;
   for (int l = 0; l < 4; ++l) {
     const std::uint32_t f = fn[l];
-    const float z = flatten[f] ? 0.0f : sz[l];
-    if (!hasPost[f]) {
-      q[l] = v4f{sx[l], sy[l], z, 0.0f};
-      continue;
-    }
+    if (!hasPost[f]) continue;
     const float* c = &postColumns[std::size_t(f) * 16];
     v4f cx, cy, cz, c1;
     std::memcpy(&cx, c, 16);
     std::memcpy(&cy, c + 4, 16);
     std::memcpy(&cz, c + 8, 16);
     std::memcpy(&c1, c + 12, 16);
-    q[l] = cx * sx[l] + cy * sy[l] + cz * z + c1;
+    q[l] = cx * q[l][0] + cy * q[l][1] + cz * q[l][2] + c1;
   }
 }
 

@@ -67,6 +67,7 @@ struct BatchedVariations {
     int lanes = -1;                 // its four-lane form (laneVariationBodyIndex), or -1: lane by lane through `scalar`
     KernelBodyFn scalar = nullptr;  // its kernel body
     bool writesZ = false;           // otherwise the term carries w·z
+    bool params = false;            // the variation has parameters
   };
   std::vector<Slot> slots;
   /// Per function f and slot s, at [f · slots.size() + s]: the term's weight (0 when f lacks it)
@@ -80,6 +81,7 @@ struct BatchedVariations {
   std::vector<const FlameAffine*> coefs;
   std::vector<float> postColumns;
   std::vector<std::uint8_t> hasPost, flatten;
+  bool anyPost = false, anyFlatten = false;
 
   /// The variation stage of four chains: q[l] is chain l's grid image g(p) under function fn[l]
   /// and becomes post(Σ w_i V_i(q)) (lane 3 zero). Random variations draw from `random`, slot by

@@ -32,6 +32,7 @@ std::shared_ptr<const BatchedVariations> batchVariations(const CompiledIfs& ifs)
         slot.lanes = laneVariationBodyIndex(v.terms[i].variation->name);
         slot.scalar = kernelVariationBody(body);
         slot.writesZ = v.kernelTerms[i].writesZ;
+        slot.params = !v.terms[i].variation->params.empty();
         if (!slot.scalar) return nullptr;
         out->slots.push_back(slot);
       }
@@ -57,6 +58,8 @@ std::shared_ptr<const BatchedVariations> batchVariations(const CompiledIfs& ifs)
     }
     out->coefs[f] = &v.coefs;
     out->hasPost[f] = v.hasPost;
+    out->anyPost |= v.hasPost;
+    out->anyFlatten |= out->flatten[f] != 0;
     for (int c = 0; c < 4; ++c)
       for (int r = 0; r < 3; ++r) out->postColumns[f * 16 + std::size_t(c) * 4 + std::size_t(r)] = float(v.post[r][c]);
   }
