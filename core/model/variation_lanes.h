@@ -15,8 +15,8 @@
 namespace gridifs {
 
 /// One term for four chains: lane l holds chain l's point, its function's weight for the term
-/// (0 where the function lacks it) and parameters. Only the lanes in `active` draw random numbers,
-/// in lane order, from the one stream.
+/// (0 where the function lacks it) and parameters (another function's where it lacks the term).
+/// Only the lanes in `active` draw random numbers, in lane order, from the one stream.
 struct VariationLanes {
   lane_math::v4f x, y, z;
   lane_math::v4f weight;
@@ -71,7 +71,8 @@ struct BatchedVariations {
   };
   std::vector<Slot> slots;
   /// Per function f and slot s, at [f · slots.size() + s]: the term's weight (0 when f lacks it)
-  /// and parameters.
+  /// and parameters (when f lacks it, those of the first function that has it, so that every lane
+  /// evaluates something well defined).
   std::vector<float> weights;
   std::vector<const double*> params;
   /// Per function: bit s set when it has slot s; its affine fit (the dependent variations read

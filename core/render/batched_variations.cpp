@@ -63,6 +63,12 @@ std::shared_ptr<const BatchedVariations> batchVariations(const CompiledIfs& ifs)
     for (int c = 0; c < 4; ++c)
       for (int r = 0; r < 3; ++r) out->postColumns[f * 16 + std::size_t(c) * 4 + std::size_t(r)] = float(v.post[r][c]);
   }
+  for (std::size_t s = 0; s < count; ++s) {
+    const double* first = nullptr;
+    for (std::size_t f = 0; f < n && !first; ++f) first = out->params[f * count + s];
+    for (std::size_t f = 0; f < n; ++f)
+      if (!out->params[f * count + s]) out->params[f * count + s] = first;
+  }
   return out;
 }
 
