@@ -259,3 +259,6 @@ if __name__ == "__main__":
     # the shipped-projects test holds assets/ to).
     resave = os.environ.get("GRIDIFS_RESAVE", os.path.join(ROOT, "build", "tests", "gridifs_resave_project"))
     subprocess.run([resave] + sorted(os.path.join(OUT, f) for f in os.listdir(OUT) if f.endswith(".gridifs")), check=True)
+    for f in os.listdir(OUT):  # the backups saving keeps
+        if f.endswith(".gridifs~"):
+            os.remove(os.path.join(OUT, f))

@@ -57,3 +57,4 @@ camera fig5_5_hyperbolic_paraboloid.gridifs 30 30 4.6
 rm -f ./*.gridifs~  # the backups saving keeps
 # jq's output in GridIFS's own saved form (what the shipped-projects test holds assets/ to).
 "${GRIDIFS_RESAVE:-../../build/tests/gridifs_resave_project}" ./*.gridifs
+rm -f ./*.gridifs~  # and the ones resaving keeps
