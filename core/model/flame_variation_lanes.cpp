@@ -280,6 +280,9 @@ LaneBodyFn laneVariationBody(const char* name) {
   if (anyFlatten)
     for (int l = 0; l < 4; ++l)
       if (flatten[fn[l]]) sz[l] = 0.0f;
+  v4f gridImage[4];
+  if (anyKeepsGridImage)
+    for (int l = 0; l < 4; ++l) gridImage[l] = q[l];
   // Back to one point per chain, lane 3 zero.
   const v4f xy01 = __builtin_shufflevector(sx, sy, 0, 4, 1, 5), xy23 = __builtin_shufflevector(sx, sy, 2, 6, 3, 7);
   const v4f z0 = __builtin_shufflevector(sz, v4f{}, 0, 4, 1, 5), z1 = __builtin_shufflevector(sz, v4f{}, 2, 6, 3, 7);
@@ -287,6 +290,9 @@ LaneBodyFn laneVariationBody(const char* name) {
   q[1] = __builtin_shufflevector(xy01, z0, 2, 3, 6, 7);
   q[2] = __builtin_shufflevector(xy23, z1, 0, 1, 4, 5);
   q[3] = __builtin_shufflevector(xy23, z1, 2, 3, 6, 7);
+  if (anyKeepsGridImage)
+    for (int l = 0; l < 4; ++l)
+      if (keepsGridImage[fn[l]]) q[l] = gridImage[l];
   if (!anyPost) return;
   for (int l = 0; l < 4; ++l) {
     const std::uint32_t f = fn[l];

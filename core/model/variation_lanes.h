@@ -83,10 +83,14 @@ struct BatchedVariations {
   std::vector<float> postColumns;
   std::vector<std::uint8_t> hasPost, flatten;
   bool anyPost = false, anyFlatten = false;
+  /// Per function: it has no variation stage (a grid function among flame ones, as a flame's
+  /// symmetry xforms import): its lane keeps the grid image the kernel gave it.
+  std::vector<std::uint8_t> keepsGridImage;
+  bool anyKeepsGridImage = false;
 
   /// The variation stage of four chains: q[l] is chain l's grid image g(p) under function fn[l]
-  /// and becomes post(Σ w_i V_i(q)) (lane 3 zero). Random variations draw from `random`, slot by
-  /// slot, the chains in order.
+  /// and becomes post(Σ w_i V_i(q)) (lane 3 zero), or stays when fn[l] has no stage. Random variations draw from
+  /// `random`, slot by slot, the chains in order.
   void apply(const std::uint32_t (&fn)[4], v4f (&q)[4], std::uint64_t& random) const;
 };
 

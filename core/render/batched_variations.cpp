@@ -6,8 +6,12 @@ namespace gridifs {
 
 std::shared_ptr<const BatchedVariations> batchVariations(const CompiledIfs& ifs) {
   if (ifs.functions.empty() || !ifs.transitionWalk.empty() || ifs.barycentricSize != 0) return nullptr;
-  for (const CompiledFunction& f : ifs.functions)
-    if (!f.variations || f.variations->anyPre || !f.points.empty() || !f.matrix.empty()) return nullptr;
+  bool anyStage = false;
+  for (const CompiledFunction& f : ifs.functions) {
+    if ((f.variations && f.variations->anyPre) || !f.points.empty() || !f.matrix.empty()) return nullptr;
+    anyStage |= f.variations != nullptr;
+  }
+  if (!anyStage) return nullptr;
   auto out = std::make_shared<BatchedVariations>();
   // Slots in order of first appearance, so a lone function sums its terms in its own order. A
   // slot is a body and its occurrence within the function (the same variation twice is two).
@@ -18,6 +22,7 @@ std::shared_ptr<const BatchedVariations> batchVariations(const CompiledIfs& ifs)
   std::vector<Key> keys;
   std::vector<std::vector<int>> termSlots(ifs.functions.size());
   for (std::size_t f = 0; f < ifs.functions.size(); ++f) {
+    if (!ifs.functions[f].variations) continue;
     const CompiledVariations& v = *ifs.functions[f].variations;
     for (std::size_t i = 0; i < v.kernelTerms.size(); ++i) {
       const std::int32_t body = v.kernelTerms[i].body;
@@ -47,7 +52,13 @@ std::shared_ptr<const BatchedVariations> batchVariations(const CompiledIfs& ifs)
   out->postColumns.assign(n * 16, 0.0f);
   out->hasPost.assign(n, 0);
   out->flatten.assign(n, 0);
+  out->keepsGridImage.assign(n, 0);
   for (std::size_t f = 0; f < n; ++f) {
+    if (!ifs.functions[f].variations) {
+      out->keepsGridImage[f] = 1;
+      out->anyKeepsGridImage = true;
+      continue;
+    }
     const CompiledVariations& v = *ifs.functions[f].variations;
     for (std::size_t i = 0; i < v.kernelTerms.size(); ++i) {
       const std::size_t s = std::size_t(termSlots[f][i]);

@@ -9,9 +9,9 @@ namespace gridifs {
 
 struct CompiledIfs;
 
-/// The batched stage of `ifs`, or null when its chaos game cannot run it: some function lacks
-/// variations or has a pre-variation, or the IFS walks a transition matrix, has condensation sets
-/// or is a free-form IFS, or its functions hold more than 32 distinct terms.
+/// The batched stage of `ifs`, or null when its chaos game cannot run it: no function has
+/// variations, or one has a pre-variation, or the IFS walks a transition matrix, has condensation
+/// sets or is a free-form IFS, or its functions hold more than 32 distinct terms.
 std::shared_ptr<const BatchedVariations> batchVariations(const CompiledIfs& ifs);
 
 }  // namespace gridifs

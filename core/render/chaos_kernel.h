@@ -378,7 +378,8 @@ template <class Plot>
   v4f q[kLanes];
   for (int l = 0; l < kLanes; ++l) {
     fn[l] = ifs.choose(st.rng.next());
-    q[l] = applyExtrapolated(ifs.functions[fn[l]], st.p[l]);
+    const HotFunction& f = ifs.functions[fn[l]];
+    q[l] = f.variations ? applyExtrapolated(f, st.p[l]) : apply(f, st.p[l]);
   }
   ifs.batched->apply(fn, q, st.rng.state);
   int plotted = 0;

@@ -4,6 +4,7 @@
 // stage against each function's own; which IFSs batch; and renders that stay a function of the seed.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <random>
@@ -133,11 +134,17 @@ const char* kGenome = R"(<flame name="batch" size="160 120" scale="40" palette="
 </flame>)";
 
 /// kGenome imported natively, with the 3D bubble and flatten added to its last function (a 3D
-/// genome would import sampled onto grids).
+/// genome would import sampled onto grids), and a grid function without variations (as a flame's
+/// symmetry xforms import).
 Project batchProject() {
   Project project = importFlameGenome(parseFlameFile(kGenome)[0], {}).project;
   project.functions[3].variations["bubble"] = 0.5;
   project.functions[3].variations["flatten"] = 1.0;
+  Function plain = project.functions[0];
+  plain.variations.clear();
+  plain.variation_params.clear();
+  plain.post.reset();
+  project.functions.push_back(plain);
   return project;
 }
 
@@ -147,8 +154,10 @@ TEST(BatchedVariations, AWholeIfsBatchedIsEachFunctionsOwnStage) {
   const auto ifs = compileIfs(batchProject());
   ASSERT_NE(ifs->batchedVariations, nullptr);
   const BatchedVariations& batch = *ifs->batchedVariations;
-  // swirl once for the two functions that have it, every other term in a slot of its own.
+  // swirl once for the two functions that have it, every other term in a slot of its own; none
+  // for the plain function.
   EXPECT_EQ(batch.slots.size(), 10u);
+  EXPECT_EQ(batch.keepsGridImage, (std::vector<std::uint8_t>{0, 0, 0, 0, 1}));
   std::mt19937_64 gen(8);
   std::uniform_real_distribution<double> coord(-3.0, 3.0);
   std::uniform_int_distribution<std::uint32_t> pick(0, std::uint32_t(ifs->functions.size() - 1));
@@ -159,14 +168,17 @@ TEST(BatchedVariations, AWholeIfsBatchedIsEachFunctionsOwnStage) {
     std::array<double, 3> grid[4];
     for (int l = 0; l < 4; ++l) {
       fn[l] = pick(gen);
-      const auto g =
-          ifs->functions[fn[l]].evaluateExtrapolated({float(coord(gen)), float(coord(gen)), float(coord(gen))});
+      const CompiledFunction& f = ifs->functions[fn[l]];
+      const std::array<float, 3> p{float(coord(gen)), float(coord(gen)), float(coord(gen))};
+      // As the kernel gives them: the extrapolated grid map before a variation stage, else the grid's own.
+      const auto g = f.variations ? f.evaluateExtrapolated(p) : f.evaluate(p);
       q[l] = v4f{g[0], g[1], g[2], 0.0f};
       grid[l] = {g[0], g[1], g[2]};
     }
     batch.apply(fn, q, unused);
     for (int l = 0; l < 4; ++l) {
-      const auto want = ifs->functions[fn[l]].variations->apply(grid[l], unused);
+      const CompiledFunction& f = ifs->functions[fn[l]];
+      const auto want = f.variations ? f.variations->apply(grid[l], unused) : grid[l];
       for (int d = 0; d < 3; ++d)
         EXPECT_TRUE(close(q[l][d], want[std::size_t(d)], 5e-5))
             << "function " << fn[l] << " axis " << d << ": batched " << q[l][d] << ", own " << want[std::size_t(d)];
@@ -175,14 +187,17 @@ TEST(BatchedVariations, AWholeIfsBatchedIsEachFunctionsOwnStage) {
   }
 }
 
-TEST(BatchedVariations, OnlyIfssWhoseFunctionsAllHaveAPlainVariationStageBatch) {
+TEST(BatchedVariations, IfssWithAPreVariationOrWithoutVariationsDoNotBatch) {
   const Project project = batchProject();
   EXPECT_NE(compileIfs(project)->batchedVariations, nullptr);
   Project pre = project;
   pre.functions[1].variations["pre_blur"] = 0.1;  // moves the point every other term sees
   EXPECT_EQ(compileIfs(pre)->batchedVariations, nullptr);
   Project plain = project;
-  plain.functions[2].variations.clear();  // a grid function among flame functions
+  for (Function& f : plain.functions) {  // a grid IFS runs its own loop
+    f.variations.clear();
+    f.post.reset();
+  }
   EXPECT_EQ(compileIfs(plain)->batchedVariations, nullptr);
 }
 
