@@ -5,11 +5,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <random>
 
-#include <nlohmann/json.hpp>
-
 #include "flame/palette.h"
+#include "flame_seed_checks.h"
 #include "io/flame_genome.h"
 #include "io/flame_import.h"
 #include "io/project_io.h"
@@ -17,8 +17,8 @@
 #include "model/validation.h"
 #include "render/accumulation.h"
 #include "render/camera.h"
-#include "render/chaos_renderer.h"
 #include "render/chaos_kernel.h"
+#include "render/chaos_renderer.h"
 #include "render/compiled_ifs.h"
 
 using namespace gridifs;
@@ -211,19 +211,5 @@ TEST(FunctionVariations, RandomVariationsAreDeterministicPerSeedForAnyThreadCoun
     <xform weight="1" color="0" julia="0.7" blur="0.3" coefs="0.6 0.2 -0.2 0.6 0.2 0"/>
     <xform weight="1" color="1" julian="1" julian_power="4" pre_blur="0.2" coefs="0.5 0 0 0.5 -0.3 0.1"/>
   </flame>)")[0];
-  const Project p = importFlameGenome(genome, {}).project;
-  const auto ifs = compileIfs(p);
-  RenderJob job = RenderJob::fromProject(p, 1);
-  job.samples = 300'000;
-  job.accumulateColor = true;
-  job.palette = std::make_shared<const Palette>(builtinPalette("ember"));
-  const Accumulation one = accumulateToCompletion(ifs, job);
-  job.threads = 3;
-  const Accumulation three = accumulateToCompletion(ifs, job);
-  EXPECT_TRUE(one.density == three.density);
-  EXPECT_TRUE(one.colorSums == three.colorSums);
-  EXPECT_GT(one.plotted, 100'000);
-  job.seed += 1;
-  const Accumulation other = accumulateToCompletion(ifs, job);
-  EXPECT_FALSE(one.density == other.density);
+  test::expectAFunctionOfTheSeedForAnyThreadCount(importFlameGenome(genome, {}).project, 300'000);
 }
