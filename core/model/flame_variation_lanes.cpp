@@ -32,6 +32,13 @@ template <int kDraws>
     for (int d = 0; d < kDraws; ++d) u[d][l] = in.active >> l & 1 ? variationUniform(*in.random) : 0.0;
 }
 
+/// (r cos a, r sin a): the point at radius r and angle a (julia, blur, julian).
+[[gnu::always_inline]] inline void fromPolar(v4f r, v4f a, v4f& x, v4f& y) {
+  const lm::SinCos<v4f> sc = lm::sincos(a);
+  x = r * sc.cos;
+  y = r * sc.sin;
+}
+
 void linear(VariationLanes& in, v4f& x, v4f& y, v4f& z) {
   x = in.weight * in.x;
   y = in.weight * in.y;
@@ -139,9 +146,7 @@ void julia(VariationLanes& in, v4f& x, v4f& y, v4f&) {
   const v4i otherRoot = {u[0][0] < 0.5, u[0][1] < 0.5, u[0][2] < 0.5, u[0][3] < 0.5};
   const v4f a = 0.5f * angle(in) + (otherRoot != 0 ? lm::splat(kPi) : v4f{});
   const v4f r = in.weight * lm::sqrt(radius(in));
-  const lm::SinCos<v4f> sc = lm::sincos(a);
-  x = r * sc.cos;
-  y = r * sc.sin;
+  fromPolar(r, a, x, y);
 }
 void blur(VariationLanes& in, v4f& x, v4f& y, v4f&) {
   double u[2][4];
@@ -152,9 +157,7 @@ void blur(VariationLanes& in, v4f& x, v4f& y, v4f&) {
     radial[l] = float(u[1][l]);
   }
   const v4f r = in.weight * radial;
-  const lm::SinCos<v4f> sc = lm::sincos(t);
-  x = r * sc.cos;
-  y = r * sc.sin;
+  fromPolar(r, t, x, y);
 }
 void julian(VariationLanes& in, v4f& x, v4f& y, v4f&) {
   double u[1][4];
@@ -167,9 +170,7 @@ void julian(VariationLanes& in, v4f& x, v4f& y, v4f&) {
     exponent[l] = float(dist / p / 2.0);
   }
   const v4f a = (lm::atan2(in.y, in.x) + turn) / power, r = in.weight * lm::pow(sumsq(in), exponent);
-  const lm::SinCos<v4f> sc = lm::sincos(a);
-  x = r * sc.cos;
-  y = r * sc.sin;
+  fromPolar(r, a, x, y);
 }
 
 // clang-format off
@@ -280,19 +281,13 @@ LaneBodyFn laneVariationBody(const char* name) {
   if (anyFlatten)
     for (int l = 0; l < 4; ++l)
       if (flatten[fn[l]]) sz[l] = 0.0f;
-  v4f gridImage[4];
-  if (anyKeepsGridImage)
-    for (int l = 0; l < 4; ++l) gridImage[l] = q[l];
-  // Back to one point per chain, lane 3 zero.
+  // Back to one point per chain, lane 3 zero; a lane whose function has no stage keeps its grid image.
   const v4f xy01 = __builtin_shufflevector(sx, sy, 0, 4, 1, 5), xy23 = __builtin_shufflevector(sx, sy, 2, 6, 3, 7);
   const v4f z0 = __builtin_shufflevector(sz, v4f{}, 0, 4, 1, 5), z1 = __builtin_shufflevector(sz, v4f{}, 2, 6, 3, 7);
-  q[0] = __builtin_shufflevector(xy01, z0, 0, 1, 4, 5);
-  q[1] = __builtin_shufflevector(xy01, z0, 2, 3, 6, 7);
-  q[2] = __builtin_shufflevector(xy23, z1, 0, 1, 4, 5);
-  q[3] = __builtin_shufflevector(xy23, z1, 2, 3, 6, 7);
-  if (anyKeepsGridImage)
-    for (int l = 0; l < 4; ++l)
-      if (keepsGridImage[fn[l]]) q[l] = gridImage[l];
+  const v4f out[4] = {__builtin_shufflevector(xy01, z0, 0, 1, 4, 5), __builtin_shufflevector(xy01, z0, 2, 3, 6, 7),
+                      __builtin_shufflevector(xy23, z1, 0, 1, 4, 5), __builtin_shufflevector(xy23, z1, 2, 3, 6, 7)};
+  for (int l = 0; l < 4; ++l)
+    if (!anyKeepsGridImage || !keepsGridImage[fn[l]]) q[l] = out[l];
   if (!anyPost) return;
   for (int l = 0; l < 4; ++l) {
     const std::uint32_t f = fn[l];
