@@ -188,12 +188,18 @@ TEST(BatchedVariations, AWholeIfsBatchedIsEachFunctionsOwnStage) {
   }
 }
 
-TEST(BatchedVariations, IfssWithAPreVariationOrWithoutVariationsDoNotBatch) {
+TEST(BatchedVariations, IfssWithAPreVariationTooManyTermsOrNoVariationsDoNotBatch) {
   const Project project = batchProject();
   EXPECT_NE(compileIfs(project)->batchedVariations, nullptr);
   Project pre = project;
   pre.functions[1].variations["pre_blur"] = 0.1;  // moves the point every other term sees
   EXPECT_EQ(compileIfs(pre)->batchedVariations, nullptr);
+  Project crowded = project;  // more distinct terms than a slot mask holds
+  int added = 0;
+  for (const FlameVariation& v : flameVariations())
+    if (!v.pre && added < 33 && crowded.functions[0].variations.emplace(v.name, 0.01).second) ++added;
+  ASSERT_EQ(added, 33);
+  EXPECT_EQ(compileIfs(crowded)->batchedVariations, nullptr);
   Project plain = project;
   for (Function& f : plain.functions) {  // a grid IFS runs its own loop
     f.variations.clear();
