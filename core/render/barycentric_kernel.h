@@ -55,6 +55,9 @@ inline HotIfs makeHotIfs(const CompiledIfs& compiled, std::vector<HotFunction>& 
   ifs.restartInterval = compiled.restartInterval;
   ifs.stateRowsOffset = compiled.stateRowsOffset;
   for (const CompiledFunction& f : compiled.functions) ifs.condensation |= !f.points.empty();
+  ifs.boundedMaps = !compiled.functions.empty() && !compiled.hasVariations && !ifs.condensation;
+  for (const CompiledFunction& f : compiled.functions)
+    ifs.boundedMaps = ifs.boundedMaps && !f.pairs.empty() && f.nodeMagnitude <= 0.5f * escapeBound;
   attachBarycentric(ifs, compiled);
   return ifs;
 }

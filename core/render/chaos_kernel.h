@@ -86,8 +86,11 @@ struct alignas(64) HotFunction {
   v4f maxCell;
   v4f color;  // r g b c
   v4f speed;  // color_speed in all lanes
+  /// Byte offsets between node pairs (32 bytes each): the next cell in x, in y (a row of
+  /// CompiledFunction::pairStrideJ pairs), in z (pairStrideK), and in y and z together. A cell's
+  /// four x-edges are at its offset plus 0 and the last three.
+  v4i pairBytes;
   const NodePair* pairs;
-  std::uint32_t strideJ, strideK;
   const float* matrix;  // a free-form IFS's matrix rows (CompiledFunction::matrix), else null
   const float* points;  // a condensation function's samples of its set (x y z 0 each), else null
   std::uint32_t pointCount;
@@ -104,8 +107,9 @@ inline HotFunction makeHot(const CompiledFunction& f) {
     h.speed[d] = f.colorSpeed;
   }
   h.pairs = f.pairs.data();
-  h.strideJ = f.pairStrideJ;
-  h.strideK = f.pairStrideK;
+  static_assert(sizeof(NodePair) == 32);
+  const std::int32_t row = std::int32_t(32 * f.pairStrideJ), layer = std::int32_t(32 * f.pairStrideK);
+  h.pairBytes = v4i{32, row, layer, row + layer};
   h.matrix = f.matrix.empty() ? nullptr : f.matrix.data();
   h.points = f.points.empty() ? nullptr : f.points.data();
   h.pointCount = std::uint32_t(f.points.size() / 4);
@@ -135,6 +139,14 @@ template <int I>
 #endif
 }
 
+/// The byte offset of the node pair at cell c (whole numbers, at least 0, in lanes 0 to 2):
+/// c · (32, row bytes, layer bytes), one vector multiply and a horizontal sum.
+[[gnu::always_inline]] inline std::uint32_t pairOffset(const HotFunction& f, v4f c) {
+  const v4i bytes = __builtin_convertvector(c, v4i) * f.pairBytes;
+  const v4i sums = bytes + __builtin_shufflevector(bytes, bytes, 2, 2, 2, 2);
+  return std::uint32_t(sums[0] + bytes[1]);
+}
+
 /// p = f(p): the same float operations as CompiledFunction::evaluate (lane 3 is ignored). The
 /// node pairs are 32 bytes apart in x, so each corner pair is one 32-byte (two 16-byte) load.
 [[gnu::always_inline]] inline v4f apply(const HotFunction& f, v4f p) {
@@ -150,16 +162,16 @@ template <int I>
   v4f c = __builtin_convertvector(__builtin_convertvector(s, v4i), v4f);
   c = f.maxCell < c ? f.maxCell : c;
   const v4f t = s - c;
-  const v4i ci = __builtin_convertvector(c, v4i);
-  const std::size_t idx = std::uint32_t(ci[0]) + f.strideJ * std::uint32_t(ci[1]) + f.strideK * std::uint32_t(ci[2]);
-  const NodePair* base = f.pairs + idx;
+  const char* base = reinterpret_cast<const char*>(f.pairs) + pairOffset(f, c);
   v8f p00, p10, p01, p11;  // one 32-byte load per x-edge: both ends of the edge
   std::memcpy(&p00, base, 32);
-  std::memcpy(&p10, base + f.strideJ, 32);
-  std::memcpy(&p01, base + f.strideK, 32);
-  std::memcpy(&p11, base + f.strideJ + f.strideK, 32);
-  const v8f ty = __builtin_shufflevector(t, t, 1, 1, 1, 1, 1, 1, 1, 1);
-  const v8f tz = __builtin_shufflevector(t, t, 2, 2, 2, 2, 2, 2, 2, 2);
+  std::memcpy(&p10, base + f.pairBytes[1], 32);
+  std::memcpy(&p01, base + f.pairBytes[2], 32);
+  std::memcpy(&p11, base + f.pairBytes[3], 32);
+  // t in both halves, then each half's lane 1 or 2: permutes within the halves.
+  const v8f tt = __builtin_shufflevector(t, t, 0, 1, 2, 3, 0, 1, 2, 3);
+  const v8f ty = __builtin_shufflevector(tt, tt, 1, 1, 1, 1, 5, 5, 5, 5);
+  const v8f tz = __builtin_shufflevector(tt, tt, 2, 2, 2, 2, 6, 6, 6, 6);
   const v8f e0 = p00 + (p10 - p00) * ty;
   const v8f e1 = p01 + (p11 - p01) * ty;
   const v8f e = e0 + (e1 - e0) * tz;
@@ -185,15 +197,13 @@ template <int I>
   c = c > 0.0f ? c : v4f{};
 #endif
   const v4f t = s - c;
-  const v4i ci = __builtin_convertvector(c, v4i);
-  const std::size_t idx = std::uint32_t(ci[0]) + f.strideJ * std::uint32_t(ci[1]) + f.strideK * std::uint32_t(ci[2]);
-  const NodePair* base = f.pairs + idx;
+  const NodePair* base = reinterpret_cast<const NodePair*>(reinterpret_cast<const char*>(f.pairs) + pairOffset(f, c));
   // In 4-wide halves: applyVariations is not one of the kernel's AVX2 clones, and SSE2 builds
   // 8-wide broadcasts through the stack, a store-forwarding stall on every step. The same float
   // operations per lane as the 8-wide form.
-  const NodePair* n10 = base + f.strideJ;
-  const NodePair* n01 = base + f.strideK;
-  const NodePair* n11 = base + f.strideJ + f.strideK;
+  const NodePair* n10 = reinterpret_cast<const NodePair*>(reinterpret_cast<const char*>(base) + f.pairBytes[1]);
+  const NodePair* n01 = reinterpret_cast<const NodePair*>(reinterpret_cast<const char*>(base) + f.pairBytes[2]);
+  const NodePair* n11 = reinterpret_cast<const NodePair*>(reinterpret_cast<const char*>(base) + f.pairBytes[3]);
   const v4f ty = splat<1>(t), tz = splat<2>(t);
   const v4f a0 = load4(base->a) + (load4(n10->a) - load4(base->a)) * ty;
   const v4f b0 = load4(base->b) + (load4(n10->b) - load4(base->b)) * ty;
@@ -283,10 +293,16 @@ struct HotIfs {
   /// instantiation, so plain grid IFSs run the loop they always ran.
   bool condensation = false;
   bool variations = false;
+  /// Whether every function is a plain grid map whose nodes lie within half the escape bound:
+  /// the map of a clamped point blends nodes with weights in [0, 1], so no point of such an IFS
+  /// can escape and no chain ever restarts (runBoundedRounds).
+  bool boundedMaps = false;
   /// CompiledIfs::batchedVariations: the variation stage of a round's four chains at once.
   const BatchedVariations* batched = nullptr;
 
-  [[gnu::always_inline]] std::uint32_t choose(std::uint64_t r) const {
+  [[gnu::always_inline]] std::uint32_t choose(std::uint64_t r) const { return chooseIn(alias, count, r); }
+  /// choose() from an alias table held elsewhere (a loop's locals).
+  [[gnu::always_inline]] static std::uint32_t chooseIn(const AliasEntry* alias, std::uint32_t count, std::uint64_t r) {
     const std::uint32_t column = std::uint32_t((std::uint64_t(std::uint32_t(r >> 32)) * count) >> 32);
     const AliasEntry e = alias[column];
     return std::uint32_t(r) < e.threshold ? column : e.alias;
@@ -432,6 +448,49 @@ template <bool kRestricted, bool kRestarts, bool kCondensation = false, class Pl
   return advanceAndPlot<kRestricted>(st, lane, ifs, plot, bad, p, col, nextRow);
 }
 
+/// Rounds of an IFS of bounded grid maps (HotIfs::boundedMaps) without a final function, once
+/// every lane is past its skip, for a plotter that takes whole rounds (ZBufferPlot): no lane can
+/// escape, restart, skip or go through a final function, so a round is four picks, four grid maps
+/// and four colour mixes written straight into the plotter's chunk. The same draws and float
+/// operations in the same order as stepLane, without its checks, and with the chains' state, the
+/// alias table and the functions in registers rather than reloaded around every plotted sample.
+template <class Plot>
+[[gnu::always_inline]] inline void runBoundedRounds(ChainState& st, const HotIfs& ifs, std::int64_t rounds,
+                                                    Plot& plot) {
+  static_assert(kLanes == 4);
+  const HotFunction* const functions = ifs.functions;
+  const AliasEntry* const alias = ifs.alias;
+  const std::uint32_t count = ifs.count;
+  Rng rng = st.rng;
+  v4f p0 = st.p[0], p1 = st.p[1], p2 = st.p[2], p3 = st.p[3];
+  v4f c0 = st.color[0], c1 = st.color[1], c2 = st.color[2], c3 = st.color[3];
+  const auto step = [&](v4f & p, v4f & col, v4f * pointSlot, v4f * colorSlot) __attribute__((always_inline)) {
+    const HotFunction& f = functions[HotIfs::chooseIn(alias, count, rng.next())];
+    p = apply(f, p);
+    col = col + (f.color - col) * f.speed;  // Draves & Reckase 2003, §5: c = mix(c, c_i, speed)
+    *pointSlot = p;
+    *colorSlot = col;
+  };
+  while (rounds > 0) {
+    v4f* points;
+    v4f* colors;
+    const std::int64_t room = plot.freeRounds(points, colors);
+    const int m = int(rounds < room ? rounds : room);
+    for (int n = 0; n < m; ++n) {
+      step(p0, c0, points + 4 * n, colors + 4 * n);
+      step(p1, c1, points + 4 * n + 1, colors + 4 * n + 1);
+      step(p2, c2, points + 4 * n + 2, colors + 4 * n + 2);
+      step(p3, c3, points + 4 * n + 3, colors + 4 * n + 3);
+      if constexpr (requires { plot.commitStagedRound(); }) plot.commitStagedRound();
+    }
+    plot.takeRounds(m);
+    rounds -= m;
+  }
+  st.rng = rng;
+  st.p[0] = p0, st.p[1] = p1, st.p[2] = p2, st.p[3] = p3;
+  st.color[0] = c0, st.color[1] = c1, st.color[2] = c2, st.color[3] = c3;
+}
+
 /// The end of a run of a worker's chains (grid and free-form alike): the plotter's last chunk
 /// drained and counted, the chains' state stored, the counters updated.
 template <class Plot>
@@ -484,7 +543,20 @@ template <class Plot>
     }
     for (int l = 0; l < int(count % kLanes); ++l) plotted += stepLane<true, false>(local, l, ifs, plot, bad);
   } else {
-    for (std::int64_t n = 0; n < rounds; ++n) {
+    std::int64_t n = 0;
+    if constexpr (requires(v4f * slots) { plot.freeRounds(slots, slots); }) {
+      if (ifs.boundedMaps && !ifs.finalFunction) {
+        // The rounds in which some lane still skips as below, then every other round unchecked.
+        const auto skipping = [&local] {
+          return (local.skipLeft[0] > 0) | (local.skipLeft[1] > 0) | (local.skipLeft[2] > 0) | (local.skipLeft[3] > 0);
+        };
+        for (; n < rounds && skipping(); ++n)
+          for (int l = 0; l < kLanes; ++l) plotted += stepLane<false, false>(local, l, ifs, plot, bad);
+        runBoundedRounds(local, ifs, rounds - n, plot);
+        n = rounds;
+      }
+    }
+    for (; n < rounds; ++n) {
       plotted += stepLane<false, false>(local, 0, ifs, plot, bad);
       plotted += stepLane<false, false>(local, 1, ifs, plot, bad);
       plotted += stepLane<false, false>(local, 2, ifs, plot, bad);
@@ -589,13 +661,17 @@ struct ZBufferPlot {
   /// False: hit counts (and colour sums) only, the keys stay kEmptyKey (RenderJob::depthKeys).
   bool keys = true;
 
+  ZBufferPlot() = default;
+  ZBufferPlot(const HotCamera& camera, PixelCell* cellBuffer, std::uint64_t* sums, const v4f* paletteEntries = nullptr)
+      : cam(camera), cells(cellBuffer), colorSums(sums), palette(paletteEntries) {}
+
   // Every sample of a chunk has its lines prefetched before the first is written: 256 samples
   // of one line each for the z-buffer, and 64 for the flame display, whose colour sums are a second
   // line per sample (with 256, the first prefetched lines were gone again by their turn: 64 takes
   // 4–5 % fewer CPU seconds for a 400×300 flame, the same image).
   static constexpr int kChunk = kAccumulateColor ? 64 : 256;
   static constexpr int kGroup = 8;  // samples projected at once
-  static_assert(kChunk % kGroup == 0);
+  static_assert(kChunk % kGroup == 0 && kChunk % kLanes == 0);
   v4f points[kChunk] = {};
   v4f colors[kChunk] = {};
   int count = 0;
@@ -611,6 +687,7 @@ struct ZBufferPlot {
   }
 
   void flush() {
+    if constexpr (!kAccumulateColor) commitStagedRest();
     if (count > 0) drain();
   }
 
@@ -621,9 +698,122 @@ struct ZBufferPlot {
     return n;
   }
 
-  /// Plots the collected chunk. Out of line (once per chunk), compiled for the CPU like the
-  /// chaos game's kernel.
-  [[gnu::noinline]] GRIDIFS_KERNEL_CLONES void drain() {
+  /// For loops whose every sample is plotted (runBoundedRounds): how many whole rounds of kLanes
+  /// samples fit into the chunk, and where the first goes. A chunk without room for one round is
+  /// projected first (the z-buffer: staged, see commitStagedRound).
+  [[gnu::always_inline]] std::int64_t freeRounds(v4f*& pointSlots, v4f*& colorSlots) {
+    if (count > kChunk - kLanes) [[unlikely]] {
+      if constexpr (kAccumulateColor) {
+        drain();
+      } else {
+        commitStagedRest();
+        stage();
+      }
+    }
+    pointSlots = points + count;
+    colorSlots = colors + count;
+    return (kChunk - count) / kLanes;
+  }
+  [[gnu::always_inline]] void takeRounds(int rounds) { count += rounds * kLanes; }
+
+  /// The z-buffer's staged commits. Why: one chain step waits on the one before (the point's cell,
+  /// its loads, its lerps), so the chaos game leaves most of the CPU's issue slots idle, while
+  /// the writes of a projected chunk are independent of it and of each other. Interleaved, kLanes
+  /// writes of the last chunk with each round of the next, they fill those slots. Each pixel
+  /// still receives its writes in sample order: a staged chunk is committed entirely before the
+  /// next is staged. Entries past the landed samples write a scratch cell.
+  [[gnu::always_inline]] void commitStagedRound() requires(!kAccumulateColor) {
+    if (stagedNext <= kChunk - kLanes) [[likely]] {
+      for (int k = 0; k < kLanes; ++k) commitStaged(stagedNext + k);
+      stagedNext += kLanes;
+    }
+  }
+
+  /// Plots the collected chunk (after the staged one, when there is one).
+  void drain() {
+    if constexpr (kAccumulateColor) {
+      drainColourSums();
+    } else {
+      commitStagedRest();
+      stage();
+      commitStagedRest();
+    }
+  }
+
+ private:
+  // The staged chunk (z-buffer only): the landed samples' cells and keys in sample order, then
+  // the scratch cell up to kChunk; entries from stagedNext on are not yet written.
+  PixelCell* stagedCell[kAccumulateColor ? 1 : kChunk];
+  std::uint64_t stagedKey[kAccumulateColor ? 1 : kChunk];
+  int stagedNext = kChunk;
+  PixelCell scratch;
+
+  [[gnu::always_inline]] void commitStaged(int j) {
+    if (keys)
+      commit(*stagedCell[j], stagedKey[j]);
+    else
+      countHit(*stagedCell[j]);
+  }
+
+  void commitStagedRest() {
+    for (int j = stagedNext; j < kChunk; ++j) commitStaged(j);
+    stagedNext = kChunk;
+  }
+
+  /// Eight samples projected: pixel index (0 outside), depth and whether they land (Gröller &
+  /// Wegenkittl 1994, §3.1: the camera's pixel rows), the same float operations as one sample at
+  /// a time. NaN points fall outside.
+  struct Projected {
+    v8f rows[4][4];  // rows[r][c]: coefficient c (x, y, z, constant) of row r (x·w, y·w, w, depth)
+    v8f width, height, nearPlane;
+    std::uint32_t stride;
+  };
+  Projected projection() const {
+    Projected p;
+    const v4f* columns[4] = {&cam.cx, &cam.cy, &cam.cz, &cam.c1};
+    for (int r = 0; r < 4; ++r)
+      for (int c = 0; c < 4; ++c) p.rows[r][c] = v8f{} + (*columns[c])[r];
+    p.width = v8f{} + cam.size[0];
+    p.height = v8f{} + cam.size[1];
+    p.nearPlane = v8f{} + cam.nearPlane;
+    p.stride = cam.stride;
+    return p;
+  }
+  template <class V8u, class V8i>
+  [[gnu::always_inline]] static void projectEight(const Projected& pr, const v4f* eight, V8u& pixel, v8f& depth,
+                                                  V8i& inside) {
+    v8f x, y, z, unused;
+    transposeEight(eight, x, y, z, unused);
+    // r = cx·x + cy·y + cz·z + c1 per row, as one sample at a time (no FMA contraction).
+    const v8f px = pr.rows[0][0] * x + pr.rows[0][1] * y + pr.rows[0][2] * z + pr.rows[0][3];
+    const v8f py = pr.rows[1][0] * x + pr.rows[1][1] * y + pr.rows[1][2] * z + pr.rows[1][3];
+    const v8f pw = pr.rows[2][0] * x + pr.rows[2][1] * y + pr.rows[2][2] * z + pr.rows[2][3];
+    depth = pr.rows[3][0] * x + pr.rows[3][1] * y + pr.rows[3][2] * z + pr.rows[3][3];
+    const v8f reciprocal = 1.0f / pw;
+    const v8f ix = px * reciprocal, iy = py * reciprocal;
+    // NaN fails every comparison, so it falls outside.
+    inside = (depth > pr.nearPlane) & (ix >= v8f{}) & (ix < pr.width) & (iy >= v8f{}) & (iy < pr.height);
+    const V8u column = V8u(__builtin_convertvector(inside ? ix : v8f{}, V8i));
+    const V8u row = V8u(__builtin_convertvector(inside ? iy : v8f{}, V8i));
+    pixel = row * pr.stride + column;
+  }
+  /// The eight samples' keys: depth bits << 32 | packed colour (packColor, eight at a time).
+  template <class V8u>
+  [[gnu::always_inline]] static void keysOfEight(const v4f* colours, const v8f& depth, V8u& high, V8u& low) {
+    v8f red, green, blue, c;
+    transposeEight(colours, red, green, blue, c);
+    V8u r8, g8, b8, c8;
+    channelByte(red, r8);
+    channelByte(green, g8);
+    channelByte(blue, b8);
+    channelByte(c, c8);
+    low = r8 | g8 << 8 | b8 << 16 | c8 << 24;
+    high = V8u(depth);
+  }
+
+  /// Projects the collected chunk into the staged entries and prefetches their cells (z-buffer).
+  /// Out of line (once per chunk), compiled for the CPU like the chaos game's kernel.
+  [[gnu::noinline]] GRIDIFS_KERNEL_CLONES void stage() {
     typedef std::int32_t v8i __attribute__((vector_size(32)));
     typedef std::uint32_t v8u __attribute__((vector_size(32)));
     // A partial chunk is padded with NaN points, which fall outside the image.
@@ -632,54 +822,65 @@ struct ZBufferPlot {
       points[i] = v4f{} + __builtin_nanf("");
       colors[i] = v4f{};
     }
-    // The samples that land in the image, as indices into the chunk, in sample order: the loops
-    // below run over them without a branch per sample (which mispredicted wherever a fifth of
-    // the samples fall outside, as spherical flames' do).
+    const Projected pr = projection();
+    PixelCell* const cellBase = cells;
+    int landed = 0;
+    for (int i = 0; i < n; i += kGroup) {
+      v8u pixel;
+      v8f depth;
+      v8i inside;
+      projectEight(pr, points + i, pixel, depth, inside);
+      v8u high{}, low{};
+      if (keys) keysOfEight(colors + i, depth, high, low);
+      // The landed samples listed without a branch per sample (which mispredicted wherever a
+      // fifth of the samples fall outside, as spherical flames' do).
+      for (int k = 0; k < kGroup; ++k) {
+        PixelCell* const cell = cellBase + pixel[k];
+        __builtin_prefetch(cell, 1);
+        stagedCell[landed] = cell;
+        stagedKey[landed] = std::uint64_t(high[k]) << 32 | low[k];
+        landed += inside[k] != 0;  // the NaN padding is outside
+      }
+    }
+    for (int j = landed; j < kChunk; ++j) {
+      stagedCell[j] = &scratch;
+      stagedKey[j] = kEmptyKey;
+    }
+    plotted += landed;
+    stagedNext = 0;
+    count = 0;
+  }
+
+  /// Plots the collected chunk of the flame display: hit counts and colour sums (and keys). Out
+  /// of line (once per chunk), compiled for the CPU like the chaos game's kernel.
+  [[gnu::noinline]] GRIDIFS_KERNEL_CLONES void drainColourSums() {
+    typedef std::int32_t v8i __attribute__((vector_size(32)));
+    typedef std::uint32_t v8u __attribute__((vector_size(32)));
+    const int n = (count + kGroup - 1) / kGroup * kGroup;
+    for (int i = count; i < n; ++i) {
+      points[i] = v4f{} + __builtin_nanf("");
+      colors[i] = v4f{};
+    }
     alignas(32) std::uint32_t pixels[kChunk];  // 0 for a sample outside
-    alignas(32) std::uint32_t depths[kChunk];
-    alignas(32) std::uint32_t packed[kChunk];
+    alignas(32) std::uint64_t keysOf[kChunk];
     std::uint16_t landed[kChunk];
     int landedCount = 0;
-    v8f rows[4][4];  // rows[r][c]: coefficient c (x, y, z, constant) of row r (x·w, y·w, w, depth)
-    const v4f* columns[4] = {&cam.cx, &cam.cy, &cam.cz, &cam.c1};
-    for (int r = 0; r < 4; ++r)
-      for (int c = 0; c < 4; ++c) rows[r][c] = v8f{} + (*columns[c])[r];
-    const v8f width = v8f{} + cam.size[0], height = v8f{} + cam.size[1], nearPlane = v8f{} + cam.nearPlane;
-    const v8u stride = v8u{} + cam.stride;
+    const Projected pr = projection();
     for (int i = 0; i < n; i += kGroup) {
-      v8f x, y, z, unused;
-      transposeEight(points + i, x, y, z, unused);
-      // r = cx·x + cy·y + cz·z + c1 per row, as one sample at a time (no FMA contraction).
-      const v8f px = rows[0][0] * x + rows[0][1] * y + rows[0][2] * z + rows[0][3];
-      const v8f py = rows[1][0] * x + rows[1][1] * y + rows[1][2] * z + rows[1][3];
-      const v8f pw = rows[2][0] * x + rows[2][1] * y + rows[2][2] * z + rows[2][3];
-      const v8f depth = rows[3][0] * x + rows[3][1] * y + rows[3][2] * z + rows[3][3];
-      const v8f reciprocal = 1.0f / pw;
-      const v8f ix = px * reciprocal, iy = py * reciprocal;
-      // NaN fails every comparison, so it falls outside.
-      const v8i inside =
-          (depth > nearPlane) & (ix >= v8f{}) & (ix < width) & (iy >= v8f{}) & (iy < height);
-      const v8u column = v8u(__builtin_convertvector(inside ? ix : v8f{}, v8i));
-      const v8u row = v8u(__builtin_convertvector(inside ? iy : v8f{}, v8i));
-      const v8u pixel = row * stride + column;
+      v8u pixel;
+      v8f depth;
+      v8i inside;
+      projectEight(pr, points + i, pixel, depth, inside);
       std::memcpy(pixels + i, &pixel, sizeof pixel);
       if (keys) {
-        const v8u depthBits = v8u(depth);
-        std::memcpy(depths + i, &depthBits, sizeof depthBits);
-        v8f red, green, blue, c;
-        transposeEight(colors + i, red, green, blue, c);
-        v8u r8, g8, b8, c8;
-        channelByte(red, r8);
-        channelByte(green, g8);
-        channelByte(blue, b8);
-        channelByte(c, c8);
-        const v8u colour = r8 | g8 << 8 | b8 << 16 | c8 << 24;
-        std::memcpy(packed + i, &colour, sizeof colour);
+        v8u high, low;
+        keysOfEight(colors + i, depth, high, low);
+        for (int k = 0; k < kGroup; ++k) keysOf[i + k] = std::uint64_t(high[k]) << 32 | low[k];
       }
       for (int k = 0; k < kGroup; ++k) {
         // Outside samples prefetch pixel 0 (a line already at hand) and are not listed.
         __builtin_prefetch(cells + pixels[i + k], 1);
-        if constexpr (kAccumulateColor) __builtin_prefetch(colorSums + std::size_t(pixels[i + k]) * 4, 1);
+        __builtin_prefetch(colorSums + std::size_t(pixels[i + k]) * 4, 1);
         landed[landedCount] = std::uint16_t(i + k);
         landedCount += inside[k] != 0;  // the NaN padding is outside
       }
@@ -691,21 +892,20 @@ struct ZBufferPlot {
     if (keys) {
       for (int j = 0; j < landedCount; ++j) {
         const int i = landed[j];
-        commit(cellBase[pixels[i]], (std::uint64_t(depths[i]) << 32) | packed[i]);
-        if constexpr (kAccumulateColor) addColor(sumBase + std::size_t(pixels[i]) * 4, colors[i]);
+        commit(cellBase[pixels[i]], keysOf[i]);
+        addColor(sumBase + std::size_t(pixels[i]) * 4, colors[i]);
       }
     } else {
       for (int j = 0; j < landedCount; ++j) {
         const int i = landed[j];
         countHit(cellBase[pixels[i]]);
-        if constexpr (kAccumulateColor) addColor(sumBase + std::size_t(pixels[i]) * 4, colors[i]);
+        addColor(sumBase + std::size_t(pixels[i]) * 4, colors[i]);
       }
     }
     plotted += landedCount;
     count = 0;
   }
 
- private:
   [[gnu::always_inline]] static void commit(PixelCell& cell, std::uint64_t key) {
     std::atomic_ref<std::uint64_t> z(cell.key);
     // The nearer key stored every time, not behind a branch on the depth test: the line is

@@ -95,6 +95,8 @@ CompiledFunction compileFunction(const Function& function, const Grid& evaluated
         for (int d = 0; d < 3; ++d) {
           pair.a[d] = float(a[d]);
           pair.b[d] = float(b[d]);
+          // A double beyond float's range is infinite here, and fails every bound.
+          out.nodeMagnitude = std::max({out.nodeMagnitude, std::fabs(pair.a[d]), std::fabs(pair.b[d])});
         }
         pair.a[3] = pair.b[3] = 0.0f;
       }

@@ -88,6 +88,9 @@ struct CompiledFunction {
   float color[4] = {1.0f, 1.0f, 1.0f, 0.0f};
   float colorSpeed = 0.5f;
   double weight = 1.0;
+  /// The largest |coordinate| of the grid's nodes as stored (float): the grid map of a clamped
+  /// point blends nodes with weights in [0, 1], so its image stays within this.
+  float nodeMagnitude = 0.0f;
   /// Whether the grid's map is affine (every node within 1e-6·(1 + |node|) of the map through the
   /// origin corner and its three neighbouring corners, as every imported flame xform's is): then a
   /// function with variations evaluates its extrapolated grid map as that affine map, q = c1 +
