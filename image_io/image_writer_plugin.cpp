@@ -80,6 +80,11 @@ extern "C" __attribute__((visibility("default"))) int gridifs_image_io_write(con
     // for a z-buffer image, 296 → 234 ms for a flame, 63 → 48 ms for a shaded one, and files within
     // 1-2 % of the size (PNG filters: W3C PNG specification, §9).
     if (ext == "png") spec.attribute("png:filter", kPngFilterUp);
+    // PNG: zlib level 4 instead of 6, the last level before zlib's longer match searches. zlib on
+    // the up-filtered rows of 1024² renders: 22 → 13 ms for the canonical z-buffer scene, 40 →
+    // 21 ms for twisted_functions, 244 → 71 ms for the swirl_spherical flame, for files 2.9 %,
+    // 3.2 % and 6.0 % larger.
+    if (ext == "png") spec.attribute("png:compressionLevel", 4);
     auto out = OIIO::ImageOutput::create(r.path);
     if (!out) return failWith(OIIO::geterror(), error, errorSize);
     const OIIO::TypeDesc given = r.pixelsAreFloat ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
