@@ -115,6 +115,8 @@ std::shared_ptr<const Grid> evaluateForVerb(const Document& document, std::size_
   }
 }
 
+bool isVerb(const char* word) { return word && verbs().count(word) > 0; }
+
 int run(int argc, char** argv) {
   try {
     if (argc >= 2) {

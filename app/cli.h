@@ -38,6 +38,9 @@ struct VerbRegistration {
 
 int run(int argc, char** argv);
 
+/// Whether `word` names a verb (the first argument of a command, not of the modeller).
+bool isVerb(const char* word);
+
 /// Loads a project for a verb; bad content → CliError(2), unreadable → CliError(2) too
 /// (an unreadable input file is bad input), each naming the file.
 Project loadForVerb(const std::filesystem::path& file);
