@@ -721,7 +721,7 @@ struct ZBufferPlot {
   /// the writes of a projected chunk are independent of it and of each other. Interleaved, kLanes
   /// writes of the last chunk with each round of the next, they fill those slots. Each pixel
   /// still receives its writes in sample order: a staged chunk is committed entirely before the
-  /// next is staged. Entries past the landed samples write a scratch cell.
+  /// next is staged.
   [[gnu::always_inline]] void commitStagedRound() requires(!kAccumulateColor) {
     if (stagedNext <= kChunk - kLanes) [[likely]] {
       for (int k = 0; k < kLanes; ++k) commitStaged(stagedNext + k);
@@ -741,18 +741,20 @@ struct ZBufferPlot {
   }
 
  private:
-  // The staged chunk (z-buffer only): the landed samples' cells and keys in sample order, then
-  // the scratch cell up to kChunk; entries from stagedNext on are not yet written.
-  PixelCell* stagedCell[kAccumulateColor ? 1 : kChunk];
-  std::uint64_t stagedKey[kAccumulateColor ? 1 : kChunk];
+  // The staged chunk (z-buffer only): each sample's cell (the scratch cell for one outside the
+  // image and past a partial chunk's end) and key, in sample order; entries from stagedNext on
+  // are not yet written.
+  static_assert(sizeof(std::uintptr_t) == sizeof(std::uint64_t));
+  alignas(32) std::uintptr_t stagedCell[kAccumulateColor ? 1 : kChunk];
+  alignas(32) std::uint64_t stagedKey[kAccumulateColor ? 1 : kChunk];
   int stagedNext = kChunk;
   PixelCell scratch;
 
   [[gnu::always_inline]] void commitStaged(int j) {
     if (keys)
-      commit(*stagedCell[j], stagedKey[j]);
+      commit(*reinterpret_cast<PixelCell*>(stagedCell[j]), stagedKey[j]);
     else
-      countHit(*stagedCell[j]);
+      countHit(*reinterpret_cast<PixelCell*>(stagedCell[j]));
   }
 
   void commitStagedRest() {
@@ -823,30 +825,47 @@ struct ZBufferPlot {
       colors[i] = v4f{};
     }
     const Projected pr = projection();
-    PixelCell* const cellBase = cells;
-    int landed = 0;
+    typedef std::uint64_t v4u64 __attribute__((vector_size(32)));
+    typedef std::int64_t v4i64 __attribute__((vector_size(32)));
+    const v4u64 cellBase = v4u64{} + std::uint64_t(reinterpret_cast<std::uintptr_t>(cells));
+    const v4u64 scratchCell = v4u64{} + std::uint64_t(reinterpret_cast<std::uintptr_t>(&scratch));
+    v8i landed{};
     for (int i = 0; i < n; i += kGroup) {
       v8u pixel;
       v8f depth;
       v8i inside;
       projectEight(pr, points + i, pixel, depth, inside);
-      v8u high{}, low{};
-      if (keys) keysOfEight(colors + i, depth, high, low);
-      // The landed samples listed without a branch per sample (which mispredicted wherever a
-      // fifth of the samples fall outside, as spherical flames' do).
-      for (int k = 0; k < kGroup; ++k) {
-        PixelCell* const cell = cellBase + pixel[k];
-        __builtin_prefetch(cell, 1);
-        stagedCell[landed] = cell;
-        stagedKey[landed] = std::uint64_t(high[k]) << 32 | low[k];
-        landed += inside[k] != 0;  // the NaN padding is outside
+      // Every sample keeps its place, so there is no branch per sample (which mispredicted
+      // wherever a fifth of the samples fall outside, as spherical flames' do) and no list to
+      // build: one outside, the NaN padding too, writes the scratch cell.
+      for (int h = 0; h < 2; ++h) {
+        const v4u64 offset = __builtin_convertvector(
+            h ? __builtin_shufflevector(pixel, pixel, 4, 5, 6, 7) : __builtin_shufflevector(pixel, pixel, 0, 1, 2, 3),
+            v4u64);
+        const v4i64 lands = __builtin_convertvector(h ? __builtin_shufflevector(inside, inside, 4, 5, 6, 7)
+                                                      : __builtin_shufflevector(inside, inside, 0, 1, 2, 3),
+                                                    v4i64);
+        const v4u64 cell = lands != 0 ? cellBase + offset * sizeof(PixelCell) : scratchCell;
+        std::memcpy(stagedCell + i + 4 * h, &cell, sizeof cell);
       }
+      for (int k = 0; k < kGroup; ++k) __builtin_prefetch(reinterpret_cast<const void*>(stagedCell[i + k]), 1);
+      if (keys) {
+        v8u high, low;
+        keysOfEight(colors + i, depth, high, low);
+        const v8u first = __builtin_shufflevector(low, high, 0, 8, 1, 9, 2, 10, 3, 11);
+        const v8u second = __builtin_shufflevector(low, high, 4, 12, 5, 13, 6, 14, 7, 15);
+        std::memcpy(stagedKey + i, &first, sizeof first);
+        std::memcpy(stagedKey + i + 4, &second, sizeof second);
+      }
+      landed -= inside;  // -1 where a sample lands
     }
-    for (int j = landed; j < kChunk; ++j) {
-      stagedCell[j] = &scratch;
+    for (int j = n; j < kChunk; ++j) {
+      stagedCell[j] = reinterpret_cast<std::uintptr_t>(&scratch);
       stagedKey[j] = kEmptyKey;
     }
-    plotted += landed;
+    std::int64_t landedCount = 0;
+    for (int k = 0; k < kGroup; ++k) landedCount += landed[k];
+    plotted += landedCount;
     stagedNext = 0;
     count = 0;
   }
