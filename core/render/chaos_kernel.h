@@ -14,6 +14,7 @@
 #include <bit>
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
 
 #include "base/hash.h"
 #include "render/batched_variations.h"
@@ -464,16 +465,17 @@ template <class Plot>
   Rng rng = st.rng;
   v4f p0 = st.p[0], p1 = st.p[1], p2 = st.p[2], p3 = st.p[3];
   v4f c0 = st.color[0], c1 = st.color[1], c2 = st.color[2], c3 = st.color[3];
-  const auto step = [&](v4f & p, v4f & col, v4f * pointSlot, v4f * colorSlot) __attribute__((always_inline)) {
+  using ColourSlot = typename Plot::ColourSlot;
+  const auto step = [&](v4f & p, v4f & col, v4f * pointSlot, ColourSlot * colorSlot) __attribute__((always_inline)) {
     const HotFunction& f = functions[HotIfs::chooseIn(alias, count, rng.next())];
     p = apply(f, p);
     col = col + (f.color - col) * f.speed;  // Draves & Reckase 2003, §5: c = mix(c, c_i, speed)
     *pointSlot = p;
-    *colorSlot = col;
+    Plot::putColour(*colorSlot, col);
   };
   while (rounds > 0) {
     v4f* points;
-    v4f* colors;
+    ColourSlot* colors;
     const std::int64_t room = plot.freeRounds(points, colors);
     const int m = int(rounds < room ? rounds : room);
     for (int n = 0; n < m; ++n) {
@@ -544,7 +546,7 @@ template <class Plot>
     for (int l = 0; l < int(count % kLanes); ++l) plotted += stepLane<true, false>(local, l, ifs, plot, bad);
   } else {
     std::int64_t n = 0;
-    if constexpr (requires(v4f * slots) { plot.freeRounds(slots, slots); }) {
+    if constexpr (requires(v4f * points, typename Plot::ColourSlot * colours) { plot.freeRounds(points, colours); }) {
       if (ifs.boundedMaps && !ifs.finalFunction) {
         // The rounds in which some lane still skips as below, then every other round unchecked.
         const auto skipping = [&local] {
@@ -673,14 +675,24 @@ struct ZBufferPlot {
   static constexpr int kGroup = 8;  // samples projected at once
   static_assert(kChunk % kGroup == 0 && kChunk % kLanes == 0);
   v4f points[kChunk] = {};
-  v4f colors[kChunk] = {};
+  /// A sample's colour as the plotter keeps it: the running colour for the flame display's sums,
+  /// packed (packColor) for the z-buffer's key, done by the chaos game's loop, whose idle issue
+  /// slots take it for free, instead of eight at a time here.
+  using ColourSlot = std::conditional_t<kAccumulateColor, v4f, std::uint32_t>;
+  ColourSlot colors[kChunk] = {};
+  [[gnu::always_inline]] static void putColour(ColourSlot& slot, v4f col) {
+    if constexpr (kAccumulateColor)
+      slot = col;
+    else
+      slot = packColor(col);
+  }
   int count = 0;
   std::int64_t plotted = 0;  // samples of drained chunks that landed in the image
 
   /// Collects a sample; it is counted as plotted by takePlotted() once its chunk is drained.
   [[gnu::always_inline]] int operator()(v4f q, v4f col) {
     points[count] = q;
-    colors[count] = col;
+    putColour(colors[count], col);
     if (++count == kChunk) [[unlikely]]
       drain();
     return 0;
@@ -701,7 +713,7 @@ struct ZBufferPlot {
   /// For loops whose every sample is plotted (runBoundedRounds): how many whole rounds of kLanes
   /// samples fit into the chunk, and where the first goes. A chunk without room for one round is
   /// projected first (the z-buffer: staged, see commitStagedRound).
-  [[gnu::always_inline]] std::int64_t freeRounds(v4f*& pointSlots, v4f*& colorSlots) {
+  [[gnu::always_inline]] std::int64_t freeRounds(v4f*& pointSlots, ColourSlot*& colorSlots) {
     if (count > kChunk - kLanes) [[unlikely]] {
       if constexpr (kAccumulateColor) {
         drain();
@@ -822,7 +834,7 @@ struct ZBufferPlot {
     const int n = (count + kGroup - 1) / kGroup * kGroup;
     for (int i = count; i < n; ++i) {
       points[i] = v4f{} + __builtin_nanf("");
-      colors[i] = v4f{};
+      colors[i] = 0;
     }
     const Projected pr = projection();
     typedef std::uint64_t v4u64 __attribute__((vector_size(32)));
@@ -850,8 +862,9 @@ struct ZBufferPlot {
       }
       for (int k = 0; k < kGroup; ++k) __builtin_prefetch(reinterpret_cast<const void*>(stagedCell[i + k]), 1);
       if (keys) {
-        v8u high, low;
-        keysOfEight(colors + i, depth, high, low);
+        v8u low;
+        std::memcpy(&low, colors + i, sizeof low);
+        const v8u high = v8u(depth);
         const v8u first = __builtin_shufflevector(low, high, 0, 8, 1, 9, 2, 10, 3, 11);
         const v8u second = __builtin_shufflevector(low, high, 4, 12, 5, 13, 6, 14, 7, 15);
         std::memcpy(stagedKey + i, &first, sizeof first);
