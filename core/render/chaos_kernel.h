@@ -449,6 +449,14 @@ template <bool kRestricted, bool kRestarts, bool kCondensation = false, class Pl
   return advanceAndPlot<kRestricted>(st, lane, ifs, plot, bad, p, col, nextRow);
 }
 
+/// A plotter that takes whole rounds of samples written in place (ZBufferPlot::freeRounds).
+/// The type requirement comes first: the second is only checked for a plotter that has the type.
+template <class Plot>
+concept TakesWholeRounds = requires {
+  typename Plot::ColourSlot;
+}
+&&requires(Plot& plot, v4f* points, typename Plot::ColourSlot* colours) { plot.freeRounds(points, colours); };
+
 /// Rounds of an IFS of bounded grid maps (HotIfs::boundedMaps) without a final function, once
 /// every lane is past its skip, for a plotter that takes whole rounds (ZBufferPlot): no lane can
 /// escape, restart, skip or go through a final function, so a round is four picks, four grid maps
@@ -546,7 +554,7 @@ template <class Plot>
     for (int l = 0; l < int(count % kLanes); ++l) plotted += stepLane<true, false>(local, l, ifs, plot, bad);
   } else {
     std::int64_t n = 0;
-    if constexpr (requires(v4f * points, typename Plot::ColourSlot * colours) { plot.freeRounds(points, colours); }) {
+    if constexpr (TakesWholeRounds<Plot>) {
       if (ifs.boundedMaps && !ifs.finalFunction) {
         // The rounds in which some lane still skips as below, then every other round unchecked.
         const auto skipping = [&local] {

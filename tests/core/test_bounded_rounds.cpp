@@ -22,6 +22,10 @@ namespace {
 
 constexpr int kWidth = 160, kHeight = 120;
 
+// Both of the camera's plotters take whole rounds, so the loop under test is the one they get.
+static_assert(kernel::TakesWholeRounds<kernel::ZBufferPlot<false>>);
+static_assert(kernel::TakesWholeRounds<kernel::ZBufferPlot<true>>);
+
 struct Rendered {
   std::vector<kernel::PixelCell> cells = std::vector<kernel::PixelCell>(kWidth * kHeight);
   std::vector<std::uint64_t> sums = std::vector<std::uint64_t>(kWidth * kHeight * 4);
