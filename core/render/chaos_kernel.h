@@ -481,18 +481,34 @@ template <class Plot>
     *pointSlot = p;
     Plot::putColour(*colorSlot, col);
   };
+  const auto round = [&](v4f * points, ColourSlot * colors, int n) __attribute__((always_inline)) {
+    step(p0, c0, points + 4 * n, colors + 4 * n);
+    step(p1, c1, points + 4 * n + 1, colors + 4 * n + 1);
+    step(p2, c2, points + 4 * n + 2, colors + 4 * n + 2);
+    step(p3, c3, points + 4 * n + 3, colors + 4 * n + 3);
+  };
   while (rounds > 0) {
     v4f* points;
     ColourSlot* colors;
     const std::int64_t room = plot.freeRounds(points, colors);
     const int m = int(rounds < room ? rounds : room);
-    for (int n = 0; n < m; ++n) {
-      step(p0, c0, points + 4 * n, colors + 4 * n);
-      step(p1, c1, points + 4 * n + 1, colors + 4 * n + 1);
-      step(p2, c2, points + 4 * n + 2, colors + 4 * n + 2);
-      step(p3, c3, points + 4 * n + 3, colors + 4 * n + 3);
-      if constexpr (requires { plot.commitStagedRound(); }) plot.commitStagedRound();
+    int n = 0;
+    if constexpr (requires { plot.takeStagedRounds(m); }) {
+      // The staged chunk's writes, four between the steps of each round (ZBufferPlot::takeStagedRounds),
+      // in loops of their own, so the rounds after them carry no check.
+      const auto staged = plot.takeStagedRounds(m);
+      if (staged.key)
+        for (; n < staged.rounds; ++n) {
+          round(points, colors, n);
+          Plot::commitRound(staged, n);
+        }
+      else
+        for (; n < staged.rounds; ++n) {
+          round(points, colors, n);
+          Plot::countRound(staged, n);
+        }
     }
+    for (; n < m; ++n) round(points, colors, n);
     plot.takeRounds(m);
     rounds -= m;
   }
@@ -720,7 +736,7 @@ struct ZBufferPlot {
 
   /// For loops whose every sample is plotted (runBoundedRounds): how many whole rounds of kLanes
   /// samples fit into the chunk, and where the first goes. A chunk without room for one round is
-  /// projected first (the z-buffer: staged, see commitStagedRound).
+  /// projected first (the z-buffer: staged, see takeStagedRounds).
   [[gnu::always_inline]] std::int64_t freeRounds(v4f*& pointSlots, ColourSlot*& colorSlots) {
     if (count > kChunk - kLanes) [[unlikely]] {
       if constexpr (kAccumulateColor) {
@@ -736,17 +752,32 @@ struct ZBufferPlot {
   }
   [[gnu::always_inline]] void takeRounds(int rounds) { count += rounds * kLanes; }
 
-  /// The z-buffer's staged commits. Why: one chain step waits on the one before (the point's cell,
-  /// its loads, its lerps), so the chaos game leaves most of the CPU's issue slots idle, while
-  /// the writes of a projected chunk are independent of it and of each other. Interleaved, kLanes
-  /// writes of the last chunk with each round of the next, they fill those slots. Each pixel
-  /// still receives its writes in sample order: a staged chunk is committed entirely before the
-  /// next is staged.
-  [[gnu::always_inline]] void commitStagedRound() requires(!kAccumulateColor) {
-    if (stagedNext <= kChunk - kLanes) [[likely]] {
-      for (int k = 0; k < kLanes; ++k) commitStaged(stagedNext + k);
-      stagedNext += kLanes;
-    }
+  /// The z-buffer's staged writes, handed to the chaos game's loop. Why: one chain step waits on
+  /// the one before (the point's cell, its loads, its lerps), so the chaos game leaves many of the
+  /// CPU's issue slots idle, while the writes of a projected chunk are independent of it and of
+  /// each other. Interleaved, kLanes writes of the last chunk with each round of the next
+  /// (commitRound, or countRound without keys), they fill those slots. Each pixel still receives
+  /// its writes in sample order: a staged chunk is written entirely before the next is staged.
+  struct StagedRounds {
+    const std::uintptr_t* cell;  // the cells of the staged writes from the first handed round on
+    const std::uint64_t* key;    // their keys; null when the plotter keeps no keys
+    int rounds;                  // rounds of kLanes writes handed over
+  };
+  /// Hands up to `rounds` rounds of the staged writes over; the caller does every one of them
+  /// before it next asks for free rounds.
+  [[gnu::always_inline]] StagedRounds takeStagedRounds(int rounds) requires(!kAccumulateColor) {
+    const int left = (kChunk - stagedNext) / kLanes;
+    const StagedRounds staged{stagedCell + stagedNext, keys ? stagedKey + stagedNext : nullptr,
+                              rounds < left ? rounds : left};
+    stagedNext += staged.rounds * kLanes;
+    return staged;
+  }
+  [[gnu::always_inline]] static void commitRound(const StagedRounds& staged, int n) {
+    for (int k = 0; k < kLanes; ++k)
+      commit(*reinterpret_cast<PixelCell*>(staged.cell[kLanes * n + k]), staged.key[kLanes * n + k]);
+  }
+  [[gnu::always_inline]] static void countRound(const StagedRounds& staged, int n) {
+    for (int k = 0; k < kLanes; ++k) countHit(*reinterpret_cast<PixelCell*>(staged.cell[kLanes * n + k]));
   }
 
   /// Plots the collected chunk (after the staged one, when there is one).
