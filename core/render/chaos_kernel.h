@@ -1018,6 +1018,8 @@ struct ZBufferPlot {
     add = add > 0.0f ? add : v4f{};  // NaN → 0
     add = add < 1.0f ? add : v4f{} + 1.0f;
     const v4i fixed = __builtin_convertvector(add * 65536.0f + 0.5f, v4i);
+    // Unrolled: as a loop, the four values went through the stack, and each add waited on them.
+#pragma GCC unroll 4
     for (int k = 0; k < 4; ++k) {
       std::atomic_ref<std::uint64_t> s(sums[k]);
       s.store(s.load(std::memory_order_relaxed) + std::uint32_t(fixed[k]), std::memory_order_relaxed);
