@@ -93,7 +93,7 @@ struct Rng {
 /// A compiled function laid out for the loop (64 bytes + the pair pointer).
 struct alignas(64) HotFunction {
   v4f toLattice;
-  v4f maxCell;
+  v4i lastCell;  // CompiledFunction::maxCell as whole numbers: the last cell in each axis
   v4f color;  // r g b c
   v4f speed;  // color_speed in all lanes
   /// Byte offsets between node pairs (32 bytes each): the next cell in x, in y (a row of
@@ -112,7 +112,7 @@ inline HotFunction makeHot(const CompiledFunction& f) {
   HotFunction h{};
   for (int d = 0; d < 4; ++d) {
     h.toLattice[d] = f.toLattice[d];
-    h.maxCell[d] = f.maxCell[d];
+    h.lastCell[d] = int(f.maxCell[d]);
     h.color[d] = f.color[d];
     h.speed[d] = f.colorSpeed;
   }
@@ -149,10 +149,10 @@ template <int I>
 #endif
 }
 
-/// The byte offset of the node pair at cell c (whole numbers, at least 0, in lanes 0 to 2):
-/// c · (32, row bytes, layer bytes), one vector multiply and a horizontal sum.
-[[gnu::always_inline]] inline std::uint32_t pairOffset(const HotFunction& f, v4f c) {
-  const v4i bytes = __builtin_convertvector(c, v4i) * f.pairBytes;
+/// The byte offset of the node pair at cell c (at least 0 in lanes 0 to 2): c · (32, row bytes,
+/// layer bytes), one vector multiply and a horizontal sum.
+[[gnu::always_inline]] inline std::uint32_t pairOffset(const HotFunction& f, v4i c) {
+  const v4i bytes = c * f.pairBytes;
   const v4i sums = bytes + __builtin_shufflevector(bytes, bytes, 2, 2, 2, 2);
   return std::uint32_t(sums[0] + bytes[1]);
 }
@@ -168,11 +168,13 @@ template <int I>
   p = p > lo ? p : lo;  // NaN → -1
   p = p < hi ? p : hi;
 #endif
-  const v4f s = (p + hi) * f.toLattice;
-  v4f c = __builtin_convertvector(__builtin_convertvector(s, v4i), v4f);
-  c = f.maxCell < c ? f.maxCell : c;
-  const v4f t = s - c;
-  const char* base = reinterpret_cast<const char*>(f.pairs) + pairOffset(f, c);
+  const v4f s = (p + hi) * f.toLattice;  // at least 0
+  // The cell clamped as whole numbers: the same cell and t as min(float(int(s)), maxCell), one
+  // conversion fewer.
+  v4i cell = __builtin_convertvector(s, v4i);
+  cell = cell < f.lastCell ? cell : f.lastCell;
+  const v4f t = s - __builtin_convertvector(cell, v4f);
+  const char* base = reinterpret_cast<const char*>(f.pairs) + pairOffset(f, cell);
   v8f p00, p10, p01, p11;  // one 32-byte load per x-edge: both ends of the edge
   std::memcpy(&p00, base, 32);
   std::memcpy(&p10, base + f.pairBytes[1], 32);
@@ -199,15 +201,14 @@ template <int I>
   }
   const v4f one = {1.0f, 1.0f, 1.0f, 1.0f};
   const v4f s = (p + one) * f.toLattice;
-  v4f c = __builtin_convertvector(__builtin_convertvector(s, v4i), v4f);
-  c = f.maxCell < c ? f.maxCell : c;
-#if defined(__SSE2__)
-  c = v4f(_mm_max_ps(__m128(c), _mm_setzero_ps()));  // NaN → 0
-#else
-  c = c > 0.0f ? c : v4f{};
-#endif
-  const v4f t = s - c;
-  const NodePair* base = reinterpret_cast<const NodePair*>(reinterpret_cast<const char*>(f.pairs) + pairOffset(f, c));
+  // The cell clamped to [0, lastCell] as whole numbers. NaN and values beyond the int range
+  // convert to INT_MIN, so they land in cell 0, as min(float(int(s)), maxCell) then max(·, 0) did.
+  v4i cell = __builtin_convertvector(s, v4i);
+  cell = cell < f.lastCell ? cell : f.lastCell;
+  cell = cell > 0 ? cell : v4i{};
+  const v4f t = s - __builtin_convertvector(cell, v4f);
+  const NodePair* base =
+      reinterpret_cast<const NodePair*>(reinterpret_cast<const char*>(f.pairs) + pairOffset(f, cell));
   // In 4-wide halves: applyVariations is not one of the kernel's AVX2 clones, and SSE2 builds
   // 8-wide broadcasts through the stack, a store-forwarding stall on every step. The same float
   // operations per lane as the 8-wide form.
@@ -606,7 +607,9 @@ template <class Plot>
 [[gnu::always_inline]] inline std::uint32_t packColor(v4f c) {
 #if defined(__SSE2__)
   const __m128 scaled = _mm_add_ps(_mm_mul_ps(__m128(c), _mm_set1_ps(255.0f)), _mm_set1_ps(0.5f));
-  const __m128i i32 = _mm_cvttps_epi32(_mm_max_ps(scaled, _mm_setzero_ps()));
+  // No max with 0: NaN, negatives and values past the int range convert to INT_MIN or a negative
+  // number, which the saturating packs turn into 0, as they would 0 itself.
+  const __m128i i32 = _mm_cvttps_epi32(scaled);
   const __m128i i16 = _mm_packs_epi32(i32, i32);
   return std::uint32_t(_mm_cvtsi128_si32(_mm_packus_epi16(i16, i16)));
 #else

@@ -177,5 +177,22 @@ TEST(ZBufferPlot, PointsThatAreNotNumbersLandNowhere) {
   }
 }
 
+// A key's colour bytes: round(v · 255) clamped to [0, 255] per channel, red in the low byte, and 0
+// for a channel that is not a number (packColor leans on the saturating packs for the clamp).
+TEST(ZBufferPlot, PackedColoursRoundAndClampEachChannel) {
+  auto byteOf = [](float v) -> std::uint32_t {
+    if (!(v * 255.0f + 0.5f > 0.0f)) return 0;  // NaN and negatives
+    return std::uint32_t(std::min(v * 255.0f + 0.5f, 255.0f));
+  };
+  const float values[] = {0.0f,    -0.0f, 1.0f,  0.5f,      0.25f, 1.0f / 255.0f, 0.999f,  1.5f,  7.0f,
+                          -0.001f, -1.0f, -1e9f, -INFINITY, NAN,   0.0019f,       0.0021f, 1e-30f};
+  for (float r : values)
+    for (float b : values) {
+      const v4f c{r, 0.3f, b, 0.7f};
+      const std::uint32_t expected = byteOf(r) | byteOf(0.3f) << 8 | byteOf(b) << 16 | byteOf(0.7f) << 24;
+      EXPECT_EQ(kernel::packColor(c), expected) << "r " << r << " b " << b;
+    }
+}
+
 }  // namespace
 }  // namespace gridifs
