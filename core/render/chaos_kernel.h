@@ -1000,9 +1000,17 @@ struct ZBufferPlot {
   }
 
   [[gnu::always_inline]] static void countHit(PixelCell& cell) {
+#if defined(__x86_64__) && defined(__GNUC__)
+    // The saturating increment in place: the carry of n - 0xFFFFFFFF is set exactly when n is
+    // below the maximum. Two instructions where the load, compare, add and store were five; the
+    // count is still written by one aligned 4-byte store, which a concurrent reader sees whole,
+    // as with the relaxed atomic store.
+    asm("cmpl $-1, %0\n\tadcl $0, %0" : "+m"(cell.density) : : "cc");
+#else
     std::atomic_ref<std::uint32_t> d(cell.density);
     const std::uint32_t n = d.load(std::memory_order_relaxed);
     d.store(n + (n != 0xFFFFFFFFu), std::memory_order_relaxed);  // saturating
+#endif
   }
 
   /// Adds the sample's colour in fixed point, round(v · 2^16) per channel with v clamped to
@@ -1024,8 +1032,14 @@ struct ZBufferPlot {
     // Unrolled: as a loop, the four values went through the stack, and each add waited on them.
 #pragma GCC unroll 4
     for (int k = 0; k < 4; ++k) {
+#if defined(__x86_64__) && defined(__GNUC__)
+      // One add to memory per channel where the load, add and store were three: the sum is still
+      // written by one aligned 8-byte store, which a concurrent reader sees whole (countHit).
+      asm("addq %1, %0" : "+m"(sums[k]) : "r"(std::uint64_t(std::uint32_t(fixed[k]))) : "cc");
+#else
       std::atomic_ref<std::uint64_t> s(sums[k]);
       s.store(s.load(std::memory_order_relaxed) + std::uint32_t(fixed[k]), std::memory_order_relaxed);
+#endif
     }
   }
 
