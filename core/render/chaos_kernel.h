@@ -90,7 +90,7 @@ struct Rng {
   static float signedUnit(std::uint64_t bits) { return float(std::uint32_t(bits & 0xFFFFFF)) * (2.0f / 16777216.0f) - 1.0f; }
 };
 
-/// A compiled function laid out for the loop (64 bytes + the pair pointer).
+/// A compiled function laid out for the loop (two 64-byte lines).
 struct alignas(64) HotFunction {
   v4f toLattice;
   v4i lastCell;  // CompiledFunction::maxCell as whole numbers: the last cell in each axis
@@ -147,6 +147,11 @@ template <int I>
 #else
   return (m[0] ? 1 : 0) | (m[1] ? 2 : 0) | (m[2] ? 4 : 0) | (m[3] ? 8 : 0);
 #endif
+}
+
+/// The node pair `bytes` past `base` (HotFunction::pairBytes).
+[[gnu::always_inline]] inline const NodePair* pairAt(const NodePair* base, std::int32_t bytes) {
+  return reinterpret_cast<const NodePair*>(reinterpret_cast<const char*>(base) + bytes);
 }
 
 /// The byte offset of the node pair at cell c (at least 0 in lanes 0 to 2): c · (32, row bytes,
@@ -207,14 +212,13 @@ template <int I>
   cell = cell < f.lastCell ? cell : f.lastCell;
   cell = cell > 0 ? cell : v4i{};
   const v4f t = s - __builtin_convertvector(cell, v4f);
-  const NodePair* base =
-      reinterpret_cast<const NodePair*>(reinterpret_cast<const char*>(f.pairs) + pairOffset(f, cell));
+  const NodePair* base = pairAt(f.pairs, std::int32_t(pairOffset(f, cell)));
   // In 4-wide halves: applyVariations is not one of the kernel's AVX2 clones, and SSE2 builds
   // 8-wide broadcasts through the stack, a store-forwarding stall on every step. The same float
   // operations per lane as the 8-wide form.
-  const NodePair* n10 = reinterpret_cast<const NodePair*>(reinterpret_cast<const char*>(base) + f.pairBytes[1]);
-  const NodePair* n01 = reinterpret_cast<const NodePair*>(reinterpret_cast<const char*>(base) + f.pairBytes[2]);
-  const NodePair* n11 = reinterpret_cast<const NodePair*>(reinterpret_cast<const char*>(base) + f.pairBytes[3]);
+  const NodePair* n10 = pairAt(base, f.pairBytes[1]);
+  const NodePair* n01 = pairAt(base, f.pairBytes[2]);
+  const NodePair* n11 = pairAt(base, f.pairBytes[3]);
   const v4f ty = splat<1>(t), tz = splat<2>(t);
   const v4f a0 = load4(base->a) + (load4(n10->a) - load4(base->a)) * ty;
   const v4f b0 = load4(base->b) + (load4(n10->b) - load4(base->b)) * ty;
