@@ -1,22 +1,37 @@
 #!/usr/bin/env bash
-# Installs the Debian 12 packages GridIFS builds, tests and runs with (quietly, only
-# what is missing). Sourced by scripts/run and scripts/test.
+# Installs the Debian 12 packages GridIFS needs (quietly, only what is missing) and builds it.
+# Sourced by scripts/run, which installs and builds only what the modeller needs, and by
+# scripts/test, which adds the test-only packages and builds the rest into the same folder.
 set -euo pipefail
-GRIDIFS_PACKAGES=(
-  build-essential cmake pkg-config
-  libglfw3-dev libglm-dev libopenmesh-dev libopenimageio-dev openimageio-tools libimgui-dev
-  libmuparser-dev nlohmann-json3-dev libcli11-dev libgtest-dev libbenchmark-dev libepoxy-dev
-  xvfb xauth xdotool x11-utils imagemagick mesa-utils libgl1-mesa-dri fonts-dejavu-core
-  flam3-utils flam3-palette clang libclang-rt-14-dev libtbb-dev libpugixml-dev
-  libegl-dev libegl-mesa0 libopenvdb-dev libboost-iostreams-dev libnanoflann-dev ffmpeg zlib1g-dev
-  # scripts/figures (its thumbnails through oiiotool, above).
-  python3
+# To build and run the modeller and the command line.
+GRIDIFS_RUN_PACKAGES=(
+  build-essential cmake ninja-build pkg-config
+  libglfw3-dev libglm-dev libopenmesh-dev libopenimageio-dev libimgui-dev libmuparser-dev
+  nlohmann-json3-dev libcli11-dev libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
+  libtbb-dev libpugixml-dev libopenvdb-dev libboost-iostreams-dev libnanoflann-dev zlib1g-dev
+  fonts-dejavu-core
+  # flam3's palettes, which flame projects and imported .flame files name by number.
+  flam3-palette
+)
+# Only the tests, benchmarks and CI need these.
+GRIDIFS_TEST_PACKAGES=(
+  libgtest-dev libbenchmark-dev
+  # The gui tier: a real X server with Mesa's llvmpipe, real input, screenshots.
+  xvfb xauth xdotool x11-utils imagemagick mesa-utils
+  # flam3-render to compare against, oiiotool for scripts/figures, ffmpeg for --video (optional
+  # at run time: without it --video says so).
+  flam3-utils openimageio-tools ffmpeg python3
+  # scripts/fuzz: clang and libFuzzer; scripts/test checks the sources' format.
+  clang libclang-rt-14-dev clang-format
   # scripts/slurm-local: a one-node Slurm for the render-job tests; ss picks its free ports.
   slurm-wlm munge iproute2
 )
+# gridifs_install_deps run|test
 gridifs_install_deps() {
+  local wanted=("${GRIDIFS_RUN_PACKAGES[@]}")
+  [ "${1:-test}" = "test" ] && wanted+=("${GRIDIFS_TEST_PACKAGES[@]}")
   local missing=()
-  for p in "${GRIDIFS_PACKAGES[@]}"; do
+  for p in "${wanted[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
   done
   if [ ${#missing[@]} -gt 0 ]; then
@@ -27,10 +42,22 @@ gridifs_install_deps() {
     DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
   fi
 }
-# One configuration for scripts/run and scripts/test (warnings are errors in both), so that the
-# second of them reuses the first one's build instead of rebuilding everything with other flags.
+# gridifs_configure DIR [CMAKE ARGS...]: one configuration for scripts/run and scripts/test
+# (Release, Ninja, warnings are errors in both), so that the second of them reuses the first one's
+# objects instead of building everything again with other flags.
+gridifs_configure() {
+  local dir="$1"; shift
+  # A folder configured for another generator (older checkouts used Makefiles) cannot switch.
+  if [ -f "$dir/CMakeCache.txt" ] && ! grep -q '^CMAKE_GENERATOR:INTERNAL=Ninja$' "$dir/CMakeCache.txt"; then
+    echo "Reconfiguring $dir for Ninja (it was made with another generator)."
+    rm -rf "$dir/CMakeCache.txt" "$dir/CMakeFiles"
+  fi
+  cmake -G Ninja -S "$GRIDIFS_ROOT" -B "$dir" -DCMAKE_BUILD_TYPE=Release -DGRIDIFS_WERROR=ON "$@" >/dev/null
+}
+# gridifs_build DIR [TARGET...]: builds the named targets, or everything.
 gridifs_build() {
   local dir="$1"; shift
-  cmake -S "$GRIDIFS_ROOT" -B "$dir" -DCMAKE_BUILD_TYPE=Release -DGRIDIFS_WERROR=ON "$@" >/dev/null
-  cmake --build "$dir" -j"$(nproc)"
+  local targets=()
+  for t in "$@"; do targets+=(--target "$t"); done
+  cmake --build "$dir" -j"$(nproc)" "${targets[@]}"
 }

@@ -17,11 +17,15 @@ std::string withThousands(std::uint64_t n) {
   return out;
 }
 
+std::string lowercase(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return text;
+}
+
 std::string lowerExtension(const std::filesystem::path& path) {
   std::string ext = path.extension().string();
   if (!ext.empty() && ext[0] == '.') ext.erase(0, 1);
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
+  return lowercase(ext);
 }
 
 std::optional<std::string> framePatternProblem(const std::string& pattern) {

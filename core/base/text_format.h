@@ -12,6 +12,9 @@ namespace gridifs {
 /// 1234567 → "1,234,567": face, vertex and point counts in messages.
 std::string withThousands(std::uint64_t n);
 
+/// `text` in lower case (ASCII letters only): a label inside a sentence ("Field " + "octaves").
+std::string lowercase(std::string text);
+
 /// The extension of `path` in lower case without the dot ("Out.PNG" → "png"; "" when none).
 std::string lowerExtension(const std::filesystem::path& path);
 

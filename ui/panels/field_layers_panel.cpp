@@ -10,6 +10,7 @@
 #include <cctype>
 #include <cstdio>
 
+#include "base/text_format.h"
 #include "edit/field_layer_edits.h"
 #include "model/field_layer.h"
 #include "ui/base/widgets.h"
@@ -19,11 +20,6 @@
 
 namespace gridifs::ui {
 namespace {
-
-std::string lowercase(std::string text) {
-  for (char& ch : text) ch = char(std::tolower(static_cast<unsigned char>(ch)));
-  return text;
-}
 
 /// What one layer's widgets share: the layer's index and the local copy they edit.
 struct LayerEditor {
@@ -62,8 +58,9 @@ void drawRole(LayerEditor& e) {
   e.key("strength", &strength, 1);
   bool changed = sliderDouble("Strength", e.value.strength, 0.0, 10.0, "%.3f");
   e.item("Field strength", changed, "strength");
-  contextHelp(e.state, "How much the field counts: the density's weight 1 + strength·field, the cloud's density "
-                       "strength·field, the mountain's height strength·field");
+  contextHelp(e.state,
+              "How much the field counts: the density's weight 1 + strength·field, the cloud's density "
+              "strength·field, the mountain's height strength·field");
   if (e.value.role == FieldRole::Density) return;
   e.key("height", &e.value.height, 1);
   changed = sliderDouble("Height", e.value.height, -1.0, 1.0, "%.3f");
@@ -105,8 +102,9 @@ void drawShape(LayerEditor& e) {
     e.commit(blended ? "Blend field with shape" : "Field without shape");
   }
   e.state.probe.item("fieldlayer" + std::to_string(e.index) + ".shape");
-  contextHelp(e.state, "Colonna's interpolation between the field and a geometric shape: (1 − blend)·field + "
-                       "blend·shape, the shape 1 inside, −1 outside");
+  contextHelp(e.state,
+              "Colonna's interpolation between the field and a geometric shape: (1 − blend)·field + "
+              "blend·shape, the shape 1 inside, −1 outside");
   if (!e.value.shape) return;
   CondensationSet& set = *e.value.shape;
   static const char* shapes[] = {"sphere", "box", "torus"};
@@ -157,8 +155,9 @@ void drawFieldLayersPanel(ModellerState& state, EditQueue& edits) {
   const Project& project = state.document.project();
   const std::size_t count = fieldLayerCount(project);
   if (count == 0)
-    ImGui::TextWrapped("No field layer: the volume is the measure attractor's density as it is. Add a fractal field "
-                       "to shape it, lay clouds or raise a mountain.");
+    ImGui::TextWrapped(
+        "No field layer: the volume is the measure attractor's density as it is. Add a fractal field "
+        "to shape it, lay clouds or raise a mountain.");
   ImGui::PushItemWidth(-ImGui::CalcTextSize("Interpolation_").x);
   for (std::size_t i = 0; i < count; ++i) {
     ImGui::PushID(int(i));

@@ -8,21 +8,14 @@
 #include <algorithm>
 #include <cctype>
 
+#include "base/text_format.h"
 #include "edit/node_picking.h"
+#include "ui/base/widgets.h"
 #include "ui/panels/key_button.h"
 #include "ui/panels/operation_editor.h"
 #include "ui/panels/panels.h"
-#include "ui/base/widgets.h"
 
 namespace gridifs::ui {
-namespace {
-
-std::string lowercase(std::string text) {
-  for (char& ch : text) ch = char(std::tolower(static_cast<unsigned char>(ch)));
-  return text;
-}
-
-}  // namespace
 
 bool scalarWidget(const ParamSpec& s, OpParams& params) {
   const bool slider = s.sliderMin < s.sliderMax;
@@ -41,7 +34,8 @@ bool scalarWidget(const ParamSpec& s, OpParams& params) {
       if (c) v = std::clamp(v, int(s.min), int(s.max));
       return c;
     }
-    case ParamType::Seed: return ImGui::InputScalar(s.label, ImGuiDataType_U64, &s.value<std::uint64_t>(params));
+    case ParamType::Seed:
+      return ImGui::InputScalar(s.label, ImGuiDataType_U64, &s.value<std::uint64_t>(params));
     case ParamType::Vector: {
       double* v = static_cast<double*>(s.locate(&params));
       const bool c = ImGui::DragScalarN(s.label, ImGuiDataType_Double, v, s.components, float(s.speed),
@@ -56,7 +50,8 @@ bool scalarWidget(const ParamSpec& s, OpParams& params) {
       s.setChoice(params, index);
       return true;
     }
-    default: return false;
+    default:
+      return false;
   }
 }
 
@@ -71,10 +66,17 @@ void drawParams(OpEditor& e, const OperationSpec& spec) {
         if (!expressionsDrawn) drawExpressionParams(e, spec);
         expressionsDrawn = true;
         continue;
-      case ParamType::CalculatorVars: drawCalculatorVars(e, spec, s); continue;
-      case ParamType::MorphPairs: drawMorphPairs(e, spec, s); continue;
-      case ParamType::NodeMoves: drawNodeMoves(e, s); continue;
-      default: break;
+      case ParamType::CalculatorVars:
+        drawCalculatorVars(e, spec, s);
+        continue;
+      case ParamType::MorphPairs:
+        drawMorphPairs(e, spec, s);
+        continue;
+      case ParamType::NodeMoves:
+        drawNodeMoves(e, s);
+        continue;
+      default:
+        break;
     }
     const bool enabled = !s.enabled || s.enabled(&e.op.params);
     ImGui::BeginDisabled(!enabled);
@@ -112,7 +114,8 @@ void centerAndSelection(OpEditor& e) {
     }
     e.item("Operation center", c);
     const std::string absoluteHelp = std::string(operationSpec(e.op.params).title) + " works in absolute coordinates";
-    contextHelp(e.state, absolute ? absoluteHelp.c_str() : "Center of transformation (Gröller & Wegenkittl 1994, §4.3)");
+    contextHelp(e.state,
+                absolute ? absoluteHelp.c_str() : "Center of transformation (Gröller & Wegenkittl 1994, §4.3)");
     if (e.op.center.kind == Center::Kind::Point) {
       c = dragVec3("Point", e.op.center.point, 0.005);
       e.item("Center point", c);
@@ -124,9 +127,11 @@ void centerAndSelection(OpEditor& e) {
     const auto mask = e.op.selection.empty() ? std::vector<unsigned char>() : selectionMask(e.op.selection, res);
     std::size_t selected = 0;
     for (unsigned char m : mask) selected += m;
-    if (e.op.selection.empty()) ImGui::TextDisabled("Applies to all nodes");
-    else ImGui::TextDisabled("Applies to %zu node%s (%zu box%s)", selected, selected == 1 ? "" : "s", e.op.selection.size(),
-                             e.op.selection.size() == 1 ? "" : "es");
+    if (e.op.selection.empty())
+      ImGui::TextDisabled("Applies to all nodes");
+    else
+      ImGui::TextDisabled("Applies to %zu node%s (%zu box%s)", selected, selected == 1 ? "" : "s",
+                          e.op.selection.size(), e.op.selection.size() == 1 ? "" : "es");
     if (ImGui::Button("Use current selection")) {
       e.edits.commit(SetOperationSelection{e.function, e.index, e.state.selection()});
     }
