@@ -9,7 +9,8 @@
 
 namespace gridifs::cli {
 
-ProgressBar::ProgressBar(std::string label, bool quiet) : label_(std::move(label)), enabled_(!quiet && stderrIsTerminal()) {}
+ProgressBar::ProgressBar(std::string label, bool quiet)
+    : label_(std::move(label)), enabled_(!quiet && stderrIsTerminal()) {}
 
 bool ProgressBar::report(const RenderStats& s) {
   update(s.samples, s.budget, s.pointsPerSecond, s.done);

@@ -7,9 +7,9 @@
 #include <optional>
 #include <string>
 
+#include "io/point_cloud_export.h"
 #include "render/chaos_renderer.h"
 #include "render/sample_chunks.h"
-#include "io/point_cloud_export.h"
 #include "volume/measure_attractor.h"
 
 namespace gridifs::cli {

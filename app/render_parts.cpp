@@ -104,8 +104,8 @@ void addImagePart(RenderPartReader& reader, std::vector<Accumulation>& sums) {
       if (a.lightDepth[l].size() != std::size_t(v[13]) * std::size_t(v[13]))
         throw PartFileError("a part's light depth buffer does not match its size");
     }
-    if (a.density.size() != n || (!a.keys.empty() && a.keys.size() != n) || (!a.keys32.empty() && a.keys32.size() != n) ||
-        (!a.colorSums.empty() && a.colorSums.size() != 4 * n))
+    if (a.density.size() != n || (!a.keys.empty() && a.keys.size() != n) ||
+        (!a.keys32.empty() && a.keys32.size() != n) || (!a.colorSums.empty() && a.colorSums.size() != 4 * n))
       throw PartFileError("a part's buffers do not match its image size");
     if (!first) {
       if (const std::string why = sums[t].mismatch(part); !why.empty()) throw PartFileError(why);

@@ -8,9 +8,9 @@
 #include <cstdio>
 
 #include "app/cli.h"
+#include "job/prepared_render.h"
 #include "model/contractivity.h"
 #include "model/free_form.h"
-#include "job/prepared_render.h"
 #include "volume/measure_attractor.h"
 #include "volume/volume_points.h"
 
@@ -23,8 +23,8 @@ std::int64_t parseSamples(const std::string& text, std::int64_t maximum) {
     throw CliError(kBadInput, "--samples must be a whole number such as 20000000 or 2e7, not \"" + text + "\"");
   if (value < 1) throw CliError(kBadInput, "--samples must be at least 1, not " + text);
   if (value > double(maximum))
-    throw CliError(kBadInput, "--samples " + text + " is more than the limit of " + std::to_string(maximum) +
-                                  " samples");
+    throw CliError(kBadInput,
+                   "--samples " + text + " is more than the limit of " + std::to_string(maximum) + " samples");
   return std::int64_t(value);
 }
 
@@ -53,8 +53,8 @@ RenderSetup prepareRender(const std::filesystem::path& file, const RenderOverrid
   return prepareRenderOf(loadForVerb(file), file, overrides, maxSamples);
 }
 
-RenderSetup prepareRenderOf(const Project& loaded, const std::filesystem::path& file,
-                            const RenderOverrides& overrides, std::int64_t maxSamples, bool warn) {
+RenderSetup prepareRenderOf(const Project& loaded, const std::filesystem::path& file, const RenderOverrides& overrides,
+                            std::int64_t maxSamples, bool warn) {
   // The steps of gridifs::prepareRender (job/prepared_render.h), with the command line's own
   // checks and wording between them; the display mode's job is made by the mode's runner
   // (app/verb_render.cpp), which knows --palette and merged parts.
@@ -97,8 +97,8 @@ RenderSetup prepareRenderOf(const Project& loaded, const std::filesystem::path& 
     volumeJob.threads = options.threads;
     volumeJob.projectFolder = options.folder.empty() ? std::filesystem::path(".") : options.folder;
     try {
-      setup.ifs = compileVolumePoints(setup.project, overrides.volume ? *overrides.volume
-                                                                      : computeDensityVolume(setup.project, volumeJob));
+      setup.ifs = compileVolumePoints(
+          setup.project, overrides.volume ? *overrides.volume : computeDensityVolume(setup.project, volumeJob));
     } catch (const ModelError& e) {
       throw CliError(kBadInput, file.string() + ": " + e.what());
     }

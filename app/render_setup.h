@@ -37,14 +37,13 @@ std::int64_t parseSamples(const std::string& text, std::int64_t maximum);
 
 /// Loads `file`, applies `overrides`, validates the job and compiles the IFS; warns on stderr when
 /// a function may not be contractive. Bad input → CliError(2) naming the file.
-RenderSetup prepareRender(const std::filesystem::path& file, const RenderOverrides& overrides,
-                          std::int64_t maxSamples);
+RenderSetup prepareRender(const std::filesystem::path& file, const RenderOverrides& overrides, std::int64_t maxSamples);
 
 /// prepareRender for a project already loaded from `file` (a frame of a sequence): the project at
 /// overrides.time with its tracks evaluated, then the same checks and compilation. `warn` prints
 /// the contractivity warnings (once per sequence, not once per frame).
-RenderSetup prepareRenderOf(const Project& loaded, const std::filesystem::path& file,
-                            const RenderOverrides& overrides, std::int64_t maxSamples, bool warn = true);
+RenderSetup prepareRenderOf(const Project& loaded, const std::filesystem::path& file, const RenderOverrides& overrides,
+                            std::int64_t maxSamples, bool warn = true);
 
 /// One image of `loaded` as `gridifs render` makes it in the project's display mode, written to
 /// `out` (.png, .exr, .tif). Throws CliError as render does.

@@ -37,7 +37,8 @@ void writeSet(const VoxelSet& set, const Project& project, const SetIterateReque
         writeMeshFile(voxelSetMesh(set), path, MeshWriteOptions{!r.ascii, false});
         return;
       case SetOutput::Image: {
-        if (set.empty()) throw CliError(kFailure, "cannot write " + path + ": the set is empty, so there is nothing to draw");
+        if (set.empty())
+          throw CliError(kFailure, "cannot write " + path + ": the set is empty, so there is nothing to draw");
         RenderOverrides overrides;
         overrides.threads = r.threads;
         overrides.device = "cpu";

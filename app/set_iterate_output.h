@@ -15,11 +15,11 @@ inline constexpr int kMaxSetDepth = 64;
 struct SetIterateRequest {
   std::string file, out;  // out: .vdb, .png/.exr/.tif, or .obj/.ply/.stl/.off; a printf pattern with pages
   int depth = 0;
-  bool pages = false;     // every page of the book instead of A_D
+  bool pages = false;  // every page of the book instead of A_D
   std::optional<int> resolution, threads;
   std::optional<double> time;
   bool quiet = false;
-  bool ascii = false;     // PLY and STL meshes in ASCII
+  bool ascii = false;  // PLY and STL meshes in ASCII
 };
 
 /// Runs the request. Bad input (an unknown extension, a pattern without one number, an absurd

@@ -67,8 +67,8 @@ std::vector<const VolumeDensityField*> findLayers(const Project& project, const 
   if (!m[1].matched) return layers;
   const std::size_t index = std::stoul(m[1].str());
   if (index >= layers.size())
-    throw CliError(kBadInput, file + " has " + std::to_string(layers.size()) + " field layers, so " + path +
-                                  " does not exist");
+    throw CliError(kBadInput,
+                   file + " has " + std::to_string(layers.size()) + " field layers, so " + path + " does not exist");
   return {layers[index]};
 }
 
@@ -112,8 +112,10 @@ ChosenField chooseField(const Project& project, std::string path, const std::str
   }
   chosen.layers = findLayers(project, path, file);
   if (chosen.layers.empty())
-    throw CliError(kBadInput, "--op must name a field like functions[0].ops[1], final.ops[0], volume.field or "
-                              "volume.field[1], not \"" + path + "\"");
+    throw CliError(kBadInput,
+                   "--op must name a field like functions[0].ops[1], final.ops[0], volume.field or "
+                   "volume.field[1], not \"" +
+                       path + "\"");
   return chosen;
 }
 
@@ -204,7 +206,8 @@ int runExportField(const ExportFieldArgs& a) {
 const VerbRegistration kExportField{
     {"export-field",
      "FILE [--op PATH] [-o OUT.(ply|obj|stl|off)] [--image OUT.(png|exr)] [--size N --palette NAME --octaves K "
-     "--time T --ascii]: a field operation or the volume's field layers as a heightfield mesh and a colour-mapped image",
+     "--time T --ascii]: a field operation or the volume's field layers as a heightfield mesh and a colour-mapped "
+     "image",
      [](CLI::App& app) {
        auto a = std::make_shared<ExportFieldArgs>();
        app.add_option("FILE", a->file, "project file (.gridifs)")->required();

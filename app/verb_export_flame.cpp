@@ -27,7 +27,8 @@ int runExportFlame(const std::string& file, const std::string& out) {
 }
 
 const VerbRegistration kExportFlame{
-    {"export-flame", "FILE -o OUT.flame: the project as a flame genome (its variations, or affine fits of its grids)", [](CLI::App& app) {
+    {"export-flame", "FILE -o OUT.flame: the project as a flame genome (its variations, or affine fits of its grids)",
+     [](CLI::App& app) {
        auto file = std::make_shared<std::string>();
        auto out = std::make_shared<std::string>();
        app.add_option("FILE", *file, "project file (.gridifs)")->required();

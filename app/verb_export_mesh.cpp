@@ -55,8 +55,9 @@ int runExportMesh(const ExportMeshArgs& a) {
     // Median functions map voxel sets (Sokolov & Gentil, §3.2): the deterministic algorithm runs
     // over sets from volume.start, and the mesh is the iso-surface of A_D.
     if (a.base != "cube" || a.subdivide || a.smooth || a.fit)
-      throw CliError(kBadInput, a.file + ": with median functions A_D starts from the project's volume.start set, so "
-                                         "--base, --subdivide, --smooth and --fit do not apply");
+      throw CliError(kBadInput, a.file +
+                                    ": with median functions A_D starts from the project's volume.start set, so "
+                                    "--base, --subdivide, --smooth and --fit do not apply");
     SetIterateRequest r;
     r.file = a.file;
     r.out = a.output;

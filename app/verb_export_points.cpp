@@ -21,8 +21,8 @@ int runExportPoints(const std::string& file, const std::string& out, RenderOverr
   const std::string device = checkedDevice(overrides.device);
   if (!overrides.samples) overrides.samples = std::to_string(kDefaultExportSamples);
   const RenderSetup setup = prepareRender(file, overrides, kMaxExportSamples);
-  const std::string description = "GridIFS export-points of " + std::filesystem::path(file).filename().string() +
-                                  ": " + std::to_string(setup.job.samples) + " samples, seed " +
+  const std::string description = "GridIFS export-points of " + std::filesystem::path(file).filename().string() + ": " +
+                                  std::to_string(setup.job.samples) + " samples, seed " +
                                   std::to_string(setup.job.seed) + ", " + std::to_string(setup.job.threads) +
                                   " streams";
   std::string used;
@@ -30,9 +30,7 @@ int runExportPoints(const std::string& file, const std::string& out, RenderOverr
   ProgressBar bar("export-points", quiet);
   try {
     writePointCloud(
-        *setup.ifs, setup.job, out, description,
-        [&](const RenderStats& s) { return bar.report(s); },
-        generator);
+        *setup.ifs, setup.job, out, description, [&](const RenderStats& s) { return bar.report(s); }, generator);
   } catch (const ModelError& e) {
     throw CliError(kBadInput, file + ": " + e.message());
   } catch (const IoError& e) {

@@ -84,7 +84,9 @@ FarmRequest requestOf(const FarmArgs& a) {
     checkVideoOutput(*a.video);
     r.video = *a.video;
   }
-  auto add = [&](const char* option, const std::string& value) { r.renderOptions.insert(r.renderOptions.end(), {option, value}); };
+  auto add = [&](const char* option, const std::string& value) {
+    r.renderOptions.insert(r.renderOptions.end(), {option, value});
+  };
   if (a.width) add("--width", std::to_string(*a.width));
   if (a.height) add("--height", std::to_string(*a.height));
   if (a.samples) add("--samples", std::to_string(parseSamples(*a.samples, limits::kMaxRenderSamples)));
@@ -178,7 +180,8 @@ const VerbRegistration kFarm{
        app.add_option("--mode", a->mode, "zbuffer, flame or shaded (default: the project's)");
        app.add_option("--palette", a->palette, "flame palette (as render)");
        app.add_option("--motion-blur", a->motionBlur, "time samples per frame (as render)");
-       app.add_option("--device", a->device, "auto, gpu or cpu for the render tasks (with gpu, add --sbatch=--gres=gpu:1)");
+       app.add_option("--device", a->device,
+                      "auto, gpu or cpu for the render tasks (with gpu, add --sbatch=--gres=gpu:1)");
        app.add_option("--bit-depth", a->bitDepth, "flame mode: bits of the merged images (as render)");
        app.add_flag("--transparent", a->transparent, "flame mode: merged PNG/TIFF with alpha (as render)");
        return [a] { return runFarm(*a); };

@@ -4,8 +4,8 @@
 #include <fstream>
 
 #include "app/cli.h"
-#include "base/atomic_file.h"
 #include "app/render_setup.h"
+#include "base/atomic_file.h"
 #include "io/flame_import.h"
 #include "io/project_io.h"
 
@@ -67,7 +67,8 @@ int runImportFlame(const std::string& file, const std::string& out, const std::s
 }
 
 const VerbRegistration kImportFlame{
-    {"import-flame", "IN.flame -o OUT.gridifs [--genome N|NAME] [--grids] [--resolution R] [--list]: a flame genome as a project",
+    {"import-flame",
+     "IN.flame -o OUT.gridifs [--genome N|NAME] [--grids] [--resolution R] [--list]: a flame genome as a project",
      [](CLI::App& app) {
        auto file = std::make_shared<std::string>();
        auto out = std::make_shared<std::string>();

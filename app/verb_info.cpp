@@ -155,7 +155,8 @@ int runInfo(const std::string& file, bool asJson, const std::optional<std::strin
     if (p.space)
       std::printf("  free-form space: %zu control points (contractivity of a matrix: its contraction of the simplex)\n",
                   p.space->control_points.size());
-    if (!p.transitions.empty()) std::printf("  transition matrix: %zu x %zu\n", p.transitions.size(), p.transitions.size());
+    if (!p.transitions.empty())
+      std::printf("  transition matrix: %zu x %zu\n", p.transitions.size(), p.transitions.size());
     if (p.states) {
       std::printf("  states: %zu, initial %s, final %s\n", p.states->matrix.size(),
                   stateList(widen(p.states->initial)).c_str(), stateList(widen(p.states->final)).c_str());

@@ -99,8 +99,8 @@ RenderPartHeader checkHeaders(const std::vector<std::string>& files) {
       distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
       const std::string what = " part " + std::to_string(k) + " of " + std::to_string(first.parts);
       if (distinct.size() == 1)
-        throw CliError(kBadInput, names.front() + " is given " + std::to_string(names.size()) + " times (it is" +
-                                      what + "); nothing was merged");
+        throw CliError(kBadInput, names.front() + " is given " + std::to_string(names.size()) + " times (it is" + what +
+                                      "); nothing was merged");
       throw CliError(kBadInput, listOf(names) + " are the same" + what + "; nothing was merged");
     }
   std::vector<std::int64_t> missing;

@@ -332,8 +332,8 @@ int runFlameRender(const std::string& file, const std::string& out, const std::v
 /// light (with depth of field when the aperture is above 0), then the image is developed with the
 /// lights, occlusion and fog (core/render/shaded_image.h). Shadow maps and depth of field are
 /// CPU chaos-game effects, so this mode always renders on the CPU.
-int runShadedRender(const std::string& file, const std::string& out, const std::vector<RenderSetup>& setups,
-                    bool quiet, const std::string& device, FrameProgress progress, const FrameSource& source) {
+int runShadedRender(const std::string& file, const std::string& out, const std::vector<RenderSetup>& setups, bool quiet,
+                    const std::string& device, FrameProgress progress, const FrameSource& source) {
   if (setups.size() > 1)
     throw CliError(kBadInput, "--motion-blur applies to the zbuffer and flame modes, not to shaded renders");
   const RenderSetup& setup = setups.front();
@@ -404,7 +404,8 @@ int renderFrame(const Project& loaded, const std::string& file, const std::strin
   if (source.part) {
     // The part's project says how to finish it: the mode and palette as rendered.
     setups.front().project.render.mode = mode;
-    nlohmann::json options = {{"mode", std::string(displayModeName(mode))}, {"motion_blur", blur}, {"shutter", shutter}};
+    nlohmann::json options = {
+        {"mode", std::string(displayModeName(mode))}, {"motion_blur", blur}, {"shutter", shutter}};
     if (flame.motionFade != 0.0) options["motion_fade"] = flame.motionFade;
     source.part->options = options.dump();
   }
@@ -440,7 +441,8 @@ int renderSequence(const std::string& file, const std::string& pattern, const Re
   if (overrides.time) throw CliError(kBadInput, "--time and --frames exclude each other: a frame's time is f/fps");
   if (sequence.video) checkVideoOutput(*sequence.video);
   if (sequence.video && part)
-    throw CliError(kBadInput, "--video needs whole frames: merge the parts first (gridifs merge), or let gridifs farm do it");
+    throw CliError(kBadInput,
+                   "--video needs whole frames: merge the parts first (gridifs merge), or let gridifs farm do it");
   const Project loaded = loadForVerb(file);
   const AnimationSettings animation = loaded.animation.value_or(AnimationSettings{});
   auto frameTime = [&](std::int64_t f) { return double(f) / animation.fps; };
@@ -448,7 +450,8 @@ int renderSequence(const std::string& file, const std::string& pattern, const Re
     for (std::int64_t f = frames.first; f <= frames.last; ++f) projectForVerbAt(loaded, file, frameTime(f));
   RenderOverrides first = overrides;
   first.time = frameTime(frames.first);
-  const std::int64_t samplesPerFrame = prepareRenderOf(loaded, file, first, limits::kMaxRenderSamples, false).job.samples;
+  const std::int64_t samplesPerFrame =
+      prepareRenderOf(loaded, file, first, limits::kMaxRenderSamples, false).job.samples;
   ProgressBar bar("render " + std::to_string(frames.count()) + " frames", quiet);
   for (std::int64_t f = frames.first; f <= frames.last; ++f) {
     RenderOverrides at = overrides;
@@ -474,7 +477,8 @@ int runRender(const std::string& file, const std::string& out, const RenderOverr
               std::optional<int> volumeResolution) {
   if (flame.mode && *flame.mode == "volume") {
     if (partText || sequence.frames || sequence.motionBlur || sequence.video)
-      throw CliError(kBadInput, "--mode volume renders one image: leave out --part, --frames, --motion-blur and --video");
+      throw CliError(kBadInput,
+                     "--mode volume renders one image: leave out --part, --frames, --motion-blur and --video");
     if (flame.anyFlameSetting() || flame.bitDepth || flame.transparent || flame.motionFadeOption)
       throw CliError(kBadInput, "the flame options apply to --mode flame, not to --mode volume");
     return runVolumeRender(file, out, overrides, volumeResolution, quiet);
@@ -548,7 +552,8 @@ const VerbRegistration kRender{
     {"render",
      "FILE -o OUT.(png|exr|tif) [--width W --height H --samples N --seed S --threads T "
      "--device auto|gpu|cpu --time T --quality Q] [--frames A:B --motion-blur N --motion-fade F --video OUT.mp4] "
-     "[--mode zbuffer|flame|shaded|volume --resolution N --palette P --hue H --density-display log|linear|binary --supersample S "
+     "[--mode zbuffer|flame|shaded|volume --resolution N --palette P --hue H --density-display log|linear|binary "
+     "--supersample S "
      "--filter-radius R --estimator-radius R --estimator-minimum M --estimator-curve C --bit-depth B "
      "--transparent]: render headlessly",
      [](CLI::App& app) {
@@ -564,9 +569,10 @@ const VerbRegistration kRender{
                       "volume ray-marched from render.volume, lit or X-ray; PNG/EXR with alpha, EXR adds Z); "
                       "default: the project's render.mode");
        auto volumeResolution = std::make_shared<std::optional<int>>();
-       app.add_option("--resolution", *volumeResolution,
-                      "volume mode: voxels per axis of the density volume, 16 to 512 (default: render.volume.resolution, "
-                      "or 128)");
+       app.add_option(
+           "--resolution", *volumeResolution,
+           "volume mode: voxels per axis of the density volume, 16 to 512 (default: render.volume.resolution, "
+           "or 128)");
        app.add_option("--palette", flame->palette,
                       "flame palette: a built-in name (ember, ice, ...), flam3:N, "
                       "flam3:NAME or file:PATH.json (default: the project's)");
@@ -599,13 +605,15 @@ const VerbRegistration kRender{
                       "flame mode: density estimation's narrowest kernel in pixels");
        app.add_option("--estimator-curve", flame->estimatorCurve,
                       "flame mode: how fast the kernel narrows as density grows (0.05..10)");
-       app.add_option("--video", sequence->video, "with --frames: also assemble the frames into this video with ffmpeg");
+       app.add_option("--video", sequence->video,
+                      "with --frames: also assemble the frames into this video with ffmpeg");
        auto part = std::make_shared<std::optional<std::string>>();
        app.add_option("--part", *part,
                       "render part K of N (K/N, 0 ≤ K < N) of the sample budget and write its accumulation to "
                       "-o OUT.gpart (with --frames: a pattern, one part file per frame); gridifs merge "
                       "makes the image");
-       return [=] { return runRender(a->file, a->out, a->overrides, a->quiet, *flame, *sequence, *part, *volumeResolution);
+       return [=] {
+         return runRender(a->file, a->out, a->overrides, a->quiet, *flame, *sequence, *part, *volumeResolution);
        };
      }}};
 

@@ -6,8 +6,8 @@
 #include "app/cli.h"
 #include "app/progress_bar.h"
 #include "app/render_device_option.h"
-#include "app/render_setup.h"
 #include "app/render_parts.h"
+#include "app/render_setup.h"
 #include "app/set_iterate_output.h"
 #include "io/project_io.h"
 #include "model/validation.h"
@@ -32,8 +32,9 @@ struct VolumeArgs {
 /// `--part K/N`: this part's chunks of the chaos-game points, binned and written undeveloped.
 int runVolumePart(const VolumeArgs& a, const Project& project, VolumeJob& job, const RenderPart& part) {
   if (usesSetIteration(project))
-    throw CliError(kBadInput, a.file + ": a volume of median functions is a set iteration, which runs whole; "
-                                       "--part splits the chaos-game volumes of other projects");
+    throw CliError(kBadInput, a.file +
+                                  ": a volume of median functions is a set iteration, which runs whole; "
+                                  "--part splits the chaos-game volumes of other projects");
   if (a.device && *a.device == "gpu")
     throw CliError(kBadInput, "--part renders volume parts on the CPU; leave out --device gpu");
   job.part = part;
@@ -73,8 +74,9 @@ int runVolume(const VolumeArgs& a) {
     // Sokolov & Gentil, §3.3: the deterministic algorithm over sets instead of the measure attractor.
     if (!a.depth) throw CliError(kBadInput, "--pages needs --depth D: the book of drawings has N^D pages");
     if (a.part || a.iterations || a.samples || a.seed || a.device)
-      throw CliError(kBadInput, "--depth computes the set iterate itself; --part, --iterations, --samples, --seed and "
-                                "--device are for the measure attractor");
+      throw CliError(kBadInput,
+                     "--depth computes the set iterate itself; --part, --iterations, --samples, --seed and "
+                     "--device are for the measure attractor");
     SetIterateRequest r;
     r.file = a.file;
     r.out = a.out;

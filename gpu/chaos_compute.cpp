@@ -18,7 +18,19 @@
 namespace gridifs::gpu {
 namespace {
 
-enum Binding { kFunctions, kNodes, kAlias, kChains, kTallies, kKeys, kDensity, kColorSums, kPalette, kStages, kTransitionWalk };
+enum Binding {
+  kFunctions,
+  kNodes,
+  kAlias,
+  kChains,
+  kTallies,
+  kKeys,
+  kDensity,
+  kColorSums,
+  kPalette,
+  kStages,
+  kTransitionWalk
+};
 constexpr int kBuffers = kTransitionWalk + 1;
 
 constexpr std::uint32_t kGroupSize = 64;  // local_size_x in the shader
@@ -176,7 +188,8 @@ void ChaosCompute::uploadIfs(const CompiledIfs& ifs) {
   // The transition walk as the CPU kernel reads it (one uvec4 per entry); a placeholder entry when
   // the chain game is unrestricted, so the binding always has storage.
   std::vector<std::uint32_t> walk;
-  for (const TransitionStep& e : ifs.transitionWalk) walk.insert(walk.end(), {e.threshold, e.alias, e.keepRow, e.aliasRow});
+  for (const TransitionStep& e : ifs.transitionWalk)
+    walk.insert(walk.end(), {e.threshold, e.alias, e.keepRow, e.aliasRow});
   if (walk.empty()) walk.assign(4, 0u);
   upload(kTransitionWalk, walk.data(), walk.size() * 4, "the IFS's transitions");
   if (ifs.hasVariations || output_ == ChaosOutput::Maps) {
@@ -295,8 +308,8 @@ void ChaosCompute::setup(const CompiledIfs& ifs, const RenderJob& job, ChainRang
   glUniform1ui(loc("uCount"), count_);
   glUniform1i(loc("uHasFinal"), ifs.finalFunction ? 1 : 0);
   glUniform1ui(loc("uSkip"), std::uint32_t(job.skip));
-  glUniform1f(loc("uEscape"), ifs.hasVariations ? std::max(limits::kEscapeBound, kVariationEscapeBound)
-                                                 : limits::kEscapeBound);
+  glUniform1f(loc("uEscape"),
+              ifs.hasVariations ? std::max(limits::kEscapeBound, kVariationEscapeBound) : limits::kEscapeBound);
   glUniform2ui(loc("uSeed"), std::uint32_t(job.seed), std::uint32_t(job.seed >> 32));
   glUniform2ui(loc("uBudget"), std::uint32_t(budgetBase_), std::uint32_t(budgetExtra_));
   glUniform1i(loc("uUnlimited"), job.samples <= 0 ? 1 : 0);

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "render/chaos_renderer.h"
 #include "gpu/headless_gl_context.h"
+#include "render/chaos_renderer.h"
 
 namespace gridifs::gpu {
 

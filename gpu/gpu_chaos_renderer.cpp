@@ -120,9 +120,8 @@ void rendererThread(std::shared_ptr<GpuChaosRenderer::Shared> shared) {
       try {
         auto& program = programs[job.accumulateColor];
         if (!program)
-          program =
-              std::make_unique<ChaosCompute>(shared->info, ChaosOutput::Image, job.accumulateColor,
-                                             shared->options.allowAtomic64);
+          program = std::make_unique<ChaosCompute>(shared->info, ChaosOutput::Image, job.accumulateColor,
+                                                   shared->options.allowAtomic64);
         program->setup(*ifs, job, chainsOf(job, shared->info.software));
         compute = program.get();
         // A part with no chains (more parts than the job has chains) is done at once: its

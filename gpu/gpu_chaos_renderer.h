@@ -27,8 +27,8 @@
 #include <memory>
 #include <thread>
 
-#include "render/chaos_renderer.h"
 #include "gpu/headless_gl_context.h"
+#include "render/chaos_renderer.h"
 
 namespace gridifs::gpu {
 

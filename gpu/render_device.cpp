@@ -178,8 +178,8 @@ GpuVoxelCounts binVoxelsGpu(const CompiledIfs& ifs, const RenderJob& job, int re
     // 16 fraction bits in 64-bit sums (two words): exact, whatever order the atomics ran in.
     out.colorSums.resize(out.counts.size() * 3);
     for (std::size_t i = 0; i < out.colorSums.size(); ++i)
-      out.colorSums[i] = float((double(back.colorSums[2 * i + 1]) * 4294967296.0 + double(back.colorSums[2 * i])) /
-                               65536.0);
+      out.colorSums[i] =
+          float((double(back.colorSums[2 * i + 1]) * 4294967296.0 + double(back.colorSums[2 * i])) / 65536.0);
   }
   out.samples = back.samples;
   out.plotted = back.plotted;

@@ -10,7 +10,12 @@
 extern "C" {
 #endif
 
-enum GridifsStoredSample { GRIDIFS_STORED_UINT8 = 0, GRIDIFS_STORED_UINT16 = 1, GRIDIFS_STORED_HALF = 2, GRIDIFS_STORED_FLOAT = 3 };
+enum GridifsStoredSample {
+  GRIDIFS_STORED_UINT8 = 0,
+  GRIDIFS_STORED_UINT16 = 1,
+  GRIDIFS_STORED_HALF = 2,
+  GRIDIFS_STORED_FLOAT = 3
+};
 
 struct GridifsImageRequest {
   const char* path;  // the file to create; its extension picks the format

@@ -115,9 +115,11 @@ extern "C" __attribute__((visibility("default"))) int gridifs_image_io_read_grey
     const OIIO::ImageSpec spec = in->spec();
     const int w = spec.width, h = spec.height, c = spec.nchannels;
     if (w <= 0 || h <= 0 || c <= 0) return failWith("the image has no pixels", error, errorSize);
-    if (std::int64_t(w) * h > std::int64_t(16384) * 16384) return failWith("the image is larger than 16384 × 16384", error, errorSize);
+    if (std::int64_t(w) * h > std::int64_t(16384) * 16384)
+      return failWith("the image is larger than 16384 × 16384", error, errorSize);
     std::vector<float> pixels(std::size_t(w) * std::size_t(h) * std::size_t(c));
-    if (!in->read_image(0, 0, 0, c, OIIO::TypeDesc::FLOAT, pixels.data())) return failWith(in->geterror(), error, errorSize);
+    if (!in->read_image(0, 0, 0, c, OIIO::TypeDesc::FLOAT, pixels.data()))
+      return failWith(in->geterror(), error, errorSize);
     const int alpha = spec.alpha_channel >= 0 ? spec.alpha_channel : (c == 2 || c == 4 ? c - 1 : -1);
     const int colours = alpha >= 0 ? c - 1 : c;
     std::vector<float> grey(std::size_t(w) * std::size_t(h));

@@ -43,8 +43,7 @@ int gridifs_vdb_io_write_volume(const char* path, int n, const float* density, c
 /// `halfDiagonal` of the surface (an unsigned distance field). Voxels may repeat.
 int gridifs_vdb_io_mesh_voxels(int n, const float* points, size_t pointCount, const uint32_t* triangles,
                                size_t triangleCount, const uint32_t* quads, size_t quadCount, int solid,
-                               float halfDiagonal, GridifsVdbVoxels emit, void* context, char* error,
-                               size_t errorSize);
+                               float halfDiagonal, GridifsVdbVoxels emit, void* context, char* error, size_t errorSize);
 
 /// The lattice voxels near the active values of float grid `grid` of `path` where the grid,
 /// sampled trilinearly at the voxel's centre, is at least `threshold`. Voxels may repeat.

@@ -164,9 +164,9 @@ extern "C" __attribute__((visibility("default"))) int gridifs_vdb_io_abi_version
 }
 
 extern "C" __attribute__((visibility("default"))) int gridifs_vdb_io_write_volume(const char* path, int n,
-                                                                                const float* density,
-                                                                                const float* color, char* error,
-                                                                                size_t errorSize) {
+                                                                                  const float* density,
+                                                                                  const float* color, char* error,
+                                                                                  size_t errorSize) {
   return guarded(error, errorSize, [&] {
     initialize();
     const auto xform = latticeTransform(n);
@@ -223,11 +223,13 @@ extern "C" __attribute__((visibility("default"))) int gridifs_vdb_io_mesh_voxels
     if (solid) {
       const auto sdf = openvdb::tools::meshToLevelSet<openvdb::FloatGrid>(*xform, vertices, tris, quadList, 2.0f);
       const auto interior = openvdb::tools::sdfInteriorMask(*sdf);
-      collectActive(*interior, n, [](bool on) { return on; }, out);
+      collectActive(
+          *interior, n, [](bool on) { return on; }, out);
     } else {
       const auto udf =
           openvdb::tools::meshToUnsignedDistanceField<openvdb::FloatGrid>(*xform, vertices, tris, quadList, 2.0f);
-      collectActive(*udf, n, [&](float d) { return d <= halfDiagonal; }, out);
+      collectActive(
+          *udf, n, [&](float d) { return d <= halfDiagonal; }, out);
     }
     out.flush();
     return int(GRIDIFS_VDB_OK);
@@ -235,9 +237,9 @@ extern "C" __attribute__((visibility("default"))) int gridifs_vdb_io_mesh_voxels
 }
 
 extern "C" __attribute__((visibility("default"))) int gridifs_vdb_io_grid_voxels(const char* path, const char* name,
-                                                                               int n, float threshold,
-                                                                               GridifsVdbVoxels emit, void* context,
-                                                                               char* error, size_t errorSize) {
+                                                                                 int n, float threshold,
+                                                                                 GridifsVdbVoxels emit, void* context,
+                                                                                 char* error, size_t errorSize) {
   return guarded(error, errorSize, [&] {
     openvdb::FloatGrid::Ptr grid;
     if (const int status = readFloatGrid(path, name, grid, error, errorSize); status != GRIDIFS_VDB_OK) return status;
@@ -269,9 +271,9 @@ extern "C" __attribute__((visibility("default"))) int gridifs_vdb_io_grid_voxels
 }
 
 extern "C" __attribute__((visibility("default"))) int gridifs_vdb_io_grid_mesh(const char* path, const char* name,
-                                                                             float threshold, GridifsVdbMesh emit,
-                                                                             void* context, char* error,
-                                                                             size_t errorSize) {
+                                                                               float threshold, GridifsVdbMesh emit,
+                                                                               void* context, char* error,
+                                                                               size_t errorSize) {
   return guarded(error, errorSize, [&] {
     openvdb::FloatGrid::Ptr grid;
     if (const int status = readFloatGrid(path, name, grid, error, errorSize); status != GRIDIFS_VDB_OK) return status;

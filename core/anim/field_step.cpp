@@ -164,10 +164,10 @@ std::array<std::vector<std::uint32_t>, kSpace> boxShares(const Level& level, con
 // step, as in hashAndSum below; the values are randomFromSum's, collapsed in time as
 // TimeCollapse says, in one vector loop over the row.
 template <typename Real, bool Cubic, bool OddSeed>
-GRIDIFS_FIELD_VECTOR_CLONES
-void collapseHashes(const std::uint32_t* share, std::size_t width, std::uint32_t rowShare, const TimeCollapse& time,
-                    std::uint32_t firstPairKey, std::uint32_t secondPairKey, Real* g0, Real* g1, Real* g2, Real* e0,
-                    Real* e1, Real* e2) {
+GRIDIFS_FIELD_VECTOR_CLONES void collapseHashes(const std::uint32_t* share, std::size_t width, std::uint32_t rowShare,
+                                                const TimeCollapse& time, std::uint32_t firstPairKey,
+                                                std::uint32_t secondPairKey, Real* g0, Real* g1, Real* g2, Real* e0,
+                                                Real* e1, Real* e2) {
   using field_lattice::mix32;
   using field_lattice::randomHalf;
   constexpr Real scale = Real(field_lattice::kRandomScale);
@@ -175,8 +175,7 @@ void collapseHashes(const std::uint32_t* share, std::size_t width, std::uint32_t
   constexpr int kFirst = Cubic ? 0 : 1;
   std::uint32_t times[kSteps];
   for (int step = 0; step < kSteps; ++step) times[step] = rowShare + time.index[std::size_t(kFirst + step)];
-  const Real v0 = Real(time.value0), v1 = Real(time.value1), s0 = Real(0.5 * time.slope0),
-             s1 = Real(0.5 * time.slope1);
+  const Real v0 = Real(time.value0), v1 = Real(time.value1), s0 = Real(0.5 * time.slope0), s1 = Real(0.5 * time.slope1);
   // In chunks along the row, one time step at a time, so every loop runs over the row's vertices.
   constexpr std::size_t kChunk = 64;
   Real f[kSteps][kAxes][kChunk];
@@ -241,8 +240,7 @@ void collapse(const Level& level, const TimeCollapse& time, bool cubic, const Ve
         g[a] = mesh.g[a].data() + row * width;
         e[a] = cubic ? mesh.e[a].data() + row * width : nullptr;
       }
-      collapseRow(level, time, cubic, share, row % std::size_t(box.size[1]), row / std::size_t(box.size[1]), g,
-                  e);
+      collapseRow(level, time, cubic, share, row % std::size_t(box.size[1]), row / std::size_t(box.size[1]), g, e);
     }
   });
 }
@@ -314,7 +312,7 @@ constexpr std::array<VertexSteps, kCubicVertices> cubicVertices() {
   for (int c = 0; c < kCorners; ++c)
     for (int time = 0; time < 4; ++time)
       v[std::size_t(c * 4 + time)].step = {std::uint8_t(1 + (c & 1)), std::uint8_t(1 + ((c >> 1) & 1)),
-                                            std::uint8_t(1 + ((c >> 2) & 1)), std::uint8_t(time)};
+                                           std::uint8_t(1 + ((c >> 2) & 1)), std::uint8_t(time)};
   for (int c = 0; c < kCorners; ++c)
     for (int d = 0; d < kSpace; ++d)
       for (int time = 0; time < 2; ++time) {
@@ -331,7 +329,7 @@ constexpr std::array<VertexSteps, kLinearVertices> linearVertices() {
   for (int c = 0; c < kCorners; ++c)
     for (int time = 0; time < 2; ++time)
       v[std::size_t(c * 2 + time)].step = {std::uint8_t(1 + (c & 1)), std::uint8_t(1 + ((c >> 1) & 1)),
-                                            std::uint8_t(1 + ((c >> 2) & 1)), std::uint8_t(1 + time)};
+                                           std::uint8_t(1 + ((c >> 2) & 1)), std::uint8_t(1 + time)};
   return v;
 }
 
@@ -373,8 +371,8 @@ constexpr std::array<VertexTerms, kCubicVertices> cubicTerms() {
     v[std::size_t(c * 4 + 3)] = {1, {l, 0, 0}};
     for (int d = 0; d < kSpace; ++d)
       for (int time = 0; time < 2; ++time)
-        v[std::size_t(kCorners * 4 + (c * kSpace + d) * 2 + time)] = {
-            1, {d == 0 ? std::uint8_t(kSlope0 + bx) : l, 0, 0}};
+        v[std::size_t(kCorners * 4 + (c * kSpace + d) * 2 + time)] = {1,
+                                                                      {d == 0 ? std::uint8_t(kSlope0 + bx) : l, 0, 0}};
   }
   return v;
 }
@@ -403,9 +401,9 @@ constexpr std::array<VertexTerms, kLinearVertices> kLinearTerms = linearTerms();
 // same way, so a node's weights do not depend on its block. The one-dimensional bases in double,
 // their products and sums in single precision (hashAndSum sums in single precision).
 template <bool SharedYz>
-GRIDIFS_FIELD_VECTOR_CLONES
-void blockWeights(bool cubic, const TimeCollapse& time, const std::array<std::array<double, kBlock>, kSpace>& u,
-                  BlockScratch& out) {
+GRIDIFS_FIELD_VECTOR_CLONES void blockWeights(bool cubic, const TimeCollapse& time,
+                                              const std::array<std::array<double, kBlock>, kSpace>& u,
+                                              BlockScratch& out) {
   constexpr double scale = field_lattice::kRandomScale;
   constexpr std::size_t kYz = SharedYz ? 1 : kBlock;  // y·z factors per block
   for (std::size_t n = 0; n < kBlock; ++n) {
@@ -440,7 +438,9 @@ void blockWeights(bool cubic, const TimeCollapse& time, const std::array<std::ar
       yzLinear[q][m] = float(l[0][by] * l[1][bz]);
     }
   }
-  const auto factor = [&](int vertex, int term) -> float* { return out.factor[std::size_t(vertex)][std::size_t(term)].data(); };
+  const auto factor = [&](int vertex, int term) -> float* {
+    return out.factor[std::size_t(vertex)][std::size_t(term)].data();
+  };
   const float v0 = float(time.value0 * scale), v1 = float(time.value1 * scale);
   if (!cubic) {
     for (int c = 0; c < kCorners; ++c)
@@ -493,10 +493,10 @@ void blockWeights(bool cubic, const TimeCollapse& time, const std::array<std::ar
 #endif
 
 template <bool OddSeed, bool SharedYz>
-GRIDIFS_FIELD_VECTOR_CLONES GRIDIFS_NO_UNROLL_AND_JAM
-void hashAndSum(const VertexSteps* vertices, const VertexTerms* terms, int count, const BlockScratch& in,
-                const std::array<std::uint32_t, 4>& times, std::uint32_t firstPairKey, std::uint32_t secondPairKey,
-                std::array<std::array<double, kBlock>, kAxes>& out) {
+GRIDIFS_FIELD_VECTOR_CLONES GRIDIFS_NO_UNROLL_AND_JAM void hashAndSum(
+    const VertexSteps* vertices, const VertexTerms* terms, int count, const BlockScratch& in,
+    const std::array<std::uint32_t, 4>& times, std::uint32_t firstPairKey, std::uint32_t secondPairKey,
+    std::array<std::array<double, kBlock>, kAxes>& out) {
   using field_lattice::mix32;
   using field_lattice::randomHalf;
   const auto yzAt = [](std::size_t n) { return SharedYz ? std::size_t(0) : n; };
@@ -539,7 +539,6 @@ void hashAndSum(const VertexSteps* vertices, const VertexTerms* terms, int count
     for (std::size_t n = 0; n < kBlock; ++n) out[a][n] = double(sum[a][n]);
 }
 
-
 // A sample's cell along one dimension as the hashing reads it: the index shares of the four
 // steps around it and the position inside.
 struct SampleCell {
@@ -550,7 +549,8 @@ struct SampleCell {
 SampleCell sampleCell(const Level& level, int d, const AxisCell& cell) {
   SampleCell c;
   c.u = cell.u;
-  for (int step = 0; step < 4; ++step) c.share[std::size_t(step)] = indexContribution(cell.base + step - 1, level.wrap[d], d);
+  for (int step = 0; step < 4; ++step)
+    c.share[std::size_t(step)] = indexContribution(cell.base + step - 1, level.wrap[d], d);
   return c;
 }
 
@@ -716,7 +716,11 @@ class LayerCache {
  public:
   LayerCache(const Level& level, const TimeCollapse& time, bool cubic, const VertexBox& box,
              const std::array<std::vector<std::uint32_t>, kSpace>& share)
-      : level_(level), time_(time), cubic_(cubic), box_(box), share_(share),
+      : level_(level),
+        time_(time),
+        cubic_(cubic),
+        box_(box),
+        share_(share),
         layerSize_(std::size_t(box.size[0] * box.size[1])) {}
 
   // g (quantity 0) or e (quantity 1) of axis a on layer k, in [j][i] order (x fastest).

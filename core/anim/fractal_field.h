@@ -71,8 +71,8 @@ class FractalField {
 
   /// nodes[n] += displacement(nodes[n], t) for every n with mask[n] set, up to single-precision
   /// rounding (about 1e-7 of the amplitude): many nodes share the lattice vertices of the coarse
-  /// meshes, so this evaluates the field for the whole time step at once (see field_step.h). Work is split over `threads` workers (≤ 0: all);
-  /// no result depends on the split.
+  /// meshes, so this evaluates the field for the whole time step at once (see field_step.h). Work is split over
+  /// `threads` workers (≤ 0: all); no result depends on the split.
   void displaceNodes(std::vector<Vec3>& nodes, const std::vector<unsigned char>& mask, double t, int threads = 0) const;
 
   /// F for one axis (seed + axis) at a sample point (wind already applied, not yet wrapped).
@@ -97,10 +97,10 @@ class FractalField {
 
   /// One mesh as the evaluation reads it.
   struct Level {
-    std::array<double, 4> cell{};         // cell size per dimension (periodic ones rounded to fit)
-    std::array<double, 4> offset{};       // this level's shift of the mesh, within one cell
-    std::array<std::int64_t, 4> wrap{};   // cells per period, 0 = not periodic
-    double weight = 0.0;                  // p(k)
+    std::array<double, 4> cell{};        // cell size per dimension (periodic ones rounded to fit)
+    std::array<double, 4> offset{};      // this level's shift of the mesh, within one cell
+    std::array<std::int64_t, 4> wrap{};  // cells per period, 0 = not periodic
+    double weight = 0.0;                 // p(k)
     // Seeds S, S+1, S+2 at this level: the hash key of each one's seed pair and the shift of
     // its half of the hash (field_lattice.h). Axes 0 and 2 are always in different pairs.
     std::array<std::uint32_t, 3> keys{};

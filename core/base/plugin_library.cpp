@@ -64,7 +64,8 @@ PluginLibrary loadPluginLibrary(const std::string& fileName, const char* variabl
     if (firstError.empty()) firstError = path + " is from another version of GridIFS";
     dlclose(handle);
   }
-  return {nullptr, what + " (" + fileName + ") could not be loaded" + (firstError.empty() ? std::string() : ": " + firstError)};
+  return {nullptr,
+          what + " (" + fileName + ") could not be loaded" + (firstError.empty() ? std::string() : ": " + firstError)};
 }
 
 }  // namespace gridifs

@@ -35,9 +35,8 @@ void collectParts(const ConstructionNode& node, std::vector<std::string>& names)
 void dropUnusedParts(ConstructionTree& tree) {
   std::vector<std::string> used;
   collectParts(tree.root, used);
-  std::erase_if(tree.parts, [&](const ConstructionPart& p) {
-    return std::find(used.begin(), used.end(), p.name) == used.end();
-  });
+  std::erase_if(tree.parts,
+                [&](const ConstructionPart& p) { return std::find(used.begin(), used.end(), p.name) == used.end(); });
 }
 
 }  // namespace
@@ -85,8 +84,10 @@ void GroupConstructionNodes::apply(Project& project) const {
     (std::binary_search(sorted.begin(), sorted.end(), i) ? grouped : kept).push_back(node.children[i]);
   kept.insert(kept.begin() + std::ptrdiff_t(sorted.front()), operationNode(op, std::move(grouped)));
   // All operands grouped: the new node is the old one's only operand, so it takes its place.
-  if (kept.size() == 1) node = std::move(kept.front());
-  else node.children = std::move(kept);
+  if (kept.size() == 1)
+    node = std::move(kept.front());
+  else
+    node.children = std::move(kept);
   reevaluateConstruction(project);
 }
 

@@ -34,7 +34,9 @@ std::string EditQueue::apply(Document& document) {
           else
             document.edit(item.label, item.change);
           break;
-        case Kind::Begin: document.beginGesture(item.label); break;
+        case Kind::Begin:
+          document.beginGesture(item.label);
+          break;
         case Kind::Update:
           if (!document.inGesture()) document.beginGesture("Edit");
           if (item.edit)
@@ -42,10 +44,18 @@ std::string EditQueue::apply(Document& document) {
           else
             document.updateGesture(item.change);
           break;
-        case Kind::End: document.endGesture(); break;
-        case Kind::Cancel: document.cancelGesture(); break;
-        case Kind::Undo: document.undo(); break;
-        case Kind::Redo: document.redo(); break;
+        case Kind::End:
+          document.endGesture();
+          break;
+        case Kind::Cancel:
+          document.cancelGesture();
+          break;
+        case Kind::Undo:
+          document.undo();
+          break;
+        case Kind::Redo:
+          document.redo();
+          break;
       }
     } catch (const ModelError& e) {
       error = e.what();

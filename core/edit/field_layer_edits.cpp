@@ -68,8 +68,9 @@ void RemoveFieldLayer::apply(Project& project) const {
     return;
   }
   const int removed = int(layer);
-  remapTrackIndices(project.tracks, "volume.field",
-                    [removed](int i) { return i == removed ? -1 : i > removed ? i - 1 : i; });
+  remapTrackIndices(project.tracks, "volume.field", [removed](int i) {
+    return i == removed ? -1 : i > removed ? i - 1 : i;
+  });
   if (layer == 0) {
     v.field = v.more_fields.front();
     v.more_fields.erase(v.more_fields.begin());

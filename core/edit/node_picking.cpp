@@ -9,8 +9,8 @@
 
 namespace gridifs {
 
-std::vector<std::size_t> nodesInRect(const std::vector<Vec3>& nodes, const glm::dmat4& viewProjection,
-                                     double width, double height, glm::dvec2 a, glm::dvec2 b) {
+std::vector<std::size_t> nodesInRect(const std::vector<Vec3>& nodes, const glm::dmat4& viewProjection, double width,
+                                     double height, glm::dvec2 a, glm::dvec2 b) {
   const glm::dvec2 lo = glm::min(a, b), hi = glm::max(a, b);
   std::vector<std::size_t> out;
   for (std::size_t n = 0; n < nodes.size(); ++n) {
@@ -21,8 +21,8 @@ std::vector<std::size_t> nodesInRect(const std::vector<Vec3>& nodes, const glm::
   return out;
 }
 
-std::optional<std::size_t> nearestNode(const std::vector<Vec3>& nodes, const glm::dmat4& viewProjection,
-                                       double width, double height, glm::dvec2 pixel, double radius) {
+std::optional<std::size_t> nearestNode(const std::vector<Vec3>& nodes, const glm::dmat4& viewProjection, double width,
+                                       double height, glm::dvec2 pixel, double radius) {
   std::optional<std::size_t> best;
   double bestDistance = radius, bestDepth = 0.0;
   for (std::size_t n = 0; n < nodes.size(); ++n) {

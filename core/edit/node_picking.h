@@ -15,13 +15,13 @@ namespace gridifs {
 
 /// Indices (into `nodes`) of the nodes whose projection lies in the pixel rectangle spanned
 /// by corners a and b (any order, inclusive). Points behind the camera are never picked.
-std::vector<std::size_t> nodesInRect(const std::vector<Vec3>& nodes, const glm::dmat4& viewProjection,
-                                     double width, double height, glm::dvec2 a, glm::dvec2 b);
+std::vector<std::size_t> nodesInRect(const std::vector<Vec3>& nodes, const glm::dmat4& viewProjection, double width,
+                                     double height, glm::dvec2 a, glm::dvec2 b);
 
 /// The node nearest to `pixel` on screen within `radius` pixels; among nodes at about the
 /// same screen distance the one nearest the camera wins. Empty when none is that close.
-std::optional<std::size_t> nearestNode(const std::vector<Vec3>& nodes, const glm::dmat4& viewProjection,
-                                       double width, double height, glm::dvec2 pixel, double radius);
+std::optional<std::size_t> nearestNode(const std::vector<Vec3>& nodes, const glm::dmat4& viewProjection, double width,
+                                       double height, glm::dvec2 pixel, double radius);
 
 /// How a picked set changes the current selection.
 enum class PickMode { Replace, Add, Remove };

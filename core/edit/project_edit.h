@@ -48,8 +48,8 @@ using ProjectEdit = std::variant<
     SetOperationSelection, PlaceCenter, MoveNodes,
     // settings, camera, time (edit/settings_edits.h) and shading (edit/shading_edits.h)
     SetSettingNumber, SetDisplayMode, SetSampleBudget, SetBackground, SetPalette, SetDensityEstimation,
-    ResetFlameSettings, SetDensityDisplay, SetQuality, SetPaletteKeys, SetCamera, SetCameraDistance, SetTime, SetAnimation, AddLight, RemoveLight, SetLightDirection,
-    SetLightColor, SetLightShadows, SetFogColor, SetAperture,
+    ResetFlameSettings, SetDensityDisplay, SetQuality, SetPaletteKeys, SetCamera, SetCameraDistance, SetTime,
+    SetAnimation, AddLight, RemoveLight, SetLightDirection, SetLightColor, SetLightShadows, SetFogColor, SetAperture,
     // the volume's field layers (edit/field_layer_edits.h)
     AddFieldLayer, RemoveFieldLayer, SetFieldLayer,
     // keyframes (edit/key_edits.h)

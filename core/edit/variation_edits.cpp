@@ -29,15 +29,15 @@ void AddVariation::apply(Project& project) const {
 void RemoveVariation::apply(Project& project) const {
   const FlameVariation& v = knownVariation(name);
   Function& f = function.in(project);
-  if (!f.variations.erase(name))
-    throw ModelError("variations." + name, "the function does not use variation " + name);
+  if (!f.variations.erase(name)) throw ModelError("variations." + name, "the function does not use variation " + name);
   for (const auto& [attribute, fallback] : v.params) f.variation_params.erase(attribute);
 }
 
 void SetVariationParameter::apply(Project& project) const {
   int variation = -1, parameter = -1;
   if (!findVariationParameter(attribute, variation, parameter))
-    throw ModelError("variation_params." + attribute, "\"" + attribute + "\" is not a parameter of any flame variation");
+    throw ModelError("variation_params." + attribute,
+                     "\"" + attribute + "\" is not a parameter of any flame variation");
   function.in(project).variation_params[attribute] = value;
 }
 

@@ -17,10 +17,14 @@ struct Basis {
 
 Basis axisBasis(ViewAxis axis) {
   switch (axis) {
-    case ViewAxis::Top: return {{0, 0, -1}, {0, 1, 0}};
-    case ViewAxis::Front: return {{0, 1, 0}, {0, 0, 1}};
-    case ViewAxis::Side: return {{-1, 0, 0}, {0, 0, 1}};
-    case ViewAxis::User: break;
+    case ViewAxis::Top:
+      return {{0, 0, -1}, {0, 1, 0}};
+    case ViewAxis::Front:
+      return {{0, 1, 0}, {0, 0, 1}};
+    case ViewAxis::Side:
+      return {{-1, 0, 0}, {0, 0, 1}};
+    case ViewAxis::User:
+      break;
   }
   return {{0, 0, -1}, {0, 1, 0}};
 }
@@ -29,10 +33,14 @@ Basis axisBasis(ViewAxis axis) {
 
 const char* viewAxisName(ViewAxis axis) {
   switch (axis) {
-    case ViewAxis::Top: return "Top";
-    case ViewAxis::Side: return "Side";
-    case ViewAxis::Front: return "Front";
-    case ViewAxis::User: return "User";
+    case ViewAxis::Top:
+      return "Top";
+    case ViewAxis::Side:
+      return "Side";
+    case ViewAxis::Front:
+      return "Front";
+    case ViewAxis::User:
+      return "User";
   }
   return "User";
 }

@@ -25,9 +25,7 @@ struct ViewCamera {
   /// World → view and view → clip for an image of the given size (both ≥ 1).
   glm::dmat4 view() const;
   glm::dmat4 projection(double width, double height) const;
-  glm::dmat4 viewProjection(double width, double height) const {
-    return projection(width, height) * view();
-  }
+  glm::dmat4 viewProjection(double width, double height) const { return projection(width, height) * view(); }
   /// Unit world vectors along the screen's right and up directions.
   glm::dvec3 right() const;
   glm::dvec3 up() const;

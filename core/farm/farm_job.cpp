@@ -5,8 +5,8 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
@@ -44,9 +44,12 @@ std::string readWhole(const fs::path& file) {
 }
 
 nlohmann::json toJson(const FarmRequest& r) {
-  nlohmann::json j = {{"project", r.project.string()},   {"output", r.output},
-                      {"parts", r.parts},                {"render_options", r.renderOptions},
-                      {"merge_options", r.mergeOptions}, {"sbatch_options", r.sbatchOptions},
+  nlohmann::json j = {{"project", r.project.string()},
+                      {"output", r.output},
+                      {"parts", r.parts},
+                      {"render_options", r.renderOptions},
+                      {"merge_options", r.mergeOptions},
+                      {"sbatch_options", r.sbatchOptions},
                       {"executable", r.executable.string()}};
   j["frames"] = r.firstFrame ? nlohmann::json::array({*r.firstFrame, *r.lastFrame}) : nlohmann::json(nullptr);
   j["video"] = r.video ? nlohmann::json(*r.video) : nlohmann::json(nullptr);
@@ -122,7 +125,7 @@ std::vector<SubmittedJob> submittedJobs(const fs::path& dir) {
 
 /// What Slurm still knows of the folder's jobs (finished ones for MinJobAge, 300 s by default).
 struct SlurmView {
-  std::vector<std::string> active;  // "id STATE reason" of jobs pending or running
+  std::vector<std::string> active;                  // "id STATE reason" of jobs pending or running
   std::map<std::int64_t, std::string> failedTasks;  // render task → its state (CANCELLED, FAILED, ...)
 };
 
@@ -208,8 +211,8 @@ void writeScript(const fs::path& file, const std::string& text) {
 }
 
 std::string header(const FarmRequest& r, const std::string& name, const std::string& log, bool gpuOptions) {
-  std::string s = "#!/bin/bash\n#SBATCH --job-name=gridifs-" + name + "\n#SBATCH --output=" +
-                  (r.dir / "logs" / log).string() + "\n";
+  std::string s = "#!/bin/bash\n#SBATCH --job-name=gridifs-" + name +
+                  "\n#SBATCH --output=" + (r.dir / "logs" / log).string() + "\n";
   for (const std::string& o : r.sbatchOptions) {
     const bool gpu = o.rfind("--gres", 0) == 0 || o.rfind("--gpus", 0) == 0 || o.rfind("--gpu", 0) == 0;
     if (gpuOptions || !gpu) s += "#SBATCH " + o + "\n";
@@ -271,7 +274,8 @@ std::string videoScript(const FarmRequest& r) {
 bool validPart(const FarmRequest& r, std::int64_t index, std::int64_t part) {
   try {
     const RenderPartHeader h = verifyRenderPart(farmPartPath(r, index, part));
-    const bool frameMatches = isStill(r) ? !h.frame.has_value() : (h.frame.has_value() && *h.frame == frameAt(r, index));
+    const bool frameMatches =
+        isStill(r) ? !h.frame.has_value() : (h.frame.has_value() && *h.frame == frameAt(r, index));
     return h.kind == "image" && h.part == part && h.parts == r.parts && frameMatches;
   } catch (const std::exception&) {
     return false;
@@ -309,7 +313,8 @@ void writeFarmJob(const FarmRequest& request) {
   if (r.output.empty() || r.output.front() != '/') r.output = fs::absolute(r.output).string();
   if (r.video && r.video->front() != '/') r.video = fs::absolute(*r.video).string();
   if (r.dir.string().find_first_of(" \t\n'\"$`\\") != std::string::npos)
-    throw FarmError("the job folder " + r.dir.string() + " must not contain spaces, quotes or $ (Slurm's #SBATCH lines take it unquoted)");
+    throw FarmError("the job folder " + r.dir.string() +
+                    " must not contain spaces, quotes or $ (Slurm's #SBATCH lines take it unquoted)");
   const std::string digest = requestDigest(r);
   if (fs::exists(r.dir / "farm.json", ec)) {
     std::string stored;
@@ -319,8 +324,9 @@ void writeFarmJob(const FarmRequest& request) {
       throw FarmError(r.dir.string() + "/farm.json is damaged; use another --dir or remove the folder");
     }
     if (stored != digest)
-      throw FarmError(r.dir.string() + " holds the job of another render (another project file content, output, "
-                                       "frames, parts or options); use another --dir or remove the folder");
+      throw FarmError(r.dir.string() +
+                      " holds the job of another render (another project file content, output, "
+                      "frames, parts or options); use another --dir or remove the folder");
   } else if (fs::exists(r.dir, ec) && !fs::is_empty(r.dir, ec)) {
     throw FarmError(r.dir.string() + " is not empty and is not a farm job folder; use an empty or new --dir");
   }
@@ -409,7 +415,8 @@ FarmStatus readFarmStatus(const fs::path& dir, bool slurm) {
       FarmFrame& f = status.frames[std::size_t(index)];
       if (std::find(f.missingParts.begin(), f.missingParts.end(), part) == f.missingParts.end()) continue;
       const std::string prefix = "task " + std::to_string(task) + " ";
-      if (std::any_of(f.failedTasks.begin(), f.failedTasks.end(), [&](const std::string& t) { return t.rfind(prefix, 0) == 0; }))
+      if (std::any_of(f.failedTasks.begin(), f.failedTasks.end(),
+                      [&](const std::string& t) { return t.rfind(prefix, 0) == 0; }))
         continue;
       std::string word = state;
       std::transform(word.begin(), word.end(), word.begin(), [](unsigned char c) { return char(std::tolower(c)); });
@@ -467,8 +474,9 @@ std::vector<std::string> farmSubmitCommands(const fs::path& dir, const FarmPlan&
   for (const auto& [array, offset] : arraysFor(plan.renderTasks, 1001))
     lines.push_back("sbatch --array=" + array + " " + d + "/render.sbatch " + std::to_string(offset));
   for (const auto& [array, offset] : arraysFor(plan.mergeFrames, 1001))
-    lines.push_back("sbatch --array=" + array + (plan.renderTasks.empty() ? "" : " --dependency=afterok:<render jobs>") +
-                    " " + d + "/merge.sbatch " + std::to_string(offset));
+    lines.push_back("sbatch --array=" + array +
+                    (plan.renderTasks.empty() ? "" : " --dependency=afterok:<render jobs>") + " " + d +
+                    "/merge.sbatch " + std::to_string(offset));
   if (plan.video) lines.push_back("sbatch --dependency=afterok:<merge jobs> " + d + "/video.sbatch");
   return lines;
 }
@@ -518,8 +526,8 @@ std::vector<std::string> submitFarm(const fs::path& dir, const FarmPlan& plan) {
   const std::int64_t limit = maxArraySize();
   std::string renderIds;
   for (const auto& [array, offset] : arraysFor(plan.renderTasks, limit))
-    renderIds += ":" + sbatch({"--array=" + array, (r.dir / "render.sbatch").string(), std::to_string(offset)}, "render",
-                              offset);
+    renderIds += ":" + sbatch({"--array=" + array, (r.dir / "render.sbatch").string(), std::to_string(offset)},
+                              "render", offset);
   std::string mergeIds;
   for (const auto& [array, offset] : arraysFor(plan.mergeFrames, limit)) {
     std::vector<std::string> args = {"--array=" + array};

@@ -33,8 +33,8 @@ struct FarmError : std::runtime_error {
 
 /// What to render, as given to `gridifs farm` (or the modeller's Render animation dialog).
 struct FarmRequest {
-  std::filesystem::path project;                  // the .gridifs file
-  std::string output;                             // the image, or a printf pattern with frames
+  std::filesystem::path project;                      // the .gridifs file
+  std::string output;                                 // the image, or a printf pattern with frames
   std::optional<std::int64_t> firstFrame, lastFrame;  // both or neither
   std::int64_t parts = 1;
   std::filesystem::path dir;
@@ -47,11 +47,11 @@ struct FarmRequest {
 
 /// One frame's state in a job folder.
 struct FarmFrame {
-  std::int64_t frame = 0;          // the frame number (0 for a still)
-  std::int64_t partsDone = 0;      // parts present and valid
+  std::int64_t frame = 0;      // the frame number (0 for a still)
+  std::int64_t partsDone = 0;  // parts present and valid
   std::vector<std::int64_t> missingParts;
   std::vector<std::string> failedTasks;  // "task 7 (part 3): exit 1" from the failure records
-  bool merged = false;             // the merge task succeeded and the output exists
+  bool merged = false;                   // the merge task succeeded and the output exists
 };
 
 struct FarmStatus {

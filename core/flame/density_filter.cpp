@@ -33,8 +33,7 @@ void forRows(int rows, int threads, const Body& body) {
 
 DensityEstimator::DensityEstimator(double radius, double minimum, double curve, int supersample)
     : supersample_(supersample), curve_(curve) {
-  if (!(radius > 0.0) || !(minimum >= 0.0) || minimum > radius || !(curve > 0.0) || supersample < 1 ||
-      radius > 1000.0)
+  if (!(radius > 0.0) || !(minimum >= 0.0) || minimum > radius || !(curve > 0.0) || supersample < 1 || radius > 1000.0)
     throw std::invalid_argument("density estimator: need 0 <= minimum <= radius <= 1000, curve > 0, supersample >= 1");
   // Draves & Reckase 2003, §8: the kernel is scaled by the supersampling; the +1 is flam3's assumed
   // distance to the first neighbouring bucket.
@@ -92,9 +91,12 @@ DensityEstimator::DensityEstimator(double radius, double minimum, double curve, 
 
 int DensityEstimator::kernelIndex(double hits) const {
   int index;
-  if (hits > maxFilteredCounts_) index = maxFilterIndex_;
-  else if (hits <= kDeThreshold) index = int(std::ceil(hits)) - 1;
-  else index = int(kDeThreshold) + int(std::floor(std::pow(hits - kDeThreshold, curve_)));
+  if (hits > maxFilteredCounts_)
+    index = maxFilterIndex_;
+  else if (hits <= kDeThreshold)
+    index = int(std::ceil(hits)) - 1;
+  else
+    index = int(kDeThreshold) + int(std::floor(std::pow(hits - kDeThreshold, curve_)));
   return std::clamp(index, 0, maxFilterIndex_);
 }
 

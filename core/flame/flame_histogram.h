@@ -12,7 +12,7 @@
 namespace gridifs {
 
 struct FlameHistogram {
-  int width = 0, height = 0;  // in buckets
+  int width = 0, height = 0;   // in buckets
   std::vector<float> buckets;  // 4 floats per bucket: r, g, b sums and hit count
 
   FlameHistogram() = default;
@@ -26,7 +26,9 @@ struct FlameHistogram {
     b[2] += c.b;
     b[3] += 1.f;
   }
-  const float* bucket(int x, int y) const { return &buckets[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 4]; }
+  const float* bucket(int x, int y) const {
+    return &buckets[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * 4];
+  }
   void clear() { std::fill(buckets.begin(), buckets.end(), 0.f); }
   /// Adds another histogram of the same size (merging per-worker buffers).
   void merge(const FlameHistogram& other) {

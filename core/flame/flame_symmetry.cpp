@@ -92,8 +92,8 @@ std::vector<Function> symmetryFunctions(const Project& project, int symmetry, co
 void addSymmetry(Project& project, int symmetry, const SymmetryFrame& frame) {
   std::vector<Function> added = symmetryFunctions(project, symmetry, frame);
   if (project.functions.size() + added.size() > std::size_t(limits::kMaxFunctions))
-    throw ModelError("functions", "adding the symmetry would exceed " + std::to_string(limits::kMaxFunctions) +
-                                      " functions");
+    throw ModelError("functions",
+                     "adding the symmetry would exceed " + std::to_string(limits::kMaxFunctions) + " functions");
   for (Function& f : added) project.functions.push_back(std::move(f));
 }
 

@@ -18,7 +18,7 @@ namespace gridifs {
 /// and the image's horizontal direction (for the dihedral mirror). Uses OrbitCamera's conventions.
 struct SymmetryFrame {
   Vec3 center{0.0};
-  Vec3 axis{0.0, 0.0, 1.0};   // unit
+  Vec3 axis{0.0, 0.0, 1.0};    // unit
   Vec3 mirror{1.0, 0.0, 0.0};  // unit, ⟂ axis: the dihedral mirror flips this direction
 };
 SymmetryFrame symmetryFrameForView(const Camera& camera);

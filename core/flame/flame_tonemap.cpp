@@ -1,8 +1,8 @@
 #include "flame/flame_tonemap.h"
 
 #include <algorithm>
-#include <memory>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 
 #include "base/parallel.h"
@@ -24,9 +24,12 @@ void rgbToHsv(const double rgb[3], double hsv[3]) {
   hsv[1] = mx > 0.0 ? delta / mx : 0.0;
   double h = 0.0;
   if (hsv[1] > 0.0 && delta > 0.0) {
-    if (rgb[0] == mx) h = (rgb[1] - rgb[2]) / delta;
-    else if (rgb[1] == mx) h = 2.0 + (rgb[2] - rgb[0]) / delta;
-    else h = 4.0 + (rgb[0] - rgb[1]) / delta;
+    if (rgb[0] == mx)
+      h = (rgb[1] - rgb[2]) / delta;
+    else if (rgb[1] == mx)
+      h = 2.0 + (rgb[2] - rgb[0]) / delta;
+    else
+      h = 4.0 + (rgb[0] - rgb[1]) / delta;
     if (h < 0.0) h += 6.0;
   }
   hsv[0] = h;  // in [0, 6)
@@ -38,12 +41,24 @@ void hsvToRgb(const double hsv[3], double rgb[3]) {
   const double f = h - std::floor(h);
   const double p = v * (1 - s), q = v * (1 - s * f), t = v * (1 - s * (1 - f));
   switch (i) {
-    case 0: rgb[0] = v, rgb[1] = t, rgb[2] = p; break;
-    case 1: rgb[0] = q, rgb[1] = v, rgb[2] = p; break;
-    case 2: rgb[0] = p, rgb[1] = v, rgb[2] = t; break;
-    case 3: rgb[0] = p, rgb[1] = q, rgb[2] = v; break;
-    case 4: rgb[0] = t, rgb[1] = p, rgb[2] = v; break;
-    default: rgb[0] = v, rgb[1] = p, rgb[2] = q; break;
+    case 0:
+      rgb[0] = v, rgb[1] = t, rgb[2] = p;
+      break;
+    case 1:
+      rgb[0] = q, rgb[1] = v, rgb[2] = p;
+      break;
+    case 2:
+      rgb[0] = p, rgb[1] = v, rgb[2] = t;
+      break;
+    case 3:
+      rgb[0] = p, rgb[1] = q, rgb[2] = v;
+      break;
+    case 4:
+      rgb[0] = t, rgb[1] = p, rgb[2] = v;
+      break;
+    default:
+      rgb[0] = v, rgb[1] = p, rgb[2] = q;
+      break;
   }
 }
 

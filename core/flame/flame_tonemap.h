@@ -9,9 +9,9 @@
 #include <string>
 #include <vector>
 
+#include "base/types.h"
 #include "flame/flame_histogram.h"
 #include "model/flame_settings.h"
-#include "base/types.h"
 
 namespace gridifs {
 

@@ -40,17 +40,37 @@ std::array<Rgb, Palette::kSize> fromStops(const std::vector<Stop>& stops) {
 // data for artists; tests/core/test_flame_palette.cpp checks that both agree.
 const std::vector<std::pair<std::string, std::vector<Stop>>>& builtinStops() {
   static const std::vector<std::pair<std::string, std::vector<Stop>>> kStops = {
-      {"ember", {{0.0, {0.45f, 0.03f, 0.02f}}, {0.3, {0.85f, 0.18f, 0.03f}}, {0.55, {1.0f, 0.55f, 0.08f}},
-                 {0.8, {1.0f, 0.85f, 0.35f}}, {1.0, {1.0f, 0.97f, 0.85f}}}},
-      {"ice", {{0.0, {0.05f, 0.10f, 0.45f}}, {0.35, {0.10f, 0.40f, 0.85f}}, {0.7, {0.35f, 0.85f, 1.0f}},
-               {1.0, {0.92f, 0.98f, 1.0f}}}},
-      {"aurora", {{0.0, {0.35f, 0.10f, 0.60f}}, {0.3, {0.15f, 0.35f, 0.95f}}, {0.6, {0.10f, 0.85f, 0.55f}},
-                  {0.85, {0.75f, 0.95f, 0.25f}}, {1.0, {1.0f, 0.90f, 0.55f}}}},
-      {"sunset", {{0.0, {0.20f, 0.08f, 0.45f}}, {0.3, {0.75f, 0.15f, 0.55f}}, {0.6, {1.0f, 0.40f, 0.25f}},
-                  {0.85, {1.0f, 0.72f, 0.20f}}, {1.0, {1.0f, 0.92f, 0.60f}}}},
-      {"spectrum", {{0.0, {1.0f, 0.15f, 0.15f}}, {1.0 / 6, {1.0f, 0.85f, 0.10f}}, {2.0 / 6, {0.25f, 1.0f, 0.20f}},
-                    {3.0 / 6, {0.10f, 0.95f, 0.95f}}, {4.0 / 6, {0.20f, 0.35f, 1.0f}},
-                    {5.0 / 6, {0.90f, 0.20f, 1.0f}}, {1.0, {1.0f, 0.15f, 0.45f}}}},
+      {"ember",
+       {{0.0, {0.45f, 0.03f, 0.02f}},
+        {0.3, {0.85f, 0.18f, 0.03f}},
+        {0.55, {1.0f, 0.55f, 0.08f}},
+        {0.8, {1.0f, 0.85f, 0.35f}},
+        {1.0, {1.0f, 0.97f, 0.85f}}}},
+      {"ice",
+       {{0.0, {0.05f, 0.10f, 0.45f}},
+        {0.35, {0.10f, 0.40f, 0.85f}},
+        {0.7, {0.35f, 0.85f, 1.0f}},
+        {1.0, {0.92f, 0.98f, 1.0f}}}},
+      {"aurora",
+       {{0.0, {0.35f, 0.10f, 0.60f}},
+        {0.3, {0.15f, 0.35f, 0.95f}},
+        {0.6, {0.10f, 0.85f, 0.55f}},
+        {0.85, {0.75f, 0.95f, 0.25f}},
+        {1.0, {1.0f, 0.90f, 0.55f}}}},
+      {"sunset",
+       {{0.0, {0.20f, 0.08f, 0.45f}},
+        {0.3, {0.75f, 0.15f, 0.55f}},
+        {0.6, {1.0f, 0.40f, 0.25f}},
+        {0.85, {1.0f, 0.72f, 0.20f}},
+        {1.0, {1.0f, 0.92f, 0.60f}}}},
+      {"spectrum",
+       {{0.0, {1.0f, 0.15f, 0.15f}},
+        {1.0 / 6, {1.0f, 0.85f, 0.10f}},
+        {2.0 / 6, {0.25f, 1.0f, 0.20f}},
+        {3.0 / 6, {0.10f, 0.95f, 0.95f}},
+        {4.0 / 6, {0.20f, 0.35f, 1.0f}},
+        {5.0 / 6, {0.90f, 0.20f, 1.0f}},
+        {1.0, {1.0f, 0.15f, 0.45f}}}},
       {"gray", {{0.0, {0.25f, 0.25f, 0.25f}}, {1.0, {1.0f, 1.0f, 1.0f}}}},
   };
   return kStops;
@@ -68,7 +88,8 @@ std::string readText(const std::filesystem::path& file, const char* what) {
   if (!in) throw PaletteError(std::string("cannot read the ") + what + " " + file.string() + ".");
   std::ostringstream s;
   s << in.rdbuf();
-  if (s.str().size() > (64u << 20)) throw PaletteError("the " + std::string(what) + " " + file.string() + " is too large.");
+  if (s.str().size() > (64u << 20))
+    throw PaletteError("the " + std::string(what) + " " + file.string() + " is too large.");
   return s.str();
 }
 
@@ -99,8 +120,8 @@ std::vector<Palette> parseFlam3Palettes(const std::string& xmlText) {
   pugi::xml_document document;
   const pugi::xml_parse_result parsed = document.load_buffer(xmlText.data(), xmlText.size());
   if (!parsed)
-    throw PaletteError(std::string("the flam3 palette XML is not well-formed (") + parsed.description() +
-                       " at byte " + std::to_string(parsed.offset) + ").");
+    throw PaletteError(std::string("the flam3 palette XML is not well-formed (") + parsed.description() + " at byte " +
+                       std::to_string(parsed.offset) + ").");
   std::vector<Palette> out;
   // flam3-palettes.xml is <palettes><palette number="" name="" data=""/>...</palettes>; a
   // single <palette> element (a palette file of its own) is read the same way.
@@ -210,7 +231,8 @@ std::string serializePaletteJson(const Palette& palette) {
   char buffer[96];
   for (int i = 0; i < Palette::kSize; ++i) {
     const Rgb& c = palette.colors[i];
-    std::snprintf(buffer, sizeof buffer, "    [%.4f, %.4f, %.4f]%s\n", c.r, c.g, c.b, i + 1 < Palette::kSize ? "," : "");
+    std::snprintf(buffer, sizeof buffer, "    [%.4f, %.4f, %.4f]%s\n", c.r, c.g, c.b,
+                  i + 1 < Palette::kSize ? "," : "");
     out += buffer;
   }
   out += "  ]\n}\n";

@@ -37,15 +37,20 @@ ConstructionNode readNode(const json& j, const std::string& path, int depth) {
   if (!children->is_array()) fail(cp, std::string("expected an array of nodes, found ") + typeName(*children));
   if (children->size() > std::size_t(limits::kMaxFunctions))
     fail(cp, "more than " + std::to_string(limits::kMaxFunctions) + " operands");
-  for (std::size_t i = 0; i < children->size(); ++i) node.children.push_back(readNode((*children)[i], item(cp, i), depth + 1));
+  for (std::size_t i = 0; i < children->size(); ++i)
+    node.children.push_back(readNode((*children)[i], item(cp, i), depth + 1));
   return node;
 }
 
 ordered_json writeNode(const ConstructionNode& node) {
   ordered_json o;
   switch (node.kind) {
-    case ConstructionNode::Kind::File: o["file"] = node.file; break;
-    case ConstructionNode::Kind::Part: o["part"] = node.part; break;
+    case ConstructionNode::Kind::File:
+      o["file"] = node.file;
+      break;
+    case ConstructionNode::Kind::Part:
+      o["part"] = node.part;
+      break;
     case ConstructionNode::Kind::Operation: {
       o["op"] = node.op;
       ordered_json children = ordered_json::array();
@@ -91,7 +96,8 @@ std::optional<ConstructionTree> readConstruction(const json& root, const ReadPar
   requireObject(*it, "construction");
   ConstructionTree tree;
   if (auto parts = it->find("parts"); parts != it->end()) {
-    if (!parts->is_array()) fail("construction.parts", std::string("expected an array of parts, found ") + typeName(*parts));
+    if (!parts->is_array())
+      fail("construction.parts", std::string("expected an array of parts, found ") + typeName(*parts));
     if (parts->size() > std::size_t(limits::kMaxFunctions))
       fail("construction.parts", "more than " + std::to_string(limits::kMaxFunctions) + " parts");
     for (std::size_t i = 0; i < parts->size(); ++i) {
@@ -137,8 +143,8 @@ std::filesystem::path chainKey(const std::filesystem::path& file) {
   return ec ? std::filesystem::absolute(file).lexically_normal() : key;
 }
 
-void readLeafFiles(ConstructionTree& tree, const std::filesystem::path& folder, std::vector<std::filesystem::path>& chain,
-                   const LoadFile& load) {
+void readLeafFiles(ConstructionTree& tree, const std::filesystem::path& folder,
+                   std::vector<std::filesystem::path>& chain, const LoadFile& load) {
   readLeaves(tree.root, "construction.root", folder, chain, load);
 }
 

@@ -30,8 +30,8 @@ using LoadFile = std::function<Project(const std::filesystem::path& file, std::v
 /// Reads every file leaf of `tree` (paths relative to `folder`) with `load`. A file that is
 /// missing, unreadable, invalid or already in `chain` (a cycle) throws ModelError at the leaf's
 /// JSON path.
-void readLeafFiles(ConstructionTree& tree, const std::filesystem::path& folder, std::vector<std::filesystem::path>& chain,
-                   const LoadFile& load);
+void readLeafFiles(ConstructionTree& tree, const std::filesystem::path& folder,
+                   std::vector<std::filesystem::path>& chain, const LoadFile& load);
 
 /// The canonical form of `file` used to find cycles (weakly canonical, absolute).
 std::filesystem::path chainKey(const std::filesystem::path& file);

@@ -41,7 +41,6 @@ std::string xmlEscape(const std::string& text) {
   return out;
 }
 
-
 /// The flame xform attributes of a function: its fit conjugated into flame coordinates by the
 /// frame (X = scale · flip(p − centre), no rotation).
 FlameAffine toFlame(const FlameAffine& g, const FlameFrame& frame) {
@@ -66,7 +65,8 @@ std::string coefsText(const FlameAffine& f) {
 /// A function's variations and their parameters as xform attributes (linear 1 without any).
 std::string variationAttributes(const Function& fn, const std::string& label, std::vector<std::string>& warnings) {
   std::string text;
-  for (const auto& [name, weight] : fn.variations) text += (text.empty() ? "" : " ") + name + "=\"" + num(weight) + "\"";
+  for (const auto& [name, weight] : fn.variations)
+    text += (text.empty() ? "" : " ") + name + "=\"" + num(weight) + "\"";
   if (text.empty()) text = "linear=\"1\"";
   for (const auto& [attribute, value] : fn.variation_params) text += " " + attribute + "=\"" + num(value) + "\"";
   if (fn.post) {
@@ -86,7 +86,6 @@ std::string postAttribute(const Function& fn) {
 }
 
 }  // namespace
-
 
 FlameExport exportFlame(const Project& project, const std::filesystem::path& projectFolder, const std::string& name) {
   if (project.space)
@@ -123,9 +122,9 @@ FlameExport exportFlame(const Project& project, const std::filesystem::path& pro
   const FlameSettings& fl = r.flame;
   std::ostringstream x;
   x << "<flame name=\"" << xmlEscape(name) << "\" version=\"GridIFS\" size=\"" << r.width << " " << r.height
-    << "\" center=\"" << num(center.x) << " " << num(center.y) << "\" scale=\"" << num(ppu)
-    << "\" zoom=\"0\" rotate=\"" << num(rotate) << "\" oversample=\"" << fl.supersample << "\" supersample=\"" << fl.supersample
-    << "\" filter=\"" << num(fl.filter_radius) << "\" filter_shape=\"gaussian\" quality=\""
+    << "\" center=\"" << num(center.x) << " " << num(center.y) << "\" scale=\"" << num(ppu) << "\" zoom=\"0\" rotate=\""
+    << num(rotate) << "\" oversample=\"" << fl.supersample << "\" supersample=\"" << fl.supersample << "\" filter=\""
+    << num(fl.filter_radius) << "\" filter_shape=\"gaussian\" quality=\""
     << num(double(renderSampleCount(r)) / (double(r.width) * r.height)) << "\" background=\"" << num(r.background.x)
     << " " << num(r.background.y) << " " << num(r.background.z) << "\" brightness=\"" << num(fl.brightness)
     << "\" gamma=\"" << num(fl.gamma) << "\" gamma_threshold=\"" << num(fl.gamma_threshold) << "\" vibrancy=\""

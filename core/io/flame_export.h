@@ -9,12 +9,11 @@
 #include <vector>
 
 #include "model/flame_variations.h"
-#include "model/grid_affine_fit.h"
 #include "model/grid.h"
+#include "model/grid_affine_fit.h"
 #include "model/project.h"
 
 namespace gridifs {
-
 
 struct FlameExport {
   std::string xml;

@@ -205,8 +205,7 @@ FlameGenome parseGenome(const pugi::xml_node& flame, std::size_t index) {
     if (tag == "xform") {
       if (g.xforms.size() >= std::size_t(flame_limits::kMaxXforms))
         fail(where + " has more than " + std::to_string(flame_limits::kMaxXforms) + " xforms");
-      g.xforms.push_back(
-          parseXform(child, where + " xform " + std::to_string(g.xforms.size()), false, unknownLeftOut));
+      g.xforms.push_back(parseXform(child, where + " xform " + std::to_string(g.xforms.size()), false, unknownLeftOut));
       g.xforms.back().preserveZ = preserveZ;
     } else if (tag == "finalxform") {
       if (g.finalXform) fail(where + " has more than one finalxform");

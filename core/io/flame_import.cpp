@@ -44,8 +44,8 @@ Function nativeXform(const FlameXform& x, const std::string& name) {
   for (const auto& [attribute, value] : x.params) fn.variation_params[attribute] = value;
   if (!x.post.isIdentity()) {
     const FlameAffine& m = x.post;
-    fn.post = PostTransform{{}, std::array<std::array<double, 4>, 3>{{{m.a, m.b, 0.0, m.c}, {m.d, m.e, 0.0, m.f},
-                                                                      {0.0, 0.0, 1.0, 0.0}}}};
+    fn.post = PostTransform{
+        {}, std::array<std::array<double, 4>, 3>{{{m.a, m.b, 0.0, m.c}, {m.d, m.e, 0.0, m.f}, {0.0, 0.0, 1.0, 0.0}}}};
   }
   return fn;
 }
@@ -411,7 +411,8 @@ FlameImport importFlameGenome(const FlameGenome& genome, const FlameImportOption
   if (!dropped.empty()) {
     std::string list;
     for (const auto& n : dropped) list += (list.empty() ? "" : ", ") + n;
-    out.warnings.push_back("the random variations " + list + " of this genome were left out (its maps are sampled onto grids)");
+    out.warnings.push_back("the random variations " + list +
+                           " of this genome were left out (its maps are sampled onto grids)");
   }
   // chaos → transitions (flam3's xaos: row i weights the xform that follows xform i).
   bool restricted = false;

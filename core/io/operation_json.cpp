@@ -36,11 +36,15 @@ void readParam(const ParamSpec& s, const json& o, const std::string& opPath, OpP
   if (it == o.end()) return;
   const std::string path = join(opPath, s.key);
   switch (s.type) {
-    case ParamType::Number: s.setNumber(params, 0, readNumber(*it, path, s.min, s.max)); break;
+    case ParamType::Number:
+      s.setNumber(params, 0, readNumber(*it, path, s.min, s.max));
+      break;
     case ParamType::Integer:
       s.setNumber(params, 0, double(readInteger(*it, path, std::int64_t(s.min), std::int64_t(s.max))));
       break;
-    case ParamType::Seed: s.value<std::uint64_t>(params) = readSeed(*it, path); break;
+    case ParamType::Seed:
+      s.value<std::uint64_t>(params) = readSeed(*it, path);
+      break;
     case ParamType::Vector: {
       if (!it->is_array() || it->size() != std::size_t(s.components))
         fail(path, "expected an array of " + std::to_string(s.components) + " numbers");
@@ -55,7 +59,9 @@ void readParam(const ParamSpec& s, const json& o, const std::string& opPath, OpP
       s.setChoice(params, index);
       break;
     }
-    case ParamType::Expression: s.value<std::string>(params) = readString(*it, path, s.maxLength); break;
+    case ParamType::Expression:
+      s.value<std::string>(params) = readString(*it, path, s.maxLength);
+      break;
     case ParamType::CalculatorVars: {
       requireObject(*it, path);
       auto& vars = s.value<std::array<CalculatorVar, 3>>(params);
@@ -82,7 +88,8 @@ void readParam(const ParamSpec& s, const json& o, const std::string& opPath, OpP
       break;
     }
     case ParamType::NodeMoves: {
-      if (!it->is_array()) fail(path, std::string("expected an array of [i, j, k, [dx, dy, dz]], found ") + typeName(*it));
+      if (!it->is_array())
+        fail(path, std::string("expected an array of [i, j, k, [dx, dy, dz]], found ") + typeName(*it));
       if (it->size() > std::size_t(limits::kMaxNodeMoves)) fail(path, "too many node moves");
       auto& moves = s.value<std::vector<NodeMove>>(params);
       moves.clear();
@@ -106,22 +113,27 @@ void readParam(const ParamSpec& s, const json& o, const std::string& opPath, OpP
 
 ordered_json writeParam(const ParamSpec& s, const OpParams& params) {
   switch (s.type) {
-    case ParamType::Number: return s.value<double>(params);
-    case ParamType::Integer: return s.value<int>(params);
-    case ParamType::Seed: return s.value<std::uint64_t>(params);
+    case ParamType::Number:
+      return s.value<double>(params);
+    case ParamType::Integer:
+      return s.value<int>(params);
+    case ParamType::Seed:
+      return s.value<std::uint64_t>(params);
     case ParamType::Vector: {
       ordered_json a = ordered_json::array();
       for (int c = 0; c < s.components; ++c) a.push_back(s.number(params, c));
       return a;
     }
-    case ParamType::Choice: return s.choices->names[std::size_t(s.choice(params))];
-    case ParamType::Expression: return s.value<std::string>(params);
+    case ParamType::Choice:
+      return s.choices->names[std::size_t(s.choice(params))];
+    case ParamType::Expression:
+      return s.value<std::string>(params);
     case ParamType::CalculatorVars: {
       ordered_json vars;
       const auto& v = s.value<std::array<CalculatorVar, 3>>(params);
       for (int i = 0; i < 3; ++i)
-        vars["v" + std::to_string(i + 1)] = {{"value", v[std::size_t(i)].value}, {"min", v[std::size_t(i)].min},
-                                             {"max", v[std::size_t(i)].max}};
+        vars["v" + std::to_string(i + 1)] = {
+            {"value", v[std::size_t(i)].value}, {"min", v[std::size_t(i)].min}, {"max", v[std::size_t(i)].max}};
       return vars;
     }
     case ParamType::MorphPairs: {

@@ -66,7 +66,8 @@ PointCloudResult writePointCloud(const CompiledIfs& ifs, const RenderJob& job, c
   if (result.stats.badFraction() >= 0.5)
     throw ModelError("", std::to_string(int(std::lround(100 * result.stats.badFraction()))) +
                              "% of the chaos-game points were non-finite or escaped, so the IFS has no usable "
-                             "attractor; " + out.string() + " was not written");
+                             "attractor; " +
+                             out.string() + " was not written");
   const std::string header = pointCloudHeader(result.written, description);
   if (std::fseek(f, 0, SEEK_SET) != 0) throw IoError("cannot write " + out.string() + ": " + std::strerror(errno));
   write(header.data(), header.size());

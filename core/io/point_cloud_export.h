@@ -12,7 +12,7 @@ namespace gridifs {
 struct PointCloudResult {
   std::uint64_t written = 0;  // points in the file
   RenderStats stats;
-  bool cancelled = false;     // progress returned false: nothing was written
+  bool cancelled = false;  // progress returned false: nothing was written
 };
 
 /// Streams the points of `job` into `out` through a temporary file in the same folder that is

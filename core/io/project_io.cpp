@@ -51,8 +51,8 @@ std::string string(const json& obj, const char* key, const std::string& path, co
   return readString(*it, join(path, key), maxLength);
 }
 
-Vec3 vec3(const json& obj, const char* key, const std::string& path, Vec3 fallback,
-          double lo = -limits::kMaxCoordinate, double hi = limits::kMaxCoordinate) {
+Vec3 vec3(const json& obj, const char* key, const std::string& path, Vec3 fallback, double lo = -limits::kMaxCoordinate,
+          double hi = limits::kMaxCoordinate) {
   auto it = obj.find(key);
   if (it == obj.end()) return fallback;
   return readVec3(*it, join(path, key), lo, hi);
@@ -65,9 +65,12 @@ Center readCenter(const json& obj, const std::string& path) {
   const std::string p = join(path, "center");
   if (it->is_string()) {
     const std::string s = it->get<std::string>();
-    if (s == "grid") c.kind = Center::Kind::Grid;
-    else if (s == "selection") c.kind = Center::Kind::Selection;
-    else fail(p, "expected \"grid\", \"selection\" or a point [x, y, z]");
+    if (s == "grid")
+      c.kind = Center::Kind::Grid;
+    else if (s == "selection")
+      c.kind = Center::Kind::Selection;
+    else
+      fail(p, "expected \"grid\", \"selection\" or a point [x, y, z]");
   } else {
     c.kind = Center::Kind::Point;
     c.point = readVec3(*it, p, -limits::kMaxCoordinate, limits::kMaxCoordinate);
@@ -167,16 +170,21 @@ void checkDepth(const std::string& text) {
   bool inString = false, escaped = false;
   for (char ch : text) {
     if (inString) {
-      if (escaped) escaped = false;
-      else if (ch == '\\') escaped = true;
-      else if (ch == '"') inString = false;
+      if (escaped)
+        escaped = false;
+      else if (ch == '\\')
+        escaped = true;
+      else if (ch == '"')
+        inString = false;
       continue;
     }
-    if (ch == '"') inString = true;
+    if (ch == '"')
+      inString = true;
     else if (ch == '[' || ch == '{') {
       if (++depth > limits::kMaxJsonDepth)
         fail("", "the JSON is nested more than " + std::to_string(limits::kMaxJsonDepth) + " levels deep");
-    } else if (ch == ']' || ch == '}') --depth;
+    } else if (ch == ']' || ch == '}')
+      --depth;
   }
 }
 
@@ -187,12 +195,16 @@ ordered_json writeOperation(const Operation& op) {
   const OperationSpec& spec = operationSpec(op.params);
   o["type"] = spec.type;
   for (const ParamSpec& param : spec.params) o[param.key] = operation_json::writeParam(param, op.params);
-  if (op.center.kind == Center::Kind::Grid) o["center"] = "grid";
-  else if (op.center.kind == Center::Kind::Selection) o["center"] = "selection";
-  else o["center"] = writeVec3(op.center.point);
+  if (op.center.kind == Center::Kind::Grid)
+    o["center"] = "grid";
+  else if (op.center.kind == Center::Kind::Selection)
+    o["center"] = "selection";
+  else
+    o["center"] = writeVec3(op.center.point);
   ordered_json selection = ordered_json::array();
   for (const SelectionBox& b : op.selection)
-    selection.push_back({{"i", {b.i[0], b.i[1]}}, {"j", {b.j[0], b.j[1]}}, {"k", {b.k[0], b.k[1]}}, {"op", selectionOpName(b.op)}});
+    selection.push_back(
+        {{"i", {b.i[0], b.i[1]}}, {"j", {b.j[0], b.j[1]}}, {"k", {b.k[0], b.k[1]}}, {"op", selectionOpName(b.op)}});
   o["selection"] = selection;
   if (op.muted) o["muted"] = true;
   return o;
@@ -224,8 +236,10 @@ ordered_json writeFunction(const Function& f) {
 std::string lineColumn(const std::string& text, std::size_t byte) {
   std::size_t line = 1, column = 1;
   for (std::size_t i = 0; i < byte && i < text.size(); ++i) {
-    if (text[i] == '\n') ++line, column = 1;
-    else ++column;
+    if (text[i] == '\n')
+      ++line, column = 1;
+    else
+      ++column;
   }
   return "line " + std::to_string(line) + ", column " + std::to_string(column);
 }
@@ -244,7 +258,8 @@ Project readProjectBody(const json& root, bool withConstruction) {
     }
     if (auto fl = it->find("flame"); fl != it->end()) r.flame = readSettings(flameSettingsTable(), *fl, "render.flame");
     if (auto sh = it->find("shading"); sh != it->end()) r.shading = readShadingSettings(*sh, "render.shading");
-    if (auto vr = it->find("volume"); vr != it->end()) r.volume = volume_render_io::readVolumeRender(*vr, "render.volume");
+    if (auto vr = it->find("volume"); vr != it->end())
+      r.volume = volume_render_io::readVolumeRender(*vr, "render.volume");
   }
   auto functions = root.find("functions");
   if (functions == root.end()) fail("functions", "the project has no functions");
@@ -306,8 +321,8 @@ Project parseProject(const std::string& text) {
     const std::size_t lastContent = text.find_last_not_of(" \t\r\n");
     const bool truncated = what.find("unexpected end of input") != std::string::npos ||
                            (lastContent != std::string::npos && e.byte >= lastContent + 1);
-    fail("", std::string(truncated ? "the JSON ends too early (truncated?)" : "the file is not valid JSON") +
-                 " at " + lineColumn(text, e.byte == 0 ? 0 : e.byte - 1));
+    fail("", std::string(truncated ? "the JSON ends too early (truncated?)" : "the file is not valid JSON") + " at " +
+                 lineColumn(text, e.byte == 0 ? 0 : e.byte - 1));
   } catch (const json::exception&) {
     fail("", "the file contains a number too large to represent");
   }

@@ -28,9 +28,9 @@ void putLittle(std::string& out, T value) {
 }
 
 std::string headerJson(const RenderPartHeader& h) {
-  nlohmann::json j = {{"kind", h.kind},         {"digest", h.digest},   {"part", h.part},
-                      {"parts", h.parts},       {"device", h.device},   {"chunks", {h.chunkBegin, h.chunkEnd}},
-                      {"source", h.source},     {"project", h.project}, {"options", h.options}};
+  nlohmann::json j = {{"kind", h.kind},     {"digest", h.digest},   {"part", h.part},
+                      {"parts", h.parts},   {"device", h.device},   {"chunks", {h.chunkBegin, h.chunkEnd}},
+                      {"source", h.source}, {"project", h.project}, {"options", h.options}};
   j["frame"] = h.frame ? nlohmann::json(*h.frame) : nlohmann::json(nullptr);
   return j.dump();
 }
@@ -96,7 +96,9 @@ struct RenderPartWriter::Impl {
 
   explicit Impl(const std::filesystem::path& target) : atomic(target), out(1 << 16) {}
 
-  [[noreturn]] void fail() { throw IoError("cannot write " + atomic.target().string() + ": the disk refused the data"); }
+  [[noreturn]] void fail() {
+    throw IoError("cannot write " + atomic.target().string() + ": the disk refused the data");
+  }
 
   void raw(const void* data, std::size_t bytes) {
     file.write(static_cast<const char*>(data), std::streamsize(bytes));
@@ -252,8 +254,7 @@ const RenderPartHeader& RenderPartReader::header() const { return impl_->header;
 std::size_t RenderPartReader::nextBuffer(const std::string& name, std::size_t elementSize, std::size_t maxCount) {
   Impl& r = *impl_;
   const auto nameLength = r.little<std::uint32_t>();
-  if (nameLength == 0 || nameLength > kMaxNameBytes)
-    r.damaged("is damaged: the buffer \"" + name + "\" is missing");
+  if (nameLength == 0 || nameLength > kMaxNameBytes) r.damaged("is damaged: the buffer \"" + name + "\" is missing");
   std::string got(nameLength, '\0');
   r.inflateExactly(got.data(), nameLength);
   const auto size = r.little<std::uint32_t>();
@@ -293,9 +294,12 @@ void RenderPartReader::finish() {
     r.z.next_out = &extra;
     r.z.avail_out = 1;
     const int rc = inflate(&r.z, Z_NO_FLUSH);
-    if (rc == Z_STREAM_END && r.z.avail_out == 1) r.streamEnded = true;
-    else if (rc != Z_OK && rc != Z_BUF_ERROR) r.damaged("is damaged: its compressed data does not decode");
-    else if (r.z.avail_out == 0) r.damaged("is damaged: it has data after its last buffer");
+    if (rc == Z_STREAM_END && r.z.avail_out == 1)
+      r.streamEnded = true;
+    else if (rc != Z_OK && rc != Z_BUF_ERROR)
+      r.damaged("is damaged: its compressed data does not decode");
+    else if (r.z.avail_out == 0)
+      r.damaged("is damaged: it has data after its last buffer");
   }
   // The trailer: what inflate left of the last read, then the rest of the file.
   std::string rest(reinterpret_cast<const char*>(r.z.next_in), r.z.avail_in);

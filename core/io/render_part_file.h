@@ -27,15 +27,15 @@ inline constexpr std::uint32_t kRenderPartVersion = 1;
 
 /// What a part file says about itself.
 struct RenderPartHeader {
-  std::string kind;      // "image" (gridifs render) or "volume" (gridifs volume)
-  std::string digest;    // of the project and every option that shapes the accumulation
+  std::string kind;    // "image" (gridifs render) or "volume" (gridifs volume)
+  std::string digest;  // of the project and every option that shapes the accumulation
   std::int64_t part = 0, parts = 1;
-  std::string device;    // "cpu" or a GPU's name
+  std::string device;                         // "cpu" or a GPU's name
   std::int64_t chunkBegin = 0, chunkEnd = 0;  // of every time sample's chunk list (a GPU part: its chains)
   std::optional<std::int64_t> frame;          // with --frames
-  std::string source;    // the project file as given on the command line
-  std::string project;   // the project as rendered (JSON)
-  std::string options;   // the finishing options (JSON object), as `render` had them
+  std::string source;                         // the project file as given on the command line
+  std::string project;                        // the project as rendered (JSON)
+  std::string options;                        // the finishing options (JSON object), as `render` had them
 };
 
 /// A digest of `text` as 32 hex digits (two independent 64-bit FNV-1a passes): enough to tell the

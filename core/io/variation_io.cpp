@@ -46,8 +46,10 @@ void readFunctionFields(const json& f, const std::string& path, Function& fn) {
     } else {
       if (auto v = it->find("translate"); v != it->end())
         post.placement.translate = readVec3(*v, join(p, "translate"), -limits::kMaxCoordinate, limits::kMaxCoordinate);
-      if (auto v = it->find("rotate"); v != it->end()) post.placement.rotate = readVec3(*v, join(p, "rotate"), -limits::kMaxCoordinate, limits::kMaxCoordinate);
-      if (auto v = it->find("scale"); v != it->end()) post.placement.scale = readVec3(*v, join(p, "scale"), -limits::kMaxCoordinate, limits::kMaxCoordinate);
+      if (auto v = it->find("rotate"); v != it->end())
+        post.placement.rotate = readVec3(*v, join(p, "rotate"), -limits::kMaxCoordinate, limits::kMaxCoordinate);
+      if (auto v = it->find("scale"); v != it->end())
+        post.placement.scale = readVec3(*v, join(p, "scale"), -limits::kMaxCoordinate, limits::kMaxCoordinate);
     }
     fn.post = post;
   }

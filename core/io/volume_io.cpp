@@ -238,7 +238,8 @@ void readLayerFields(const json& object, const std::string& path, VolumeDensityF
     field.thickness = json_read::readNumber(*it, path + ".thickness", 0.0, kMaxFieldLayerExtent);
   if (auto it = object.find("shape"); it != object.end() && !it->is_null()) {
     field.shape = readSet(*it, path + ".shape");
-    if (field.shape->shape == SetShape::Mesh || field.shape->shape == SetShape::Vdb || field.shape->shape == SetShape::Image)
+    if (field.shape->shape == SetShape::Mesh || field.shape->shape == SetShape::Vdb ||
+        field.shape->shape == SetShape::Image)
       fail(path + ".shape", "a field's shape must be a sphere, a box or a torus");
   }
   if (auto it = object.find("blend"); it != object.end())
@@ -315,7 +316,8 @@ std::optional<VolumeSettings> readVolume(const json& root) {
   VolumeSettings v;
   readSettingFields(volumeSettingsTable(), *it, "volume", &v);
   if (auto field = it->find("field"); field != it->end() && !field->is_null()) readFieldLayers(*field, v);
-  if (auto start = it->find("start"); start != it->end() && !start->is_null()) v.start = readSet(*start, "volume.start");
+  if (auto start = it->find("start"); start != it->end() && !start->is_null())
+    v.start = readSet(*start, "volume.start");
   return v;
 }
 

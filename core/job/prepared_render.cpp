@@ -109,8 +109,9 @@ PreparedRender prepareRender(const Project& project, const RenderJobOptions& opt
   } catch (const ModelError& e) {
     // Only the flame display's supersampling makes the renderer's job larger than the output.
     if (r.project.render.mode == DisplayMode::Flame && !options.preview)
-      throw RenderJobError(e.path(), "with supersample " + std::to_string(std::max(1, r.project.render.flame.supersample)) +
-                                         ", " + e.message());
+      throw RenderJobError(
+          e.path(),
+          "with supersample " + std::to_string(std::max(1, r.project.render.flame.supersample)) + ", " + e.message());
     throw RenderJobError(e);
   }
   r.display = renderDisplaySettings(r.project);

@@ -50,12 +50,12 @@ struct RenderJobOptions {
 
 /// A render ready to run: give `ifs` and `job` to a renderer, snapshot with `display`.
 struct PreparedRender {
-  Project project;                          // at the asked time, tracks evaluated
-  std::shared_ptr<const CompiledIfs> ifs;   // condensation sets sampled from their files
-  RenderJob output;                         // the output image's job: size, samples, seed, threads
-  RenderJob job;                            // the display mode's renderer job (flame, shaded or z-buffer)
-  DisplaySettings display;                  // how the renderer's buffers become a picture
-  std::shared_ptr<const Palette> palette;   // the flame display's palette (null in other modes)
+  Project project;                         // at the asked time, tracks evaluated
+  std::shared_ptr<const CompiledIfs> ifs;  // condensation sets sampled from their files
+  RenderJob output;                        // the output image's job: size, samples, seed, threads
+  RenderJob job;                           // the display mode's renderer job (flame, shaded or z-buffer)
+  DisplaySettings display;                 // how the renderer's buffers become a picture
+  std::shared_ptr<const Palette> palette;  // the flame display's palette (null in other modes)
   /// options.device, except "cpu" for the shaded display: its shadow maps and depth of field are
   /// filled by the CPU chaos game.
   std::string device;

@@ -7,8 +7,8 @@
 #include <limits>
 #include <vector>
 
-#include "mesh/mesh_io.h"
 #include "base/types.h"
+#include "mesh/mesh_io.h"
 
 namespace gridifs {
 namespace {

@@ -4,8 +4,8 @@
 
 #include <muParser.h>
 
-#include <cctype>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <mutex>
 
@@ -51,7 +51,7 @@ double calculatorRandom(std::uint64_t seed, int expression, int i, int j, int k,
 
 struct CompiledCalculator::Impl {
   static constexpr int kVariables = 13;
-  static constexpr const char* kVariableNames[kVariables] = {"x", "y", "z", "cx", "cy", "cz", "i",
+  static constexpr const char* kVariableNames[kVariables] = {"x", "y", "z",  "cx", "cy", "cz", "i",
                                                              "j", "k", "v1", "v2", "v3", "t"};
   std::array<mu::Parser, 3> parsers;
   std::array<RandomContext, 3> random;
@@ -135,8 +135,8 @@ void CompiledCalculator::apply(std::vector<Vec3>& nodes, const Index3& resolutio
             throw ModelError(kPaths[e], describeParserError(error));
           }
           if (!std::isfinite(value))
-            throw ModelError(kPaths[e], "the expression gives a non-finite value at node (" + std::to_string(i) +
-                                            ", " + std::to_string(j) + ", " + std::to_string(k) + ")");
+            throw ModelError(kPaths[e], "the expression gives a non-finite value at node (" + std::to_string(i) + ", " +
+                                            std::to_string(j) + ", " + std::to_string(k) + ")");
           out[n][e] = value;
         }
       }

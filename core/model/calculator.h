@@ -12,9 +12,9 @@ namespace gridifs {
 
 /// A syntax or name error in one of the three expressions.
 struct CalculatorDiagnostic {
-  int expression = 0;      // 0: x, 1: y, 2: z
-  int position = -1;       // character offset in that expression, -1 when unknown
-  std::string message;     // one sentence, e.g. `unknown name "q" at position 4`
+  int expression = 0;   // 0: x, 1: y, 2: z
+  int position = -1;    // character offset in that expression, -1 when unknown
+  std::string message;  // one sentence, e.g. `unknown name "q" at position 4`
 };
 
 /// Parsed once per edit, applied to every node in one bulk pass (never per-node parsing).

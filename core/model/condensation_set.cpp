@@ -54,8 +54,10 @@ void checkCondensationSet(const CondensationSet& set, const std::string& path) {
       break;
     case SetShape::Image:
       if (set.path.empty()) fail(path + ".image", "expected a file name");
-      if (!(set.threshold >= 0.0 && set.threshold <= 1.0)) fail(path + ".threshold", "expected a number between 0 and 1");
-      if (!(set.thickness > 0.0 && set.thickness <= 2.0)) fail(path + ".thickness", "expected a thickness between 0 and 2");
+      if (!(set.threshold >= 0.0 && set.threshold <= 1.0))
+        fail(path + ".threshold", "expected a number between 0 and 1");
+      if (!(set.thickness > 0.0 && set.thickness <= 2.0))
+        fail(path + ".thickness", "expected a thickness between 0 and 2");
       [[fallthrough]];
     case SetShape::Mesh:
     case SetShape::Vdb:

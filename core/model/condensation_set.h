@@ -1,6 +1,7 @@
 #pragma once
 // A condensation set C ⊂ X (Sokolov & Gentil, §3.1–3.2): a built-in primitive, a mesh file placed
-// in X, a level set of a VDB grid, or a drawing (the paper's black-ink sketches) as a thin slab. Only the description; voxelization lives in volume/.
+// in X, a level set of a VDB grid, or a drawing (the paper's black-ink sketches) as a thin slab. Only the description;
+// voxelization lives in volume/.
 #include <cstdint>
 #include <string>
 #include <vector>

@@ -23,10 +23,11 @@ void checkNode(const ConstructionTree& tree, const ConstructionNode& node, const
       return;
     case ConstructionNode::Kind::Part:
       if (!findPart(tree, node.part))
-        throw ModelError(path + ".part", "there is no part named \"" + node.part.substr(0, 60) +
-                                             "\" in construction.parts");
+        throw ModelError(path + ".part",
+                         "there is no part named \"" + node.part.substr(0, 60) + "\" in construction.parts");
       return;
-    case ConstructionNode::Kind::Operation: break;
+    case ConstructionNode::Kind::Operation:
+      break;
   }
   const ConstructionOpSpec* spec = findConstructionOp(node.op);
   if (!spec)
@@ -40,22 +41,23 @@ void checkNode(const ConstructionTree& tree, const ConstructionNode& node, const
     throw ModelError(path + ".children",
                      std::string(spec->name) + " takes " + wanted + " operands, not " + std::to_string(n));
   }
-  for (std::size_t i = 0; i < n; ++i)
-    checkNode(tree, node.children[i], path + ".children[" + std::to_string(i) + "]");
+  for (std::size_t i = 0; i < n; ++i) checkNode(tree, node.children[i], path + ".children[" + std::to_string(i) + "]");
 }
 
 Project evaluateNode(const ConstructionTree& tree, const ConstructionNode& node, const std::string& path) {
   switch (node.kind) {
     case ConstructionNode::Kind::File:
       if (!node.loaded)
-        throw ModelError(path + ".file", "the leaf " + node.file + " has not been read (open the project from its file)");
+        throw ModelError(path + ".file",
+                         "the leaf " + node.file + " has not been read (open the project from its file)");
       return *node.loaded;
     case ConstructionNode::Kind::Part: {
       const ConstructionPart* part = findPart(tree, node.part);
       if (!part || !part->content) throw ModelError(path + ".part", "there is no part named \"" + node.part + "\"");
       return *part->content;
     }
-    case ConstructionNode::Kind::Operation: break;
+    case ConstructionNode::Kind::Operation:
+      break;
   }
   const ConstructionOpSpec* spec = findConstructionOp(node.op);
   if (!spec) throw ModelError(path + ".op", "unknown operation \"" + node.op.substr(0, 40) + "\"");
@@ -113,8 +115,7 @@ std::string constructionOpList() {
 }
 
 bool ConstructionNode::operator==(const ConstructionNode& other) const {
-  return kind == other.kind && file == other.file && part == other.part && op == other.op &&
-         children == other.children;
+  return kind == other.kind && file == other.file && part == other.part && op == other.op && children == other.children;
 }
 
 bool ConstructionPart::operator==(const ConstructionPart& other) const {

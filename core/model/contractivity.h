@@ -6,7 +6,7 @@
 namespace gridifs {
 
 struct ContractivityEstimate {
-  double bound = 0.0;        // max over cells of the cell's Lipschitz bound
+  double bound = 0.0;         // max over cells of the cell's Lipschitz bound
   Index3 worstCell{0, 0, 0};  // the cell attaining it
 };
 

@@ -32,8 +32,7 @@ class EvaluationCache {
     double time = 0.0;  // compared only for functions whose grid depends on the time
     std::shared_ptr<const Grid> grid;
   };
-  std::shared_ptr<const Grid> cached(const Function& fn, std::size_t slot, const std::string& path,
-                                     double time) const;
+  std::shared_ptr<const Grid> cached(const Function& fn, std::size_t slot, const std::string& path, double time) const;
 
   mutable std::vector<std::optional<Entry>> entries_;  // slot 0: final function; slot i + 1: function i
 };

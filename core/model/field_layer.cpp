@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include <glm/geometric.hpp>
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
 #include "base/errors.h"
 #include "model/operation_table.h"
@@ -133,7 +133,8 @@ void checkFieldLayer(const VolumeDensityField& layer, const std::string& path) {
   if (!std::isfinite(layer.softness) || layer.softness <= 0.0 || layer.softness > kMaxFieldLayerExtent)
     fail("softness", "expected a positive number of at most 1000");
   if (layer.shape) {
-    if (layer.shape->shape == SetShape::Mesh || layer.shape->shape == SetShape::Vdb || layer.shape->shape == SetShape::Image)
+    if (layer.shape->shape == SetShape::Mesh || layer.shape->shape == SetShape::Vdb ||
+        layer.shape->shape == SetShape::Image)
       fail("shape", "a field's shape must be a sphere, a box or a torus");
     checkCondensationSet(*layer.shape, path + ".shape");
   }

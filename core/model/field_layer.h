@@ -45,6 +45,6 @@ std::vector<const VolumeDensityField*> fieldLayers(const VolumeSettings& setting
 void checkFieldLayer(const VolumeDensityField& layer, const std::string& path);
 
 inline constexpr double kMaxFieldLayerExtent = 1e3;  // |height|, thickness, softness
-inline constexpr std::size_t kMaxFieldLayers = 16;    // layers in "volume.field"
+inline constexpr std::size_t kMaxFieldLayers = 16;   // layers in "volume.field"
 
 }  // namespace gridifs

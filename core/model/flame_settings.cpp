@@ -20,10 +20,14 @@ const char* displayModeName(DisplayMode mode) {
 }
 
 bool parseDisplayMode(const std::string& text, DisplayMode& out) {
-  if (text == "zbuffer") out = DisplayMode::ZBuffer;
-  else if (text == "flame") out = DisplayMode::Flame;
-  else if (text == "shaded") out = DisplayMode::Shaded;
-  else return false;
+  if (text == "zbuffer")
+    out = DisplayMode::ZBuffer;
+  else if (text == "flame")
+    out = DisplayMode::Flame;
+  else if (text == "shaded")
+    out = DisplayMode::Shaded;
+  else
+    return false;
   return true;
 }
 

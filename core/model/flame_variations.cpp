@@ -48,6 +48,7 @@ using M = KernelMath;
 
 // Every body once, for the kernel's dispatch (a switch, so the bodies inline into the loop over
 // terms); the order here is free, the table below fixes the public numbering.
+// clang-format off
 #define GRIDIFS_VARIATION_BODIES(X)                                                                        \
   X(linear) X(sinusoidal) X(spherical) X(swirl) X(horseshoe) X(polar) X(handkerchief) X(heart) X(disc)     \
   X(spiral) X(hyperbolic) X(diamond) X(ex) X(julia) X(bent) X(waves) X(fisheye) X(popcorn) X(exponential)  \
@@ -60,6 +61,7 @@ using M = KernelMath;
   X(wedge) X(wedgeJulia) X(wedgeSph) X(whorl) X(waves2) X(cexp) X(clog) X(csin) X(ccos) X(ctan) X(csec)    \
   X(ccsc) X(ccot) X(csinh) X(ccosh) X(ctanh) X(csech) X(ccsch) X(ccoth) X(auger) X(flux) X(mobius)         \
   X(zscale) X(ztranslate) X(zcone) X(flatten)
+// clang-format on
 
 namespace body {
 #define GRIDIFS_ENUM(name) name,
@@ -93,7 +95,6 @@ constexpr ApplyFn kKernelBodies[] = {GRIDIFS_VARIATION_BODIES(GRIDIFS_KERNEL_POI
       return {};
   }
 }
-
 
 }  // namespace
 
@@ -340,8 +341,9 @@ KernelBodyFn kernelVariationBody(std::int32_t body) {
   return body >= 0 && body < body::kCount ? kKernelBodies[body] : nullptr;
 }
 
-GRIDIFS_KERNEL_SUM_ATTRIBUTES FlamePoint evaluateKernelVariations(const KernelVariationTerm* terms, std::size_t count, bool anyPre,
-                                                     FlamePoint p, const FlameAffine& coefs, std::uint64_t* random) {
+GRIDIFS_KERNEL_SUM_ATTRIBUTES FlamePoint evaluateKernelVariations(const KernelVariationTerm* terms, std::size_t count,
+                                                                  bool anyPre, FlamePoint p, const FlameAffine& coefs,
+                                                                  std::uint64_t* random) {
   // The order of operations and of random draws is evaluateVariations's.
   VariationInput in{p.x, p.y, p.z, &coefs, nullptr, random};
   if (anyPre) [[unlikely]]

@@ -37,10 +37,14 @@ void checkMatrix(const BarycentricMatrix& t, std::size_t m, const std::string& p
 
 const char* functionKindName(FunctionKind kind) {
   switch (kind) {
-    case FunctionKind::Matrix: return "matrix";
-    case FunctionKind::Condensation: return "condensation";
-    case FunctionKind::Median: return "median";
-    case FunctionKind::Grid: break;
+    case FunctionKind::Matrix:
+      return "matrix";
+    case FunctionKind::Condensation:
+      return "condensation";
+    case FunctionKind::Median:
+      return "median";
+    case FunctionKind::Grid:
+      break;
   }
   return "grid";
 }

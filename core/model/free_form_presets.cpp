@@ -143,8 +143,8 @@ std::vector<Vec3> defaultPatchControlPoints(int degree) {
   for (int i = 0; i <= degree; ++i)
     for (int k = 0; k <= degree; ++k) {
       const double u = double(i) / degree, v = double(k) / degree;
-      points.push_back(Vec3{-0.9 + 1.8 * u, -0.9 + 1.8 * v,
-                            1.1 * std::sin(M_PI * u) * std::sin(M_PI * v) * (0.6 + 0.4 * u) - 0.3});
+      points.push_back(
+          Vec3{-0.9 + 1.8 * u, -0.9 + 1.8 * v, 1.1 * std::sin(M_PI * u) * std::sin(M_PI * v) * (0.6 + 0.4 * u) - 0.3});
     }
   return points;
 }

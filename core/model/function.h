@@ -18,10 +18,10 @@ struct Function {
   Index3 resolution{6, 6, 6};
   std::vector<Operation> ops;
   Placement placement;
-  double weight = 1.0;           // selection probability ∝ weight
-  Vec3 color{1.0, 1.0, 1.0};     // RGB in [0, 1]
-  double palette_index = 0.0;    // structural color coordinate c_i in [0, 1] (Draves & Reckase 2003, §5)
-  double color_speed = 0.5;      // c = mix(c, c_i, color_speed); 0.5 is (c + c_i)/2 of Draves & Reckase 2003
+  double weight = 1.0;         // selection probability ∝ weight
+  Vec3 color{1.0, 1.0, 1.0};   // RGB in [0, 1]
+  double palette_index = 0.0;  // structural color coordinate c_i in [0, 1] (Draves & Reckase 2003, §5)
+  double color_speed = 0.5;    // c = mix(c, c_i, color_speed); 0.5 is (c + c_i)/2 of Draves & Reckase 2003
   bool muted = false;
   /// "sampling_error": set when the grid samples a map given in closed form (a flame xform on
   /// import): the largest distance, in X units, between the grid and that map at cell centres.

@@ -25,8 +25,7 @@ std::array<std::array<double, 4>, 3> PostTransform::affine() const {
 void validateFunctionVariations(const std::map<std::string, double>& variations,
                                 const std::map<std::string, double>& params) {
   for (const auto& [name, weight] : variations) {
-    if (!findFlameVariation(name))
-      throw ModelError("variations." + name, "\"" + name + "\" is not a flame variation");
+    if (!findFlameVariation(name)) throw ModelError("variations." + name, "\"" + name + "\" is not a flame variation");
     if (!std::isfinite(weight))
       throw ModelError("variations." + name, "the weight of variation " + name + " is not a finite number");
   }

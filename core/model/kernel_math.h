@@ -44,14 +44,16 @@ struct Reduced {
 inline constexpr double kReduceLimit = 1e5;
 
 [[gnu::always_inline]] inline double sin(double x) {
-  if (!(std::fabs(x) < kReduceLimit)) [[unlikely]] return std::sin(x);  // NaN and ±inf too
+  if (!(std::fabs(x) < kReduceLimit)) [[unlikely]]
+    return std::sin(x);  // NaN and ±inf too
   const Reduced a = reduceHalfPi(x);
   const double s = sinPoly(a.r), c = cosPoly(a.r);
   const double v = (a.quadrant & 1) ? c : s;
   return (a.quadrant & 2) ? -v : v;
 }
 [[gnu::always_inline]] inline double cos(double x) {
-  if (!(std::fabs(x) < kReduceLimit)) [[unlikely]] return std::cos(x);
+  if (!(std::fabs(x) < kReduceLimit)) [[unlikely]]
+    return std::cos(x);
   const Reduced a = reduceHalfPi(x);
   const double s = sinPoly(a.r), c = cosPoly(a.r);
   const double v = (a.quadrant & 1) ? s : c;
@@ -64,7 +66,8 @@ inline constexpr double kReduceLimit = 1e5;
   constexpr double kPi = 3.14159265358979323846, kTanPi8 = 0.41421356237309504880;
   const double ax = std::fabs(x), ay = std::fabs(y);
   const double mn = ax < ay ? ax : ay, mx = ax < ay ? ay : ax;
-  if (!(mx > 0.0) || !(mx < 1e300)) [[unlikely]] return std::atan2(y, x);  // zeros, NaN, infinities
+  if (!(mx > 0.0) || !(mx < 1e300)) [[unlikely]]
+    return std::atan2(y, x);  // zeros, NaN, infinities
   const bool fold = mn > kTanPi8 * mx;
   const double u = fold ? (mn - mx) / (mn + mx) : mn / mx;
   const double u2 = u * u;

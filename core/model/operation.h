@@ -20,34 +20,54 @@ struct Center {
   bool operator==(const Center&) const = default;
 };
 
-struct TranslateOp { Vec3 offset{0.0}; bool operator==(const TranslateOp&) const = default; };
+struct TranslateOp {
+  Vec3 offset{0.0};
+  bool operator==(const TranslateOp&) const = default;
+};
 /// Euler angles in degrees, R = Rz·Ry·Rx (x applied first).
-struct RotateOp { Vec3 angles{0.0}; bool operator==(const RotateOp&) const = default; };
-struct ScaleOp { Vec3 factors{1.0}; bool operator==(const ScaleOp&) const = default; };
+struct RotateOp {
+  Vec3 angles{0.0};
+  bool operator==(const RotateOp&) const = default;
+};
+struct ScaleOp {
+  Vec3 factors{1.0};
+  bool operator==(const ScaleOp&) const = default;
+};
 /// Gröller & Wegenkittl 1994, §2.2 taper: (a, b) *= f(t).
 struct TaperOp {
-  Axis axis = Axis::Z; Profile profile = Profile::Linear; double k = 0.0, omega = 1.0;
+  Axis axis = Axis::Z;
+  Profile profile = Profile::Linear;
+  double k = 0.0, omega = 1.0;
   bool operator==(const TaperOp&) const = default;
 };
 /// Gröller & Wegenkittl 1994, §2.3 twist: rotate (a, b) by φ(t); k in radians per unit.
 struct TwistOp {
-  Axis axis = Axis::Z; Profile profile = Profile::Linear; double k = 0.0, omega = 1.0;
+  Axis axis = Axis::Z;
+  Profile profile = Profile::Linear;
+  double k = 0.0, omega = 1.0;
   bool operator==(const TwistOp&) const = default;
 };
 /// Gröller & Wegenkittl 1994, §2.4 bend (Barr), whole grid: bend `axis` toward `toward` with curvature k.
 struct BendOp {
-  Axis axis = Axis::Z; Axis toward = Axis::Y; double k = 0.0;
+  Axis axis = Axis::Z;
+  Axis toward = Axis::Y;
+  double k = 0.0;
   bool operator==(const BendOp&) const = default;
 };
 /// Gröller & Wegenkittl 1994, §2.5 magnet, absolute coordinates.
 struct MagnetOp {
-  Vec3 point{0.0}; double dmax = 0.5, strength = 0.5, falloff = 2.0;
+  Vec3 point{0.0};
+  double dmax = 0.5, strength = 0.5, falloff = 2.0;
   bool operator==(const MagnetOp&) const = default;
 };
 /// Gröller & Wegenkittl 1994, §2.6 point morphing with radial basis functions, absolute coordinates.
-struct MorphPair { Vec3 from{0.0}, to{0.0}; bool operator==(const MorphPair&) const = default; };
+struct MorphPair {
+  Vec3 from{0.0}, to{0.0};
+  bool operator==(const MorphPair&) const = default;
+};
 struct MorphOp {
-  std::vector<MorphPair> pairs; double strength = 1.0;
+  std::vector<MorphPair> pairs;
+  double strength = 1.0;
   bool operator==(const MorphOp&) const = default;
 };
 /// A calculator user variable: a value shown as a slider over [min, max].
@@ -64,15 +84,19 @@ struct CalculatorOp {
 };
 /// Direct manipulation: node (i, j, k) moves by a displacement.
 struct NodeMove {
-  Index3 index{0, 0, 0}; Vec3 displacement{0.0};
+  Index3 index{0, 0, 0};
+  Vec3 displacement{0.0};
   bool operator==(const NodeMove&) const = default;
 };
-struct NodesOp { std::vector<NodeMove> moves; bool operator==(const NodesOp&) const = default; };
+struct NodesOp {
+  std::vector<NodeMove> moves;
+  bool operator==(const NodesOp&) const = default;
+};
 /// Colonna's fractal field as a displacement, absolute coordinates: q += amplitude ⊙ F(q + wind·t, t).
 using FieldOp = FractalFieldParams;
 
-using OpParams = std::variant<TranslateOp, RotateOp, ScaleOp, TaperOp, TwistOp, BendOp, MagnetOp,
-                              MorphOp, CalculatorOp, NodesOp, FieldOp>;
+using OpParams = std::variant<TranslateOp, RotateOp, ScaleOp, TaperOp, TwistOp, BendOp, MagnetOp, MorphOp, CalculatorOp,
+                              NodesOp, FieldOp>;
 
 /// The file-format name of each alternative, in variant order ("translate", ...).
 const char* opTypeName(const OpParams& params);

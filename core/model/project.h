@@ -35,7 +35,7 @@ struct RenderSettings {
   std::uint64_t seed = 1;
   int skip = 20;
   Vec3 background{0.0};
-  double depth_cue = 0.6;  // 0: no attenuation, 1: farthest points black
+  double depth_cue = 0.6;                   // 0: no attenuation, 1: farthest points black
   DisplayMode mode = DisplayMode::ZBuffer;  // "render.mode": "zbuffer" | "flame" | "shaded"
   FlameSettings flame;                      // "render.flame": the flame display (Draves & Reckase 2003, §4–8)
   ShadingSettings shading;                  // "render.shading": lights, occlusion, fog, depth of field

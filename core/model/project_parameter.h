@@ -54,42 +54,42 @@ class ProjectParameter {
   friend class ParameterResolver;
 
   enum class Where : std::uint8_t {
-    Setting,          // field `setting` of settings group `group` (light `a`), component `c`
-    OpParam,          // function `f`, operation `o`: `param`, component `c`
-    CalculatorVar,    // ... `param` (vars): variable `a`, `b` 0 value, 1 min, 2 max
-    MorphPoint,       // ... `param` (pairs): pair `a`, `b` 0 from, 1 to, component `c`
-    NodeMoveIndex,    // ... `param` (moves): move `a`, index `c`
-    NodeMoveShift,    // ... `param` (moves): move `a`, displacement component `c`
-    OpCenter,         // ... the center point, component `c`
-    SelectionBound,   // ... selection box `a`, axis `b` (i, j, k), `c` 0 first, 1 last
-    Resolution,       // function `f`: resolution `c`
-    Weight,           // function `f`
-    Color,            // function `f`: component `c`
-    PaletteIndex,     // function `f`
-    ColorSpeed,       // function `f`
-    SamplingError,    // function `f`
-    Placement,        // function `f`: `b` 0 translate, 1 rotate, 2 scale, component `c`
-    MatrixEntry,      // function `f`: row `a`, column `c`
-    MedianRotate,     // function `f`
-    MedianRotateAxis, // function `f`: component `c`
-    VariationWeight,  // function `f`: the weight of variation `key`
-    VariationParam,   // function `f`: variation parameter `key`
-    PostPlacement,    // function `f`'s post map: `b` 0 translate, 1 rotate, 2 scale, component `c`
-    PostMatrix,       // function `f`'s post matrix: row `a`, column `c`
-    SetCenter,        // function `f`'s set: component `c`
-    SetRadius,        // ...
-    SetSize,          // ... component `c`
-    SetMajor,         // ...
-    SetMinor,         // ...
-    SetAxis,          // ... component `c`
-    SetPlacement,     // ... `b` 0 translate, 1 rotate, 2 scale, component `c`
-    SetThreshold,     // ...
-    SetThickness,     // ... (a drawing)
-    Transition,       // row `a`, column `c`
-    ControlPoint,     // point `a`, component `c`
-    DensityStrength,  // volume.field (layer `a`).strength
-    DensityParam,     // volume.field (layer `a`): `param`, component `c`
-    LayerNumber,      // volume.field (layer `a`): `b` 0 height, 1 thickness, 2 blend, 3 softness
+    Setting,           // field `setting` of settings group `group` (light `a`), component `c`
+    OpParam,           // function `f`, operation `o`: `param`, component `c`
+    CalculatorVar,     // ... `param` (vars): variable `a`, `b` 0 value, 1 min, 2 max
+    MorphPoint,        // ... `param` (pairs): pair `a`, `b` 0 from, 1 to, component `c`
+    NodeMoveIndex,     // ... `param` (moves): move `a`, index `c`
+    NodeMoveShift,     // ... `param` (moves): move `a`, displacement component `c`
+    OpCenter,          // ... the center point, component `c`
+    SelectionBound,    // ... selection box `a`, axis `b` (i, j, k), `c` 0 first, 1 last
+    Resolution,        // function `f`: resolution `c`
+    Weight,            // function `f`
+    Color,             // function `f`: component `c`
+    PaletteIndex,      // function `f`
+    ColorSpeed,        // function `f`
+    SamplingError,     // function `f`
+    Placement,         // function `f`: `b` 0 translate, 1 rotate, 2 scale, component `c`
+    MatrixEntry,       // function `f`: row `a`, column `c`
+    MedianRotate,      // function `f`
+    MedianRotateAxis,  // function `f`: component `c`
+    VariationWeight,   // function `f`: the weight of variation `key`
+    VariationParam,    // function `f`: variation parameter `key`
+    PostPlacement,     // function `f`'s post map: `b` 0 translate, 1 rotate, 2 scale, component `c`
+    PostMatrix,        // function `f`'s post matrix: row `a`, column `c`
+    SetCenter,         // function `f`'s set: component `c`
+    SetRadius,         // ...
+    SetSize,           // ... component `c`
+    SetMajor,          // ...
+    SetMinor,          // ...
+    SetAxis,           // ... component `c`
+    SetPlacement,      // ... `b` 0 translate, 1 rotate, 2 scale, component `c`
+    SetThreshold,      // ...
+    SetThickness,      // ... (a drawing)
+    Transition,        // row `a`, column `c`
+    ControlPoint,      // point `a`, component `c`
+    DensityStrength,   // volume.field (layer `a`).strength
+    DensityParam,      // volume.field (layer `a`): `param`, component `c`
+    LayerNumber,       // volume.field (layer `a`): `b` 0 height, 1 thickness, 2 blend, 3 softness
     Time,
     Version,
   };
@@ -130,10 +130,10 @@ class ProjectParameter {
   /// The field's description (model/field_schema.h): a setting (Setting) or an operation's
   /// parameter (OpParam and the rows below it, DensityParam).
   const FieldSchema* field_ = nullptr;
-  std::size_t offset_ = 0;  // DensityParam: the field's offset in FractalFieldParams
-  std::string key_;         // VariationWeight, VariationParam: the name
-  bool layerList_ = false;  // volume.field is a list: its layers are volume.field[a]
-  bool layerShape_ = false; // the Set* rows name the shape of field layer `a`, not a function's set
+  std::size_t offset_ = 0;   // DensityParam: the field's offset in FractalFieldParams
+  std::string key_;          // VariationWeight, VariationParam: the name
+  bool layerList_ = false;   // volume.field is a list: its layers are volume.field[a]
+  bool layerShape_ = false;  // the Set* rows name the shape of field layer `a`, not a function's set
   /// Positions along the file's reading order, level by level (the root's member, the
   /// function, the field, ...), so sorting by it sorts numbers as reading meets them.
   std::array<std::int32_t, 9> order_{};

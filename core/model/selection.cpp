@@ -6,20 +6,29 @@ namespace gridifs {
 
 const char* selectionOpName(SelectionOp op) {
   switch (op) {
-    case SelectionOp::Or: return "or";
-    case SelectionOp::And: return "and";
-    case SelectionOp::Xor: return "xor";
-    case SelectionOp::Minus: return "minus";
+    case SelectionOp::Or:
+      return "or";
+    case SelectionOp::And:
+      return "and";
+    case SelectionOp::Xor:
+      return "xor";
+    case SelectionOp::Minus:
+      return "minus";
   }
   return "or";
 }
 
 bool parseSelectionOp(const std::string& text, SelectionOp& out) {
-  if (text == "or") out = SelectionOp::Or;
-  else if (text == "and") out = SelectionOp::And;
-  else if (text == "xor") out = SelectionOp::Xor;
-  else if (text == "minus") out = SelectionOp::Minus;
-  else return false;
+  if (text == "or")
+    out = SelectionOp::Or;
+  else if (text == "and")
+    out = SelectionOp::And;
+  else if (text == "xor")
+    out = SelectionOp::Xor;
+  else if (text == "minus")
+    out = SelectionOp::Minus;
+  else
+    return false;
   return true;
 }
 
@@ -41,14 +50,22 @@ std::vector<unsigned char> selectionMask(const Selection& selection, const Index
     for (int k = 0; k < nk; ++k)
       for (int j = 0; j < nj; ++j)
         for (int i = 0; i < ni; ++i) {
-          const bool inBox = !outside && i >= bi[0] && i <= bi[1] && j >= bj[0] && j <= bj[1] &&
-                             k >= bk[0] && k <= bk[1];
+          const bool inBox =
+              !outside && i >= bi[0] && i <= bi[1] && j >= bj[0] && j <= bj[1] && k >= bk[0] && k <= bk[1];
           unsigned char& m = mask[std::size_t(i) + std::size_t(ni) * (j + std::size_t(nj) * k)];
           switch (box.op) {
-            case SelectionOp::Or: m = m | inBox; break;
-            case SelectionOp::And: m = m & inBox; break;
-            case SelectionOp::Xor: m = m ^ inBox; break;
-            case SelectionOp::Minus: m = m & !inBox; break;
+            case SelectionOp::Or:
+              m = m | inBox;
+              break;
+            case SelectionOp::And:
+              m = m & inBox;
+              break;
+            case SelectionOp::Xor:
+              m = m ^ inBox;
+              break;
+            case SelectionOp::Minus:
+              m = m & !inBox;
+              break;
           }
         }
   }

@@ -10,9 +10,12 @@ namespace {
 
 double profileValue(Profile profile, double k, double omega, double t) {
   switch (profile) {
-    case Profile::Linear: return k * t;
-    case Profile::Sine: return k * std::sin(omega * t);
-    case Profile::PingPong: return k * triangleWave(omega * t);
+    case Profile::Linear:
+      return k * t;
+    case Profile::Sine:
+      return k * std::sin(omega * t);
+    case Profile::PingPong:
+      return k * triangleWave(omega * t);
   }
   return 0.0;
 }
@@ -143,7 +146,8 @@ void apply(const NodesOp& op, OpContext& ctx, const Index3& resolution) {
     if (ix[0] < 0 || ix[1] < 0 || ix[2] < 0 || ix[0] >= resolution[0] || ix[1] >= resolution[1] ||
         ix[2] >= resolution[2])
       continue;
-    const std::size_t n = std::size_t(ix[0]) + std::size_t(resolution[0]) * (ix[1] + std::size_t(resolution[1]) * ix[2]);
+    const std::size_t n =
+        std::size_t(ix[0]) + std::size_t(resolution[0]) * (ix[1] + std::size_t(resolution[1]) * ix[2]);
     if (ctx.mask[n]) ctx.nodes[n] += move.displacement;
   }
 }
@@ -268,11 +272,10 @@ Grid evaluateFunction(const Function& function, std::size_t upToOp, bool applyPl
       throw error.under(path);
     }
     for (const Vec3& p : grid.nodes())
-      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z) ||
-          std::abs(p.x) > limits::kMaxCoordinate || std::abs(p.y) > limits::kMaxCoordinate ||
-          std::abs(p.z) > limits::kMaxCoordinate)
-        throw ModelError(path, std::string(opTypeName(op.params)) +
-                                   " moves a node to a non-finite or absurdly distant position");
+      if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z) || std::abs(p.x) > limits::kMaxCoordinate ||
+          std::abs(p.y) > limits::kMaxCoordinate || std::abs(p.z) > limits::kMaxCoordinate)
+        throw ModelError(
+            path, std::string(opTypeName(op.params)) + " moves a node to a non-finite or absurdly distant position");
   }
   if (applyPlacementToo) {
     const EulerRotation rotation(function.placement.rotate);

@@ -25,8 +25,7 @@ Vec3 rotateEuler(const Vec3& q, const Vec3& anglesDegrees);
 double triangleWave(double x);
 
 /// The centroid used as center of transformation for `op` on the current nodes.
-Vec3 operationCenter(const Operation& op, const std::vector<Vec3>& nodes,
-                     const std::vector<unsigned char>& mask);
+Vec3 operationCenter(const Operation& op, const std::vector<Vec3>& nodes, const std::vector<unsigned char>& mask);
 
 /// Applies one operation in place to `nodes` (a grid of `resolution`) at project time `time`.
 /// Throws ModelError (path relative to the op, e.g. "pairs" or "x") on a singular
@@ -43,13 +42,12 @@ Vec3 applyPlacement(const Placement& placement, const Vec3& q);
 /// Evaluates the whole stack (muted ops skipped) and the placement at project time `time`.
 /// `upToOp` < ops.size() stops before that op (the UI shows intermediate stages).
 /// Throws ModelError with a path relative to the function ("ops[3].k: ...").
-Grid evaluateFunction(const Function& function, std::size_t upToOp = std::size_t(-1),
-                      bool applyPlacementToo = true, double time = 0.0);
+Grid evaluateFunction(const Function& function, std::size_t upToOp = std::size_t(-1), bool applyPlacementToo = true,
+                      double time = 0.0);
 
 /// evaluateFunction with errors located under `path` ("functions[2]", "final"), the form
 /// every caller outside the stack reports (Document cache, compiled snapshots, mesh export).
-std::shared_ptr<const Grid> evaluateFunctionAt(const Function& function, const std::string& path,
-                                               double time = 0.0);
+std::shared_ptr<const Grid> evaluateFunctionAt(const Function& function, const std::string& path, double time = 0.0);
 
 /// Whether the function's grid changes with the project time: an unmuted field op, or a
 /// calculator whose expressions read t. Caches of evaluated grids key on the time only then.

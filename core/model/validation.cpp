@@ -40,7 +40,8 @@ void checkCondensationFunctions(const Project& project) {
     if (!isSetKind(fn.kind)) continue;
     const std::string path = item("functions", f);
     if (project.space) fail(join(path, "kind"), "a project with control points (\"space\") needs \"matrix\" functions");
-    if (!fn.ops.empty()) fail(join(path, "ops"), "a function with a condensation set has no grid, so no grid operations");
+    if (!fn.ops.empty())
+      fail(join(path, "ops"), "a function with a condensation set has no grid, so no grid operations");
     checkCondensationSet(fn.set, join(path, "set"));
     if (!std::isfinite(fn.rotate) || std::abs(fn.rotate) > 1e5)
       fail(join(path, "rotate"), "expected degrees per unit distance between -100000 and 100000");
@@ -55,8 +56,7 @@ void checkCondensationFunctions(const Project& project) {
     validateSettings(volumeSettingsTable(), *project.volume, "volume");
     const VolumeSettings& volume = *project.volume;
     if (volume.start) checkCondensationSet(*volume.start, "volume.start");
-    if (!volume.field && !volume.more_fields.empty())
-      fail("volume.field", "further field layers need a first one");
+    if (!volume.field && !volume.more_fields.empty()) fail("volume.field", "further field layers need a first one");
     // A single field is "volume.field"; a list's layers are "volume.field[i]".
     const bool list = !volume.more_fields.empty();
     if (volume.field) checkFieldLayer(*volume.field, list ? "volume.field[0]" : "volume.field");

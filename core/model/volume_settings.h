@@ -1,8 +1,8 @@
 #pragma once
 // "volume": how the measure attractor is computed as a density volume (Sokolov & Gentil, §3.4).
 #include <cstdint>
-#include <string>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "anim/fractal_field.h"
@@ -36,8 +36,8 @@ struct VolumeDensityField {
   double strength = 1.0;
   FractalFieldParams field;
   FieldRole role = FieldRole::Density;
-  double height = 0.0;     // cloud, terrain: the layer's plane z = height
-  double thickness = 0.2;  // cloud: the full thickness where the cloud is densest
+  double height = 0.0;                   // cloud, terrain: the layer's plane z = height
+  double thickness = 0.2;                // cloud: the full thickness where the cloud is densest
   std::optional<CondensationSet> shape;  // a sphere, box or torus the field is blended with
   double blend = 0.5;                    // 0: the field alone, 1: the shape alone
   double softness = 0.25;                // distance over which S goes from 1 (inside) to -1
@@ -51,7 +51,7 @@ struct VolumeSettings {
   int iterations = 300;  // set iterations (projects with median functions)
   int skip = 20;         // set iterations before P accumulates
   std::uint64_t seed = 1;
-  std::int64_t samples = 20'000'000;  // chaos-game points (projects without median functions)
+  std::int64_t samples = 20'000'000;        // chaos-game points (projects without median functions)
   std::optional<VolumeDensityField> field;  // none: the measure attractor's density as it is
   /// "start": the set S the deterministic algorithm over sets starts from (Sokolov & Gentil, §3.3:
   /// "an arbitrary non-empty compact subset"); none: the whole of X.

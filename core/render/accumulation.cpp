@@ -13,8 +13,8 @@ namespace gridifs {
 
 std::string Accumulation::mismatch(const Accumulation& other) const {
   if (width != other.width || height != other.height)
-    return "a " + std::to_string(other.width) + "×" + std::to_string(other.height) + " accumulation cannot be added to a " +
-           std::to_string(width) + "×" + std::to_string(height) + " one";
+    return "a " + std::to_string(other.width) + "×" + std::to_string(other.height) +
+           " accumulation cannot be added to a " + std::to_string(width) + "×" + std::to_string(height) + " one";
   if (keys.empty() != other.keys.empty() || keys32.empty() != other.keys32.empty())
     return "the z-buffers have different key forms (64-bit and 32-bit keys)";
   if (!keys32.empty() && (depthMin != other.depthMin || depthScale != other.depthScale))
@@ -87,7 +87,8 @@ void toRenderImage(const Accumulation& acc, const DisplaySettings& display, Rend
   }
   if (acc.colorSums.size() == n * 4) {
     out.colorSums.resize(n * 4);
-    for (std::size_t i = 0; i < n * 4; ++i) out.colorSums[i] = float(double(acc.colorSums[i]) * (1.0 / kColorFixedScale));
+    for (std::size_t i = 0; i < n * 4; ++i)
+      out.colorSums[i] = float(double(acc.colorSums[i]) * (1.0 / kColorFixedScale));
   } else {
     out.colorSums.clear();
   }

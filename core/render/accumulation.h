@@ -30,9 +30,9 @@ struct Accumulation {
   std::vector<std::uint64_t> keys;
   std::vector<std::uint32_t> keys32;
   float depthMin = 0.0f, depthScale = 0.0f;
-  std::vector<std::uint32_t> density;     // hits per pixel, saturating at 2^32 − 1
-  std::vector<std::uint64_t> colorSums;   // 4 per pixel (Σr, Σg, Σb, Σc), fixed point; empty without colour
-  std::vector<LightView> lightViews;      // the shadowed lights' views
+  std::vector<std::uint32_t> density;    // hits per pixel, saturating at 2^32 − 1
+  std::vector<std::uint64_t> colorSums;  // 4 per pixel (Σr, Σg, Σb, Σc), fixed point; empty without colour
+  std::vector<LightView> lightViews;     // the shadowed lights' views
   std::vector<std::vector<std::uint16_t>> lightDepth;  // per light, size² depth steps (0xFFFF: none)
   std::int64_t samples = 0, badSamples = 0, plotted = 0;
 

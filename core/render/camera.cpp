@@ -15,8 +15,8 @@ double clampedPitch(double pitch) { return std::clamp(pitch, -89.9, 89.9); }
 
 glm::dvec3 orbitEye(const Camera& camera) {
   const double yaw = radians(camera.yaw), pitch = radians(clampedPitch(camera.pitch));
-  return camera.target +
-         camera.distance * glm::dvec3(std::cos(pitch) * std::cos(yaw), std::cos(pitch) * std::sin(yaw), std::sin(pitch));
+  return camera.target + camera.distance * glm::dvec3(std::cos(pitch) * std::cos(yaw), std::cos(pitch) * std::sin(yaw),
+                                                      std::sin(pitch));
 }
 
 OrbitCamera::OrbitCamera(const Camera& camera, int width, int height)

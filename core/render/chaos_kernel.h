@@ -1,8 +1,8 @@
 #pragma once
 // Internal to the renderer (chaos_renderer.cpp, benchmarks, tests): the chaos-game inner loop
-// (Gröller & Wegenkittl 1994, §3.1; Draves & Reckase 2003, §2 and §5). Everything here is inline and templated on the plot
-// target, so the hot loop has no virtual calls and no atomics with ordering; one worker owns one
-// ChainState and one set of buffers.
+// (Gröller & Wegenkittl 1994, §3.1; Draves & Reckase 2003, §2 and §5). Everything here is inline and templated on the
+// plot target, so the hot loop has no virtual calls and no atomics with ordering; one worker owns one ChainState and
+// one set of buffers.
 //
 // Per iteration: pick a function by weight (alias table, one 64-bit random number); p = f(p)
 // (clamp to X, 4 × 32-byte node-pair loads, trilinear lerps in float); mix the running colour
@@ -87,15 +87,17 @@ struct Rng {
 #endif
   }
   /// Uniform in [-1, 1) from 24 random bits.
-  static float signedUnit(std::uint64_t bits) { return float(std::uint32_t(bits & 0xFFFFFF)) * (2.0f / 16777216.0f) - 1.0f; }
+  static float signedUnit(std::uint64_t bits) {
+    return float(std::uint32_t(bits & 0xFFFFFF)) * (2.0f / 16777216.0f) - 1.0f;
+  }
 };
 
 /// A compiled function laid out for the loop (two 64-byte lines).
 struct alignas(64) HotFunction {
   v4f toLattice;
   v4i lastCell;  // CompiledFunction::maxCell as whole numbers: the last cell in each axis
-  v4f color;  // r g b c
-  v4f speed;  // color_speed in all lanes
+  v4f color;     // r g b c
+  v4f speed;     // color_speed in all lanes
   /// Byte offsets between node pairs (32 bytes each): the next cell in x, in y (a row of
   /// CompiledFunction::pairStrideJ pairs), in z (pairStrideK), and in y and z together. A cell's
   /// four x-edges are at its offset plus 0 and the last three.
@@ -240,7 +242,7 @@ template <int I>
 /// Whether every coordinate is finite and within the escape bound (NaN fails).
 [[gnu::always_inline]] inline bool inBounds(v4f p, float bound) {
   const v4f b = {bound, bound, bound, bound};
-  const v4i magnitudeBits = v4i(p) & 0x7FFFFFFF;  // |p| without a compare and blend
+  const v4i magnitudeBits = v4i(p) & 0x7FFFFFFF;        // |p| without a compare and blend
   return (laneMask(v4f(magnitudeBits) <= b) & 7) == 7;  // false for NaN
 }
 
@@ -427,11 +429,10 @@ template <class Plot>
   return plotted;
 }
 
-/// One iteration of one lane; returns what the plotter returned (1 when it plotted the point at once). kRestricted: walk the
-/// transition matrix's Markov chain (Thollot et al. §3.2) instead of independent choices.
-/// kCondensation: the loop for functions of other kinds: a function with points is Barnsley's
-/// condensation map (Sokolov & Gentil, §3.1), the point jumps to a uniformly random sample of its
-/// set; a function with variations runs its variation stage.
+/// One iteration of one lane; returns what the plotter returned (1 when it plotted the point at once). kRestricted:
+/// walk the transition matrix's Markov chain (Thollot et al. §3.2) instead of independent choices. kCondensation: the
+/// loop for functions of other kinds: a function with points is Barnsley's condensation map (Sokolov & Gentil, §3.1),
+/// the point jumps to a uniformly random sample of its set; a function with variations runs its variation stage.
 template <bool kRestricted, bool kRestarts, bool kCondensation = false, class Plot>
 [[gnu::always_inline]] inline int stepLane(ChainState& st, int lane, const HotIfs& ifs, Plot& plot, std::int64_t& bad) {
   if constexpr (kRestarts)
@@ -451,7 +452,8 @@ template <bool kRestricted, bool kRestarts, bool kCondensation = false, class Pl
   } else {
     p = apply(f, st.p[lane]);
   }
-  const v4f col = st.color[lane] + (f.color - st.color[lane]) * f.speed;  // Draves & Reckase 2003, §5: c = mix(c, c_i, speed)
+  const v4f col =
+      st.color[lane] + (f.color - st.color[lane]) * f.speed;  // Draves & Reckase 2003, §5: c = mix(c, c_i, speed)
   if (!inBounds(p, ifs.escapeBound)) [[unlikely]] {
     ++bad;
     if (kCondensation && ifs.variations)
@@ -548,7 +550,8 @@ template <class Plot>
 /// receives each point past `skip` (after the final function) and returns whether it was plotted;
 /// a plotter that plots in chunks returns 0 and reports its count through takePlotted() after flush().
 template <class Plot>
-[[gnu::always_inline]] inline void runChain(ChainState& st, const HotIfs& ifs, std::int64_t count, Plot& plot, ChainCounters& counters) {
+[[gnu::always_inline]] inline void runChain(ChainState& st, const HotIfs& ifs, std::int64_t count, Plot& plot,
+                                            ChainCounters& counters) {
   std::int64_t bad = 0, plotted = 0;
   // A local copy whose address never escapes stays in registers; the plotter's relaxed atomic
   // stores would otherwise make the compiler reload the state from memory after every plot.
@@ -564,11 +567,15 @@ template <class Plot>
     auto lanes = [&]<bool kRestricted, bool kRestarts>() {
       for (std::int64_t n = 0; n < rounds; ++n)
         for (int l = 0; l < kLanes; ++l) plotted += stepLane<kRestricted, kRestarts, true>(local, l, ifs, plot, bad);
-      for (int l = 0; l < int(count % kLanes); ++l) plotted += stepLane<kRestricted, kRestarts, true>(local, l, ifs, plot, bad);
+      for (int l = 0; l < int(count % kLanes); ++l)
+        plotted += stepLane<kRestricted, kRestarts, true>(local, l, ifs, plot, bad);
     };
-    if (ifs.transitionWalk && ifs.restartInterval) lanes.template operator()<true, true>();
-    else if (ifs.transitionWalk) lanes.template operator()<true, false>();
-    else lanes.template operator()<false, false>();
+    if (ifs.transitionWalk && ifs.restartInterval)
+      lanes.template operator()<true, true>();
+    else if (ifs.transitionWalk)
+      lanes.template operator()<true, false>();
+    else
+      lanes.template operator()<false, false>();
   } else if (ifs.transitionWalk && ifs.restartInterval) {
     // The restricted loop is a separate instantiation, so the unrestricted one is unchanged.
     for (std::int64_t n = 0; n < rounds; ++n)

@@ -19,10 +19,10 @@
 #include <thread>
 #include <vector>
 
+#include "flame/palette.h"
 #include "render/camera.h"
 #include "render/compiled_ifs.h"
 #include "render/light_view.h"
-#include "flame/palette.h"
 #include "render/renderer.h"
 #include "render/sample_chunks.h"
 
@@ -109,7 +109,7 @@ struct RenderStats {
   double seconds = 0.0;          // wall time since the generation started (excluding pauses)
   double pointsPerSecond = 0.0;  // samples / seconds
   bool paused = false;
-  bool done = false;             // the budget is exhausted (never for an unlimited job)
+  bool done = false;  // the budget is exhausted (never for an unlimited job)
   /// This generation kept the camera's buffers of the one before (only shadowed lights changed)
   /// and re-fills only the changed lights' buffers; `samples` counts the camera's samples.
   bool keptCamera = false;
@@ -121,12 +121,12 @@ struct RenderStats {
 /// reallocating.
 struct RenderImage {
   int width = 0, height = 0;
-  std::vector<std::uint8_t> rgba;        // 4 per pixel: depth-cued colour over the background;
-                                         // alpha 255 where a point was plotted, else 0
-  std::vector<float> depth;              // view depth of the nearest point; +inf where none
-  std::vector<std::uint32_t> density;    // hits per pixel (saturating)
-  std::vector<float> colorSums;          // 4 per pixel (Σr, Σg, Σb, Σc) when job.accumulateColor, else empty
-  std::int64_t hitPixels = 0;            // pixels with at least one point
+  std::vector<std::uint8_t> rgba;          // 4 per pixel: depth-cued colour over the background;
+                                           // alpha 255 where a point was plotted, else 0
+  std::vector<float> depth;                // view depth of the nearest point; +inf where none
+  std::vector<std::uint32_t> density;      // hits per pixel (saturating)
+  std::vector<float> colorSums;            // 4 per pixel (Σr, Σg, Σb, Σc) when job.accumulateColor, else empty
+  std::int64_t hitPixels = 0;              // pixels with at least one point
   float minDepth = 0.0f, maxDepth = 0.0f;  // depth range of the hit pixels
   std::uint64_t generation = 0;
   RenderStats stats;

@@ -115,7 +115,6 @@ CompiledFunction compileFunction(const Function& function, const Grid& evaluated
 
 namespace {
 
-
 std::shared_ptr<const CompiledVariations> compileVariations(const Function& function, const Grid& evaluated) {
   auto out = std::make_shared<CompiledVariations>();
   std::vector<std::pair<const FlameVariation*, double>> chosen;

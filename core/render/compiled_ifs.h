@@ -27,12 +27,12 @@ struct alignas(32) NodePair {
 /// the grid map extrapolated beyond X. Immutable; `terms` point into `params`.
 struct CompiledVariations {
   std::vector<VariationTerm> terms;
-  std::vector<double> params;       // every term's parameters, in table order, one term after another
-  std::vector<int> variationIds;    // each term's index in flameVariations() (the GPU's numbering)
+  std::vector<double> params;               // every term's parameters, in table order, one term after another
+  std::vector<int> variationIds;            // each term's index in flameVariations() (the GPU's numbering)
   std::vector<std::uint32_t> paramOffsets;  // where each term's parameters start in `params`
-  FlameAffine coefs;                // the affine fit of g that the dependent variations read
+  FlameAffine coefs;                        // the affine fit of g that the dependent variations read
   double post[3][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};
-  bool random = false;              // some term draws random numbers
+  bool random = false;  // some term draws random numbers
   /// `terms` as the chaos kernel runs them (evaluateKernelVariations), and whether one is a
   /// pre-variation and whether `post` is not the identity (the kernel skips it then).
   std::vector<KernelVariationTerm> kernelTerms;
@@ -156,7 +156,7 @@ inline constexpr std::uint32_t kTransitionRowMask = kTransitionSkipPhase - 1;
 struct CompiledIfs {
   std::vector<CompiledFunction> functions;  // unmuted functions with weight > 0, in project order
   std::optional<CompiledFunction> finalFunction;
-  std::vector<AliasEntry> alias;  // one entry per function
+  std::vector<AliasEntry> alias;      // one entry per function
   std::vector<double> probabilities;  // normalised weights (for tests and the UI)
   /// The transition matrix as (n + 1) alias tables of n entries each (n = functions.size()):
   /// row r < n picks the function after function r, row n the first function of a chain (the

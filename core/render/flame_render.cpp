@@ -42,8 +42,8 @@ RenderJob flameRenderJob(const RenderJob& outputJob, const FlameSettings& settin
   const int g = gutter ? usableGutter(outputJob.camera, outputJob.height, settings) : 0;
   // The same pixels per unit on a larger image: widen the (vertical) field of view; OrbitCamera's
   // orthographic extent follows the same tan(fov/2), and the width follows the aspect ratio.
-  const double halfTan = std::tan(outputJob.camera.fov * M_PI / 360.0) * double(outputJob.height + 2 * g) /
-                         outputJob.height;
+  const double halfTan =
+      std::tan(outputJob.camera.fov * M_PI / 360.0) * double(outputJob.height + 2 * g) / outputJob.height;
   job.camera.fov = std::atan(halfTan) * 360.0 / M_PI;
   // Draves & Reckase 2003, §8: supersampling = more histogram buckets for the same number of iterations.
   job.width = (outputJob.width + 2 * g) * ss;
@@ -85,12 +85,13 @@ FlameImage developFlameSnapshot(const RenderImage& snapshot, const FlameSettings
   // The gutter is whatever the job had (flameRenderJob with or without one, any settings).
   const int g = snapshot.width % ss == 0 ? (snapshot.width / ss - outputWidth) / 2 : -1;
   if (g < 0 || snapshot.width != (outputWidth + 2 * g) * ss || snapshot.height != (outputHeight + 2 * g) * ss)
-    throw std::invalid_argument("the renderer snapshot does not have the size of the flame job (output + gutter, "
-                                "times the supersampling)");
+    throw std::invalid_argument(
+        "the renderer snapshot does not have the size of the flame job (output + gutter, "
+        "times the supersampling)");
   const FlameHistogram histogram = flameHistogramFromSnapshot(snapshot, meanCPalette);
-  const FlameImage full =
-      developFlame(histogram, settings, background, transparent, double(std::max<std::int64_t>(1, snapshot.stats.samples)),
-                   flamePixelsPerUnit(camera, outputHeight) * settings.density_unit, threads);
+  const FlameImage full = developFlame(histogram, settings, background, transparent,
+                                       double(std::max<std::int64_t>(1, snapshot.stats.samples)),
+                                       flamePixelsPerUnit(camera, outputHeight) * settings.density_unit, threads);
   if (g == 0) return full;
   FlameImage image;
   image.width = outputWidth;
@@ -114,10 +115,14 @@ void writeFlameImage(const FlameImage& image, const std::filesystem::path& file,
   if (!exr && ext != "png" && ext != "tif" && ext != "tiff")
     throw IoError("cannot write " + file.string() + ": use a .png, .tif or .exr file name");
   ImageFileLayout layout;
-  if (exr) layout.stored = bitDepth == 32 ? StoredSample::Float : StoredSample::Half;
-  else if (bitDepth == 16) layout.stored = StoredSample::UInt16;
-  else if (bitDepth == 8) layout.stored = StoredSample::UInt8;
-  else throw IoError("cannot write " + file.string() + ": PNG and TIFF take 8 or 16 bits per channel");
+  if (exr)
+    layout.stored = bitDepth == 32 ? StoredSample::Float : StoredSample::Half;
+  else if (bitDepth == 16)
+    layout.stored = StoredSample::UInt16;
+  else if (bitDepth == 8)
+    layout.stored = StoredSample::UInt8;
+  else
+    throw IoError("cannot write " + file.string() + ": PNG and TIFF take 8 or 16 bits per channel");
   layout.width = image.width;
   layout.height = image.height;
   layout.channels = withAlpha ? std::vector<std::string>{"R", "G", "B", "A"} : std::vector<std::string>{"R", "G", "B"};

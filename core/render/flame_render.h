@@ -6,10 +6,10 @@
 // Thread-safety: pure functions of their arguments. Throws as documented per function.
 #include <filesystem>
 
-#include "render/chaos_renderer.h"
+#include "base/errors.h"
 #include "flame/flame_tonemap.h"
 #include "flame/palette.h"
-#include "base/errors.h"
+#include "render/chaos_renderer.h"
 
 namespace gridifs {
 

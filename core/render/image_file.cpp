@@ -25,14 +25,15 @@ struct ImageWriter {
 };
 
 ImageWriter load() {
-  const PluginLibrary plugin = loadPluginLibrary(kPluginFile, "GRIDIFS_IMAGE_IO", GRIDIFS_IMAGE_IO_BUILD_DIR,
-                                                 "gridifs_image_io_abi_version", GRIDIFS_IMAGE_IO_ABI_VERSION,
-                                                 "the image library");
+  const PluginLibrary plugin =
+      loadPluginLibrary(kPluginFile, "GRIDIFS_IMAGE_IO", GRIDIFS_IMAGE_IO_BUILD_DIR, "gridifs_image_io_abi_version",
+                        GRIDIFS_IMAGE_IO_ABI_VERSION, "the image library");
   if (!plugin.handle) return {nullptr, nullptr, plugin.problem};
   const auto write = reinterpret_cast<WriteFunction>(plugin.symbol("gridifs_image_io_write"));
   const auto readGrey = reinterpret_cast<ReadGreyFunction>(plugin.symbol("gridifs_image_io_read_grey"));
   if (!write || !readGrey)
-    return {nullptr, nullptr, std::string("the image library (") + kPluginFile + ") is from another version of GridIFS"};
+    return {nullptr, nullptr,
+            std::string("the image library (") + kPluginFile + ") is from another version of GridIFS"};
   return {write, readGrey, {}};
 }
 
@@ -74,9 +75,17 @@ void write(const std::filesystem::path& file, const ImageFileLayout& layout, boo
   for (const std::string& name : layout.channels) names.push_back(name.c_str());
   AtomicFile atomic(file);
   const std::string temporary = atomic.temporaryPath().string();
-  const GridifsImageRequest request{temporary.c_str(), layout.width,     layout.height,     int(names.size()),
-                                    names.data(),      layout.alphaChannel, layout.zChannel, storedCode(layout.stored),
-                                    isFloat ? 1 : 0,   pixels,           layout.description.c_str()};
+  const GridifsImageRequest request{temporary.c_str(),
+                                    layout.width,
+                                    layout.height,
+                                    int(names.size()),
+                                    names.data(),
+                                    layout.alphaChannel,
+                                    layout.zChannel,
+                                    storedCode(layout.stored),
+                                    isFloat ? 1 : 0,
+                                    pixels,
+                                    layout.description.c_str()};
   char message[1024] = {};
   if (!plugin.write(&request, message, sizeof message)) throw IoError("cannot write " + file.string() + ": " + message);
   atomic.commit();

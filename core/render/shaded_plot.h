@@ -70,10 +70,17 @@ struct LightPlot {
   /// compiled for the CPU like the chaos game's kernel.
   [[gnu::noinline]] GRIDIFS_KERNEL_CLONES void drain() {
     switch (lightCount) {
-      case 1: drainInto<1>(); break;
-      case 2: drainInto<2>(); break;
-      case 3: drainInto<3>(); break;
-      default: break;
+      case 1:
+        drainInto<1>();
+        break;
+      case 2:
+        drainInto<2>();
+        break;
+      case 3:
+        drainInto<3>();
+        break;
+      default:
+        break;
     }
     count = 0;
   }

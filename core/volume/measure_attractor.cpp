@@ -9,9 +9,9 @@
 #include "base/hash.h"
 #include "base/parallel.h"
 #include "model/stack_evaluator.h"
+#include "render/accumulation.h"
 #include "render/barycentric_kernel.h"
 #include "render/chaos_kernel.h"
-#include "render/accumulation.h"
 #include "render/chaos_renderer.h"
 #include "render/sample_chunks.h"
 #include "volume/condensation_sampler.h"
@@ -47,9 +47,8 @@ DensityVolume iterateSets(const Project& project, const VolumeJob& job) {
     const std::string path = "functions[" + std::to_string(i) + "]";
     switch (f.kind) {
       case FunctionKind::Median:
-        functions.push_back(
-            SetFunction::median(voxelizeSet(f.set, lattice, job.projectFolder, path + ".set"), f.rotate,
-                                f.rotate_axis));
+        functions.push_back(SetFunction::median(voxelizeSet(f.set, lattice, job.projectFolder, path + ".set"), f.rotate,
+                                                f.rotate_axis));
         break;
       case FunctionKind::Condensation:
         functions.push_back(SetFunction::constant(voxelizeSet(f.set, lattice, job.projectFolder, path + ".set")));
@@ -141,7 +140,7 @@ DensityVolume iterateSets(const Project& project, const VolumeJob& job) {
 struct VoxelBins {
   std::uint32_t* counts;
   std::uint64_t* colors;  // 3 per voxel, fixed point (render/accumulation.h), or null
-  float half;     // N / 2
+  float half;             // N / 2
   float n;
   std::size_t stride;
 
@@ -244,8 +243,8 @@ VoxelAccumulation accumulateVoxels(const Project& project, const VolumeJob& job)
       kernel::ChainCounters counters;
       std::unique_ptr<kernel::BarycentricState> bary;  // free-form IFSs only
       if (ifs.barycentricBlocks) bary = std::make_unique<kernel::BarycentricState>();
-      VoxelBins bins{acc.counts.data(), acc.colorSums.empty() ? nullptr : acc.colorSums.data(),
-                     0.5f * float(lattice.n), float(lattice.n), std::size_t(lattice.n)};
+      VoxelBins bins{acc.counts.data(), acc.colorSums.empty() ? nullptr : acc.colorSums.data(), 0.5f * float(lattice.n),
+                     float(lattice.n), std::size_t(lattice.n)};
       for (std::int64_t c = nextChunk++; c < chunks.end && !cancelled(job); c = nextChunk++) {
         kernel::ChainState chain = kernel::ChainState::start(settings.seed, std::uint64_t(c), ifs.skip);
         const std::int64_t n = chunkSize(settings.samples, c);
@@ -274,7 +273,8 @@ VoxelAccumulation accumulateVoxels(const Project& project, const VolumeJob& job)
 
 DensityVolume developVoxels(const Project& project, const VolumeJob& job, const VoxelAccumulation& acc) {
   std::vector<float> colors(acc.colorSums.size());
-  for (std::size_t i = 0; i < colors.size(); ++i) colors[i] = float(double(acc.colorSums[i]) * (1.0 / kColorFixedScale));
+  for (std::size_t i = 0; i < colors.size(); ++i)
+    colors[i] = float(double(acc.colorSums[i]) * (1.0 / kColorFixedScale));
   DensityVolume volume = finishBinning(VoxelLattice{acc.resolution}, acc.counts, std::move(colors));
   if (!cancelled(job)) applyFieldLayers(volume, job.settings, project.time, job.threads);
   return volume;

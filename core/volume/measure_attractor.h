@@ -46,8 +46,8 @@ struct VolumeJob {
 /// a volume's parts add up to the whole volume's.
 struct VoxelAccumulation {
   int resolution = 0;
-  std::vector<std::uint32_t> counts;      // resolution³, x fastest
-  std::vector<std::uint64_t> colorSums;   // 3 per voxel when hasColorVolume, else empty
+  std::vector<std::uint32_t> counts;     // resolution³, x fastest
+  std::vector<std::uint64_t> colorSums;  // 3 per voxel when hasColorVolume, else empty
   std::int64_t samples = 0;
   /// Adds `other` in. Throws std::invalid_argument when the two do not match.
   void add(const VoxelAccumulation& other);

@@ -156,7 +156,7 @@ struct SetFunction::Impl {
   enum class Kind { Median, Constant, PointMap } kind;
   VoxelSet set;
   double rotate = 0.0;
-  Vec3 axis{0.0, 0.0, 1.0};  // unit length
+  Vec3 axis{0.0, 0.0, 1.0};               // unit length
   std::unique_ptr<NearestVoxel> nearest;  // median: the k-d tree of `set`
   /// Median: the answer of `nearest` per lattice voxel once asked (kUnknown before). The sets of
   /// the iteration keep revisiting the same region, so most left-median queries become one load.

@@ -36,8 +36,8 @@ SetSystem buildSetSystem(const Project& project, const VoxelLattice& lattice,
     const std::string path = "functions[" + std::to_string(i) + "]";
     switch (f.kind) {
       case FunctionKind::Median:
-        system.functions.push_back(SetFunction::median(voxelizeSet(f.set, lattice, projectFolder, path + ".set"),
-                                                       f.rotate, f.rotate_axis));
+        system.functions.push_back(
+            SetFunction::median(voxelizeSet(f.set, lattice, projectFolder, path + ".set"), f.rotate, f.rotate_axis));
         break;
       case FunctionKind::Condensation:
         system.functions.push_back(SetFunction::constant(voxelizeSet(f.set, lattice, projectFolder, path + ".set")));
@@ -148,8 +148,10 @@ void forEachBookPage(const SetSystem& system, const VoxelSet& start, int depth, 
     return;
   }
   // 512 MiB of voxel indices: a 128³ book of depth 6 keeps all its distinct sets.
-  BookWalk walk{system, depth, resolveThreadCount(threads), page, progress,
-                SetOrbitMemo(system.functions.size(), std::size_t(512) << 20), {}, {}, 0.0, 0.0};
+  BookWalk walk{system, depth,    resolveThreadCount(threads),
+                page,   progress, SetOrbitMemo(system.functions.size(), std::size_t(512) << 20),
+                {},     {},       0.0,
+                0.0};
   walk.owned.resize(std::size_t(depth));
   double level = 1.0;
   for (int k = 0; k < depth; ++k) walk.nodes += (level *= double(system.functions.size()));

@@ -10,8 +10,8 @@
 
 #include "base/errors.h"
 #include "mesh/mesh_io.h"
-#include "render/image_file.h"
 #include "model/stack_evaluator.h"
+#include "render/image_file.h"
 #include "volume/vdb_io.h"
 
 namespace gridifs {
@@ -58,13 +58,15 @@ std::vector<std::uint32_t> meshVoxels(const CondensationSet& set, const VoxelLat
     if (ids.size() == 4)
       faces.quads.insert(faces.quads.end(), ids.begin(), ids.end());
     else
-      for (std::size_t t = 1; t + 1 < ids.size(); ++t) faces.triangles.insert(faces.triangles.end(), {ids[0], ids[t], ids[t + 1]});
+      for (std::size_t t = 1; t + 1 < ids.size(); ++t)
+        faces.triangles.insert(faces.triangles.end(), {ids[0], ids[t], ids[t + 1]});
   }
   for (auto h : mesh.halfedges()) closed &= !mesh.is_boundary(h);
   const bool solid = set.fill == SetFill::Solid;
   if (solid && !closed)
-    fail(jsonPath + ".fill", "the mesh " + file.string() +
-                                 " is not closed (it has boundary edges), so it has no inside; use \"fill\": \"surface\"");
+    fail(jsonPath + ".fill",
+         "the mesh " + file.string() +
+             " is not closed (it has boundary edges), so it has no inside; use \"fill\": \"surface\"");
   // Solid: the voxels inside the mesh's level set; surface: the voxels whose centre is within
   // half a voxel diagonal of the surface.
   const float halfDiagonal = float(0.5 * std::sqrt(3.0) * lattice.voxelSize());
@@ -150,7 +152,8 @@ VoxelSet voxelizeSet(const CondensationSet& set, const VoxelLattice& lattice,
         char threshold[32];
         std::snprintf(threshold, sizeof threshold, "%g", set.threshold);
         fail(jsonPath + ".threshold", "the drawing " + file.string() + " has no pixel darker than the threshold " +
-                                          threshold + (set.invert ? " once inverted" : "") + " inside X at resolution " + std::to_string(lattice.n));
+                                          threshold + (set.invert ? " once inverted" : "") +
+                                          " inside X at resolution " + std::to_string(lattice.n));
       }
       break;
   }

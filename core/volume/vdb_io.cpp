@@ -24,9 +24,9 @@ const Plugin& plugin() {
   static Plugin loaded;
   static std::once_flag once;
   std::call_once(once, [] {
-    const PluginLibrary library = loadPluginLibrary(kPluginFile, "GRIDIFS_VDB_IO", GRIDIFS_VDB_IO_BUILD_DIR,
-                                                    "gridifs_vdb_io_abi_version", GRIDIFS_VDB_IO_ABI_VERSION,
-                                                    "the OpenVDB library");
+    const PluginLibrary library =
+        loadPluginLibrary(kPluginFile, "GRIDIFS_VDB_IO", GRIDIFS_VDB_IO_BUILD_DIR, "gridifs_vdb_io_abi_version",
+                          GRIDIFS_VDB_IO_ABI_VERSION, "the OpenVDB library");
     if (!library.handle) {
       loaded.problem = library.problem;
       return;

@@ -7,7 +7,8 @@ namespace gridifs {
 std::shared_ptr<const CompiledIfs> compileVolumePoints(const Project& project, const DensityVolume& volume,
                                                        std::size_t points) {
   std::vector<Vec3> samples = sampleDensityVolume(volume, points, project.render.seed);
-  if (samples.empty()) throw ModelError("functions", "the volume of the median functions is empty, so there is nothing to draw");
+  if (samples.empty())
+    throw ModelError("functions", "the volume of the median functions is empty, so there is nothing to draw");
   Function f;
   f.name = "volume";
   f.kind = FunctionKind::Condensation;

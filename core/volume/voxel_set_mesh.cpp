@@ -1,7 +1,7 @@
 #include "volume/voxel_set_mesh.h"
 
-#include <atomic>
 #include <unistd.h>
+#include <atomic>
 
 #include "base/atomic_file.h"
 #include "volume/vdb_io.h"
@@ -16,9 +16,9 @@ IfsMesh voxelSetMesh(const VoxelSet& set) {
   // The OpenVDB plugin meshes grids read from files (vdb_io.h): the set goes through a temporary
   // file that the AtomicFile removes, never committed.
   static std::atomic<unsigned> counter{0};
-  const std::filesystem::path target = std::filesystem::temp_directory_path() /
-                                       ("gridifs-set-" + std::to_string(::getpid()) + "-" +
-                                        std::to_string(counter.fetch_add(1)) + ".vdb");
+  const std::filesystem::path target =
+      std::filesystem::temp_directory_path() /
+      ("gridifs-set-" + std::to_string(::getpid()) + "-" + std::to_string(counter.fetch_add(1)) + ".vdb");
   AtomicFile temporary(target);
   vdb_io::writeVolume(temporary.temporaryPath(), set.lattice, density, {});
   const vdb_io::FaceLists faces = vdb_io::gridIsoSurface(temporary.temporaryPath(), "density", 0.5f, "set");

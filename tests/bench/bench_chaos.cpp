@@ -10,7 +10,6 @@
 #include <optional>
 #include <thread>
 
-#include "tests/bench/canonical_scene.h"
 #include "flame/palette.h"
 #include "model/free_form_presets.h"
 #include "render/barycentric_kernel.h"

@@ -5,9 +5,9 @@
 
 #include <filesystem>
 
+#include "io/project_io.h"
 #include "mesh/deterministic_ifs.h"
 #include "mesh/mesh_io.h"
-#include "io/project_io.h"
 
 using namespace gridifs;
 

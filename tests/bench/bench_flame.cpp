@@ -13,9 +13,9 @@
 #include <iterator>
 #include <map>
 
+#include "io/project_io.h"
 #include "render/compiled_ifs.h"
 #include "render/flame_render.h"
-#include "io/project_io.h"
 
 namespace gridifs {
 namespace {
@@ -47,7 +47,7 @@ RenderJob jobFor(int size, std::int64_t samples) {
 }
 
 std::map<int, std::map<long long, double>> gChaos;  // size → samples → process CPU seconds
-std::map<int, double> gDevelopSeconds;                // size·2 + estimator → process CPU seconds
+std::map<int, double> gDevelopSeconds;              // size·2 + estimator → process CPU seconds
 
 /// A snapshot at `size`² filled with quality 4 (4 samples per pixel: sparse, so the density
 /// estimator does the most work) — reused by the develop benchmarks.
@@ -55,8 +55,9 @@ const RenderImage& snapshotFor(int size) {
   static std::map<int, RenderImage> cache;
   auto it = cache.find(size);
   if (it == cache.end())
-    it = cache.emplace(size, renderToCompletion(scene().ifs, jobFor(size, std::int64_t(4) * size * size),
-                                                DisplaySettings::fromProject(scene().project)))
+    it = cache
+             .emplace(size, renderToCompletion(scene().ifs, jobFor(size, std::int64_t(4) * size * size),
+                                               DisplaySettings::fromProject(scene().project)))
              .first;
   return it->second;
 }
@@ -79,8 +80,8 @@ void BM_DevelopFlame(benchmark::State& state) {
   FlameSettings settings = scene().project.render.flame;
   if (!estimator) settings.estimator_radius = 0.0;
   for (auto _ : state) {
-    FlameImage image = developFlameSnapshot(snap, settings, scene().project.camera, size, size, Vec3{0.0}, false,
-                                            kThreads, nullptr);
+    FlameImage image =
+        developFlameSnapshot(snap, settings, scene().project.camera, size, size, Vec3{0.0}, false, kThreads, nullptr);
     benchmark::DoNotOptimize(image.rgba.data());
   }
 }
@@ -89,11 +90,24 @@ void BM_DevelopFlame(benchmark::State& state) {
 // machine is doing, while wall time on a shared 2-core machine does.
 // Two sample counts per size: the slope is the cost per sample, the intercept the fixed cost
 // (per-thread buffers, snapshot merge), which matters at 4096².
-BENCHMARK(BM_ChaosGameFlame)->Args({1024, 4'000'000})->Args({1024, 16'000'000})->Args({4096, 4'000'000})
-    ->Args({4096, 16'000'000})->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()
-    ->UseRealTime()->MinTime(2.0);
-BENCHMARK(BM_DevelopFlame)->Args({1024, 1})->Args({1024, 0})->Args({4096, 1})->Args({4096, 0})
-    ->Unit(benchmark::kMillisecond)->MeasureProcessCPUTime()->UseRealTime()->MinTime(1.0);
+BENCHMARK(BM_ChaosGameFlame)
+    ->Args({1024, 4'000'000})
+    ->Args({1024, 16'000'000})
+    ->Args({4096, 4'000'000})
+    ->Args({4096, 16'000'000})
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime()
+    ->MinTime(2.0);
+BENCHMARK(BM_DevelopFlame)
+    ->Args({1024, 1})
+    ->Args({1024, 0})
+    ->Args({4096, 1})
+    ->Args({4096, 0})
+    ->Unit(benchmark::kMillisecond)
+    ->MeasureProcessCPUTime()
+    ->UseRealTime()
+    ->MinTime(1.0);
 
 /// Collects the real time per iteration of each run to print the ratios.
 class RatioReporter : public benchmark::ConsoleReporter {
@@ -133,10 +147,11 @@ int main(int argc, char** argv) {
     for (int quality : {25, 100}) {
       const double chaos = fixed + perSample * double(size) * size * quality;
       const double withDe = gDevelopSeconds[size * 2 + 1], withoutDe = gDevelopSeconds[size * 2];
-      std::printf("    quality %3d: chaos game %.2f CPU s; develop %.3f CPU s with density estimation (%.1f%% of the "
-                  "render), %.3f without (%.1f%%)\n",
-                  quality, chaos, withDe, 100.0 * withDe / (chaos + withDe), withoutDe,
-                  100.0 * withoutDe / (chaos + withoutDe));
+      std::printf(
+          "    quality %3d: chaos game %.2f CPU s; develop %.3f CPU s with density estimation (%.1f%% of the "
+          "render), %.3f without (%.1f%%)\n",
+          quality, chaos, withDe, 100.0 * withDe / (chaos + withDe), withoutDe,
+          100.0 * withoutDe / (chaos + withoutDe));
     }
   }
   benchmark::Shutdown();

@@ -6,13 +6,13 @@
 
 #include <string>
 
-#include "tests/bench/canonical_scene.h"
-#include "render/chaos_renderer.h"
-#include "render/compiled_ifs.h"
 #include "gpu/gpu_chaos_renderer.h"
 #include "io/flame_genome.h"
 #include "io/flame_import.h"
 #include "io/project_io.h"
+#include "render/chaos_renderer.h"
+#include "render/compiled_ifs.h"
+#include "tests/bench/canonical_scene.h"
 
 namespace gridifs {
 namespace {
@@ -50,7 +50,9 @@ const Project& variationScene() {
       <xform weight="1" color="0" julia="0.8" spherical="0.2" coefs="0.7 0.3 -0.3 0.7 0.3 0.1"/>
       <xform weight="0.7" color="0.7" blur="0.3" heart="0.7" coefs="0.5 -0.2 0.2 0.5 -0.5 0.3" post="0.9 0.1 -0.1 0.9 0.1 0"/>
       <xform weight="0.5" color="1" julian="1" julian_power="5" julian_dist="0.5" coefs="0.8 0 0 0.8 0 -0.4"/>
-    </flame>)")[0], {}).project;
+    </flame>)")[0],
+                                  {})
+                    .project;
     return p;
   }();
   return project;
@@ -196,11 +198,31 @@ void registerHardwareSizes() {
   }
   if (software) return;
   for (const std::int64_t samples : {std::int64_t(4'000'000'000), std::int64_t(16'000'000'000)}) {
-    benchmark::RegisterBenchmark("BM_GpuZBuffer/large", BM_GpuZBuffer)->Arg(samples)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
-    benchmark::RegisterBenchmark("BM_GpuZBuffer32BitKeys/large", BM_GpuZBuffer32BitKeys)->Arg(samples)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
-    benchmark::RegisterBenchmark("BM_GpuFlameColourSums/large", BM_GpuFlameColourSums)->Arg(samples)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
-    benchmark::RegisterBenchmark("BM_GpuFlameVariations/large", BM_GpuFlameVariations)->Arg(samples / 4)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
-    benchmark::RegisterBenchmark("BM_GpuStateMatrix/large", BM_GpuStateMatrix)->Arg(samples)->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+    benchmark::RegisterBenchmark("BM_GpuZBuffer/large", BM_GpuZBuffer)
+        ->Arg(samples)
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime()
+        ->Iterations(1);
+    benchmark::RegisterBenchmark("BM_GpuZBuffer32BitKeys/large", BM_GpuZBuffer32BitKeys)
+        ->Arg(samples)
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime()
+        ->Iterations(1);
+    benchmark::RegisterBenchmark("BM_GpuFlameColourSums/large", BM_GpuFlameColourSums)
+        ->Arg(samples)
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime()
+        ->Iterations(1);
+    benchmark::RegisterBenchmark("BM_GpuFlameVariations/large", BM_GpuFlameVariations)
+        ->Arg(samples / 4)
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime()
+        ->Iterations(1);
+    benchmark::RegisterBenchmark("BM_GpuStateMatrix/large", BM_GpuStateMatrix)
+        ->Arg(samples)
+        ->Unit(benchmark::kMillisecond)
+        ->UseRealTime()
+        ->Iterations(1);
   }
 }
 

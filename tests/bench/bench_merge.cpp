@@ -69,7 +69,7 @@ struct FlameRender {
   RenderPartHeader header;
 };
 
-const char* const kTwisted = "twisted_functions.gridifs";    // covers ~5 % of a 16:9 frame
+const char* const kTwisted = "twisted_functions.gridifs";     // covers ~5 % of a 16:9 frame
 const char* const kSwirl = "flames/swirl_spherical.gridifs";  // an imported flame: ~45 % of the frame
 
 FlameRender flameRender(int width, int height, std::int64_t samples, const std::string& asset = kTwisted) {
@@ -129,11 +129,10 @@ Written writePart(const FlameRender& r, std::int64_t k, std::int64_t parts, cons
   return writeAccumulation(r, accumulateToCompletion(r.ifs, job), k, parts, out);
 }
 
-
 struct PartSet {
   std::vector<fs::path> files;
   std::uintmax_t bytes = 0;
-  double rawBytes = 0.0;       // the buffers, as read back
+  double rawBytes = 0.0;  // the buffers, as read back
   double renderAndWriteSeconds = 0.0, writeSeconds = 0.0;
 };
 
@@ -152,11 +151,12 @@ const PartSet& parts1080() {
       s.files.push_back(file);
     }
     s.rawBytes = double(kParts) * double(r.job.width) * double(r.job.height) * (4 + 32);  // hit counts and colour sums
-    std::printf("64 parts of a %d×%d flame histogram (1920×1080 + gutter): %.1f MB in all, %.2f MB a part "
-                "(%.0f MB of buffers each); rendering them and writing them took %.1f s, of which writing "
-                "%.1f s (%.2f s a part)\n",
-                r.job.width, r.job.height, double(s.bytes) / 1e6, double(s.bytes) / 1e6 / kParts,
-                s.rawBytes / kParts / 1e6, s.renderAndWriteSeconds, s.writeSeconds, s.writeSeconds / kParts);
+    std::printf(
+        "64 parts of a %d×%d flame histogram (1920×1080 + gutter): %.1f MB in all, %.2f MB a part "
+        "(%.0f MB of buffers each); rendering them and writing them took %.1f s, of which writing "
+        "%.1f s (%.2f s a part)\n",
+        r.job.width, r.job.height, double(s.bytes) / 1e6, double(s.bytes) / 1e6 / kParts, s.rawBytes / kParts / 1e6,
+        s.renderAndWriteSeconds, s.writeSeconds, s.writeSeconds / kParts);
     return s;
   }();
   return set;

@@ -84,7 +84,14 @@ void BM_ChaosShadowLights(benchmark::State& state) {
   state.counters["points_per_second"] = double(samples) / seconds;
   state.counters["cpu_ns_per_sample"] = 1e9 * cpuSeconds / double(samples);
 }
-BENCHMARK(BM_ChaosShadowLights)->Arg(0)->Arg(1)->Arg(2)->Arg(3)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3.0);
+BENCHMARK(BM_ChaosShadowLights)
+    ->Arg(0)
+    ->Arg(1)
+    ->Arg(2)
+    ->Arg(3)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime()
+    ->MinTime(3.0);
 
 }  // namespace
 }  // namespace gridifs

@@ -20,10 +20,10 @@
 #include <string>
 #include <variant>
 
-#include "tests/core/json_track_route.h"
 #include "base/errors.h"
 #include "io/project_io.h"
 #include "model/project_time.h"
+#include "tests/core/json_track_route.h"
 
 using namespace gridifs;
 

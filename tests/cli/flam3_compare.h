@@ -114,8 +114,8 @@ inline AlphaComparison compareAlpha(const std::filesystem::path& flam3Png, const
 inline bool renderWithFlam3(const std::filesystem::path& genome, const std::filesystem::path& png,
                             const std::string& seed = "gridifs") {
   const std::string cmd = "env out=" + quote(png.string()) + " transparency=1 bpc=16 isaac_seed=" + seed +
-                          " nthreads=2 verbose=0 timeout 120 flam3-render < " +
-                          quote(genome.string()) + " > /dev/null 2>&1";
+                          " nthreads=2 verbose=0 timeout 120 flam3-render < " + quote(genome.string()) +
+                          " > /dev/null 2>&1";
   return std::system(cmd.c_str()) == 0;
 }
 

@@ -2,6 +2,7 @@
 // Runs the real gridifs executable (or any command) and captures its outcome.
 #include <unistd.h>
 
+#include <sys/wait.h>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -9,7 +10,6 @@
 #include <sstream>
 #include <string>
 #include <vector>
-#include <sys/wait.h>
 
 namespace gridifs::test_support {
 
@@ -37,10 +37,12 @@ inline std::string quote(const std::string& s) {
 inline CommandResult runGridifs(const std::string& args, const std::string& input = "", const std::string& env = "") {
   namespace fs = std::filesystem;
   static int counter = 0;
-  const fs::path base = fs::temp_directory_path() / ("gridifs-cli-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+  const fs::path base =
+      fs::temp_directory_path() / ("gridifs-cli-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
   { std::ofstream(base.string() + ".in", std::ios::binary) << input; }
-  const std::string cmd = (env.empty() ? "" : "env " + env + " ") + "timeout 60 " + quote(GRIDIFS_EXE) + " " + args + " < " + quote(base.string() + ".in") + " > " +
-                          quote(base.string() + ".out") + " 2> " + quote(base.string() + ".err");
+  const std::string cmd = (env.empty() ? "" : "env " + env + " ") + "timeout 60 " + quote(GRIDIFS_EXE) + " " + args +
+                          " < " + quote(base.string() + ".in") + " > " + quote(base.string() + ".out") + " 2> " +
+                          quote(base.string() + ".err");
   const int status = std::system(cmd.c_str());
   CommandResult r;
   r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

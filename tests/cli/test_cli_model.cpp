@@ -66,8 +66,9 @@ TEST(CliModel, InfoListsFunctionsAndContractivity) {
 
 TEST(CliModel, InfoWarnsWhenAFunctionIsNotContractive) {
   ScratchDir dir("info-warn");
-  writeText(dir.path / "expanding.gridifs",
-            R"({"format":"gridifs","version":1,"functions":[{"name":"grow","placement":{"scale":[1.2,1,1]}},{"name":"ok","placement":{"scale":[0.5,0.5,0.5]}}]})");
+  writeText(
+      dir.path / "expanding.gridifs",
+      R"({"format":"gridifs","version":1,"functions":[{"name":"grow","placement":{"scale":[1.2,1,1]}},{"name":"ok","placement":{"scale":[0.5,0.5,0.5]}}]})");
   const auto r = runGridifs("info " + quote((dir.path / "expanding.gridifs").string()));
   EXPECT_EQ(r.exitCode, 0);
   EXPECT_NE(r.err.find("warning: function 0 \"grow\" may not be contractive"), std::string::npos) << r.err;
@@ -91,8 +92,9 @@ TEST(CliModel, NodesAgreeWithTheTwistFormula) {
   // Gröller & Wegenkittl 1994, §2.3 twist about the grid center, then placement scale 0.5: node = 0.5·twist(u).
   ScratchDir dir("nodes");
   const double k = 1.3;
-  writeText(dir.path / "t.gridifs",
-            R"({"format":"gridifs","version":1,"functions":[{"name":"t","resolution":[4,5,6],"placement":{"scale":[0.5,0.5,0.5]},
+  writeText(
+      dir.path / "t.gridifs",
+      R"({"format":"gridifs","version":1,"functions":[{"name":"t","resolution":[4,5,6],"placement":{"scale":[0.5,0.5,0.5]},
                 "ops":[{"type":"twist","axis":"z","profile":"linear","k":1.3}]}]})");
   const auto r = runGridifs("nodes " + quote((dir.path / "t.gridifs").string()) + " --function 0");
   ASSERT_EQ(r.exitCode, 0) << r.err;
@@ -115,8 +117,7 @@ TEST(CliModel, EvalAgreesWithTheMagnetFormulaOnNodesAndIsTrilinearBetween) {
                 "ops":[{"type":"magnet","point":[0.5,0.5,0.5],"dmax":1.5,"strength":0.6,"falloff":2}]}]})");
   // Node (2,2,1) sits at (1,1,0): d = sqrt(0.75), f = 0.6·((1.5 − d)/1.5)².
   const double d = std::sqrt(0.75), f = 0.6 * std::pow((1.5 - d) / 1.5, 2);
-  const auto r = runGridifs("eval " + quote((dir.path / "m.gridifs").string()) + " --function m",
-                            "1 1 0\n\n5 5 0\n");
+  const auto r = runGridifs("eval " + quote((dir.path / "m.gridifs").string()) + " --function m", "1 1 0\n\n5 5 0\n");
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto rows = parseRows(r.out);
   ASSERT_EQ(rows.size(), 2u);
@@ -135,11 +136,11 @@ TEST(CliModel, EvalRejectsMalformedInputLines) {
 }
 
 TEST(CliModel, BadUsageExitsTwoWithOneSentence) {
-  for (const std::string& args : std::vector<std::string>{"nodes", "nodes " + quote(asset("default.gridifs")),
-                                 "nodes " + quote(asset("default.gridifs")) + " --function 9",
-                                 "nodes " + quote(asset("default.gridifs")) + " --function nope",
-                                 "info /definitely/not/here.gridifs", "info " + quote(asset("default.gridifs")) + " --bogus",
-                                 "--bogus-option"}) {
+  for (const std::string& args : std::vector<std::string>{
+           "nodes", "nodes " + quote(asset("default.gridifs")),
+           "nodes " + quote(asset("default.gridifs")) + " --function 9",
+           "nodes " + quote(asset("default.gridifs")) + " --function nope", "info /definitely/not/here.gridifs",
+           "info " + quote(asset("default.gridifs")) + " --bogus", "--bogus-option"}) {
     const auto r = runGridifs(args);
     EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << "\n" << r.err;

@@ -123,8 +123,8 @@ TEST(DeviceCli, VolumeOnEachDevice) {
     }
     EXPECT_LE(count(r.err, "note: rendered on the CPU"), 1u) << r.err;
   }
-  EXPECT_EQ(runGridifs("volume " + example() + " -o " + quote((dir.path / "x.vdb").string()) + " --device npu").exitCode,
-            2);
+  EXPECT_EQ(
+      runGridifs("volume " + example() + " -o " + quote((dir.path / "x.vdb").string()) + " --device npu").exitCode, 2);
   EXPECT_FALSE(fs::exists(dir.path / "x.vdb"));
 }
 

@@ -51,8 +51,8 @@ TEST(ExportFieldImage, AFieldOperationBecomesAColourMappedImage) {
   ScratchDir dir("field-image-op");
   const fs::path project = writeScene(dir.path);
   const fs::path png = dir.path / "field.png";
-  const auto r = runGridifs(exportField(project, "--op 'functions[0].ops[0]' --image " + quote(png.string()) +
-                                                     " --size 40 --palette ember --time 0.5"));
+  const auto r = runGridifs(exportField(
+      project, "--op 'functions[0].ops[0]' --image " + quote(png.string()) + " --size 40 --palette ember --time 0.5"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const Image image = readImage(png);
   ASSERT_EQ(image.width, 40);
@@ -69,9 +69,13 @@ TEST(ExportFieldImage, AFieldOperationBecomesAColourMappedImage) {
   // Deterministic, and the time moves the field.
   const fs::path again = dir.path / "again.png", later = dir.path / "later.png";
   ASSERT_EQ(runGridifs(exportField(project, "--op 'functions[0].ops[0]' --image " + quote(again.string()) +
-                                                " --size 40 --palette ember --time 0.5")).exitCode, 0);
+                                                " --size 40 --palette ember --time 0.5"))
+                .exitCode,
+            0);
   ASSERT_EQ(runGridifs(exportField(project, "--op 'functions[0].ops[0]' --image " + quote(later.string()) +
-                                                " --size 40 --palette ember --time 2")).exitCode, 0);
+                                                " --size 40 --palette ember --time 2"))
+                .exitCode,
+            0);
   EXPECT_EQ(slurp(png), slurp(again));
   EXPECT_NE(slurp(png), slurp(later));
 }
@@ -95,8 +99,9 @@ TEST(ExportFieldImage, ExrKeepsTheRawValuesOfEveryLayer) {
     }
   // One layer: one channel.
   const fs::path one = dir.path / "one.exr";
-  ASSERT_EQ(runGridifs(exportField(project, "--op 'volume.field[2]' --image " + quote(one.string()) + " --size 8"))
-                .exitCode, 0);
+  ASSERT_EQ(
+      runGridifs(exportField(project, "--op 'volume.field[2]' --image " + quote(one.string()) + " --size 8")).exitCode,
+      0);
   EXPECT_EQ(readImage(one).names, std::vector<std::string>{"Y"});
 }
 
@@ -105,8 +110,8 @@ TEST(ExportFieldImage, LayersWriteAMeshAndAnImageTogether) {
   const fs::path project = writeScene(dir.path);
   const fs::path ply = dir.path / "sheets.ply", png = dir.path / "scene.png";
   // Without --op: the volume's layers.
-  const auto r = runGridifs(exportField(project, "-o " + quote(ply.string()) + " --ascii --size 9 --image " +
-                                                     quote(png.string())));
+  const auto r = runGridifs(
+      exportField(project, "-o " + quote(ply.string()) + " --ascii --size 9 --image " + quote(png.string())));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const std::string mesh = slurp(ply);
   EXPECT_NE(mesh.find("element vertex 243"), std::string::npos);  // three sheets of 9×9

@@ -43,8 +43,9 @@ void crossCheck(const std::string& name) {
                           " transparency=1 bpc=16 isaac_seed=gridifs nthreads=2 verbose=0 timeout 60 flam3-render < " +
                           quote((data / (name + ".flam3")).string()) + " > /dev/null 2>&1";
   ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
-  const CommandResult r = runGridifs("render " + quote((data / (name + ".gridifs")).string()) + " -o " +
-                                     quote(gridifsPng.string()) + " --mode flame --transparent --bit-depth 16 --threads 2");
+  const CommandResult r =
+      runGridifs("render " + quote((data / (name + ".gridifs")).string()) + " -o " + quote(gridifsPng.string()) +
+                 " --mode flame --transparent --bit-depth 16 --threads 2");
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const AlphaComparison c = compareAlpha(flam3Png, gridifsPng, 2.0);  // gamma of make_crosscheck.py SETTINGS
   ASSERT_TRUE(c.valid);

@@ -23,7 +23,8 @@ void crossCheckGroup(const std::string& group) {
   const ScratchDir dir("flam3-variations-" + group);
   const auto genome = std::filesystem::path(GRIDIFS_TEST_DATA) / "flame" / "variations" / (group + ".flame");
   const auto project = dir.path / (group + ".gridifs");
-  const CommandResult imported = runGridifs("import-flame " + quote(genome.string()) + " -o " + quote(project.string()));
+  const CommandResult imported =
+      runGridifs("import-flame " + quote(genome.string()) + " -o " + quote(project.string()));
   ASSERT_EQ(imported.exitCode, 0) << imported.err;
   // Every variation is known: the import warns about nothing.
   EXPECT_EQ(imported.err.find("warning"), std::string::npos) << imported.err;

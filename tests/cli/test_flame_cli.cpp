@@ -213,8 +213,9 @@ TEST(FlameCli, ListAndSelectGenomes) {
   const ScratchDir dir("flame-select");
   const auto out = dir.path / "h.gridifs";
   // --grids samples the xforms onto grids to sculpt (the import of 3D genomes).
-  const CommandResult byName = runGridifs("import-flame " + quote((kData / "nonlinear.flame").string()) +
-                                          " --genome horseshoe-final --grids --resolution 24 -o " + quote(out.string()));
+  const CommandResult byName =
+      runGridifs("import-flame " + quote((kData / "nonlinear.flame").string()) +
+                 " --genome horseshoe-final --grids --resolution 24 -o " + quote(out.string()));
   ASSERT_EQ(byName.exitCode, 0) << byName.err;
   const Project p = loadProject(out);
   ASSERT_EQ(p.functions.size(), 3u);
@@ -346,8 +347,7 @@ TEST(FlameCli, ExportThenImportIsTheIdentityForProjectsWithVariations) {
     EXPECT_EQ(a.functions[f].palette_index, b.functions[f].palette_index);
     // The pre-affine grid comes back to the last bits of its coefficients.
     const auto ga = evaluateFunctionAt(a.functions[f], ""), gb = evaluateFunctionAt(b.functions[f], "");
-    for (std::size_t n = 0; n < ga->nodeCount(); ++n)
-      EXPECT_LT(glm::length(ga->nodes()[n] - gb->nodes()[n]), 1e-12);
+    for (std::size_t n = 0; n < ga->nodeCount(); ++n) EXPECT_LT(glm::length(ga->nodes()[n] - gb->nodes()[n]), 1e-12);
   }
   EXPECT_EQ(a.camera.yaw, b.camera.yaw);
   EXPECT_NEAR(a.camera.target.x, b.camera.target.x, 1e-12);

@@ -13,7 +13,7 @@ using namespace gridifs::test_support;
 namespace {
 
 const std::string kSierpinski = std::string(GRIDIFS_TEST_DATA) + "/flame/sierpinski2d.gridifs";  // mode flame
-const std::string kTwisted = std::string(GRIDIFS_ASSETS) + "/twisted_functions.gridifs";        // mode zbuffer
+const std::string kTwisted = std::string(GRIDIFS_ASSETS) + "/twisted_functions.gridifs";         // mode zbuffer
 
 struct Info {
   int width = 0, channels = 0;

@@ -51,8 +51,8 @@ TEST(ImagePlugin, ImagesAreWrittenThroughThePlugin) {
   ScratchDir dir("image-plugin-write");
   for (const char* ext : {"png", "exr", "tif"}) {
     const fs::path out = dir.path / (std::string("out.") + ext);
-    const auto r = runGridifs("render " + quote(asset("sierpinski_tetrahedron.gridifs")) + " -o " + quote(out.string()) +
-                              " --width 64 --height 48 --samples 20000 --device cpu -q");
+    const auto r = runGridifs("render " + quote(asset("sierpinski_tetrahedron.gridifs")) + " -o " +
+                              quote(out.string()) + " --width 64 --height 48 --samples 20000 --device cpu -q");
     EXPECT_EQ(r.exitCode, 0) << ext << ": " << r.err;
     EXPECT_GT(fs::exists(out) ? fs::file_size(out) : 0u, 100u) << ext;
   }

@@ -114,8 +114,8 @@ TEST(ExportPointsCli, SierpinskiPointsLieOnTheAttractor) {
   ScratchDir dir("export-points");
   const fs::path project = writeProject(dir, "s.gridifs", test::sierpinskiTetrahedron());
   const fs::path out = dir.path / "points.ply";
-  const auto r =
-      runGridifs("export-points " + quote(project.string()) + " -o " + quote(out.string()) + " --samples 200000 --threads 3");
+  const auto r = runGridifs("export-points " + quote(project.string()) + " -o " + quote(out.string()) +
+                            " --samples 200000 --threads 3");
   ASSERT_EQ(r.exitCode, 0) << r.err;
   std::vector<std::array<unsigned char, 3>> colors;
   const auto points = readPly(out, &colors);

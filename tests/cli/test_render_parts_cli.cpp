@@ -34,24 +34,24 @@ namespace fs = std::filesystem;
 
 const std::string kAssets = GRIDIFS_ASSETS;
 const std::string kTwisted = kAssets + "/twisted_functions.gridifs";
-const std::string kShaded = kAssets + "/shaded_tetrahedron.gridifs";       // render.mode "shaded", shadows
+const std::string kShaded = kAssets + "/shaded_tetrahedron.gridifs";           // render.mode "shaded", shadows
 const std::string kAnimated = kAssets + "/animation/breathing_twist.gridifs";  // tracks: camera.yaw, a twist
-const std::string kPineTrees = kAssets + "/volumes/pine_trees.gridifs";    // condensation, no median: chaos game
+const std::string kPineTrees = kAssets + "/volumes/pine_trees.gridifs";        // condensation, no median: chaos game
 
 /// What is rendered: a project, the output's extension and the options beyond the common ones
 /// (small size, 10^6 samples: 16 chunks, --device cpu).
 struct Mode {
   std::string name, project, ext;
-  std::string options;       // render options that shape the accumulation (parts get them too)
-  std::string finish;        // finishing options: given to the whole render and to merge, not to parts
-  bool volume = false;       // `gridifs volume` instead of `gridifs render`
-  bool frames = false;       // --frames 0:1: -o is a pattern, one file (or part) per frame
+  std::string options;  // render options that shape the accumulation (parts get them too)
+  std::string finish;   // finishing options: given to the whole render and to merge, not to parts
+  bool volume = false;  // `gridifs volume` instead of `gridifs render`
+  bool frames = false;  // --frames 0:1: -o is a pattern, one file (or part) per frame
   std::string samples = "1e6";
 };
 
 /// An image mode of `gridifs render`.
-Mode imageMode(const std::string& name, const std::string& project, const std::string& ext,
-               const std::string& options, const std::string& finish = "") {
+Mode imageMode(const std::string& name, const std::string& project, const std::string& ext, const std::string& options,
+               const std::string& finish = "") {
   Mode m;
   m.name = name;
   m.project = project;
@@ -197,9 +197,9 @@ void expectPartsMergeIntoTheWhole(const Mode& mode, std::vector<int> splits = {1
     for (int k = 0; k < n; ++k) {
       const std::string stem = "n" + std::to_string(n) + (mode.frames ? "_%02d_" : "_") + std::to_string(k) + ".gpart";
       const fs::path out = dir.path / stem;
-      ASSERT_TRUE(succeeds(commandOf(mode, out,
-                                     "--part " + std::to_string(k) + "/" + std::to_string(n) + " --threads " +
-                                         std::to_string(1 + k % 3))));
+      ASSERT_TRUE(succeeds(commandOf(
+          mode, out,
+          "--part " + std::to_string(k) + "/" + std::to_string(n) + " --threads " + std::to_string(1 + k % 3))));
       const std::vector<fs::path> files = outputsOf(mode, out);
       for (std::size_t f = 0; f < files.size(); ++f) {
         ASSERT_TRUE(fs::exists(files[f])) << files[f];
@@ -260,7 +260,8 @@ class MergeRefusals : public ::testing::Test {
                " --height 120 --samples 1e6 --device cpu -q --threads 2 --part " + part + " " + extra);
       return out;
     };
-    for (int k = 0; k < 3; ++k) parts_.push_back(render(kTwisted, std::to_string(k) + "/3", "p" + std::to_string(k) + ".gpart"));
+    for (int k = 0; k < 3; ++k)
+      parts_.push_back(render(kTwisted, std::to_string(k) + "/3", "p" + std::to_string(k) + ".gpart"));
     otherSeed_ = render(kTwisted, "1/3", "other_seed.gpart", "--width 160 --seed 7");
     otherProject_ = render(kAssets + "/sierpinski_tetrahedron.gridifs", "1/3", "other_project.gpart");
     otherCount_ = render(kTwisted, "1/4", "other_count.gpart");
@@ -305,7 +306,8 @@ class MergeRefusals : public ::testing::Test {
     EXPECT_EQ(r.exitCode, 2) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "one line: " << r.err;
     EXPECT_TRUE(!r.err.empty() && r.err.back() == '\n') << r.err;
-    for (const std::string& name : named) EXPECT_NE(r.err.find(name), std::string::npos) << "names " << name << ": " << r.err;
+    for (const std::string& name : named)
+      EXPECT_NE(r.err.find(name), std::string::npos) << "names " << name << ": " << r.err;
     EXPECT_FALSE(fs::exists(out)) << "a refused merge wrote " << out;
     EXPECT_EQ(entriesOf(dir_->path), before) << "a refused merge left a file behind";
     const std::string previous = "the previous image, which a refused merge leaves alone\n";
@@ -322,8 +324,8 @@ class MergeRefusals : public ::testing::Test {
 
 std::unique_ptr<ScratchDir> MergeRefusals::dir_;
 std::vector<fs::path> MergeRefusals::parts_;
-fs::path MergeRefusals::otherSeed_, MergeRefusals::otherProject_, MergeRefusals::otherCount_,
-    MergeRefusals::otherSize_, MergeRefusals::volumePart_;
+fs::path MergeRefusals::otherSeed_, MergeRefusals::otherProject_, MergeRefusals::otherCount_, MergeRefusals::otherSize_,
+    MergeRefusals::volumePart_;
 
 TEST_F(MergeRefusals, TheCompleteSetMerges) {
   ASSERT_EQ(parts_.size(), 3u);
@@ -371,11 +373,11 @@ TEST_F(MergeRefusals, APartWithAFlippedByte) {
   });
   expectRefused({parts_[0], payload, parts_[2]}, {payload.string(), "damaged"});
   // In the header (the embedded project), and in the trailer's checksum.
-  const fs::path header = editedCopy(parts_[1], "flipped_header.gpart", [](std::string& b) { b[200] = char(b[200] ^ 1); });
+  const fs::path header =
+      editedCopy(parts_[1], "flipped_header.gpart", [](std::string& b) { b[200] = char(b[200] ^ 1); });
   expectRefused({parts_[0], header, parts_[2]}, {header.string(), "damaged"});
-  const fs::path trailer = editedCopy(parts_[1], "flipped_crc.gpart", [](std::string& b) {
-    b[b.size() - 12] = char(b[b.size() - 12] ^ 0x80);
-  });
+  const fs::path trailer = editedCopy(parts_[1], "flipped_crc.gpart",
+                                      [](std::string& b) { b[b.size() - 12] = char(b[b.size() - 12] ^ 0x80); });
   expectRefused({parts_[0], trailer, parts_[2]}, {trailer.string(), "damaged"});
   for (const fs::path& p : {payload, header, trailer}) fs::remove(p);
 }
@@ -424,7 +426,7 @@ TEST(RenderPartOption, BadFormsAreRefused) {
     SCOPED_TRACE("--part \"" + part + "\"");
     const fs::path out = dir.path / "out.gpart";
     for (const std::string& verb : {"render " + quote(kTwisted) + " --samples 1e5 --width 32 --height 24",
-                                   "volume " + quote(kPineTrees) + " --samples 1e5 --resolution 16"}) {
+                                    "volume " + quote(kPineTrees) + " --samples 1e5 --resolution 16"}) {
       const CommandResult r =
           runGridifs(verb + " -o " + quote(out.string()) + " --device cpu -q --part=" + quote(part));
       EXPECT_EQ(r.exitCode, 2) << r.err;
@@ -444,8 +446,9 @@ TEST(RenderPartOption, BadFormsAreRefused) {
 TEST(RenderPartOption, APartIsWrittenOnlyAsGpart) {
   ScratchDir dir("parts-ext");
   for (const std::string ext : {"png", "exr", "tif"}) {
-    const CommandResult r = runGridifs("render " + quote(kTwisted) + " -o " + quote((dir.path / ("out." + ext)).string()) +
-                                       " --samples 1e5 --device cpu -q --part 0/2");
+    const CommandResult r =
+        runGridifs("render " + quote(kTwisted) + " -o " + quote((dir.path / ("out." + ext)).string()) +
+                   " --samples 1e5 --device cpu -q --part 0/2");
     EXPECT_EQ(r.exitCode, 2) << ext;
     EXPECT_NE(r.err.find(".gpart"), std::string::npos) << r.err;
   }
@@ -484,9 +487,9 @@ TEST(RenderPartKill, AKilledPartWriterLeavesNoPartFile) {
   const fs::path target = work / "part.gpart", reference = dir.path / "reference.gpart";
   // A flame part (colour sums: the largest buffers) big enough to take a while to write.
   auto args = [&](const fs::path& out, const std::string& samples = "3e7") {
-    return std::vector<std::string>{"render",  kTwisted,  "-o",       out.string(), "--part",     "0/1",
-                                    "--mode",  "flame",   "--width",  "1280",       "--height",   "720",
-                                    "--samples", samples, "--threads", "1",         "--device",   "cpu", "-q"};
+    return std::vector<std::string>{"render",    kTwisted,  "-o",       out.string(), "--part", "0/1",       "--mode",
+                                    "flame",     "--width", "1280",     "--height",   "720",    "--samples", samples,
+                                    "--threads", "1",       "--device", "cpu",        "-q"};
   };
   const auto start = std::chrono::steady_clock::now();
   ASSERT_EQ(waitFor(spawnGridifs(args(reference))), 0);
@@ -496,9 +499,11 @@ TEST(RenderPartKill, AKilledPartWriterLeavesNoPartFile) {
 
   auto check = [&](const std::string& when) {
     for (const std::string& entry : entriesOf(work))
-      EXPECT_TRUE(entry == "part.gpart" || entry.front() == '.') << when << ": a temporary file is not hidden: " << entry;
+      EXPECT_TRUE(entry == "part.gpart" || entry.front() == '.')
+          << when << ": a temporary file is not hidden: " << entry;
     if (!fs::exists(target)) return false;
-    EXPECT_TRUE(slurp(target) == complete) << when << ": the part file under the target's name is not the complete part";
+    EXPECT_TRUE(slurp(target) == complete)
+        << when << ": the part file under the target's name is not the complete part";
     return true;
   };
 

@@ -98,11 +98,11 @@ TEST(SetIteratesCli, DepthWritesTheSetIterateAsAVolumeOfOnes) {
 
 TEST(SetIteratesCli, PagesAreNumberedByAddressInBaseN) {
   // A third, constant map (σ = 2) onto a box: every page whose address starts with 2 is the box.
-  DrawingDir dir("setiter-pages",
-                 drawingProject(R"(, {"name": "C", "kind": "condensation",
+  DrawingDir dir("setiter-pages", drawingProject(R"(, {"name": "C", "kind": "condensation",
                                       "set": {"primitive": "box", "center": [0, -0.6, 0], "size": [0.4, 0.2, 0.2]}})",
-                                R"({"image": "bananas.png", "thickness": 0.2})"));
-  const CommandResult r = runGridifs("volume " + dir.project() + " --depth 2 --pages -o " + dir.out("p_%02d.vdb") + " -q");
+                                                 R"({"image": "bananas.png", "thickness": 0.2})"));
+  const CommandResult r =
+      runGridifs("volume " + dir.project() + " --depth 2 --pages -o " + dir.out("p_%02d.vdb") + " -q");
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_EQ(countFiles(dir.path, ".vdb"), 9u);
   for (int n = 0; n < 9; ++n) EXPECT_TRUE(fs::exists(dir.path / ("p_0" + std::to_string(n) + ".vdb"))) << n;

@@ -17,14 +17,30 @@ class ProjectSampler {
   Operation operation() {
     Operation op;
     switch (integer(0, 9)) {
-      case 0: op.params = TranslateOp{vec(-0.2, 0.2)}; break;
-      case 1: op.params = RotateOp{vec(-90, 90)}; break;
-      case 2: op.params = ScaleOp{vec(0.5, 1.2)}; break;
-      case 3: op.params = TaperOp{Axis(integer(0, 2)), Profile(integer(0, 2)), real(-0.5, 0.5), real(0.5, 4)}; break;
-      case 4: op.params = TwistOp{Axis(integer(0, 2)), Profile(integer(0, 2)), real(-2, 2), real(0.5, 4)}; break;
-      case 5: op.params = BendOp{Axis::Z, Axis(integer(0, 1)), real(-1, 1)}; break;
-      case 6: op.params = MagnetOp{vec(-1, 1), real(0.1, 1), real(-0.5, 0.5), real(0.5, 3)}; break;
-      case 7: op.params = MorphOp{{{vec(-1, -0.5), vec(-1, 1)}, {vec(0.5, 1), vec(-1, 1)}}, real(0, 1)}; break;
+      case 0:
+        op.params = TranslateOp{vec(-0.2, 0.2)};
+        break;
+      case 1:
+        op.params = RotateOp{vec(-90, 90)};
+        break;
+      case 2:
+        op.params = ScaleOp{vec(0.5, 1.2)};
+        break;
+      case 3:
+        op.params = TaperOp{Axis(integer(0, 2)), Profile(integer(0, 2)), real(-0.5, 0.5), real(0.5, 4)};
+        break;
+      case 4:
+        op.params = TwistOp{Axis(integer(0, 2)), Profile(integer(0, 2)), real(-2, 2), real(0.5, 4)};
+        break;
+      case 5:
+        op.params = BendOp{Axis::Z, Axis(integer(0, 1)), real(-1, 1)};
+        break;
+      case 6:
+        op.params = MagnetOp{vec(-1, 1), real(0.1, 1), real(-0.5, 0.5), real(0.5, 3)};
+        break;
+      case 7:
+        op.params = MorphOp{{{vec(-1, -0.5), vec(-1, 1)}, {vec(0.5, 1), vec(-1, 1)}}, real(0, 1)};
+        break;
       case 8: {
         CalculatorOp c;
         c.x = "x + v1*sin(3*y)";
@@ -35,14 +51,18 @@ class ProjectSampler {
         op.params = c;
         break;
       }
-      default: op.params = NodesOp{{{{integer(0, 3), integer(0, 3), integer(0, 3)}, vec(-0.1, 0.1)}}}; break;
+      default:
+        op.params = NodesOp{{{{integer(0, 3), integer(0, 3), integer(0, 3)}, vec(-0.1, 0.1)}}};
+        break;
     }
     const int centerKind = integer(0, 2);
     op.center.kind = Center::Kind(centerKind);
     if (centerKind == 2) op.center.point = vec(-1, 1);
     for (int b = integer(0, 2); b > 0; --b)
-      op.selection.push_back({{integer(0, 5), integer(0, 5)}, {integer(0, 5), integer(0, 5)},
-                              {integer(0, 5), integer(0, 5)}, SelectionOp(integer(0, 3))});
+      op.selection.push_back({{integer(0, 5), integer(0, 5)},
+                              {integer(0, 5), integer(0, 5)},
+                              {integer(0, 5), integer(0, 5)},
+                              SelectionOp(integer(0, 3))});
     op.muted = integer(0, 9) == 0;
     return op;
   }

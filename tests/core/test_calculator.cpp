@@ -28,15 +28,15 @@ TEST(Calculator, Figure14ExpressionMatchesTheFormula) {
 }
 
 TEST(Calculator, ProvidesTheDocumentedVariablesAndFunctions) {
-  CalculatorOp c = calc("sin(x)+cos(y)+tan(z*0.5)+asin(x*0.5)+acos(y*0.5)+atan(z)+sinh(x)+cosh(y)+tanh(z)",
-                        "log(2+x)+exp(y)+sqrt(2+z)+abs(x)+min(x,y)+max(y,z)+pow(2,x)+pi+e",
-                        "cx+cy+cz+i+2*j+3*k+v1+v2+v3");
+  CalculatorOp c =
+      calc("sin(x)+cos(y)+tan(z*0.5)+asin(x*0.5)+acos(y*0.5)+atan(z)+sinh(x)+cosh(y)+tanh(z)",
+           "log(2+x)+exp(y)+sqrt(2+z)+abs(x)+min(x,y)+max(y,z)+pow(2,x)+pi+e", "cx+cy+cz+i+2*j+3*k+v1+v2+v3");
   c.vars = {CalculatorVar{0.1, -1, 1}, CalculatorVar{0.2, -1, 1}, CalculatorVar{0.3, -1, 1}};
   const Vec3 center{0.05, -0.1, 0.2};
   expectNodes(functionWith({3, 3, 3}, {op(c, {Center::Kind::Point, center})}), [&](const Vec3& p, int i, int j, int k) {
     const double x = p.x, y = p.y, z = p.z;
-    return Vec3{std::sin(x) + std::cos(y) + std::tan(z * 0.5) + std::asin(x * 0.5) + std::acos(y * 0.5) +
-                    std::atan(z) + std::sinh(x) + std::cosh(y) + std::tanh(z),
+    return Vec3{std::sin(x) + std::cos(y) + std::tan(z * 0.5) + std::asin(x * 0.5) + std::acos(y * 0.5) + std::atan(z) +
+                    std::sinh(x) + std::cosh(y) + std::tanh(z),
                 std::log(2 + x) + std::exp(y) + std::sqrt(2 + z) + std::abs(x) + std::min(x, y) + std::max(y, z) +
                     std::pow(2, x) + M_PI + M_E,
                 center.x + center.y + center.z + i + 2 * j + 3 * k + 0.6};

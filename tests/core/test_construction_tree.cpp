@@ -60,8 +60,8 @@ ConstructionPart part(const std::string& name, const Project& content) {
 }
 
 struct TempDir {
-  fs::path path = fs::temp_directory_path() / ("gridifs-tree-" + std::to_string(::getpid()) + "-" +
-                                               std::to_string(std::rand()));
+  fs::path path =
+      fs::temp_directory_path() / ("gridifs-tree-" + std::to_string(::getpid()) + "-" + std::to_string(std::rand()));
   TempDir() { fs::create_directories(path); }
   ~TempDir() {
     std::error_code ec;
@@ -140,7 +140,8 @@ TEST(ConstructionTree, FileLeavesAreReadBesideTheProjectAndFollowTheirFile) {
   saveProject(ring(3, 0.5, "t"), dir.path / "leaves" / "triangle.gridifs");
   saveProject(ring(4, 0.4, "s"), dir.path / "leaves" / "square.gridifs");
   Project p = defaultNewProject();
-  p.construction = ConstructionTree{{}, opNode("union", {fileLeaf("leaves/triangle.gridifs"), fileLeaf("leaves/square.gridifs")})};
+  p.construction =
+      ConstructionTree{{}, opNode("union", {fileLeaf("leaves/triangle.gridifs"), fileLeaf("leaves/square.gridifs")})};
   readConstructionLeaves(p, dir.path / "tree.gridifs");
   ASSERT_EQ(p.functions.size(), 7u);
   saveProject(p, dir.path / "tree.gridifs");
@@ -169,14 +170,15 @@ TEST(ConstructionTree, BadTreesNameTheirJsonPath) {
   EXPECT_EQ(constructionOpList().rfind("union, concat, product", 0), 0u);
   EXPECT_EQ(loadWith(R"({"root": {"op": "concat", "children": [{"file": "t.gridifs"}]}})"),
             "construction.root.children: concat takes 2 operands, not 1");
-  EXPECT_EQ(loadWith(R"({"root": {"op": "union", "children": [{"file": "t.gridifs"}, {"file": "gone.gridifs"}]}})"),
-            "construction.root.children[1].file: the leaf file " + (dir.path / "gone.gridifs").string() +
-                " does not exist");
+  EXPECT_EQ(
+      loadWith(R"({"root": {"op": "union", "children": [{"file": "t.gridifs"}, {"file": "gone.gridifs"}]}})"),
+      "construction.root.children[1].file: the leaf file " + (dir.path / "gone.gridifs").string() + " does not exist");
   EXPECT_EQ(loadWith(R"({"root": {"part": "nothing"}})"),
             "construction.root.part: there is no part named \"nothing\" in construction.parts");
-  EXPECT_EQ(loadWith(R"({"root": {"file": "t.gridifs", "part": "x"}})"),
-            "construction.root: a node needs exactly one of \"file\" (a project), \"part\" (a part's name) or \"op\" (an "
-            "operation)");
+  EXPECT_EQ(
+      loadWith(R"({"root": {"file": "t.gridifs", "part": "x"}})"),
+      "construction.root: a node needs exactly one of \"file\" (a project), \"part\" (a part's name) or \"op\" (an "
+      "operation)");
   EXPECT_EQ(loadWith(R"({"parts": [{"name": "x", "functions": [{"weight": -1}]}], "root": {"part": "x"}})"),
             "construction.parts[0].functions[0].weight: expected a number between 0 and 1e+09, found -1");
   // Two IFSs without a function of the same name intersect in no word, so the intersection has no
@@ -219,7 +221,9 @@ TEST(ConstructionTree, EditsAreUndoStepsAndReevaluate) {
   EXPECT_GT(doc.project().transitions[0][3], 0.0);
   // An operation that cannot apply to these operands is refused; the document keeps its state.
   const Project before = doc.project();
-  EXPECT_NE(modelErrorText([&] { doc.apply(SetConstructionOp{{}, "intersection"}); }).find("intersection failed"),
+  EXPECT_NE(modelErrorText([&] {
+              doc.apply(SetConstructionOp{{}, "intersection"});
+            }).find("intersection failed"),
             std::string::npos);
   EXPECT_EQ(doc.project(), before);
   // Removing an operand leaves the other in the operation's place.

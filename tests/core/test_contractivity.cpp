@@ -34,7 +34,8 @@ TEST(Contractivity, BoundsTheObservedLipschitzRatio) {
       const Vec3 a{u(rng), u(rng), u(rng)};
       const Vec3 b = a + Vec3{u(rng), u(rng), u(rng)} * 0.05;
       const Vec3 fa = g.evaluate(a), fb = g.evaluate(b);
-      const double num = std::sqrt((fa.x - fb.x) * (fa.x - fb.x) + (fa.y - fb.y) * (fa.y - fb.y) + (fa.z - fb.z) * (fa.z - fb.z));
+      const double num =
+          std::sqrt((fa.x - fb.x) * (fa.x - fb.x) + (fa.y - fb.y) * (fa.y - fb.y) + (fa.z - fb.z) * (fa.z - fb.z));
       const double den = std::sqrt((a.x - b.x) * (a.x - b.x) + (a.y - b.y) * (a.y - b.y) + (a.z - b.z) * (a.z - b.z));
       worst = std::max(worst, num / den);
     }

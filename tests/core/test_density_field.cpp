@@ -105,7 +105,8 @@ TEST(DensityField, EachVisitedVoxelIsWeightedByTheFieldAtItsCentre) {
   std::vector<double> expected(before.density.size());
   double largest = 0.0;
   for (std::uint32_t v = 0; v < expected.size(); ++v) {
-    expected[v] = before.density[v] > 0.0f ? before.density[v] * densityFieldWeight(field, before.lattice.centre(v), t) : 0.0;
+    expected[v] =
+        before.density[v] > 0.0f ? before.density[v] * densityFieldWeight(field, before.lattice.centre(v), t) : 0.0;
     largest = std::max(largest, expected[v]);
   }
   ASSERT_GT(largest, 0.0);

@@ -6,9 +6,9 @@
 
 #include <algorithm>
 
+#include "deterministic_samples.h"
 #include "mesh/base_mesh.h"
 #include "model_error_text.h"
-#include "deterministic_samples.h"
 
 using namespace gridifs;
 using namespace gridifs::test_support;
@@ -191,9 +191,10 @@ TEST(BaseMesh, BadFilesAreRefusedNamingTheFile) {
             "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n\x01\x02");
   writeFile(folder / "notes.txt", "hello");
   writeFile(folder / "hostile.off", "OFF\n900000000 900000000 0\n0 0 0\n");  // declares far more than it holds
-  writeFile(folder / "hostile.ply", "ply\nformat ascii 1.0\nelement vertex 4000000000\nproperty float x\n"
-                                    "property float y\nproperty float z\nelement face 1\n"
-                                    "property list uchar int vertex_indices\nend_header\n0 0 0\n");
+  writeFile(folder / "hostile.ply",
+            "ply\nformat ascii 1.0\nelement vertex 4000000000\nproperty float x\n"
+            "property float y\nproperty float z\nelement face 1\n"
+            "property list uchar int vertex_indices\nend_header\n0 0 0\n");
   {
     std::string stl(84, '\0');  // binary STL: 80-byte header, then the triangle count
     const std::uint32_t triangles = 2'000'000'000u;
@@ -206,11 +207,11 @@ TEST(BaseMesh, BadFilesAreRefusedNamingTheFile) {
     const char* name;
     const char* expect;
   };
-  for (const Case c : {Case{"missing.obj", "cannot read"}, Case{"empty.obj", "empty"}, Case{"points.ply", "no faces"},
-                       Case{"vertices_only.obj", "no faces"}, Case{"fin.obj", "not a manifold"},
-                       Case{"bowtie.obj", "not a manifold"}, Case{"truncated.ply", ""}, Case{"hostile.off", "header declares"},
-                       Case{"hostile.ply", "header declares"}, Case{"hostile.stl", "header declares"},
-                       Case{"notes.txt", "not a mesh file"}, Case{"folder.obj", "folder"}}) {
+  for (const Case c :
+       {Case{"missing.obj", "cannot read"}, Case{"empty.obj", "empty"}, Case{"points.ply", "no faces"},
+        Case{"vertices_only.obj", "no faces"}, Case{"fin.obj", "not a manifold"}, Case{"bowtie.obj", "not a manifold"},
+        Case{"truncated.ply", ""}, Case{"hostile.off", "header declares"}, Case{"hostile.ply", "header declares"},
+        Case{"hostile.stl", "header declares"}, Case{"notes.txt", "not a mesh file"}, Case{"folder.obj", "folder"}}) {
     const std::string message = errorOf(fileSpec(path(c.name)));
     EXPECT_NE(message.find(path(c.name)), std::string::npos) << c.name << ": " << message;
     EXPECT_NE(message.find(c.expect), std::string::npos) << c.name << ": " << message;

@@ -7,10 +7,10 @@
 #include <limits>
 #include <sstream>
 
+#include "deterministic_samples.h"
 #include "edit/document.h"
 #include "mesh/deterministic_ifs.h"
 #include "model/stack_evaluator.h"
-#include "deterministic_samples.h"
 
 using namespace gridifs;
 using namespace gridifs::test_support;

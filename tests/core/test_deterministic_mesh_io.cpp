@@ -5,10 +5,10 @@
 #include <OpenMesh/Core/IO/MeshIO.hh>
 #include <algorithm>
 
+#include "deterministic_samples.h"
+#include "io/project_io.h"
 #include "mesh/deterministic_ifs.h"
 #include "mesh/mesh_io.h"
-#include "io/project_io.h"
-#include "deterministic_samples.h"
 
 using namespace gridifs;
 using namespace gridifs::test_support;

@@ -53,7 +53,13 @@ TEST(Document, InvalidEditsAreRejectedAndChangeNothing) {
   const Project before = doc.project();
   CalculatorOp broken;
   broken.x = "x +* 2";
-  EXPECT_THROW(doc.edit("calc", [&](Project& p) { Operation op; op.params = broken; p.functions[0].ops.push_back(op); }), ModelError);
+  EXPECT_THROW(doc.edit("calc",
+                        [&](Project& p) {
+                          Operation op;
+                          op.params = broken;
+                          p.functions[0].ops.push_back(op);
+                        }),
+               ModelError);
   EXPECT_EQ(doc.project(), before);
   EXPECT_FALSE(doc.canUndo());
   EXPECT_FALSE(doc.dirty());

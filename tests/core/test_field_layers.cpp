@@ -205,7 +205,9 @@ TEST(FieldLayers, AListOfLayersLoadsSavesAndValidates) {
   EXPECT_EQ(errorPath([](nlohmann::json& j) { j["volume"]["field"][1]["role"] = "fog"; }), "volume.field[1].role");
   EXPECT_EQ(errorPath([](nlohmann::json& j) { j["volume"]["field"][2]["blend"] = 1.5; }), "volume.field[2].blend");
   EXPECT_EQ(errorPath([](nlohmann::json& j) { j["volume"]["field"][2]["softness"] = 0; }), "volume.field[2].softness");
-  EXPECT_EQ(errorPath([](nlohmann::json& j) { j["volume"]["field"][2]["shape"] = {{"mesh", "a.obj"}}; }),
+  EXPECT_EQ(errorPath([](nlohmann::json& j) {
+              j["volume"]["field"][2]["shape"] = {{"mesh", "a.obj"}};
+            }),
             "volume.field[2].shape");
   EXPECT_EQ(errorPath([](nlohmann::json& j) { j["volume"]["field"][0]["octaves"] = 40; }), "volume.field[0].octaves");
 }
@@ -226,7 +228,8 @@ TEST(FieldLayers, TerrainAndCloudLayersAddTheirDensity) {
     for (int j = 0; j < 24; ++j)
       for (int i = 0; i < 24; ++i) {
         const Vec3 c = volume.lattice.centre(i, j, k);
-        const double ground = terrain.height + terrain.strength * fieldLayerValue(terrain, {c.x, c.y, terrain.height}, t);
+        const double ground =
+            terrain.height + terrain.strength * fieldLayerValue(terrain, {c.x, c.y, terrain.height}, t);
         const double g = std::clamp(cloud.strength * fieldLayerValue(cloud, {c.x, c.y, cloud.height}, t), 0.0, 1.0);
         // Voxels within a rounding of the surfaces are left out.
         if (std::abs(c.z - ground) < 1e-4 || std::abs(std::abs(c.z - cloud.height) - 0.5 * g * cloud.thickness) < 1e-4)

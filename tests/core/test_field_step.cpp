@@ -68,7 +68,8 @@ TEST(FieldStep, EqualsThePointByPointFieldOnScatteredPoints) {
     for (FieldInterpolation interpolation : kBoth) {
       const FractalField field(windyField(interpolation, seed));
       for (double t : kTimes)
-        EXPECT_LE(largestDeviation(field, points, mask, t, 2), kRounding) << toString(interpolation) << t << " " << seed;
+        EXPECT_LE(largestDeviation(field, points, mask, t, 2), kRounding)
+            << toString(interpolation) << t << " " << seed;
     }
 }
 

@@ -95,7 +95,7 @@ TEST(FlameFilter, DensityEstimationSmoothsSparseBucketsAndKeepsDenseOnesSharp) {
   const int w = 64, h = 64;
   FlameHistogram hist(w, h);
   const Rgb white{1, 1, 1};
-  hist.add(16, 32, white);                                  // one lonely sample
+  hist.add(16, 32, white);                                 // one lonely sample
   for (int n = 0; n < 5000; ++n) hist.add(48, 32, white);  // a dense bucket
   const LogDensityScale scale = logDensityScale(4.0, 1e5, 20.0, 1);
   const DensityEstimator de(9.0, 0.0, 0.4, 1);

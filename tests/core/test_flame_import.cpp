@@ -7,12 +7,12 @@
 #include <complex>
 #include <random>
 
+#include "deterministic_samples.h"
 #include "io/flame_export.h"
 #include "io/flame_genome.h"
 #include "io/flame_import.h"
 #include "io/project_io.h"
 #include "model/stack_evaluator.h"
-#include "deterministic_samples.h"
 
 using namespace gridifs;
 
@@ -152,9 +152,9 @@ TEST(FlameVariations, SpotValuesMatchTheClosedForms) {
 }
 
 TEST(FlameVariations, RandomOnesAreInTheTable) {
-  for (const char* name : {"julia", "blur", "noise", "julian", "juliascope", "gaussian_blur", "radial_blur", "pie",
-                           "arch", "square", "rays", "blade", "twintrian", "super_shape", "flower", "conic",
-                           "parabola", "boarders", "cpow", "pre_blur", "wedge_julia"}) {
+  for (const char* name : {"julia",  "blur",  "noise",    "julian",   "juliascope", "gaussian_blur", "radial_blur",
+                           "pie",    "arch",  "square",   "rays",     "blade",      "twintrian",     "super_shape",
+                           "flower", "conic", "parabola", "boarders", "cpow",       "pre_blur",      "wedge_julia"}) {
     EXPECT_TRUE(isRandomFlameVariation(name)) << name;
     EXPECT_NE(findFlameVariation(name), nullptr) << name;
   }

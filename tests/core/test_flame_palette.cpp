@@ -22,7 +22,8 @@ std::string readFile(const std::filesystem::path& p) {
 TEST(FlamePalette, ParsesFlam3EntriesAs00RRGGBB) {
   std::string data;
   for (int i = 0; i < 256; ++i) data += i == 0 ? "00ff8000" : "00000000";
-  const auto palettes = parseFlam3Palettes("<palettes>\n<palette number=\"0\" name=\"x\" data=\"" + data + "\"/>\n</palettes>");
+  const auto palettes =
+      parseFlam3Palettes("<palettes>\n<palette number=\"0\" name=\"x\" data=\"" + data + "\"/>\n</palettes>");
   ASSERT_EQ(palettes.size(), 1u);
   EXPECT_EQ(palettes[0].name, "x");
   EXPECT_FLOAT_EQ(palettes[0].colors[0].r, 1.f);
@@ -67,8 +68,8 @@ TEST(FlamePalette, JsonRoundTripAndInterpolatedStops) {
     EXPECT_NEAR(back.colors[i].r, ember.colors[i].r, 1e-4);
     EXPECT_NEAR(back.colors[i].b, ember.colors[i].b, 1e-4);
   }
-  const Palette three = parsePaletteJson(
-      R"({"format": "gridifs-palette", "name": "t", "colors": [[1,0,0],[0,1,0],[0,0,1]]})");
+  const Palette three =
+      parsePaletteJson(R"({"format": "gridifs-palette", "name": "t", "colors": [[1,0,0],[0,1,0],[0,0,1]]})");
   EXPECT_EQ(three.colors[0], (Rgb{1, 0, 0}));
   EXPECT_EQ(three.colors[255], (Rgb{0, 0, 1}));
   EXPECT_NEAR(three.colors[128].g, 1.0, 0.01);

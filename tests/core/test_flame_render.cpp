@@ -120,8 +120,9 @@ TEST(FlameRender, DevelopsASupersampledSnapshotAndWritesImages) {
     OIIO::TypeDesc format;
     int channels;
   };
-  for (const Case& c : {Case{"a.png", 8, false, OIIO::TypeDesc::UINT8, 3}, Case{"b.png", 16, true, OIIO::TypeDesc::UINT16, 4},
-                        Case{"c.exr", 32, true, OIIO::TypeDesc::FLOAT, 4}, Case{"d.exr", 16, true, OIIO::TypeDesc::HALF, 4}}) {
+  for (const Case& c :
+       {Case{"a.png", 8, false, OIIO::TypeDesc::UINT8, 3}, Case{"b.png", 16, true, OIIO::TypeDesc::UINT16, 4},
+        Case{"c.exr", 32, true, OIIO::TypeDesc::FLOAT, 4}, Case{"d.exr", 16, true, OIIO::TypeDesc::HALF, 4}}) {
     const auto file = folder / c.name;
     writeFlameImage(image, file, c.bits, c.alpha);
     auto in = OIIO::ImageInput::open(file.string());

@@ -288,7 +288,8 @@ TEST(FractalField, VertexValuesShowNoStructureInTheirHistogramOrMagnitudes) {
   // beyond 8 of them.
   for (int a = 0; a < 3; ++a) {
     double chi2 = 0.0;
-    for (int count : histogram[a]) chi2 += (count - n / double(kBins)) * (count - n / double(kBins)) / (n / double(kBins));
+    for (int count : histogram[a])
+      chi2 += (count - n / double(kBins)) * (count - n / double(kBins)) / (n / double(kBins));
     EXPECT_LT(chi2, 60.0) << "axis " << a;
   }
   // The means of the products have a standard deviation of (4/45)/sqrt(n) ≈ 0.0006; the bounds

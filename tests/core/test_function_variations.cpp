@@ -28,7 +28,8 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 /// A genome with deterministic, dependent and parametric variations and a post map.
-const char* kGenome = R"(<flame name="mix" size="320 240" center="0.3 -0.2" scale="70" rotate="40" quality="10" palette="5">
+const char* kGenome =
+    R"(<flame name="mix" size="320 240" center="0.3 -0.2" scale="70" rotate="40" quality="10" palette="5">
   <xform weight="1" color="0" swirl="0.6" spherical="0.4" coefs="0.6 0.25 -0.25 0.6 0.3 0.1"/>
   <xform weight="0.8" color="0.5" popcorn="0.5" linear="0.5" coefs="0.5 -0.1 0.2 0.55 -0.4 0.2" post="0.9 0.1 -0.1 0.9 0.05 0"/>
   <xform weight="0.6" color="1" rings2="0.7" rings2_val="0.4" heart="0.3" coefs="0.7 0 0 0.7 0 -0.3"/>
@@ -66,7 +67,8 @@ TEST(FunctionVariations, TheCompiledMapIsTheGenomesMapOnTheWholePlane) {
       // The chain's point is float and the grid interpolates in float: the map agrees to what a
       // relative change of 1e-6 in its input does (popcorn's tan(3y) amplifies it near its poles).
       double sensitivity = 0.0;
-      for (const FlamePoint d : {FlamePoint{1e-6 * (1 + std::fabs(p.x)), 0}, FlamePoint{0, 1e-6 * (1 + std::fabs(p.y))}}) {
+      for (const FlamePoint d :
+           {FlamePoint{1e-6 * (1 + std::fabs(p.x)), 0}, FlamePoint{0, 1e-6 * (1 + std::fabs(p.y))}}) {
         const FlamePoint moved = genome.xforms[i].apply({p.x + d.x, p.y + d.y, 0.0});
         sensitivity = std::max(sensitivity, std::hypot(moved.x - expected.x, moved.y - expected.y));
       }

@@ -60,7 +60,8 @@ TEST(Grid, AffineGridsReproduceAffineMaps) {
     for (double& v : row) v = 0.4 * u(rng);
   const Vec3 b{u(rng) * 0.3, u(rng) * 0.3, u(rng) * 0.3};
   auto affine = [&](const Vec3& p) {
-    return Vec3{a[0][0] * p.x + a[0][1] * p.y + a[0][2] * p.z + b.x, a[1][0] * p.x + a[1][1] * p.y + a[1][2] * p.z + b.y,
+    return Vec3{a[0][0] * p.x + a[0][1] * p.y + a[0][2] * p.z + b.x,
+                a[1][0] * p.x + a[1][1] * p.y + a[1][2] * p.z + b.y,
                 a[2][0] * p.x + a[2][1] * p.y + a[2][2] * p.z + b.z};
   };
   Grid g({3, 6, 4});

@@ -39,7 +39,8 @@ TEST(KernelMath, SinCosAtan2AreAccurateFarBelowFloat) {
   // The library's values where the reduction does not apply: zeros, infinities, NaN, huge arguments.
   for (const double x : {0.0, -0.0, 1e6, -3e7}) EXPECT_EQ(kernel_math::sin(x), std::sin(x)) << x;
   for (const double y : {0.0, -0.0, 1.0, -1.0})
-    for (const double x : {0.0, -0.0, 2.0, -2.0}) EXPECT_NEAR(kernel_math::atan2(y, x), std::atan2(y, x), 1e-9) << y << ", " << x;
+    for (const double x : {0.0, -0.0, 2.0, -2.0})
+      EXPECT_NEAR(kernel_math::atan2(y, x), std::atan2(y, x), 1e-9) << y << ", " << x;
   EXPECT_TRUE(std::isnan(kernel_math::cos(NAN)) && std::isnan(kernel_math::sin(INFINITY)));
   EXPECT_TRUE(std::isnan(kernel_math::atan2(NAN, 1.0)));
 }
@@ -63,8 +64,8 @@ TEST(KernelVariations, EveryVariationAgreesWithTheReferencePath) {
       const FlamePoint got = evaluateKernelVariations(&kernel, 1, v.pre, p, coefs, &s2);
       EXPECT_EQ(s1, s2) << v.name << ": the kernel path draws differently";
       EXPECT_TRUE(close(got.x, want.x) && close(got.y, want.y) && close(got.z, want.z))
-          << v.name << " at (" << p.x << ", " << p.y << ", " << p.z << "): kernel (" << got.x << ", " << got.y
-          << ", " << got.z << "), reference (" << want.x << ", " << want.y << ", " << want.z << ")";
+          << v.name << " at (" << p.x << ", " << p.y << ", " << p.z << "): kernel (" << got.x << ", " << got.y << ", "
+          << got.z << "), reference (" << want.x << ", " << want.y << ", " << want.z << ")";
     }
   }
 }

@@ -15,9 +15,12 @@ struct Frame {
 };
 Frame frameOf(Axis axis) {
   switch (axis) {
-    case Axis::X: return {1, 2, 0};
-    case Axis::Y: return {2, 0, 1};
-    default: return {0, 1, 2};
+    case Axis::X:
+      return {1, 2, 0};
+    case Axis::Y:
+      return {2, 0, 1};
+    default:
+      return {0, 1, 2};
   }
 }
 
@@ -135,8 +138,8 @@ TEST(Operations, BendFollowsBarrsFormula) {
 
 TEST(Operations, BendIsSmoothAsCurvatureVanishes) {
   const Index3 res{4, 5, 6};
-  expectNodes(functionWith(res, {op(BendOp{Axis::Z, Axis::Y, 0.0})}), [](const Vec3& u, int, int, int) { return u; },
-              0.0);
+  expectNodes(
+      functionWith(res, {op(BendOp{Axis::Z, Axis::Y, 0.0})}), [](const Vec3& u, int, int, int) { return u; }, 0.0);
   const Grid small = evaluateFunction(functionWith(res, {op(BendOp{Axis::Z, Axis::Y, 1e-7})}));
   const Grid identity(res);
   for (std::size_t n = 0; n < small.nodeCount(); ++n) {
@@ -240,9 +243,7 @@ TEST(Operations, SelectionCenterIsTheCentroidOfSelectedNodes) {
     for (int j = 2; j <= 3; ++j) centroid += u.node(i, j, 1), ++count;
   centroid /= double(count);
   expectNodes(functionWith(res, {op(ScaleOp{Vec3{0.0}}, {Center::Kind::Selection, {}}, {box})}),
-              [&](const Vec3& p, int i, int j, int k) {
-                return (i <= 1 && j >= 2 && k == 1) ? centroid : p;
-              });
+              [&](const Vec3& p, int i, int j, int k) { return (i <= 1 && j >= 2 && k == 1) ? centroid : p; });
 }
 
 TEST(Operations, GridCenterIsTheCentroidOfTheCurrentNodes) {
@@ -269,7 +270,8 @@ TEST(Operations, PlacementIsTranslateRotateScale) {
 }
 
 TEST(Operations, StackEditsReevaluate) {
-  Function f = functionWith({4, 4, 4}, {op(TranslateOp{Vec3{0.1, 0, 0}}), op(ScaleOp{Vec3{2, 2, 2}}, {Center::Kind::Point, {}})});
+  Function f = functionWith({4, 4, 4},
+                            {op(TranslateOp{Vec3{0.1, 0, 0}}), op(ScaleOp{Vec3{2, 2, 2}}, {Center::Kind::Point, {}})});
   // translate then scale about the origin
   expectNodes(f, [](const Vec3& u, int, int, int) { return (u + Vec3{0.1, 0, 0}) * 2.0; });
   std::swap(f.ops[0], f.ops[1]);  // reorder

@@ -306,7 +306,8 @@ TEST(ProjectEdits, MatrixAndSetEdits) {
   EXPECT_EQ(SetSetFill(s, SetFill::Surface).label(), "Fill surface");
   EXPECT_EQ(applied(mesh, SetSetGrid{s, "density"}).functions[1].set.grid, "density");
   EXPECT_DOUBLE_EQ(applied(sets, SetMedianRotation{s, 15.0, std::nullopt}).functions[1].rotate, 15.0);
-  EXPECT_EQ(applied(sets, SetMedianRotation{s, 15.0, Vec3{1.0, 0.0, 0.0}}).functions[1].rotate_axis, (Vec3{1.0, 0.0, 0.0}));
+  EXPECT_EQ(applied(sets, SetMedianRotation{s, 15.0, Vec3{1.0, 0.0, 0.0}}).functions[1].rotate_axis,
+            (Vec3{1.0, 0.0, 0.0}));
 }
 
 TEST(ProjectEdits, InvalidReferencesThrowAndLeaveTheDocumentUntouched) {

@@ -92,35 +92,48 @@ TEST(ProjectIo, ErrorsNameTheJsonPath) {
   auto withOp = [](const std::string& op) {
     return R"({"format":"gridifs","version":1,"functions":[{"name":"a"},{"name":"b","ops":[)" + op + "]}]}";
   };
-  EXPECT_EQ(errorOf(withOp(R"({"type":"taper","k":"big"})")), "functions[1].ops[0].k: expected a number, found a string");
-  EXPECT_NE(errorOf(withOp(R"({"type":"warp"})")).find("functions[1].ops[0].type: unknown operation \"warp\""), std::string::npos);
+  EXPECT_EQ(errorOf(withOp(R"({"type":"taper","k":"big"})")),
+            "functions[1].ops[0].k: expected a number, found a string");
+  EXPECT_NE(errorOf(withOp(R"({"type":"warp"})")).find("functions[1].ops[0].type: unknown operation \"warp\""),
+            std::string::npos);
   EXPECT_NE(errorOf(withOp(R"({"type":"calculator","x":"x+"})")).find("functions[1].ops[0].x:"), std::string::npos);
   EXPECT_NE(errorOf(withOp(R"({"type":"calculator","y":"q*2"})")).find("functions[1].ops[0].y:"), std::string::npos);
-  EXPECT_NE(errorOf(withOp(R"({"type":"morph","pairs":[[[0,0,0],[1,0,0]],[[0,0,0],[0,1,0]]]})")).find("functions[1].ops[0].pairs:"),
+  EXPECT_NE(errorOf(withOp(R"({"type":"morph","pairs":[[[0,0,0],[1,0,0]],[[0,0,0],[0,1,0]]]})"))
+                .find("functions[1].ops[0].pairs:"),
             std::string::npos);
-  EXPECT_NE(errorOf(withOp(R"({"type":"bend","axis":"y","toward":"y"})")).find("functions[1].ops[0].toward"), std::string::npos);
-  EXPECT_NE(errorOf(withOp(R"({"type":"scale","factors":[1,1]})")).find("functions[1].ops[0].factors"), std::string::npos);
-  EXPECT_NE(errorOf(withOp(R"({"type":"twist","selection":[{"i":[0,-1]}]})")).find("functions[1].ops[0].selection[0].i[1]"),
+  EXPECT_NE(errorOf(withOp(R"({"type":"bend","axis":"y","toward":"y"})")).find("functions[1].ops[0].toward"),
             std::string::npos);
+  EXPECT_NE(errorOf(withOp(R"({"type":"scale","factors":[1,1]})")).find("functions[1].ops[0].factors"),
+            std::string::npos);
+  EXPECT_NE(
+      errorOf(withOp(R"({"type":"twist","selection":[{"i":[0,-1]}]})")).find("functions[1].ops[0].selection[0].i[1]"),
+      std::string::npos);
 }
 
 TEST(ProjectIo, RejectsHostileTopLevels) {
   EXPECT_NE(errorOf("").find("empty"), std::string::npos);
   EXPECT_NE(errorOf("not json").find("not valid JSON"), std::string::npos);
   EXPECT_NE(errorOf(R"({"format":"gridifs","version":1,"functions":[{"na)").find("truncated"), std::string::npos);
-  EXPECT_NE(errorOf(R"({"format":"gridifs","version":7,"functions":[]})").find("unsupported version 7"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"format":"gridifs","version":7,"functions":[]})").find("unsupported version 7"),
+            std::string::npos);
   EXPECT_NE(errorOf(R"({"format":"other","version":1})").find("format"), std::string::npos);
-  EXPECT_NE(errorOf(R"({"format":"gridifs","version":1,"functions":[{"resolution":[1,4,4]}]})").find("functions[0].resolution[0]"),
+  EXPECT_NE(errorOf(R"({"format":"gridifs","version":1,"functions":[{"resolution":[1,4,4]}]})")
+                .find("functions[0].resolution[0]"),
             std::string::npos);
-  EXPECT_NE(errorOf(R"({"format":"gridifs","version":1,"functions":[{"resolution":[100000,4,4]}]})").find("resolution[0]"),
+  EXPECT_NE(
+      errorOf(R"({"format":"gridifs","version":1,"functions":[{"resolution":[100000,4,4]}]})").find("resolution[0]"),
+      std::string::npos);
+  EXPECT_NE(errorOf(R"({"format":"gridifs","version":1,"functions":[{"weight":-1}]})").find("functions[0].weight"),
             std::string::npos);
-  EXPECT_NE(errorOf(R"({"format":"gridifs","version":1,"functions":[{"weight":-1}]})").find("functions[0].weight"), std::string::npos);
-  EXPECT_NE(errorOf(R"({"format":"gridifs","version":1,"functions":[{"weight":0},{"weight":0}]})").find("weight"), std::string::npos);
-  EXPECT_NE(errorOf(R"({"format":"gridifs","version":1,"functions":[{"weight":1e999}]})").find("too large"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"format":"gridifs","version":1,"functions":[{"weight":0},{"weight":0}]})").find("weight"),
+            std::string::npos);
+  EXPECT_NE(errorOf(R"({"format":"gridifs","version":1,"functions":[{"weight":1e999}]})").find("too large"),
+            std::string::npos);
   std::string deep = R"({"format":"gridifs","version":1,"functions":[{"name":"a","x":)" + std::string(100000, '[') +
                      std::string(100000, ']') + "}]}";
   EXPECT_NE(errorOf(deep).find("nested"), std::string::npos);
-  std::string longName = R"({"format":"gridifs","version":1,"functions":[{"name":")" + std::string(1 << 20, 'a') + "\"}]}";
+  std::string longName =
+      R"({"format":"gridifs","version":1,"functions":[{"name":")" + std::string(1 << 20, 'a') + "\"}]}";
   EXPECT_NE(errorOf(longName).find("functions[0].name"), std::string::npos);
   std::string many = R"({"format":"gridifs","version":1,"functions":[)";
   for (int i = 0; i < 100000; ++i) many += (i ? ",{}" : "{}");
@@ -176,12 +189,17 @@ TEST(ProjectIo, FullDiskLeavesTheOldFileIntact) {
   TempDir dir;
   const fs::path mountPoint = dir.path / "disk";
   fs::create_directories(mountPoint);
-  if (::geteuid() != 0 || std::system(("mount -t tmpfs -o size=64k tmpfs '" + mountPoint.string() + "' 2>/dev/null").c_str()) != 0)
+  if (::geteuid() != 0 ||
+      std::system(("mount -t tmpfs -o size=64k tmpfs '" + mountPoint.string() + "' 2>/dev/null").c_str()) != 0)
     GTEST_SKIP() << "cannot mount a small tmpfs here";
   const fs::path file = mountPoint / "p.gridifs";
   saveProject(parseProject(kMinimal), file);
   const std::string before = readFile(file);
-  { std::ofstream fill(mountPoint / "filler", std::ios::binary); std::string block(4096, 'x'); for (int i = 0; i < 64; ++i) fill << block; }
+  {
+    std::ofstream fill(mountPoint / "filler", std::ios::binary);
+    std::string block(4096, 'x');
+    for (int i = 0; i < 64; ++i) fill << block;
+  }
   Project big = parseProject(kMinimal);
   big.functions[0].name = std::string(200, 'n');
   for (int i = 0; i < 200; ++i) {
@@ -192,7 +210,8 @@ TEST(ProjectIo, FullDiskLeavesTheOldFileIntact) {
   EXPECT_THROW(saveProject(big, file), IoError);
   EXPECT_EQ(readFile(file), before);
   int leftovers = 0;
-  for (const auto& entry : fs::directory_iterator(mountPoint)) leftovers += entry.path().filename().string().find(".tmp") != std::string::npos;
+  for (const auto& entry : fs::directory_iterator(mountPoint))
+    leftovers += entry.path().filename().string().find(".tmp") != std::string::npos;
   EXPECT_EQ(leftovers, 0);
   std::system(("umount '" + mountPoint.string() + "'").c_str());
 }
@@ -230,8 +249,8 @@ TEST(ProjectIo, EveryExampleLoadsAndEvaluates) {
 TEST(ProjectIo, EveryShippedProjectSavesAsItAlwaysHas) {
   const fs::path saved = fs::path(GRIDIFS_TEST_DATA) / "saved";
   int count = 0;
-  for (const auto& [root, tag] : {std::pair<fs::path, std::string>{GRIDIFS_ASSETS, "assets"},
-                                  {fs::path(GRIDIFS_TEST_DATA) / "flame", "flame"}}) {
+  for (const auto& [root, tag] :
+       {std::pair<fs::path, std::string>{GRIDIFS_ASSETS, "assets"}, {fs::path(GRIDIFS_TEST_DATA) / "flame", "flame"}}) {
     for (const auto& entry : fs::recursive_directory_iterator(root)) {
       if (entry.path().extension() != ".gridifs") continue;
       ++count;

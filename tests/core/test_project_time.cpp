@@ -67,8 +67,8 @@ ParameterLookup lookup(const Project& project, const std::string& path) {
 }
 
 // A grid function with every operation, a center point, a selection and a muted operation; a
-// function with flame variations and a post map, a final function with a post matrix, transitions, a volume with a field, a timeline with a shutter, flame and
-// shading settings that are written only when changed.
+// function with flame variations and a post map, a final function with a post matrix, transitions, a volume with a
+// field, a timeline with a shutter, flame and shading settings that are written only when changed.
 const char* const kEveryGridField = R"({
   "format": "gridifs", "version": 1, "time": 0.5,
   "animation": {"fps": 24, "start": 0, "end": 4, "loop": true, "shutter": 0.25},

@@ -154,7 +154,8 @@ TEST(AccumulationAdd, KeysAndLightDepthsByMinimumCountsAndSumsByAddition) {
   for (std::size_t i = 0; i < 6; ++i) {
     EXPECT_EQ(sum.keys[i], std::min(a.keys[i], b.keys[i]));
     EXPECT_EQ(sum.density[i], a.density[i] + b.density[i]);
-    for (std::size_t c = 0; c < 4; ++c) EXPECT_EQ(sum.colorSums[4 * i + c], a.colorSums[4 * i + c] + b.colorSums[4 * i + c]);
+    for (std::size_t c = 0; c < 4; ++c)
+      EXPECT_EQ(sum.colorSums[4 * i + c], a.colorSums[4 * i + c] + b.colorSums[4 * i + c]);
   }
   for (std::size_t i = 0; i < a.lightDepth[0].size(); ++i)
     EXPECT_EQ(sum.lightDepth[0][i], std::min(a.lightDepth[0][i], b.lightDepth[0][i]));

@@ -6,10 +6,10 @@
 #include <set>
 #include <thread>
 
+#include "model/stack_evaluator.h"
 #include "render/camera.h"
 #include "render/chaos_renderer.h"
 #include "render/compiled_ifs.h"
-#include "model/stack_evaluator.h"
 #include "tests/core/renderer_scenes.h"
 
 namespace gridifs {
@@ -177,7 +177,7 @@ TEST(Renderer, ZTestKeepsTheNearestPoint) {
   for (double y = -0.95; y <= 0.95; y += 0.05)
     for (double z = -0.95; z <= 0.95; z += 0.05) {
       const double m = std::max(std::abs(y), std::abs(z));
-      const bool front = m < 0.45, back = m > 0.55 && m < 0.95;
+      const bool front = m<0.45, back = m> 0.55 && m < 0.95;
       if (!front && !back) continue;
       const ProjectedPoint q = cam.project({front ? 0.5 : -0.5, y, z});
       const std::size_t i = std::size_t(q.y) * image.width + std::size_t(q.x);

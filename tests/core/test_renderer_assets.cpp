@@ -3,9 +3,9 @@
 
 #include <filesystem>
 
+#include "io/project_io.h"
 #include "render/chaos_renderer.h"
 #include "render/compiled_ifs.h"
-#include "io/project_io.h"
 
 namespace gridifs {
 namespace {

@@ -39,7 +39,9 @@ TEST(Selection, BooleanCombinationsMatchSetAlgebra) {
     std::set<Node> expected;
     const int boxes = 1 + trial % 5;
     for (int b = 0; b < boxes; ++b) {
-      SelectionBox box{{coord(rng), coord(rng)}, {coord(rng), coord(rng)}, {coord(rng), coord(rng)},
+      SelectionBox box{{coord(rng), coord(rng)},
+                       {coord(rng), coord(rng)},
+                       {coord(rng), coord(rng)},
                        static_cast<SelectionOp>(opPick(rng))};
       sel.push_back(box);
       const std::set<Node> s = boxSet(box, res);

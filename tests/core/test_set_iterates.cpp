@@ -102,7 +102,8 @@ TEST(SetIterates, PagesAreNumberedByTheirAddressWithTheOutermostMapFirst) {
   system.functions.push_back(SetFunction::constant(c));     // σ = 1
   const VoxelSet start = ball(lattice, {0.0, -0.5, 0.0}, 0.3);
   std::map<std::int64_t, VoxelSet> pages;
-  forEachBookPage(system, start, 2, 1, [&](std::int64_t n, const VoxelSet& s) { EXPECT_TRUE(pages.emplace(n, s).second); });
+  forEachBookPage(system, start, 2, 1,
+                  [&](std::int64_t n, const VoxelSet& s) { EXPECT_TRUE(pages.emplace(n, s).second); });
   ASSERT_EQ(pages.size(), 4u);
   const SetFunction& fA = system.functions[0];
   // Page σ1σ2 is f_σ1(f_σ2(S)), numbered σ1·2 + σ2.

@@ -6,13 +6,13 @@
 #include <map>
 #include <set>
 
+#include "deterministic_samples.h"
+#include "io/project_io.h"
+#include "mesh/deterministic_ifs.h"
+#include "model/transition_matrix.h"
+#include "model_error_text.h"
 #include "render/chaos_renderer.h"
 #include "render/compiled_ifs.h"
-#include "mesh/deterministic_ifs.h"
-#include "io/project_io.h"
-#include "model_error_text.h"
-#include "model/transition_matrix.h"
-#include "deterministic_samples.h"
 
 using namespace gridifs;
 using namespace gridifs::test_support;

@@ -3,11 +3,11 @@
 
 #include <random>
 
-#include "render/camera.h"
-#include "model/grid.h"
 #include "edit/node_picking.h"
-#include "io/project_io.h"
 #include "edit/view_camera.h"
+#include "io/project_io.h"
+#include "model/grid.h"
+#include "render/camera.h"
 
 using namespace gridifs;
 

@@ -3,8 +3,8 @@
 // operations (Gröller & Wegenkittl 1994, §3.1: the nearest point per pixel, here with its packed
 // colour as the tie-break, and the hit count; Draves & Reckase 2003, §5: the colour sums in sample
 // order), whatever the chunk boundaries, and it must count exactly the samples that landed.
-#include <algorithm>
 #include <gtest/gtest.h>
+#include <algorithm>
 
 #include <bit>
 #include <cmath>
@@ -161,8 +161,8 @@ TEST(ZBufferPlot, PaletteColourSumsMatchOneSampleAtATime) {
   const auto points = samplePoints(3000, 5);
   const auto colors = sampleColors(3000, 6);
   const kernel::HotCamera cam = camera(false);
-  expectSame(reference(cam, points, colors, palette.data()), chunked<true>(cam, points, colors, palette.data(), 1000000),
-             true);
+  expectSame(reference(cam, points, colors, palette.data()),
+             chunked<true>(cam, points, colors, palette.data(), 1000000), true);
 }
 
 TEST(ZBufferPlot, PointsThatAreNotNumbersLandNowhere) {

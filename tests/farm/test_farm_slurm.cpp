@@ -71,13 +71,13 @@ TEST(Farm, AnimationOfThreeFramesInFourPartsEqualsTheLocalRender) {
   ScratchDir dir("farm-animation");
   const std::string options = " --samples 2e6 --width 160 --height 120";
   const std::string project = asset("animation/breathing_twist.gridifs");
-  ASSERT_EQ(gridifs("render " + project + " -q --frames 0:2 -o " + quote((dir.path / "local_%03d.png").string()) +
-                    options)
-                .exitCode,
-            0);
-  const CommandResult farm = gridifs("farm " + project + " --frames 0:2 --parts 4 --dir " +
-                                     quote((dir.path / "job").string()) + " -o " +
-                                     quote((dir.path / "farm_%03d.png").string()) + options + " --submit");
+  ASSERT_EQ(
+      gridifs("render " + project + " -q --frames 0:2 -o " + quote((dir.path / "local_%03d.png").string()) + options)
+          .exitCode,
+      0);
+  const CommandResult farm =
+      gridifs("farm " + project + " --frames 0:2 --parts 4 --dir " + quote((dir.path / "job").string()) + " -o " +
+              quote((dir.path / "farm_%03d.png").string()) + options + " --submit");
   ASSERT_EQ(farm.exitCode, 0) << farm.err;
   EXPECT_NE(farm.out.find("12 render tasks, 3 frames to merge"), std::string::npos) << farm.out;
   EXPECT_NE(farm.out.find("submitted job"), std::string::npos) << farm.out;
@@ -88,9 +88,9 @@ TEST(Farm, AnimationOfThreeFramesInFourPartsEqualsTheLocalRender) {
   EXPECT_EQ(status.exitCode, 0);
   EXPECT_NE(status.out.find("3 of 3 frames have every part, 3 merged"), std::string::npos) << status.out;
   // The same command again has nothing left to do.
-  const CommandResult again = gridifs("farm " + project + " --frames 0:2 --parts 4 --dir " +
-                                      quote((dir.path / "job").string()) + " -o " +
-                                      quote((dir.path / "farm_%03d.png").string()) + options + " --submit");
+  const CommandResult again =
+      gridifs("farm " + project + " --frames 0:2 --parts 4 --dir " + quote((dir.path / "job").string()) + " -o " +
+              quote((dir.path / "farm_%03d.png").string()) + options + " --submit");
   EXPECT_EQ(again.exitCode, 0);
   EXPECT_NE(again.out.find("nothing to submit"), std::string::npos) << again.out;
 }
@@ -116,7 +116,8 @@ TEST(Farm, StillInSixteenPartsEqualsTheLocalRenderAndADamagedPartIsRenderedAgain
     f.put('\x5A').put('\xA5');
   }
   std::string parts;
-  for (int k = 0; k < 16; ++k) parts += " " + quote((dir.path / "job" / "parts" / ("s_p" + std::to_string(k) + ".gpart")).string());
+  for (int k = 0; k < 16; ++k)
+    parts += " " + quote((dir.path / "job" / "parts" / ("s_p" + std::to_string(k) + ".gpart")).string());
   const CommandResult merge = gridifs("merge" + parts + " -o " + quote((dir.path / "again.png").string()));
   EXPECT_EQ(merge.exitCode, 2);
   EXPECT_NE(merge.err.find("s_p5.gpart"), std::string::npos) << merge.err;
@@ -136,9 +137,8 @@ TEST(Farm, ACancelledTaskKeepsItsMergeWaitingAndTheSameCommandFinishesWithTheSam
   const std::string options = " --samples 4e8 --width 160 --height 120";
   const std::string project = asset("default.gridifs");
   const std::string job = quote((dir.path / "job").string());
-  const std::string farmCommand =
-      "farm " + project + " --parts 4 --dir " + job + " -o " + quote((dir.path / "farm.png").string()) + options +
-      " --submit";
+  const std::string farmCommand = "farm " + project + " --parts 4 --dir " + job + " -o " +
+                                  quote((dir.path / "farm.png").string()) + options + " --submit";
   ASSERT_EQ(gridifs(farmCommand).exitCode, 0);
   std::string renderJob = slurp(dir.path / "job" / "jobs");
   renderJob = renderJob.substr(0, renderJob.find(' '));
@@ -183,8 +183,9 @@ TEST(Farm, AFailedTaskIsNamedAndItsFrameIsNotMerged) {
   while (std::getline(jobs, line)) slurm("scontrol release " + line.substr(0, line.find(' ')));
   ASSERT_TRUE(waitForJobs(dir.path / "job"));
   const CommandResult status = gridifs("farm --status " + job);
-  EXPECT_NE(status.out.find("still: 0/2 parts, not merged; failed task 0 (part 0): exit 2; failed task 1 (part 1): exit 2"),
-            std::string::npos)
+  EXPECT_NE(
+      status.out.find("still: 0/2 parts, not merged; failed task 0 (part 0): exit 2; failed task 1 (part 1): exit 2"),
+      std::string::npos)
       << status.out;
   EXPECT_FALSE(fs::exists(dir.path / "farm.png"));
   // The project back, the same command finishes the render.

@@ -8,8 +8,8 @@
 
 #include <algorithm>
 #include <array>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -26,8 +26,8 @@ namespace gridifs::figures {
 /// (tests) or full (docs) size arguments.
 struct Step {
   std::vector<std::string> args, small, full;
-  std::string out;      // output file name (a printf pattern for frame sequences)
-  std::string project;  // relative to the source root
+  std::string out;         // output file name (a printf pattern for frame sequences)
+  std::string project;     // relative to the source root
   bool stdoutOut = false;  // the verb prints its result; `out` is where it is kept
   bool quiet = true;       // the verb takes --quiet
 };
@@ -96,8 +96,10 @@ inline std::vector<std::filesystem::path> stepOutputs(const std::filesystem::pat
   for (int f = 0; f < 10000; ++f) {
     char name[512];
     std::snprintf(name, sizeof name, out.c_str(), f);
-    if (std::filesystem::exists(dir / name)) files.push_back(dir / name);
-    else if (!files.empty()) break;
+    if (std::filesystem::exists(dir / name))
+      files.push_back(dir / name);
+    else if (!files.empty())
+      break;
   }
   return files;
 }
@@ -117,7 +119,10 @@ inline std::optional<double> imageCoverage(const std::filesystem::path& file) {
     for (int x = roi.xbegin; x < roi.xend; ++x, ++total) {
       buf.getpixel(x, y, px.data());
       for (int c = 0; c < nc; ++c)
-        if (std::fabs(px[c] - bg[c]) > 0.03f) { ++covered; break; }
+        if (std::fabs(px[c] - bg[c]) > 0.03f) {
+          ++covered;
+          break;
+        }
     }
   return total ? double(covered) / double(total) : 0.0;
 }
@@ -141,9 +146,7 @@ inline openvdb::FloatGrid::Ptr readDensity(const std::filesystem::path& file) {
 }
 
 /// The density lattice's size N (voxel size 2/N over the cube [-1, 1]^3).
-inline int latticeSize(const openvdb::FloatGrid& grid) {
-  return int(std::lround(2.0 / grid.voxelSize()[0]));
-}
+inline int latticeSize(const openvdb::FloatGrid& grid) { return int(std::lround(2.0 / grid.voxelSize()[0])); }
 
 /// Fraction of the N^3 lattice with density above zero.
 inline double densityCoverage(const openvdb::FloatGrid& grid) {
@@ -183,8 +186,14 @@ inline std::vector<float> xray(const openvdb::FloatGrid& grid, char axis, int& s
     for (auto c = box.begin(); c; ++c) {
       const int i = (*c)[0], j = (*c)[1], k = (*c)[2];  // lattice voxel (i, j, k)
       int u = i, v = j;
-      if (axis == 'x') { u = j; v = k; }
-      if (axis == 'y') { u = i; v = k; }
+      if (axis == 'x') {
+        u = j;
+        v = k;
+      }
+      if (axis == 'y') {
+        u = i;
+        v = k;
+      }
       if (u < 0 || v < 0 || u >= size || v >= size) continue;
       img[size_t(size - 1 - v) * size + u] += *it;
     }

@@ -32,8 +32,9 @@ std::vector<Figure> madeFigures() {
 }
 
 std::string substitute(std::string arg, const fs::path& project, const fs::path& out) {
-  for (const auto& [key, value] : {std::pair{std::string("{project}"), project.string()}, std::pair{std::string("{out}"), out.string()},
-                                   std::pair{std::string("{root}"), kRoot.string()}}) {
+  for (const auto& [key, value] :
+       {std::pair{std::string("{project}"), project.string()}, std::pair{std::string("{out}"), out.string()},
+        std::pair{std::string("{root}"), kRoot.string()}}) {
     for (size_t at; (at = arg.find(key)) != std::string::npos;) arg.replace(at, key.size(), value);
   }
   return arg;
@@ -126,7 +127,8 @@ TEST(FiguresManifest, EveryEntryIsComplete) {
     SCOPED_TRACE(f.id);
     EXPECT_TRUE(ids.insert(f.id).second) << "duplicate id";
     EXPECT_FALSE(f.paper.empty() || f.figure.empty() || f.shows.empty());
-    EXPECT_NE(doc.find(f.shows), std::string::npos) << "docs/FIGURES.md is older than the manifest (run scripts/figures)";
+    EXPECT_NE(doc.find(f.shows), std::string::npos)
+        << "docs/FIGURES.md is older than the manifest (run scripts/figures)";
     if (!f.makeable()) {
       EXPECT_TRUE(f.status == "pending" || f.status == "missing") << f.status;
       EXPECT_FALSE(f.reason.empty());

@@ -8,8 +8,8 @@
 #include <exception>
 #include <string>
 
-#include "render/compiled_ifs.h"
 #include "io/project_io.h"
+#include "render/compiled_ifs.h"
 
 namespace {
 

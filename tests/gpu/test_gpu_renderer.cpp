@@ -5,13 +5,13 @@
 #include <cmath>
 #include <filesystem>
 
-#include "render/compiled_ifs.h"
+#include "core/renderer_scenes.h"
+#include "gpu/correlation.h"
 #include "gpu/gpu_chaos_renderer.h"
 #include "gpu/render_device.h"
-#include "gpu/correlation.h"
 #include "gpu_test_support.h"
 #include "io/project_io.h"
-#include "core/renderer_scenes.h"
+#include "render/compiled_ifs.h"
 
 namespace gridifs {
 namespace {
@@ -45,9 +45,9 @@ void expectGpuMatchesCpu(GpuChaosRenderer& gpu, const std::filesystem::path& fil
   SCOPED_TRACE(file.filename().string());
   const Project project = loadProject(file);
   if (project.space) {
-    EXPECT_THROW(renderGpu(gpu, compileIfs(project), RenderJob::fromProject(project, 1),
-                           DisplaySettings::fromProject(project)),
-                 gpu::GpuUnavailable);
+    EXPECT_THROW(
+        renderGpu(gpu, compileIfs(project), RenderJob::fromProject(project, 1), DisplaySettings::fromProject(project)),
+        gpu::GpuUnavailable);
     return;
   }
   RenderJob job = RenderJob::fromProject(project, 2);
@@ -68,7 +68,8 @@ void expectGpuMatchesCpu(GpuChaosRenderer& gpu, const std::filesystem::path& fil
   if (sparse) {
     RenderJob other = job;
     other.seed += 1;
-    const double cpuAlpha = correlation(test::blockAlpha(cpu), test::blockAlpha(renderToCompletion(ifs, other, display)));
+    const double cpuAlpha =
+        correlation(test::blockAlpha(cpu), test::blockAlpha(renderToCompletion(ifs, other, display)));
     alphaFloor = std::min(alphaFloor, cpuAlpha - 0.01);
   }
   EXPECT_GE(alpha, alphaFloor);

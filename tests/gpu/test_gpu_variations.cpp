@@ -16,10 +16,10 @@
 
 #include "gpu/chaos_compute.h"
 #include "gpu/correlation.h"
-#include "gpu_test_support.h"
 #include "gpu/gpu_chaos_renderer.h"
 #include "gpu/headless_gl_context.h"
 #include "gpu/render_device.h"
+#include "gpu_test_support.h"
 #include "model/flame_variations.h"
 #include "render/compiled_ifs.h"
 #include "volume/measure_attractor.h"
@@ -217,7 +217,6 @@ RenderImage renderGpu(gpu::GpuChaosRenderer& renderer, std::shared_ptr<const Com
   renderer.snapshot(image, DisplaySettings{});
   return image;
 }
-
 
 RenderJob sceneJob(const Project& p, std::uint64_t seed) {
   RenderJob job = RenderJob::fromProject(p, 2);

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <filesystem>
 
-#include "gpu/render_device.h"
 #include "gpu/correlation.h"
+#include "gpu/render_device.h"
 #include "gpu_test_support.h"
 #include "io/project_io.h"
 #include "volume/measure_attractor.h"
@@ -30,7 +30,6 @@ std::vector<float> blocks(const std::vector<float>& v, int n, int channels = 1, 
               channel];
   return out;
 }
-
 
 VolumeSettings testSettings() {
   VolumeSettings s;
@@ -67,7 +66,8 @@ TEST(GpuVolume, EveryGridExampleMatchesTheCpuVolume) {
       for (std::size_t v = 0; v < cpu.density.size(); ++v) {
         if (cpu.density[v] < 0.05f || g.density[v] < 0.05f) continue;
         ++both;
-        for (int d = 0; d < 3; ++d) worst = std::max(worst, double(std::abs(cpu.color[3 * v + d] - g.color[3 * v + d])));
+        for (int d = 0; d < 3; ++d)
+          worst = std::max(worst, double(std::abs(cpu.color[3 * v + d] - g.color[3 * v + d])));
       }
       EXPECT_GT(both, 0u);
       EXPECT_LT(worst, 0.25);

@@ -69,8 +69,7 @@ struct Rect {
 inline Rect rectOf(const nlohmann::json& probe, const std::string& name) {
   const auto& r = probe["rects"][name];
   const int wx = probe["window"]["x"], wy = probe["window"]["y"];
-  return {wx + int(r[0].get<double>()), wy + int(r[1].get<double>()), int(r[2].get<double>()),
-          int(r[3].get<double>())};
+  return {wx + int(r[0].get<double>()), wy + int(r[1].get<double>()), int(r[2].get<double>()), int(r[3].get<double>())};
 }
 
 /// The modeller as a child process with its --probe file.
@@ -238,8 +237,7 @@ inline nlohmann::json openRenderAnimation(const App& app) {
 
 /// Presses at (x0, y0), moves to (x1, y1) in `steps` steps, releases.
 inline void dragFrom(int x0, int y0, int x1, int y1, int steps = 12) {
-  std::string cmd =
-      "mousemove " + std::to_string(x0) + " " + std::to_string(y0) + " sleep 0.15 mousedown 1 sleep 0.15";
+  std::string cmd = "mousemove " + std::to_string(x0) + " " + std::to_string(y0) + " sleep 0.15 mousedown 1 sleep 0.15";
   for (int s = 1; s <= steps; ++s)
     cmd += " mousemove " + std::to_string(x0 + (x1 - x0) * s / steps) + " " +
            std::to_string(y0 + (y1 - y0) * s / steps) + " sleep 0.05";

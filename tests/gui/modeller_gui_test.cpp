@@ -24,7 +24,8 @@ TEST(ModellerGui, ScreenshotShowsGridViewsAndPreview) {
   EXPECT_EQ(image.spec().width, probe["window"]["width"].get<int>());
   auto region = [&](const std::string& name) {
     const auto& r = probe["rects"][name];
-    const int x = int(r[0].get<double>()), y = int(r[1].get<double>()), w = int(r[2].get<double>()), h = int(r[3].get<double>());
+    const int x = int(r[0].get<double>()), y = int(r[1].get<double>()), w = int(r[2].get<double>()),
+              h = int(r[3].get<double>());
     std::vector<float> px(std::size_t(w) * h * 3);
     image.get_pixels(OIIO::ROI(x, x + w, y, y + h, 0, 1, 0, 3), OIIO::TypeDesc::FLOAT, px.data());
     return px;
@@ -108,7 +109,8 @@ TEST(ModellerGui, DraggingANodeRecordsANodesOperation) {
   std::size_t pick = 0;
   for (std::size_t n = 0; n < nodes.size(); ++n)
     if (nodes[n][0].get<double>() < nodes[pick][0].get<double>()) pick = n;
-  const int x = wx + int(std::lround(nodes[pick][0].get<double>())), y = wy + int(std::lround(nodes[pick][1].get<double>()));
+  const int x = wx + int(std::lround(nodes[pick][0].get<double>())),
+            y = wy + int(std::lround(nodes[pick][1].get<double>()));
   const std::uint64_t restarts = probe["preview"]["restarts"];
   dragFrom(x, y, x - 30, y + 20);
   probe = app.waitForPreview(restarts);
@@ -195,7 +197,8 @@ TEST(ModellerGui, AutosaveIsOfferedBackAfterACrash) {
   const std::optional<Rect> recover = again.waitForStableRect("recovery.recover", 30s);
   ASSERT_TRUE(recover) << "no offer to recover";
   clickRect(*recover);
-  nlohmann::json probe = again.waitFor([&](const nlohmann::json& j) { return j["functions"].get<std::size_t>() == functions + 1; });
+  nlohmann::json probe =
+      again.waitFor([&](const nlohmann::json& j) { return j["functions"].get<std::size_t>() == functions + 1; });
   EXPECT_EQ(probe["functions"].get<std::size_t>(), functions + 1);
   EXPECT_TRUE(probe["dirty"].get<bool>()) << "recovered work must count as unsaved";
   EXPECT_EQ(fs::path(probe["path"].get<std::string>()), fs::absolute(project));
@@ -205,7 +208,8 @@ TEST(ModellerGui, AFileThatDoesNotLoadIsReportedNotFatal) {
   if (!haveDisplay()) GTEST_SKIP() << "no X display (run under xvfb-run)";
   TempFolder home;
   const fs::path bad = home.path / "bad.gridifs";
-  std::ofstream(bad) << R"({"format": "gridifs", "version": 1, "functions": [{"name": "f", "resolution": [6, 6, "x"]}]})";
+  std::ofstream(bad)
+      << R"({"format": "gridifs", "version": 1, "functions": [{"name": "f", "resolution": [6, 6, "x"]}]})";
   App app(home, {bad.string()});
   const nlohmann::json probe = app.waitFor([](const nlohmann::json& j) { return j["modal"].get<bool>(); }, 15s);
   EXPECT_TRUE(probe["modal"].get<bool>()) << "no error dialog";
@@ -229,7 +233,8 @@ TEST(ModellerGui, ImportFlameFromTheFileMenu) {
     ASSERT_TRUE(probe["rects"].contains("menu.import_flame")) << "the File menu did not open";
     const Rect item = rectOf(probe, "menu.import_flame");
     clickAt(item.x + item.w / 2, item.y + item.h / 2);
-    probe = app.waitFor([](const nlohmann::json& j) { return j["modal"].get<bool>() && j["rects"].contains("browser.fileName"); }, 10s);
+    probe = app.waitFor(
+        [](const nlohmann::json& j) { return j["modal"].get<bool>() && j["rects"].contains("browser.fileName"); }, 10s);
     ASSERT_TRUE(probe["rects"].contains("browser.fileName")) << "the file browser did not open";
     std::this_thread::sleep_for(500ms);  // the dialog places itself in its first frames
     const Rect name = rectOf(app.probe(), "browser.fileName");
@@ -241,9 +246,11 @@ TEST(ModellerGui, ImportFlameFromTheFileMenu) {
   };
   // A broken file: an error in the window, the document unchanged.
   importFile(fs::path(GRIDIFS_TEST_DATA) / "flame" / "bad" / "missing_coefs.flame");
-  probe = app.waitFor([](const nlohmann::json& j) {
-    return j["modal"].get<bool>() && j["status"].get<std::string>().find("Could not import") != std::string::npos;
-  }, 15s);
+  probe = app.waitFor(
+      [](const nlohmann::json& j) {
+        return j["modal"].get<bool>() && j["status"].get<std::string>().find("Could not import") != std::string::npos;
+      },
+      15s);
   EXPECT_NE(probe["status"].get<std::string>().find("has no coefs"), std::string::npos) << probe["status"];
   EXPECT_EQ(probe["functions"].get<int>(), 4);
   EXPECT_FALSE(probe["dirty"].get<bool>());
@@ -252,10 +259,12 @@ TEST(ModellerGui, ImportFlameFromTheFileMenu) {
   ASSERT_FALSE(probe["modal"].get<bool>());
   // A good one: a new, unsaved document with its functions, one undo step.
   importFile(fs::path(GRIDIFS_TEST_DATA) / "flame" / "sierpinski_chaos.flam3");
-  probe = app.waitFor([](const nlohmann::json& j) { return j["functions"].get<int>() == 3 && !j["modal"].get<bool>(); }, 20s);
+  probe = app.waitFor([](const nlohmann::json& j) { return j["functions"].get<int>() == 3 && !j["modal"].get<bool>(); },
+                      20s);
   EXPECT_EQ(probe["functions"].get<int>(), 3);
   EXPECT_EQ(probe["undo"], "Import flame");
   EXPECT_TRUE(probe["dirty"].get<bool>());
   EXPECT_EQ(probe["path"], "");
-  EXPECT_NE(probe["status"].get<std::string>().find("Imported sierpinski-no-repeat"), std::string::npos) << probe["status"];
+  EXPECT_NE(probe["status"].get<std::string>().find("Imported sierpinski-no-repeat"), std::string::npos)
+      << probe["status"];
 }

@@ -48,9 +48,8 @@ void FileBrowser::enter(const fs::path& folder) {
       continue;
     entries.push_back({name, folderEntry});
   }
-  std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
-    return a.folder != b.folder ? a.folder : a.name < b.name;
-  });
+  std::sort(entries.begin(), entries.end(),
+            [](const Entry& a, const Entry& b) { return a.folder != b.folder ? a.folder : a.name < b.name; });
   entries_ = std::move(entries);
   folder_ = canonical;
   folderText_ = folder_.string();
@@ -121,7 +120,8 @@ std::optional<fs::path> FileBrowser::draw(UiProbe& probe) {
         }
       }
       if (entries_.empty())
-        ImGui::TextDisabled("%s", showAll_ ? "(empty folder)" : ("(no " + extensions_.front() + " files here)").c_str());
+        ImGui::TextDisabled("%s",
+                            showAll_ ? "(empty folder)" : ("(no " + extensions_.front() + " files here)").c_str());
       if (enterFolder) enter(*enterFolder);
     }
     ImGui::EndChild();
@@ -130,20 +130,25 @@ std::optional<fs::path> FileBrowser::draw(UiProbe& probe) {
     const bool enter = ImGui::InputText("File name", &fileName_, ImGuiInputTextFlags_EnterReturnsTrue);
     probe.item("browser.fileName");
     if (enter && !chosen) chosen = confirm();
-    if (!error_.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "%s", error_.c_str());
+    if (!error_.empty())
+      ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "%s", error_.c_str());
     else if (mode_ == Mode::Save && !fileName_.empty()) {
       std::error_code ec;
       fs::path file = folder_ / fileName_;
       if (file.extension().empty()) file += ".gridifs";
-      if (fs::exists(file, ec)) ImGui::TextDisabled("Saving replaces %s (the old one is kept as %s~).", file.filename().c_str(), file.filename().c_str());
-      else ImGui::TextDisabled(" ");
+      if (fs::exists(file, ec))
+        ImGui::TextDisabled("Saving replaces %s (the old one is kept as %s~).", file.filename().c_str(),
+                            file.filename().c_str());
+      else
+        ImGui::TextDisabled(" ");
     } else {
       ImGui::TextDisabled(" ");
     }
     if (ImGui::Button(mode_ == Mode::Open ? "Open" : "Save", ImVec2(ImGui::GetFontSize() * 6, 0)) && !chosen)
       chosen = confirm();
     ImGui::SameLine();
-    if (ImGui::Button("Cancel", ImVec2(ImGui::GetFontSize() * 6, 0)) || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
+    if (ImGui::Button("Cancel", ImVec2(ImGui::GetFontSize() * 6, 0)) ||
+        ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
       open_ = false;
       ImGui::CloseCurrentPopup();
     }

@@ -75,9 +75,9 @@ class ModellerState {
 
   // Windows and modes.
   bool showHelp = false;
-  bool showMatrices = false;  // the Matrices window (transitions, free-form control points and matrices)
+  bool showMatrices = false;      // the Matrices window (transitions, free-form control points and matrices)
   bool showConstruction = false;  // the Construction tree window (leaves and matrix operations)
-  int maximizedGridView = -1;  // -1: the four views; 0..3: one of them fills the window
+  int maximizedGridView = -1;     // -1: the four views; 0..3: one of them fills the window
   PreviewMode previewMode = PreviewMode::ZBuffer;
   /// Bumped when a project is opened or made (forgetDocumentViewState): what the preview mode was
   /// set to then is the project's, not the artist's choice.

@@ -10,11 +10,11 @@
 #include <memory>
 
 #include "base/text_format.h"
-#include "job/prepared_render.h"
-#include "render/compiled_ifs.h"
-#include "mesh/mesh_io.h"
 #include "io/point_cloud_export.h"
 #include "io/project_io.h"
+#include "job/prepared_render.h"
+#include "mesh/mesh_io.h"
+#include "render/compiled_ifs.h"
 #include "ui/base/widgets.h"
 #include "volume/condensation_mesh.h"
 
@@ -314,7 +314,7 @@ void ExportDialog::draw(ModellerState& state) {
   if (!message_.empty()) {
     const ImVec4 color = phase_ == TaskPhase::Failed ? ImVec4(1.0f, 0.45f, 0.35f, 1.0f)
                          : phase_ == TaskPhase::Done ? ImVec4(0.55f, 0.85f, 0.55f, 1.0f)
-                                                 : ImVec4(0.8f, 0.8f, 0.8f, 1.0f);
+                                                     : ImVec4(0.8f, 0.8f, 0.8f, 1.0f);
     ImGui::PushTextWrapPos(0.0f);
     ImGui::TextColored(color, "%s", message_.c_str());
     ImGui::PopTextWrapPos();

@@ -11,9 +11,9 @@
 
 #include "mesh/base_mesh.h"
 #include "mesh/deterministic_ifs.h"
-#include "ui/dialogs/dialog_task.h"
 #include "ui/base/file_browser.h"
 #include "ui/base/modeller_state.h"
+#include "ui/dialogs/dialog_task.h"
 
 namespace gridifs::ui {
 

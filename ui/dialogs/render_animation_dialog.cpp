@@ -14,9 +14,9 @@
 #include "farm/farm_job.h"
 #include "render/chaos_renderer.h"
 #include "render/image_file.h"
+#include "ui/base/widgets.h"
 #include "ui/dialogs/animation_frames.h"
 #include "ui/panels/timeline_panel.h"
-#include "ui/base/widgets.h"
 
 namespace gridifs::ui {
 namespace {
@@ -109,11 +109,13 @@ void RenderAnimationDialog::start(ModellerState& state) {
         });
         ++framesDone_;
       }
-      return {TaskPhase::Done, "Rendered " + std::to_string(last - first + 1) + " frames: " + frameFileName(pattern, first) +
-                                   " … " + fs::path(frameFileName(pattern, last)).filename().string() + "."};
+      return {TaskPhase::Done, "Rendered " + std::to_string(last - first + 1) +
+                                   " frames: " + frameFileName(pattern, first) + " … " +
+                                   fs::path(frameFileName(pattern, last)).filename().string() + "."};
     } catch (const RenderCancelled&) {
-      return {TaskPhase::Cancelled, "Cancelled at frame " + std::to_string(frame) + "; " + std::to_string(frame - first) +
-                                        " frames were written, frame " + std::to_string(frame) + " was not."};
+      return {TaskPhase::Cancelled, "Cancelled at frame " + std::to_string(frame) + "; " +
+                                        std::to_string(frame - first) + " frames were written, frame " +
+                                        std::to_string(frame) + " was not."};
     } catch (const std::exception& e) {
       return {TaskPhase::Failed, "Frame " + std::to_string(frame) + ": " + e.what()};
     }
@@ -247,8 +249,9 @@ void RenderAnimationDialog::drawFarm(ModellerState& state) {
   ImGui::BeginDisabled(running());
   ImGui::Checkbox("On a Slurm cluster", &farm_);
   state.probe.item("animation.farm");
-  contextHelp(state, "Split every frame into parts that Slurm runs on the cluster's nodes, then merge them: "
-                     "the frames are the same images, bit for bit");
+  contextHelp(state,
+              "Split every frame into parts that Slurm runs on the cluster's nodes, then merge them: "
+              "the frames are the same images, bit for bit");
   if (farm_) {
     ImGui::SetNextItemWidth(em * 6.0f);
     if (ImGui::InputInt("Parts per frame", &farmParts_)) farmParts_ = std::clamp(farmParts_, 1, int(kMaxFarmParts));
@@ -267,8 +270,8 @@ void RenderAnimationDialog::drawFarm(ModellerState& state) {
     // describeFarmStatus: one line per frame, then the summary and the queued jobs. The summary
     // first; the frames in a box of their own, which scrolls for long animations.
     std::size_t frames = 0;
-    while (frames < farmStatus_.size() && (farmStatus_[frames].rfind("frame ", 0) == 0 ||
-                                           farmStatus_[frames].rfind("still", 0) == 0))
+    while (frames < farmStatus_.size() &&
+           (farmStatus_[frames].rfind("frame ", 0) == 0 || farmStatus_[frames].rfind("still", 0) == 0))
       ++frames;
     for (std::size_t i = frames; i < farmStatus_.size(); ++i) ImGui::TextWrapped("%s", farmStatus_[i].c_str());
     const float lines = float(std::min<std::size_t>(frames, 8));
@@ -296,8 +299,8 @@ bool RenderAnimationDialog::writeFarm(ModellerState& state, bool submit) {
   request.lastFrame = last_;
   request.parts = farmParts_;
   request.dir = farmDir_;
-  request.renderOptions = {"--width", std::to_string(width_), "--height", std::to_string(height_), "--samples",
-                           std::to_string(samples_)};
+  request.renderOptions = {"--width",   std::to_string(width_),  "--height", std::to_string(height_),
+                           "--samples", std::to_string(samples_)};
   if (motionBlur_ > 1) {
     request.renderOptions.insert(request.renderOptions.end(), {"--motion-blur", std::to_string(motionBlur_)});
     if (motionFade_ > 0.0)

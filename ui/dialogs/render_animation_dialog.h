@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "ui/dialogs/dialog_task.h"
 #include "ui/base/modeller_state.h"
+#include "ui/dialogs/dialog_task.h"
 
 namespace gridifs::ui {
 

@@ -1,7 +1,7 @@
 #include "ui/gl/gl_resources.h"
 
-#include <cstddef>
 #include <algorithm>
+#include <cstddef>
 #include <stdexcept>
 #include <utility>
 

@@ -69,8 +69,10 @@ void ViewRenderer::drawImage(const RenderTarget& target, GLuint image, int image
     // Fit the image inside the target, centered, aspect preserved.
     const double ta = double(target.width()) / target.height(), ia = double(imageWidth) / imageHeight;
     double sx = 1.0, sy = 1.0;
-    if (ia > ta) sy = ta / ia;
-    else sx = ia / ta;
+    if (ia > ta)
+      sy = ta / ia;
+    else
+      sx = ia / ta;
     glUseProgram(blit_.id());
     glUniform4f(blit_.uniform("uRect"), float(-sx), float(-sy), float(sx), float(sy));
     glUniform1i(blit_.uniform("uImage"), 0);

@@ -28,8 +28,8 @@ class ViewRenderer {
  public:
   ViewRenderer();
   /// Clears `target` to a vertical gradient and draws `scene` with `viewProjection`.
-  void drawScene(const RenderTarget& target, const glm::mat4& viewProjection, const ViewScene& scene,
-                 float pointScale, const glm::vec3& top, const glm::vec3& bottom);
+  void drawScene(const RenderTarget& target, const glm::mat4& viewProjection, const ViewScene& scene, float pointScale,
+                 const glm::vec3& top, const glm::vec3& bottom);
   /// Clears `target` to `background` and draws `image` (imageWidth × imageHeight) centered,
   /// keeping its aspect ratio.
   void drawImage(const RenderTarget& target, GLuint image, int imageWidth, int imageHeight,

@@ -118,8 +118,8 @@ void drawImageFields(ModellerState& state, EditQueue& edits, FunctionRef ref, co
   setGesture(edits, "Drawing thickness", changed, ref, set);
   contextHelp(state, "The slab's thickness along z, before the placement");
   set = current;
-  if (ImGui::Checkbox("Invert", &set.invert)) edits.commit(set.invert ? "Invert drawing" : "Drawing not inverted",
-                                                           SetCondensationSet{ref, set});
+  if (ImGui::Checkbox("Invert", &set.invert))
+    edits.commit(set.invert ? "Invert drawing" : "Drawing not inverted", SetCondensationSet{ref, set});
   state.probe.frame("set.invert");
   contextHelp(state, "Light pixels belong to the set instead of dark ones");
 }
@@ -141,19 +141,21 @@ void CondensationSetPanel::drawFile(ModellerState& state, EditQueue& edits, Func
   contextHelp(state, "The file's path, relative to the project file's folder");
   if (ImGui::Button("Browse...")) browse(state, current, current.shape);
   state.probe.item("set.browse");
-  contextHelp(state, mesh ? "Pick an OBJ, PLY, STL or OFF mesh" : image ? "Pick a PNG, JPEG or EXR drawing" : "Pick an OpenVDB file");
+  contextHelp(state, mesh    ? "Pick an OBJ, PLY, STL or OFF mesh"
+                     : image ? "Pick a PNG, JPEG or EXR drawing"
+                             : "Pick an OpenVDB file");
 
   CondensationSet set = current;
   if (image) drawImageFields(state, edits, ref, current);
   if (mesh || image) {
     if (mesh) {
-    int fill = set.fill == SetFill::Surface ? 1 : 0;
-    static const char* fills[] = {"Solid", "Surface"};
-    if (ImGui::Combo("Fill", &fill, fills, 2)) {
-      edits.commit(SetSetFill{ref, fill ? SetFill::Surface : SetFill::Solid});
-    }
-    state.probe.frame("set.fill");
-    contextHelp(state, "Solid: the volume the mesh encloses (it must be closed); surface: a shell around its faces");
+      int fill = set.fill == SetFill::Surface ? 1 : 0;
+      static const char* fills[] = {"Solid", "Surface"};
+      if (ImGui::Combo("Fill", &fill, fills, 2)) {
+        edits.commit(SetSetFill{ref, fill ? SetFill::Surface : SetFill::Solid});
+      }
+      state.probe.frame("set.fill");
+      contextHelp(state, "Solid: the volume the mesh encloses (it must be closed); surface: a shell around its faces");
     }
     if (ImGui::CollapsingHeader("Placement", ImGuiTreeNodeFlags_DefaultOpen)) {
       setKey(state, edits, ref, "placement.translate", &current.placement.translate.x, 3);
@@ -196,7 +198,9 @@ void CondensationSetPanel::browse(ModellerState& state, const CondensationSet& s
                 mesh    ? std::vector<std::string>{".obj", ".ply", ".stl", ".off"}
                 : image ? std::vector<std::string>{".png", ".jpg", ".jpeg", ".exr"}
                         : std::vector<std::string>{".vdb"},
-                mesh ? "Condensation mesh" : image ? "Condensation drawing" : "Condensation VDB");
+                mesh    ? "Condensation mesh"
+                : image ? "Condensation drawing"
+                        : "Condensation VDB");
 }
 
 void CondensationSetPanel::draw(ModellerState& state, EditQueue& edits) {
@@ -279,10 +283,10 @@ void CondensationSetPanel::draw(ModellerState& state, EditQueue& edits) {
     const FunctionRef target = browsing_;
     const SetShape shape = browsingFor_;
     const bool newShape = browsing_.in(state.document.project()).set.shape != shape;
-    const std::string label = newShape                  ? std::string("Set shape: ") + setShapeName(shape)
-                              : shape == SetShape::Mesh ? "Set mesh file"
+    const std::string label = newShape                   ? std::string("Set shape: ") + setShapeName(shape)
+                              : shape == SetShape::Mesh  ? "Set mesh file"
                               : shape == SetShape::Image ? "Set drawing file"
-                                                        : "Set VDB file";
+                                                         : "Set VDB file";
     edits.commit(label, SetSetShape{target, shape, path});
   }
 }

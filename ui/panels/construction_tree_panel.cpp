@@ -121,8 +121,10 @@ void ConstructionTreePanel::drawNode(ModellerState& state, const ConstructionTre
   state.probe.item("tree.node." + pathId(path));
   if (ImGui::IsItemClicked() && !ImGui::IsItemToggledOpen()) {
     if (ImGui::GetIO().KeyCtrl || ImGui::GetIO().KeyShift) {
-      if (isSelected) std::erase(selected_, path);
-      else selected_.push_back(path);
+      if (isSelected)
+        std::erase(selected_, path);
+      else
+        selected_.push_back(path);
     } else {
       selected_ = {path};
     }
@@ -169,8 +171,10 @@ void ConstructionTreePanel::drawSelectionActions(ModellerState& state, EditQueue
   std::vector<std::size_t> children;
   bool siblings = !selected_.front().empty();
   for (const NodePath& p : selected_) {
-    if (p.empty() || NodePath(p.begin(), p.end() - 1) != parent) siblings = false;
-    else children.push_back(p.back());
+    if (p.empty() || NodePath(p.begin(), p.end() - 1) != parent)
+      siblings = false;
+    else
+      children.push_back(p.back());
   }
   if (!siblings) {
     ImGui::TextDisabled("Select operands of the same operation to combine them.");

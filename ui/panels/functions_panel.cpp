@@ -10,9 +10,9 @@
 #include "model/contractivity.h"
 #include "model/final_function.h"
 #include "model/free_form.h"
+#include "ui/base/widgets.h"
 #include "ui/panels/key_button.h"
 #include "ui/panels/panels.h"
-#include "ui/base/widgets.h"
 
 namespace gridifs::ui {
 namespace {

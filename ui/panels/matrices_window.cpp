@@ -15,8 +15,8 @@
 #include "model/free_form_joints.h"
 #include "model/free_form_presets.h"
 #include "model/transition_matrix.h"
-#include "ui/panels/panels.h"
 #include "ui/base/widgets.h"
+#include "ui/panels/panels.h"
 
 namespace gridifs::ui {
 namespace {
@@ -114,9 +114,12 @@ void drawPresets(ModellerState& state, EditQueue& edits, MatricesWindowState& ch
   const FreeFormPreset presets[] = {FreeFormPreset::BezierCurve,  FreeFormPreset::BezierPatch,
                                     FreeFormPreset::BSplineCurve, FreeFormPreset::BSplinePatch,
                                     FreeFormPreset::Sierpinski,   FreeFormPreset::SierpinskiPatch};
-  const char* labels[] = {"Bezier curve",           "Bezier patch",
-                          "Uniform B-spline curve", "Uniform B-spline patch",
-                          "Sierpinski gasket (3 points)", "Sierpinski gasket on a patch"};
+  const char* labels[] = {"Bezier curve",
+                          "Bezier patch",
+                          "Uniform B-spline curve",
+                          "Uniform B-spline patch",
+                          "Sierpinski gasket (3 points)",
+                          "Sierpinski gasket on a patch"};
   const float width = ImGui::GetFontSize() * 14;
   ImGui::SetNextItemWidth(width);
   ImGui::Combo("Preset", &choice.preset, labels, 6);
@@ -210,8 +213,9 @@ void drawControlPoints(ModellerState& state, EditQueue& edits) {
   ImGui::EndDisabled();
   state.probe.item("matrices.add_point");
   if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-    ImGui::SetTooltip("A Bezier curve is degree-elevated (same curve); otherwise the new point has a zero column "
-                      "and the mean row, so nothing moves until you edit its column");
+    ImGui::SetTooltip(
+        "A Bezier curve is degree-elevated (same curve); otherwise the new point has a zero column "
+        "and the mean row, so nothing moves until you edit its column");
   if (ImGui::BeginChild("points",
                         ImVec2(0, std::min(float(points.size()) + 0.5f, 6.5f) * ImGui::GetFrameHeightWithSpacing()))) {
     for (std::size_t j = 0; j < points.size(); ++j) {

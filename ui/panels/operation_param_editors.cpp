@@ -7,8 +7,8 @@
 #include <optional>
 
 #include "model/calculator.h"
-#include "ui/panels/operation_editor.h"
 #include "ui/base/widgets.h"
+#include "ui/panels/operation_editor.h"
 
 namespace gridifs::ui {
 

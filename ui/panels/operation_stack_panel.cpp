@@ -6,8 +6,8 @@
 #include <cstdio>
 
 #include "model/stack_evaluator.h"
-#include "ui/panels/panels.h"
 #include "ui/base/widgets.h"
+#include "ui/panels/panels.h"
 
 namespace gridifs::ui {
 namespace {
@@ -116,12 +116,15 @@ void drawOperationStackPanel(ModellerState& state, EditQueue& edits) {
       if (!spec.addable) continue;
       const char* label = spec.title;
       const float w = ImGui::CalcTextSize(label).x + ImGui::GetStyle().FramePadding.x * 2;
-      if (x > 0.0f && x + ImGui::GetStyle().ItemSpacing.x + w <= available) ImGui::SameLine();
-      else x = 0.0f;
+      if (x > 0.0f && x + ImGui::GetStyle().ItemSpacing.x + w <= available)
+        ImGui::SameLine();
+      else
+        x = 0.0f;
       if (ImGui::Button(label)) addOperation(state, edits, spec);
       state.probe.item(std::string("ops.add.") + label);
       if (ImGui::IsItemHovered())
-        state.contextHelp = std::string("Add a ") + label + " operation after the active one, applied to the current selection";
+        state.contextHelp =
+            std::string("Add a ") + label + " operation after the active one, applied to the current selection";
       x += (x > 0.0f ? ImGui::GetStyle().ItemSpacing.x : 0.0f) + w;
     }
   }

@@ -7,8 +7,8 @@
 #include <cstdio>
 
 #include "edit/node_picking.h"
-#include "ui/panels/panels.h"
 #include "ui/base/widgets.h"
+#include "ui/panels/panels.h"
 
 namespace gridifs::ui {
 
@@ -34,7 +34,8 @@ void drawSelectionPanel(ModellerState& state, EditQueue& edits, SelectionPanelSt
       ImGui::CalcTextSize(where).x)
     ImGui::SameLine();
   ImGui::TextDisabled("%s", where);
-  if (ImGui::Button("All")) selection = {SelectionBox{{0, res[0] - 1}, {0, res[1] - 1}, {0, res[2] - 1}, SelectionOp::Or}};
+  if (ImGui::Button("All"))
+    selection = {SelectionBox{{0, res[0] - 1}, {0, res[1] - 1}, {0, res[2] - 1}, SelectionOp::Or}};
   contextHelp(state, "Select every node (Ctrl+A)");
   ImGui::SameLine();
   if (ImGui::Button("None")) selection.clear();
@@ -44,8 +45,10 @@ void drawSelectionPanel(ModellerState& state, EditQueue& edits, SelectionPanelSt
     std::vector<unsigned char> inverted(mask.size());
     for (std::size_t n = 0; n < mask.size(); ++n) inverted[n] = mask[n] ? 0 : 1;
     Selection s = boxesFromMask(inverted, res);
-    if (int(s.size()) > limits::kMaxSelectionBoxes) state.error("The inverted selection needs too many index boxes.");
-    else selection = s;
+    if (int(s.size()) > limits::kMaxSelectionBoxes)
+      state.error("The inverted selection needs too many index boxes.");
+    else
+      selection = s;
   }
   contextHelp(state, "Select exactly the nodes that are not selected (Ctrl+I)");
 
@@ -74,8 +77,10 @@ void drawSelectionPanel(ModellerState& state, EditQueue& edits, SelectionPanelSt
   contextHelp(state, "How the box combines with the boxes before it (left to right, from the empty set)");
   ImGui::SameLine();
   if (ImGui::Button("Add box")) {
-    if (int(selection.size()) >= limits::kMaxSelectionBoxes) state.error("A selection has at most 256 boxes.");
-    else selection.push_back(box);
+    if (int(selection.size()) >= limits::kMaxSelectionBoxes)
+      state.error("A selection has at most 256 boxes.");
+    else
+      selection.push_back(box);
   }
   state.probe.item("selection.addBox");
   ImGui::SameLine();
@@ -119,7 +124,8 @@ void drawSelectionPanel(ModellerState& state, EditQueue& edits, SelectionPanelSt
   state.newOpCenter = Center::Kind(center);
   ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Point").x - ImGui::GetStyle().ItemInnerSpacing.x * 2);
   dragVec3("Point", state.pointCenter, 0.005);
-  contextHelp(state, "Alt+click in a grid view places this point (Gröller & Wegenkittl 1994, §4.3: interactive center)");
+  contextHelp(state,
+              "Alt+click in a grid view places this point (Gröller & Wegenkittl 1994, §4.3: interactive center)");
 }
 
 }  // namespace gridifs::ui

@@ -7,9 +7,9 @@
 #include <cstdio>
 
 #include "model/settings_tables.h"
+#include "ui/base/widgets.h"
 #include "ui/panels/panels.h"
 #include "ui/panels/setting_slider.h"
-#include "ui/base/widgets.h"
 
 namespace gridifs::ui {
 namespace {
@@ -87,11 +87,13 @@ void drawShadingPanel(ModellerState& state, EditQueue& edits) {
   }
 
   sectionTitle("Surface");
-  for (const auto& [key, id] : {std::pair{"ambient", "##ambient"}, {"specular", "##specular"}, {"shininess", "##shininess"}})
+  for (const auto& [key, id] :
+       {std::pair{"ambient", "##ambient"}, {"specular", "##specular"}, {"shininess", "##shininess"}})
     settingSlider(state, edits, SettingGroup::Shading, key, s, fullWidth(id));
 
   sectionTitle("Ambient occlusion");
-  for (const auto& [key, id] : {std::pair{"radius", "##aoradius"}, {"strength", "##aostrength"}, {"directions", "##aodirs"}})
+  for (const auto& [key, id] :
+       {std::pair{"radius", "##aoradius"}, {"strength", "##aostrength"}, {"directions", "##aodirs"}})
     settingSlider(state, edits, SettingGroup::AmbientOcclusion, key, s.ao, fullWidth(id));
 
   sectionTitle("Fog");

@@ -9,8 +9,8 @@
 
 #include "base/errors.h"
 #include "model/settings_tables.h"
-#include "ui/panels/key_button.h"
 #include "ui/base/widgets.h"
+#include "ui/panels/key_button.h"
 
 namespace gridifs::ui {
 namespace {

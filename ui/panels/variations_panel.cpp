@@ -8,9 +8,9 @@
 #include <cctype>
 
 #include "model/flame_variations.h"
+#include "ui/base/widgets.h"
 #include "ui/panels/key_button.h"
 #include "ui/panels/panels.h"
-#include "ui/base/widgets.h"
 
 namespace gridifs::ui {
 namespace {
@@ -25,8 +25,8 @@ bool matches(const std::string& name, const std::string& filter) {
 }
 
 /// One variation of the function: its weight, a remove button, then its parameters.
-void drawVariation(ModellerState& state, EditQueue& edits, FunctionRef ref, const Function& f,
-                   const std::string& name, double weight) {
+void drawVariation(ModellerState& state, EditQueue& edits, FunctionRef ref, const Function& f, const std::string& name,
+                   double weight) {
   const FlameVariation* v = findFlameVariation(name);
   const std::string path = ref.path();
   ImGui::PushID(name.c_str());

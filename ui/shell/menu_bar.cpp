@@ -4,11 +4,11 @@
 #include <imgui.h>
 
 #include "edit/node_picking.h"
-#include "ui/shell/app_commands.h"
 #include "ui/dialogs/export_dialog.h"
-#include "ui/shell/symmetry_menu.h"
 #include "ui/panels/panels.h"
 #include "ui/panels/timeline_panel.h"
+#include "ui/shell/app_commands.h"
+#include "ui/shell/symmetry_menu.h"
 
 namespace gridifs::ui {
 namespace {
@@ -138,8 +138,10 @@ float drawMenuBar(AppCommands& app) {
         s.previewMode = PreviewMode::Volume;
       ImGui::EndMenu();
     }
-    if (ImGui::MenuItem(s.previewPaused ? "Resume preview" : "Pause preview", "Space")) s.previewPaused = !s.previewPaused;
-    if (ImGui::MenuItem(s.playback.playing ? "Pause animation" : "Play animation", "Alt+A")) togglePlayback(s, app.edits);
+    if (ImGui::MenuItem(s.previewPaused ? "Resume preview" : "Pause preview", "Space"))
+      s.previewPaused = !s.previewPaused;
+    if (ImGui::MenuItem(s.playback.playing ? "Pause animation" : "Play animation", "Alt+A"))
+      togglePlayback(s, app.edits);
     ImGui::Separator();
     if (ImGui::MenuItem("Reset layout")) app.resetLayout();
     ImGui::EndMenu();
@@ -162,14 +164,18 @@ void handleKey(AppCommands& app, const ImGuiIO& io, bool ctrl, bool shift, bool 
     if (pressed(GLFW_KEY_N)) app.files.requestNew();
     if (pressed(GLFW_KEY_O)) app.files.requestOpenDialog();
     if (pressed(GLFW_KEY_S)) {
-      if (shift) app.files.saveAsDialog();
-      else app.files.save();
+      if (shift)
+        app.files.saveAsDialog();
+      else
+        app.files.save();
     }
     if (pressed(GLFW_KEY_Q)) app.files.requestQuit();
     if (!io.WantTextInput) {
       if (pressed(GLFW_KEY_Z)) {
-        if (shift) app.edits.redo();
-        else app.edits.undo();
+        if (shift)
+          app.edits.redo();
+        else
+          app.edits.undo();
       }
       if (pressed(GLFW_KEY_Y)) app.edits.redo();
       if (pressed(GLFW_KEY_A)) selectAll(s);
@@ -181,12 +187,16 @@ void handleKey(AppCommands& app, const ImGuiIO& io, bool ctrl, bool shift, bool 
   // The timeline: Blender's Alt+A plays (Space already pauses the preview), arrows step frames.
   if (alt && pressed(GLFW_KEY_A)) togglePlayback(s, app.edits);
   if (pressed(GLFW_KEY_LEFT)) {
-    if (shift) jumpToEnd(s, app.edits, false);
-    else stepFrames(s, app.edits, -1);
+    if (shift)
+      jumpToEnd(s, app.edits, false);
+    else
+      stepFrames(s, app.edits, -1);
   }
   if (pressed(GLFW_KEY_RIGHT)) {
-    if (shift) jumpToEnd(s, app.edits, true);
-    else stepFrames(s, app.edits, 1);
+    if (shift)
+      jumpToEnd(s, app.edits, true);
+    else
+      stepFrames(s, app.edits, 1);
   }
   if (pressed(GLFW_KEY_DELETE)) deleteActiveOperation(s, app.edits);
   if (pressed(GLFW_KEY_F)) app.frameViews();
@@ -208,7 +218,8 @@ void handleShortcuts(AppCommands& app) {
   s.keyPresses.clear();
   if (app.files.modalOpen()) return;
   for (const ModellerState::KeyPress& press : presses) {
-    const bool ctrl = press.mods & GLFW_MOD_CONTROL, shift = press.mods & GLFW_MOD_SHIFT, alt = press.mods & GLFW_MOD_ALT;
+    const bool ctrl = press.mods & GLFW_MOD_CONTROL, shift = press.mods & GLFW_MOD_SHIFT,
+               alt = press.mods & GLFW_MOD_ALT;
     handleKey(app, io, ctrl, shift, alt, [&](int key) { return press.key == key; });
   }
 }

@@ -3,10 +3,11 @@
 #include "ui/shell/modeller_app.h"
 
 #include <epoxy/gl.h>
+
 #include <GLFW/glfw3.h>
-#include <imgui.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
 
 #include <algorithm>
 #include <array>
@@ -21,24 +22,24 @@
 #include <vector>
 
 #include "base/atomic_file.h"
+#include "render/image_file.h"
+#include "ui/dialogs/combine_dialog.h"
+#include "ui/dialogs/export_dialog.h"
+#include "ui/dialogs/render_animation_dialog.h"
+#include "ui/gl/screenshot.h"
+#include "ui/gl/view_renderer.h"
+#include "ui/panels/condensation_set_panel.h"
+#include "ui/panels/construction_tree_panel.h"
+#include "ui/panels/panels.h"
+#include "ui/panels/timeline_panel.h"
 #include "ui/shell/app_commands.h"
 #include "ui/shell/app_window.h"
-#include "ui/dialogs/combine_dialog.h"
-#include "ui/panels/condensation_set_panel.h"
-#include "ui/dialogs/export_dialog.h"
-#include "ui/views/grid_view.h"
 #include "ui/shell/modeller_options.h"
 #include "ui/shell/panel_layout.h"
-#include "ui/panels/panels.h"
-#include "ui/views/preview_view.h"
-#include "ui/panels/construction_tree_panel.h"
 #include "ui/shell/project_files.h"
-#include "render/image_file.h"
-#include "ui/gl/screenshot.h"
 #include "ui/shell/theme.h"
-#include "ui/panels/timeline_panel.h"
-#include "ui/dialogs/render_animation_dialog.h"
-#include "ui/gl/view_renderer.h"
+#include "ui/views/grid_view.h"
+#include "ui/views/preview_view.h"
 
 namespace gridifs::ui {
 namespace {
@@ -67,8 +68,8 @@ class ModellerApp {
     if (fs::exists(iniPath_, ec) && appWindow_.savedLayoutWidth() > 0)
       layoutViewport_ = ImVec2(float(appWindow_.savedLayoutWidth()), float(appWindow_.savedLayoutHeight()));
     ImGui::GetIO().IniFilename = iniPath_.c_str();
-    commands_ = std::make_unique<AppCommands>(AppCommands{state_, edits_, files_, [this] { frameViews(); },
-                                                          [this] { resetLayout_ = true; }, &export_});
+    commands_ = std::make_unique<AppCommands>(
+        AppCommands{state_, edits_, files_, [this] { frameViews(); }, [this] { resetLayout_ = true; }, &export_});
   }
 
   ~ModellerApp() {
@@ -133,14 +134,14 @@ class ModellerApp {
   std::array<GridView, 4> views_;
   GridView ifsView_;
   PreviewView preview_;
-  ExportDialog export_;  // File > Export
+  ExportDialog export_;              // File > Export
   RenderAnimationDialog animation_;  // File > Render animation
   CombineDialog combine_;            // File > Combine
   CondensationSetPanel setPanel_;    // in the Operations panel's place while a set function is active
   FunctionsPanelState functionsPanel_;
   OperationPanelState operationPanel_;
   SelectionPanelState selectionPanel_;
-  MatricesWindowState matricesWindow_;  // Function > Matrices
+  MatricesWindowState matricesWindow_;      // Function > Matrices
   ConstructionTreePanel constructionTree_;  // Function > Construction tree
   std::unique_ptr<AppCommands> commands_;
   std::string iniPath_, title_;
@@ -151,7 +152,7 @@ class ModellerApp {
   int frame_ = 0;
   int quietFrames_ = 0;  // frames since the last input or edit: a few more are drawn before waiting
   std::vector<double> frameMs_;
-  double slowestFrameMs_ = 0.0;  // past the first frames
+  double slowestFrameMs_ = 0.0;          // past the first frames
   double phaseMs_[5] = {0, 0, 0, 0, 0};  // UI+edits+publish, grid views, IFS view, preview, ImGui
   // Where the slowest frame's time went (written to the probe, so a soak can name the phase).
   nlohmann::json slowestFramePhases_ = nlohmann::json::object();
@@ -194,7 +195,8 @@ void ModellerApp::drawIfsView(float fbScale) {
     if (axes[i] == ifsView_.axis()) current = i;
   ImGui::SetNextItemWidth(ImGui::GetFontSize() * 12);
   if (ImGui::Combo("##ifsaxis", &current, names, 4)) ifsView_.setAxis(axes[current]);
-  if (ImGui::IsItemHovered()) state_.contextHelp = "Which way the IFS view looks; the user view is the preview's camera";
+  if (ImGui::IsItemHovered())
+    state_.contextHelp = "Which way the IFS view looks; the user view is the preview's camera";
   ImGui::SameLine();
   const Project& project = state_.document.project();
   ImGui::TextDisabled("%zu function%s in the common initial grid%s", project.functions.size(),
@@ -284,8 +286,7 @@ void ModellerApp::buildUi() {
   // View windows skip their background: the view image covers it (fill rate matters on llvmpipe).
   const ImGuiWindowFlags viewWindow =
       panel | ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse | ImGuiWindowFlags_NoBackground;
-  if (ImGui::Begin(gridsTitle.c_str(), nullptr, viewWindow))
-    drawGridViews(fbScale);
+  if (ImGui::Begin(gridsTitle.c_str(), nullptr, viewWindow)) drawGridViews(fbScale);
   endPanel(Panel::Grids);
   ImGui::End();
   ImGui::PopStyleVar();
@@ -302,8 +303,7 @@ void ModellerApp::buildUi() {
   endPanel(Panel::Preview);
   ImGui::End();
   beginPanel(Panel::Ifs, layout, cond);
-  if (ImGui::Begin("IFS view", nullptr, viewWindow))
-    drawIfsView(fbScale);
+  if (ImGui::Begin("IFS view", nullptr, viewWindow)) drawIfsView(fbScale);
   endPanel(Panel::Ifs);
   ImGui::End();
   ImGui::PopStyleVar();
@@ -346,7 +346,10 @@ void ModellerApp::writeProbe(double frameMs) {
   int x = 0, y = 0, w = 0, h = 0;
   glfwGetWindowPos(window_, &x, &y);
   glfwGetWindowSize(window_, &w, &h);
-  j["window"] = {{"x", x}, {"y", y}, {"width", w}, {"height", h},
+  j["window"] = {{"x", x},
+                 {"y", y},
+                 {"width", w},
+                 {"height", h},
                  {"maximized", glfwGetWindowAttrib(window_, GLFW_MAXIMIZED) != 0}};
   const ScreenRect work = appWindow_.workArea();
   j["work_area"] = {{"x", work.x}, {"y", work.y}, {"width", work.width}, {"height", work.height}};
@@ -375,10 +378,15 @@ void ModellerApp::writeProbe(double frameMs) {
   j["status_error"] = state_.statusIsError;
   j["modal"] = files_.modalOpen();
   const RenderStats& s = state_.previewStats;
-  j["preview"] = {{"samples", s.samples}, {"generation", s.generation}, {"done", s.done}, {"paused", s.paused},
+  j["preview"] = {{"samples", s.samples},
+                  {"generation", s.generation},
+                  {"done", s.done},
+                  {"paused", s.paused},
                   {"kept_camera", s.keptCamera},
-                  {"restarts", preview_.restarts()}, {"hit_pixels", preview_.image().hitPixels},
-                  {"image_generation", preview_.image().generation}, {"device", state_.previewDevice}};
+                  {"restarts", preview_.restarts()},
+                  {"hit_pixels", preview_.image().hitPixels},
+                  {"image_generation", preview_.image().generation},
+                  {"device", state_.previewDevice}};
   nlohmann::json rects = nlohmann::json::object();
   for (const auto& [name, r] : state_.probe.rects) rects[name] = {r.x, r.y, r.z, r.w};
   j["rects"] = rects;
@@ -395,10 +403,14 @@ void ModellerApp::writeProbe(double frameMs) {
     tracks[path] = keys;
   }
   const AnimationSettings timeline = timelineOf(project);
-  j["timeline"] = {{"time", project.time},       {"playing", state_.playback.playing},
-                   {"fps", timeline.fps},        {"start", timeline.start},
-                   {"end", timeline.end},        {"loop", timeline.loop},
-                   {"has_animation", project.animation.has_value()}, {"tracks", tracks}};
+  j["timeline"] = {{"time", project.time},
+                   {"playing", state_.playback.playing},
+                   {"fps", timeline.fps},
+                   {"start", timeline.start},
+                   {"end", timeline.end},
+                   {"loop", timeline.loop},
+                   {"has_animation", project.animation.has_value()},
+                   {"tracks", tracks}};
   // Node positions in the Top view (window coordinates), so a test can press on a real node.
   nlohmann::json nodes = nlohmann::json::array();
   for (const glm::dvec2& p : views_[0].screenNodes(state_)) nodes.push_back({p.x, p.y});
@@ -549,8 +561,10 @@ void ModellerApp::endSession(bool capture) {
     std::fprintf(stderr, "gridifs: %zu frames, frame time mean %.2f ms, median %.2f ms, p95 %.2f ms, max %.2f ms\n",
                  sorted.size(), mean, sorted[sorted.size() / 2], sorted[sorted.size() * 95 / 100], sorted.back());
     const double n = double(frame_);
-    std::fprintf(stderr, "gridifs: per frame: UI %.2f ms, grid views %.2f ms, IFS view %.2f ms, preview %.2f ms, ImGui %.2f ms\n",
-                 phaseMs_[0] / n, phaseMs_[1] / n, phaseMs_[2] / n, phaseMs_[3] / n, phaseMs_[4] / n);
+    std::fprintf(
+        stderr,
+        "gridifs: per frame: UI %.2f ms, grid views %.2f ms, IFS view %.2f ms, preview %.2f ms, ImGui %.2f ms\n",
+        phaseMs_[0] / n, phaseMs_[1] / n, phaseMs_[2] / n, phaseMs_[3] / n, phaseMs_[4] / n);
   }
 }
 
@@ -657,8 +671,10 @@ int runModeller(const std::string& file, int argc, char** argv) {
   int code = 1;
   {
     AppWindow appWindow(options, AppFolders::fromEnvironment().config / "window.json");
-    if (appWindow.window()) code = runInWindow(appWindow, options);
-    else std::cerr << "gridifs: cannot create an OpenGL 3.3 window.\n";
+    if (appWindow.window())
+      code = runInWindow(appWindow, options);
+    else
+      std::cerr << "gridifs: cannot create an OpenGL 3.3 window.\n";
   }
   glfwTerminate();
   return code;

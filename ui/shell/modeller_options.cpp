@@ -30,7 +30,8 @@ std::optional<std::string> parseModellerOptions(int argc, char** argv, ModellerO
       out.waitPoints = std::int64_t(n);
     } else if (arg == "--size") {
       int w = 0, h = 0;
-      if (!next(value) || std::sscanf(value.c_str(), "%dx%d", &w, &h) != 2 || w < 320 || h < 240 || w > 16384 || h > 16384)
+      if (!next(value) || std::sscanf(value.c_str(), "%dx%d", &w, &h) != 2 || w < 320 || h < 240 || w > 16384 ||
+          h > 16384)
         return "--size needs WIDTHxHEIGHT, at least 320x240";
       out.width = w;
       out.height = h;

@@ -25,8 +25,8 @@ struct ModellerOptions {
   std::string probe;
   double autosaveSeconds = 60.0;
   bool stats = false;
-  int renderThreads = 0;  // 0: hardware threads minus one (the UI keeps a core)
-  float uiScale = 0.0f;   // 0: the monitor's content scale
+  int renderThreads = 0;        // 0: hardware threads minus one (the UI keeps a core)
+  float uiScale = 0.0f;         // 0: the monitor's content scale
   std::string device = "auto";  // auto | gpu | cpu
 };
 

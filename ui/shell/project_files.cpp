@@ -12,8 +12,8 @@
 
 #include "base/atomic_file.h"
 #include "base/bounded_read.h"
-#include "io/project_io.h"
 #include "io/flame_import.h"
+#include "io/project_io.h"
 
 namespace gridifs::ui {
 namespace fs = std::filesystem;
@@ -135,7 +135,8 @@ void ProjectFiles::perform(const Action& action) {
     state_.forgetDocumentViewState();
     state_.info("New project");
   } else if (const auto* open = std::get_if<Open>(&action)) {
-    if (open->file) load(*open->file);
+    if (open->file)
+      load(*open->file);
     else {
       browserForSave_ = false;
       browserForFlame_ = false;
@@ -203,7 +204,8 @@ bool ProjectFiles::saveTo(const fs::path& file) {
     state_.info("Saved " + file.string());
     return true;
   } catch (const std::exception& e) {
-    showError("Could not save " + file.filename().string(), std::string(e.what()) + " The file on disk was not changed.");
+    showError("Could not save " + file.filename().string(),
+              std::string(e.what()) + " The file on disk was not changed.");
     return false;
   }
 }
@@ -282,7 +284,8 @@ void ProjectFiles::draw(EditQueue& edits) {
   if (promptUnsaved_) ImGui::OpenPopup("Unsaved changes");
   ImGui::SetNextWindowPos(middle, ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
   if (ImGui::BeginPopupModal("Unsaved changes", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-    const std::string name = state_.document.path().empty() ? "untitled project" : state_.document.path().filename().string();
+    const std::string name =
+        state_.document.path().empty() ? "untitled project" : state_.document.path().filename().string();
     ImGui::Text("Save the changes to %s first?", name.c_str());
     ImGui::TextDisabled("Otherwise they are lost.");
     ImGui::Spacing();

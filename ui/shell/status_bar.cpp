@@ -13,10 +13,14 @@ namespace {
 
 std::string humanCount(double n) {
   char text[32];
-  if (n >= 1e9) std::snprintf(text, sizeof text, "%.2fG", n / 1e9);
-  else if (n >= 1e6) std::snprintf(text, sizeof text, "%.2fM", n / 1e6);
-  else if (n >= 1e3) std::snprintf(text, sizeof text, "%.1fk", n / 1e3);
-  else std::snprintf(text, sizeof text, "%.0f", n);
+  if (n >= 1e9)
+    std::snprintf(text, sizeof text, "%.2fG", n / 1e9);
+  else if (n >= 1e6)
+    std::snprintf(text, sizeof text, "%.2fM", n / 1e6);
+  else if (n >= 1e3)
+    std::snprintf(text, sizeof text, "%.1fk", n / 1e3);
+  else
+    std::snprintf(text, sizeof text, "%.0f", n);
   return text;
 }
 
@@ -42,7 +46,8 @@ void drawStatusBar(ModellerState& state, float height) {
   ImGui::PushStyleVar(ImGuiStyleVar_WindowMinSize, ImVec2(1.0f, 1.0f));  // thinner than a window's 32 px minimum
   ImGui::PushStyleVar(ImGuiStyleVar_WindowRounding, 0.0f);
   ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
-  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(ImGui::GetFontSize() * 0.6f, (height - ImGui::GetFontSize()) * 0.5f));
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding,
+                      ImVec2(ImGui::GetFontSize() * 0.6f, (height - ImGui::GetFontSize()) * 0.5f));
   ImGui::PushStyleColor(ImGuiCol_WindowBg, ImVec4(0.075f, 0.08f, 0.09f, 1.0f));
   ImGui::Begin("##status", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
@@ -72,7 +77,8 @@ void drawStatusBar(ModellerState& state, float height) {
   ImGui::TextDisabled("  |  ");
   ImGui::SameLine();
   // Messages fade after a while (errors stay longer); dialogs keep the full text meanwhile.
-  const bool recentMessage = !state.statusText.empty() && state.now - state.statusTime < (state.statusIsError ? 15.0 : 6.0);
+  const bool recentMessage =
+      !state.statusText.empty() && state.now - state.statusTime < (state.statusIsError ? 15.0 : 6.0);
   if (recentMessage && (state.contextHelp.empty() || state.statusIsError)) {
     ImGui::TextColored(state.statusIsError ? ImVec4(1.0f, 0.45f, 0.35f, 1.0f) : ImVec4(0.6f, 0.85f, 1.0f, 1.0f), "%s",
                        fitText(state.statusText, ImGui::GetContentRegionAvail().x).c_str());

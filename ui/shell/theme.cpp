@@ -1,7 +1,7 @@
 #include "ui/shell/theme.h"
 
-#include <imgui.h>
 #include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
 
 #include <filesystem>
 
@@ -66,7 +66,8 @@ float applyTheme(float scale) {
   // panels use (·, °, →, ×); ImGui's built-in bitmap font is the fallback.
   ImGuiIO& io = ImGui::GetIO();
   const float size = 15.0f * scale;
-  static const ImWchar ranges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2010, 0x205E, 0x2190, 0x21FF, 0x2200, 0x22FF, 0x25A0, 0x25FF, 0};
+  static const ImWchar ranges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2010, 0x205E, 0x2190,
+                                   0x21FF, 0x2200, 0x22FF, 0x25A0, 0x25FF, 0};
   for (const char* path : {"/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf", "/usr/share/fonts/TTF/DejaVuSans.ttf",
                            "/usr/share/fonts/truetype/noto/NotoSans-Regular.ttf"}) {
     std::error_code ec;

@@ -8,10 +8,10 @@
 #include "flame/palette.h"
 #include "flame/palette_gradient.h"
 #include "model/settings_tables.h"
-#include "ui/panels/key_button.h"
-#include "ui/views/preview_modes.h"
-#include "ui/panels/setting_slider.h"
 #include "ui/base/widgets.h"
+#include "ui/panels/key_button.h"
+#include "ui/panels/setting_slider.h"
+#include "ui/views/preview_modes.h"
 
 namespace gridifs::ui {
 namespace {
@@ -202,7 +202,8 @@ void PreviewModes::drawFlameControls(ModellerState& state, EditQueue& edits) {
   }
   state.probe.item("flame.palette");
   contextHelp(state,
-              "Palette of the flame display: ours and flam3's collection (Draves & Reckase 2003, §5); a change restarts the preview");
+              "Palette of the flame display: ours and flam3's collection (Draves & Reckase 2003, §5); a change "
+              "restarts the preview");
   ImGui::SameLine();
   {
     const ImVec2 pos = ImGui::GetCursorScreenPos();

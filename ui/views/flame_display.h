@@ -8,10 +8,10 @@
 #include <vector>
 
 #include "base/background_job.h"
-#include "render/chaos_renderer.h"
 #include "edit/document.h"
 #include "flame/density_histogram.h"
 #include "model/flame_settings.h"
+#include "render/chaos_renderer.h"
 
 namespace gridifs::ui {
 

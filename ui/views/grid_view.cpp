@@ -24,7 +24,7 @@ constexpr glm::vec4 kCenterColor{0.25f, 0.85f, 0.95f, 1.0f};
 constexpr glm::vec4 kHandleColor{0.95f, 0.30f, 0.85f, 1.0f};
 constexpr glm::vec4 kMorphColor{1.0f, 0.90f, 0.25f, 1.0f};
 constexpr glm::vec4 kFinalLatticeColor{0.80f, 0.62f, 1.0f, 1.0f};  // violet, as the final function's row
-constexpr double kPickRadius = 8.0;   // logical pixels
+constexpr double kPickRadius = 8.0;                                // logical pixels
 constexpr double kDragThreshold = 3.0;
 
 Vertex vertex(const Vec3& p, const glm::vec4& c, float size = 0.0f) {
@@ -250,9 +250,9 @@ void GridView::build(ModellerState& state, EditQueue& edits, glm::vec2 size, flo
   // The picture itself is copied into the framebuffer by present(); ImGui draws on top.
   screenOrigin_ = dvec2(origin.x, origin.y);
   visible_ = true;
-  ImGui::InvisibleButton(id_.c_str(), extent,
-                         ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
-                             ImGuiButtonFlags_MouseButtonMiddle);
+  ImGui::InvisibleButton(
+      id_.c_str(), extent,
+      ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight | ImGuiButtonFlags_MouseButtonMiddle);
   hovered_ = ImGui::IsItemHovered();
   const dvec2 mouse(io.MousePos.x - origin.x, io.MousePos.y - origin.y);
 
@@ -297,8 +297,10 @@ void GridView::build(ModellerState& state, EditQueue& edits, glm::vec2 size, flo
       }
   }
   if (drag_ != Drag::None) {
-    if (ImGui::IsMouseDown(dragButton_)) updateDrag(state, edits, mouse);
-    else endDrag(state, edits, mouse);
+    if (ImGui::IsMouseDown(dragButton_))
+      updateDrag(state, edits, mouse);
+    else
+      endDrag(state, edits, mouse);
   }
   drawControlPoints(state, draw, mouse);
   if (drag_ == Drag::Box && dragMoved_) {
@@ -312,8 +314,10 @@ void GridView::build(ModellerState& state, EditQueue& edits, glm::vec2 size, flo
 }
 
 void GridView::zoom(ModellerState& state, EditQueue& edits, float wheel) {
-  if (usesProjectCamera()) orbit_.zoomProject(state.document.project().camera, edits, wheel, state.now);
-  else camera_.orbit = OrbitController::zoomed(camera_.orbit, wheel, 0.02);
+  if (usesProjectCamera())
+    orbit_.zoomProject(state.document.project().camera, edits, wheel, state.now);
+  else
+    camera_.orbit = OrbitController::zoomed(camera_.orbit, wheel, 0.02);
 }
 
 void GridView::beginDrag(ModellerState& state, EditQueue& edits, dvec2 mouse) {
@@ -366,8 +370,8 @@ void GridView::beginDrag(ModellerState& state, EditQueue& edits, dvec2 mouse) {
   dragFunctionRef_ = state.activeFunction;
   dragFunction_ = state.function();
   if (io.KeyAlt) {  // place the point center of transformation (Gröller & Wegenkittl 1994, §4.3)
-    const Vec3 p = cam.orbit.target + cam.dragDelta(mouse.x - size_.x * 0.5, mouse.y - size_.y * 0.5,
-                                                    cam.orbit.target, size_.y);
+    const Vec3 p =
+        cam.orbit.target + cam.dragDelta(mouse.x - size_.x * 0.5, mouse.y - size_.y * 0.5, cam.orbit.target, size_.y);
     state.pointCenter = p;
     if (const Operation* op = state.op(); op && op->center.kind == Center::Kind::Point) {
       edits.commit(PlaceCenter{state.activeFunction, state.activeOp, p});
@@ -394,7 +398,8 @@ void GridView::beginDrag(ModellerState& state, EditQueue& edits, dvec2 mouse) {
       return;
     }
     if (!pressedWasSelected_)
-      state.selection() = normalized(applyPick(state.selection(), {*hit}, res, io.KeyShift ? PickMode::Add : PickMode::Replace), res);
+      state.selection() =
+          normalized(applyPick(state.selection(), {*hit}, res, io.KeyShift ? PickMode::Add : PickMode::Replace), res);
     anchor_ = nodes[*hit];
     drag_ = Drag::Nodes;
     return;
@@ -412,11 +417,14 @@ void GridView::updateDrag(ModellerState& state, EditQueue& edits, dvec2 mouse) {
   switch (drag_) {
     case Drag::Orbit:
     case Drag::Pan: {
-      if (usesProjectCamera()) orbit_.dragProject(edits, mouse, camera_.axis, size_.y, firstMove);
-      else camera_.orbit = orbit_.dragged(mouse, camera_.axis, size_.y);
+      if (usesProjectCamera())
+        orbit_.dragProject(edits, mouse, camera_.axis, size_.y, firstMove);
+      else
+        camera_.orbit = orbit_.dragged(mouse, camera_.axis, size_.y);
       break;
     }
-    case Drag::Box: break;
+    case Drag::Box:
+      break;
     case Drag::Nodes: {
       if (firstMove) edits.begin("Move nodes");
       const Vec3 d = camera(state).dragDelta(delta.x, delta.y, anchor_, size_.y);
@@ -435,7 +443,8 @@ void GridView::updateDrag(ModellerState& state, EditQueue& edits, dvec2 mouse) {
         if (auto* m = std::get_if<MagnetOp>(&op.params)) m->point = p;
       } else if (handle_ == Handle::MorphFrom || handle_ == Handle::MorphTo) {
         if (auto* m = std::get_if<MorphOp>(&op.params); m && handlePair_ < int(m->pairs.size()))
-          (handle_ == Handle::MorphFrom ? m->pairs[std::size_t(handlePair_)].from : m->pairs[std::size_t(handlePair_)].to) = p;
+          (handle_ == Handle::MorphFrom ? m->pairs[std::size_t(handlePair_)].from
+                                        : m->pairs[std::size_t(handlePair_)].to) = p;
       } else if (handle_ == Handle::CenterPoint) {
         op.center.point = p;
         state.pointCenter = p;
@@ -467,7 +476,8 @@ void GridView::updateDrag(ModellerState& state, EditQueue& edits, dvec2 mouse) {
       edits.update(MoveControlPoint{j, p});
       break;
     }
-    case Drag::None: break;
+    case Drag::None:
+      break;
   }
 }
 
@@ -482,8 +492,8 @@ void GridView::endDrag(ModellerState& state, EditQueue& edits, dvec2 mouse) {
         std::vector<Vec3> nodes;
         std::vector<FunctionRef> owner;
         pickableNodes(state, nodes, owner);
-        const auto picked = nodesInRect(nodes, camera(state).viewProjection(size_.x, size_.y), size_.x, size_.y,
-                                        dragStart_, mouse);
+        const auto picked =
+            nodesInRect(nodes, camera(state).viewProjection(size_.x, size_.y), size_.x, size_.y, dragStart_, mouse);
         const PickMode mode = io.KeyShift ? PickMode::Add : io.KeyCtrl ? PickMode::Remove : PickMode::Replace;
         state.selection() = normalized(applyPick(state.selection(), picked, res, mode), res);
         state.info(std::to_string(picked.size()) + " node" + (picked.size() == 1 ? "" : "s") + " picked");
@@ -557,8 +567,10 @@ void GridView::buildFunctionScene(ModellerState& state) {
   const bool many = grid.nodeCount() > 30000;
   const float nodeSize = grid.nodeCount() > 2000 ? 4.0f : 6.5f;
   for (std::size_t n = 0; n < grid.nodeCount(); ++n) {
-    if (mask[n]) scene_.points.push_back(vertex(grid.nodes()[n], kSelectedColor, nodeSize + 2.5f));
-    else if (!many) scene_.points.push_back(vertex(grid.nodes()[n], kNodeColor, nodeSize));
+    if (mask[n])
+      scene_.points.push_back(vertex(grid.nodes()[n], kSelectedColor, nodeSize + 2.5f));
+    else if (!many)
+      scene_.points.push_back(vertex(grid.nodes()[n], kNodeColor, nodeSize));
   }
   const ViewCamera cam = camera(state);
   const double unit = cam.worldPerPixel(cam.orbit.target, size_.y);  // world size of one pixel
@@ -566,17 +578,22 @@ void GridView::buildFunctionScene(ModellerState& state) {
   const Operation* op = state.op();
   const Center::Kind kind = op ? op->center.kind : state.newOpCenter;
   Vec3 center;
-  if (kind == Center::Kind::Point) center = op ? op->center.point : state.pointCenter;
-  else if (kind == Center::Kind::Selection && state.hasSelection()) center = centroid(grid.nodes(), &mask);
-  else center = centroid(grid.nodes(), nullptr);
-  const bool absoluteOp = op && (std::holds_alternative<MagnetOp>(op->params) || std::holds_alternative<MorphOp>(op->params));
+  if (kind == Center::Kind::Point)
+    center = op ? op->center.point : state.pointCenter;
+  else if (kind == Center::Kind::Selection && state.hasSelection())
+    center = centroid(grid.nodes(), &mask);
+  else
+    center = centroid(grid.nodes(), nullptr);
+  const bool absoluteOp =
+      op && (std::holds_alternative<MagnetOp>(op->params) || std::holds_alternative<MorphOp>(op->params));
   if (!absoluteOp) {
     appendCross(scene_.overlayLines, center, 9.0 * unit * state.uiScale, kCenterColor);
     scene_.overlayPoints.push_back(vertex(center, kCenterColor, kind == Center::Kind::Point ? 9.0f : 5.0f));
   }
   if (op) {
     if (const auto* m = std::get_if<MagnetOp>(&op->params)) {
-      appendCircle(scene_.overlayLines, m->point, m->dmax, cam.right(), cam.up(), {kHandleColor.x, kHandleColor.y, kHandleColor.z, 0.8f});
+      appendCircle(scene_.overlayLines, m->point, m->dmax, cam.right(), cam.up(),
+                   {kHandleColor.x, kHandleColor.y, kHandleColor.z, 0.8f});
       scene_.overlayPoints.push_back(vertex(m->point, kHandleColor, 11.0f));
     }
     if (const auto* m = std::get_if<MorphOp>(&op->params))
@@ -671,7 +688,8 @@ void GridView::buildIfsScene(ModellerState& state) {
     }
     appendGridLines(*grid, lineColor(functions[f].color, alpha), scene_.lines);
     if (active && grid->nodeCount() <= 30000)
-      for (const Vec3& p : grid->nodes()) scene_.points.push_back(vertex(p, {glm::vec3(functions[f].color), 1.0f}, 4.5f));
+      for (const Vec3& p : grid->nodes())
+        scene_.points.push_back(vertex(p, {glm::vec3(functions[f].color), 1.0f}, 4.5f));
   }
   // The final function: its control lattice around the attractor, in its own colour, with its
   // nodes always shown (they are what bends the picture, Sederberg & Parry 1986).
@@ -729,7 +747,8 @@ void GridView::render(ModellerState& state, ViewRenderer& renderer) {
   // A matrix function has no grid: its views show the control points and the matrices' images.
   if (content_ == Content::FunctionGrid && hasGrid(state.function()))
     buildFunctionScene(state);
-  else buildIfsScene(state);
+  else
+    buildIfsScene(state);
   const glm::dmat4 vp = camera(state).viewProjection(size_.x, size_.y);
   renderer.drawScene(target_, glm::mat4(vp), scene_, framebufferScale_ * state.uiScale, kBackgroundTop,
                      kBackgroundBottom);

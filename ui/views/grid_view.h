@@ -12,10 +12,10 @@
 
 #include "edit/view_camera.h"
 #include "ui/base/edit_queue.h"
-#include "ui/gl/gl_resources.h"
 #include "ui/base/modeller_state.h"
-#include "ui/views/orbit_controller.h"
+#include "ui/gl/gl_resources.h"
 #include "ui/gl/view_renderer.h"
+#include "ui/views/orbit_controller.h"
 
 struct ImDrawList;
 
@@ -116,7 +116,7 @@ class GridView {
   Handle handle_ = Handle::None;
   int handlePair_ = -1;
   Vec3 handleStart_{0.0}, anchor_{0.0};
-  Function dragFunction_;    // the function as it was when a node/handle/placement drag began
+  Function dragFunction_;        // the function as it was when a node/handle/placement drag began
   FunctionRef dragFunctionRef_;  // and which one it is
   std::size_t pressedNode_ = 0;
   int controlPoint_ = -1;  // the control point being dragged

@@ -8,8 +8,8 @@
 #include <filesystem>
 
 #include "flame/palette_gradient.h"
-#include "ui/views/preview_modes.h"
 #include "ui/base/widgets.h"
+#include "ui/views/preview_modes.h"
 
 namespace gridifs::ui {
 namespace {
@@ -84,8 +84,7 @@ void PaletteEditor::drawStart(ModellerState& state, EditQueue& edits, const Pale
   state.probe.item("palette_editor.from_palette");
   if (!keys.empty()) {
     ImGui::SameLine();
-    if (ImGui::Button("Discard"))
-      edits.commit(SetPaletteKeys{});
+    if (ImGui::Button("Discard")) edits.commit(SetPaletteKeys{});
     contextHelp(state, "Go back to the palette the gradient replaced");
   }
 }

@@ -56,8 +56,9 @@ void PreviewModes::buildToolbar(ModellerState& state, EditQueue& edits) {
              "The nearest surface lit by up to 3 lights, with shadows, ambient occlusion, fog and depth of field "
              "(settings in the Shading panel; Alt+drag moves the key light)");
   ImGui::SameLine();
-  modeButton("Mesh F^n(A)", PreviewMode::Mesh, "preview.mode.mesh",
-             "The deterministic algorithm (Gröller & Wegenkittl 1994, §3.2): n levels of the IFS applied to a cube or sphere");
+  modeButton(
+      "Mesh F^n(A)", PreviewMode::Mesh, "preview.mode.mesh",
+      "The deterministic algorithm (Gröller & Wegenkittl 1994, §3.2): n levels of the IFS applied to a cube or sphere");
   ImGui::SameLine();
   modeButton("Volume", PreviewMode::Volume, "preview.mode.volume",
              "The measure attractor (Sokolov & Gentil, §3.4) as a density volume, ray-marched with one light and "

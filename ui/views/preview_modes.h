@@ -1,7 +1,7 @@
 #pragma once
 // The preview's display modes (z-buffer | flame | shaded over the same chaos game |
-// the deterministic mesh F^n(A) | the ray-marched measure attractor), owned by PreviewView: a second toolbar row with the mode switch
-// and the mode's controls, and what the preview texture shows in each mode.
+// the deterministic mesh F^n(A) | the ray-marched measure attractor), owned by PreviewView: a second toolbar row with
+// the mode switch and the mode's controls, and what the preview texture shows in each mode.
 #include <imgui.h>
 
 #include <glm/vec2.hpp>
@@ -11,12 +11,12 @@
 
 #include "render/shaded_image.h"
 #include "ui/base/edit_queue.h"
-#include "ui/views/flame_display.h"
-#include "ui/gl/gl_resources.h"
-#include "ui/views/mesh_preview.h"
 #include "ui/base/modeller_state.h"
-#include "ui/views/palette_editor.h"
+#include "ui/gl/gl_resources.h"
 #include "ui/gl/view_renderer.h"
+#include "ui/views/flame_display.h"
+#include "ui/views/mesh_preview.h"
+#include "ui/views/palette_editor.h"
 #include "ui/views/transfer_editor.h"
 #include "ui/views/volume_preview.h"
 
@@ -62,7 +62,7 @@ class PreviewModes {
 
  private:
   void syncFromProject(ModellerState& state);
-  void drawFlameControls(ModellerState& state, EditQueue& edits);  // flame_controls.cpp
+  void drawFlameControls(ModellerState& state, EditQueue& edits);                      // flame_controls.cpp
   void drawTonePopup(ModellerState& state, EditQueue& edits, const FlameSettings& f);  // flame_controls.cpp
   void drawMeshControls(ModellerState& state);
   void drawVolumeControls(ModellerState& state, EditQueue& edits);  // volume_controls.cpp

@@ -1,8 +1,8 @@
 #include "ui/views/preview_renderer.h"
 
+#include "job/prepared_render.h"
 #include "render/compiled_ifs.h"
 #include "render/shaded_image.h"
-#include "job/prepared_render.h"
 #if GRIDIFS_HAVE_GPU
 #include "gpu/render_device.h"
 #endif

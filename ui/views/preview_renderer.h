@@ -7,8 +7,8 @@
 #include <memory>
 #include <string>
 
-#include "render/chaos_renderer.h"
 #include "edit/document.h"
+#include "render/chaos_renderer.h"
 
 namespace gridifs::ui {
 
@@ -30,7 +30,10 @@ class PreviewRenderer {
   bool fetch(RenderImage& image);
   void setPaused(bool paused);
   /// The next publish() restarts even when nothing changed.
-  void forceRestart() { havePublished_ = false; revision_ = 0; }
+  void forceRestart() {
+    havePublished_ = false;
+    revision_ = 0;
+  }
   RenderStats stats() const { return renderer_->stats(); }
   std::uint64_t restarts() const { return restarts_; }
   /// Why the current project cannot be rendered (empty when it can).

@@ -10,9 +10,9 @@
 #include "edit/view_camera.h"
 #include "model/settings_tables.h"
 #include "render/camera.h"
+#include "ui/base/widgets.h"
 #include "ui/panels/setting_slider.h"
 #include "ui/panels/timeline_panel.h"
-#include "ui/base/widgets.h"
 
 namespace gridifs::ui {
 
@@ -71,7 +71,8 @@ void PreviewView::buildToolbar(ModellerState& state, EditQueue& edits) {
   settingSlider(state, edits, SettingGroup::Render, "depth_cue", project.render, {.id = "##cue", .probe = "preview"});
   ImGui::SameLine();
   const SettingSpec& background = renderSettingsTable().field("background");
-  float bg[3] = {float(project.render.background.x), float(project.render.background.y), float(project.render.background.z)};
+  float bg[3] = {float(project.render.background.x), float(project.render.background.y),
+                 float(project.render.background.z)};
   const bool changed = ImGui::ColorEdit3(background.label, bg, ImGuiColorEditFlags_NoInputs);
   gestureItem(edits, background.label, changed, SetBackground{Vec3(bg[0], bg[1], bg[2])});
   contextHelp(state, background.tooltip);
@@ -84,8 +85,9 @@ bool PreviewView::buildImage(ModellerState& state) {
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   screenOrigin_ = glm::dvec2(origin.x, origin.y);
   visible_ = true;
-  ImGui::InvisibleButton("##previewinput", ImVec2(float(size_.x), float(size_.y)),
-                         ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight | ImGuiButtonFlags_MouseButtonMiddle);
+  ImGui::InvisibleButton(
+      "##previewinput", ImVec2(float(size_.x), float(size_.y)),
+      ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight | ImGuiButtonFlags_MouseButtonMiddle);
   state.probe.item("preview.image");
   const bool hovered = ImGui::IsItemHovered();
   // The volume mode does not show the chaos game (which cannot run a median function's sets).
@@ -218,7 +220,7 @@ void PreviewView::render(ModellerState& state, ViewRenderer& renderer) {
   if (modes_.updateTexture(state, image_, fetched, texture_)) needsDraw_ = true;
   const int w = int(std::lround(size_.x * framebufferScale_)), h = int(std::lround(size_.y * framebufferScale_));
   if (modes_.drawMesh(state, target_, w, h, visible_)) {  // F^n(A) drawn into the view's target
-    needsDraw_ = true;  // the image is drawn again when the mode changes back
+    needsDraw_ = true;                                    // the image is drawn again when the mode changes back
     return;
   }
   if (modes_.drawVolume(state, target_, renderer, w, h, visible_, dragging())) {  // the ray-marched measure attractor

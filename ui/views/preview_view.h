@@ -8,12 +8,12 @@
 #include <string>
 
 #include "ui/base/edit_queue.h"
-#include "ui/gl/gl_resources.h"
 #include "ui/base/modeller_state.h"
-#include "ui/views/orbit_controller.h"
-#include "ui/views/preview_renderer.h"
-#include "ui/views/preview_modes.h"
+#include "ui/gl/gl_resources.h"
 #include "ui/gl/view_renderer.h"
+#include "ui/views/orbit_controller.h"
+#include "ui/views/preview_modes.h"
+#include "ui/views/preview_renderer.h"
 
 namespace gridifs::ui {
 
@@ -64,7 +64,7 @@ class PreviewView {
   /// The key light's direction as a small dial in the image's corner (Alt+drag turns it).
   void drawLightGizmo(ModellerState& state, ImVec2 origin) const;
 
-  OrbitController orbit_;  // the project camera, orbited, panned and zoomed from this view
+  OrbitController orbit_;   // the project camera, orbited, panned and zoomed from this view
   bool lightDrag_ = false;  // Alt+drag in the shaded mode turns the key light instead
   Vec3 dragLight_{0.0};
   int dragButton_ = 0;
