@@ -93,8 +93,8 @@ def measures():
 
 
 def native_swirl():
-    """The swirl/spherical genome imported with its variations kept (a few kB, where the sampled
-    grids of assets/flames/swirl_spherical.gridifs take 2 MB); needs a built gridifs."""
+    """The swirl/spherical genome imported with its variations kept (as assets/flames/
+    swirl_spherical.gridifs is); needs a built gridifs."""
     exe = os.environ.get("GRIDIFS_EXE", os.path.join(ROOT, "build", "app", "gridifs"))
     with tempfile.TemporaryDirectory() as tmp:
         out = os.path.join(tmp, "swirl.gridifs")
