@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -146,6 +147,64 @@ TEST(CliModel, BadUsageExitsTwoWithOneSentence) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << "\n" << r.err;
     EXPECT_TRUE(r.out.empty()) << args;
   }
+}
+
+// Every file of the bad-input corpus gets its own sentence, the same from every verb: the JSON
+// path and what is wrong there, so a message that loses its path or its words fails here.
+TEST(CliModel, BadInputCorpusSaysWhatIsWrong) {
+  const std::map<std::string, std::string> expected = {
+      {"bend_same_axis.gridifs", "functions[0].ops[0].toward: the bend must go toward an axis other than its own."},
+      {"calculator_nan.gridifs", "functions[0].ops[0].x: the expression gives a non-finite value at node (0, 0, 0)."},
+      {"calculator_syntax.gridifs", "functions[0].ops[0].x: unexpected end of expression at position 6."},
+      {"calculator_unknown_variable.gridifs", "functions[0].ops[0].y: unexpected token \"w\" found at position 2."},
+      {"color_out_of_range.gridifs", "functions[0].color[0]: expected a number between 0 and 1, found 2."},
+      {"empty.gridifs", "the file is empty."},
+      {"functions_not_array.gridifs", "functions: expected an array, found an object."},
+      {"inf_number.gridifs", "the file contains a number too large to represent."},
+      {"morph_singular.gridifs",
+       "functions[0].ops[0].pairs: two morph start points coincide (pair 1), so the morph system is singular."},
+      {"nan_literal.gridifs", "the file is not valid JSON at line 1, column 86."},
+      {"negative_weight.gridifs", "functions[0].weight: expected a number between 0 and 1e+09, found -1."},
+      {"no_functions.gridifs", "functions: the IFS needs at least one function."},
+      {"not_json.gridifs", "the file is not valid JSON at line 1, column 2."},
+      {"overflow_ops.gridifs",
+       "functions[0].ops[0].factors[0]: expected a number between -1e+06 and 1e+06, found 1e+300."},
+      {"render_zero_width.gridifs", "render.width: expected an integer between 1 and 16384."},
+      {"resolution_1.gridifs", "functions[0].resolution[0]: expected an integer between 2 and 128."},
+      {"resolution_huge.gridifs", "functions[0].resolution[0]: expected an integer between 2 and 128."},
+      {"root_array.gridifs", "(root): expected an object, found an array."},
+      {"selection_bad_index.gridifs", "functions[0].ops[0].selection[0].i[1]: expected an integer, found a string."},
+      {"set_unknown_primitive.gridifs",
+       "functions[0].set.primitive: expected \"sphere\", \"box\" or \"torus\", found \"cone\"."},
+      {"truncated.gridifs", "the JSON ends too early (truncated?) at line 1, column 76."},
+      {"unknown_op.gridifs",
+       "functions[0].ops[0].type: unknown operation \"explode\" (expected translate, rotate, scale, taper, twist, "
+       "bend, magnet, morph, calculator, nodes or field)."},
+      {"unknown_version.gridifs", "version: unsupported version 99 (this GridIFS reads version 1)."},
+      {"volume_field_negative_period.gridifs",
+       "volume.field.period[3]: expected a number between 0 and 1e+06, found -4."},
+      {"volume_resolution_huge.gridifs", "volume.resolution: expected an integer between 16 and 512."},
+      {"weight_string.gridifs", "functions[0].weight: expected a number, found a string."},
+      {"zero_weights.gridifs", "functions: every active function has weight 0 (weights must not all be zero)."},
+  };
+  int files = 0;
+  for (const auto& entry : fs::directory_iterator(std::string(GRIDIFS_TEST_DATA) + "/bad")) {
+    ++files;
+    const std::string name = entry.path().filename().string();
+    const auto it = expected.find(name);
+    if (it == expected.end()) {
+      ADD_FAILURE() << "tests/data/bad/" << name << " has no expected sentence in this test";
+      continue;
+    }
+    const std::string want = "gridifs: " + entry.path().string() + ": " + it->second + "\n";
+    for (const std::string verb : {"info", "nodes", "eval"}) {
+      const std::string extra = verb == "info" ? "" : " --function 0";
+      const auto r = runGridifs(verb + " " + quote(entry.path().string()) + extra, "0 0 0\n");
+      EXPECT_EQ(r.exitCode, 2) << verb << " " << name;
+      EXPECT_EQ(r.err, want) << verb << " " << name;
+    }
+  }
+  EXPECT_EQ(files, int(expected.size())) << "a corpus file with an expected sentence is missing";
 }
 
 TEST(CliModel, BadInputCorpusFailsCleanlyFromEveryVerb) {
