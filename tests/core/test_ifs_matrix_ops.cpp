@@ -137,7 +137,10 @@ TEST(IfsMatrixOps, ConcatenationAcceptsTheProductOfTheLanguages) {
 }
 
 TEST(IfsMatrixOps, TensorSumAcceptsTheShuffle) {
-  for (const auto& [a, b] : randomPairs(false)) {
+  for (const auto& pair : randomPairs(false)) {
+    // Named references: clang 14 cannot capture structured bindings in a lambda.
+    const IfsMatrix& a = pair.a;
+    const IfsMatrix& b = pair.b;
     Language expected;
     for (const FunctionWord& u : acceptedWords(a, kMaxLength))
       for (const FunctionWord& v : acceptedWords(b, kMaxLength))
@@ -153,7 +156,10 @@ TEST(IfsMatrixOps, TensorSumAcceptsTheShuffle) {
 }
 
 TEST(IfsMatrixOps, TensorProductReadsEitherMatrixOnEachPairOfStates) {
-  for (const auto& [a, b] : randomPairs(false)) {
+  for (const auto& pair : randomPairs(false)) {
+    // Named references: clang 14 cannot capture structured bindings in a lambda.
+    const IfsMatrix& a = pair.a;
+    const IfsMatrix& b = pair.b;
     const IfsMatrix t = tensorProduct(a, b);
     ASSERT_EQ(t.size(), a.size() * b.size());
     EXPECT_EQ(acceptedWords(t, kMaxLength),
@@ -173,7 +179,10 @@ TEST(IfsMatrixOps, TensorProductReadsEitherMatrixOnEachPairOfStates) {
 }
 
 TEST(IfsMatrixOps, EntrywiseUnionAndIntersection) {
-  for (const auto& [a, b] : randomPairs(true)) {
+  for (const auto& pair : randomPairs(true)) {
+    // Named references: clang 14 cannot capture structured bindings in a lambda.
+    const IfsMatrix& a = pair.a;
+    const IfsMatrix& b = pair.b;
     const IfsMatrix u = matrixUnion(a, b), n = matrixIntersection(a, b);
     // The definition, on the pair automaton restricted to equal states: a path of the intersection
     // is a path of both matrices reading the same letters; of the union, of either at each step.

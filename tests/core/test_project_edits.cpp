@@ -50,9 +50,9 @@ TEST(ProjectEdits, NewFunctionsFollowTheModellersDefaults) {
   EXPECT_EQ(cond.set.shape, SetShape::Sphere);
   EXPECT_DOUBLE_EQ(cond.set.radius, 0.3);
   EXPECT_EQ(newSetFunction(p, FunctionKind::Median).name, "median1");
-  EXPECT_EQ(AddFunction{cond}.label(), "Add condensation function");
-  EXPECT_EQ(AddFunction{newSetFunction(p, FunctionKind::Median)}.label(), "Add median function");
-  EXPECT_EQ(AddFunction{f}.label(), "Add function");
+  EXPECT_EQ((AddFunction{cond}).label(), "Add condensation function");
+  EXPECT_EQ((AddFunction{newSetFunction(p, FunctionKind::Median)}).label(), "Add median function");
+  EXPECT_EQ((AddFunction{f}).label(), "Add function");
 
   // A free-form IFS takes matrix functions whose rows sum to 1 and contract towards the centroid.
   Project freeForm = p;
@@ -88,8 +88,8 @@ TEST(ProjectEdits, FunctionListEditsKeepTheTransitionMatrixSquare) {
   const Project moved = applied(p, MoveFunction{1, 0});
   EXPECT_EQ(moved.functions[0].name, "f2");
   EXPECT_EQ(moved.functions[1].name, "f1");
-  EXPECT_EQ(MoveFunction(1, 0).label(), "Move function up");
-  EXPECT_EQ(MoveFunction(0, 1).label(), "Move function down");
+  EXPECT_EQ((MoveFunction{1, 0}).label(), "Move function up");
+  EXPECT_EQ((MoveFunction{0, 1}).label(), "Move function down");
 
   const Project withFinal = applied(p, AddFinalFunction{});
   ASSERT_TRUE(withFinal.final_function.has_value());
@@ -117,9 +117,9 @@ TEST(ProjectEdits, FunctionFieldEditsSetWhatTheyName) {
   EXPECT_EQ(applied(p, AddSymmetry{3}).functions.size(), 4u);  // two rotations by 120° and 240°
 
   // The labels are the modeller's undo steps.
-  EXPECT_EQ(SetFunctionMuted(last, true).label(), "Mute final function");
-  EXPECT_EQ(SetFunctionMuted(f2, false).label(), "Unmute function");
-  EXPECT_EQ(SetInterpolation(last, LatticeInterpolation::Bezier).label(), "Bézier final lattice");
+  EXPECT_EQ((SetFunctionMuted{last, true}).label(), "Mute final function");
+  EXPECT_EQ((SetFunctionMuted{f2, false}).label(), "Unmute function");
+  EXPECT_EQ((SetInterpolation{last, LatticeInterpolation::Bezier}).label(), "Bézier final lattice");
 }
 
 TEST(ProjectEdits, OperationEditsMoveTheirKeyframeTracksAlong) {
@@ -133,12 +133,12 @@ TEST(ProjectEdits, OperationEditsMoveTheirKeyframeTracksAlong) {
   ASSERT_EQ(added.functions[0].ops.size(), 3u);
   EXPECT_TRUE(std::holds_alternative<ScaleOp>(added.functions[0].ops[0].params));
   EXPECT_TRUE(added.tracks.count("functions[0].ops[2].strength"));
-  EXPECT_EQ(AddOperation(f, 0, scale).label(), std::string("Add ") + specOf(scale.params).title);
+  EXPECT_EQ((AddOperation{f, 0, scale}).label(), std::string("Add ") + specOf(scale.params).title);
 
   const Project moved = applied(p, MoveOperation{f, 1, 0});
   EXPECT_TRUE(std::holds_alternative<MagnetOp>(moved.functions[0].ops[0].params));
   EXPECT_TRUE(moved.tracks.count("functions[0].ops[0].strength"));
-  EXPECT_EQ(MoveOperation(f, 1, 0).label(), "Move operation up");
+  EXPECT_EQ((MoveOperation{f, 1, 0}).label(), "Move operation up");
 
   const Project copied = applied(p, DuplicateOperation{f, 0});
   ASSERT_EQ(copied.functions[0].ops.size(), 3u);
@@ -150,7 +150,7 @@ TEST(ProjectEdits, OperationEditsMoveTheirKeyframeTracksAlong) {
   EXPECT_TRUE(removed.tracks.empty());  // the track of the removed operation goes with it
 
   EXPECT_TRUE(applied(p, SetOperationMuted{f, 1, true}).functions[0].ops[1].muted);
-  EXPECT_EQ(SetOperationMuted(f, 1, false).label(), "Unmute operation");
+  EXPECT_EQ((SetOperationMuted{f, 1, false}).label(), "Unmute operation");
   Operation edited = p.functions[0].ops[0];
   std::get<TwistOp>(edited.params).k = 45.0;
   EXPECT_EQ(applied(p, SetOperation{f, 0, edited}).functions[0].ops[0], edited);
@@ -203,7 +203,7 @@ TEST(ProjectEdits, MoveNodesExtendsOneTrailingNodesOperation) {
 TEST(ProjectEdits, SettingEditsGoThroughTheTables) {
   const Project p = defaultNewProject();
   EXPECT_DOUBLE_EQ(applied(p, SetSettingNumber{SettingGroup::Flame, "gamma", 3.5}).render.flame.gamma, 3.5);
-  EXPECT_EQ(SetSettingNumber(SettingGroup::Flame, "gamma", 3.5).label(), flameSettingsTable().field("gamma").label);
+  EXPECT_EQ((SetSettingNumber{SettingGroup::Flame, "gamma", 3.5}).label(), flameSettingsTable().field("gamma").label);
   EXPECT_DOUBLE_EQ(applied(p, SetSettingNumber{SettingGroup::Render, "depth_cue", 0.25}).render.depth_cue, 0.25);
   EXPECT_DOUBLE_EQ(
       applied(p, SetSettingNumber{SettingGroup::Light, "intensity", 0.7, 0}).render.shading.lights[0].intensity, 0.7);
@@ -214,7 +214,7 @@ TEST(ProjectEdits, SettingEditsGoThroughTheTables) {
                    3.0);
 
   EXPECT_EQ(applied(p, SetDisplayMode{DisplayMode::Shaded}).render.mode, DisplayMode::Shaded);
-  EXPECT_EQ(SetDisplayMode(DisplayMode::Flame).label(), "Flame display");
+  EXPECT_EQ((SetDisplayMode{DisplayMode::Flame}).label(), "Flame display");
   EXPECT_EQ(applied(p, SetSampleBudget{4'000'000}).render.samples, 4'000'000);
   EXPECT_EQ(applied(p, SetBackground{Vec3(0.2)}).render.background, Vec3(0.2));
   EXPECT_EQ(applied(p, SetPalette{"flam3:27"}).render.flame.palette, "flam3:27");
@@ -247,7 +247,7 @@ TEST(ProjectEdits, ShadingEditsChangeTheirLight) {
   EXPECT_EQ(applied(p, SetLightDirection{1, Vec3(0, 0, 1)}).render.shading.lights[1].direction, Vec3(0, 0, 1));
   EXPECT_EQ(applied(p, SetLightColor{1, Vec3(0.5)}).render.shading.lights[1].color, Vec3(0.5));
   EXPECT_TRUE(applied(p, SetLightShadows{1, true}).render.shading.lights[1].shadows);
-  EXPECT_EQ(SetLightShadows(1, false).label(), "Light casts no shadows");
+  EXPECT_EQ((SetLightShadows{1, false}).label(), "Light casts no shadows");
   const Project removed = applied(p, RemoveLight{0});
   ASSERT_EQ(removed.render.shading.lights.size(), 1u);
   EXPECT_EQ(removed.render.shading.lights[0], p.render.shading.lights[1]);
@@ -303,7 +303,7 @@ TEST(ProjectEdits, MatrixAndSetEdits) {
   EXPECT_EQ(mesh.functions[1].set.path, "bunny.obj");
   EXPECT_EQ(applied(mesh, SetSetFile{s, "cow.ply"}).functions[1].set.path, "cow.ply");
   EXPECT_EQ(applied(mesh, SetSetFill{s, SetFill::Surface}).functions[1].set.fill, SetFill::Surface);
-  EXPECT_EQ(SetSetFill(s, SetFill::Surface).label(), "Fill surface");
+  EXPECT_EQ((SetSetFill{s, SetFill::Surface}).label(), "Fill surface");
   EXPECT_EQ(applied(mesh, SetSetGrid{s, "density"}).functions[1].set.grid, "density");
   EXPECT_DOUBLE_EQ(applied(sets, SetMedianRotation{s, 15.0, std::nullopt}).functions[1].rotate, 15.0);
   EXPECT_EQ(applied(sets, SetMedianRotation{s, 15.0, Vec3{1.0, 0.0, 0.0}}).functions[1].rotate_axis,
