@@ -17,14 +17,6 @@ std::map<std::string, Verb>& verbs() {
   return registry;
 }
 
-std::string oneSentence(std::string text) {
-  while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
-  for (char& c : text)
-    if (c == '\n') c = ' ';
-  if (!text.empty() && text.back() != '.') text += '.';
-  return text;
-}
-
 void printUsage(std::ostream& out) {
   out << "GridIFS — nonlinear 3D iterated function systems from distorted grids.\n\n"
          "Usage:\n  gridifs [FILE]                 open the modeller (default project without FILE)\n";
@@ -54,6 +46,14 @@ int runVerb(const Verb& verb, int argc, char** argv) {
 }
 
 }  // namespace
+
+std::string oneSentence(std::string text) {
+  while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
+  for (char& c : text)
+    if (c == '\n') c = ' ';
+  if (!text.empty() && text.back() != '.') text += '.';
+  return text;
+}
 
 VerbRegistration::VerbRegistration(Verb verb) { verbs().emplace(verb.name, std::move(verb)); }
 
@@ -117,7 +117,7 @@ std::shared_ptr<const Grid> evaluateForVerb(const Document& document, std::size_
 
 bool isVerb(const char* word) { return word && verbs().count(word) > 0; }
 
-int run(int argc, char** argv) {
+int run(int argc, char** argv, ModellerOpener openModeller) {
   try {
     if (argc >= 2) {
       const std::string first = argv[1];

@@ -36,7 +36,12 @@ struct VerbRegistration {
   explicit VerbRegistration(Verb verb);
 };
 
-int run(int argc, char** argv);
+/// Opens the modeller on a file (or none) with the process's arguments: openModeller below for the
+/// executable. A parameter, so that the verbs link into the Python module without the modeller.
+using ModellerOpener = int (*)(const std::string& file, int argc, char** argv);
+
+/// Runs the verb that argv names, or opens the modeller; returns the exit code.
+int run(int argc, char** argv, ModellerOpener openModeller);
 
 /// Whether `word` names a verb (the first argument of a command, not of the modeller).
 bool isVerb(const char* word);
@@ -61,6 +66,9 @@ std::size_t resolveFunction(const Project& project, const std::string& which, co
 /// Evaluates function `index`, reporting model errors as CliError(2) naming the file.
 std::shared_ptr<const Grid> evaluateForVerb(const Document& document, std::size_t index,
                                             const std::filesystem::path& file);
+
+/// A message as one sentence: newlines joined, a full stop at the end (how errors are printed).
+std::string oneSentence(std::string text);
 
 /// Whether stderr is an interactive terminal (progress bars only then).
 bool stderrIsTerminal();

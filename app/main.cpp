@@ -7,7 +7,7 @@
 #include "app/cli.h"
 
 int main(int argc, char** argv) {
-  const int code = gridifs::cli::run(argc, argv);
+  const int code = gridifs::cli::run(argc, argv, gridifs::cli::openModeller);
 #if !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
   if (argc >= 2 && gridifs::cli::isVerb(argv[1])) {
     // A verb has written and closed its outputs by now. Leave without the destructors of every

@@ -3,6 +3,7 @@
 #include "render/accumulation.h"
 
 #include <cstdio>
+#include <mutex>
 
 #include "app/cli.h"
 #if GRIDIFS_HAVE_GPU
@@ -13,9 +14,14 @@
 namespace gridifs::cli {
 namespace {
 
-std::string gFallbackReason;  // the first reason auto fell back to the CPU in this process
+// The first reason auto fell back to the CPU in this process; the Python module renders from
+// several threads at once.
+std::mutex gFallbackMutex;
+std::string gFallbackReason;
+bool gFallbackSaid = false;
 
 void noteFallback(const std::string& reason) {
+  const std::lock_guard lock(gFallbackMutex);
   if (gFallbackReason.empty()) gFallbackReason = reason;
 }
 
@@ -44,9 +50,9 @@ bool gpuChosen(gpu::RenderDevice device, std::string& used) {
 }  // namespace
 
 void printDeviceNote() {
-  static bool said = false;  // once per process
-  if (said || gFallbackReason.empty()) return;
-  said = true;
+  const std::lock_guard lock(gFallbackMutex);
+  if (gFallbackSaid || gFallbackReason.empty()) return;  // once per process
+  gFallbackSaid = true;
   std::fprintf(stderr, "note: rendered on the CPU: %s.\n", gFallbackReason.c_str());
 }
 

@@ -2,12 +2,14 @@
 // Shared by `gridifs render` and `gridifs export-points`: loading and compiling a project for
 // the chaos game, option overrides, output-path checks and atomic output files.
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "base/text_format.h"
+#include "model/flame_settings.h"
 #include "render/chaos_renderer.h"
 #include "volume/density_volume.h"
 
@@ -24,6 +26,30 @@ struct RenderOverrides {
   /// For a project with median functions: draw the points of this volume (a page of the book of
   /// drawings) instead of computing the project's density volume.
   std::shared_ptr<const DensityVolume> volume;
+  /// Told the fraction of the chaos game done, in [0, 1], as it runs; returning false stops the
+  /// render as Ctrl-C would. With one, the caller handles Ctrl-C itself (the Python module's
+  /// `progress=`, which also checks the interpreter's signals).
+  std::function<bool(double)> observer;
+};
+
+/// Options of the flame display; empty optionals keep the project's settings.
+struct FlameOptions {
+  std::optional<std::string> mode, palette, densityDisplay;
+  std::optional<int> bitDepth, supersample;
+  std::optional<double> hue, filterRadius, estimatorRadius, estimatorMinimum, estimatorCurve;
+  bool transparent = false;
+  /// Directional motion blur (Draves & Reckase 2003, §9), resolved from --motion-fade or the
+  /// project's animation.motion_fade by renderFrame.
+  double motionFade = 0.0;
+  std::optional<double> motionFadeOption;
+
+  /// Whether any option of the flame display's own is given.
+  bool anyFlameSetting() const {
+    return palette || densityDisplay || supersample || hue || filterRadius || estimatorRadius || estimatorMinimum ||
+           estimatorCurve;
+  }
+  /// `settings` with the given options, checked against the settings' ranges (CliError, exit 2).
+  FlameSettings applied(FlameSettings settings) const;
 };
 
 struct RenderSetup {
@@ -49,6 +75,12 @@ RenderSetup prepareRenderOf(const Project& loaded, const std::filesystem::path& 
 /// `out` (.png, .exr, .tif). Throws CliError as render does.
 int renderImageOf(const Project& loaded, const std::string& file, const std::string& out,
                   const RenderOverrides& overrides, bool quiet);
+
+/// renderImageOf with the display options of `gridifs render` (--mode, the flame options,
+/// --motion-blur and --motion-fade), checked as the verb checks them.
+int renderImageOf(const Project& loaded, const std::string& file, const std::string& out,
+                  const RenderOverrides& overrides, const FlameOptions& flame, std::optional<int> motionBlur,
+                  bool quiet);
 
 /// Refuses an output path whose extension is not in `allowed` or whose folder does not exist or is
 /// not writable (CliError(2), one sentence naming the path).

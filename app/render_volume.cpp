@@ -69,16 +69,27 @@ void writeVolumeImage(const VolumeImage& image, const std::string& out, const st
   }
 }
 
-}  // namespace
-
-int runVolumeRender(const std::string& file, const std::string& out, const RenderOverrides& overrides,
-                    std::optional<int> resolution, bool quiet) {
+/// The options checked before the project is read.
+void checkVolumeRenderOptions(const std::string& out, const RenderOverrides& overrides) {
   checkOutputPath(out, {"png", "exr"}, "a volume image");
   if (overrides.quality) throw CliError(kBadInput, "--quality applies to the chaos-game modes, not to --mode volume");
   if (overrides.device && *overrides.device == "gpu")
     throw CliError(kBadInput, "--mode volume renders on the CPU; leave out --device gpu");
+}
+
+}  // namespace
+
+int runVolumeRender(const std::string& file, const std::string& out, const RenderOverrides& overrides,
+                    std::optional<int> resolution, bool quiet) {
+  checkVolumeRenderOptions(out, overrides);
+  return runVolumeRenderOf(loadForVerb(file), file, out, overrides, resolution, quiet);
+}
+
+int runVolumeRenderOf(const Project& loaded, const std::string& file, const std::string& out,
+                      const RenderOverrides& overrides, std::optional<int> resolution, bool quiet) {
+  checkVolumeRenderOptions(out, overrides);
   const std::filesystem::path path(file);
-  const Project project = loadForVerbAt(path, overrides.time);
+  const Project project = projectForVerbAt(loaded, path, overrides.time);
   VolumeRenderSettings settings = project.render.volume.value_or(VolumeRenderSettings{});
   if (resolution) {
     if (*resolution < kMinVolumeResolution || *resolution > kMaxVolumeResolution)

@@ -14,4 +14,8 @@ namespace gridifs::cli {
 int runVolumeRender(const std::string& file, const std::string& out, const RenderOverrides& overrides,
                     std::optional<int> resolution, bool quiet);
 
+/// runVolumeRender for a project already loaded from `file` (the Python module's projects).
+int runVolumeRenderOf(const Project& loaded, const std::string& file, const std::string& out,
+                      const RenderOverrides& overrides, std::optional<int> resolution, bool quiet);
+
 }  // namespace gridifs::cli

@@ -99,9 +99,10 @@ struct FrameSource {
 
 /// Where one frame's samples sit in the progress of a whole sequence (one bar over all frames).
 struct FrameProgress {
-  ProgressBar* bar = nullptr;  // null: the frame draws its own bar
-  std::int64_t before = 0;     // samples of the frames already rendered
-  std::int64_t total = 0;      // samples of every frame of the sequence
+  ProgressBar* bar = nullptr;                             // null: the frame draws its own bar
+  std::int64_t before = 0;                                // samples of the frames already rendered
+  std::int64_t total = 0;                                 // samples of every frame of the sequence
+  const std::function<bool(double)>* observer = nullptr;  // RenderOverrides::observer, when given
 };
 
 /// The project as a part stores it: as rendered at the frame's time, with the job's size, samples
@@ -140,12 +141,15 @@ std::optional<RenderImage> renderWithProgress(const std::vector<RenderSetup>& se
       }
     }
   }
-  InterruptGuard interrupt;
+  std::optional<InterruptGuard> interrupt;
+  if (!progress.observer) interrupt.emplace();  // an observer's caller handles Ctrl-C itself
   const std::int64_t count = std::int64_t(setups.size());
   std::int64_t done = 0;
   std::vector<Accumulation> accumulations;
   std::string used = "cpu";
-  bool warmed = source.part.has_value();
+  // The command line renders once and exits, so it keeps freed memory for the output image; a
+  // caller with an observer (the Python module) lives on, and its process keeps malloc's habits.
+  bool warmed = source.part.has_value() || progress.observer;
   if (!warmed) keepFreedMemory();
   for (std::int64_t i = 0; i < count && !source.merged; ++i) {
     const RenderSetup& setup = setups[std::size_t(i)];
@@ -171,6 +175,10 @@ std::optional<RenderImage> renderWithProgress(const std::vector<RenderSetup>& se
               }
             }
             bar.update(progress.before + done + s.samples, progress.total, s.pointsPerSecond);
+            if (progress.observer && progress.total > 0 &&
+                !(*progress.observer)(
+                    std::min(1.0, double(progress.before + done + s.samples) / double(progress.total))))
+              return false;
             return !gInterrupted.load();
           },
           used));
@@ -233,44 +241,6 @@ std::optional<RenderImage> renderWithProgress(const std::vector<RenderSetup>& se
                                   out + " was not written");
   return image;
 }
-
-/// Options of the flame display; empty optionals keep the project's settings.
-struct FlameOptions {
-  std::optional<std::string> mode, palette, densityDisplay;
-  std::optional<int> bitDepth, supersample;
-  std::optional<double> hue, filterRadius, estimatorRadius, estimatorMinimum, estimatorCurve;
-  bool transparent = false;
-  /// Directional motion blur (Draves & Reckase 2003, §9), resolved from --motion-fade or the
-  /// project's animation.motion_fade by renderFrame.
-  double motionFade = 0.0;
-  std::optional<double> motionFadeOption;
-
-  /// Whether any option of the flame display's own is given.
-  bool anyFlameSetting() const {
-    return palette || densityDisplay || supersample || hue || filterRadius || estimatorRadius || estimatorMinimum ||
-           estimatorCurve;
-  }
-  /// `settings` with the given options, checked against the settings' ranges (CliError, exit 2).
-  FlameSettings applied(FlameSettings settings) const {
-    if (palette) settings.palette = *palette, settings.palette_keys.clear();
-    if (densityDisplay) settings.density_display = *densityDisplay;
-    if (supersample) settings.supersample = *supersample;
-    if (hue) settings.hue = *hue;
-    if (filterRadius) settings.filter_radius = *filterRadius;
-    if (estimatorRadius) settings.estimator_radius = *estimatorRadius;
-    if (estimatorMinimum) settings.estimator_minimum = *estimatorMinimum;
-    if (estimatorCurve) settings.estimator_curve = *estimatorCurve;
-    try {
-      validateSettings(flameSettingsTable(), settings, "render.flame");
-    } catch (const ModelError& e) {
-      // Name the option, not the project field: "render.flame.filter_radius" → "--filter-radius".
-      std::string option = e.path().substr(e.path().rfind('.') + 1);
-      std::replace(option.begin(), option.end(), '_', '-');
-      throw CliError(kBadInput, "--" + option + ": " + e.message());
-    }
-    return settings;
-  }
-};
 
 /// `--mode flame` (Draves & Reckase 2003, §4–8): the same chaos game at supersample× the size with
 /// palette colour sums, developed by log-density tone mapping and the filters. PNG/TIFF: RGB over
@@ -375,6 +345,7 @@ int renderFrame(const Project& loaded, const std::string& file, const std::strin
                 const RenderOverrides& overrides, bool quiet, const FlameOptions& flameOptions, int blur,
                 double shutter, FrameProgress progress, bool warn, FrameSource source = {}) {
   const std::string device = checkedDevice(overrides.device);
+  if (overrides.observer) progress.observer = &overrides.observer;
   FlameOptions flame = flameOptions;
   flame.motionFade = flame.motionFadeOption.value_or(loaded.animation ? loaded.animation->motion_fade : 0.0);
   DisplayMode mode = DisplayMode::ZBuffer;
@@ -472,6 +443,15 @@ int renderSequence(const std::string& file, const std::string& pattern, const Re
   return kSuccess;
 }
 
+/// --motion-blur and --motion-fade within their ranges (CliError, exit 2).
+void checkMotionOptions(const FlameOptions& flame, std::optional<int> motionBlur) {
+  if (motionBlur && (*motionBlur < 1 || *motionBlur > kMaxMotionBlurSamples))
+    throw CliError(kBadInput, "--motion-blur must be between 1 and " + std::to_string(kMaxMotionBlurSamples) +
+                                  " time samples per frame");
+  if (flame.motionFadeOption && !(*flame.motionFadeOption >= 0.0 && *flame.motionFadeOption <= 16.0))
+    throw CliError(kBadInput, "--motion-fade must be between 0 (uniform motion blur) and 16");
+}
+
 int runRender(const std::string& file, const std::string& out, const RenderOverrides& overrides, bool quiet,
               const FlameOptions& flame, const SequenceOptions& sequence, const std::optional<std::string>& partText,
               std::optional<int> volumeResolution) {
@@ -491,11 +471,7 @@ int runRender(const std::string& file, const std::string& out, const RenderOverr
   } else {
     checkOutputPath(out, {"png", "exr", "tif", "tiff"}, "the output image");
   }
-  if (sequence.motionBlur && (*sequence.motionBlur < 1 || *sequence.motionBlur > kMaxMotionBlurSamples))
-    throw CliError(kBadInput, "--motion-blur must be between 1 and " + std::to_string(kMaxMotionBlurSamples) +
-                                  " time samples per frame");
-  if (flame.motionFadeOption && !(*flame.motionFadeOption >= 0.0 && *flame.motionFadeOption <= 16.0))
-    throw CliError(kBadInput, "--motion-fade must be between 0 (uniform motion blur) and 16");
+  checkMotionOptions(flame, sequence.motionBlur);
   if (!sequence.frames) {
     if (sequence.video) throw CliError(kBadInput, "--video needs a frame sequence: add --frames A:B");
     const Project loaded = loadForVerb(file);
@@ -509,6 +485,26 @@ int runRender(const std::string& file, const std::string& out, const RenderOverr
 }
 
 }  // namespace
+
+FlameSettings FlameOptions::applied(FlameSettings settings) const {
+  if (palette) settings.palette = *palette, settings.palette_keys.clear();
+  if (densityDisplay) settings.density_display = *densityDisplay;
+  if (supersample) settings.supersample = *supersample;
+  if (hue) settings.hue = *hue;
+  if (filterRadius) settings.filter_radius = *filterRadius;
+  if (estimatorRadius) settings.estimator_radius = *estimatorRadius;
+  if (estimatorMinimum) settings.estimator_minimum = *estimatorMinimum;
+  if (estimatorCurve) settings.estimator_curve = *estimatorCurve;
+  try {
+    validateSettings(flameSettingsTable(), settings, "render.flame");
+  } catch (const ModelError& e) {
+    // Name the option, not the project field: "render.flame.filter_radius" → "--filter-radius".
+    std::string option = e.path().substr(e.path().rfind('.') + 1);
+    std::replace(option.begin(), option.end(), '_', '-');
+    throw CliError(kBadInput, "--" + option + ": " + e.message());
+  }
+  return settings;
+}
 
 int finishMergedFrame(const Project& project, const std::string& file, const std::string& out,
                       const std::string& optionsJson, const std::vector<Accumulation>& sums,
@@ -544,6 +540,15 @@ int finishMergedFrame(const Project& project, const std::string& file, const std
 int renderImageOf(const Project& loaded, const std::string& file, const std::string& out,
                   const RenderOverrides& overrides, bool quiet) {
   return renderFrame(loaded, file, out, overrides, quiet, FlameOptions{}, 1, 0.0, {}, false);
+}
+
+int renderImageOf(const Project& loaded, const std::string& file, const std::string& out,
+                  const RenderOverrides& overrides, const FlameOptions& flame, std::optional<int> motionBlur,
+                  bool quiet) {
+  checkMotionOptions(flame, motionBlur);
+  const AnimationSettings animation = loaded.animation.value_or(AnimationSettings{});
+  return renderFrame(loaded, file, out, overrides, quiet, flame, motionBlur.value_or(animation.motion_blur),
+                     animation.shutter / animation.fps, {}, true);
 }
 
 namespace {

@@ -25,6 +25,9 @@ GRIDIFS_TEST_PACKAGES=(
   clang libclang-rt-14-dev clang-format
   # scripts/slurm-local: a one-node Slurm for the render-job tests; ss picks its free ports.
   slurm-wlm munge iproute2
+  # The Python module (pybind11 against the system Python 3.11 that Debian's Blender runs), its
+  # python tier, the examples' plots, and the blender tier's Blender.
+  pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib blender
 )
 # gridifs_install_deps run|test
 gridifs_install_deps() {

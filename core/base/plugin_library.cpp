@@ -16,6 +16,13 @@ std::vector<std::string> candidates(const std::string& fileName, const char* var
   std::error_code error;
   const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", error);
   if (!error) paths.push_back((self.parent_path() / fileName).string());
+  // Beside the shared object this code is linked into, when that is not the executable: the
+  // Python module keeps its plugins beside it.
+  Dl_info info{};
+  if (dladdr(reinterpret_cast<const void*>(&candidates), &info) && info.dli_fname) {
+    const std::filesystem::path object = std::filesystem::absolute(info.dli_fname, error);
+    if (!error && object != self) paths.push_back((object.parent_path() / fileName).string());
+  }
   paths.push_back(buildDir + "/" + fileName);
   paths.push_back(fileName);
   return paths;

@@ -18,6 +18,7 @@
 #include "edit/key_edits.h"
 #include "edit/matrix_edits.h"
 #include "edit/operation_edits.h"
+#include "edit/parameter_edit.h"
 #include "edit/set_edits.h"
 #include "edit/settings_edits.h"
 #include "edit/shading_edits.h"
@@ -61,6 +62,8 @@ using ProjectEdit = std::variant<
     SetVolumeDensityScale, SetVolumeDisplay, SetTransferFunction, SetVolumeRenderResolution, SetPreviewMode,
     // the construction tree (edit/construction_edits.h)
     AddConstructionLeaf, GroupConstructionNodes, SetConstructionOp, RemoveConstructionNode, ReloadConstructionLeaves,
+    // any number by its parameter path (edit/parameter_edit.h)
+    SetParameter,
     // the whole project
     ReplaceProject>;
 

@@ -54,6 +54,8 @@ const ImageWriter& writer(std::launch how) {
   return state.writer.get();
 }
 
+thread_local ImageCapture::Receiver* tCapture = nullptr;
+
 int storedCode(StoredSample s) {
   switch (s) {
     case StoredSample::UInt8:
@@ -69,6 +71,10 @@ int storedCode(StoredSample s) {
 }
 
 void write(const std::filesystem::path& file, const ImageFileLayout& layout, bool isFloat, const void* pixels) {
+  if (tCapture) {
+    (*tCapture)(file, layout, isFloat, pixels);
+    return;
+  }
   const ImageWriter& plugin = writer(std::launch::deferred);
   if (!plugin.write) throw IoError("cannot write " + file.string() + ": " + plugin.problem);
   std::vector<const char*> names;
@@ -93,6 +99,10 @@ void write(const std::filesystem::path& file, const ImageFileLayout& layout, boo
 
 }  // namespace
 
+ImageCapture::ImageCapture(Receiver receive) : receive_(std::move(receive)), outer_(tCapture) { tCapture = &receive_; }
+
+ImageCapture::~ImageCapture() { tCapture = outer_; }
+
 GreyImage readGreyImage(const std::filesystem::path& file) {
   const ImageWriter& plugin = writer(std::launch::deferred);
   if (!plugin.readGrey) throw IoError("cannot read " + file.string() + ": " + plugin.problem);
@@ -110,6 +120,7 @@ GreyImage readGreyImage(const std::filesystem::path& file) {
 }
 
 void startLoadingImageWriter() {
+  if (tCapture) return;  // nothing will be written to a file
   Loading& state = loading();
   std::call_once(state.started, [&] { state.writer = std::async(std::launch::async, load).share(); });
 }

@@ -5,6 +5,7 @@
 // lives in a plugin loaded on first use (image_io/image_writer_abi.h says why).
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,24 @@ struct ImageFileLayout {
 /// `layout.stored`). Throws IoError("cannot write FILE: …") and leaves an existing file as it was.
 void writeImageFile(const std::filesystem::path& file, const ImageFileLayout& layout, const std::uint8_t* pixels);
 void writeImageFile(const std::filesystem::path& file, const ImageFileLayout& layout, const float* pixels);
+
+/// While one lives, this thread's writeImageFile calls hand their layout and pixels to `receive`
+/// instead of writing a file, and the image library is not loaded for them. The Python module
+/// renders through the command line's own code with one, so its arrays hold exactly the pixels
+/// `gridifs render` writes. `pixels` are 8-bit when `isFloat` is false, floats otherwise.
+class ImageCapture {
+ public:
+  using Receiver = std::function<void(const std::filesystem::path& file, const ImageFileLayout& layout, bool isFloat,
+                                      const void* pixels)>;
+  explicit ImageCapture(Receiver receive);
+  ~ImageCapture();
+  ImageCapture(const ImageCapture&) = delete;
+  ImageCapture& operator=(const ImageCapture&) = delete;
+
+ private:
+  Receiver receive_;
+  Receiver* outer_;  // the capture this one hides, restored when it ends
+};
 
 /// A grey image: width × height levels in [0, 1], rows top first.
 struct GreyImage {

@@ -1,0 +1,31 @@
+#include "edit/parameter_edit.h"
+
+#include "anim/track_path.h"
+#include "base/errors.h"
+#include "model/project_parameter.h"
+
+namespace gridifs {
+namespace {
+
+ProjectParameter numberAt(const Project& project, const std::string& path) {
+  const std::optional<TrackPath> parsed = TrackPath::parse(path);
+  if (!parsed) throw ModelError(path, "is not a parameter path like functions[0].ops[1].k");
+  const FoundParameter found = findParameter(project, *parsed);
+  switch (found.lookup) {
+    case ParameterLookup::Number:
+      break;
+    case ParameterLookup::NotANumber:
+      throw ModelError(path, "is not a number (a string, a switch, a list or an object)");
+    case ParameterLookup::Missing:
+      throw ModelError(path, "names nothing this project holds");
+  }
+  return found.parameter;
+}
+
+}  // namespace
+
+void SetParameter::apply(Project& project) const { numberAt(project, path).set(project, value); }
+
+double parameterValue(const Project& project, const std::string& path) { return numberAt(project, path).get(project); }
+
+}  // namespace gridifs
