@@ -9,6 +9,7 @@
 #include "flame/palette.h"
 #include "io/flame_genome.h"
 #include "io/flame_import.h"
+#include "python/python_explore.h"
 #include "python/python_project.h"
 
 namespace py = pybind11;
@@ -152,6 +153,18 @@ PYBIND11_MODULE(gridifs, m) {
       .def_property_readonly("folder", &PythonProject::folder, "The folder its relative paths start from.")
       .def("__repr__", &PythonProject::repr);
 
+  m.def("random", &gridifs::python::randomProject, py::kw_only(), py::arg("style") = "grid",
+        py::arg("seed") = py::none(), py::arg("functions") = 0,
+        "random(style='grid', seed=None, functions=0) -> Project: a new world worth looking at, as\n"
+        "`gridifs random` draws it: style 'grid', 'flame', 'free-form' or 'volume'; the same seed gives\n"
+        "the same project (None: a seed from the clock, kept in the project's lineage); functions 0\n"
+        "lets the style choose (3 to 5).");
+  m.def("mutate", &gridifs::python::mutatedProject, py::arg("project"), py::kw_only(), py::arg("seed") = py::none(),
+        py::arg("strength") = 0.5, py::arg("keep") = std::vector<std::string>{}, py::arg("mate") = nullptr,
+        "mutate(project, seed=None, strength=0.5, keep=[], mate=None) -> Project: a child near\n"
+        "`project`, as `gridifs mutate` draws it. strength in (0, 1]; keep names what stays byte-equal\n"
+        "('ops', 'placement', 'colors', 'variations', 'palette', 'camera', 'tracks'); with mate, the\n"
+        "child draws its functions from both projects.");
   m.def("import_flame", &importFlame, py::arg("path"), py::kw_only(), py::arg("genome") = "0",
         py::arg("palette_file") = "", py::arg("resolution") = 64, py::arg("grids") = false,
         "import_flame(path, genome='0', palette_file='', resolution=64, grids=False) -> Project:\n"

@@ -246,6 +246,25 @@ std::string lineColumn(const std::string& text, std::size_t byte) {
 
 /// Everything but the format and version: a project's object, or a construction part's (its
 /// functions, transitions and space; a part holds no construction of its own).
+/// "lineage": {"parents": [files], "seed": S, "strength": X} (written by gridifs random and mutate).
+std::optional<Lineage> readLineage(const json& root) {
+  auto it = root.find("lineage");
+  if (it == root.end() || it->is_null()) return std::nullopt;
+  requireObject(*it, "lineage");
+  Lineage lineage;
+  if (auto parents = it->find("parents"); parents != it->end()) {
+    if (!parents->is_array())
+      fail("lineage.parents", std::string("expected an array of file names, found ") + typeName(*parents));
+    if (parents->size() > 16) fail("lineage.parents", "more than 16 parents");
+    for (std::size_t i = 0; i < parents->size(); ++i)
+      lineage.parents.push_back(readString((*parents)[i], item("lineage.parents", i), 4096));
+  }
+  if (auto seed = it->find("seed"); seed != it->end()) lineage.seed = readSeed(*seed, "lineage.seed");
+  if (auto strength = it->find("strength"); strength != it->end())
+    lineage.strength = readNumber(*strength, "lineage.strength", 0.0, 1.0);
+  return lineage;
+}
+
 Project readProjectBody(const json& root, bool withConstruction) {
   Project project;
   if (auto it = root.find("camera"); it != root.end()) project.camera = readSettings(cameraTable(), *it, "camera");
@@ -293,6 +312,7 @@ Project readProjectBody(const json& root, bool withConstruction) {
   project.space = free_form_io::readSpace(root);
   project.volume = volume_io::readVolume(root);
   project.preview_mode = volume_render_io::readPreviewMode(root);
+  if (withConstruction) project.lineage = readLineage(root);
   if (withConstruction) {
     project.construction = construction_io::readConstruction(root, [](const json& part, const std::string& path) {
       try {
@@ -363,6 +383,13 @@ std::string serializeProject(const Project& project) {
   volume_io::writeVolume(project, root);
   volume_render_io::writeView(project, root);
   writeAnimation(project, root);
+  if (project.lineage) {
+    ordered_json lineage;
+    lineage["parents"] = project.lineage->parents;
+    lineage["seed"] = project.lineage->seed;
+    if (project.lineage->strength) lineage["strength"] = *project.lineage->strength;
+    root["lineage"] = lineage;
+  }
   construction_io::writeConstruction(project, root, [](const Project& part, ordered_json& out) {
     ordered_json functions = ordered_json::array();
     for (const Function& f : part.functions) functions.push_back(writeFunction(f));

@@ -7,6 +7,8 @@
 #include "render/flame_render.h"
 #include "render/shaded_image.h"
 #include "volume/condensation_sampler.h"
+#include "volume/measure_attractor.h"
+#include "volume/volume_points.h"
 
 namespace gridifs {
 
@@ -99,8 +101,23 @@ PreparedRender prepareRender(const Project& project, const RenderJobOptions& opt
   } catch (const ModelError& e) {
     throw RenderJobError(e);
   }
-  const Document document(r.project);
-  r.ifs = compileRenderIfs(document, options.folder, options.setResolution);
+  if (usesSetIteration(r.project)) {
+    // Sokolov & Gentil, §3.2: median functions map sets, not points, so the renderer draws the
+    // points of the project's density volume (what `gridifs volume` writes) from its "volume"
+    // settings, as the command line does.
+    VolumeJob volumeJob;
+    volumeJob.settings = r.project.volume.value_or(VolumeSettings{});
+    volumeJob.threads = options.threads;
+    volumeJob.projectFolder = options.folder.empty() ? std::filesystem::path(".") : options.folder;
+    try {
+      r.ifs = compileVolumePoints(r.project, computeDensityVolume(r.project, volumeJob));
+    } catch (const ModelError& e) {
+      throw RenderJobError(e);
+    }
+  } else {
+    const Document document(r.project);
+    r.ifs = compileRenderIfs(document, options.folder, options.setResolution);
+  }
   const bool flame = options.preview || r.project.render.mode == DisplayMode::Flame;
   if (flame) r.palette = renderPalette(r.project, options.folder, options.preview);
   r.job = displayRenderJob(r.project, r.output, *r.ifs, r.palette, options.preview);

@@ -88,7 +88,9 @@ RenderJob displayRenderJob(const Project& project, const RenderJob& output, cons
 /// depth cueing in its buffers).
 DisplaySettings renderDisplaySettings(const Project& project);
 
-/// All of the above, validated. Throws RenderJobError naming the JSON path of the cause.
+/// All of the above, validated; for a project with median functions the compiled IFS draws the
+/// points of its density volume, as the command line's render does. Throws RenderJobError naming
+/// the JSON path of the cause.
 PreparedRender prepareRender(const Project& project, const RenderJobOptions& options);
 
 }  // namespace gridifs

@@ -48,6 +48,15 @@ struct RenderSettings {
 /// 1, at most 1e11) when `quality` is set, else `samples`. Pure; never throws.
 std::int64_t renderSampleCount(const RenderSettings& render);
 
+/// Where a project came from when exploring made it ("lineage", optional): the files of its
+/// parents (none for a random world), the seed of the draw and, for a mutation, its strength.
+struct Lineage {
+  std::vector<std::string> parents;
+  std::uint64_t seed = 0;
+  std::optional<double> strength;
+  bool operator==(const Lineage&) const = default;
+};
+
 struct Project {
   Camera camera;
   RenderSettings render;
@@ -74,6 +83,7 @@ struct Project {
   /// "construction": the tree whose value the functions, transitions and space are (Thollot et
   /// al. §4.3, model/construction_tree.h); absent in projects built without one.
   std::optional<ConstructionTree> construction;
+  std::optional<Lineage> lineage;
   bool operator==(const Project&) const = default;
 };
 

@@ -714,6 +714,13 @@ class ParameterResolver {
   ProjectParameter p_;
 };
 
+ParameterSpan ProjectParameter::span() const {
+  if (field_ && field_->sliderMin < field_->sliderMax)
+    return {std::max(field_->sliderMin, field_->min), std::min(field_->sliderMax, field_->max)};
+  if (std::isfinite(lo_) && std::isfinite(hi_) && lo_ < hi_ && hi_ - lo_ <= 1000.0) return {lo_, hi_};
+  return {};
+}
+
 FoundParameter findParameter(const Project& project, const TrackPath& path) {
   return ParameterResolver(project, path).run();
 }

@@ -24,6 +24,11 @@
 
 namespace gridifs {
 
+/// The range a slider (or a mutation) moves a number over; lo == hi when there is none.
+struct ParameterSpan {
+  double lo = 0.0, hi = 0.0;
+};
+
 class ProjectParameter {
  public:
   /// The number as the project file holds it (integers and seeds as doubles).
@@ -33,6 +38,9 @@ class ProjectParameter {
   /// number where one is expected, not finite); the project is then unchanged. Expects the
   /// project to have the parameter (as found by findParameter).
   void set(Project& project, double value) const;
+  /// Its description's slider range where it has one, else the file reader's range where that
+  /// is a span a hand would move over (finite and at most 1000 wide), else none.
+  ParameterSpan span() const;
   /// The parameter's path as messages name it ("camera.target[1]", "functions[0].ops[2].k").
   std::string path() const;
 

@@ -91,6 +91,8 @@ class ModellerState {
   float timelineHeight = 0.0f;       // what the timeline under the preview took in the last frame
   bool showRenderAnimation = false;  // File > Render animation...
   bool showCombine = false;          // File > Combine...
+  bool showExplore = false;          // View > Explore (E): toggles the Explore window
+  bool exploreRandom = false;        // File > New random world: Explore draws random worlds
   int renderThreads = 1;
   RenderStats previewStats;
   std::string previewDevice = "cpu";  // which renderer fills the preview ("cpu", "gpu (...)")

@@ -33,6 +33,7 @@ void drawHelpWindow(ModellerState& state) {
       {"Ctrl+Shift+Z, Ctrl+Y", "Redo"},
       {"Delete", "Delete the active operation"},
       {"F", "Frame the hovered view (all views when none is hovered)"},
+      {"E", "Explore: variants, random worlds and breeding as live thumbnails"},
       {"1 2 3 4", "Top / side / front / user grid view alone; again: all four"},
       {"Ctrl+A, Esc, Ctrl+I", "Select all nodes / none / invert"},
       {"Space", "Pause or resume the preview"},

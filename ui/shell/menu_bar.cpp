@@ -38,6 +38,15 @@ float drawMenuBar(AppCommands& app) {
   height = ImGui::GetWindowSize().y;
   if (ImGui::BeginMenu("File")) {
     if (ImGui::MenuItem("New", "Ctrl+N")) app.files.requestNew();
+    if (ImGui::MenuItem("New random world...")) s.exploreRandom = true;
+    s.probe.item("menu.new_random");
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("Draw random worlds worth looking at in the Explore window; click one to adopt it");
+    if (ImGui::BeginMenu("Examples", !app.files.examples().empty())) {
+      for (const auto& file : app.files.examples())
+        if (ImGui::MenuItem(file.stem().string().c_str())) app.files.requestOpenExample(file);
+      ImGui::EndMenu();
+    }
     if (ImGui::MenuItem("Open...", "Ctrl+O")) app.files.requestOpenDialog();
     if (ImGui::BeginMenu("Open Recent", !app.files.recent().empty())) {
       for (const auto& file : app.files.recent())
@@ -118,6 +127,10 @@ float drawMenuBar(AppCommands& app) {
   }
   if (ImGui::BeginMenu("View")) {
     if (ImGui::MenuItem("Frame", "F")) app.frameViews();
+    if (ImGui::MenuItem("Explore...", "E")) s.showExplore = true;
+    s.probe.item("menu.explore");
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("Variants of the open project, random worlds and breeding, as live thumbnails");
     ImGui::Separator();
     static const char* names[] = {"Top", "Side", "Front", "User"};
     static const char* keys[] = {"1", "2", "3", "4"};
@@ -205,6 +218,7 @@ void handleKey(AppCommands& app, const ImGuiIO& io, bool ctrl, bool shift, bool 
   if (pressed(GLFW_KEY_F1)) s.showHelp = !s.showHelp;
   if (pressed(GLFW_KEY_M)) s.showMatrices = !s.showMatrices;
   if (pressed(GLFW_KEY_T)) s.showConstruction = !s.showConstruction;
+  if (pressed(GLFW_KEY_E)) s.showExplore = true;
   for (int v = 0; v < 4; ++v)
     if (pressed(GLFW_KEY_1 + v) || pressed(GLFW_KEY_KP_1 + v)) toggleView(s, v);
 }

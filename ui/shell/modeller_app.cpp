@@ -38,6 +38,7 @@
 #include "ui/shell/panel_layout.h"
 #include "ui/shell/project_files.h"
 #include "ui/shell/theme.h"
+#include "ui/views/explore_window.h"
 #include "ui/views/grid_view.h"
 #include "ui/views/preview_view.h"
 
@@ -137,6 +138,7 @@ class ModellerApp {
   ExportDialog export_;              // File > Export
   RenderAnimationDialog animation_;  // File > Render animation
   CombineDialog combine_;            // File > Combine
+  ExploreWindow explore_;            // View > Explore, File > New random world
   CondensationSetPanel setPanel_;    // in the Operations panel's place while a set function is active
   FunctionsPanelState functionsPanel_;
   OperationPanelState operationPanel_;
@@ -336,6 +338,7 @@ void ModellerApp::buildUi() {
   export_.draw(state_);
   animation_.draw(state_);
   combine_.draw(state_, edits_);
+  explore_.draw(state_, edits_);
   if (!state_.gridError.empty() && state_.statusText != state_.gridError) state_.error(state_.gridError);
   drawStatusBar(state_, statusHeight);
 }
@@ -394,6 +397,7 @@ void ModellerApp::writeProbe(double frameMs) {
   j["export"] = export_.probeJson();
   j["render_animation"] = animation_.probeJson();
   j["combine"] = combine_.probeJson();
+  j["explore"] = explore_.probeJson();
   j["construction"] = constructionTree_.probeJson(state_);
   const Project& project = state_.document.project();
   nlohmann::json tracks = nlohmann::json::object();
@@ -434,7 +438,10 @@ bool ModellerApp::startSession() {
   // Installed before ImGui's callbacks are chained to it (see runModeller): record presses.
   glfwSetWindowUserPointer(window_, &state_);
   files_.checkForRecovery();
-  if (!options_.file.empty()) files_.openAtStartup(options_.file);
+  if (!options_.file.empty())
+    files_.openAtStartup(options_.file);
+  else
+    files_.openStartProject();  // something alive, never a one-dot preview
   state_.clampIndices();
   return true;
 }
@@ -443,7 +450,7 @@ void ModellerApp::pollEvents(bool capture) {
   // Idle windows wait for input (redraw on demand); a filling preview, a drag or a capture keeps
   // the loop animating.
   const bool animate = capture || state_.playback.playing || animation_.running() || preview_.busy() ||
-                       export_.running() || quietFrames_ < 3 || ImGui::IsAnyMouseDown();
+                       explore_.busy() || export_.running() || quietFrames_ < 3 || ImGui::IsAnyMouseDown();
   if (animate) {
     glfwPollEvents();
   } else {

@@ -4,6 +4,7 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <ctime>
@@ -12,6 +13,7 @@
 
 #include "base/atomic_file.h"
 #include "base/bounded_read.h"
+#include "explore/explore.h"
 #include "io/flame_import.h"
 #include "io/project_io.h"
 
@@ -62,7 +64,38 @@ ProjectFiles::ProjectFiles(ModellerState& state, AppFolders folders, double auto
   fs::create_directories(folders_.config, ec);
   fs::create_directories(folders_.state, ec);
   loadRecent();
+  // The examples: assets/*.gridifs and one folder down, sorted, for File › Examples.
+  const fs::path root = examplesFolder();
+  for (fs::recursive_directory_iterator it(root, ec); !ec && it != fs::recursive_directory_iterator();
+       it.increment(ec)) {
+    if (it.depth() > 1) it.disable_recursion_pending();
+    if (it->is_regular_file(ec) && it->path().extension() == ".gridifs") examples_.push_back(it->path());
+  }
+  std::sort(examples_.begin(), examples_.end());
 }
+
+fs::path ProjectFiles::examplesFolder() {
+  if (const char* named = std::getenv("GRIDIFS_ASSETS"); named && *named) return named;
+  return GRIDIFS_ASSETS_DIR;
+}
+
+void ProjectFiles::openStartProject() {
+  try {
+    // The default example has no files of its own, so it opens as an untitled copy: Save asks
+    // where, and the example stays as it is.
+    state_.document.reset(loadProject(examplesFolder() / "default.gridifs"));
+  } catch (const std::exception&) {
+    try {
+      state_.document.reset(randomWorld({ExploreStyle::Grid, 0, 1}).project);
+    } catch (const std::exception&) {
+      return;  // the one-grid project stays
+    }
+  }
+  state_.forgetDocumentViewState();
+  state_.info("Welcome: File > New random world or View > Explore (E) find new forms; File > Examples has more");
+}
+
+void ProjectFiles::requestOpenExample(const fs::path& file) { request(Open{file}); }
 
 fs::path ProjectFiles::recoveryFile() const {
   return folders_.state / ("recovery-" + std::to_string(::getpid()) + ".gridifs");

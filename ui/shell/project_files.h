@@ -28,6 +28,14 @@ class ProjectFiles {
 
   /// Opens `file` at startup; a failure shows an error and keeps the default project.
   void openAtStartup(const std::filesystem::path& file);
+  /// A start without a file: the examples' default project (InterIFS's twisted functions) as a new,
+  /// untitled project, or a random world where the examples are not at hand; never a one-dot
+  /// preview.
+  void openStartProject();
+  /// The example projects (assets/ and its folders), for File › Examples.
+  const std::vector<std::filesystem::path>& examples() const { return examples_; }
+  /// Opens an example as File › Open opens a file (asking first about unsaved work).
+  void requestOpenExample(const std::filesystem::path& file);
   /// Looks for recovery files left by a session that did not exit cleanly.
   void checkForRecovery();
 
@@ -57,6 +65,8 @@ class ProjectFiles {
   bool modalOpen() const;
   std::string windowTitle() const;
   const std::vector<std::filesystem::path>& recent() const { return recent_; }
+  /// Where the examples are: GRIDIFS_ASSETS when set, else the source tree's assets/.
+  static std::filesystem::path examplesFolder();
   const AppFolders& folders() const { return folders_; }
 
  private:
@@ -105,6 +115,7 @@ class ProjectFiles {
   bool offerRecovery_ = false;
   bool quitConfirmed_ = false;
   std::vector<std::filesystem::path> recent_;
+  std::vector<std::filesystem::path> examples_;
 };
 
 }  // namespace gridifs::ui
