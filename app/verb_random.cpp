@@ -21,8 +21,8 @@ int runRandom(const RandomArgs& a) {
   if (!parseExploreStyle(a.style, options.style))
     throw CliError(kBadInput, std::string("--style must be ") + exploreStyleList() + ", not \"" + a.style + "\"");
   if (a.functions != 0 && (a.functions < kMinExploreFunctions || a.functions > kMaxExploreFunctions))
-    throw CliError(kBadInput, "--functions must be between " + std::to_string(kMinExploreFunctions) + " and " + std::to_string(kMaxExploreFunctions) + ", not " +
-                                  std::to_string(a.functions));
+    throw CliError(kBadInput, "--functions must be between " + std::to_string(kMinExploreFunctions) + " and " +
+                                  std::to_string(kMaxExploreFunctions) + ", not " + std::to_string(a.functions));
   checkExploreOutput(a.out, a.count, kMaxCount);
   options.functions = a.functions;
   const std::uint64_t seed = a.seed.value_or(freshSeed());

@@ -13,8 +13,8 @@ std::unique_ptr<PythonProject> randomProject(const std::string& style, std::opti
   if (!parseExploreStyle(style, options.style))
     throw PythonError(std::string("random(): style must be ") + exploreStyleList() + ", not \"" + style + "\".");
   if (functions != 0 && (functions < kMinExploreFunctions || functions > kMaxExploreFunctions))
-    throw PythonError("random(): functions must be between " + std::to_string(kMinExploreFunctions) + " and " + std::to_string(kMaxExploreFunctions) + ", not " +
-                      std::to_string(functions) + ".");
+    throw PythonError("random(): functions must be between " + std::to_string(kMinExploreFunctions) + " and " +
+                      std::to_string(kMaxExploreFunctions) + ", not " + std::to_string(functions) + ".");
   options.functions = functions;
   options.seed = seed.value_or(cli::freshSeed());
   ExploreResult result;

@@ -149,7 +149,7 @@ AttractorVerdict measure(const PreparedRender& prepared) {
     const float step = 1e-3f * size;
     std::array<float, 3> q = p;
     q[i % 3] += p[i % 3] > 0.0f ? -step : step;  // towards the centre: inside X where p is
-    std::uint64_t r1 = random, r2 = random;        // the same random draws for both points
+    std::uint64_t r1 = random, r2 = random;      // the same random draws for both points
     const std::array<float, 3> fp = f.evaluateMap(p, r1), fq = f.evaluateMap(q, r2);
     const double d = std::sqrt(double(fp[0] - fq[0]) * (fp[0] - fq[0]) + double(fp[1] - fq[1]) * (fp[1] - fq[1]) +
                                double(fp[2] - fq[2]) * (fp[2] - fq[2]));
