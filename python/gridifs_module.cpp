@@ -128,9 +128,10 @@ PYBIND11_MODULE(gridifs, m) {
            "the render runs.")
       .def("points", &PythonProject::points, py::arg("n"), py::kw_only(), py::arg("seed") = py::none(),
            py::arg("threads") = 0, py::arg("time") = py::none(), py::arg("progress") = py::none(),
-           "points(n, seed=None, threads=0, time=None, progress=None) -> (positions, colours): n\n"
-           "chaos-game points at `time` (seconds; default: the project's own) as n x 3 float32 arrays,\n"
-           "the points `gridifs export-points --device cpu` writes (colours in [0, 1]). threads: the\n"
+           "points(n, seed=None, threads=0, time=None, progress=None) -> (positions, colours): the\n"
+           "chaos-game points of n samples at `time` (seconds; default: the project's own) as m x 3\n"
+           "float32 arrays, m <= n: the points `gridifs export-points --device cpu` writes (those that\n"
+           "turned non-finite or escaped are left out, as there); colours in [0, 1]. threads: the\n"
            "worker streams to reproduce (0: every core, as render).")
       .def("volume", &PythonProject::volume, py::arg("resolution") = 128, py::kw_only(),
            py::arg("samples") = py::none(), py::arg("seed") = py::none(), py::arg("threads") = 0,
