@@ -106,7 +106,7 @@ RenderSetup prepareRenderOf(const Project& loaded, const std::filesystem::path& 
   }
   Document document(setup.project);
   try {
-    setup.ifs = compileRenderIfs(document, options.folder, options.setResolution);
+    setup.ifs = compileRenderIfs(document.project(), document.evaluation(), options.folder, options.setResolution);
   } catch (const RenderJobError& e) {
     throw CliError(kBadInput, file.string() + ": " + e.what());
   }

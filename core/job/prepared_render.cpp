@@ -38,11 +38,11 @@ RenderJob outputRenderJob(const Project& project, const RenderJobOptions& option
   return job;
 }
 
-std::shared_ptr<const CompiledIfs> compileRenderIfs(const Document& document, const std::filesystem::path& folder,
-                                                    int setResolution) {
+std::shared_ptr<const CompiledIfs> compileRenderIfs(const Project& project, const EvaluationCache& evaluation,
+                                                    const std::filesystem::path& folder, int setResolution) {
   try {
-    return compileIfs(document.project(), document.evaluation(),
-                      makeCondensationSampler(document.project(), folder.empty() ? "." : folder, setResolution));
+    return compileIfs(project, evaluation,
+                      makeCondensationSampler(project, folder.empty() ? "." : folder, setResolution));
   } catch (const ModelError& e) {
     throw RenderJobError(e);
   }
@@ -115,8 +115,8 @@ PreparedRender prepareRender(const Project& project, const RenderJobOptions& opt
       throw RenderJobError(e);
     }
   } else {
-    const Document document(r.project);
-    r.ifs = compileRenderIfs(document, options.folder, options.setResolution);
+    const EvaluationCache evaluation;
+    r.ifs = compileRenderIfs(r.project, evaluation, options.folder, options.setResolution);
   }
   const bool flame = options.preview || r.project.render.mode == DisplayMode::Flame;
   if (flame) r.palette = renderPalette(r.project, options.folder, options.preview);

@@ -68,10 +68,11 @@ Project renderProjectAt(const Project& project, double time);
 /// yet validated.
 RenderJob outputRenderJob(const Project& project, const RenderJobOptions& options);
 
-/// Compiles the document's IFS for the chaos game; condensation sets read from files are found in
-/// `folder` (empty: the working folder) and voxelized at `setResolution`³. Throws RenderJobError.
-std::shared_ptr<const CompiledIfs> compileRenderIfs(const Document& document, const std::filesystem::path& folder,
-                                                    int setResolution = 256);
+/// Compiles `project`'s IFS for the chaos game with the evaluated grids of `evaluation` (a
+/// Document's cache, or a fresh one); condensation sets read from files are found in `folder`
+/// (empty: the working folder) and voxelized at `setResolution`³. Throws RenderJobError.
+std::shared_ptr<const CompiledIfs> compileRenderIfs(const Project& project, const EvaluationCache& evaluation,
+                                                    const std::filesystem::path& folder, int setResolution = 256);
 
 /// The palette of the flame display, resolved beside the project. Throws RenderJobError naming
 /// render.flame.palette; with `preview`, falls back to the default palette instead.

@@ -220,7 +220,8 @@ void ExportDialog::start(ModellerState& state) {
       options.folder = state.projectFolder();
       const RenderJob job = outputRenderJob(state.document.project(), options);
       validateRenderJob(job);
-      std::shared_ptr<const CompiledIfs> ifs = compileRenderIfs(state.document, options.folder, options.setResolution);
+      std::shared_ptr<const CompiledIfs> ifs = compileRenderIfs(state.document.project(), state.document.evaluation(),
+                                                                options.folder, options.setResolution);
       const std::string description =
           "GridIFS export-points of " +
           (state.document.path().empty() ? std::string("untitled") : state.document.path().filename().string()) + ": " +

@@ -12,10 +12,10 @@
 #include "base/errors.h"
 #include "base/text_format.h"
 #include "farm/farm_job.h"
+#include "job/animation_frames.h"
 #include "render/chaos_renderer.h"
 #include "render/image_file.h"
 #include "ui/base/widgets.h"
-#include "ui/dialogs/animation_frames.h"
 #include "ui/panels/timeline_panel.h"
 
 namespace gridifs::ui {

@@ -1,7 +1,7 @@
 #pragma once
 // File › Render animation…: the plan (frames A..B, their times, size, samples, output names),
 // the render of every frame on a worker thread with a progress bar over all frames that can be
-// cancelled, each frame written atomically (ui/dialogs/animation_frames.h). The worker renders a copy of
+// cancelled, each frame written atomically (core/job/animation_frames.h). The worker renders a copy of
 // the project taken when it starts, so the artist may go on editing. Or, on a Slurm cluster, the
 // same frames split into parts: the job folder written (core/farm/farm_job.h), submitted when
 // sbatch is on the PATH, and the folder's status shown.

@@ -61,7 +61,7 @@ void PreviewRenderer::publish(const Document& document, int width, int height, i
     const std::filesystem::path folder = document.path().parent_path().empty() ? "." : document.path().parent_path();
     // The same compiled IFS while the functions are unchanged: a restart that then changes only
     // the shadowed lights keeps the camera's buffers (ChaosRenderer::restart).
-    auto ifs = sameGeometry ? ifs_ : compileRenderIfs(document, folder, 128);
+    auto ifs = sameGeometry ? ifs_ : compileRenderIfs(document.project(), document.evaluation(), folder, 128);
     // The steps of prepareRender (job/prepared_render.h) for the preview: low priority threads
     // (the modeller stays at ≥ 30 fps while rendering), colour sums always on so that the mode
     // switch is instant, and the shaded display's lights.

@@ -1,6 +1,7 @@
 #pragma once
 // Frames of an animation as image files: the numbered file names of a sequence and the render of
-// one frame, as File › Render animation… runs them on its worker thread. One frame is the project
+// one frame, as File › Render animation… runs them on its worker thread (headless: it lives in
+// core so that it is tested, and used, without a window). One frame is the project
 // at t = frame / fps (every keyframe track evaluated, model/project_time.h) rendered in its display
 // mode (z-buffer, flame or shaded) with its render settings.
 #include <cstdint>
@@ -11,7 +12,7 @@
 
 #include "model/project.h"
 
-namespace gridifs::ui {
+namespace gridifs {
 
 /// What is wrong with a sequence's output pattern (one printf integer conversion such as %04d,
 /// a .png, .tif/.tiff or .exr extension), or nothing.
@@ -28,4 +29,4 @@ std::optional<std::string> checkFramePattern(const std::string& pattern);
 void renderAnimationFrame(const Project& project, long frame, const std::filesystem::path& out, int threads,
                           const std::filesystem::path& projectFolder, const std::function<bool(double)>& progress);
 
-}  // namespace gridifs::ui
+}  // namespace gridifs

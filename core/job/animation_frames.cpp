@@ -1,4 +1,4 @@
-#include "ui/dialogs/animation_frames.h"
+#include "job/animation_frames.h"
 
 #include <algorithm>
 #include <cctype>
@@ -19,7 +19,7 @@
 #include "render/motion_blur.h"
 #include "render/shaded_image.h"
 
-namespace gridifs::ui {
+namespace gridifs {
 namespace {
 
 /// Writes 8-bit display colour (4 per pixel, over the background) as RGB, or linear float RGB
@@ -110,4 +110,4 @@ void renderAnimationFrame(const Project& animated, long frame, const std::filesy
   }
 }
 
-}  // namespace gridifs::ui
+}  // namespace gridifs

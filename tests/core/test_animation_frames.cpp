@@ -1,6 +1,6 @@
-// The numbered file names of File › Render animation (ui/dialogs/animation_frames.h): checked without a
+// The numbered file names of File › Render animation (core/job/animation_frames.h): checked without a
 // window, like the window placement rules.
-#include "ui/dialogs/animation_frames.h"
+#include "job/animation_frames.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -13,8 +13,8 @@
 #include "base/text_format.h"
 #include "io/project_io.h"
 
+using gridifs::checkFramePattern;
 using gridifs::frameFileName;
-using gridifs::ui::checkFramePattern;
 
 TEST(AnimationFrames, PatternsNeedOneFrameNumberAndAnImageExtension) {
   EXPECT_FALSE(checkFramePattern("frames/shot_%04d.png"));
@@ -54,7 +54,7 @@ TEST(AnimationFrames, MotionBlurredFrameIsTheCommandLinesFrame) {
   const fs::path dir = fs::temp_directory_path() / ("gridifs-frames-blur-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   gridifs::saveProject(p, dir / "blur.gridifs");
-  gridifs::ui::renderAnimationFrame(p, 12, dir / "dialog.png", 2, dir, {});
+  gridifs::renderAnimationFrame(p, 12, dir / "dialog.png", 2, dir, {});
   const std::string cli = std::string(GRIDIFS_EXE) + " render '" + (dir / "blur.gridifs").string() + "' -o '" +
                           (dir / "cli_%02d.png").string() + "' --frames 12:12 --threads 2 -q 2>/dev/null";
   ASSERT_EQ(std::system(cli.c_str()), 0);
