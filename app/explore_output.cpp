@@ -1,13 +1,11 @@
 #include "app/explore_output.h"
 
-#include <chrono>
 #include <cstdio>
 
 #include "app/cli.h"
 #include "app/render_sequence.h"
 #include "app/render_setup.h"
 #include "base/errors.h"
-#include "base/hash.h"
 #include "base/text_format.h"
 #include "io/project_io.h"
 
@@ -42,12 +40,6 @@ void writeExploreResult(const ExploreResult& result, const std::string& file, co
   std::printf("%s: %s, seed %llu, %zu function%s (covers %.0f%% of the frame; drawn %d time%s)\n", file.c_str(),
               what.c_str(), static_cast<unsigned long long>(result.project.lineage ? result.project.lineage->seed : 0),
               n, n == 1 ? "" : "s", 100.0 * result.verdict.covered, result.tries, result.tries == 1 ? "" : "s");
-}
-
-std::uint64_t freshSeed() {
-  const auto now = std::chrono::system_clock::now().time_since_epoch();
-  // Seeds people can type: below a billion.
-  return splitmix64(std::uint64_t(std::chrono::duration_cast<std::chrono::nanoseconds>(now).count())) % 1'000'000'000u;
 }
 
 }  // namespace gridifs::cli

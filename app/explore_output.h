@@ -18,8 +18,4 @@ std::string exploreOutputFile(const std::string& pattern, int count, int index);
 /// Saves `result` to `file` and prints one line about it on stdout. Throws CliError(1).
 void writeExploreResult(const ExploreResult& result, const std::string& file, const std::string& what);
 
-/// A seed for a run without --seed: from the clock, printed with each result so it can be
-/// drawn again.
-std::uint64_t freshSeed();
-
 }  // namespace gridifs::cli

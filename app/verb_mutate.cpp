@@ -44,7 +44,7 @@ int runMutate(const MutateArgs& a) {
   }
   options.strength = a.strength;
   options.folder = std::filesystem::path(a.file).parent_path();
-  const std::uint64_t seed = a.seed.value_or(freshSeed());
+  const std::uint64_t seed = a.seed.value_or(clockSeed());
   for (int i = 0; i < a.count; ++i) {
     options.seed = seed + std::uint64_t(i);
     ExploreResult result;

@@ -25,7 +25,7 @@ int runRandom(const RandomArgs& a) {
                                   std::to_string(kMaxExploreFunctions) + ", not " + std::to_string(a.functions));
   checkExploreOutput(a.out, a.count, kMaxCount);
   options.functions = a.functions;
-  const std::uint64_t seed = a.seed.value_or(freshSeed());
+  const std::uint64_t seed = a.seed.value_or(clockSeed());
   for (int i = 0; i < a.count; ++i) {
     options.seed = seed + std::uint64_t(i);
     ExploreResult result;

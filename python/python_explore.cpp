@@ -1,7 +1,6 @@
 #include "python/python_explore.h"
 
 #include "app/cli.h"
-#include "app/explore_output.h"
 #include "base/errors.h"
 #include "explore/explore.h"
 
@@ -16,7 +15,7 @@ std::unique_ptr<PythonProject> randomProject(const std::string& style, std::opti
     throw PythonError("random(): functions must be between " + std::to_string(kMinExploreFunctions) + " and " +
                       std::to_string(kMaxExploreFunctions) + ", not " + std::to_string(functions) + ".");
   options.functions = functions;
-  options.seed = seed.value_or(cli::freshSeed());
+  options.seed = seed.value_or(clockSeed());
   ExploreResult result;
   {
     py::gil_scoped_release release;
@@ -40,7 +39,7 @@ std::unique_ptr<PythonProject> mutatedProject(const PythonProject& parent, std::
   if (!list.empty() && !parseExploreKeep(list, options.keep, unknown))
     throw PythonError(std::string("mutate(): keep takes ") + exploreKeepList() + ", not \"" + unknown + "\".");
   options.strength = strength;
-  options.seed = seed.value_or(cli::freshSeed());
+  options.seed = seed.value_or(clockSeed());
   options.folder = parent.folder();
   const Project project = parent.snapshot();
   std::optional<Project> other;

@@ -45,6 +45,21 @@ auto translated(const std::string& source, Work&& work) -> decltype(work()) {
   }
 }
 
+/// Runs `work` with the GIL released and the command line's errors as PythonError. What the
+/// reporter caught (Ctrl-C, the progress callback's own exception) is raised rather than the error
+/// it caused.
+template <class Work>
+void released(ProgressReporter& reporter, const std::string& source, Work&& work) {
+  try {
+    py::gil_scoped_release release;
+    translated(source, work);
+  } catch (const PythonError&) {
+    reporter.rethrow();
+    throw;
+  }
+  reporter.rethrow();
+}
+
 /// The keyword options of render(), by name: what each sets, as `gridifs render`'s flag does.
 struct RenderCall {
   cli::RenderOverrides overrides;
@@ -247,24 +262,17 @@ py::array PythonProject::render(const py::kwargs& options) {
   ProgressReporter reporter(call.progress);
   call.overrides.observer = [&reporter](double f) { return reporter.report(f); };
   CapturedImage captured;
-  try {
-    py::gil_scoped_release release;
+  released(reporter, file, [&] {
     const ImageCapture capture([&](const std::filesystem::path&, const ImageFileLayout& layout, bool isFloat,
                                    const void* pixels) { captured.take(layout, isFloat, pixels); });
-    translated(file, [&] {
-      if (volume) {
-        if (call.motionBlur || call.flame.anyFlameSetting() || call.flame.transparent || call.flame.motionFadeOption)
-          throw PythonError("render(): the flame and motion-blur options do not apply to mode='volume'.");
-        cli::runVolumeRenderOf(project, file, out.string(), call.overrides, call.resolution, true);
-      } else {
-        cli::renderImageOf(project, file, out.string(), call.overrides, call.flame, call.motionBlur, true);
-      }
-    });
-  } catch (const PythonError&) {
-    reporter.rethrow();  // a KeyboardInterrupt or the callback's own exception comes first
-    throw;
-  }
-  reporter.rethrow();
+    if (volume) {
+      if (call.motionBlur || call.flame.anyFlameSetting() || call.flame.transparent || call.flame.motionFadeOption)
+        throw PythonError("render(): the flame and motion-blur options do not apply to mode='volume'.");
+      cli::runVolumeRenderOf(project, file, out.string(), call.overrides, call.resolution, true);
+    } else {
+      cli::renderImageOf(project, file, out.string(), call.overrides, call.flame, call.motionBlur, true);
+    }
+  });
   return captured.toArray(call.hdr);
 }
 
@@ -282,20 +290,13 @@ py::tuple PythonProject::points(std::int64_t count, std::optional<std::uint64_t>
   if (threads > 0) overrides.threads = threads;
   PointArrays arrays(count);
   ProgressReporter reporter(progress);
-  try {
-    py::gil_scoped_release release;
-    translated(file, [&] {
-      const cli::RenderSetup setup = cli::prepareRenderOf(project, file, overrides, kMaxPoints, false);
-      generatePoints(*setup.ifs, setup.job, [&](const PointBatch& batch, const RenderStats& stats) {
-        arrays.append(batch);
-        return reporter.report(double(stats.samples) / double(std::max<std::int64_t>(1, setup.job.samples)));
-      });
+  released(reporter, file, [&] {
+    const cli::RenderSetup setup = cli::prepareRenderOf(project, file, overrides, kMaxPoints, false);
+    generatePoints(*setup.ifs, setup.job, [&](const PointBatch& batch, const RenderStats& stats) {
+      arrays.append(batch);
+      return reporter.report(double(stats.samples) / double(std::max<std::int64_t>(1, setup.job.samples)));
     });
-  } catch (const PythonError&) {
-    reporter.rethrow();
-    throw;
-  }
-  reporter.rethrow();
+  });
   return arrays.take();
 }
 
@@ -311,32 +312,25 @@ DensityVolume PythonProject::densityVolume(int resolution, const py::object& sam
   const std::string file = fileFor(folder_, source_);
   ProgressReporter reporter(progress);
   DensityVolume result;
-  try {
-    py::gil_scoped_release release;
-    translated(file, [&] {
-      const Project project = cli::projectForVerbAt(loaded, file, time);
-      VolumeJob job;
-      job.settings = project.volume.value_or(VolumeSettings{});
-      job.settings.resolution = resolution;
-      if (sampleText) job.settings.samples = cli::parseSamples(*sampleText, limits::kMaxRenderSamples);
-      if (seed) job.settings.seed = *seed;
-      job.threads = threads;
-      const std::filesystem::path parent = std::filesystem::path(file).parent_path();
-      job.projectFolder = parent.empty() ? std::filesystem::path(".") : parent;
-      std::atomic<bool> cancel{false};
-      job.cancel = &cancel;
-      job.progress = [&](double f) {
-        if (!reporter.report(f)) cancel.store(true);
-      };
-      result = computeDensityVolume(project, job);
-      if (result.totalMass <= 0.0)
-        throw PythonError(file + ": no point of the attractor fell inside X, so the volume is empty.");
-    });
-  } catch (const PythonError&) {
-    reporter.rethrow();
-    throw;
-  }
-  reporter.rethrow();
+  released(reporter, file, [&] {
+    const Project project = cli::projectForVerbAt(loaded, file, time);
+    VolumeJob job;
+    job.settings = project.volume.value_or(VolumeSettings{});
+    job.settings.resolution = resolution;
+    if (sampleText) job.settings.samples = cli::parseSamples(*sampleText, limits::kMaxRenderSamples);
+    if (seed) job.settings.seed = *seed;
+    job.threads = threads;
+    const std::filesystem::path parent = std::filesystem::path(file).parent_path();
+    job.projectFolder = parent.empty() ? std::filesystem::path(".") : parent;
+    std::atomic<bool> cancel{false};
+    job.cancel = &cancel;
+    job.progress = [&](double f) {
+      if (!reporter.report(f)) cancel.store(true);
+    };
+    result = computeDensityVolume(project, job);
+    if (result.totalMass <= 0.0)
+      throw PythonError(file + ": no point of the attractor fell inside X, so the volume is empty.");
+  });
   return result;
 }
 
@@ -363,32 +357,25 @@ py::tuple PythonProject::mesh(int depth, const std::string& base, int threads, s
   const std::string file = fileFor(folder_, source_);
   ProgressReporter reporter(progress);
   std::optional<DeterministicMesh> result;
-  try {
-    py::gil_scoped_release release;
-    translated(file, [&] {
-      Document document(cli::projectForVerbAt(loaded, file, time));
-      if (usesSetIteration(document.project()))
-        throw PythonError("mesh(): " + file +
-                          " has median functions, whose sets have no mesh of their own; use volume().");
-      DeterministicIfs ifs = snapshotDeterministicIfs(document.project(), document.evaluation());
-      const std::filesystem::path parent = std::filesystem::path(file).parent_path();
-      loadCondensationMeshes(ifs, document.project(), parent.empty() ? std::filesystem::path(".") : parent);
-      const BaseShape shape = base == "cube" ? BaseShape::Cube : base == "sphere" ? BaseShape::Sphere : BaseShape::File;
-      const BaseMeshSpec spec = baseMeshSpec(shape, base, 0, false, false, MeshFormat::Ply);
-      DeterministicOptions options;
-      options.depth = depth;
-      options.threads = threads;
-      IfsMesh coarse = loadCoarseBase(spec);
-      const DeterministicPlan plan = planDeterministic(ifs, predictBaseCounts(coarse, spec), options);
-      if (plan.overLimit) throw PythonError("mesh(): " + file + ": " + plan.message + ".");
-      const IfsMesh start = refineBase(std::move(coarse), spec);
-      result.emplace(buildDeterministicMesh(ifs, start, options, [&](double f) { return reporter.report(f); }));
-    });
-  } catch (const PythonError&) {
-    reporter.rethrow();
-    throw;
-  }
-  reporter.rethrow();
+  released(reporter, file, [&] {
+    Document document(cli::projectForVerbAt(loaded, file, time));
+    if (usesSetIteration(document.project()))
+      throw PythonError("mesh(): " + file +
+                        " has median functions, whose sets have no mesh of their own; use volume().");
+    DeterministicIfs ifs = snapshotDeterministicIfs(document.project(), document.evaluation());
+    const std::filesystem::path parent = std::filesystem::path(file).parent_path();
+    loadCondensationMeshes(ifs, document.project(), parent.empty() ? std::filesystem::path(".") : parent);
+    const BaseShape shape = base == "cube" ? BaseShape::Cube : base == "sphere" ? BaseShape::Sphere : BaseShape::File;
+    const BaseMeshSpec spec = baseMeshSpec(shape, base, 0, false, false, MeshFormat::Ply);
+    DeterministicOptions options;
+    options.depth = depth;
+    options.threads = threads;
+    IfsMesh coarse = loadCoarseBase(spec);
+    const DeterministicPlan plan = planDeterministic(ifs, predictBaseCounts(coarse, spec), options);
+    if (plan.overLimit) throw PythonError("mesh(): " + file + ": " + plan.message + ".");
+    const IfsMesh start = refineBase(std::move(coarse), spec);
+    result.emplace(buildDeterministicMesh(ifs, start, options, [&](double f) { return reporter.report(f); }));
+  });
   return meshArrays(result->mesh);
 }
 

@@ -1,6 +1,7 @@
 #include "explore/explore.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <glm/geometric.hpp>
 
@@ -460,6 +461,11 @@ ExploreResult firstWorthLooking(Draw&& draw, const std::filesystem::path& folder
 AttractorVerdict judgeDraw(Project& project, const std::filesystem::path& folder, bool frame) {
   // A new world is judged as it will be seen: framed; a mutation keeps its parent's camera.
   return frame ? judgeFramed(project, folder) : judgeAttractor(project, folder);
+}
+
+std::uint64_t clockSeed() {
+  const auto now = std::chrono::system_clock::now().time_since_epoch();
+  return splitmix64(std::uint64_t(std::chrono::duration_cast<std::chrono::nanoseconds>(now).count())) % 1'000'000'000u;
 }
 
 const char* exploreStyleName(ExploreStyle style) {

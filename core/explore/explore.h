@@ -83,6 +83,10 @@ struct ExploreResult {
 /// ("") when none of kExploreTries draws is.
 ExploreResult randomWorld(const RandomWorldOptions& options);
 
+/// A seed for a draw asked for without one: from the clock, below a billion so that it can be
+/// typed back (it is printed, and kept in the lineage).
+std::uint64_t clockSeed();
+
 /// One draw of randomWorld, not judged: what the acceptance tests count at the first draw.
 Project drawRandomWorld(const RandomWorldOptions& options, std::uint64_t draw);
 

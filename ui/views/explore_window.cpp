@@ -3,7 +3,6 @@
 #include <imgui.h>
 
 #include <algorithm>
-#include <chrono>
 
 #include "base/errors.h"
 #if GRIDIFS_HAVE_GPU
@@ -17,12 +16,6 @@ constexpr const char* kStyleNames[] = {"Grid", "Flame", "Free-form", "Volume"};
 constexpr ExploreStyle kStyles[] = {ExploreStyle::Grid, ExploreStyle::Flame, ExploreStyle::FreeForm,
                                     ExploreStyle::Volume};
 constexpr std::size_t kMaxGenerations = 32;  // Back reaches this far; older ones are dropped
-
-/// A seed for a new generation: different on every click, reproducible from the lineage.
-std::uint64_t clockSeed() {
-  const auto now = std::chrono::system_clock::now().time_since_epoch();
-  return std::uint64_t(std::chrono::duration_cast<std::chrono::microseconds>(now).count()) % 1'000'000'000u;
-}
 
 }  // namespace
 
