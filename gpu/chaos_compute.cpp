@@ -214,11 +214,16 @@ void ChaosCompute::depthRange(const CompiledIfs& ifs, const RenderJob& job, cons
     return;
   }
   const OrbitCamera::PixelRows rows = camera.pixelRows();
+  const glm::dvec3 eye = camera.eye();
   auto range = [&](const CompiledFunction& f) {
     for (const NodePair& p : f.pairs)
       for (const float* q : {p.a, p.b}) {
-        const float d = rows.rowD[0] * q[0] + rows.rowD[1] * q[1] + rows.rowD[2] * q[2] + rows.rowD[3];
-        lo = std::min(lo, d);
+        // A panoramic depth is the distance from the eye, convex: at most its largest at the
+        // nodes (plus the stereo circle), at least the near plane.
+        const float d = camera.panoramic()
+                            ? float(glm::length(glm::dvec3(q[0], q[1], q[2]) - eye) + camera.stereoRadius())
+                            : rows.rowD[0] * q[0] + rows.rowD[1] * q[1] + rows.rowD[2] * q[2] + rows.rowD[3];
+        lo = std::min(lo, camera.panoramic() ? float(camera.nearPlane()) : d);
         hi = std::max(hi, d);
       }
   };
@@ -229,6 +234,41 @@ void ChaosCompute::depthRange(const CompiledIfs& ifs, const RenderJob& job, cons
   lo = std::max(lo, float(camera.nearPlane()));
   depthMin_ = lo;
   depthScale_ = hi > lo ? 65534.0f / (hi - lo) : 0.0f;  // 0xFFFF.... stays the empty key
+}
+
+void ChaosCompute::setProjectionUniforms(const OrbitCamera& camera) {
+  auto loc = [&](const char* name) { return glGetUniformLocation(program_, name); };
+  const CameraProjection projection = camera.settings().projection;
+  glUniform1i(loc("uProjection"), !camera.panoramic() ? 0 : projection == CameraProjection::Fisheye ? 1 : 2);
+  glUniform1i(loc("uStereo"), camera.eyes() == 2 ? 1 : 0);
+  const int rightEye = camera.eyes() == 2 ? 1 : 0;
+  const OrbitCamera::PixelRows rows = camera.pixelRows(rightEye);
+  const float right[4][4] = {{rows.rowX[0], rows.rowY[0], rows.rowW[0], rows.rowD[0]},
+                             {rows.rowX[1], rows.rowY[1], rows.rowW[1], rows.rowD[1]},
+                             {rows.rowX[2], rows.rowY[2], rows.rowW[2], rows.rowD[2]},
+                             {rows.rowX[3], rows.rowY[3], rows.rowW[3], rows.rowD[3]}};
+  glUniform4fv(loc("uCamRight"), 4, &right[0][0]);
+  float bounds[2][4], centre[2][2], turn[2][9];
+  for (int eye = 0; eye < 2; ++eye) {
+    const EyeRegion r = camera.eyeRegion(camera.eyes() == 2 ? eye : 0);
+    const float b[4] = {float(r.x), float(r.x + r.width), float(r.y), float(r.y + r.height)};
+    std::copy(b, b + 4, bounds[eye]);
+    centre[eye][0] = float(r.x + 0.5 * r.width);
+    centre[eye][1] = float(r.y + 0.5 * r.height);
+    const glm::dmat3& t = camera.eyeTurn(camera.eyes() == 2 ? eye : 0);
+    for (int c = 0; c < 3; ++c)
+      for (int k = 0; k < 3; ++k) turn[eye][3 * c + k] = float(t[c][k]);  // column major, as GLSL's
+  }
+  glUniform4fv(loc("uEyeBounds"), 2, &bounds[0][0]);
+  glUniform2fv(loc("uEyeCentre"), 2, &centre[0][0]);
+  glUniform1f(loc("uPixelsPerRadian"), float(camera.pixelsPerRadian()));
+  glUniform1f(loc("uHalfFov"), float(camera.settings().fov * (M_PI / 360.0)));
+  glUniform1f(loc("uEyeRadius"), float(camera.stereoRadius()));
+  const glm::dvec3 up = camera.viewUp();
+  glUniform3f(loc("uViewUp"), float(up.x), float(up.y), float(up.z));
+  glUniformMatrix3fv(loc("uEyeTurn"), 2, GL_FALSE, &turn[0][0]);
+  const float sign[2] = {float(camera.eyeSign(0)), float(camera.eyeSign(1))};
+  glUniform1fv(loc("uEyeSign"), 2, sign);
 }
 
 void ChaosCompute::setup(const CompiledIfs& ifs, const RenderJob& job, ChainRange share, int voxelResolution) {
@@ -319,6 +359,7 @@ void ChaosCompute::setup(const CompiledIfs& ifs, const RenderJob& job, ChainRang
   glUniform4f(loc("uCam1"), rows.rowX[3], rows.rowY[3], rows.rowW[3], rows.rowD[3]);
   glUniform2f(loc("uSize"), float(job.width), float(job.height));
   glUniform1f(loc("uNear"), float(camera.nearPlane()));
+  setProjectionUniforms(camera);
   glUniform1ui(loc("uStride"), std::uint32_t(job.width));
   glUniform2f(loc("uDepthQuant"), depthMin_, depthScale_);
   glUniform1i(loc("uPalette"), job.palette && voxels_ == 0 ? 1 : 0);

@@ -102,6 +102,8 @@ class ChaosCompute {
   void uploadIfs(const CompiledIfs& ifs);
   /// depthMin_ and depthScale_ for the 32-bit keys.
   void depthRange(const CompiledIfs& ifs, const RenderJob& job, const OrbitCamera& camera);
+  /// The panoramic projection's and the stereo eyes' uniforms (render/camera.h).
+  void setProjectionUniforms(const OrbitCamera& camera);
 
   GpuInfo info_;
   ChaosOutput output_ = ChaosOutput::Image;

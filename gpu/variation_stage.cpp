@@ -97,6 +97,14 @@ bool variationDepthRange(const CompiledIfs& ifs, const OrbitCamera& camera, int 
       if (!std::all_of(p.begin(), p.end(), [](float v) { return std::fabs(v) <= 1e10f; })) break;  // NaN too
       if (k < skip) continue;
       const std::array<float, 3> q = ifs.finalFunction ? ifs.finalFunction->evaluateMap(p, random) : p;
+      if (camera.panoramic() || camera.eyes() == 2) {
+        const ProjectedPoint projected = camera.project(glm::dvec3(q[0], q[1], q[2]), int(k & 1));
+        const EyeRegion r = camera.eyeRegion(int(k & 1));
+        if (projected.inFront && projected.x >= r.x && projected.x < r.x + r.width && projected.y >= r.y &&
+            projected.y < r.y + r.height)
+          depths.push_back(float(projected.depth));
+        continue;
+      }
       const float depth = row(rows.rowD, q), w = row(rows.rowW, q);
       const float x = row(rows.rowX, q) / w, y = row(rows.rowY, q) / w;
       if (depth > nearPlane && x >= 0.0f && x < width && y >= 0.0f && y < height) depths.push_back(depth);

@@ -70,6 +70,17 @@ uniform uint uIterations;  // per chain in this dispatch
 uniform vec4 uCamX, uCamY, uCamZ, uCam1;  // (px·w, py·w, w, depth) = columns · (x, y, z, 1)
 uniform vec2 uSize;
 uniform float uNear;
+// Panoramic cameras and stereo eyes (render/camera.h): the rows above are eye 0's; uCamRight
+// holds eye 1's columns. Panoramic rows are the view rows (x, y, z, view depth).
+uniform int uProjection;          // 0: flat, 1: fisheye, 2: equirectangular
+uniform bool uStereo;             // two eyes: a chain's plotted samples alternate between them
+uniform vec4 uCamRight[4];
+uniform vec4 uEyeBounds[2];       // x0, x1, y0, y1 in frame pixels
+uniform vec2 uEyeCentre[2];
+uniform float uPixelsPerRadian, uHalfFov, uEyeRadius;
+uniform vec3 uViewUp;
+uniform mat3 uEyeTurn[2];
+uniform float uEyeSign[2];
 uniform uint uStride;
 uniform vec2 uDepthQuant;  // 32-bit keys: q = (depth - x) · y in [0, 65535]
 uniform bool uPalette;
@@ -222,12 +233,46 @@ bool plot(vec3 q, vec4 col) {
 
 #elif !EMIT_POINTS
 
+uint plotEye = 0u;  // stereo: the eye of this chain's next plotted sample
+
+// A panoramic camera's pixel and depth of view-space point v for `eye` (OrbitCamera::project).
+bool projectPanoramic(vec3 v, uint eye, out vec2 xy, out float depth) {
+  if (uStereo) {
+    // The eye on the circle of radius uEyeRadius whose ray to the point touches it.
+    const vec3 h = v - dot(v, uViewUp) * uViewUp;
+    const float d2 = dot(h, h), r2 = uEyeRadius * uEyeRadius;
+    if (!(d2 > r2)) return false;
+    const float t = sqrt(d2 - r2);
+    const vec3 e = (r2 / d2) * h + (uEyeSign[eye] * uEyeRadius * t / d2) * cross(h, uViewUp);
+    v = uEyeTurn[eye] * (v - e);
+  }
+  depth = length(v);
+  if (uProjection == 1) {
+    const float len = length(v.xy), theta = atan(len, -v.z);
+    if (theta > uHalfFov) return false;
+    const float k = len > 0.0 ? theta * uPixelsPerRadian / len : 0.0;
+    xy = uEyeCentre[eye] + vec2(k * v.x, -k * v.y);
+  } else {
+    xy = uEyeCentre[eye] + uPixelsPerRadian * vec2(atan(v.x, -v.z), -atan(v.y, length(v.xz)));
+  }
+  return true;
+}
+
 bool plot(vec3 q, vec4 col) {
-  const vec4 r = uCamX * q.x + uCamY * q.y + uCamZ * q.z + uCam1;
-  const float depth = r.w;
+  const uint eye = plotEye;
+  if (uStereo) plotEye ^= 1u;
+  const vec4 r = eye == 0u ? uCamX * q.x + uCamY * q.y + uCamZ * q.z + uCam1
+                           : uCamRight[0] * q.x + uCamRight[1] * q.y + uCamRight[2] * q.z + uCamRight[3];
+  float depth = r.w;
+  vec2 xy;
+  if (uProjection == 0) {
+    xy = r.xy * (1.0 / r.z);
+  } else if (!projectPanoramic(r.xyz, eye, xy, depth)) {
+    return false;
+  }
   if (!(depth > uNear)) return false;
-  const vec2 xy = r.xy * (1.0 / r.z);
-  if (!(all(greaterThanEqual(xy, vec2(0.0))) && all(lessThan(xy, uSize)))) return false;
+  const vec4 bounds = uEyeBounds[eye];
+  if (!(xy.x >= bounds.x && xy.x < bounds.y && xy.y >= bounds.z && xy.y < bounds.w)) return false;
   const uvec2 ixy = uvec2(xy);
   const uint pixel = ixy.y * uStride + ixy.x;
 #if ATOMIC64

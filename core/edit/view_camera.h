@@ -35,7 +35,7 @@ struct ViewCamera {
   glm::dvec3 dragDelta(double dx, double dy, const glm::dvec3& atPoint, double height) const;
   /// Centers and zooms the view so that the box [lo, hi] fills about 80% of the image.
   void frame(const glm::dvec3& lo, const glm::dvec3& hi, double width, double height);
-  bool perspective() const { return axis == ViewAxis::User && !orbit.ortho; }
+  bool perspective() const { return axis == ViewAxis::User && !orbit.orthographic(); }
 };
 
 /// Projects a world point to pixels (x right, y down) with a view-projection matrix;

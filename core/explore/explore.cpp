@@ -180,7 +180,7 @@ Project flameWorld(const RandomWorldOptions& options, ExploreStream& s) {
   // flam3's frame: the xy plane seen from +z, orthographic, as imported genomes are.
   p.camera.yaw = -90.0;
   p.camera.pitch = -90.0;
-  p.camera.ortho = true;
+  p.camera.projection = CameraProjection::Orthographic;
   p.camera.fov = 53.13010235415598;
   p.camera.distance = 4.0;
   p.render.mode = DisplayMode::Flame;

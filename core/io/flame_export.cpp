@@ -108,10 +108,10 @@ FlameExport exportFlame(const Project& project, const std::filesystem::path& pro
   const Camera& cam = project.camera;
   const RenderSettings& r = project.render;
   if (native) frame.scale = 1.0;
-  if (!native && !(cam.ortho && cam.pitch == 90.0))
+  if (!native && !(cam.orthographic() && cam.pitch == 90.0))
     out.warnings.push_back(
         "the camera is not an orthographic view from above; the flame frames its target and extent seen from above");
-  if (native && !(cam.ortho && cam.pitch == -90.0))
+  if (native && !(cam.orthographic() && cam.pitch == -90.0))
     out.warnings.push_back(
         "the camera is not an orthographic view of the plane from below; the flame frames its target and extent");
   const double halfH = cam.distance * std::tan(cam.fov * 3.14159265358979323846 / 360.0);

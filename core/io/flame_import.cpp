@@ -323,7 +323,7 @@ namespace {
 /// image; yaw -90° - rotate turns the view as flam3's `rotate` does (points plotted at
 /// R(rotate)·(p - centre)). flam3 counts density per unit of its plane, which is X's unit here.
 void frameNatively(const FlameGenome& genome, Camera& cam, FlameSettings& flame) {
-  cam.ortho = true;
+  cam.projection = CameraProjection::Orthographic;
   cam.pitch = -90.0;
   cam.yaw = -90.0 - genome.rotate;
   cam.target = Vec3(genome.centerX, genome.centerY, 0.0);
@@ -433,7 +433,7 @@ FlameImport importFlameGenome(const FlameGenome& genome, const FlameImportOption
 
   // The view: a camera looking down −z (image x = X's x, image up = X's +y).
   Camera& cam = p.camera;
-  cam.ortho = true;
+  cam.projection = CameraProjection::Orthographic;
   cam.yaw = -90.0;
   cam.pitch = 90.0;
   cam.target = Vec3(0.0);
@@ -447,7 +447,7 @@ FlameImport importFlameGenome(const FlameGenome& genome, const FlameImportOption
     if (genome.camPerspective > 0.0) {
       // The flame's eye sits on the camera's axis at 1 / perspective in front of the plane
       // c_z = 0, which it shows at the view's scale (zr = 1 − perspective · c_z).
-      cam.ortho = false;
+      cam.projection = CameraProjection::Perspective;
       cam.distance = out.frame.scale / genome.camPerspective;
       cam.target = Vec3(0.0, out.frame.scale * out.frame.zCenter, 0.0);
       // The eye looks at the flame's plane z = 0; an attractor thousands of view sizes away from

@@ -265,9 +265,35 @@ std::optional<Lineage> readLineage(const json& root) {
   return lineage;
 }
 
+/// "camera": its table's fields, the optional "stereo" block, and "ortho": true from files older
+/// than "projection", which still means an orthographic camera.
+Camera readCamera(const json& object, const std::string& path) {
+  Camera camera;
+  readSettingFields(cameraTable(), object, path, &camera);
+  if (auto ortho = object.find("ortho"); ortho != object.end() && !object.contains("projection"))
+    if (readBoolean(*ortho, join(path, "ortho"))) camera.projection = CameraProjection::Orthographic;
+  if (auto stereo = object.find("stereo"); stereo != object.end() && !stereo->is_null())
+    camera.stereo = readSettings(stereoTable(), *stereo, join(path, "stereo"));
+  validateCamera(camera, path);
+  return camera;
+}
+
+/// "ortho" stays in every file, so files of flat cameras save as they always have and older
+/// readers still read them; "projection" is written only for the panoramic ones.
+ordered_json writeCamera(const Camera& camera) {
+  const ordered_json table = writeSettings(cameraTable(), camera);
+  ordered_json out = ordered_json::object();
+  for (const auto& [key, value] : table.items())
+    if (key != "projection") out[key] = value;
+  out["ortho"] = camera.orthographic();
+  if (camera.panoramic()) out["projection"] = table["projection"];
+  if (camera.stereo) out["stereo"] = writeSettings(stereoTable(), *camera.stereo);
+  return out;
+}
+
 Project readProjectBody(const json& root, bool withConstruction) {
   Project project;
-  if (auto it = root.find("camera"); it != root.end()) project.camera = readSettings(cameraTable(), *it, "camera");
+  if (auto it = root.find("camera"); it != root.end()) project.camera = readCamera(*it, "camera");
   if (auto it = root.find("render"); it != root.end()) {
     RenderSettings& r = project.render;
     readSettingFields(renderSettingsTable(), *it, "render", &r);
@@ -364,7 +390,7 @@ std::string serializeProject(const Project& project) {
   ordered_json root;
   root["format"] = "gridifs";
   root["version"] = kProjectFormatVersion;
-  root["camera"] = writeSettings(cameraTable(), project.camera);
+  root["camera"] = writeCamera(project.camera);
   const RenderSettings& r = project.render;
   root["render"] = writeSettings(renderSettingsTable(), r);
   root["render"]["mode"] = displayModeName(r.mode);

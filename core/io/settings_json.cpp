@@ -115,7 +115,12 @@ void readSettingFields(const SettingTable& table, const json& object, const std:
       case SettingType::OptionalNumber:
         if (!it->is_null()) s.value<std::optional<double>>(group) = readSettingNumber(words, s, *it, p);
         break;
-      case SettingType::Choice:
+      case SettingType::Choice: {
+        const int index = choiceIndex(*s.choices, readString(*it, p, 64));
+        if (index < 0) fail(p, "expected " + choiceList(*s.choices));
+        s.setChoiceOf(group, index);
+        break;
+      }
       case SettingType::CalculatorVars:
       case SettingType::MorphPairs:
       case SettingType::NodeMoves:
@@ -155,6 +160,8 @@ void writeSettingField(const SettingSpec& s, const void* group, ordered_json& ob
       if (const auto& v = s.value<std::optional<double>>(group)) object[s.key] = *v;
       break;
     case SettingType::Choice:
+      object[s.key] = s.choices->names[std::size_t(s.choiceOf(group))];
+      break;
     case SettingType::CalculatorVars:
     case SettingType::MorphPairs:
     case SettingType::NodeMoves:

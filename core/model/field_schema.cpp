@@ -44,4 +44,25 @@ void FieldSchema::setNumber(void* owner, int c, double v) const {
   }
 }
 
+std::string listWithOr(const std::vector<std::string>& items) {
+  std::string text;
+  for (std::size_t i = 0; i < items.size(); ++i) {
+    if (i > 0) text += i + 1 == items.size() ? " or " : ", ";
+    text += items[i];
+  }
+  return text;
+}
+
+std::string choiceList(const ChoiceNames& choices) {
+  std::vector<std::string> names;
+  for (const char* name : choices.names) names.push_back(std::string("\"") + name + "\"");
+  return listWithOr(names);
+}
+
+int choiceIndex(const ChoiceNames& choices, std::string_view name) {
+  for (std::size_t i = 0; i < choices.names.size(); ++i)
+    if (name == choices.names[i]) return int(i);
+  return -1;
+}
+
 }  // namespace gridifs

@@ -15,6 +15,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <vector>
 
@@ -44,6 +45,13 @@ enum class FieldType {
 struct ChoiceNames {
   std::vector<const char*> names, labels;
 };
+
+/// "a, b or c": items joined for a message.
+std::string listWithOr(const std::vector<std::string>& items);
+/// "\"x\", \"y\" or \"z\"": a Choice's file names, for error messages.
+std::string choiceList(const ChoiceNames& choices);
+/// The index of `name` among `choices`' file names, or -1.
+int choiceIndex(const ChoiceNames& choices, std::string_view name);
 
 /// What a table's author writes for one field (designated initializers, in this order). The
 /// hints a kind of table does not use keep their defaults.

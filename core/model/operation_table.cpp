@@ -489,28 +489,9 @@ const OperationSpec* findOperation(std::string_view type) {
 
 const char* opTypeName(const OpParams& params) { return operationSpec(params).type; }
 
-namespace {
-
-std::string listWithOr(const std::vector<std::string>& items) {
-  std::string text;
-  for (std::size_t i = 0; i < items.size(); ++i) {
-    if (i > 0) text += i + 1 == items.size() ? " or " : ", ";
-    text += items[i];
-  }
-  return text;
-}
-
-}  // namespace
-
 std::string operationTypeList() {
   std::vector<std::string> names;
   for (const OperationSpec& spec : operationTable()) names.push_back(spec.type);
-  return listWithOr(names);
-}
-
-std::string choiceList(const ChoiceNames& choices) {
-  std::vector<std::string> names;
-  for (const char* name : choices.names) names.push_back(std::string("\"") + name + "\"");
   return listWithOr(names);
 }
 

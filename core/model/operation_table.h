@@ -83,8 +83,6 @@ const OperationSpec& operationSpec(const OpParams& params);
 const OperationSpec* findOperation(std::string_view type);
 /// "translate, rotate, ... or nodes": the file names, for error messages.
 std::string operationTypeList();
-/// "\"x\", \"y\" or \"z\"": a Choice's file names, for error messages.
-std::string choiceList(const ChoiceNames& choices);
 /// The stack row's one-line summary.
 std::string operationSummary(const OpParams& params);
 

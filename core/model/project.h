@@ -18,11 +18,37 @@ namespace gridifs {
 /// The project file's "version": the only one this build reads and writes (io/project_io.h).
 inline constexpr int kProjectFormatVersion = 1;
 
+/// "camera.projection": how directions from the eye become pixels (render/camera.h has the
+/// formulas). Fisheye and equirectangular images are for planetarium domes and 360° video.
+enum class CameraProjection { Perspective, Orthographic, Fisheye, Equirectangular };
+
+/// "camera.stereo.layout": where the two eyes go in the frame; the left eye comes first.
+enum class StereoLayout { TopBottom, SideBySide };
+
+/// "camera.stereo": a stereo pair in one frame. Omni-directional stereo (the eyes on a circle of
+/// diameter eye_separation about the world's vertical axis) for fisheye and equirectangular
+/// cameras; parallel eyes, off-axis to the convergence distance, for perspective ones.
+struct StereoSettings {
+  double eye_separation = 0.065;  // units; the human 65 mm at a scale where X is 2 m wide
+  StereoLayout layout = StereoLayout::TopBottom;
+  double convergence = 4.0;  // units from the eye at which both eyes see a point at the same place
+  bool operator==(const StereoSettings&) const = default;
+};
+
 struct Camera {
   double yaw = 30.0, pitch = 20.0, distance = 4.0;  // degrees, degrees, units
   Vec3 target{0.0};
-  double fov = 35.0;  // vertical, degrees
-  bool ortho = false;
+  /// Degrees: vertical for perspective and orthographic; the circle's angle for fisheye;
+  /// horizontal for equirectangular.
+  double fov = 35.0;
+  CameraProjection projection = CameraProjection::Perspective;
+  std::optional<StereoSettings> stereo;
+  bool orthographic() const { return projection == CameraProjection::Orthographic; }
+  /// Fisheye and equirectangular: the depth of a point is its distance from the eye, not its
+  /// distance along the view axis, and straight lines do not stay straight.
+  bool panoramic() const {
+    return projection == CameraProjection::Fisheye || projection == CameraProjection::Equirectangular;
+  }
   bool operator==(const Camera&) const = default;
 };
 

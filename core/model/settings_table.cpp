@@ -105,8 +105,8 @@ void validateSettingFields(const SettingTable& table, const void* group, const s
       }
       case SettingType::Seed:
       case SettingType::Boolean:
+      case SettingType::Choice:  // an enum holds only its choices
         break;
-      case SettingType::Choice:
       case SettingType::CalculatorVars:
       case SettingType::MorphPairs:
       case SettingType::NodeMoves:

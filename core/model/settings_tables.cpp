@@ -50,16 +50,104 @@ void volumeSkipRule(const void* group, const std::string& path) {
 
 constexpr double kUnbounded = std::numeric_limits<double>::infinity();
 
+const ChoiceNames kProjections{{"perspective", "orthographic", "fisheye", "equirectangular"},
+                               {"Perspective", "Orthographic", "Fisheye (dome)", "Equirectangular (360°)"}};
+const ChoiceNames kStereoLayouts{{"top-bottom", "side-by-side"}, {"Top-bottom", "Side-by-side"}};
+
+/// A flat lens cannot see half the sphere; a fisheye sees all of it, an equirectangular image
+/// wraps all the way round.
+void fovRule(const void* group, const std::string& path) {
+  const Camera& c = *static_cast<const Camera*>(group);
+  if (!c.panoramic() && c.fov > kMaxFlatFov)
+    fail(path, "a " + std::string(c.orthographic() ? "orthographic" : "perspective") +
+                   " camera's field of view must be at most 170 degrees (fisheye and equirectangular reach 360)");
+}
+
+void projectionRule(const void* group, const std::string& path) {
+  const Camera& c = *static_cast<const Camera*>(group);
+  if (c.stereo && c.orthographic())
+    fail(path, "an orthographic camera has no stereo parallax; use a perspective, fisheye or equirectangular one");
+}
+
 }  // namespace
 
 const SettingTableOf<Camera>& cameraTable() {
   static const SettingTableOf<Camera> table{{{
-      setting<&Camera::yaw>({.key = "yaw", .min = -1e6, .max = 1e6}),
-      setting<&Camera::pitch>({.key = "pitch", .min = -90.0, .max = 90.0}),
-      setting<&Camera::distance>({.key = "distance", .min = 1e-3, .max = 1e4}),
-      setting<&Camera::target>({.key = "target", .min = -1e4, .max = 1e4}),
-      setting<&Camera::fov>({.key = "fov", .min = 1.0, .max = 170.0}),
-      setting<&Camera::ortho>({.key = "ortho"}),
+      setting<&Camera::yaw>({.key = "yaw",
+                             .label = "Yaw",
+                             .tooltip = "The eye's turn about the vertical axis",
+                             .min = -1e6,
+                             .max = 1e6,
+                             .sliderMin = -180.0,
+                             .sliderMax = 180.0,
+                             .format = "yaw %.1f°"}),
+      setting<&Camera::pitch>({.key = "pitch",
+                               .label = "Pitch",
+                               .tooltip = "How high the eye stands above the target (90°: straight above)",
+                               .min = -90.0,
+                               .max = 90.0,
+                               .sliderMin = -90.0,
+                               .sliderMax = 90.0,
+                               .format = "pitch %.1f°"}),
+      setting<&Camera::distance>({.key = "distance",
+                                  .label = "Distance",
+                                  .tooltip = "How far the eye stands from the target",
+                                  .min = 1e-3,
+                                  .max = 1e4,
+                                  .sliderMin = 0.05,
+                                  .sliderMax = 50.0,
+                                  .format = "distance %.3f",
+                                  .logarithmic = true}),
+      setting<&Camera::target>(
+          {.key = "target", .label = "Target", .tooltip = "The point the eye looks at", .min = -1e4, .max = 1e4}),
+      setting<&Camera::fov>({.key = "fov",
+                             .label = "Field of view",
+                             .tooltip = "Degrees: vertical for perspective and orthographic, the circle for "
+                                        "fisheye (180: a dome master), horizontal for equirectangular",
+                             .min = 1.0,
+                             .max = 360.0,
+                             .sliderMin = 1.0,
+                             .sliderMax = 360.0,
+                             .format = "fov %.1f°",
+                             .rule = fovRule}),
+      // Written only when not perspective: "ortho": true in older files still reads as
+      // orthographic (io/project_io.cpp).
+      setting<&Camera::projection>({.key = "projection",
+                                    .label = "Projection",
+                                    .tooltip = "Perspective, orthographic, fisheye (planetarium domes) or "
+                                               "equirectangular (360° video)",
+                                    .choices = &kProjections,
+                                    .omitDefault = true,
+                                    .rule = projectionRule}),
+  }}};
+  return table;
+}
+
+const SettingTableOf<StereoSettings>& stereoTable() {
+  static const SettingTableOf<StereoSettings> table{{{
+      setting<&StereoSettings::eye_separation>(
+          {.key = "eye_separation",
+           .label = "Eye separation",
+           .tooltip = "The distance between the eyes, in the scene's units (X is 2 units wide)",
+           .min = 0.0,
+           .max = 100.0,
+           .sliderMin = 0.0,
+           .sliderMax = 0.5,
+           .format = "eyes %.3f apart"}),
+      setting<&StereoSettings::layout>({.key = "layout",
+                                        .label = "Layout",
+                                        .tooltip = "Where the eyes go in the frame; the left eye comes first",
+                                        .choices = &kStereoLayouts}),
+      setting<&StereoSettings::convergence>(
+          {.key = "convergence",
+           .label = "Convergence",
+           .tooltip = "The distance at which both eyes see a point at the same place (the screen's depth)",
+           .min = 1e-3,
+           .max = 1e4,
+           .sliderMin = 0.1,
+           .sliderMax = 50.0,
+           .format = "converge at %.2f",
+           .logarithmic = true}),
   }}};
   return table;
 }

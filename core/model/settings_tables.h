@@ -9,8 +9,12 @@
 
 namespace gridifs {
 
-/// "camera": yaw, pitch, distance, target, fov, ortho.
+/// The widest field of view of a perspective or orthographic camera, in degrees.
+inline constexpr double kMaxFlatFov = 170.0;
+/// "camera": yaw, pitch, distance, target, fov, projection. "stereo" has a table of its own.
 const SettingTableOf<Camera>& cameraTable();
+/// "camera.stereo": eye separation, layout, convergence.
+const SettingTableOf<StereoSettings>& stereoTable();
 /// "render": size, sample budget, seed, skipped iterations, background, depth cue. The display
 /// mode and the "flame" and "shading" blocks are written after these fields.
 const SettingTableOf<RenderSettings>& renderSettingsTable();

@@ -25,7 +25,10 @@ void validateFlameSettings(const FlameSettings& f, const std::string& path) {
   validateSettings(flameSettingsTable(), f, path);
 }
 
-void validateCamera(const Camera& c, const std::string& path) { validateSettings(cameraTable(), c, path); }
+void validateCamera(const Camera& c, const std::string& path) {
+  validateSettings(cameraTable(), c, path);
+  if (c.stereo) validateSettings(stereoTable(), *c.stereo, join(path, "stereo"));
+}
 
 void validateRenderSettings(const RenderSettings& r, const std::string& path) {
   validateSettings(renderSettingsTable(), r, path);

@@ -17,6 +17,7 @@
 #include <type_traits>
 
 #include "base/hash.h"
+#include "model/lane_math.h"
 #include "render/batched_variations.h"
 #include "render/camera.h"
 #include "render/compiled_ifs.h"
@@ -641,6 +642,20 @@ struct HotCamera {
   v4f size;  // width, height, 1, 1
   float nearPlane;
   std::uint32_t stride;
+  /// What the plotters project with (render/camera.h's conventions), per eye (the same twice
+  /// without stereo; in stereo, sample k of every eight goes to eye k mod 2): rows[eye][r][c],
+  /// the pixel rows (x·w, y·w, w, depth) of a flat camera or the view rows (x, y, z, unused) of
+  /// a panoramic one; the eye's pixels [x0, x1) × [y0, y1) of the frame.
+  float rows[2][4][4] = {};
+  float bounds[2][4] = {};
+  enum Kind : std::uint8_t { Flat, Fisheye, Equirectangular } kind = Flat;
+  bool stereo = false;      // panoramic: omni-directional stereo
+  float centre[2][2] = {};  // panoramic: the eye image's centre, frame pixels
+  float pixelsPerRadian = 1.0f, halfFov = 0.0f;
+  float radius = 0.0f;      // omni-directional stereo: half the eye separation
+  float up[3] = {0, 1, 0};  // the world's vertical axis in view space
+  float turn[2][9] = {};    // per eye, row major: the convergence turn
+  float sign[2] = {-1, 1};  // the eyes' sides
 };
 
 inline constexpr std::uint64_t kEmptyKey = ~std::uint64_t(0);
@@ -661,6 +676,33 @@ inline HotCamera makeHotCamera(const OrbitCamera& camera) {
   hot.size = v4f{float(camera.width()), float(camera.height()), 1.0f, 1.0f};
   hot.nearPlane = float(camera.nearPlane());
   hot.stride = std::uint32_t(camera.width());
+  for (int eye = 0; eye < 2; ++eye) {
+    const int source = camera.eyes() == 2 ? eye : 0;
+    const OrbitCamera::PixelRows r = camera.pixelRows(source);
+    const float* rowOf[4] = {r.rowX, r.rowY, r.rowW, r.rowD};
+    for (int row = 0; row < 4; ++row)
+      for (int c = 0; c < 4; ++c) hot.rows[eye][row][c] = rowOf[row][c];
+    const EyeRegion region = camera.eyeRegion(source);
+    hot.bounds[eye][0] = float(region.x);
+    hot.bounds[eye][1] = float(region.x + region.width);
+    hot.bounds[eye][2] = float(region.y);
+    hot.bounds[eye][3] = float(region.y + region.height);
+    hot.centre[eye][0] = float(region.x + 0.5 * region.width);
+    hot.centre[eye][1] = float(region.y + 0.5 * region.height);
+    const glm::dmat3& turn = camera.eyeTurn(source);
+    for (int row = 0; row < 3; ++row)
+      for (int c = 0; c < 3; ++c) hot.turn[eye][3 * row + c] = float(turn[c][row]);
+  }
+  if (camera.panoramic()) {
+    hot.kind =
+        camera.settings().projection == CameraProjection::Fisheye ? HotCamera::Fisheye : HotCamera::Equirectangular;
+    hot.pixelsPerRadian = float(camera.pixelsPerRadian());
+    hot.halfFov = float(camera.settings().fov * (M_PI / 360.0));
+    hot.stereo = camera.eyes() == 2;
+    hot.radius = float(camera.stereoRadius());
+    const glm::dvec3 up = camera.viewUp();
+    for (int d = 0; d < 3; ++d) hot.up[d] = float(up[d]);
+  }
   return hot;
 }
 
@@ -840,20 +882,97 @@ struct ZBufferPlot {
   /// Wegenkittl 1994, §3.1: the camera's pixel rows), the same float operations as one sample at
   /// a time. NaN points fall outside.
   struct Projected {
-    v8f rows[4][4];  // rows[r][c]: coefficient c (x, y, z, constant) of row r (x·w, y·w, w, depth)
-    v8f width, height, nearPlane;
+    v8f rows[4][4];      // rows[r][c] per lane: the lane's eye's row r, coefficient c
+    v8f x0, x1, y0, y1;  // per lane: the eye's pixels
+    v8f nearPlane;
     std::uint32_t stride;
+    HotCamera::Kind kind;
+    bool stereo;
+    v8f centreX, centreY, pixelsPerRadian, halfFov;      // panoramic
+    v8f radiusSquared, radiusTimesSign, up[3], turn[9];  // omni-directional stereo
   };
   Projected projection() const {
     Projected p;
-    const v4f* columns[4] = {&cam.cx, &cam.cy, &cam.cz, &cam.c1};
+    // Lane k takes eye k mod 2 (by reference: a lambda returning an eight-lane vector would cross
+    // the ABI that differs without AVX).
+    auto lanes = [](v8f& out, float left, float right) {
+      for (int k = 0; k < 8; ++k) out[k] = (k & 1) ? right : left;
+    };
     for (int r = 0; r < 4; ++r)
-      for (int c = 0; c < 4; ++c) p.rows[r][c] = v8f{} + (*columns[c])[r];
-    p.width = v8f{} + cam.size[0];
-    p.height = v8f{} + cam.size[1];
+      for (int c = 0; c < 4; ++c) lanes(p.rows[r][c], cam.rows[0][r][c], cam.rows[1][r][c]);
+    lanes(p.x0, cam.bounds[0][0], cam.bounds[1][0]);
+    lanes(p.x1, cam.bounds[0][1], cam.bounds[1][1]);
+    lanes(p.y0, cam.bounds[0][2], cam.bounds[1][2]);
+    lanes(p.y1, cam.bounds[0][3], cam.bounds[1][3]);
     p.nearPlane = v8f{} + cam.nearPlane;
     p.stride = cam.stride;
+    p.kind = cam.kind;
+    p.stereo = cam.stereo;
+    lanes(p.centreX, cam.centre[0][0], cam.centre[1][0]);
+    lanes(p.centreY, cam.centre[0][1], cam.centre[1][1]);
+    p.pixelsPerRadian = v8f{} + cam.pixelsPerRadian;
+    p.halfFov = v8f{} + cam.halfFov;
+    p.radiusSquared = v8f{} + cam.radius * cam.radius;
+    lanes(p.radiusTimesSign, cam.radius * cam.sign[0], cam.radius * cam.sign[1]);
+    for (int d = 0; d < 3; ++d) p.up[d] = v8f{} + cam.up[d];
+    for (int k = 0; k < 9; ++k) lanes(p.turn[k], cam.turn[0][k], cam.turn[1][k]);
     return p;
+  }
+  // Eight lanes as two halves of four, results through references: an eight-lane vector passed
+  // or returned by value would cross the ABI that differs without AVX.
+  [[gnu::always_inline]] static void sqrtEight(const v8f& x, v8f& out) {
+    const v4f lo = lane_math::sqrt(__builtin_shufflevector(x, x, 0, 1, 2, 3));
+    const v4f hi = lane_math::sqrt(__builtin_shufflevector(x, x, 4, 5, 6, 7));
+    out = __builtin_shufflevector(lo, hi, 0, 1, 2, 3, 4, 5, 6, 7);
+  }
+  [[gnu::always_inline]] static void atan2Eight(const v8f& y, const v8f& x, v8f& out) {
+    const v4f lo =
+        lane_math::atan2(__builtin_shufflevector(y, y, 0, 1, 2, 3), __builtin_shufflevector(x, x, 0, 1, 2, 3));
+    const v4f hi =
+        lane_math::atan2(__builtin_shufflevector(y, y, 4, 5, 6, 7), __builtin_shufflevector(x, x, 4, 5, 6, 7));
+    out = __builtin_shufflevector(lo, hi, 0, 1, 2, 3, 4, 5, 6, 7);
+  }
+  /// A panoramic camera's pixel position, depth and drawability of eight view-space points
+  /// (render/camera.h: OrbitCamera::project's formulas in float). vx, vy, vz are overwritten.
+  template <class V8i>
+  [[gnu::always_inline]] static void projectPanoramic(const Projected& pr, v8f& vx, v8f& vy, v8f& vz, v8f& ix, v8f& iy,
+                                                      v8f& depth, V8i& inside) {
+    V8i drawable = V8i{} - 1;
+    if (pr.stereo) {
+      // The eye on the circle whose ray touches it (OrbitCamera::panoramicEyeView).
+      const v8f along = vx * pr.up[0] + vy * pr.up[1] + vz * pr.up[2];
+      const v8f hx = vx - along * pr.up[0], hy = vy - along * pr.up[1], hz = vz - along * pr.up[2];
+      const v8f d2 = hx * hx + hy * hy + hz * hz;
+      drawable = d2 > pr.radiusSquared;
+      v8f t;
+      sqrtEight(drawable ? d2 - pr.radiusSquared : v8f{}, t);
+      const v8f inverse = 1.0f / (drawable ? d2 : v8f{} + 1.0f);
+      const v8f a = pr.radiusSquared * inverse, b = pr.radiusTimesSign * t * inverse;
+      const v8f crossX = hy * pr.up[2] - hz * pr.up[1], crossY = hz * pr.up[0] - hx * pr.up[2],
+                crossZ = hx * pr.up[1] - hy * pr.up[0];
+      const v8f wx = vx - (a * hx + b * crossX), wy = vy - (a * hy + b * crossY), wz = vz - (a * hz + b * crossZ);
+      vx = pr.turn[0] * wx + pr.turn[1] * wy + pr.turn[2] * wz;
+      vy = pr.turn[3] * wx + pr.turn[4] * wy + pr.turn[5] * wz;
+      vz = pr.turn[6] * wx + pr.turn[7] * wy + pr.turn[8] * wz;
+    }
+    sqrtEight(vx * vx + vy * vy + vz * vz, depth);
+    if (pr.kind == HotCamera::Fisheye) {
+      v8f h, theta;
+      sqrtEight(vx * vx + vy * vy, h);
+      atan2Eight(h, -vz, theta);
+      const v8f k = h > 0.0f ? theta * pr.pixelsPerRadian / (h > 0.0f ? h : v8f{} + 1.0f) : v8f{};
+      ix = pr.centreX + k * vx;
+      iy = pr.centreY - k * vy;
+      drawable &= theta <= pr.halfFov;
+    } else {
+      v8f longitude, latitude, horizontal;
+      atan2Eight(vx, -vz, longitude);
+      sqrtEight(vx * vx + vz * vz, horizontal);
+      atan2Eight(vy, horizontal, latitude);
+      ix = pr.centreX + longitude * pr.pixelsPerRadian;
+      iy = pr.centreY - latitude * pr.pixelsPerRadian;
+    }
+    inside = drawable;
   }
   template <class V8u, class V8i>
   [[gnu::always_inline]] static void projectEight(const Projected& pr, const v4f* eight, V8u& pixel, v8f& depth,
@@ -861,14 +980,21 @@ struct ZBufferPlot {
     v8f x, y, z, unused;
     transposeEight(eight, x, y, z, unused);
     // r = cx·x + cy·y + cz·z + c1 per row, as one sample at a time (no FMA contraction).
-    const v8f px = pr.rows[0][0] * x + pr.rows[0][1] * y + pr.rows[0][2] * z + pr.rows[0][3];
-    const v8f py = pr.rows[1][0] * x + pr.rows[1][1] * y + pr.rows[1][2] * z + pr.rows[1][3];
-    const v8f pw = pr.rows[2][0] * x + pr.rows[2][1] * y + pr.rows[2][2] * z + pr.rows[2][3];
-    depth = pr.rows[3][0] * x + pr.rows[3][1] * y + pr.rows[3][2] * z + pr.rows[3][3];
-    const v8f reciprocal = 1.0f / pw;
-    const v8f ix = px * reciprocal, iy = py * reciprocal;
+    v8f px = pr.rows[0][0] * x + pr.rows[0][1] * y + pr.rows[0][2] * z + pr.rows[0][3];
+    v8f py = pr.rows[1][0] * x + pr.rows[1][1] * y + pr.rows[1][2] * z + pr.rows[1][3];
+    v8f pw = pr.rows[2][0] * x + pr.rows[2][1] * y + pr.rows[2][2] * z + pr.rows[2][3];
+    v8f ix, iy;
+    V8i drawable = V8i{} - 1;
+    if (pr.kind == HotCamera::Flat) [[likely]] {
+      depth = pr.rows[3][0] * x + pr.rows[3][1] * y + pr.rows[3][2] * z + pr.rows[3][3];
+      const v8f reciprocal = 1.0f / pw;
+      ix = px * reciprocal;
+      iy = py * reciprocal;
+    } else {
+      projectPanoramic(pr, px, py, pw, ix, iy, depth, drawable);
+    }
     // NaN fails every comparison, so it falls outside.
-    inside = (depth > pr.nearPlane) & (ix >= v8f{}) & (ix < pr.width) & (iy >= v8f{}) & (iy < pr.height);
+    inside = drawable & (depth > pr.nearPlane) & (ix >= pr.x0) & (ix < pr.x1) & (iy >= pr.y0) & (iy < pr.y1);
     const V8u column = V8u(__builtin_convertvector(inside ? ix : v8f{}, V8i));
     const V8u row = V8u(__builtin_convertvector(inside ? iy : v8f{}, V8i));
     pixel = row * pr.stride + column;

@@ -15,6 +15,8 @@
 namespace gridifs {
 
 double flamePixelsPerUnit(const Camera& camera, int outputHeight) {
+  // A panoramic camera: the pixels per radian, seen at the target's distance.
+  if (camera.panoramic()) return outputHeight / (camera.fov * M_PI / 360.0) / (2.0 * camera.distance);
   const double halfHeight = camera.distance * std::tan(camera.fov * M_PI / 360.0);
   return halfHeight > 0.0 ? outputHeight / (2.0 * halfHeight) : 1.0;
 }
@@ -27,8 +29,11 @@ int flameGutter(const FlameSettings& settings) {
 }
 
 namespace {
-/// The gutter actually used for `camera` (0 when widening the view would exceed 170°).
+/// The gutter actually used for `camera` (0 when widening the view would exceed 170°, and for
+/// panoramic and stereo cameras).
 int usableGutter(const Camera& camera, int outputHeight, const FlameSettings& settings) {
+  // A wider view would move a dome's circle and the stereo eyes' edges: no gutter there.
+  if (camera.panoramic() || camera.stereo) return 0;
   const int g = flameGutter(settings);
   const double halfTan = std::tan(camera.fov * M_PI / 360.0) * double(outputHeight + 2 * g) / outputHeight;
   return std::atan(halfTan) * 360.0 / M_PI <= 170.0 ? g : 0;

@@ -46,9 +46,25 @@ struct Unproject {
   float sx, sy;
   bool perspective;
   float footA, footB;  // world units per pixel at depth d: footA·d + footB
+  /// Panoramic and stereo cameras: each pixel's view-space ray (origin xyz, step xyz), the
+  /// point at depth d being origin + step·d (OrbitCamera::rayThrough); empty for one flat eye.
+  std::vector<std::array<float, 6>> rays;
+  int width = 0;
   Vec3f at(int px, int py, float d) const {
+    if (!rays.empty()) {
+      const std::array<float, 6>& r = rays[std::size_t(py) * std::size_t(width) + std::size_t(px)];
+      return {r[0] + r[3] * d, r[1] + r[4] * d, r[2] + r[5] * d};
+    }
     const float k = perspective ? d : 1.0f;
     return {(ax * float(px) + bx) * sx * k, (ay * float(py) + by) * sy * k, -d};
+  }
+  /// The unit vector from the point seen at pixel (px, py) towards the eye.
+  Vec3f towardsEye(int px, int py, Vec3f p) const {
+    if (!rays.empty()) {
+      const std::array<float, 6>& r = rays[std::size_t(py) * std::size_t(width) + std::size_t(px)];
+      return normalized(Vec3f{-r[3], -r[4], -r[5]});
+    }
+    return perspective ? normalized(Vec3f{-p.x, -p.y, -p.z}) : Vec3f{0.0f, 0.0f, 1.0f};
   }
   float footprint(float d) const { return footA * d + footB; }
 };
@@ -216,11 +232,11 @@ inline std::uint8_t toDisplay8(float linear) {
 Vec3f viewNormal(const DevelopContext& c, int x, int y, float d) {
   const Vec3f p = c.un.at(x, y, d);
   const float tolerance = kEdgeFootprints * c.un.footprint(d);
-  Vec3f dx, dy, n{0.0f, 0.0f, 1.0f};
+  Vec3f dx{}, dy{}, n{0.0f, 0.0f, 1.0f};
   // Rows go down the image, so the upward difference is the negative of the +y one.
   if (difference(c, x, y, 1, 0, d, p, tolerance, dx) && difference(c, x, y, 0, 1, d, p, tolerance, dy))
     n = normalized(cross(dx, Vec3f{-dy.x, -dy.y, -dy.z}));
-  const bool away = c.un.perspective ? dot(n, p) > 0.0f : n.z < 0.0f;
+  const bool away = dot(n, c.un.towardsEye(x, y, p)) < 0.0f;
   return away ? Vec3f{-n.x, -n.y, -n.z} : n;
 }
 
@@ -283,7 +299,7 @@ void shadeRows(const DevelopContext& c, ShadedImage& out, std::size_t rowBegin, 
       const Vec3f p = c.un.at(x, y, d);
       const float foot = c.un.footprint(d);
       const Vec3f n{c.viewNormals[i][0], c.viewNormals[i][1], c.viewNormals[i][2]};
-      const Vec3f view = c.un.perspective ? normalized(Vec3f{-p.x, -p.y, -p.z}) : Vec3f{0.0f, 0.0f, 1.0f};
+      const Vec3f view = c.un.towardsEye(x, int(y), p);
       float ao = 1.0f;
       if (c.aoStrength > 0.0f && c.aoRadius > 0.0f) {
         // The block's occlusion where this pixel lies on the block's surface; its own at edges.
@@ -414,9 +430,22 @@ void developShaded(const RenderImage& snapshot, const ShadingSettings& settings,
   c.un.by = 1.0f - 1.0f / float(height);
   c.un.sx = float(1.0 / proj[0][0]);
   c.un.sy = float(1.0 / proj[1][1]);
-  c.un.perspective = !camera.ortho;
-  c.un.footA = c.un.perspective ? 2.0f * c.un.sy / float(height) : 0.0f;
-  c.un.footB = c.un.perspective ? 0.0f : 2.0f * c.un.sy / float(height);
+  c.un.perspective = !camera.orthographic();
+  c.un.footA = c.un.perspective ? 2.0f * c.un.sy / float(orbit.eyeRegion(0).height) : 0.0f;
+  c.un.footB = c.un.perspective ? 0.0f : 2.0f * c.un.sy / float(orbit.eyeRegion(0).height);
+  if (orbit.panoramic() || orbit.eyes() == 2) {
+    if (orbit.panoramic()) c.un.footA = float(1.0 / orbit.pixelsPerRadian());
+    c.un.width = width;
+    c.un.rays.resize(n);
+    const glm::dmat4& toView = orbit.view();
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x) {
+        const PixelRay ray = orbit.rayThrough(x + 0.5, y + 0.5);
+        const glm::dvec3 origin(toView * glm::dvec4(ray.origin, 1.0)), step(toView * glm::dvec4(ray.step, 0.0));
+        c.un.rays[std::size_t(y) * std::size_t(width) + std::size_t(x)] = {
+            float(origin.x), float(origin.y), float(origin.z), float(step.x), float(step.y), float(step.z)};
+      }
+  }
   for (int v = 0; v < 256; ++v) c.srgbLut[std::size_t(v)] = srgbToLinear(float(v) / 255.0f);
   c.albedo = snapshot.rgba.data();
 

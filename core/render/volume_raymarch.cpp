@@ -278,6 +278,9 @@ VolumeImage marchVolume(const ShadedVolume& s, const VolumeLook& look, const Cam
   if (n <= 0 || s.hi[0] < s.lo[0]) return image;
   const glm::dmat4 inverse = glm::inverse(cam.projection() * cam.view());
   const glm::dmat4& view = cam.view();
+  // Panoramic cameras and stereo eyes take each pixel's ray from the camera; one flat eye keeps
+  // the matrix inverse (the same rays, the images as before).
+  const bool viaRays = cam.panoramic() || cam.eyes() == 2;
   // The box a sample can see extinction in: the occupied voxels' centres ± one voxel (trilinear
   // support), in world coordinates.
   double boxLo[3], boxHi[3];
@@ -291,9 +294,26 @@ VolumeImage marchVolume(const ShadedVolume& s, const VolumeLook& look, const Cam
   parallelFor(std::size_t(height), threads, 1, [&](std::size_t rowBegin, std::size_t rowEnd) {
     for (std::size_t row = rowBegin; row < rowEnd; ++row) {
       for (int x = 0; x < width; ++x) {
-        const double nx = 2.0 * (x + 0.5) / width - 1.0, ny = 1.0 - 2.0 * (double(row) + 0.5) / height;
-        const glm::dvec4 a = inverse * glm::dvec4(nx, ny, -1.0, 1.0), b = inverse * glm::dvec4(nx, ny, 1.0, 1.0);
-        const glm::dvec3 origin = glm::dvec3(a) / a.w, direction = glm::normalize(glm::dvec3(b) / b.w - origin);
+        glm::dvec3 origin, direction;
+        double depth0 = 0.0, ddepth = 1.0;  // panoramic and stereo: the distance along the ray
+        if (viaRays) {
+          const PixelRay pixel = cam.rayThrough(x + 0.5, double(row) + 0.5);
+          if (!pixel.valid) continue;
+          origin = pixel.origin;
+          direction = glm::normalize(pixel.step);
+          if (!cam.panoramic()) {
+            depth0 = -(view * glm::dvec4(origin, 1.0)).z;
+            ddepth = -(view * glm::dvec4(direction, 0.0)).z;
+          }
+        } else {
+          const double nx = 2.0 * (x + 0.5) / width - 1.0, ny = 1.0 - 2.0 * (double(row) + 0.5) / height;
+          const glm::dvec4 a = inverse * glm::dvec4(nx, ny, -1.0, 1.0), b = inverse * glm::dvec4(nx, ny, 1.0, 1.0);
+          origin = glm::dvec3(a) / a.w;
+          direction = glm::normalize(glm::dvec3(b) / b.w - origin);
+          // View depth: -z of view space, linear along the ray.
+          depth0 = -(view * glm::dvec4(origin, 1.0)).z;
+          ddepth = -(view * glm::dvec4(direction, 0.0)).z;
+        }
         double enter = 0.0, leave = 1e300;
         bool hit = true;
         for (int ax = 0; ax < 3 && hit; ++ax) {
@@ -313,9 +333,8 @@ VolumeImage marchVolume(const ShadedVolume& s, const VolumeLook& look, const Cam
           ray.u[ax] = (origin[ax] + 1.0) * toVoxel - 0.5;
           ray.du[ax] = direction[ax] * toVoxel;
         }
-        // View depth: -z of view space, linear along the ray.
-        ray.depth0 = -(view * glm::dvec4(origin, 1.0)).z;
-        ray.ddepth = -(view * glm::dvec4(direction, 0.0)).z;
+        ray.depth0 = depth0;
+        ray.ddepth = ddepth;
         ray.enter = enter;
         ray.leave = leave;
         const RayResult r = marchRay(s, ray, step, jitter(x, int(row)));

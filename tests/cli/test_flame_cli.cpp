@@ -187,7 +187,7 @@ TEST(FlameCli, ImportsThreeDimensionalGenomes) {
   EXPECT_EQ(r.err.find("2D"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("cam_dof"), std::string::npos) << r.err;
   const Project p = loadProject(out);
-  EXPECT_FALSE(p.camera.ortho);
+  EXPECT_FALSE(p.camera.orthographic());
   for (const Function& f : p.functions) EXPECT_EQ(f.resolution, (Index3{2, 2, 2}));
   for (const char* mode : {"zbuffer", "flame"}) {
     const CommandResult render = runGridifs("render " + quote(out.string()) + " -o " +

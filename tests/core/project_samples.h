@@ -82,7 +82,13 @@ class ProjectSampler {
 
   Project project() {
     Project p;
-    p.camera = {real(-180, 180), real(-89, 89), real(1, 10), vec(-1, 1), real(10, 90), integer(0, 1) == 1};
+    p.camera = {real(-180, 180), real(-89, 89), real(1, 10), vec(-1, 1), real(10, 90), CameraProjection::Perspective,
+                std::nullopt};
+    // Every projection; panoramic ones reach past 170°, some cameras see in stereo.
+    p.camera.projection = CameraProjection(integer(0, 3));
+    if (p.camera.panoramic()) p.camera.fov = real(10, 360);
+    if (!p.camera.orthographic() && integer(0, 3) == 0)
+      p.camera.stereo = StereoSettings{real(0, 0.5), StereoLayout(integer(0, 1)), real(0.5, 20)};
     p.render.width = integer(16, 2048);
     p.render.height = integer(16, 2048);
     p.render.samples = integer(1, 1 << 30);

@@ -76,7 +76,7 @@ inline Project twoLayers() {
   p.camera.yaw = 0;
   p.camera.pitch = 0;
   p.camera.distance = 4.0;
-  p.camera.ortho = true;
+  p.camera.projection = CameraProjection::Orthographic;
   p.camera.fov = 35;
   p.render.width = 64;
   p.render.height = 64;

@@ -260,7 +260,7 @@ TEST(FlameImport, AffineXformsAreExactTwoByTwoByTwoGrids) {
   EXPECT_NEAR(a.y, b.y, 1e-12);
   // The camera frames the genome's view: half its height in X.
   const Camera& cam = imported.project.camera;
-  EXPECT_TRUE(cam.ortho);
+  EXPECT_TRUE(cam.orthographic());
   EXPECT_NEAR(cam.distance * std::tan(cam.fov * kPi / 360.0), 0.5 * 200 / 60 * imported.frame.scale, 1e-12);
 }
 
@@ -307,7 +307,7 @@ TEST(FlameExport, AffineProjectsRoundTripExactly) {
   p.functions[3].palette_index = 0.8;
   p.transitions = {{0, 1, 1, 1}, {1, 0, 1, 1}, {1, 1, 0, 2}, {1, 1, 1, 1}};
   p.render.flame.palette = "ember";
-  p.camera.ortho = true;
+  p.camera.projection = CameraProjection::Orthographic;
   p.camera.pitch = 90;
   const FlameExport exported = exportFlame(p, {}, "round trip");
   EXPECT_TRUE(exported.warnings.empty()) << exported.warnings.front();

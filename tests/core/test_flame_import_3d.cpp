@@ -131,7 +131,7 @@ TEST(FlameImport3D, TheCameraSeesWhatTheFlameCameraSees) {
     options.inlinePaletteReference = "file:x.palette.json";
     const FlameImport imported = importFlameGenome(g, options);
     const Camera& cam = imported.project.camera;
-    EXPECT_EQ(cam.ortho, g.camPerspective == 0.0) << g.name;
+    EXPECT_EQ(cam.orthographic(), g.camPerspective == 0.0) << g.name;
     const OrbitCamera orbit(cam, g.width, g.height);
     std::mt19937 rng(3);
     std::uniform_real_distribution<double> u(-1.0, 1.0);

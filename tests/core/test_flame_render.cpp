@@ -29,7 +29,7 @@ Project sierpinski(int size) {
   }
   p.camera.pitch = 90.0;
   p.camera.yaw = -90.0;
-  p.camera.ortho = true;
+  p.camera.projection = CameraProjection::Orthographic;
   p.camera.distance = 2.0;
   p.camera.fov = 45.0;
   p.render.width = p.render.height = size;

@@ -101,7 +101,7 @@ TEST(Camera, ProjectsTargetToCentreAndMatchesPixelRows) {
   c.distance = 5;
   c.target = {0.1, -0.2, 0.3};
   for (bool ortho : {false, true}) {
-    c.ortho = ortho;
+    c.projection = ortho ? CameraProjection::Orthographic : CameraProjection::Perspective;
     const OrbitCamera cam(c, 200, 100);
     const ProjectedPoint centre = cam.project(c.target);
     EXPECT_NEAR(centre.x, 100.0, 1e-9);
@@ -214,7 +214,7 @@ TEST(Renderer, RestartNeverShowsOldGenerationPoints) {
   a.camera.yaw = 0;
   a.camera.pitch = 0;
   a.camera.distance = 6;
-  a.camera.ortho = true;
+  a.camera.projection = CameraProjection::Orthographic;
   Project b = a;
   for (auto& f : a.functions) {
     f.placement.scale *= 0.5;

@@ -71,7 +71,7 @@ TEST(ShadedImage, ASquareAboveALargerOneCastsAShadowOfItsSizeStraightBelow) {
   p.camera.yaw = 0;
   p.camera.pitch = 45;
   p.camera.distance = 4.0;
-  p.camera.ortho = true;
+  p.camera.projection = CameraProjection::Orthographic;
   p.camera.fov = 45;
   p.render.shading.lights = {ShadingLight{Vec3{0, 0, 1}, Vec3{1.0}, 1.0, true}};
   const ShadedImage img = renderShaded(p, 2);
@@ -135,7 +135,7 @@ TEST(ShadedImage, DepthOfFieldBlursOnlyWhatIsAwayFromTheFocus) {
   p.camera.yaw = 0;
   p.camera.pitch = 0;
   p.camera.distance = 4.0;
-  p.camera.ortho = true;
+  p.camera.projection = CameraProjection::Orthographic;
   p.camera.fov = 35;
   p.render.shading.lights = {ShadingLight{Vec3{1, 0, 0}, Vec3{1.0}, 1.0, false}};
   const OrbitCamera cam(p.camera, p.render.width, p.render.height);

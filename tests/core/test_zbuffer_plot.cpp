@@ -133,7 +133,7 @@ kernel::HotCamera camera(bool ortho) {
   c.yaw = 35.0;
   c.pitch = 25.0;
   c.distance = 3.5;
-  c.ortho = ortho;
+  c.projection = ortho ? CameraProjection::Orthographic : CameraProjection::Perspective;
   return kernel::makeHotCamera(OrbitCamera(c, kWidth, kHeight));
 }
 

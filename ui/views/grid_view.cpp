@@ -125,12 +125,12 @@ Vec3 centroid(const std::vector<Vec3>& nodes, const std::vector<unsigned char>* 
 
 GridView::GridView(Content content, ViewAxis axis, std::string id) : content_(content), id_(std::move(id)) {
   camera_.axis = axis;
-  if (axis != ViewAxis::User) camera_.orbit.ortho = true;
+  if (axis != ViewAxis::User) camera_.orbit.projection = CameraProjection::Orthographic;
 }
 
 void GridView::setAxis(ViewAxis axis) {
   camera_.axis = axis;
-  camera_.orbit.ortho = axis != ViewAxis::User;
+  camera_.orbit.projection = axis != ViewAxis::User ? CameraProjection::Orthographic : CameraProjection::Perspective;
   framedOnce_ = false;
 }
 

@@ -1,0 +1,233 @@
+// The panoramic projections and stereo eyes of the camera (render/camera.h): pixel positions of
+// points at known directions against the formulas of the file format's camera (equidistant
+// fisheye, equirectangular longitude and latitude), the renderer's eight-at-a-time float
+// projection against the camera's double one, rays through pixels as the inverse, the stereo
+// parallax, and the refusals of unusable cameras.
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "io/project_io.h"
+#include "model/project.h"
+#include "model/validation.h"
+#include "render/camera.h"
+#include "render/chaos_kernel.h"
+
+namespace gridifs {
+namespace {
+
+constexpr double kDegree = M_PI / 180.0;
+
+/// A camera at (4, 0, 0) looking at the origin: forward is −x, right is +y, up is +z.
+Camera alongX(CameraProjection projection, double fov) {
+  Camera c;
+  c.yaw = 0.0;
+  c.pitch = 0.0;
+  c.distance = 4.0;
+  c.fov = fov;
+  c.projection = projection;
+  return c;
+}
+
+/// The world point at `distance` from the eye of alongX in the direction `theta` from the view
+/// axis with azimuth `phi` (from image right, counter-clockwise).
+glm::dvec3 atAngles(double theta, double phi, double distance) {
+  const glm::dvec3 eye(4.0, 0.0, 0.0), forward(-1.0, 0.0, 0.0), right(0.0, 1.0, 0.0), up(0.0, 0.0, 1.0);
+  return eye + distance * (std::cos(theta) * forward + std::sin(theta) * (std::cos(phi) * right + std::sin(phi) * up));
+}
+
+TEST(CameraProjections, FisheyeIsEquidistantAsTheFormatSays) {
+  for (double fov : {180.0, 220.0, 360.0}) {
+    const int width = 900, height = 700;
+    const OrbitCamera camera(alongX(CameraProjection::Fisheye, fov), width, height);
+    for (double theta : {0.0, 10.0, 45.0, 89.0, 100.0})
+      for (double phi : {0.0, 30.0, 90.0, 200.0, 315.0}) {
+        if (theta > fov / 2) continue;
+        const ProjectedPoint p = camera.project(atAngles(theta * kDegree, phi * kDegree, 2.5));
+        // r = θ/(fov/2) · min(W, H)/2, image y down.
+        const double r = theta / (fov / 2.0) * std::min(width, height) / 2.0;
+        EXPECT_NEAR(p.x, width / 2.0 + r * std::cos(phi * kDegree), 1e-6) << fov << " " << theta << " " << phi;
+        EXPECT_NEAR(p.y, height / 2.0 - r * std::sin(phi * kDegree), 1e-6) << fov << " " << theta << " " << phi;
+        EXPECT_NEAR(p.depth, 2.5, 1e-9);
+        EXPECT_TRUE(p.inFront);
+      }
+  }
+  // A 180° dome master is the inscribed circle: a direction at 90° lands on its edge, and one
+  // behind the eye is not drawn.
+  const OrbitCamera dome(alongX(CameraProjection::Fisheye, 180.0), 800, 800);
+  EXPECT_NEAR(dome.project(atAngles(90.0 * kDegree, 0.0, 1.0)).x, 800.0, 1e-6);
+  EXPECT_FALSE(dome.project(atAngles(120.0 * kDegree, 0.0, 1.0)).inFront);
+}
+
+TEST(CameraProjections, EquirectangularMapsLongitudeAndLatitude) {
+  const int width = 1200, height = 600;
+  const double fov = 360.0, vfov = fov * height / width;
+  const OrbitCamera camera(alongX(CameraProjection::Equirectangular, fov), width, height);
+  const glm::dvec3 eye(4.0, 0.0, 0.0), forward(-1.0, 0.0, 0.0), right(0.0, 1.0, 0.0), up(0.0, 0.0, 1.0);
+  for (double longitude : {-170.0, -90.0, 0.0, 33.0, 120.0, 179.0})
+    for (double latitude : {-80.0, -20.0, 0.0, 45.0, 85.0}) {
+      const double lambda = longitude * kDegree, beta = latitude * kDegree;
+      const glm::dvec3 point = eye + 3.0 * (std::cos(beta) * std::sin(lambda) * right + std::sin(beta) * up +
+                                            std::cos(beta) * std::cos(lambda) * forward);
+      const ProjectedPoint p = camera.project(point);
+      EXPECT_NEAR(p.x, width / 2.0 * (1.0 + longitude / (fov / 2.0)), 1e-6) << longitude << " " << latitude;
+      EXPECT_NEAR(p.y, height / 2.0 * (1.0 - latitude / (vfov / 2.0)), 1e-6) << longitude << " " << latitude;
+      EXPECT_NEAR(p.depth, 3.0, 1e-9);
+    }
+}
+
+/// Cameras of every kind, mono and stereo, at an angle to the axes.
+std::vector<Camera> cameras() {
+  std::vector<Camera> out;
+  for (CameraProjection projection : {CameraProjection::Perspective, CameraProjection::Orthographic,
+                                      CameraProjection::Fisheye, CameraProjection::Equirectangular})
+    for (int stereo = 0; stereo < 3; ++stereo) {
+      if (stereo && projection == CameraProjection::Orthographic) continue;
+      Camera c;
+      c.yaw = 37.0;
+      c.pitch = -24.0;
+      c.distance = 3.0;
+      c.target = Vec3(0.2, -0.1, 0.3);
+      c.projection = projection;
+      c.fov = projection == CameraProjection::Fisheye           ? 200.0
+              : projection == CameraProjection::Equirectangular ? 240.0
+                                                                : 50.0;
+      if (stereo) c.stereo = StereoSettings{0.3, stereo == 1 ? StereoLayout::TopBottom : StereoLayout::SideBySide, 2.5};
+      out.push_back(c);
+    }
+  return out;
+}
+
+TEST(CameraProjections, RaysThroughPixelsInvertTheProjection) {
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (const Camera& c : cameras()) {
+    const OrbitCamera camera(c, 640, 480);
+    int checked = 0;
+    for (int i = 0; i < 400; ++i) {
+      const double x = unit(rng) * 640, y = unit(rng) * 480, depth = 0.5 + 4.0 * unit(rng);
+      const PixelRay ray = camera.rayThrough(x, y);
+      if (!ray.valid) continue;
+      const glm::dvec3 point = ray.origin + ray.step * depth;
+      int eye = 0;
+      if (camera.eyes() == 2 && x >= camera.eyeRegion(1).x && y >= camera.eyeRegion(1).y) eye = 1;
+      const ProjectedPoint p = camera.project(point, eye);
+      ASSERT_NEAR(p.x, x, 1e-6) << projectionName(c.projection) << " stereo " << bool(c.stereo);
+      ASSERT_NEAR(p.y, y, 1e-6) << projectionName(c.projection) << " stereo " << bool(c.stereo);
+      ASSERT_NEAR(p.depth, depth, 1e-6) << projectionName(c.projection);
+      ++checked;
+    }
+    // A 200° fisheye's circle covers about half of a 4:3 frame (a third of a stereo eye's); a
+    // side-by-side equirectangular eye taller than 180° has rays beyond the poles.
+    EXPECT_GT(checked, c.panoramic() ? 100 : 250) << projectionName(c.projection);
+  }
+}
+
+TEST(CameraProjections, TheRenderersFloatProjectionFollowsTheCamera) {
+  // The plotter projects in float (sample k of every eight goes to eye k mod 2 in stereo); each
+  // sample plotted alone, after k NaN samples, must land in the pixel of the double projection
+  // (but where that lies within a thousandth of a pixel edge).
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+  const int width = 320, height = 240;
+  for (const Camera& c : cameras()) {
+    const OrbitCamera camera(c, width, height);
+    std::vector<kernel::PixelCell> cells(std::size_t(width) * height);
+    kernel::ZBufferPlot<false> plot(kernel::makeHotCamera(camera), cells.data(), nullptr);
+    int landed = 0, compared = 0;
+    for (int i = 0; i < 1600; ++i) {
+      const kernel::v4f q{unit(rng) * 1.5f, unit(rng) * 1.5f, unit(rng) * 1.5f, 0.0f};
+      const int lane = i % 8, eye = camera.eyes() == 2 ? lane % 2 : 0;
+      const ProjectedPoint p = camera.project(glm::dvec3(q[0], q[1], q[2]), eye);
+      const EyeRegion r = camera.eyeRegion(eye);
+      const bool expected = p.inFront && p.x >= r.x && p.x < r.x + r.width && p.y >= r.y && p.y < r.y + r.height;
+      const double edge = std::min({std::abs(p.x - std::round(p.x)), std::abs(p.y - std::round(p.y))});
+      if (edge < 1e-3) continue;
+      ++compared;
+      const std::size_t pixel = expected ? std::size_t(int(p.y)) * width + std::size_t(int(p.x)) : 0;
+      const std::uint32_t before = cells[pixel].density;
+      for (int k = 0; k < lane; ++k) plot(kernel::v4f{} + NAN, kernel::v4f{});
+      plot(q, kernel::v4f{0.5f, 0.5f, 0.5f, 0.5f});
+      plot.flush();
+      ASSERT_EQ(plot.takePlotted(), expected ? 1 : 0)
+          << projectionName(c.projection) << " stereo " << bool(c.stereo) << " lane " << lane;
+      if (!expected) continue;
+      ++landed;
+      ASSERT_EQ(cells[pixel].density, before + 1) << projectionName(c.projection) << " stereo " << bool(c.stereo);
+      const float depth = std::bit_cast<float>(std::uint32_t(cells[pixel].key >> 32));
+      EXPECT_LE(depth, p.depth * (1.0 + 1e-4));
+    }
+    EXPECT_GT(landed, 200) << projectionName(c.projection);
+    EXPECT_GT(compared, 1500);
+  }
+}
+
+TEST(CameraProjections, StereoEyesSeeParallaxThatVanishesAtTheConvergenceDistance) {
+  for (CameraProjection projection :
+       {CameraProjection::Perspective, CameraProjection::Fisheye, CameraProjection::Equirectangular}) {
+    for (StereoLayout layout : {StereoLayout::TopBottom, StereoLayout::SideBySide}) {
+      Camera c = alongX(projection, projection == CameraProjection::Perspective ? 60.0 : 180.0);
+      c.stereo = StereoSettings{0.2, layout, 3.0};
+      const OrbitCamera camera(c, 800, 800);
+      const EyeRegion left = camera.eyeRegion(0), right = camera.eyeRegion(1);
+      EXPECT_EQ(left.x, 0);
+      EXPECT_EQ(left.y, 0);
+      EXPECT_EQ(layout == StereoLayout::TopBottom ? right.y : right.x, 400);
+      auto offsetIn = [&](const glm::dvec3& point, int eye) {
+        const ProjectedPoint p = camera.project(point, eye);
+        const EyeRegion r = camera.eyeRegion(eye);
+        return p.x - r.x;
+      };
+      // Straight ahead: at the convergence distance both eyes agree; nearer, the left eye sees
+      // the point further right (crossed parallax); farther, further left.
+      const glm::dvec3 eye(4.0, 0.0, 0.0), forward(-1.0, 0.0, 0.0);
+      EXPECT_NEAR(offsetIn(eye + 3.0 * forward, 0), offsetIn(eye + 3.0 * forward, 1), 1e-6);
+      EXPECT_GT(offsetIn(eye + 1.0 * forward, 0), offsetIn(eye + 1.0 * forward, 1) + 5.0);
+      EXPECT_LT(offsetIn(eye + 8.0 * forward, 0), offsetIn(eye + 8.0 * forward, 1) - 1.0);
+    }
+  }
+}
+
+Project withCamera(const std::string& cameraJson) {
+  return parseProject(R"({"format": "gridifs", "version": 1, "camera": )" + cameraJson +
+                      R"(, "functions": [{"resolution": [2, 2, 2], "ops": []}]})");
+}
+
+std::string refusal(const std::string& cameraJson) {
+  try {
+    withCamera(cameraJson);
+  } catch (const ModelError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(CameraProjections, TheFileNamesProjectionsAndRefusesUnusableOnes) {
+  EXPECT_EQ(withCamera(R"({"ortho": true})").camera.projection, CameraProjection::Orthographic);
+  EXPECT_EQ(withCamera(R"({"ortho": false})").camera.projection, CameraProjection::Perspective);
+  const Project dome = withCamera(R"({"projection": "fisheye", "fov": 360})");
+  EXPECT_EQ(dome.camera.projection, CameraProjection::Fisheye);
+  EXPECT_EQ(dome.camera.fov, 360.0);
+  const Project vr = withCamera(
+      R"({"projection": "equirectangular", "fov": 360, "stereo": {"eye_separation": 0.1, "layout": "side-by-side"}})");
+  ASSERT_TRUE(vr.camera.stereo);
+  EXPECT_EQ(vr.camera.stereo->layout, StereoLayout::SideBySide);
+  EXPECT_EQ(parseProject(serializeProject(vr)).camera, vr.camera);
+  EXPECT_EQ(parseProject(serializeProject(dome)).camera, dome.camera);
+
+  EXPECT_NE(refusal(R"({"fov": 0})").find("camera.fov"), std::string::npos);
+  EXPECT_NE(refusal(R"({"projection": "fisheye", "fov": 361})").find("camera.fov"), std::string::npos);
+  EXPECT_NE(refusal(R"({"fov": 200})").find("at most 170"), std::string::npos);
+  EXPECT_NE(refusal(R"({"projection": "cylinder"})")
+                .find(R"(expected "perspective", "orthographic", "fisheye" or "equirectangular")"),
+            std::string::npos);
+  EXPECT_NE(refusal(R"({"ortho": true, "stereo": {}})").find("orthographic camera has no stereo"), std::string::npos);
+  EXPECT_NE(refusal(R"({"stereo": {"layout": "diagonal"}})").find("camera.stereo.layout"), std::string::npos);
+  EXPECT_NE(refusal(R"({"stereo": {"eye_separation": -1}})").find("camera.stereo.eye_separation"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace gridifs
