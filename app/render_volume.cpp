@@ -10,6 +10,7 @@
 #include "base/text_format.h"
 #include "flame/palette.h"
 #include "io/volume_render_io.h"
+#include "render/camera.h"
 #include "render/image_file.h"
 #include "render/volume_raymarch.h"
 #include "volume/measure_attractor.h"
@@ -34,7 +35,8 @@ std::vector<float> paletteOf(const Project& project, const std::filesystem::path
   return rgb;
 }
 
-void writeVolumeImage(const VolumeImage& image, const std::string& out, const std::string& description) {
+void writeVolumeImage(const VolumeImage& image, const Camera& camera, const std::string& out,
+                      const std::string& description) {
   const std::size_t n = std::size_t(image.width) * std::size_t(image.height);
   ImageFileLayout layout;
   layout.width = image.width;
@@ -47,6 +49,9 @@ void writeVolumeImage(const VolumeImage& image, const std::string& out, const st
     layout.channels = {"R", "G", "B", "A", "Z"};
     layout.zChannel = 4;
     layout.stored = StoredSample::Float;
+    const ExrCameraMatrices matrices = exrCameraMatrices(OrbitCamera(camera, image.width, image.height));
+    layout.worldToCamera = matrices.worldToCamera;
+    layout.worldToNDC = matrices.worldToNDC;
     pixels.resize(n * 5);
     for (std::size_t i = 0; i < n; ++i) {
       const float a = image.rgba[4 * i + 3];
@@ -148,7 +153,7 @@ int runVolumeRenderOf(const Project& loaded, const std::string& file, const std:
   const double marchSeconds = secondsSince(marchStart);
   const std::string description = "GridIFS volume render of " + file + ", " + std::to_string(settings.resolution) +
                                   "^3 voxels, " + volume_render_io::volumeDisplayName(settings.display) + " display";
-  writeVolumeImage(image, out, description);
+  writeVolumeImage(image, project.camera, out, description);
   if (!quiet)
     std::fprintf(stderr, "volume %d^3 in %.2f s, ray march %dx%d in %.2f s\n", settings.resolution, volumeSeconds,
                  width, height, marchSeconds);

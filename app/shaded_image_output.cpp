@@ -4,12 +4,13 @@
 #include "app/render_setup.h"
 #include "base/errors.h"
 #include "base/text_format.h"
+#include "render/camera.h"
 #include "render/image_file.h"
 
 namespace gridifs::cli {
 
-void writeShadedImage(const ShadedImage& image, const RenderImage& snapshot, const std::filesystem::path& out,
-                      const std::string& description) {
+void writeShadedImage(const ShadedImage& image, const RenderImage& snapshot, const Camera& camera,
+                      const std::filesystem::path& out, const std::string& description) {
   const std::size_t n = std::size_t(image.width) * std::size_t(image.height);
   ImageFileLayout layout;
   layout.width = image.width;
@@ -17,10 +18,14 @@ void writeShadedImage(const ShadedImage& image, const RenderImage& snapshot, con
   layout.description = description;
   try {
     if (lowerExtension(out) == "exr") {
-      layout.channels = {"R", "G", "B", "A", "Z", "N.x", "N.y", "N.z", "AO", "shadow"};
+      layout.channels = {"R", "G", "B", "A", "Z", "N.x", "N.y", "N.z", "AO", "shadow", "P.x", "P.y", "P.z"};
       layout.alphaChannel = 3;
       layout.zChannel = 4;
       layout.stored = StoredSample::Float;
+      const OrbitCamera orbit(camera, image.width, image.height);
+      const ExrCameraMatrices matrices = exrCameraMatrices(orbit);
+      layout.worldToCamera = matrices.worldToCamera;
+      layout.worldToNDC = matrices.worldToNDC;
       const std::size_t k = layout.channels.size();
       std::vector<float> pixels(n * k);
       for (std::size_t i = 0; i < n; ++i) {
@@ -31,6 +36,13 @@ void writeShadedImage(const ShadedImage& image, const RenderImage& snapshot, con
         for (int c = 0; c < 3; ++c) px[5 + c] = image.normals[i * 3 + std::size_t(c)];
         px[8] = image.occlusion[i];
         px[9] = image.shadow[i];
+        if (hit) {
+          const glm::dvec3 p = pixelWorldPosition(orbit, int(i % std::size_t(image.width)),
+                                                  int(i / std::size_t(image.width)), snapshot.depth[i]);
+          for (int c = 0; c < 3; ++c) px[10 + c] = float(p[c]);
+        } else {
+          px[10] = px[11] = px[12] = 0.0f;
+        }
       }
       writeImageFile(out, layout, pixels.data());
     } else {

@@ -26,6 +26,7 @@
 #include "flame/palette_gradient.h"
 #include "io/project_io.h"
 #include "model/settings_tables.h"
+#include "render/camera.h"
 #include "render/flame_render.h"
 #include "render/image_file.h"
 #include "render/motion_blur.h"
@@ -56,17 +57,29 @@ void writeImage(const RenderImage& image, const std::filesystem::path& out, cons
                        std::to_string(setup.job.seed);
   try {
     if (lowerExtension(out) == "exr") {
-      layout.channels = {"R", "G", "B", "A", "Z"};
+      // Z, and P: the world position each pixel's centre sees at its depth (0 where empty), plus
+      // the camera's matrices, for compositing.
+      layout.channels = {"R", "G", "B", "A", "Z", "P.x", "P.y", "P.z"};
       layout.alphaChannel = 3;
       layout.zChannel = 4;
       layout.stored = StoredSample::Float;
-      std::vector<float> pixels(n * 5);
+      const OrbitCamera camera(setup.job.camera, image.width, image.height);
+      const ExrCameraMatrices matrices = exrCameraMatrices(camera);
+      layout.worldToCamera = matrices.worldToCamera;
+      layout.worldToNDC = matrices.worldToNDC;
+      constexpr std::size_t k = 8;
+      std::vector<float> pixels(n * k);
       for (std::size_t i = 0; i < n; ++i) {
         const std::uint8_t* px = &image.rgba[i * 4];
         const bool hit = px[3] != 0;
-        for (int c = 0; c < 3; ++c) pixels[i * 5 + c] = hit ? srgbToLinear(px[c] / 255.0f) : 0.0f;
-        pixels[i * 5 + 3] = hit ? 1.0f : 0.0f;
-        pixels[i * 5 + 4] = hit ? image.depth[i] : kEmptyPixelDepth;
+        for (int c = 0; c < 3; ++c) pixels[i * k + c] = hit ? srgbToLinear(px[c] / 255.0f) : 0.0f;
+        pixels[i * k + 3] = hit ? 1.0f : 0.0f;
+        pixels[i * k + 4] = hit ? image.depth[i] : kEmptyPixelDepth;
+        if (hit) {
+          const glm::dvec3 p = pixelWorldPosition(camera, int(i % std::size_t(image.width)),
+                                                  int(i / std::size_t(image.width)), image.depth[i]);
+          for (int c = 0; c < 3; ++c) pixels[i * k + 5 + std::size_t(c)] = float(p[c]);
+        }
       }
       writeImageFile(out, layout, pixels.data());
     } else {
@@ -288,7 +301,7 @@ int runFlameRender(const std::string& file, const std::string& out, const std::v
     const FlameImage flame =
         developFlameSnapshot(image, settings, setup.project.camera, setup.job.width, setup.job.height,
                              setup.project.render.background, exr || options.transparent, job.threads);
-    writeFlameImage(flame, out, bits, exr || options.transparent);
+    writeFlameImage(flame, out, bits, exr || options.transparent, &setup.project.camera);
     printDeviceNote();
   } catch (const IoError& e) {
     throw CliError(kFailure, e.what());
@@ -335,7 +348,7 @@ int runShadedRender(const std::string& file, const std::string& out, const std::
   }
   const std::string description = "GridIFS shaded render of " + file + ", " + std::to_string(job.samples) +
                                   " samples, seed " + std::to_string(job.seed);
-  writeShadedImage(shaded, image, out, description);
+  writeShadedImage(shaded, image, setup.project.camera, out, description);
   return kSuccess;
 }
 

@@ -4,7 +4,7 @@
 // core/render/image_file.cpp, and a stale plugin from an older build is refused by its version.
 #include <stddef.h>
 
-#define GRIDIFS_IMAGE_IO_ABI_VERSION 2
+#define GRIDIFS_IMAGE_IO_ABI_VERSION 3
 
 #ifdef __cplusplus
 extern "C" {
@@ -26,6 +26,10 @@ struct GridifsImageRequest {
   int pixelsAreFloat;               // pixels hold floats (else bytes), interleaved
   const void* pixels;
   const char* description;  // ImageDescription metadata; "" for none
+  /// OpenEXR's standard camera attributes, 16 values each in Imath's row-vector order; NULL for
+  /// none. Written to EXR files only.
+  const float* worldToCamera;
+  const float* worldToNDC;
 };
 
 /// The plugin's GRIDIFS_IMAGE_IO_ABI_VERSION.

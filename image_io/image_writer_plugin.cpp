@@ -71,6 +71,8 @@ extern "C" __attribute__((visibility("default"))) int gridifs_image_io_write(con
     // EXR: an empty capDate. TIFF: a DateTime that is not a string counts as given but is not
     // written (only a string becomes the DateTime tag), so the tag is left out.
     if (ext == "exr") spec.attribute("DateTime", "");
+    if (ext == "exr" && r.worldToCamera) spec.attribute("worldToCamera", OIIO::TypeMatrix44, r.worldToCamera);
+    if (ext == "exr" && r.worldToNDC) spec.attribute("worldToNDC", OIIO::TypeMatrix44, r.worldToNDC);
     if (ext == "tif" || ext == "tiff") {
       const int noDate = 0;
       spec.attribute("DateTime", OIIO::TypeDesc::INT, &noDate);

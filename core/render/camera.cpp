@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/gtc/matrix_transform.hpp>
+#include <limits>
 
 namespace gridifs {
 namespace {
@@ -237,6 +238,38 @@ OrbitCamera::PixelRows OrbitCamera::pixelRows(int eye) const {
     rows.rowD[i] = float(d[i]);
   }
   return rows;
+}
+
+ExrCameraMatrices exrCameraMatrices(const OrbitCamera& camera) {
+  ExrCameraMatrices out;
+  // Column-vector matrices, stored transposed: Imath multiplies row vectors.
+  auto rowVectorOrder = [](const glm::dmat4& m) {
+    std::vector<float> v(16);
+    for (int row = 0; row < 4; ++row)
+      for (int col = 0; col < 4; ++col) v[std::size_t(4 * row + col)] = float(m[row][col]);  // m[column][row]
+    return v;
+  };
+  glm::dmat4 flipZ(1.0);
+  flipZ[2][2] = -1.0;  // right-handed, looking down −z → left-handed, looking down +z
+  out.worldToCamera = rowVectorOrder(flipZ * camera.view());
+  if (camera.panoramic()) return out;
+  // The pixel rows (x·w, y·w, w) of the left eye over the frame's size give NDC after the divide.
+  const OrbitCamera::PixelRows rows = camera.pixelRows(0);
+  glm::dmat4 ndc(0.0);
+  for (int c = 0; c < 4; ++c) {
+    ndc[c][0] = rows.rowX[c] / double(camera.width());
+    ndc[c][1] = rows.rowY[c] / double(camera.height());
+    ndc[c][2] = rows.rowD[c];
+    ndc[c][3] = rows.rowW[c];
+  }
+  out.worldToNDC = rowVectorOrder(ndc);
+  return out;
+}
+
+glm::dvec3 pixelWorldPosition(const OrbitCamera& camera, int x, int y, double depth) {
+  const PixelRay ray = camera.rayThrough(x + 0.5, y + 0.5);
+  if (!ray.valid) return glm::dvec3(std::numeric_limits<double>::quiet_NaN());
+  return ray.origin + ray.step * depth;
 }
 
 }  // namespace gridifs

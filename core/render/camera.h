@@ -32,6 +32,7 @@
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
+#include <vector>
 
 #include "model/project.h"
 
@@ -131,6 +132,21 @@ class OrbitCamera {
   glm::dvec3 up_{0.0, 1.0, 0.0};  // world +z in view space
   glm::dmat3 turn_[2] = {glm::dmat3(1.0), glm::dmat3(1.0)};
 };
+
+/// OpenEXR's standard camera attributes for compositing (OpenEXR's "Recommended standard
+/// optional attributes"), 16 values each in Imath's row-vector order (p' = p · M): worldToCamera
+/// maps the world to the camera's left-handed space (x right, y up, +z the viewing direction);
+/// worldToNDC maps it, after the homogeneous divide, to (0, 0) at the image's top-left corner and
+/// (1, 1) at its bottom-right one. A panoramic camera has no such matrix: worldToNDC is empty.
+/// Stereo frames carry the left eye's.
+struct ExrCameraMatrices {
+  std::vector<float> worldToCamera, worldToNDC;
+};
+ExrCameraMatrices exrCameraMatrices(const OrbitCamera& camera);
+
+/// The world position that pixel (x, y)'s centre sees at `depth` (for the EXR's P pass); NaN
+/// where the pixel sees nothing (outside a fisheye's circle).
+glm::dvec3 pixelWorldPosition(const OrbitCamera& camera, int x, int y, double depth);
 
 /// The projection's name in the file ("fisheye").
 const char* projectionName(CameraProjection projection);

@@ -113,7 +113,8 @@ void flameImageToRgba8(const FlameImage& image, std::vector<std::uint8_t>& out) 
     out[i] = std::uint8_t(std::lround(std::clamp(image.rgba[i], 0.0f, 1.0f) * 255.0f));
 }
 
-void writeFlameImage(const FlameImage& image, const std::filesystem::path& file, int bitDepth, bool withAlpha) {
+void writeFlameImage(const FlameImage& image, const std::filesystem::path& file, int bitDepth, bool withAlpha,
+                     const Camera* camera) {
   namespace fs = std::filesystem;
   const std::string ext = lowerExtension(file);
   const bool exr = ext == "exr";
@@ -130,6 +131,11 @@ void writeFlameImage(const FlameImage& image, const std::filesystem::path& file,
     throw IoError("cannot write " + file.string() + ": PNG and TIFF take 8 or 16 bits per channel");
   layout.width = image.width;
   layout.height = image.height;
+  if (exr && camera) {
+    const ExrCameraMatrices matrices = exrCameraMatrices(OrbitCamera(*camera, image.width, image.height));
+    layout.worldToCamera = matrices.worldToCamera;
+    layout.worldToNDC = matrices.worldToNDC;
+  }
   layout.channels = withAlpha ? std::vector<std::string>{"R", "G", "B", "A"} : std::vector<std::string>{"R", "G", "B"};
   if (withAlpha) layout.alphaChannel = 3;
   std::vector<float> pixels;

@@ -58,6 +58,8 @@ void flameImageToRgba8(const FlameImage& image, std::vector<std::uint8_t>& out);
 /// EXR expects. RGBA (premultiplied in memory; OIIO stores PNG unassociated) when `withAlpha`,
 /// else RGB. Atomic: a temporary file in the same folder is
 /// renamed over `file`. Throws IoError when the format is unknown or the file cannot be written.
-void writeFlameImage(const FlameImage& image, const std::filesystem::path& file, int bitDepth, bool withAlpha);
+/// An EXR carries `camera`'s matrices (render/camera.h: exrCameraMatrices) when one is given.
+void writeFlameImage(const FlameImage& image, const std::filesystem::path& file, int bitDepth, bool withAlpha,
+                     const Camera* camera = nullptr);
 
 }  // namespace gridifs

@@ -91,7 +91,9 @@ void write(const std::filesystem::path& file, const ImageFileLayout& layout, boo
                                     storedCode(layout.stored),
                                     isFloat ? 1 : 0,
                                     pixels,
-                                    layout.description.c_str()};
+                                    layout.description.c_str(),
+                                    layout.worldToCamera.size() == 16 ? layout.worldToCamera.data() : nullptr,
+                                    layout.worldToNDC.size() == 16 ? layout.worldToNDC.data() : nullptr};
   char message[1024] = {};
   if (!plugin.write(&request, message, sizeof message)) throw IoError("cannot write " + file.string() + ": " + message);
   atomic.commit();

@@ -20,6 +20,9 @@ struct ImageFileLayout {
   int alphaChannel = -1, zChannel = -1;
   StoredSample stored = StoredSample::UInt8;
   std::string description;  // the ImageDescription metadata; empty for none
+  /// OpenEXR's standard "worldToCamera" and "worldToNDC" attributes (16 values each in Imath's
+  /// row-vector order, render/camera.h: exrCameraMatrices), written to EXR files; empty: none.
+  std::vector<float> worldToCamera, worldToNDC;
 };
 
 /// Writes interleaved pixels (width · height · channels values; 8-bit or float, converted to

@@ -75,10 +75,10 @@ TEST(RenderCli, WritesPngTiffAndExrWithDepth) {
     for (std::size_t i = 0; i < image.pixels.size(); i += image.channels) lit += image.pixels[i] > 0.05f;
     EXPECT_GT(lit, 300);
     if (std::string(ext) == "exr") {
-      ASSERT_EQ(image.channels, 5);
+      ASSERT_EQ(image.channels, 8);  // R G B A Z and the world position P
       EXPECT_EQ(image.names[4], "Z");
       float minZ = 1e30f, maxZ = 0;
-      for (std::size_t i = 0; i < image.pixels.size(); i += 5)
+      for (std::size_t i = 0; i < image.pixels.size(); i += 8)
         if (image.pixels[i + 3] > 0) {
           minZ = std::min(minZ, image.pixels[i + 4]);
           maxZ = std::max(maxZ, image.pixels[i + 4]);
