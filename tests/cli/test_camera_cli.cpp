@@ -6,7 +6,10 @@
 #include <OpenImageIO/imageio.h>
 
 #include <cmath>
+#include <cstring>
+#include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "io/project_io.h"
 #include "tests/cli/image_file_read.h"
@@ -145,6 +148,105 @@ TEST(CameraCli, StereoHalvesShowTheParallax) {
     ASSERT_GT(left, 0.0);
     ASSERT_GT(right, 0.0);
     EXPECT_GT(left - right, 2.0) << "left " << left << " right " << right;
+  }
+}
+
+/// A small .usda reader for the tests: the camera's vertical and horizontal apertures, focal
+/// length and camera-to-world matrix (USD's row-vector order) at `frame`.
+struct UsdCamera {
+  double focal = 0, vertical = 0, horizontal = 0;
+  double m[4][4] = {};
+};
+
+std::string sampledValue(const std::string& text, const std::string& attribute, double frame) {
+  const std::size_t at = text.find(attribute);
+  EXPECT_NE(at, std::string::npos) << attribute;
+  if (at == std::string::npos) return "";
+  const std::size_t lineEnd = text.find('\n', at);
+  const std::string line = text.substr(at, lineEnd - at);
+  if (line.find(".timeSamples") == std::string::npos) return line.substr(line.find('=') + 1);
+  char key[32];
+  std::snprintf(key, sizeof key, "\n        %g: ", frame);
+  const std::size_t sample = text.find(key, at);
+  EXPECT_NE(sample, std::string::npos) << attribute << " at " << frame;
+  const std::size_t start = sample + std::strlen(key), end = text.find(",\n", start);
+  return text.substr(start, end - start);
+}
+
+UsdCamera readUsdCamera(const fs::path& file, double frame) {
+  const std::string text = slurp(file);
+  UsdCamera c;
+  c.focal = std::stod(sampledValue(text, "float focalLength", frame));
+  c.vertical = std::stod(sampledValue(text, "float verticalAperture", frame));
+  c.horizontal = std::stod(sampledValue(text, "float horizontalAperture", frame));
+  std::string matrix = sampledValue(text, "matrix4d xformOp:transform", frame);
+  for (char& ch : matrix)
+    if (ch == '(' || ch == ')' || ch == ',') ch = ' ';
+  std::istringstream in(matrix);
+  for (auto& row : c.m)
+    for (double& v : row) in >> v;
+  EXPECT_TRUE(bool(in)) << matrix;
+  return c;
+}
+
+/// Where the USD camera puts world point p in a width × height image (pixels, y down).
+std::array<double, 2> usdPixel(const UsdCamera& c, const std::array<double, 3>& p, int width, int height) {
+  // Camera-to-world is rotation R (rows 0-2) and translation t (row 3): p = q · R + t, so
+  // q = (p − t) · Rᵀ for the orthonormal R.
+  double d[3], q[3];
+  for (int k = 0; k < 3; ++k) d[k] = p[k] - c.m[3][k];
+  for (int r = 0; r < 3; ++r) q[r] = d[0] * c.m[r][0] + d[1] * c.m[r][1] + d[2] * c.m[r][2];
+  // Looking down −z: the image plane at the focal length.
+  const double x = c.focal * q[0] / -q[2], y = c.focal * q[1] / -q[2];
+  return {(x / c.horizontal + 0.5) * width, (0.5 - y / c.vertical) * height};
+}
+
+TEST(CameraCli, ExportedUsdCameraPutsAPointWhereTheRenderDid) {
+  ScratchDir dir("camera-usd");
+  // One function that maps everything to one point: the attractor is that point. The camera turns
+  // and rises over the frames.
+  nlohmann::json project = nlohmann::json::parse(serializeProject(test::sierpinskiTetrahedron()));
+  const std::array<double, 3> point{0.31, -0.22, 0.17};
+  project["functions"] =
+      nlohmann::json::array({{{"resolution", {2, 2, 2}},
+                              {"ops", nlohmann::json::array()},
+                              {"placement", {{"scale", {0, 0, 0}}, {"translate", {point[0], point[1], point[2]}}}}}});
+  project["camera"] = {{"yaw", 10}, {"pitch", 15}, {"distance", 3}, {"target", {0, 0, 0}}, {"fov", 40}};
+  project["render"]["depth_cue"] = 0;
+  project["animation"] = {{"fps", 10}, {"start", 0}, {"end", 1}};
+  project["tracks"] = {{"camera.yaw", {{{"t", 0}, {"v", 10}}, {{"t", 1}, {"v", 70}}}},
+                       {"camera.pitch", {{{"t", 0}, {"v", 15}}, {{"t", 1}, {"v", -25}}}},
+                       {"camera.fov", {{{"t", 0}, {"v", 40}}, {{"t", 1}, {"v", 25}}}}};
+  const fs::path file = dir.path / "point.gridifs";
+  std::ofstream(file) << project.dump(2);
+  const fs::path usda = dir.path / "camera.usda", chan = dir.path / "camera.chan";
+  auto r = runGridifs("export-camera " + quote(file.string()) + " -o " + quote(usda.string()) + " --frames 0:10");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  r = runGridifs("export-camera " + quote(file.string()) + " -o " + quote(chan.string()) + " --frames 0:10");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::string lines = slurp(chan);
+  EXPECT_EQ(std::count(lines.begin(), lines.end(), '\n'), 11) << "a line per frame";
+  const int width = 160, height = 120;
+  for (int frame : {0, 4, 10}) {
+    SCOPED_TRACE(frame);
+    const fs::path png = dir.path / "frame.png";
+    r = runGridifs("render " + quote(file.string()) + " -o " + quote(png.string()) + " --width 160 --height 120" +
+                   " --samples 20000 --threads 1 --device cpu -q --time " + std::to_string(frame / 10.0));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const ImageFile image = readImageFile(png);
+    double sumX = 0, sumY = 0, lit = 0;
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x)
+        if (image.pixels[(std::size_t(y) * width + x) * image.channels + 1] > 0.1f) {
+          sumX += x + 0.5;
+          sumY += y + 0.5;
+          lit += 1;
+        }
+    ASSERT_GE(lit, 1.0);
+    ASSERT_LE(lit, 2.0) << "one point";
+    const std::array<double, 2> expected = usdPixel(readUsdCamera(usda, frame), point, width, height);
+    EXPECT_NEAR(sumX / lit, expected[0], 1.0);
+    EXPECT_NEAR(sumY / lit, expected[1], 1.0);
   }
 }
 
