@@ -925,12 +925,40 @@ struct ZBufferPlot {
     const v4f hi = lane_math::sqrt(__builtin_shufflevector(x, x, 4, 5, 6, 7));
     out = __builtin_shufflevector(lo, hi, 0, 1, 2, 3, 4, 5, 6, 7);
   }
-  [[gnu::always_inline]] static void atan2Eight(const v8f& y, const v8f& x, v8f& out) {
-    const v4f lo =
-        lane_math::atan2(__builtin_shufflevector(y, y, 0, 1, 2, 3), __builtin_shufflevector(x, x, 0, 1, 2, 3));
-    const v4f hi =
-        lane_math::atan2(__builtin_shufflevector(y, y, 4, 5, 6, 7), __builtin_shufflevector(x, x, 4, 5, 6, 7));
-    out = __builtin_shufflevector(lo, hi, 0, 1, 2, 3, 4, 5, 6, 7);
+  /// atan2(y, x) of eight lanes at once, as model/lane_math.h's (octant folding, then its
+  /// economized series, 1.6e-8 in all), in two steps so that two of them share one division (a
+  /// division of eight floats costs as much as the whole series): atan2Reduce gives the octant
+  /// and the ratio's numerator and denominator, atan2Finish the angle from the ratio.
+  struct Atan2Parts {
+    v8f numerator, denominator;
+    v8f offset;                    // π/4 where the ratio was folded, else 0
+    v8f yMajor, xNegative, ySign;  // lane masks (all bits set) and y's sign bit
+  };
+  [[gnu::always_inline]] static void atan2Reduce(const v8f& y, const v8f& x, Atan2Parts& parts) {
+    typedef std::int32_t v8i __attribute__((vector_size(32)));
+    constexpr float kPi = 3.14159265358979323846f;
+    const v8f ax = v8f(v8i(x) & 0x7FFFFFFF), ay = v8f(v8i(y) & 0x7FFFFFFF);
+    const v8i yMajor = ay > ax;
+    const v8f mn = yMajor ? ax : ay, mx = yMajor ? ay : ax;
+    const v8i fold = mn > 0.414213562f * mx;
+    parts.numerator = mx > 0.0f ? (fold ? mn - mx : mn) : v8f{};  // atan2(0, 0) = ±0 or ±π, by the signs
+    parts.denominator = mx > 0.0f ? (fold ? mn + mx : mx) : v8f{} + 1.0f;
+    parts.offset = fold ? v8f{} + kPi / 4 : v8f{};
+    parts.yMajor = v8f(yMajor);
+    parts.xNegative = v8f(v8i(x) >> 31);
+    parts.ySign = v8f(v8i(y) & std::int32_t(0x80000000u));
+  }
+  [[gnu::always_inline]] static void atan2Finish(const v8f& u, const Atan2Parts& parts, v8f& out) {
+    typedef std::int32_t v8i __attribute__((vector_size(32)));
+    constexpr float kPi = 3.14159265358979323846f;
+    const v8f u2 = u * u, s2 = u2 * u2, s4 = s2 * s2;
+    const v8f p =
+        ((0.9999999995049061f + u2 * -0.3333331201714171f) + s2 * (0.1999849915296146f + u2 * -0.14246474643963947f)) +
+        s4 * (0.10634129575613752f + u2 * -0.06247697500165487f);
+    v8f angle = u * p + parts.offset;
+    angle = v8i(parts.yMajor) != 0 ? kPi / 2 - angle : angle;
+    angle = v8i(parts.xNegative) != 0 ? kPi - angle : angle;
+    out = v8f((v8i(angle) & 0x7FFFFFFF) | v8i(parts.ySign));
   }
   /// A panoramic camera's pixel position, depth and drawability of eight view-space points
   /// (render/camera.h: OrbitCamera::project's formulas in float). vx, vy, vz are overwritten.
@@ -957,18 +985,28 @@ struct ZBufferPlot {
     }
     sqrtEight(vx * vx + vy * vy + vz * vz, depth);
     if (pr.kind == HotCamera::Fisheye) {
+      // θ = atan2(h, −z), and the radius θ·pixelsPerRadian along (x, y)/h: one division for both.
       v8f h, theta;
       sqrtEight(vx * vx + vy * vy, h);
-      atan2Eight(h, -vz, theta);
-      const v8f k = h > 0.0f ? theta * pr.pixelsPerRadian / (h > 0.0f ? h : v8f{} + 1.0f) : v8f{};
+      Atan2Parts parts;
+      atan2Reduce(h, -vz, parts);
+      const v8f safeH = h > 0.0f ? h : v8f{} + 1.0f;
+      const v8f inverse = 1.0f / (parts.denominator * safeH);
+      atan2Finish(parts.numerator * safeH * inverse, parts, theta);
+      const v8f k = h > 0.0f ? theta * pr.pixelsPerRadian * (parts.denominator * inverse) : v8f{};
       ix = pr.centreX + k * vx;
       iy = pr.centreY - k * vy;
       drawable &= theta <= pr.halfFov;
     } else {
+      // Longitude atan2(x, −z) and latitude atan2(y, √(x² + z²)): one division for both ratios.
       v8f longitude, latitude, horizontal;
-      atan2Eight(vx, -vz, longitude);
       sqrtEight(vx * vx + vz * vz, horizontal);
-      atan2Eight(vy, horizontal, latitude);
+      Atan2Parts across, up;
+      atan2Reduce(vx, -vz, across);
+      atan2Reduce(vy, horizontal, up);
+      const v8f inverse = 1.0f / (across.denominator * up.denominator);
+      atan2Finish(across.numerator * up.denominator * inverse, across, longitude);
+      atan2Finish(up.numerator * across.denominator * inverse, up, latitude);
       ix = pr.centreX + longitude * pr.pixelsPerRadian;
       iy = pr.centreY - latitude * pr.pixelsPerRadian;
     }
