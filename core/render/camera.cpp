@@ -58,8 +58,8 @@ OrbitCamera::OrbitCamera(const Camera& camera, int width, int height)
   region_[0] = region_[1] = EyeRegion{0, 0, width, height};
   if (camera.stereo) {
     const bool sideBySide = camera.stereo->layout == StereoLayout::SideBySide;
-    const int w = sideBySide ? width / 2 : width, h = sideBySide ? height : height / 2;
-    if (w < 1 || h < 1) throw ModelError("render", "a stereo frame needs at least 1 pixel per eye");
+    // A frame one pixel across still has an eye of one pixel (the second one falls outside it).
+    const int w = sideBySide ? std::max(1, width / 2) : width, h = sideBySide ? height : std::max(1, height / 2);
     region_[0] = EyeRegion{0, 0, w, h};
     region_[1] = EyeRegion{sideBySide ? w : 0, sideBySide ? 0 : h, w, h};
     radius_ = 0.5 * camera.stereo->eye_separation;

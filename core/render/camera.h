@@ -63,7 +63,7 @@ class OrbitCamera {
  public:
   /// The frame is width × height, both eyes together in stereo. Throws ModelError when width/height
   /// < 1 or distance/fov are not usable (distance ≤ 0, fov outside (0, 179] for flat cameras or
-  /// (0, 360] for panoramic ones), or a stereo eye would have no pixels.
+  /// (0, 360] for panoramic ones).
   OrbitCamera(const Camera& camera, int width, int height);
 
   const Camera& settings() const { return camera_; }

@@ -47,9 +47,11 @@ RenderJob flameRenderJob(const RenderJob& outputJob, const FlameSettings& settin
   const int g = gutter ? usableGutter(outputJob.camera, outputJob.height, settings) : 0;
   // The same pixels per unit on a larger image: widen the (vertical) field of view; OrbitCamera's
   // orthographic extent follows the same tan(fov/2), and the width follows the aspect ratio.
-  const double halfTan =
-      std::tan(outputJob.camera.fov * M_PI / 360.0) * double(outputJob.height + 2 * g) / outputJob.height;
-  job.camera.fov = std::atan(halfTan) * 360.0 / M_PI;
+  if (g > 0) {
+    const double halfTan =
+        std::tan(outputJob.camera.fov * M_PI / 360.0) * double(outputJob.height + 2 * g) / outputJob.height;
+    job.camera.fov = std::atan(halfTan) * 360.0 / M_PI;
+  }
   // Draves & Reckase 2003, §8: supersampling = more histogram buckets for the same number of iterations.
   job.width = (outputJob.width + 2 * g) * ss;
   job.height = (outputJob.height + 2 * g) * ss;

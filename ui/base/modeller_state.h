@@ -91,6 +91,7 @@ class ModellerState {
   float timelineHeight = 0.0f;       // what the timeline under the preview took in the last frame
   bool showRenderAnimation = false;  // File > Render animation...
   bool showCombine = false;          // File > Combine...
+  bool showCamera = false;           // View > Camera: the Camera window (projection, orbit, stereo)
   bool showExplore = false;          // View > Explore (E): toggles the Explore window
   bool exploreRandom = false;        // File > New random world: Explore draws random worlds
   int renderThreads = 1;

@@ -61,6 +61,8 @@ void drawSelectionPanel(ModellerState& state, EditQueue& edits, SelectionPanelSt
 /// shading_panel.cpp: the shaded display's lights, ambient, specular, occlusion, fog and depth of
 /// field, one undo step per slider drag.
 void drawShadingPanel(ModellerState& state, EditQueue& edits);
+/// camera_panel.cpp: the preview camera's projection, orbit, field of view and stereo pair.
+void drawCameraPanel(ModellerState& state, EditQueue& edits);
 /// field_layers_panel.cpp: the volume's fractal field layers (role, strength, field parameters,
 /// the shape a field is blended with), one undo step per slider drag.
 void drawFieldLayersPanel(ModellerState& state, EditQueue& edits);

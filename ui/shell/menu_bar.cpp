@@ -131,6 +131,9 @@ float drawMenuBar(AppCommands& app) {
     s.probe.item("menu.explore");
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("Variants of the open project, random worlds and breeding, as live thumbnails");
+    if (ImGui::MenuItem("Camera", nullptr, s.showCamera)) s.showCamera = !s.showCamera;
+    s.probe.item("menu.camera");
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("The camera's projection, orbit, field of view and stereo pair");
     ImGui::Separator();
     static const char* names[] = {"Top", "Side", "Front", "User"};
     static const char* keys[] = {"1", "2", "3", "4"};

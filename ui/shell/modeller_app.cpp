@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "base/atomic_file.h"
+#include "render/camera.h"
 #include "render/image_file.h"
 #include "ui/dialogs/combine_dialog.h"
 #include "ui/dialogs/export_dialog.h"
@@ -331,6 +332,16 @@ void ModellerApp::buildUi() {
     state_.probe.window("panel.fieldlayers");
     ImGui::End();
   }
+  if (state_.showCamera) {
+    // Over the IFS view, beside the preview it changes (placed once; the artist may move it).
+    const ImVec2 previewPos = panels_.pos[std::size_t(Panel::Ifs)];
+    const float em = ImGui::GetFontSize();
+    ImGui::SetNextWindowPos(ImVec2(previewPos.x, previewPos.y), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(em * 19.0f, em * 19.0f), ImGuiCond_FirstUseEver);
+    if (ImGui::Begin("Camera", &state_.showCamera)) drawCameraPanel(state_, edits_);
+    state_.probe.window("panel.camera");
+    ImGui::End();
+  }
   drawHelpWindow(state_);
   drawMatricesWindow(state_, edits_, matricesWindow_);
   constructionTree_.draw(state_, edits_);
@@ -400,6 +411,9 @@ void ModellerApp::writeProbe(double frameMs) {
   j["explore"] = explore_.probeJson();
   j["construction"] = constructionTree_.probeJson(state_);
   const Project& project = state_.document.project();
+  j["camera"] = {{"projection", projectionName(project.camera.projection)},
+                 {"fov", project.camera.fov},
+                 {"stereo", project.camera.stereo.has_value()}};
   nlohmann::json tracks = nlohmann::json::object();
   for (const auto& [path, track] : project.tracks) {
     nlohmann::json keys = nlohmann::json::array();

@@ -44,6 +44,11 @@ void PreviewView::buildToolbar(ModellerState& state, EditQueue& edits) {
   if (ImGui::Button("Restart")) renderer_.forceRestart();
   contextHelp(state, "Start the chaos game again from scratch");
   ImGui::SameLine();
+  if (ImGui::Button("Camera")) state.showCamera = !state.showCamera;
+  state.probe.item("preview.camera");
+  contextHelp(state,
+              "The camera's projection (perspective, orthographic, fisheye dome, 360° panorama), orbit and stereo");
+  ImGui::SameLine();
   static const std::int64_t budgets[] = {1'000'000, 4'000'000, 20'000'000, 100'000'000, 1'000'000'000};
   static const char* budgetNames[] = {"1M points", "4M points", "20M points", "100M points", "1G points"};
   int current = -1;
@@ -110,6 +115,7 @@ void PreviewView::handleMouse(ModellerState& state, EditQueue& edits, bool hover
   const bool shaded = (state.previewMode == PreviewMode::Shaded || state.previewMode == PreviewMode::Volume) &&
                       !project.render.shading.lights.empty();
   if (shaded) drawLightGizmo(state, origin);
+  drawProjectionOutline(state, origin);
   if (hovered)
     state.contextHelp = shaded ? "Drag: orbit · middle/Shift+drag: pan · wheel: zoom · Alt+drag: move the key light"
                                : "Drag: orbit the preview camera · middle/Shift+drag: pan · wheel: zoom";
@@ -171,6 +177,35 @@ void PreviewView::dragCamera(EditQueue& edits, glm::dvec2 mouse) {
   } else {
     if (dragMoved_) edits.end();
     orbit_.end();
+  }
+}
+
+void PreviewView::drawProjectionOutline(ModellerState& state, ImVec2 origin) const {
+  // A fisheye's circle (a dome master's edge) and the line between stereo eyes, over the picture
+  // the renderer draws at the view's size.
+  const Camera& camera = state.document.project().camera;
+  if (camera.projection != CameraProjection::Fisheye && !camera.stereo) return;
+  const int w = std::max(1, int(std::lround(size_.x))), h = std::max(1, int(std::lround(size_.y)));
+  try {
+    const OrbitCamera orbit(camera, w, h);
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    const ImU32 colour = IM_COL32(255, 255, 255, 90);
+    for (int eye = 0; eye < orbit.eyes(); ++eye) {
+      const EyeRegion r = orbit.eyeRegion(eye);
+      if (camera.projection == CameraProjection::Fisheye) {
+        const float radius = float(orbit.pixelsPerRadian() * camera.fov * M_PI / 360.0);
+        draw->AddCircle(ImVec2(origin.x + float(r.x + 0.5 * r.width), origin.y + float(r.y + 0.5 * r.height)), radius,
+                        colour, 96, 1.0f);
+      }
+      if (eye == 1) {
+        const bool sideBySide = r.x > 0;
+        draw->AddLine(ImVec2(origin.x + float(r.x), origin.y + float(r.y)),
+                      ImVec2(origin.x + float(sideBySide ? r.x : w), origin.y + float(sideBySide ? h : r.y)), colour,
+                      1.0f);
+      }
+    }
+  } catch (const ModelError&) {
+    // An unusable camera: the preview says why.
   }
 }
 

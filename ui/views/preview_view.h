@@ -62,6 +62,7 @@ class PreviewView {
   /// Drag: orbit or pan the project camera (one undo step).
   void dragCamera(EditQueue& edits, glm::dvec2 mouse);
   /// The key light's direction as a small dial in the image's corner (Alt+drag turns it).
+  void drawProjectionOutline(ModellerState& state, ImVec2 origin) const;
   void drawLightGizmo(ModellerState& state, ImVec2 origin) const;
 
   OrbitController orbit_;   // the project camera, orbited, panned and zoomed from this view
