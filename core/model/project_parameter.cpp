@@ -168,7 +168,7 @@ class ParameterResolver {
     }
     if (key == "camera") {
       position(1);
-      return settingsObject(cameraTable(), Group::Camera, &project_.camera);
+      return camera();
     }
     if (key == "render") {
       position(2);
@@ -275,6 +275,23 @@ class ParameterResolver {
       }
     }
     return Lookup::Missing;
+  }
+
+  // "camera": its table, "ortho" (written beside it), and the optional "stereo" block.
+  Lookup camera() {
+    if (end()) return Lookup::NotANumber;
+    const std::string_view key = token();
+    const int fields = int(cameraTable().fields.size());
+    if (key == "ortho") {
+      position(fields);
+      return text();
+    }
+    if (key == "stereo" && project_.camera.stereo) {
+      position(fields + 1);
+      p_.fragile_ = true;  // gone when the stereo pair is switched off
+      return settingsObject(stereoTable(), Group::Stereo, &*project_.camera.stereo);
+    }
+    return settingField(cameraTable(), Group::Camera, &project_.camera, key);
   }
 
   // As io/settings_json reads a number by the table's words.
@@ -736,6 +753,9 @@ void* ProjectParameter::locate(Project& project) const {
       case Group::Camera:
         group = &project.camera;
         break;
+      case Group::Stereo:
+        group = &*project.camera.stereo;
+        break;
       case Group::Render:
         group = &project.render;
         break;
@@ -996,6 +1016,9 @@ std::string ProjectParameter::path() const {
     switch (group_) {
       case Group::Camera:
         group = "camera";
+        break;
+      case Group::Stereo:
+        group = "camera.stereo";
         break;
       case Group::Render:
         group = "render";

@@ -102,7 +102,7 @@ class ProjectParameter {
     Version,
   };
   /// The settings groups (model/settings_tables.h).
-  enum class Group : std::uint8_t { Camera, Render, Flame, Light, Shading, Ao, Fog, Dof, Animation, Volume };
+  enum class Group : std::uint8_t { Camera, Stereo, Render, Flame, Light, Shading, Ao, Fog, Dof, Animation, Volume };
   /// How the file reader checks the number; each has its own words.
   enum class Reader : std::uint8_t {
     Number,        // in [lo, hi]

@@ -27,6 +27,8 @@ struct Group {
 std::vector<Group> groups() {
   return {
       {"camera", &cameraTable(), [](Project& p) -> void* { return &p.camera; }},
+      {"camera.stereo", &stereoTable(),
+       [](Project& p) -> void* { return &p.camera.stereo.emplace(p.camera.stereo.value_or(StereoSettings{})); }},
       {"render", &renderSettingsTable(), [](Project& p) -> void* { return &p.render; }},
       {"render.flame", &flameSettingsTable(), [](Project& p) -> void* { return &p.render.flame; }},
       {"render.shading", &shadingSettingsTable(), [](Project& p) -> void* { return &p.render.shading; }},
@@ -115,6 +117,8 @@ TEST(SettingsTable, DefaultsAreValidAndEveryFieldIsWritten) {
   p.animation->motion_blur = 2;
   p.animation->motion_fade = 1.0;
   p.volume = VolumeSettings{};
+  p.camera.projection = CameraProjection::Fisheye;  // "projection" is written for panoramic cameras
+  p.camera.stereo = StereoSettings{};
   EXPECT_NO_THROW(validateProject(p));
   p.render.mode = DisplayMode::Shaded;  // writes render.shading
   nlohmann::json root = nlohmann::json::parse(serializeProject(p));
