@@ -29,8 +29,8 @@ glm::dmat4 cameraToWorld(const Camera& camera, int width, int height) {
 /// The vertical field of view of the flat camera that stands in for `camera`, in degrees.
 double verticalFov(const Camera& camera, int width, int height) {
   if (!camera.panoramic()) return camera.fov;
-  const double eyeAspect = OrbitCamera(camera, width, height).eyeRegion(0).width /
-                           double(OrbitCamera(camera, width, height).eyeRegion(0).height);
+  const EyeRegion eye = OrbitCamera(camera, width, height).eyeRegion(0);
+  const double eyeAspect = double(eye.width) / double(eye.height);
   // The equirectangular vertical extent, or the fisheye circle's, capped where a flat lens ends.
   const double vertical = camera.projection == CameraProjection::Equirectangular ? camera.fov / eyeAspect : camera.fov;
   return std::min(vertical, 120.0);

@@ -24,6 +24,12 @@ glm::dmat3 turnAbout(const glm::dvec3& axis, double angle) {
   return m;
 }
 
+/// How far a parallel stereo eye of `sign` (−1 left, +1 right, 0 mono) sits from the centre along
+/// view x.
+double parallelEyeShift(const Camera& camera, double sign) {
+  return camera.stereo ? 0.5 * camera.stereo->eye_separation * sign : 0.0;
+}
+
 }  // namespace
 
 const char* projectionName(CameraProjection projection) {
@@ -139,7 +145,7 @@ ProjectedPoint OrbitCamera::project(const glm::dvec3& point, int eye) const {
     return out;
   }
   glm::dvec4 v = view_ * glm::dvec4(point, 1.0);
-  const double shift = eyes_ == 2 ? 0.5 * camera_.stereo->eye_separation * eyeSign(eye) : 0.0;
+  const double shift = parallelEyeShift(camera_, eyeSign(eye));
   v.x -= shift;
   const glm::dvec4 c = projection_ * v;
   out.depth = -v.z;
@@ -185,7 +191,7 @@ PixelRay OrbitCamera::rayThrough(double x, double y) const {
     }
   } else {
     const double ndcX = (x - region.x) / region.width * 2.0 - 1.0, ndcY = 1.0 - (y - region.y) / region.height * 2.0;
-    const double shift = eyes_ == 2 ? 0.5 * camera_.stereo->eye_separation * eyeSign(eye) : 0.0;
+    const double shift = parallelEyeShift(camera_, eyeSign(eye));
     const double lensX = eyes_ == 2 ? ndcX - projection_[0][0] * shift / camera_.stereo->convergence : ndcX;
     if (camera_.orthographic()) {
       origin = glm::dvec3(lensX / projection_[0][0], ndcY / projection_[1][1], 0.0);
@@ -220,7 +226,7 @@ OrbitCamera::PixelRows OrbitCamera::pixelRows(int eye) const {
   glm::dmat4 view = view_;
   double shift = 0.0;
   if (eyes_ == 2) {
-    shift = 0.5 * camera_.stereo->eye_separation * eyeSign(eye);
+    shift = parallelEyeShift(camera_, eyeSign(eye));
     view[3][0] -= shift;
   }
   const glm::dmat4 m = projection_ * view;

@@ -17,15 +17,10 @@
 #include "render/chaos_renderer.h"
 #include "render/compiled_ifs.h"
 #include "tests/bench/canonical_scene.h"
+#include "tests/bench/process_cpu_time.h"
 
 namespace gridifs {
 namespace {
-
-double processCpuSeconds() {
-  timespec t{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-  return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
-}
 
 const std::shared_ptr<const CompiledIfs>& canonicalIfs() {
   static const auto ifs = compileIfs(canonicalScene());
