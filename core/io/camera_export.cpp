@@ -88,6 +88,13 @@ std::string cameraUsda(const std::vector<CameraSample>& samples, int width, int 
   };
   sampled("float verticalAperture", [&](const Camera& c) { return number(apertureOf(c)); });
   sampled("float horizontalAperture", [&](const Camera& c) { return number(apertureOf(c) * aspect); });
+  // A lens shift moves the film: USD's aperture offsets, in the aperture's units.
+  bool shifted = false;
+  for (const CameraSample& s : samples) shifted |= s.camera.shift_x != 0.0 || s.camera.shift_y != 0.0;
+  if (shifted) {
+    sampled("float horizontalApertureOffset", [&](const Camera& c) { return number(apertureOf(c) * c.shift_x); });
+    sampled("float verticalApertureOffset", [&](const Camera& c) { return number(apertureOf(c) * c.shift_y); });
+  }
   sampled("matrix4d xformOp:transform", [&](const Camera& c) { return usdMatrix(cameraToWorld(c, width, height)); });
   out += "    uniform token[] xformOpOrder = [\"xformOp:transform\"]\n}\n";
   return out;

@@ -43,6 +43,12 @@ struct Camera {
   double fov = 35.0;
   CameraProjection projection = CameraProjection::Perspective;
   std::optional<StereoSettings> stereo;
+  /// Degrees the camera turns about its viewing axis, counter-clockwise as the camera sees it
+  /// (the picture turns clockwise).
+  double roll = 0.0;
+  /// Lens shift of a flat camera, in frame heights: the picture's centre moves right (x) and up
+  /// (y) without turning the camera (an off-axis view, as a view camera's rising front).
+  double shift_x = 0.0, shift_y = 0.0;
   bool orthographic() const { return projection == CameraProjection::Orthographic; }
   /// Fisheye and equirectangular: the depth of a point is its distance from the eye, not its
   /// distance along the view axis, and straight lines do not stay straight.

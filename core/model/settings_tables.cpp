@@ -69,6 +69,13 @@ void projectionRule(const void* group, const std::string& path) {
     fail(path, "an orthographic camera has no stereo parallax; use a perspective, fisheye or equirectangular one");
 }
 
+/// A panoramic image has no flat picture plane to slide.
+void shiftRule(const void* group, const std::string& path) {
+  const Camera& c = *static_cast<const Camera*>(group);
+  if (c.panoramic() && (c.shift_x != 0.0 || c.shift_y != 0.0))
+    fail(path, "a lens shift needs a perspective or orthographic camera (fisheye and equirectangular have none)");
+}
+
 }  // namespace
 
 const SettingTableOf<Camera>& cameraTable() {
@@ -119,6 +126,35 @@ const SettingTableOf<Camera>& cameraTable() {
                                     .choices = &kProjections,
                                     .omitDefault = true,
                                     .rule = projectionRule}),
+      setting<&Camera::roll>({.key = "roll",
+                              .label = "Roll",
+                              .tooltip = "The camera's turn about its viewing axis (the picture turns the other way)",
+                              .min = -1e6,
+                              .max = 1e6,
+                              .sliderMin = -180.0,
+                              .sliderMax = 180.0,
+                              .format = "roll %.1f°",
+                              .omitDefault = true}),
+      setting<&Camera::shift_x>({.key = "shift_x",
+                                 .label = "Shift x",
+                                 .tooltip = "Slides the picture right, in frame heights, without turning the camera",
+                                 .min = -100.0,
+                                 .max = 100.0,
+                                 .sliderMin = -1.0,
+                                 .sliderMax = 1.0,
+                                 .format = "shift x %.3f",
+                                 .omitDefault = true,
+                                 .rule = shiftRule}),
+      setting<&Camera::shift_y>({.key = "shift_y",
+                                 .label = "Shift y",
+                                 .tooltip = "Slides the picture up, in frame heights, without turning the camera",
+                                 .min = -100.0,
+                                 .max = 100.0,
+                                 .sliderMin = -1.0,
+                                 .sliderMax = 1.0,
+                                 .format = "shift y %.3f",
+                                 .omitDefault = true,
+                                 .rule = shiftRule}),
   }}};
   return table;
 }

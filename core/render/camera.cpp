@@ -10,7 +10,43 @@ namespace {
 
 double radians(double degrees) { return degrees * (M_PI / 180.0); }
 
-double clampedPitch(double pitch) { return std::clamp(pitch, -89.9, 89.9); }
+double clampedPitch(double pitch) { return std::clamp(pitch, -90.0, 90.0); }
+
+/// World → view for an eye at `eye` turned by yaw and pitch (degrees), +z up. Within ±89.9° of
+/// pitch it is OpenGL's look-at; steeper it is the look-at's limit, whose right axis
+/// (−sin yaw, cos yaw, 0) does not depend on the pitch, so a view straight up or down is exact
+/// and yaw turns it. Roll then turns the camera about its viewing axis.
+glm::dmat4 orbitView(const Camera& camera, const glm::dvec3& eye) {
+  glm::dmat4 view;
+  if (std::abs(camera.pitch) <= 89.9) {
+    view = glm::lookAt(eye, camera.target, glm::dvec3(0.0, 0.0, 1.0));
+  } else {
+    const double yaw = radians(camera.yaw), pitch = radians(clampedPitch(camera.pitch));
+    const glm::dvec3 back(std::cos(pitch) * std::cos(yaw), std::cos(pitch) * std::sin(yaw), std::sin(pitch));
+    const glm::dvec3 right(-std::sin(yaw), std::cos(yaw), 0.0), up = glm::cross(back, right);
+    view = glm::dmat4(1.0);
+    for (int c = 0; c < 3; ++c) {  // rows: right, up, back (glm's m[column][row])
+      view[c][0] = right[c];
+      view[c][1] = up[c];
+      view[c][2] = back[c];
+    }
+    view[3] = glm::dvec4(-glm::dot(right, eye), -glm::dot(up, eye), -glm::dot(back, eye), 1.0);
+  }
+  if (camera.roll == 0.0) return view;
+  // The camera's axes turn counter-clockwise by roll, so view coordinates turn by −roll.
+  const double c = std::cos(radians(camera.roll)), s = std::sin(radians(camera.roll));
+  glm::dmat4 turn(1.0);
+  turn[0][0] = c;
+  turn[1][0] = s;
+  turn[0][1] = -s;
+  turn[1][1] = c;
+  return turn * view;
+}
+
+/// The lens shift as an offset of normalized device coordinates for an eye `eyeAspect` wide.
+glm::dvec2 lensShiftNdc(const Camera& camera, double eyeAspect) {
+  return {-2.0 * camera.shift_x / eyeAspect, -2.0 * camera.shift_y};
+}
 
 /// The rotation by `angle` about the unit axis `axis` (Rodrigues).
 glm::dmat3 turnAbout(const glm::dvec3& axis, double angle) {
@@ -71,7 +107,7 @@ OrbitCamera::OrbitCamera(const Camera& camera, int width, int height)
     radius_ = 0.5 * camera.stereo->eye_separation;
   }
   eye_ = orbitEye(camera);
-  view_ = glm::lookAt(eye_, camera.target, glm::dvec3(0.0, 0.0, 1.0));
+  view_ = orbitView(camera, eye_);
   up_ = glm::dvec3(view_ * glm::dvec4(0.0, 0.0, 1.0, 0.0));
   // X lies within √3 of the origin; keep it (and a margin for final functions) inside the
   // GL depth range. The CPU renderer only culls at the near plane.
@@ -101,6 +137,12 @@ OrbitCamera::OrbitCamera(const Camera& camera, int width, int height)
     projection_ = glm::ortho(-halfW, halfW, -halfH, halfH, near_, far_);
   } else {
     projection_ = glm::perspective(fovy, eyeAspect, near_, far_);
+  }
+  // A lens shift slides the picture: clip x and y gain the offset times clip w.
+  const glm::dvec2 offset = lensShiftNdc(camera, eyeAspect);
+  for (int c = 0; c < 4; ++c) {
+    projection_[c][0] += offset.x * projection_[c][3];
+    projection_[c][1] += offset.y * projection_[c][3];
   }
 }
 
@@ -190,7 +232,9 @@ PixelRay OrbitCamera::rayThrough(double x, double y) const {
       if (length > 1e-12) origin = eyeSign(eye) * radius_ * glm::cross(horizontal, up_) / length;
     }
   } else {
-    const double ndcX = (x - region.x) / region.width * 2.0 - 1.0, ndcY = 1.0 - (y - region.y) / region.height * 2.0;
+    const glm::dvec2 offset = lensShiftNdc(camera_, double(region.width) / double(region.height));
+    const double ndcX = (x - region.x) / region.width * 2.0 - 1.0 - offset.x,
+                 ndcY = 1.0 - (y - region.y) / region.height * 2.0 - offset.y;
     const double shift = parallelEyeShift(camera_, eyeSign(eye));
     const double lensX = eyes_ == 2 ? ndcX - projection_[0][0] * shift / camera_.stereo->convergence : ndcX;
     if (camera_.orthographic()) {

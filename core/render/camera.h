@@ -5,8 +5,12 @@
 // Conventions (the paper leaves them open; these are the choices):
 // - World space is right-handed with **+z up**. X = [-1, 1]^3 is the IFS space.
 // - yaw (degrees) turns the eye about +z, measured from +x towards +y;
-//   pitch (degrees) lifts the eye above the xy plane (positive: looking down), clamped to ±89.9°.
+//   pitch (degrees) lifts the eye above the xy plane (positive: looking down), clamped to ±90°
+//   (straight down or up, the view's right axis is (−sin yaw, cos yaw, 0), so yaw turns it).
 //   eye = target + distance · (cos pitch · cos yaw, cos pitch · sin yaw, sin pitch).
+// - roll (degrees) turns the camera about its viewing axis, counter-clockwise as it sees;
+//   shift_x and shift_y (frame heights) slide a flat camera's picture right and up without
+//   turning it (an off-axis frustum; flam3's `center` under a perspective camera).
 // - view() is an OpenGL-style look-at (the camera looks down -z of view space, +y of view space
 //   is the projection of world +z). projection() is OpenGL-style (clip z in [-w, w]) so an
 //   OpenGL view can use view() and projection() directly.

@@ -51,6 +51,10 @@ RenderJob flameRenderJob(const RenderJob& outputJob, const FlameSettings& settin
     const double halfTan =
         std::tan(outputJob.camera.fov * M_PI / 360.0) * double(outputJob.height + 2 * g) / outputJob.height;
     job.camera.fov = std::atan(halfTan) * 360.0 / M_PI;
+    // The shift is in frame heights: the same slide is a smaller part of the taller frame.
+    const double taller = double(outputJob.height + 2 * g) / outputJob.height;
+    job.camera.shift_x /= taller;
+    job.camera.shift_y /= taller;
   }
   // Draves & Reckase 2003, §8: supersampling = more histogram buckets for the same number of iterations.
   job.width = (outputJob.width + 2 * g) * ss;

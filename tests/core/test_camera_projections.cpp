@@ -97,6 +97,15 @@ std::vector<Camera> cameras() {
                                                                 : 50.0;
       if (stereo) c.stereo = StereoSettings{0.3, stereo == 1 ? StereoLayout::TopBottom : StereoLayout::SideBySide, 2.5};
       out.push_back(c);
+      // Rolled; flat ones shifted too; one looking straight down.
+      c.roll = 33.0;
+      if (!c.panoramic()) {
+        c.shift_x = 0.21;
+        c.shift_y = -0.13;
+      }
+      out.push_back(c);
+      c.pitch = 90.0;
+      out.push_back(c);
     }
   return out;
 }
@@ -203,6 +212,49 @@ std::string refusal(const std::string& cameraJson) {
     return e.what();
   }
   return "";
+}
+
+TEST(CameraProjections, RollTurnsThePictureAndShiftSlidesIt) {
+  // A point's pixel relative to the frame's centre: roll turns it clockwise by roll about the
+  // centre (the camera turns counter-clockwise); a shift moves every pixel by −shift · height
+  // (right and up are positive, image y goes down), for orthographic and perspective cameras.
+  for (CameraProjection projection : {CameraProjection::Perspective, CameraProjection::Orthographic}) {
+    Camera plain = alongX(projection, 50.0);
+    Camera turned = plain, slid = plain;
+    turned.roll = 30.0;
+    slid.shift_x = 0.25;
+    slid.shift_y = 0.1;
+    const OrbitCamera a(plain, 400, 300), b(turned, 400, 300), c(slid, 400, 300);
+    for (const glm::dvec3 point :
+         {glm::dvec3(0.5, 0.7, 0.2), glm::dvec3(-1.0, -0.3, 0.6), glm::dvec3(0.0, 0.4, -0.5)}) {
+      const ProjectedPoint p = a.project(point), q = b.project(point), s = c.project(point);
+      const double dx = p.x - 200.0, dy = p.y - 150.0, t = 30.0 * kDegree;
+      // Clockwise on the screen (y down) is counter-clockwise in (x, y-down) coordinates' sense of −t.
+      EXPECT_NEAR(q.x - 200.0, std::cos(t) * dx - std::sin(t) * dy, 1e-9) << projectionName(projection);
+      EXPECT_NEAR(q.y - 150.0, std::sin(t) * dx + std::cos(t) * dy, 1e-9) << projectionName(projection);
+      EXPECT_NEAR(s.x, p.x - 0.25 * 300.0, 1e-9) << projectionName(projection);
+      EXPECT_NEAR(s.y, p.y + 0.1 * 300.0, 1e-9) << projectionName(projection);
+      EXPECT_NEAR(q.depth, p.depth, 1e-12);
+      EXPECT_NEAR(s.depth, p.depth, 1e-12);
+    }
+  }
+  // Straight down is exact, and yaw turns the picture there.
+  Camera down = alongX(CameraProjection::Orthographic, 50.0);
+  down.pitch = 90.0;
+  down.yaw = 0.0;
+  const OrbitCamera top(down, 300, 300);
+  const ProjectedPoint east = top.project({0.0, 1.0, 0.0}), north = top.project({-1.0, 0.0, 0.0});
+  EXPECT_NEAR(east.x - 150.0, 150.0 / 4.0 / std::tan(25.0 * kDegree), 1e-9);  // +y is to the right at yaw 0
+  EXPECT_NEAR(east.y, 150.0, 1e-9);
+  EXPECT_NEAR(north.y - 150.0, -(150.0 / 4.0 / std::tan(25.0 * kDegree)), 1e-9);
+  EXPECT_NEAR(north.x, 150.0, 1e-9);
+  EXPECT_NE(refusal(R"({"projection": "fisheye", "fov": 180, "shift_x": 0.1})").find("lens shift needs"),
+            std::string::npos);
+  const Project shifted = withCamera(R"({"roll": 12, "shift_x": 0.1, "shift_y": -0.2})");
+  EXPECT_EQ(shifted.camera.roll, 12.0);
+  EXPECT_EQ(parseProject(serializeProject(shifted)).camera, shifted.camera);
+  // A camera without them saves without them.
+  EXPECT_EQ(serializeProject(withCamera("{}")).find("roll"), std::string::npos);
 }
 
 TEST(CameraProjections, TheFileNamesProjectionsAndRefusesUnusableOnes) {

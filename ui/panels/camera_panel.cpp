@@ -48,6 +48,22 @@ void cameraSlider(ModellerState& state, EditQueue& edits, const Camera& camera, 
   ImGui::PopID();
 }
 
+/// A slider of the camera's number `key` without a key button: roll and the lens shift are
+/// written only when set, so they have no track until they differ from 0.
+void cameraPlainSlider(ModellerState& state, EditQueue& edits, const Camera& camera, const char* key) {
+  const SettingSpec& spec = cameraTable().field(key);
+  double value = spec.number(&camera);
+  ImGui::PushID(key);
+  ImGui::SetNextItemWidth(-ImGui::GetFontSize() * 0.5f);
+  const bool changed = settingSliderWidget("##value", spec, value, spec.sliderMin, spec.sliderMax);
+  state.probe.frame(std::string("camera.") + key);
+  Camera next = camera;
+  spec.setNumber(&next, value);
+  gestureItem(edits, spec.label, changed, SetCamera{next});
+  contextHelp(state, spec.tooltip);
+  ImGui::PopID();
+}
+
 }  // namespace
 
 void drawCameraPanel(ModellerState& state, EditQueue& edits) {
@@ -64,7 +80,8 @@ void drawCameraPanel(ModellerState& state, EditQueue& edits) {
     if (next.panoramic() && !camera.panoramic())
       next.fov = next.projection == CameraProjection::Fisheye ? 180.0 : 360.0;
     if (!next.panoramic()) next.fov = std::min(next.fov, kMaxFlatFov);
-    if (next.orthographic()) next.stereo.reset();  // no parallax without perspective
+    if (next.orthographic()) next.stereo.reset();             // no parallax without perspective
+    if (next.panoramic()) next.shift_x = next.shift_y = 0.0;  // no flat picture to slide
     edits.commit(std::string("Projection: ") + projectionName(next.projection), SetCamera{next});
   }
 
@@ -72,6 +89,11 @@ void drawCameraPanel(ModellerState& state, EditQueue& edits) {
   cameraSlider(state, edits, camera, "yaw", -180.0, 180.0);
   cameraSlider(state, edits, camera, "pitch", -90.0, 90.0);
   cameraSlider(state, edits, camera, "distance", 0.05, 50.0);
+  cameraPlainSlider(state, edits, camera, "roll");
+  if (!camera.panoramic()) {
+    cameraPlainSlider(state, edits, camera, "shift_x");
+    cameraPlainSlider(state, edits, camera, "shift_y");
+  }
 
   sectionTitle("Stereo");
   bool stereo = camera.stereo.has_value();

@@ -337,7 +337,7 @@ void ModellerApp::buildUi() {
     const ImVec2 previewPos = panels_.pos[std::size_t(Panel::Ifs)];
     const float em = ImGui::GetFontSize();
     ImGui::SetNextWindowPos(ImVec2(previewPos.x, previewPos.y), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(em * 19.0f, em * 19.0f), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(em * 19.0f, em * 25.0f), ImGuiCond_FirstUseEver);
     if (ImGui::Begin("Camera", &state_.showCamera)) drawCameraPanel(state_, edits_);
     state_.probe.window("panel.camera");
     ImGui::End();
