@@ -2,10 +2,12 @@
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <sstream>
 
 #include "flame/palette.h"
 #include "flame/palette_gradient.h"
+#include "io/flame_camera.h"
 #include "io/flame_import.h"
 #include "model/stack_evaluator.h"
 
@@ -111,13 +113,24 @@ FlameExport exportFlame(const Project& project, const std::filesystem::path& pro
   if (!native && !(cam.orthographic() && cam.pitch == 90.0))
     out.warnings.push_back(
         "the camera is not an orthographic view from above; the flame frames its target and extent seen from above");
-  if (native && !(cam.orthographic() && cam.pitch == -90.0))
-    out.warnings.push_back(
-        "the camera is not an orthographic view of the plane from below; the flame frames its target and extent");
   const double halfH = cam.distance * std::tan(cam.fov * 3.14159265358979323846 / 360.0);
   const double ppu = r.height / (2.0 * halfH) * frame.scale;
-  const FlamePoint center = native ? FlamePoint{cam.target.x, cam.target.y} : frame.fromX({cam.target.x, cam.target.y});
+  FlamePoint center = native ? FlamePoint{cam.target.x, cam.target.y} : frame.fromX({cam.target.x, cam.target.y});
   double rotate = native ? std::remainder(-90.0 - cam.yaw, 360.0) : 0.0;
+  // A native project's camera other than the flat view from below is written as the flame's 3D
+  // camera (io/flame_camera.h); a perspective eye off the flame's z axis moves the genome.
+  std::optional<FlameCameraExport> camera3D;
+  const bool flatView =
+      cam.orthographic() && cam.pitch == -90.0 && cam.roll == 0.0 && cam.shift_x == 0.0 && cam.shift_y == 0.0;
+  if (native && !flatView) {
+    try {
+      camera3D = flameCameraFromProject(cam, r.height);
+      center = {camera3D->camera.centerX, camera3D->camera.centerY};
+      rotate = camera3D->camera.rotate;
+    } catch (const FlameError& e) {
+      out.warnings.push_back(std::string(e.what()) + "; the flame frames the camera's target from below");
+    }
+  }
   if (rotate == 0.0) rotate = 0.0;  // no "-0"
   const FlameSettings& fl = r.flame;
   std::ostringstream x;
@@ -131,6 +144,12 @@ FlameExport exportFlame(const Project& project, const std::filesystem::path& pro
     << num(fl.vibrancy) << "\" highlight_power=\"" << num(fl.highlight_power) << "\" estimator_radius=\""
     << num(fl.estimator_radius) << "\" estimator_minimum=\"" << num(fl.estimator_minimum) << "\" estimator_curve=\""
     << num(fl.estimator_curve) << "\" palette_mode=\"linear\" interpolation_type=\"linear\"";
+  if (camera3D) {
+    const FlameCamera& f = camera3D->camera;
+    // Apophysis 7X's and Fractorium's name for the perspective; JWildfire reads both.
+    x << " cam_pitch=\"" << num(f.pitch) << "\" cam_yaw=\"" << num(f.yaw) << "\" cam_perspective=\""
+      << num(f.perspective) << "\" cam_zpos=\"" << num(f.zpos) << "\"";
+  }
   if (fl.palette_keys.empty() && fl.palette.rfind("flam3:", 0) == 0 &&
       fl.palette.find_first_not_of("0123456789", 6) == std::string::npos)
     x << " palette=\"" << fl.palette.substr(6) << "\"";
@@ -144,6 +163,28 @@ FlameExport exportFlame(const Project& project, const std::filesystem::path& pro
   std::vector<std::size_t> kept;
   for (std::size_t i = 0; i < project.functions.size(); ++i)
     if (!project.functions[i].muted) kept.push_back(i);
+  // The genome moved by (mx, my): every map becomes T∘f∘T⁻¹, its pre-affine's translation taking
+  // −A·t and its post map +t. Variations that read the pre-affine's translation see another one.
+  auto moved = [&](const Function& fn, FlameAffine pre, const std::string& label) {
+    const double mx = camera3D->moveX, my = camera3D->moveY;
+    pre.c -= pre.a * mx + pre.b * my;
+    pre.f -= pre.d * mx + pre.e * my;
+    FlameAffine post;
+    if (fn.post) {
+      const auto m = fn.post->affine();
+      post = FlameAffine{m[0][0], m[0][1], m[0][3], m[1][0], m[1][1], m[1][3]};
+    }
+    post.c += mx;
+    post.f += my;
+    for (const auto& [name, weight] : fn.variations)
+      if (const FlameVariation* v = findFlameVariation(name); v && v->dependent)
+        out.warnings.push_back(label + "'s " + name +
+                               " reads the pre-affine's translation, which moving the genome under the flame's "
+                               "camera changes");
+    return "color=\"" + num(fn.palette_index) + "\" color_speed=\"" + num(fn.color_speed) + "\" " +
+           variationAttributes(fn, label, out.warnings) + " coefs=\"" + coefsText(pre) + "\" post=\"" +
+           coefsText(post) + "\" name=\"" + xmlEscape(fn.name) + "\"";
+  };
   auto xformAttributes = [&](const Function& fn, const std::string& path, const std::string& label) {
     const auto grid = evaluateFunctionAt(fn, path, project.time);
     double error = 0.0;
@@ -156,6 +197,7 @@ FlameExport exportFlame(const Project& project, const std::filesystem::path& pro
                              "(largest node error " +
                              buffer + ")");
     }
+    if (native && camera3D && (camera3D->moveX != 0.0 || camera3D->moveY != 0.0)) return moved(fn, fit, label);
     if (native)
       return "color=\"" + num(fn.palette_index) + "\" color_speed=\"" + num(fn.color_speed) + "\" " +
              variationAttributes(fn, label, out.warnings) + " coefs=\"" + coefsText(fit) + "\"" + postAttribute(fn) +

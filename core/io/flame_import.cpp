@@ -7,6 +7,7 @@
 #include <random>
 #include <set>
 
+#include "io/flame_camera.h"
 #include "io/project_io.h"
 #include "model/stack_evaluator.h"
 #include "model/transition_matrix.h"
@@ -217,20 +218,9 @@ Function sampleXform(const FlameXform& x, const FlameFrame& frame, int resolutio
 
 }  // namespace
 
-namespace {
-
-/// The rows of the flame camera's turn (JWildfire, Fractorium and Apophysis 7X share it): yaw
-/// about z (the files store it with the opposite sign), then pitch about the turned x axis.
-std::array<std::array<double, 3>, 3> cameraRows(double pitch, double yaw) {
-  const double cy = std::cos(-yaw), sy = std::sin(-yaw), cp = std::cos(pitch), sp = std::sin(pitch);
-  return {{{cy, -sy, 0.0}, {cp * sy, cp * cy, -sp}, {sp * sy, sp * cy, cp}}};
-}
-
-}  // namespace
-
 FlamePoint FlameFrame::toCamera(FlamePoint p) const {
   if (!threeD) return p;
-  const auto m = cameraRows(pitch, yaw);
+  const auto m = flameCameraRows(pitch, yaw);
   const double v[3] = {p.x, p.y, p.z - zpos};
   FlamePoint c;
   c.x = m[0][0] * v[0] + m[0][1] * v[1] + m[0][2] * v[2];
@@ -241,7 +231,7 @@ FlamePoint FlameFrame::toCamera(FlamePoint p) const {
 
 FlamePoint FlameFrame::fromCamera(FlamePoint c) const {
   if (!threeD) return c;
-  const auto m = cameraRows(pitch, yaw);  // orthonormal: the inverse is the transpose
+  const auto m = flameCameraRows(pitch, yaw);  // orthonormal: the inverse is the transpose
   return {m[0][0] * c.x + m[1][0] * c.y + m[2][0] * c.z, m[0][1] * c.x + m[1][1] * c.y + m[2][1] * c.z,
           m[0][2] * c.x + m[1][2] * c.y + m[2][2] * c.z + zpos};
 }
@@ -318,11 +308,33 @@ double flameSamplingError(const Function& function, const FlameXform& map, const
 
 namespace {
 
-/// The camera of a natively imported genome: X holds the flame's own plane, so an orthographic
-/// camera looks at z = 0 from below (pitch -90°), where x runs right and y down as in flam3's
-/// image; yaw -90° - rotate turns the view as flam3's `rotate` does (points plotted at
-/// R(rotate)·(p - centre)). flam3 counts density per unit of its plane, which is X's unit here.
+/// The camera of a natively imported genome: X holds the flame's own plane. A flat genome's
+/// orthographic camera looks at z = 0 from below (pitch -90°), where x runs right and y down as in
+/// flam3's image; yaw -90° - rotate turns the view as flam3's `rotate` does (points plotted at
+/// R(rotate)·(p - centre)). A 3D camera (pitch, yaw, perspective) becomes the project camera that
+/// sees the same picture (io/flame_camera.h). flam3 counts density per unit of its plane, which
+/// is X's unit here.
 void frameNatively(const FlameGenome& genome, Camera& cam, FlameSettings& flame) {
+  flame.density_unit = 1.0;
+  FlameCamera f;
+  f.centerX = genome.centerX;
+  f.centerY = genome.centerY;
+  f.pixelsPerUnit = genome.pixelsPerUnit();
+  f.rotate = genome.rotate;
+  f.pitch = genome.camPitch;
+  f.yaw = genome.camYaw;
+  f.perspective = genome.camPerspective;
+  f.zpos = genome.camZpos;
+  if (f.threeD()) {
+    // How far the attractor reaches from the camera's pivot, for an orthographic eye to stand beyond.
+    const auto e = attractorExtent(genome, FlameFrame{});
+    double reach = 0.0;
+    for (double x : {e[0], e[1]})
+      for (double y : {e[2], e[3]})
+        for (double z : {e[4], e[5]}) reach = std::max(reach, std::hypot(x, y, z - f.zpos));
+    cam = cameraFromFlame(f, genome.height, reach);
+    return;
+  }
   cam.projection = CameraProjection::Orthographic;
   cam.pitch = -90.0;
   cam.yaw = -90.0 - genome.rotate;
@@ -332,12 +344,57 @@ void frameNatively(const FlameGenome& genome, Camera& cam, FlameSettings& flame)
   cam.distance = 2.0 * halfH;
   if (!(cam.distance >= 1e-3 && cam.distance <= 1e4))
     throw FlameError("the genome's view is too small or too large to frame");
-  flame.density_unit = 1.0;
+}
+
+/// The camera of a sampled import: the frame's view of X.
+void frameSampled(const FlameGenome& genome, FlameImport& out, Camera& cam) {
+  // The view: a camera looking down −z (image x = X's x, image up = X's +y).
+  cam.projection = CameraProjection::Orthographic;
+  cam.yaw = -90.0;
+  cam.pitch = 90.0;
+  cam.target = Vec3(0.0);
+  const double halfH = 0.5 * genome.height / genome.pixelsPerUnit() * out.frame.scale;
+  cam.fov = 2.0 * std::atan(0.5) * 180.0 / kPi;  // 53.13°: halfH = distance / 2
+  cam.distance = 2.0 * halfH;
+  if (genome.threeD) {
+    // Level with the frame's horizon, looking along +y (image x = X's x, image up = X's +z):
+    // exactly the flame camera's view, and the orbit camera turns about the picture's up axis.
+    cam.pitch = 0.0;
+    if (genome.camPerspective > 0.0) {
+      // The flame's eye sits on the camera's axis at 1 / perspective in front of the plane
+      // c_z = 0, which it shows at the view's scale (zr = 1 − perspective · c_z).
+      cam.projection = CameraProjection::Perspective;
+      cam.distance = out.frame.scale / genome.camPerspective;
+      cam.target = Vec3(0.0, out.frame.scale * out.frame.zCenter, 0.0);
+      // The eye looks at the flame's plane z = 0; an attractor thousands of view sizes away from
+      // that plane in depth has no view a project camera can hold.
+      if (!(std::fabs(cam.target.y) <= 1e4))
+        throw FlameError("the attractor lies too far in front of or behind the flame's camera plane to frame");
+      if (genome.centerX != 0.0 || genome.centerY != 0.0)
+        out.warnings.push_back(
+            "the flame's perspective eye is off the view's centre; GridIFS's camera looks straight at the centre, "
+            "so parallax differs slightly");
+      if (cam.distance - cam.target.y < 1.0)
+        out.warnings.push_back("the flame's eye is inside the attractor's domain; points behind it are not drawn");
+    } else {
+      if (genome.camPerspective < 0.0)
+        out.warnings.push_back("a negative cam_perspective is not supported; the view is orthographic");
+      cam.distance = std::max(cam.distance, 4.0);  // the eye above all of X
+    }
+    cam.fov = 2.0 * std::atan(halfH / cam.distance) * 180.0 / kPi;
+  }
+  if (!(cam.distance >= 1e-3 && cam.distance <= 1e4) || !(cam.fov >= 1.0 && cam.fov <= 170.0))
+    throw FlameError("the genome's view is too small or too large to frame");
 }
 
 }  // namespace
 
-bool isNativeGenome(const FlameGenome& genome) { return !genome.threeD && !genome.frameHint; }
+bool isNativeGenome(const FlameGenome& genome) {
+  if (genome.frameHint) return false;
+  for (const FlameXform& x : genome.xforms)
+    if (x.isThreeD()) return false;
+  return !(genome.finalXform && genome.finalXform->isThreeD());
+}
 
 FlameImport importFlameGenome(const FlameGenome& genome, const FlameImportOptions& options) {
   if (options.resolution < 2 || options.resolution > limits::kMaxResolution)
@@ -380,8 +437,9 @@ FlameImport importFlameGenome(const FlameGenome& genome, const FlameImportOption
     out.palette = palette;
   }
 
-  // 2D genomes keep their variations natively, in the flame's own coordinates; 3D genomes (their
-  // camera turns the space) and GridIFS's own grid exports (gridifs_frame) are sampled onto grids.
+  // Planar genomes keep their variations natively, in the flame's own coordinates, whatever their
+  // camera; genomes whose xforms leave the plane (z variations, yz or zx coefficients) and
+  // GridIFS's own grid exports (gridifs_frame) are sampled onto grids.
   std::set<std::string> dropped;
   auto convert = [&](const FlameXform& x, const std::string& name) {
     if (native) return nativeXform(x, name);
@@ -431,44 +489,7 @@ FlameImport importFlameGenome(const FlameGenome& genome, const FlameImportOption
     }
   }
 
-  // The view: a camera looking down −z (image x = X's x, image up = X's +y).
-  Camera& cam = p.camera;
-  cam.projection = CameraProjection::Orthographic;
-  cam.yaw = -90.0;
-  cam.pitch = 90.0;
-  cam.target = Vec3(0.0);
-  const double halfH = 0.5 * genome.height / genome.pixelsPerUnit() * out.frame.scale;
-  cam.fov = 2.0 * std::atan(0.5) * 180.0 / kPi;  // 53.13°: halfH = distance / 2
-  cam.distance = 2.0 * halfH;
-  if (genome.threeD) {
-    // Level with the frame's horizon, looking along +y (image x = X's x, image up = X's +z):
-    // exactly the flame camera's view, and the orbit camera turns about the picture's up axis.
-    cam.pitch = 0.0;
-    if (genome.camPerspective > 0.0) {
-      // The flame's eye sits on the camera's axis at 1 / perspective in front of the plane
-      // c_z = 0, which it shows at the view's scale (zr = 1 − perspective · c_z).
-      cam.projection = CameraProjection::Perspective;
-      cam.distance = out.frame.scale / genome.camPerspective;
-      cam.target = Vec3(0.0, out.frame.scale * out.frame.zCenter, 0.0);
-      // The eye looks at the flame's plane z = 0; an attractor thousands of view sizes away from
-      // that plane in depth has no view a project camera can hold.
-      if (!(std::fabs(cam.target.y) <= 1e4))
-        throw FlameError("the attractor lies too far in front of or behind the flame's camera plane to frame");
-      if (genome.centerX != 0.0 || genome.centerY != 0.0)
-        out.warnings.push_back(
-            "the flame's perspective eye is off the view's centre; GridIFS's camera looks straight at the centre, "
-            "so parallax differs slightly");
-      if (cam.distance - cam.target.y < 1.0)
-        out.warnings.push_back("the flame's eye is inside the attractor's domain; points behind it are not drawn");
-    } else {
-      if (genome.camPerspective < 0.0)
-        out.warnings.push_back("a negative cam_perspective is not supported; the view is orthographic");
-      cam.distance = std::max(cam.distance, 4.0);  // the eye above all of X
-    }
-    cam.fov = 2.0 * std::atan(halfH / cam.distance) * 180.0 / kPi;
-  }
-  if (!(cam.distance >= 1e-3 && cam.distance <= 1e4) || !(cam.fov >= 1.0 && cam.fov <= 170.0))
-    throw FlameError("the genome's view is too small or too large to frame");
+  if (!native) frameSampled(genome, out, p.camera);
 
   RenderSettings& r = p.render;
   r.width = genome.width;

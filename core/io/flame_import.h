@@ -60,11 +60,13 @@ struct FlameImport {
 /// ("centerX centerY scale"); other programs ignore it.
 inline constexpr const char* kFlameFrameAttribute = "gridifs_frame";
 
-/// Whether `genome` is imported with native variations: a 2D genome that is not GridIFS's own
-/// grid export (no gridifs_frame). Its xforms become functions in the flame's own coordinates (X's
-/// plane z = 0 is the flame plane): a 2×2×2 grid that is the pre-affine map, the variations by
-/// name and the post map; the camera looks at the plane from below. Other genomes are sampled
-/// onto grids in a frame that fits the attractor into X.
+/// Whether `genome` is imported with native variations: a planar genome (no xform leaves the
+/// plane z = 0) that is not GridIFS's own grid export (no gridifs_frame). Its xforms become
+/// functions in the flame's own coordinates (X's plane z = 0 is the flame plane): a 2×2×2 grid
+/// that is the pre-affine map, the variations by name and the post map. A flat camera looks at
+/// the plane from below; a 3D one (cam_pitch, cam_yaw, cam_perspective, cam_zpos) becomes the
+/// project camera that sees the same picture (io/flame_camera.h). Other genomes are sampled onto
+/// grids in a frame that fits the attractor into X.
 bool isNativeGenome(const FlameGenome& genome);
 
 /// Converts `genome`. Throws FlameError when a map cannot be sampled (no finite node) or the
