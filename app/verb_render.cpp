@@ -116,6 +116,9 @@ struct FrameProgress {
   std::int64_t before = 0;                                // samples of the frames already rendered
   std::int64_t total = 0;                                 // samples of every frame of the sequence
   const std::function<bool(double)>* observer = nullptr;  // RenderOverrides::observer, when given
+  /// --threads was given: at most that many threads run at once, so nothing runs beside the
+  /// workers (the image library loads before them, and the heap is not warmed).
+  bool threadsBounded = false;
 };
 
 /// The project as a part stores it: as rendered at the frame's time, with the job's size, samples
@@ -162,8 +165,9 @@ std::optional<RenderImage> renderWithProgress(const std::vector<RenderSetup>& se
   std::string used = "cpu";
   // The command line renders once and exits, so it keeps freed memory for the output image; a
   // caller with an observer (the Python module) lives on, and its process keeps malloc's habits.
-  bool warmed = source.part.has_value() || progress.observer;
+  bool warmed = source.part.has_value() || progress.observer || progress.threadsBounded;
   if (!warmed) keepFreedMemory();
+  if (progress.threadsBounded && !source.part && !source.merged) loadImageWriterNow();
   for (std::int64_t i = 0; i < count && !source.merged; ++i) {
     const RenderSetup& setup = setups[std::size_t(i)];
     RenderJob part = job;
@@ -359,6 +363,7 @@ int renderFrame(const Project& loaded, const std::string& file, const std::strin
                 double shutter, FrameProgress progress, bool warn, FrameSource source = {}) {
   const std::string device = checkedDevice(overrides.device);
   if (overrides.observer) progress.observer = &overrides.observer;
+  progress.threadsBounded = overrides.threads.has_value();
   FlameOptions flame = flameOptions;
   flame.motionFade = flame.motionFadeOption.value_or(loaded.animation ? loaded.animation->motion_fade : 0.0);
   DisplayMode mode = DisplayMode::ZBuffer;
@@ -575,9 +580,11 @@ const VerbRegistration kRender{
      "--filter-radius R --estimator-radius R --estimator-minimum M --estimator-curve C --bit-depth B "
      "--transparent]: render headlessly",
      [](CLI::App& app) {
-       const auto a = addChaosVerbOptions(app, "output image: .png or .tif (8-bit RGB) or .exr (float RGBA + Z)",
-                                          "chaos-game iterations in total, e.g. 2e7 (default: the project's)",
-                                          "render threads (default: all cores; the image does not depend on it)");
+       const auto a =
+           addChaosVerbOptions(app, "output image: .png or .tif (8-bit RGB) or .exr (float RGBA + Z)",
+                               "chaos-game iterations in total, e.g. 2e7 (default: the project's)",
+                               "render threads; at most T run at once, the image library loading before them (default: "
+                               "all cores, with the loading beside them; the image does not depend on it)");
        app.add_option("--width", a->overrides.width, "image width in pixels (default: the project's)");
        app.add_option("--height", a->overrides.height, "image height in pixels (default: the project's)");
        auto flame = std::make_shared<FlameOptions>();

@@ -127,6 +127,11 @@ void startLoadingImageWriter() {
   std::call_once(state.started, [&] { state.writer = std::async(std::launch::async, load).share(); });
 }
 
+void loadImageWriterNow() {
+  if (tCapture) return;
+  writer(std::launch::deferred);
+}
+
 bool imageWriterLoaded() {
   const Loading& state = loading();
   return state.writer.valid() && state.writer.wait_for(std::chrono::seconds(0)) == std::future_status::ready;

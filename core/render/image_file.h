@@ -65,6 +65,9 @@ void startLoadingImageWriter();
 /// Whether the loading that startLoadingImageWriter began has finished (false before it began).
 /// Call on the thread that called startLoadingImageWriter.
 bool imageWriterLoaded();
+/// Loads the image writer on this thread, now (a no-op once loaded or while capturing): for a
+/// render that may use only its own worker threads.
+void loadImageWriterNow();
 
 /// The Z value of pixels without points in EXR files (Blender's convention for "background").
 inline constexpr float kEmptyPixelDepth = 1e10f;
