@@ -126,7 +126,8 @@ int runFarm(const FarmArgs& a) {
   FarmPlan plan;
   try {
     writeFarmJob(request);
-    const FarmStatus status = readFarmStatus(request.dir, false);
+    // Every part's data is checked here: one damaged since it was written is rendered again.
+    const FarmStatus status = readFarmStatus(request.dir, false, PartCheck::WholeData);
     plan = planFarm(status);
   } catch (const FarmError& e) {
     throw CliError(kBadInput, e.what());

@@ -270,10 +270,12 @@ std::string videoScript(const FarmRequest& r) {
   return s;
 }
 
-/// Whether a part file is valid for (frame index, part) of the request.
-bool validPart(const FarmRequest& r, std::int64_t index, std::int64_t part) {
+/// Whether a part file is valid for (frame index, part) of the request: its header names that part
+/// of this request, and its trailer (or, with PartCheck::WholeData, its data) checks out.
+bool validPart(const FarmRequest& r, std::int64_t index, std::int64_t part, PartCheck check) {
   try {
-    const RenderPartHeader h = verifyRenderPart(farmPartPath(r, index, part));
+    const fs::path file = farmPartPath(r, index, part);
+    const RenderPartHeader h = check == PartCheck::WholeData ? verifyRenderPart(file) : inspectRenderPart(file);
     const bool frameMatches =
         isStill(r) ? !h.frame.has_value() : (h.frame.has_value() && *h.frame == frameAt(r, index));
     return h.kind == "image" && h.part == part && h.parts == r.parts && frameMatches;
@@ -373,7 +375,7 @@ FarmRequest readFarmRequest(const fs::path& dir) {
   }
 }
 
-FarmStatus readFarmStatus(const fs::path& dir, bool slurm) {
+FarmStatus readFarmStatus(const fs::path& dir, bool slurm, PartCheck check) {
   FarmStatus status;
   status.request = readFarmRequest(dir);
   const FarmRequest& r = status.request;
@@ -382,7 +384,7 @@ FarmStatus readFarmStatus(const fs::path& dir, bool slurm) {
     FarmFrame f;
     f.frame = frameAt(r, i);
     for (std::int64_t k = 0; k < r.parts; ++k) {
-      const bool valid = validPart(r, i, k);
+      const bool valid = validPart(r, i, k, check);
       if (valid)
         ++f.partsDone;
       else

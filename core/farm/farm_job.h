@@ -72,9 +72,15 @@ inline constexpr std::int64_t kMaxFarmTasks = 10'000'000;
 /// options) is refused; the same request again keeps its parts. Throws FarmError.
 void writeFarmJob(const FarmRequest& request);
 
-/// Reads a job folder: every part checked (header and checksum), failures, merges, and what Slurm
-/// still has queued (when squeue answers). Throws FarmError when the folder is not a job folder.
-FarmStatus readFarmStatus(const std::filesystem::path& dir, bool askSlurm = true);
+/// How a job folder's parts are checked: their header and trailer only (what a status needs: a
+/// part appears only once written whole), or their whole data against its checksum (before
+/// planning what to render again, so a part damaged since is rendered anew).
+enum class PartCheck { HeaderAndTrailer, WholeData };
+
+/// Reads a job folder: every part checked as `check` says, failures, merges, and what Slurm still
+/// has queued (when squeue answers). Throws FarmError when the folder is not a job folder.
+FarmStatus readFarmStatus(const std::filesystem::path& dir, bool askSlurm = true,
+                          PartCheck check = PartCheck::HeaderAndTrailer);
 
 /// Human-readable lines of a status (gridifs farm --status, the modeller's dialog).
 std::vector<std::string> describeFarmStatus(const FarmStatus& status);

@@ -343,4 +343,24 @@ RenderPartHeader verifyRenderPart(const std::filesystem::path& file) {
   return reader.header();
 }
 
+void RenderPartReader::checkTrailerOnly() {
+  Impl& r = *impl_;
+  // Parts are renamed into place once written whole, so a part with its header and its trailer
+  // is one a render finished; only its checksum (merge's business) needs the data read.
+  const std::streamoff headerEnd = r.file.tellg();
+  r.file.seekg(0, std::ios::end);
+  const std::streamoff size = r.file.tellg();
+  if (size < headerEnd + 20) r.damaged("is truncated: its trailer is missing");
+  char trailer[20];
+  r.file.seekg(size - 20);
+  r.rawRead(trailer, sizeof trailer);
+  if (std::memcmp(trailer + 12, kEndMagic, sizeof kEndMagic) != 0) r.damaged("is truncated: its trailer is missing");
+}
+
+RenderPartHeader inspectRenderPart(const std::filesystem::path& file) {
+  RenderPartReader reader(file);
+  reader.checkTrailerOnly();
+  return reader.header();
+}
+
 }  // namespace gridifs

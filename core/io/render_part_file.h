@@ -87,6 +87,10 @@ class RenderPartReader {
   /// Reads past the remaining buffers, then finish().
   void skipRest();
 
+  /// Right after opening: checks that the file ends with a part's trailer, without reading the
+  /// data in between (which the reader cannot read afterwards).
+  void checkTrailerOnly();
+
   struct Impl;
 
  private:
@@ -98,6 +102,11 @@ class RenderPartReader {
 /// Checks a whole part file (header, every record, the checksum) without keeping its buffers.
 /// Returns the header; throws PartFileError.
 RenderPartHeader verifyRenderPart(const std::filesystem::path& file);
+
+/// Reads a part file's header and checks that its trailer is in place, without reading its data:
+/// what `farm --status` needs of every part (a part appears only once written whole; `merge`
+/// checks the data). Returns the header; throws PartFileError.
+RenderPartHeader inspectRenderPart(const std::filesystem::path& file);
 
 struct PartFileError : std::runtime_error {
   using std::runtime_error::runtime_error;

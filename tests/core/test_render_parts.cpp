@@ -554,5 +554,35 @@ TEST(RenderPartFile, TruncationIsFoundWhereverItCuts) {
   EXPECT_GT(refused, 20);
 }
 
+TEST(RenderPartFile, InspectingReadsTheHeaderAndTrailerOnly) {
+  // What a farm status reads of every part: a whole part passes with its header, one cut anywhere
+  // (a render killed before its rename could leave no such file, but a copy can) is refused, and
+  // damage inside the data is left to the merge's checksum.
+  PartFolder dir;
+  const fs::path file = dir.path / "p.gpart";
+  {
+    RenderPartWriter writer(file, sampleHeader());
+    writer.buffer("density", std::vector<std::uint32_t>(5000, 7));
+    writer.commit();
+  }
+  const RenderPartHeader h = inspectRenderPart(file);
+  EXPECT_EQ(h.part, sampleHeader().part);
+  EXPECT_EQ(h.digest, sampleHeader().digest);
+  const std::string bytes = [&] {
+    std::ifstream in(file, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }();
+  const fs::path cut = dir.path / "cut.gpart";
+  for (std::size_t at = 0; at < bytes.size(); at += 7) {
+    std::ofstream(cut, std::ios::binary | std::ios::trunc) << bytes.substr(0, at);
+    EXPECT_THROW(inspectRenderPart(cut), PartFileError) << "cut at byte " << at;
+  }
+  std::string damaged = bytes;
+  damaged[bytes.size() - 30] ^= 0x5A;  // in the compressed data, before the 20-byte trailer
+  std::ofstream(cut, std::ios::binary | std::ios::trunc) << damaged;
+  EXPECT_NO_THROW(inspectRenderPart(cut));
+  EXPECT_THROW(verifyRenderPart(cut), PartFileError);
+}
+
 }  // namespace
 }  // namespace gridifs

@@ -315,7 +315,7 @@ bool RenderAnimationDialog::writeFarm(ModellerState& state, bool submit) {
   try {
     writeFarmJob(request);
     if (submit) {
-      const FarmPlan plan = planFarm(readFarmStatus(farmDir_, false));
+      const FarmPlan plan = planFarm(readFarmStatus(farmDir_, false, PartCheck::WholeData));
       const std::vector<std::string> jobs = submitFarm(farmDir_, plan);
       message_ = jobs.empty() ? "Nothing to submit: every part is rendered and every frame merged."
                               : "Submitted " + std::to_string(jobs.size()) + " job" + (jobs.size() == 1 ? "" : "s") +
