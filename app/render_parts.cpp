@@ -58,17 +58,14 @@ void writeImagePart(const std::filesystem::path& out, const RenderPartHeader& he
   writer.commit();
 }
 
-void addImagePart(RenderPartReader& reader, std::vector<Accumulation>& sums) {
+void readImagePart(RenderPartReader& reader, std::vector<Accumulation>& timeSamples) {
   std::vector<std::uint32_t> shape;
   reader.buffer("time_samples", shape, 1);
   const std::size_t count = shape.empty() ? 0 : shape[0];
   if (count == 0 || count > 4096) throw PartFileError("a part has no time samples");
-  const bool first = sums.empty();
-  if (!first && sums.size() != count) throw PartFileError("the parts have different motion blur");
-  if (first) sums.resize(count);
-  Accumulation part;
+  timeSamples.resize(count);
   for (std::size_t t = 0; t < count; ++t) {
-    Accumulation& a = first ? sums[t] : part;
+    Accumulation& a = timeSamples[t];
     std::vector<std::int64_t> meta;
     std::vector<float> quant;
     reader.buffer("meta", meta, 5);
@@ -107,10 +104,14 @@ void addImagePart(RenderPartReader& reader, std::vector<Accumulation>& sums) {
     if (a.density.size() != n || (!a.keys.empty() && a.keys.size() != n) ||
         (!a.keys32.empty() && a.keys32.size() != n) || (!a.colorSums.empty() && a.colorSums.size() != 4 * n))
       throw PartFileError("a part's buffers do not match its image size");
-    if (!first) {
-      if (const std::string why = sums[t].mismatch(part); !why.empty()) throw PartFileError(why);
-      sums[t].add(part);
-    }
+  }
+}
+
+void addImageParts(std::vector<Accumulation>& sums, const std::vector<Accumulation>& part) {
+  if (sums.size() != part.size()) throw PartFileError("the parts have different motion blur");
+  for (std::size_t t = 0; t < part.size(); ++t) {
+    if (const std::string why = sums[t].mismatch(part[t]); !why.empty()) throw PartFileError(why);
+    sums[t].add(part[t]);
   }
 }
 

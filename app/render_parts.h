@@ -22,9 +22,15 @@ inline constexpr std::int64_t kMaxRenderParts = 100000;
 void writeImagePart(const std::filesystem::path& out, const RenderPartHeader& header,
                     const std::vector<Accumulation>& timeSamples);
 
-/// Reads a part written by writeImagePart, adding its accumulations into `sums` (empty: taken as
-/// they are). Throws PartFileError.
-void addImagePart(RenderPartReader& reader, std::vector<Accumulation>& sums);
+/// Reads a part written by writeImagePart into `timeSamples` (one accumulation per time sample).
+/// Kept by the caller from part to part, its buffers are reused instead of allocated (and
+/// page-faulted in) again for every part. Throws PartFileError.
+void readImagePart(RenderPartReader& reader, std::vector<Accumulation>& timeSamples);
+
+/// Adds a part's time samples into `sums`: counts and sums by (saturating) addition, keys by
+/// minimum, so the order in which parts are added never changes the result. Throws
+/// PartFileError (another motion blur) or std::invalid_argument (another size, key form, lights).
+void addImageParts(std::vector<Accumulation>& sums, const std::vector<Accumulation>& part);
 
 void writeVolumePart(const std::filesystem::path& out, const RenderPartHeader& header, const VoxelAccumulation& acc);
 void addVolumePart(RenderPartReader& reader, VoxelAccumulation& sum, bool first);

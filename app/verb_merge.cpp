@@ -6,7 +6,11 @@
 // two accumulations whatever the number of parts. A damaged or truncated part is refused; nothing
 // is written then.
 #include <algorithm>
+#include <atomic>
+#include <exception>
 #include <map>
+#include <mutex>
+#include <thread>
 
 #include "app/cli.h"
 #include "app/render_parts.h"
@@ -136,24 +140,63 @@ int runMerge(const MergeArgs& a) {
     checkOutputPath(a.out, {"png", "exr", "tif", "tiff"}, "a merged image");
   }
   const Project project = embeddedProject(header, a.parts.front());
+  // What the command line says of part `file` when reading or adding it threw.
+  const auto failure = [](const std::string& file, std::exception_ptr error) {
+    try {
+      std::rethrow_exception(error);
+    } catch (const PartFileError& e) {
+      const std::string why = e.what();
+      // Buffer-level messages do not name the file; the reader's own ones start with it.
+      return (why.rfind(file, 0) == 0 ? why : file + " is damaged: " + why) + "; nothing was merged";
+    } catch (const std::invalid_argument& e) {
+      return file + " does not match the other parts: " + e.what() + "; nothing was merged";
+    }
+  };
   std::vector<Accumulation> sums;
   VoxelAccumulation voxels;
-  for (std::size_t i = 0; i < a.parts.size(); ++i) {
+  for (std::size_t i = 0; i < a.parts.size() && (volume || i == 0); ++i) {
     try {
       RenderPartReader reader(a.parts[i]);
       if (volume)
         addVolumePart(reader, voxels, i == 0);
       else
-        addImagePart(reader, sums);
+        readImagePart(reader, sums);  // the first part starts the sums
       reader.finish();
-    } catch (const PartFileError& e) {
-      const std::string why = e.what();
-      // Buffer-level messages do not name the file; the reader's own ones start with it.
-      throw CliError(kBadInput, (why.rfind(a.parts[i], 0) == 0 ? why : a.parts[i] + " is damaged: " + why) +
-                                    "; nothing was merged");
-    } catch (const std::invalid_argument& e) {
-      throw CliError(kBadInput, a.parts[i] + " does not match the other parts: " + e.what() + "; nothing was merged");
+    } catch (const std::exception&) {
+      throw CliError(kBadInput, failure(a.parts[i], std::current_exception()));
     }
+  }
+  if (!volume && a.parts.size() > 1) {
+    // The other parts are read on several threads at once (reading is inflating their data:
+    // nearly all of a merge's time) and added under a lock. Additions and minima: the order in
+    // which parts arrive never changes a byte. Every part is read, so a failure names the first
+    // failing part in order, whichever thread met it.
+    std::mutex lock;
+    std::atomic<std::size_t> next{1};
+    std::size_t failedPart = a.parts.size();
+    std::exception_ptr failedWith;
+    const auto work = [&] {
+      std::vector<Accumulation> part;  // buffers reused from part to part
+      for (std::size_t i = next++; i < a.parts.size(); i = next++) {
+        try {
+          RenderPartReader reader(a.parts[i]);
+          readImagePart(reader, part);
+          reader.finish();
+          const std::lock_guard<std::mutex> held(lock);
+          addImageParts(sums, part);
+        } catch (const std::exception&) {
+          const std::lock_guard<std::mutex> held(lock);
+          if (i < failedPart) failedPart = i, failedWith = std::current_exception();
+        }
+      }
+    };
+    const std::size_t threads =
+        std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, std::min<std::size_t>(8, a.parts.size() - 1));
+    std::vector<std::thread> helpers;
+    for (std::size_t t = 1; t < threads; ++t) helpers.emplace_back(work);
+    work();
+    for (std::thread& h : helpers) h.join();
+    if (failedWith) throw CliError(kBadInput, failure(a.parts[failedPart], failedWith));
   }
   if (!volume) return finishMergedFrame(project, header.source, a.out, header.options, sums, a.bitDepth, a.transparent);
   VolumeJob job;
