@@ -138,19 +138,55 @@ RenderPartWriter::~RenderPartWriter() { deflateEnd(&impl_->z); }
 
 void RenderPartWriter::buffer(const std::string& name, std::size_t elementSize, const void* data, std::size_t count) {
   Impl& w = *impl_;
+  const auto* bytes = static_cast<const std::uint8_t*>(data);
+  // Only what the render touched is stored: runs of untouched elements (every byte the fill
+  // byte: 0 for counts and sums, 0xFF for empty keys and depths) are skipped.
+  const auto filledWith = [&](std::size_t i, std::uint8_t fill) {
+    for (std::size_t b = 0; b < elementSize; ++b)
+      if (bytes[i * elementSize + b] != fill) return false;
+    return true;
+  };
+  std::size_t zeros = 0, ones = 0;
+  for (std::size_t i = 0; i < count; i += 61) zeros += filledWith(i, 0x00), ones += filledWith(i, 0xFF);
+  const std::uint8_t fill = ones > zeros ? 0xFF : 0x00;
+  std::vector<std::uint32_t> runs;  // skip, take, skip, take, ...
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < count;) {
+    std::size_t skip = 0, take = 0;
+    while (i < count && skip < 0xFFFFFFFFu && filledWith(i, fill)) ++i, ++skip;
+    while (i < count && take < 0xFFFFFFFFu && !filledWith(i, fill)) ++i, ++take;
+    runs.push_back(std::uint32_t(skip));
+    runs.push_back(std::uint32_t(take));
+    kept += take;
+  }
   std::string record;
   putLittle(record, std::uint32_t(name.size()));
   record += name;
   putLittle(record, std::uint32_t(elementSize));
   putLittle(record, std::uint64_t(count));
+  record += char(fill);
+  putLittle(record, std::uint64_t(runs.size() / 2));
   w.compress(record.data(), record.size(), Z_NO_FLUSH);
-  const auto* bytes = static_cast<const std::uint8_t*>(data);
-  for (std::size_t at = 0; at < count; at += kBlockElements) {
-    const std::size_t n = std::min(kBlockElements, count - at);
-    w.scratch.resize(n * elementSize);
-    shuffle(bytes + at * elementSize, w.scratch.data(), elementSize, n);
+  if (!runs.empty()) w.compress(runs.data(), runs.size() * sizeof(std::uint32_t), Z_NO_FLUSH);
+  // The kept elements, gathered and shuffled a block at a time.
+  std::vector<std::uint8_t> gathered;
+  gathered.reserve(std::min(kept, kBlockElements) * elementSize);
+  const auto flushBlock = [&] {
+    const std::size_t n = gathered.size() / elementSize;
+    w.scratch.resize(gathered.size());
+    shuffle(gathered.data(), w.scratch.data(), elementSize, n);
     w.compress(w.scratch.data(), w.scratch.size(), Z_NO_FLUSH);
+    gathered.clear();
+  };
+  std::size_t at = 0;
+  for (std::size_t r = 0; r < runs.size(); r += 2) {
+    at += runs[r];
+    for (std::size_t k = 0; k < runs[r + 1]; ++k, ++at) {
+      gathered.insert(gathered.end(), bytes + at * elementSize, bytes + (at + 1) * elementSize);
+      if (gathered.size() == kBlockElements * elementSize) flushBlock();
+    }
   }
+  if (!gathered.empty()) flushBlock();
 }
 
 void RenderPartWriter::commit() {
@@ -179,6 +215,33 @@ struct RenderPartReader::Impl {
   std::uint32_t crc = 0;
   std::size_t pendingSize = 0, pendingCount = 0;
   bool endRecordRead = false;
+  std::uint32_t version = kRenderPartVersion;
+  // Version 2's sparse record: the fill byte and the (skip, take) runs of the pending buffer.
+  std::uint8_t pendingFill = 0;
+  std::vector<std::uint32_t> pendingRuns;
+
+  /// After a record's name, size and count: version 2's fill byte and runs (checked against the
+  /// count), none in version 1.
+  void readRuns(std::uint64_t count) {
+    pendingRuns.clear();
+    if (version < 2) return;
+    inflateExactly(&pendingFill, 1);
+    if (pendingFill != 0x00 && pendingFill != 0xFF) damaged("is damaged: a buffer's fill byte is neither 0 nor 255");
+    const auto runCount = little<std::uint64_t>();
+    if (runCount > count + 1) damaged("is damaged: a buffer has more runs than elements");
+    pendingRuns.resize(std::size_t(runCount) * 2);
+    if (!pendingRuns.empty()) inflateExactly(pendingRuns.data(), pendingRuns.size() * sizeof(std::uint32_t));
+    std::uint64_t covered = 0;
+    for (std::uint32_t n : pendingRuns) covered += n;
+    if (covered != count) damaged("is damaged: a buffer's runs do not add up to its length");
+  }
+  /// The elements stored for the pending buffer (all of them in version 1).
+  std::uint64_t storedElements(std::uint64_t count) const {
+    if (version < 2) return count;
+    std::uint64_t kept = 0;
+    for (std::size_t r = 1; r < pendingRuns.size(); r += 2) kept += pendingRuns[r];
+    return kept;
+  }
 
   [[noreturn]] void damaged(const std::string& why) { throw PartFileError(name + " " + why); }
 
@@ -229,7 +292,8 @@ RenderPartReader::RenderPartReader(const std::filesystem::path& file) : impl_(st
     r.damaged("is not a GridIFS render part (it does not start with GRIDPART)");
   std::uint32_t version = 0, length = 0, crc = 0;
   r.rawRead(&version, 4);
-  if (version != kRenderPartVersion)
+  r.version = version;
+  if (version != kRenderPartVersion && version != 1)
     r.damaged("is a render part of format version " + std::to_string(version) + ", but this gridifs reads version " +
               std::to_string(kRenderPartVersion));
   r.rawRead(&length, 4);
@@ -262,6 +326,7 @@ std::size_t RenderPartReader::nextBuffer(const std::string& name, std::size_t el
   if (got != name || size != elementSize)
     r.damaged("is damaged: it has the buffer \"" + got + "\" where \"" + name + "\" belongs");
   if (count > maxCount) r.damaged("is damaged: the buffer \"" + name + "\" is larger than the render");
+  r.readRuns(count);
   r.pendingSize = size;
   r.pendingCount = std::size_t(count);
   return std::size_t(count);
@@ -270,11 +335,40 @@ std::size_t RenderPartReader::nextBuffer(const std::string& name, std::size_t el
 void RenderPartReader::readElements(void* data, std::size_t elementSize, std::size_t count) {
   Impl& r = *impl_;
   auto* bytes = static_cast<std::uint8_t*>(data);
-  for (std::size_t at = 0; at < count; at += kBlockElements) {
-    const std::size_t n = std::min(kBlockElements, count - at);
-    r.scratch.resize(n * elementSize);
-    r.inflateExactly(r.scratch.data(), r.scratch.size());
-    unshuffle(r.scratch.data(), bytes + at * elementSize, elementSize, n);
+  if (r.version < 2) {
+    for (std::size_t at = 0; at < count; at += kBlockElements) {
+      const std::size_t n = std::min(kBlockElements, count - at);
+      r.scratch.resize(n * elementSize);
+      r.inflateExactly(r.scratch.data(), r.scratch.size());
+      unshuffle(r.scratch.data(), bytes + at * elementSize, elementSize, n);
+    }
+    return;
+  }
+  // The stored elements come a block at a time; each lands in its run, the rest is the fill.
+  std::vector<std::uint8_t> block;
+  std::size_t blockAt = 0, blockCount = 0;
+  std::uint64_t left = r.storedElements(count);
+  std::size_t at = 0;
+  for (std::size_t k = 0; k < r.pendingRuns.size(); k += 2) {
+    std::memset(bytes + at * elementSize, r.pendingFill, std::size_t(r.pendingRuns[k]) * elementSize);
+    at += r.pendingRuns[k];
+    for (std::uint32_t take = r.pendingRuns[k + 1]; take > 0;) {
+      if (blockAt == blockCount) {
+        blockCount = std::size_t(std::min<std::uint64_t>(kBlockElements, left));
+        if (blockCount == 0) r.damaged("is damaged: a buffer's runs ask for more elements than it stores");
+        left -= blockCount;
+        r.scratch.resize(blockCount * elementSize);
+        block.resize(blockCount * elementSize);
+        r.inflateExactly(r.scratch.data(), r.scratch.size());
+        unshuffle(r.scratch.data(), block.data(), elementSize, blockCount);
+        blockAt = 0;
+      }
+      const std::size_t n = std::min<std::size_t>(take, blockCount - blockAt);
+      std::memcpy(bytes + at * elementSize, block.data() + blockAt * elementSize, n * elementSize);
+      at += n;
+      blockAt += n;
+      take -= std::uint32_t(n);
+    }
   }
 }
 
@@ -328,8 +422,10 @@ void RenderPartReader::skipRest() {
     const auto size = r.little<std::uint32_t>();
     const auto count = r.little<std::uint64_t>();
     if (size == 0 || size > 64 || count > (std::uint64_t(1) << 36)) r.damaged("is damaged: a buffer's size is absurd");
-    for (std::uint64_t at = 0; at < count; at += kBlockElements) {
-      r.scratch.resize(std::size_t(std::min<std::uint64_t>(kBlockElements, count - at)) * size);
+    r.readRuns(count);
+    const std::uint64_t stored = r.storedElements(count);
+    for (std::uint64_t at = 0; at < stored; at += kBlockElements) {
+      r.scratch.resize(std::size_t(std::min<std::uint64_t>(kBlockElements, stored - at)) * size);
       r.inflateExactly(r.scratch.data(), r.scratch.size());
     }
   }

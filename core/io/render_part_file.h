@@ -8,9 +8,11 @@
 // The header names the part (K of N), the device, the chunk range, a digest of the project and
 // the options, and carries the project itself (as rendered: at the frame's time, with the
 // command-line overrides applied), so that `gridifs merge` finishes the image without the project
-// file. A buffer record is a name, an element size, a count and the elements with their bytes
-// stored plane by plane (every element's byte 0, then byte 1, ...): sums and keys whose high bytes
-// are mostly zero then compress to a fraction of their size.
+// file. A buffer record is a name, an element size, a count, a fill byte and the runs of elements
+// the render left at the fill (every byte 0, or 0xFF for empty keys) and of those it touched; only
+// the touched ones are stored, with their bytes plane by plane (every element's byte 0, then byte
+// 1, ...): sums and keys whose high bytes are mostly zero then compress to a fraction of their
+// size. Version 1 (every element stored, no fill or runs) is still read.
 //
 // Little-endian throughout. Not thread-safe; a writer or reader is used by one thread.
 #include <cstdint>
@@ -23,7 +25,8 @@
 
 namespace gridifs {
 
-inline constexpr std::uint32_t kRenderPartVersion = 1;
+/// Written: 2 (records store only the elements a render touched). Read: 1 and 2.
+inline constexpr std::uint32_t kRenderPartVersion = 2;
 
 /// What a part file says about itself.
 struct RenderPartHeader {

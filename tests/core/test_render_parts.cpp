@@ -554,6 +554,48 @@ TEST(RenderPartFile, TruncationIsFoundWhereverItCuts) {
   EXPECT_GT(refused, 20);
 }
 
+TEST(RenderPartFile, SparseBuffersComeBackWithTheirFill) {
+  // Only touched elements are stored: runs of zeros (counts, sums) or of all-ones (empty keys and
+  // depths) come back as they were, across blocks, at the buffer's ends, and with element sizes
+  // of 2, 4 and 8 bytes; a buffer nothing touched is a few bytes.
+  PartFolder dir;
+  const fs::path file = dir.path / "sparse.gpart";
+  std::mt19937_64 rng(21);
+  std::vector<std::uint32_t> counts(200000, 0);
+  for (std::size_t i = 0; i < counts.size(); ++i)
+    if (rng() % 7 == 0 || (i > 70000 && i < 140000)) counts[i] = std::uint32_t(rng() % 1000 + 1);
+  counts.back() = 5;
+  std::vector<std::uint64_t> keys(150000, ~std::uint64_t(0));
+  for (std::size_t i = 0; i < keys.size(); i += std::size_t(rng() % 50 + 1)) keys[i] = rng();
+  keys.front() = 42;
+  std::vector<std::uint16_t> depths(9000, 0xFFFF);
+  for (std::size_t i = 3000; i < 3100; ++i) depths[i] = std::uint16_t(i);
+  const std::vector<std::uint32_t> untouched(1000000, 0);
+  {
+    RenderPartWriter writer(file, sampleHeader());
+    writer.buffer("counts", counts);
+    writer.buffer("keys", keys);
+    writer.buffer("depths", depths);
+    writer.buffer("untouched", untouched);
+    writer.commit();
+  }
+  EXPECT_LT(fs::file_size(file), 700000u) << "a million untouched counts and sparse keys stay small";
+  RenderPartReader reader(file);
+  std::vector<std::uint32_t> c, u;
+  std::vector<std::uint64_t> k;
+  std::vector<std::uint16_t> d(5, 7);  // a buffer that held something before is overwritten whole
+  reader.buffer("counts", c, counts.size());
+  reader.buffer("keys", k, keys.size());
+  reader.buffer("depths", d, depths.size());
+  reader.buffer("untouched", u, untouched.size());
+  reader.finish();
+  EXPECT_EQ(c, counts);
+  EXPECT_EQ(k, keys);
+  EXPECT_EQ(d, depths);
+  EXPECT_EQ(u, untouched);
+  EXPECT_NO_THROW(verifyRenderPart(file));
+}
+
 TEST(RenderPartFile, InspectingReadsTheHeaderAndTrailerOnly) {
   // What a farm status reads of every part: a whole part passes with its header, one cut anywhere
   // (a render killed before its rename could leave no such file, but a copy can) is refused, and
