@@ -229,10 +229,18 @@ struct RenderPartReader::Impl {
     if (pendingFill != 0x00 && pendingFill != 0xFF) damaged("is damaged: a buffer's fill byte is neither 0 nor 255");
     const auto runCount = little<std::uint64_t>();
     if (runCount > count + 1) damaged("is damaged: a buffer has more runs than elements");
-    pendingRuns.resize(std::size_t(runCount) * 2);
-    if (!pendingRuns.empty()) inflateExactly(pendingRuns.data(), pendingRuns.size() * sizeof(std::uint32_t));
+    // A block at a time, so that a damaged run count costs no more memory than the data that is
+    // really there.
     std::uint64_t covered = 0;
-    for (std::uint32_t n : pendingRuns) covered += n;
+    for (std::uint64_t at = 0; at < runCount;) {
+      const std::size_t n = std::size_t(std::min<std::uint64_t>(kBlockElements, runCount - at));
+      const std::size_t old = pendingRuns.size();
+      pendingRuns.resize(old + 2 * n);
+      inflateExactly(pendingRuns.data() + old, 2 * n * sizeof(std::uint32_t));
+      for (std::size_t k = old; k < pendingRuns.size(); ++k) covered += pendingRuns[k];
+      if (covered > count) damaged("is damaged: a buffer's runs are longer than the buffer");
+      at += n;
+    }
     if (covered != count) damaged("is damaged: a buffer's runs do not add up to its length");
   }
   /// The elements stored for the pending buffer (all of them in version 1).
