@@ -134,8 +134,9 @@ TEST(Farm, StillInSixteenPartsEqualsTheLocalRenderAndADamagedPartIsRenderedAgain
 
 TEST(Farm, ACancelledTaskKeepsItsMergeWaitingAndTheSameCommandFinishesWithTheSameBytes) {
   ScratchDir dir("farm-cancel");
-  // Enough samples that the tasks run for seconds, so one can be cancelled while it runs.
-  const std::string options = " --samples 4e8 --width 160 --height 120";
+  // Enough samples that the tasks run for seconds, so one can be cancelled while it runs (a task of
+  // 10^8 samples took 0.8 s, and the cancel sometimes came after it had written its part).
+  const std::string options = " --samples 2e9 --width 160 --height 120";
   const std::string project = asset("default.gridifs");
   const std::string job = quote((dir.path / "job").string());
   const std::string farmCommand = "farm " + project + " --parts 4 --dir " + job + " -o " +
@@ -145,12 +146,12 @@ TEST(Farm, ACancelledTaskKeepsItsMergeWaitingAndTheSameCommandFinishesWithTheSam
   renderJob = renderJob.substr(0, renderJob.find(' '));
   // Cancel element 2 once it runs.
   bool cancelled = false;
-  for (int i = 0; i < 200 && !cancelled; ++i) {
+  for (int i = 0; i < 1000 && !cancelled; ++i) {
     if (slurm("squeue -h -j " + renderJob + "_2 -o '%T'").find("RUNNING") != std::string::npos) {
       slurm("scancel " + renderJob + "_2");
       cancelled = true;
     }
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
   ASSERT_TRUE(cancelled) << "element 2 never ran";
   ASSERT_TRUE(waitForJobs(dir.path / "job"));
