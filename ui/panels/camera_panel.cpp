@@ -5,6 +5,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <string_view>
 
 #include "edit/settings_edits.h"
 #include "model/settings_tables.h"
@@ -30,32 +31,21 @@ std::optional<int> choiceCombo(ModellerState& state, const SettingSpec& spec, in
   return chosen;
 }
 
-/// A keyable slider of the camera's number `key` over [min, max].
-void cameraSlider(ModellerState& state, EditQueue& edits, const Camera& camera, const char* key, double min,
-                  double max) {
+/// A slider of the camera's number `key` over its table's slider range, with a key button when
+/// `keyable`: roll and the lens shift are written only when set, so they have no track until they
+/// differ from 0.
+void cameraSlider(ModellerState& state, EditQueue& edits, const Camera& camera, const char* key, bool keyable = true) {
   const SettingSpec& spec = cameraTable().field(key);
   double value = spec.number(&camera);
   ImGui::PushID(key);
-  keyButton(state, edits, std::string("camera.") + key, &value);
-  ImGui::SameLine();
+  if (keyable) {
+    keyButton(state, edits, std::string("camera.") + key, &value);
+    ImGui::SameLine();
+  }
   ImGui::SetNextItemWidth(-ImGui::GetFontSize() * 0.5f);
-  const bool changed = settingSliderWidget("##value", spec, value, min, max);
-  state.probe.frame(std::string("camera.") + key);
-  Camera next = camera;
-  spec.setNumber(&next, value);
-  gestureItem(edits, spec.label, changed, SetCamera{next});
-  contextHelp(state, spec.tooltip);
-  ImGui::PopID();
-}
-
-/// A slider of the camera's number `key` without a key button: roll and the lens shift are
-/// written only when set, so they have no track until they differ from 0.
-void cameraPlainSlider(ModellerState& state, EditQueue& edits, const Camera& camera, const char* key) {
-  const SettingSpec& spec = cameraTable().field(key);
-  double value = spec.number(&camera);
-  ImGui::PushID(key);
-  ImGui::SetNextItemWidth(-ImGui::GetFontSize() * 0.5f);
-  const bool changed = settingSliderWidget("##value", spec, value, spec.sliderMin, spec.sliderMax);
+  // A flat camera's field of view ends at 170°.
+  const double max = std::string_view(key) == "fov" && !camera.panoramic() ? kMaxFlatFov : spec.sliderMax;
+  const bool changed = settingSliderWidget("##value", spec, value, spec.sliderMin, max);
   state.probe.frame(std::string("camera.") + key);
   Camera next = camera;
   spec.setNumber(&next, value);
@@ -85,14 +75,11 @@ void drawCameraPanel(ModellerState& state, EditQueue& edits) {
     edits.commit(std::string("Projection: ") + projectionName(next.projection), SetCamera{next});
   }
 
-  cameraSlider(state, edits, camera, "fov", 1.0, camera.panoramic() ? 360.0 : kMaxFlatFov);
-  cameraSlider(state, edits, camera, "yaw", -180.0, 180.0);
-  cameraSlider(state, edits, camera, "pitch", -90.0, 90.0);
-  cameraSlider(state, edits, camera, "distance", 0.05, 50.0);
-  cameraPlainSlider(state, edits, camera, "roll");
+  for (const char* key : {"fov", "yaw", "pitch", "distance"}) cameraSlider(state, edits, camera, key);
+  cameraSlider(state, edits, camera, "roll", false);
   if (!camera.panoramic()) {
-    cameraPlainSlider(state, edits, camera, "shift_x");
-    cameraPlainSlider(state, edits, camera, "shift_y");
+    cameraSlider(state, edits, camera, "shift_x", false);
+    cameraSlider(state, edits, camera, "shift_y", false);
   }
 
   sectionTitle("Stereo");
