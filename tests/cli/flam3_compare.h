@@ -119,4 +119,31 @@ inline bool renderWithFlam3(const std::filesystem::path& genome, const std::file
   return std::system(cmd.c_str()) == 0;
 }
 
+/// flam3-render draws `reference` from two random streams and `gridifs render --mode flame` draws
+/// `project` (16-bit RGBA PNGs in `dir`): `self` compares the two flam3 images, `cross` the first
+/// with GridIFS's. `error` says which render failed, empty when all three ran.
+struct Flam3Agreement {
+  AlphaComparison self, cross;
+  std::string error;
+};
+
+inline Flam3Agreement agreementWithFlam3(const std::filesystem::path& reference, const std::filesystem::path& project,
+                                         const std::filesystem::path& dir) {
+  Flam3Agreement a;
+  const auto flam3A = dir / "flam3-a.png", flam3B = dir / "flam3-b.png", ours = dir / "gridifs.png";
+  if (!renderWithFlam3(reference, flam3A, "first") || !renderWithFlam3(reference, flam3B, "second")) {
+    a.error = "flam3-render failed on " + reference.string();
+    return a;
+  }
+  const CommandResult r = runGridifs("render " + quote(project.string()) + " -o " + quote(ours.string()) +
+                                     " --mode flame --transparent --bit-depth 16 --threads 2");
+  if (r.exitCode != 0) {
+    a.error = "gridifs render failed: " + r.err;
+    return a;
+  }
+  a.self = compareAlpha(flam3A, flam3B, 2.0);
+  a.cross = compareAlpha(flam3A, ours, 2.0);
+  return a;
+}
+
 }  // namespace gridifs::test_support

@@ -48,13 +48,9 @@ void crossCheckCamera(const std::string& name, const std::string& variation) {
   EXPECT_NE(saved.find("\"variations\""), std::string::npos);
   EXPECT_NE(saved.find("\"" + variation + "\""), std::string::npos)
       << "the " << variation << " variation is kept by name";
-  const auto flam3A = dir.path / "flam3-a.png", flam3B = dir.path / "flam3-b.png", ours = dir.path / "gridifs.png";
-  ASSERT_TRUE(renderWithFlam3(reference, flam3A, "first"));
-  ASSERT_TRUE(renderWithFlam3(reference, flam3B, "second"));
-  const CommandResult r = runGridifs("render " + quote(project.string()) + " -o " + quote(ours.string()) +
-                                     " --mode flame --transparent --bit-depth 16 --threads 2");
-  ASSERT_EQ(r.exitCode, 0) << r.err;
-  const AlphaComparison self = compareAlpha(flam3A, flam3B, 2.0), cross = compareAlpha(flam3A, ours, 2.0);
+  const Flam3Agreement agreement = agreementWithFlam3(reference, project, dir.path);
+  ASSERT_TRUE(agreement.error.empty()) << agreement.error;
+  const AlphaComparison &self = agreement.self, &cross = agreement.cross;
   ASSERT_GT(self.coveredF, 2000) << "the genome should cover the view";
   std::printf("[camera %s] flam3 vs flam3: %s\n[camera %s] flam3 vs gridifs: %s\n", name.c_str(),
               self.summary().c_str(), name.c_str(), cross.summary().c_str());

@@ -28,13 +28,9 @@ void crossCheckGroup(const std::string& group) {
   ASSERT_EQ(imported.exitCode, 0) << imported.err;
   // Every variation is known: the import warns about nothing.
   EXPECT_EQ(imported.err.find("warning"), std::string::npos) << imported.err;
-  const auto flam3A = dir.path / "flam3-a.png", flam3B = dir.path / "flam3-b.png", ours = dir.path / "gridifs.png";
-  ASSERT_TRUE(renderWithFlam3(genome, flam3A, "first"));
-  ASSERT_TRUE(renderWithFlam3(genome, flam3B, "second"));
-  const CommandResult r = runGridifs("render " + quote(project.string()) + " -o " + quote(ours.string()) +
-                                     " --mode flame --transparent --bit-depth 16 --threads 2");
-  ASSERT_EQ(r.exitCode, 0) << r.err;
-  const AlphaComparison self = compareAlpha(flam3A, flam3B, 2.0), cross = compareAlpha(flam3A, ours, 2.0);
+  const Flam3Agreement agreement = agreementWithFlam3(genome, project, dir.path);
+  ASSERT_TRUE(agreement.error.empty()) << agreement.error;
+  const AlphaComparison &self = agreement.self, &cross = agreement.cross;
   ASSERT_GT(self.coveredF, 500) << "the genome should cover the view";
   std::printf("[variations %s] flam3 vs flam3: %s\n[variations %s] flam3 vs gridifs: %s\n", group.c_str(),
               self.summary().c_str(), group.c_str(), cross.summary().c_str());
