@@ -59,6 +59,8 @@ Project loadForVerbAt(const std::filesystem::path& file, std::optional<double> t
 
 /// The project `loaded` from `file` at `time` (default: its stored time), tracks evaluated.
 Project projectForVerbAt(const Project& loaded, const std::filesystem::path& file, std::optional<double> time);
+/// The project's sound ("audio.file", relative to the project file's folder), or an empty path.
+std::filesystem::path audioFileOf(const Project& project, const std::filesystem::path& file);
 
 /// Resolves "--function" (an index 0..n-1 as in JSON paths, or a function name).
 std::size_t resolveFunction(const Project& project, const std::string& which, const std::filesystem::path& file);

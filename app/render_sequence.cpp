@@ -85,7 +85,8 @@ void checkVideoOutput(const std::string& video) {
     throw CliError(kBadInput, "cannot write " + video + ": --video needs ffmpeg, and there is no ffmpeg on the PATH");
 }
 
-void assembleVideo(const std::string& pattern, const FrameRange& frames, double fps, const std::string& video) {
+void assembleVideo(const std::string& pattern, const FrameRange& frames, double fps, const std::string& video,
+                   const std::filesystem::path& audio) {
   const auto ffmpeg = findOnPath("ffmpeg");
   if (!ffmpeg) throw CliError(kFailure, "cannot write " + video + ": ffmpeg is no longer on the PATH");
   const std::filesystem::path target(video);
@@ -98,7 +99,18 @@ void assembleVideo(const std::string& pattern, const FrameRange& frames, double 
   const bool webm = lowerExtension(target) == "webm";
   std::vector<std::string> args = {"ffmpeg",     "-loglevel", "error",         "-y",
                                    "-framerate", rate,        "-start_number", std::to_string(frames.first),
-                                   "-i",         pattern,     "-frames:v",     std::to_string(frames.count())};
+                                   "-i",         pattern};
+  if (!audio.empty()) {
+    // The sound from the first frame's time on, and both streams cut at the frames' length (a
+    // frame count would stop the sound short, where the muxer had buffered it behind the frames).
+    char offset[32], duration[32];
+    std::snprintf(offset, sizeof offset, "%.17g", double(frames.first) / fps);
+    std::snprintf(duration, sizeof duration, "%.17g", double(frames.count()) / fps);
+    args.insert(args.end(), {"-ss", offset, "-i", audio.string(), "-map", "0:v:0", "-map", "1:a:0", "-t", duration,
+                             "-c:a", webm ? "libopus" : "aac", "-b:a", "192k"});
+  } else {
+    args.insert(args.end(), {"-frames:v", std::to_string(frames.count())});
+  }
   if (webm) {
     args.insert(args.end(), {"-c:v", "libvpx-vp9", "-b:v", "0", "-crf", "30"});
   } else {

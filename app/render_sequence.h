@@ -2,6 +2,7 @@
 // `gridifs render --frames A:B`: frame ranges, the printf pattern that names each frame's file,
 // and assembling the frames into a video with ffmpeg.
 #include <cstdint>
+#include <filesystem>
 #include <optional>
 #include <string>
 
@@ -36,6 +37,7 @@ void checkVideoOutput(const std::string& video);
 
 /// Runs ffmpeg on the written frames (H.264 for .mp4/.mov/.mkv, VP9 for .webm) into a temporary file
 /// beside `video`, renamed over it only when ffmpeg succeeds. Throws CliError(1) on failure.
-void assembleVideo(const std::string& pattern, const FrameRange& frames, double fps, const std::string& video);
+void assembleVideo(const std::string& pattern, const FrameRange& frames, double fps, const std::string& video,
+                   const std::filesystem::path& audio = {});
 
 }  // namespace gridifs::cli

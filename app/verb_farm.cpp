@@ -59,7 +59,8 @@ int assembleFarmVideo(const std::string& dir) {
   if (!r.video || !r.firstFrame) throw CliError(kBadInput, dir + " has no video to assemble");
   const Project project = loadForVerb(r.project);
   const AnimationSettings animation = project.animation.value_or(AnimationSettings{});
-  assembleVideo(r.output, FrameRange{*r.firstFrame, *r.lastFrame}, animation.fps, *r.video);
+  assembleVideo(r.output, FrameRange{*r.firstFrame, *r.lastFrame}, animation.fps, *r.video,
+                audioFileOf(project, r.project));
   return kSuccess;
 }
 

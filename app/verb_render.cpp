@@ -435,8 +435,15 @@ int renderSequence(const std::string& file, const std::string& pattern, const Re
   const Project loaded = loadForVerb(file);
   const AnimationSettings animation = loaded.animation.value_or(AnimationSettings{});
   auto frameTime = [&](std::int64_t f) { return double(f) / animation.fps; };
-  if (!loaded.tracks.empty())
+  if (!loaded.tracks.empty() || !loaded.bindings.empty())
     for (std::int64_t f = frames.first; f <= frames.last; ++f) projectForVerbAt(loaded, file, frameTime(f));
+  if (sequence.video && loaded.audio) {
+    std::error_code ec;
+    const std::filesystem::path audio = audioFileOf(loaded, file);
+    if (!std::filesystem::is_regular_file(audio, ec))
+      throw CliError(kBadInput,
+                     file + ": its audio file " + audio.string() + " is not there, so --video cannot carry it");
+  }
   RenderOverrides first = overrides;
   first.time = frameTime(frames.first);
   const std::int64_t samplesPerFrame =
@@ -455,7 +462,7 @@ int renderSequence(const std::string& file, const std::string& pattern, const Re
   bar.finish();
   if (sequence.video) {
     if (!quiet) std::fprintf(stderr, "assembling %s with ffmpeg\n", sequence.video->c_str());
-    assembleVideo(pattern, frames, animation.fps, *sequence.video);
+    assembleVideo(pattern, frames, animation.fps, *sequence.video, audioFileOf(loaded, file));
   }
   printDeviceNote();
   return kSuccess;

@@ -26,7 +26,9 @@ void collect(const json& node, const std::string& path, const Project& project, 
   }
   if (!node.is_object()) return;
   for (const auto& [key, value] : node.items()) {
-    if (path.empty() && (key == "version" || key == "tracks" || key == "lineage")) continue;
+    if (path.empty() &&
+        (key == "version" || key == "tracks" || key == "lineage" || key == "audio" || key == "bindings"))
+      continue;
     // Keys that are not names (a palette's colour table keyed by numbers) cannot be in a path.
     if (key.empty() || key.find_first_of(".[]/~") != std::string::npos) continue;
     collect(value, path.empty() ? key : path + "." + key, project, out);

@@ -11,6 +11,7 @@
 #include "io/construction_io.h"
 #include "io/free_form_io.h"
 #include "io/json_read.h"
+#include "io/live_io.h"
 #include "io/operation_json.h"
 #include "io/settings_json.h"
 #include "io/shading_io.h"
@@ -18,6 +19,7 @@
 #include "io/variation_io.h"
 #include "io/volume_io.h"
 #include "io/volume_render_io.h"
+#include "model/live_binding.h"
 #include "model/operation_table.h"
 #include "model/project_time.h"
 #include "model/settings_tables.h"
@@ -339,6 +341,7 @@ Project readProjectBody(const json& root, bool withConstruction) {
   project.volume = volume_io::readVolume(root);
   project.preview_mode = volume_render_io::readPreviewMode(root);
   if (withConstruction) project.lineage = readLineage(root);
+  if (withConstruction) live_io::readLive(root, project);
   if (withConstruction) {
     project.construction = construction_io::readConstruction(root, [](const json& part, const std::string& path) {
       try {
@@ -350,6 +353,7 @@ Project readProjectBody(const json& root, bool withConstruction) {
   }
   validateProject(project);
   checkTrackPaths(project);
+  checkBindings(project);
   return project;
 }
 
@@ -416,6 +420,7 @@ std::string serializeProject(const Project& project) {
     if (project.lineage->strength) lineage["strength"] = *project.lineage->strength;
     root["lineage"] = lineage;
   }
+  live_io::writeLive(project, root);
   construction_io::writeConstruction(project, root, [](const Project& part, ordered_json& out) {
     ordered_json functions = ordered_json::array();
     for (const Function& f : part.functions) functions.push_back(writeFunction(f));

@@ -1,6 +1,8 @@
 #pragma once
 // The whole project as saved in a .gridifs file.
+#include <array>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "anim/keyframe_track.h"
@@ -89,6 +91,24 @@ struct Lineage {
   bool operator==(const Lineage&) const = default;
 };
 
+/// "audio": a sound the project's animation follows (DESIGN §7.13): the file (relative to the
+/// project's folder) and the frequency bands, [low, high) in Hz, whose energies `audio:B`
+/// bindings read.
+struct AudioSettings {
+  std::string file;
+  std::vector<std::array<double, 2>> bands;
+  bool operator==(const AudioSettings&) const = default;
+};
+
+/// One of "bindings": live input or sound driving a number of the project (model/live_binding.h).
+struct Binding {
+  std::string path;    // a parameter path, as tracks name them
+  std::string source;  // "audio:B", "osc:/ADDRESS", "midi:cc:N" or "midi:CH:cc:N"
+  double min = 0.0, max = 1.0;
+  double smooth = 0.0;  // seconds
+  bool operator==(const Binding&) const = default;
+};
+
 struct Project {
   Camera camera;
   RenderSettings render;
@@ -116,6 +136,8 @@ struct Project {
   /// al. §4.3, model/construction_tree.h); absent in projects built without one.
   std::optional<ConstructionTree> construction;
   std::optional<Lineage> lineage;
+  std::optional<AudioSettings> audio;
+  std::vector<Binding> bindings;
   bool operator==(const Project&) const = default;
 };
 

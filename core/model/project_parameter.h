@@ -52,6 +52,11 @@ class ProjectParameter {
   bool dependsOnValues() const { return fragile_; }
   /// "time", which the project at a moment takes from the moment, not from a track.
   bool isTime() const { return where_ == Where::Time; }
+  /// Whether the file holds it as a whole number (a resolution, a seed, an index).
+  bool wholeNumber() const {
+    return reader_ == Reader::Integer || reader_ == Reader::NounInteger || reader_ == Reader::IntegerRange ||
+           reader_ == Reader::Seed;
+  }
 
   /// Whether reading the project file meets this number before `other` (its position in the
   /// file's reading order); equal positions are the same number.

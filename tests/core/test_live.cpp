@@ -1,0 +1,197 @@
+// Bindings and sound (DESIGN §7.13): sources parse, the file holds bindings and refuses bad ones
+// with the parameter's own words, and the band envelope of synthetic sounds is what the
+// definition says: silence gives exactly 0 (the binding's min), a tone in a band its max, and a
+// tone in one band leaves another nearly still.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <vector>
+
+#include "base/errors.h"
+#include "io/project_io.h"
+#include "live/audio_envelope.h"
+#include "live/live_drive.h"
+#include "model/live_binding.h"
+#include "model/project_parameter.h"
+#include "tests/support/sound_file.h"
+
+namespace gridifs {
+namespace {
+
+namespace fs = std::filesystem;
+using test_support::silenceThenTone;
+using test_support::writeWav;
+
+struct Scratch {
+  fs::path path = fs::temp_directory_path() / ("gridifs-live-" + std::to_string(::getpid()));
+  Scratch() { fs::create_directories(path); }
+  ~Scratch() { fs::remove_all(path); }
+};
+
+Project boundProject() {
+  Project p = defaultNewProject();
+  p.animation = AnimationSettings{};
+  p.audio = AudioSettings{"song.wav", {{20, 200}, {200, 2000}, {2000, 12000}}};
+  p.bindings.push_back(Binding{"functions[0].weight", "audio:1", 0.5, 2.0, 0.0});
+  p.bindings.push_back(Binding{"camera.yaw", "osc:/knob1", -180, 180, 0.0});
+  p.bindings.push_back(Binding{"functions[0].resolution[0]", "midi:1:cc:7", 2, 10, 0.05});
+  return p;
+}
+
+TEST(LiveBinding, SourcesParseInEveryFormAndRefuseTheRest) {
+  EXPECT_EQ(parseBindingSource("audio:2")->band, 2);
+  EXPECT_EQ(parseBindingSource("osc:/knob1")->address, "/knob1");
+  const auto any = parseBindingSource("midi:cc:7");
+  ASSERT_TRUE(any);
+  EXPECT_EQ(any->kind, BindingSource::Kind::Midi);
+  EXPECT_EQ(any->channel, 0);
+  EXPECT_EQ(any->controller, 7);
+  const auto channel = parseBindingSource("midi:16:cc:127");
+  ASSERT_TRUE(channel);
+  EXPECT_EQ(channel->channel, 16);
+  EXPECT_EQ(channel->controller, 127);
+  for (const char* bad : {"", "audio:", "audio:x", "osc:knob", "osc:/a b", "midi:cc:128", "midi:0:cc:1", "midi:17:cc:1",
+                          "midi:1:nn:1", "keyboard:a"})
+    EXPECT_FALSE(parseBindingSource(bad)) << bad;
+}
+
+TEST(LiveBinding, TheFileHoldsAudioAndBindings) {
+  const Project p = boundProject();
+  const std::string text = serializeProject(p);
+  EXPECT_NE(text.find("\"bindings\""), std::string::npos);
+  const Project back = parseProject(text);
+  EXPECT_EQ(back.audio, p.audio);
+  EXPECT_EQ(back.bindings, p.bindings);
+  EXPECT_EQ(serializeProject(back), text);
+}
+
+/// The sentence reading `p` gives, or "" when it reads.
+std::string refusal(const Project& p) {
+  try {
+    parseProject(serializeProject(p));
+  } catch (const ModelError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(LiveBinding, BadBindingsAreRefusedOnLoadWithOneSentence) {
+  Project p = boundProject();
+  p.bindings[0].path = "functions[7].weight";
+  EXPECT_EQ(refusal(p), "bindings[0].path: names no parameter of this project (functions[7].weight)");
+  p = boundProject();
+  p.bindings[1].source = "keyboard:a";
+  EXPECT_NE(refusal(p).find("bindings[1].source: expected a source like"), std::string::npos) << refusal(p);
+  p = boundProject();
+  p.bindings[0].source = "audio:3";
+  EXPECT_EQ(refusal(p), "bindings[0].source: audio:3 names band 3, but \"audio\" has 3 bands");
+  p = boundProject();
+  p.audio.reset();
+  EXPECT_EQ(refusal(p), "bindings[0].source: audio:1 needs the project's \"audio\", and it has none");
+  // A range end the parameter does not take gets the parameter's own words.
+  p = boundProject();
+  p.bindings[0].min = -1.0;
+  Project direct = boundProject();
+  std::string own;
+  try {
+    findParameter(direct, *TrackPath::parse("functions[0].weight")).parameter.set(direct, -1.0);
+  } catch (const ModelError& e) {
+    own = e.message();
+  }
+  ASSERT_FALSE(own.empty());
+  EXPECT_EQ(refusal(p), "bindings[0].min: " + own + " (the range of functions[0].weight)");
+  p = boundProject();
+  p.bindings[2].smooth = 61;
+  EXPECT_NE(refusal(p).find("bindings[2].smooth"), std::string::npos) << refusal(p);
+}
+
+TEST(AudioEnvelope, SilenceIsExactlyZeroAndAToneInItsBandIsOne) {
+  Scratch dir;
+  const int rate = 44100;
+  writeWav(dir.path / "tone.wav", silenceThenTone(1.0, 440.0, rate), rate);
+  const AudioEnvelope e = analyseAudio(dir.path / "tone.wav", {{20, 200}, {200, 2000}, {2000, 12000}}, 24.0);
+  ASSERT_EQ(e.frames(), 48);
+  EXPECT_DOUBLE_EQ(e.seconds(), 2.0);
+  for (int b = 0; b < 3; ++b)
+    for (int k = 0; k < 24; ++k) EXPECT_EQ(e.energy[b][k], 0.0f) << "band " << b << " frame " << k;
+  // The tone's band: its largest is 1, and every frame of the steady tone is near it.
+  for (int k = 25; k < 48; ++k) EXPECT_NEAR(e.energy[1][k], 1.0f, 0.02f) << k;
+  EXPECT_EQ(*std::max_element(e.energy[1].begin(), e.energy[1].end()), 1.0f);
+  // Smoothing starts from silence and keeps it exact; it approaches the tone.
+  const std::vector<float> smooth = e.smoothed(1, 0.05);
+  for (int k = 0; k < 24; ++k) EXPECT_EQ(smooth[k], 0.0f);
+  EXPECT_LT(smooth[24], 0.9f);
+  EXPECT_GT(smooth[47], 0.98f);
+}
+
+TEST(AudioEnvelope, AToneInOneBandLeavesTheOthersNearlyStill) {
+  Scratch dir;
+  const int rate = 48000;
+  // One second at 440 Hz, then one at 5 kHz, in stereo (the left channel only: mixed to mono).
+  std::vector<float> stereo;
+  for (int i = 0; i < 2 * rate; ++i) {
+    const double hz = i < rate ? 440.0 : 5000.0;
+    stereo.push_back(float(0.5 * std::sin(2.0 * M_PI * hz * i / rate)));
+    stereo.push_back(0.0f);
+  }
+  writeWav(dir.path / "two.wav", stereo, rate, 2);
+  const AudioEnvelope e = analyseAudio(dir.path / "two.wav", {{200, 2000}, {2000, 12000}}, 25.0);
+  ASSERT_EQ(e.frames(), 50);
+  for (int k = 2; k < 23; ++k) {
+    EXPECT_NEAR(e.energy[0][k], 1.0f, 0.02f) << k;
+    EXPECT_LT(e.energy[1][k], 0.01f) << k;
+  }
+  for (int k = 27; k < 48; ++k) {
+    EXPECT_LT(e.energy[0][k], 0.01f) << k;
+    EXPECT_NEAR(e.energy[1][k], 1.0f, 0.02f) << k;
+  }
+}
+
+TEST(AudioEnvelope, UnreadableSoundsSayWhichFile) {
+  Scratch dir;
+  std::ofstream(dir.path / "noise.wav") << "not a sound";
+  for (const char* name : {"missing.wav", "noise.wav"}) {
+    try {
+      analyseAudio(dir.path / name, {{20, 200}}, 24.0);
+      ADD_FAILURE() << name;
+    } catch (const IoError& e) {
+      EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+    }
+  }
+}
+
+TEST(LiveDrive, BindingsSetTheirNumbersOverTheTracks) {
+  Scratch dir;
+  const int rate = 44100;
+  writeWav(dir.path / "song.wav", silenceThenTone(1.0, 440.0, rate), rate);
+  Project p = boundProject();
+  // A track on the weight: the binding wins over it.
+  p.tracks["functions[0].weight"].keys.push_back(Keyframe{0.0, 1.5});
+  LiveDrive drive = LiveDrive::forProject(p, dir.path);
+  ASSERT_TRUE(drive.envelope());
+  Project silent = p;
+  drive.applyBindings(silent, 0.5);
+  EXPECT_EQ(silent.functions[0].weight, 0.5);  // exactly min
+  Project loud = p;
+  drive.applyBindings(loud, 1.5);
+  EXPECT_NEAR(loud.functions[0].weight, 2.0, 0.03);
+  Project after = p;
+  drive.applyBindings(after, 10.0);  // past the sound: silence
+  EXPECT_EQ(after.functions[0].weight, 0.5);
+  // Live sources keep the project's value until a value comes; a controller on any channel
+  // serves a binding to channel 1; whole numbers round.
+  EXPECT_EQ(silent.camera.yaw, p.camera.yaw);
+  drive.setLive("osc:/knob1", 0.75);
+  drive.setLive("midi:cc:7", 64.0 / 127.0);
+  Project live = p;
+  drive.applyBindings(live, 0.0);
+  EXPECT_DOUBLE_EQ(live.camera.yaw, 90.0);
+  EXPECT_EQ(live.functions[0].resolution[0], 6);
+}
+
+}  // namespace
+}  // namespace gridifs
