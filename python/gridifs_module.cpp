@@ -1,5 +1,6 @@
 // The Python module `gridifs`: projects, parameters, renders, points, volumes and meshes, with the
 // command line's code and sentences. docs/PYTHON.md is its guide; the docstrings are its manual.
+#include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
@@ -9,6 +10,7 @@
 #include "flame/palette.h"
 #include "io/flame_genome.h"
 #include "io/flame_import.h"
+#include "live/audio_envelope.h"
 #include "python/python_explore.h"
 #include "python/python_project.h"
 
@@ -53,6 +55,30 @@ std::unique_ptr<PythonProject> importFlame(const std::string& path, const std::s
   for (const std::string& w : imported.warnings) PyErr_WarnEx(PyExc_UserWarning, (path + ": " + w).c_str(), 1);
   return std::make_unique<PythonProject>(std::move(imported.project), palette.parent_path(),
                                          flame.stem().string() + ".gridifs");
+}
+
+/// The band energies `render --frames` gives "audio:B" bindings (live/audio_envelope.h) as a
+/// bands × frames float32 array.
+py::array_t<float> audioEnvelope(const std::string& path, const std::vector<std::array<double, 2>>& bands, double fps) {
+  using namespace gridifs;
+  if (!(fps > 0.0 && fps <= 1000.0)) throw PythonError("audio_envelope(): fps must be above 0 and at most 1000.");
+  if (bands.empty()) throw PythonError("audio_envelope(): give at least one band [low, high] in Hz.");
+  for (const auto& band : bands)
+    if (!(band[0] >= 0.0 && band[1] > band[0]))
+      throw PythonError("audio_envelope(): a band is [low, high] in Hz with 0 <= low < high.");
+  AudioEnvelope envelope;
+  try {
+    py::gil_scoped_release release;
+    envelope = analyseAudio(path, bands, fps);
+  } catch (const IoError& e) {
+    throw PythonError(cli::oneSentence(e.what()));
+  }
+  const auto frames = py::ssize_t(envelope.frames());
+  py::array_t<float> out({py::ssize_t(bands.size()), frames});
+  auto view = out.mutable_unchecked<2>();
+  for (py::ssize_t b = 0; b < py::ssize_t(bands.size()); ++b)
+    for (py::ssize_t k = 0; k < frames; ++k) view(b, k) = envelope.energy[std::size_t(b)][std::size_t(k)];
+  return out;
 }
 
 }  // namespace
@@ -166,6 +192,11 @@ PYBIND11_MODULE(gridifs, m) {
         "`project`, as `gridifs mutate` draws it. strength in (0, 1]; keep names what stays byte-equal\n"
         "('ops', 'placement', 'colors', 'variations', 'palette', 'camera', 'tracks'); with mate, the\n"
         "child draws its functions from both projects.");
+  m.def("audio_envelope", &audioEnvelope, py::arg("path"), py::arg("bands"), py::kw_only(), py::arg("fps") = 24.0,
+        "audio_envelope(path, bands, fps=24.0) -> bands x frames float32: what \"audio:B\" bindings\n"
+        "read. Frame k's window is the sound from k/fps to (k+1)/fps mixed to mono, Hann-weighted and\n"
+        "zero-padded to a power of two; band [low, high) Hz sums |X(f)|^2 over its bins, divided by\n"
+        "the band's largest over the file (silence: exactly 0).");
   m.def("import_flame", &importFlame, py::arg("path"), py::kw_only(), py::arg("genome") = "0",
         py::arg("palette_file") = "", py::arg("resolution") = 64, py::arg("grids") = false,
         "import_flame(path, genome='0', palette_file='', resolution=64, grids=False) -> Project:\n"
