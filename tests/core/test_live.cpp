@@ -9,6 +9,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <atomic>
+#include <chrono>
+#include <limits>
+#include <thread>
 #include <vector>
 
 #include "base/errors.h"
@@ -17,7 +21,9 @@
 #include "live/live_drive.h"
 #include "model/live_binding.h"
 #include "model/project_parameter.h"
+#include "tests/support/osc_packet.h"
 #include "tests/support/sound_file.h"
+#include "live/osc_listener.h"
 
 namespace gridifs {
 namespace {
@@ -191,6 +197,64 @@ TEST(LiveDrive, BindingsSetTheirNumbersOverTheTracks) {
   drive.applyBindings(live, 0.0);
   EXPECT_DOUBLE_EQ(live.camera.yaw, 90.0);
   EXPECT_EQ(live.functions[0].resolution[0], 6);
+}
+
+TEST(OscListener, DecodesTheTwoFormsAndRefusesTheRest) {
+  using test_support::OscPacket;
+  OscInput in;
+  auto decode = [&](const OscPacket& p) {
+    const std::vector<char> b = p.bytes();
+    return OscListener::decode(b.data(), b.size(), in);
+  };
+  ASSERT_TRUE(decode(OscPacket("/gridifs/set").s("camera.yaw").f(45.0f)));
+  EXPECT_TRUE(in.isSet);
+  EXPECT_EQ(in.path, "camera.yaw");
+  EXPECT_EQ(in.value, 45.0);
+  ASSERT_TRUE(decode(OscPacket("/knob1").f(0.25f)));
+  EXPECT_FALSE(in.isSet);
+  EXPECT_EQ(in.address, "/knob1");
+  EXPECT_EQ(in.value, 0.25);
+  ASSERT_TRUE(decode(OscPacket("/fader").i(1)));
+  EXPECT_EQ(in.value, 1.0);
+  EXPECT_FALSE(decode(OscPacket("/gridifs/set").f(1.0f)));                     // no path
+  EXPECT_FALSE(decode(OscPacket("/gridifs/set").s("camera.yaw").s("x")));      // not a number
+  EXPECT_FALSE(decode(OscPacket("/knob1").f(0.1f).f(0.2f)));                   // two numbers
+  EXPECT_FALSE(decode(OscPacket("/knob1").f(std::numeric_limits<float>::quiet_NaN())));
+  const char garbage[] = "/x\0\0,zz";
+  EXPECT_FALSE(OscListener::decode(garbage, sizeof garbage, in));
+  const char bundle[] = "#bundle\0\0\0\0\0\0\0\0\1";
+  EXPECT_FALSE(OscListener::decode(bundle, sizeof bundle, in));
+}
+
+TEST(OscListener, QueuesRealUdpMessagesOnLocalhostAndCountsMalformedOnes) {
+  using test_support::OscPacket;
+  const int port = test_support::freeUdpPort();
+  std::atomic<int> wakes{0};
+  OscListener listener(port, [&] { ++wakes; });
+  ASSERT_TRUE(test_support::sendUdp(port, OscPacket("/knob1").f(0.5f).bytes()));
+  ASSERT_TRUE(test_support::sendUdp(port, OscPacket("/gridifs/set").s("functions[0].weight").f(2.0f).bytes()));
+  ASSERT_TRUE(test_support::sendUdp(port, std::vector<char>{'n', 'o', 'p', 'e'}));
+  std::vector<OscInput> got;
+  for (int i = 0; i < 200 && (got.size() < 2 || listener.malformed() < 1); ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    for (OscInput& m : listener.take()) got.push_back(std::move(m));
+  }
+  ASSERT_EQ(got.size(), 2u);
+  EXPECT_EQ(got[0].address, "/knob1");
+  EXPECT_TRUE(got[1].isSet);
+  EXPECT_EQ(got[1].path, "functions[0].weight");
+  EXPECT_EQ(listener.received(), 3);
+  EXPECT_EQ(listener.malformed(), 1);
+  EXPECT_EQ(wakes.load(), 3);
+  // The port is taken now: a second listener says so in one sentence.
+  try {
+    OscListener second(port);
+    ADD_FAILURE() << "a second listener on one port";
+  } catch (const IoError& e) {
+    EXPECT_NE(std::string(e.what()).find("cannot listen for OSC on 127.0.0.1:" + std::to_string(port)),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace
