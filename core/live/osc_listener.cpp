@@ -106,11 +106,13 @@ void OscListener::run() {
     if (n < 0) continue;
     received_.fetch_add(1, std::memory_order_relaxed);
     OscInput input;
+    const auto arrived = std::chrono::steady_clock::now();
     if (!decode(buffer.data(), std::size_t(n), input)) {
       malformed_.fetch_add(1, std::memory_order_relaxed);
       if (wake_) wake_();
       continue;
     }
+    input.arrived = arrived;
     {
       const std::lock_guard<std::mutex> hold(lock_);
       if (queue_.size() >= kMaxQueued) queue_.erase(queue_.begin());

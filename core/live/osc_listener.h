@@ -9,6 +9,7 @@
 // Thread-safety: take() and the counters may be called from any thread; the listener's thread
 // only decodes and queues.
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <functional>
 #include <mutex>
@@ -19,10 +20,11 @@
 namespace gridifs {
 
 struct OscInput {
-  std::string address;    // the OSC address
-  std::string path;       // "/gridifs/set": the parameter path
-  double value = 0.0;     // the number sent
-  bool isSet = false;     // "/gridifs/set"
+  std::string address;                            // the OSC address
+  std::string path;                               // "/gridifs/set": the parameter path
+  double value = 0.0;                             // the number sent
+  bool isSet = false;                             // "/gridifs/set"
+  std::chrono::steady_clock::time_point arrived;  // when the datagram was read
 };
 
 class OscListener {

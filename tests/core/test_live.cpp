@@ -4,13 +4,13 @@
 // tone in one band leaves another nearly still.
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <atomic>
-#include <chrono>
 #include <limits>
 #include <thread>
 #include <vector>
@@ -19,11 +19,11 @@
 #include "io/project_io.h"
 #include "live/audio_envelope.h"
 #include "live/live_drive.h"
+#include "live/osc_listener.h"
 #include "model/live_binding.h"
 #include "model/project_parameter.h"
 #include "tests/support/osc_packet.h"
 #include "tests/support/sound_file.h"
-#include "live/osc_listener.h"
 
 namespace gridifs {
 namespace {
@@ -216,9 +216,9 @@ TEST(OscListener, DecodesTheTwoFormsAndRefusesTheRest) {
   EXPECT_EQ(in.value, 0.25);
   ASSERT_TRUE(decode(OscPacket("/fader").i(1)));
   EXPECT_EQ(in.value, 1.0);
-  EXPECT_FALSE(decode(OscPacket("/gridifs/set").f(1.0f)));                     // no path
-  EXPECT_FALSE(decode(OscPacket("/gridifs/set").s("camera.yaw").s("x")));      // not a number
-  EXPECT_FALSE(decode(OscPacket("/knob1").f(0.1f).f(0.2f)));                   // two numbers
+  EXPECT_FALSE(decode(OscPacket("/gridifs/set").f(1.0f)));                 // no path
+  EXPECT_FALSE(decode(OscPacket("/gridifs/set").s("camera.yaw").s("x")));  // not a number
+  EXPECT_FALSE(decode(OscPacket("/knob1").f(0.1f).f(0.2f)));               // two numbers
   EXPECT_FALSE(decode(OscPacket("/knob1").f(std::numeric_limits<float>::quiet_NaN())));
   const char garbage[] = "/x\0\0,zz";
   EXPECT_FALSE(OscListener::decode(garbage, sizeof garbage, in));

@@ -92,6 +92,7 @@ class ModellerState {
   bool showRenderAnimation = false;  // File > Render animation...
   bool showCombine = false;          // File > Combine...
   bool showCamera = false;           // View > Camera: the Camera window (projection, orbit, stereo)
+  bool showLive = false;             // View > Live: bindings, their values and the OSC input
   bool showExplore = false;          // View > Explore (E): toggles the Explore window
   bool exploreRandom = false;        // File > New random world: Explore draws random worlds
   int renderThreads = 1;

@@ -132,6 +132,7 @@ float drawMenuBar(AppCommands& app) {
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("Variants of the open project, random worlds and breeding, as live thumbnails");
     if (ImGui::MenuItem("Camera", nullptr, s.showCamera)) s.showCamera = !s.showCamera;
+    if (ImGui::MenuItem("Live", nullptr, s.showLive)) s.showLive = !s.showLive;
     s.probe.item("menu.camera");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("The camera's projection, orbit, field of view and stereo pair");
     ImGui::Separator();

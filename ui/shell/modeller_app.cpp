@@ -31,6 +31,7 @@
 #include "ui/gl/view_renderer.h"
 #include "ui/panels/condensation_set_panel.h"
 #include "ui/panels/construction_tree_panel.h"
+#include "ui/panels/live_panel.h"
 #include "ui/panels/panels.h"
 #include "ui/panels/timeline_panel.h"
 #include "ui/shell/app_commands.h"
@@ -146,6 +147,7 @@ class ModellerApp {
   SelectionPanelState selectionPanel_;
   MatricesWindowState matricesWindow_;      // Function > Matrices
   ConstructionTreePanel constructionTree_;  // Function > Construction tree
+  LivePanel live_;                          // View > Live, and the OSC input
   std::unique_ptr<AppCommands> commands_;
   std::string iniPath_, title_;
   bool resetLayout_ = false;
@@ -342,6 +344,13 @@ void ModellerApp::buildUi() {
     state_.probe.window("panel.camera");
     ImGui::End();
   }
+  if (state_.showLive) {
+    const float em = ImGui::GetFontSize();
+    ImGui::SetNextWindowSize(ImVec2(em * 30.0f, em * 16.0f), ImGuiCond_FirstUseEver);
+    if (ImGui::Begin("Live", &state_.showLive)) live_.draw(state_);
+    state_.probe.window("panel.live");
+    ImGui::End();
+  }
   drawHelpWindow(state_);
   drawMatricesWindow(state_, edits_, matricesWindow_);
   constructionTree_.draw(state_, edits_);
@@ -411,8 +420,10 @@ void ModellerApp::writeProbe(double frameMs) {
   j["explore"] = explore_.probeJson();
   j["construction"] = constructionTree_.probeJson(state_);
   const Project& project = state_.document.project();
+  j["live"] = live_.probeJson();
   j["camera"] = {{"projection", projectionName(project.camera.projection)},
                  {"fov", project.camera.fov},
+                 {"yaw", project.camera.yaw},
                  {"stereo", project.camera.stereo.has_value()}};
   nlohmann::json tracks = nlohmann::json::object();
   for (const auto& [path, track] : project.tracks) {
@@ -452,6 +463,11 @@ bool ModellerApp::startSession() {
   // Installed before ImGui's callbacks are chained to it (see runModeller): record presses.
   glfwSetWindowUserPointer(window_, &state_);
   files_.checkForRecovery();
+  if (options_.oscPort > 0) {
+    // The listener's thread wakes the event loop, which waits while nothing moves.
+    if (const std::string error = live_.listen(options_.oscPort, [] { glfwPostEmptyEvent(); }); !error.empty())
+      state_.error(error);
+  }
   if (!options_.file.empty())
     files_.openAtStartup(options_.file);
   else
@@ -499,8 +515,10 @@ void ModellerApp::buildFrame(FrameTimes& t) {
 void ModellerApp::applyEdits() {
   const bool hadEdits = !edits_.empty();
   if (const std::string error = edits_.apply(state_.document); !error.empty()) state_.error(error);
+  // Live input after the frame's edits, so that a gesture in progress is not cut by it.
+  const bool live = !state_.document.inGesture() && live_.applyInput(state_);
   state_.clampIndices();
-  if (hadEdits) quietFrames_ = 0;
+  if (hadEdits || live) quietFrames_ = 0;
 }
 
 void ModellerApp::renderViews(FrameTimes& t) {
@@ -512,6 +530,7 @@ void ModellerApp::renderViews(FrameTimes& t) {
   if (options_.stats) glFinish();
   t.preview = Clock::now();
   preview_.render(state_, *renderer_);
+  live_.previewRestarted();  // the preview has taken this frame's project
   if (options_.stats) glFinish();
   t.viewsDone = Clock::now();
   if (options_.stats) {

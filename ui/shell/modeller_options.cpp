@@ -1,5 +1,6 @@
 #include "ui/shell/modeller_options.h"
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 
@@ -49,6 +50,10 @@ std::optional<std::string> parseModellerOptions(int argc, char** argv, ModellerO
     } else if (arg == "--device") {
       if (!next(out.device) || (out.device != "auto" && out.device != "gpu" && out.device != "cpu"))
         return "--device needs auto, gpu or cpu";
+    } else if (arg == "--osc-port") {
+      if (!next(value) || !number(value, n) || n < 1 || n > 65535 || n != std::floor(n))
+        return "--osc-port needs a port number from 1 to 65535";
+      out.oscPort = int(n);
     } else if (arg == "--stats") {
       out.stats = true;
     } else if (!arg.empty() && arg[0] == '-') {

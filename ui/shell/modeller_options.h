@@ -10,6 +10,7 @@
 //   --stats                print frame-time statistics on exit
 //   --ui-scale S           override the monitor content scale (HiDPI checks on any display)
 //   --device D             preview renderer: auto (a hardware GPU when there is one), gpu or cpu
+//   --osc-port P           listen for OSC on 127.0.0.1:P (off without it)
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -28,6 +29,7 @@ struct ModellerOptions {
   int renderThreads = 0;        // 0: hardware threads minus one (the UI keeps a core)
   float uiScale = 0.0f;         // 0: the monitor's content scale
   std::string device = "auto";  // auto | gpu | cpu
+  int oscPort = 0;              // 0: no OSC
 };
 
 /// Parses argv (argv[0] is the program; a leading FILE argument is skipped when it equals

@@ -1,0 +1,64 @@
+// OSC into the running modeller, as a controller app sends it: real UDP datagrams to
+// 127.0.0.1:--osc-port. A bound address moves its parameter (no undo step), /gridifs/set sets any
+// parameter as one undo step, and malformed or out-of-range messages are counted, shown and never
+// applied. The preview restarts on the new value.
+#include <gtest/gtest.h>
+
+#include "io/project_io.h"
+#include "tests/gui/gui_harness.h"
+#include "tests/support/osc_packet.h"
+
+using namespace gridifs::gui_test;
+using gridifs::test_support::OscPacket;
+using gridifs::test_support::sendUdp;
+
+TEST(LiveGui, OscMovesBoundParametersAndSetsAnyWithinItsRange) {
+  if (!haveDisplay()) GTEST_SKIP() << "no X display (run under xvfb-run)";
+  TempFolder home;
+  const fs::path project = exampleCopy(home, "default.gridifs", 300'000);
+  {
+    gridifs::Project p = gridifs::loadProject(project);
+    p.bindings.push_back(gridifs::Binding{"camera.yaw", "osc:/knob1", -180.0, 180.0, 0.0});
+    gridifs::saveProject(p, project);
+  }
+  const int port = gridifs::test_support::freeUdpPort();
+  App app(home, {project.string(), "--osc-port", std::to_string(port)});
+  nlohmann::json probe = app.waitForPreview();
+  ASSERT_EQ(probe["live"]["osc_port"], port) << probe["status"];
+  const std::uint64_t restarts = probe["preview"]["restarts"].get<std::uint64_t>();
+  const auto revision = probe["revision"].get<std::uint64_t>();
+
+  // A knob at three quarters: yaw = -180 + 0.75 · 360, no undo step, and the preview restarts.
+  ASSERT_TRUE(sendUdp(port, OscPacket("/knob1").f(0.75f).bytes()));
+  probe = app.waitFor([](const nlohmann::json& j) { return j["camera"]["yaw"] == 90.0; });
+  EXPECT_EQ(probe["camera"]["yaw"], 90.0);
+  EXPECT_NE(probe["undo"], "Set camera.yaw");
+  probe = app.waitForPreview(restarts);
+  EXPECT_GT(probe["preview"]["restarts"].get<std::uint64_t>(), restarts);
+  EXPECT_GT(probe["revision"].get<std::uint64_t>(), revision);
+  std::printf("OSC message to the preview's restart: %.2f ms\n", probe["live"]["latency_ms"].get<double>());
+
+  // /gridifs/set: any parameter, as one undo step.
+  ASSERT_TRUE(sendUdp(port, OscPacket("/gridifs/set").s("functions[0].weight").f(2.5f).bytes()));
+  probe = app.waitFor([](const nlohmann::json& j) { return j["undo"] == "Set functions[0].weight"; });
+  EXPECT_EQ(probe["undo"], "Set functions[0].weight");
+
+  // Refused and counted, never applied: out of 0..1, out of the parameter's range, an address
+  // nothing listens to, and a datagram that is not OSC.
+  ASSERT_TRUE(sendUdp(port, OscPacket("/knob1").f(1.5f).bytes()));
+  ASSERT_TRUE(sendUdp(port, OscPacket("/gridifs/set").s("functions[0].weight").f(-3.0f).bytes()));
+  ASSERT_TRUE(sendUdp(port, OscPacket("/nobody").f(0.5f).bytes()));
+  ASSERT_TRUE(sendUdp(port, std::vector<char>{'j', 'u', 'n', 'k'}));
+  probe = app.waitFor([](const nlohmann::json& j) { return j["live"]["refused"] == 3 && j["live"]["malformed"] == 1; });
+  EXPECT_EQ(probe["live"]["refused"], 3);
+  EXPECT_EQ(probe["live"]["malformed"], 1);
+  EXPECT_EQ(probe["live"]["received"], 6);
+  EXPECT_EQ(probe["camera"]["yaw"], 90.0);
+
+  saveAndWait(app);
+  const gridifs::Project saved = gridifs::loadProject(project);
+  EXPECT_EQ(saved.camera.yaw, 90.0);
+  EXPECT_EQ(saved.functions[0].weight, 2.5);
+  ASSERT_EQ(saved.bindings.size(), 1u);
+  EXPECT_EQ(saved.bindings[0].source, "osc:/knob1");
+}

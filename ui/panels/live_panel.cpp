@@ -1,0 +1,154 @@
+#include "ui/panels/live_panel.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "base/errors.h"
+#include "edit/parameter_edit.h"
+#include "model/live_binding.h"
+
+namespace gridifs::ui {
+
+std::string LivePanel::listen(int port, std::function<void()> wake) {
+  try {
+    osc_ = std::make_unique<OscListener>(port, std::move(wake));
+  } catch (const IoError& e) {
+    return e.what();
+  }
+  return {};
+}
+
+void LivePanel::refuse(const std::string& why) {
+  ++refused_;
+  lastRefusal_ = why;
+}
+
+bool LivePanel::applyInput(ModellerState& state) {
+  if (!osc_) return false;
+  const std::vector<OscInput> inputs = osc_->take();
+  if (inputs.empty()) return false;
+  bool changed = false;
+  Document& document = state.document;
+  // Of several values for one bound address in a frame, the last one counts: the preview restarts
+  // once per frame anyway.
+  std::map<std::size_t, double> bound;  // binding index → value to set
+  for (const OscInput& in : inputs) {
+    if (in.isSet) {
+      try {
+        document.apply(SetParameter{in.path, in.value});
+        ++applied_;
+        changed = true;
+      } catch (const ModelError& e) {
+        refuse("/gridifs/set " + in.path + ": " + e.what());
+      }
+      continue;
+    }
+    const std::string source = "osc:" + in.address;
+    const Project& project = document.project();
+    bool listened = false;
+    for (std::size_t i = 0; i < project.bindings.size(); ++i)
+      if (project.bindings[i].source == source) listened = true;
+    if (!listened) {
+      refuse(in.address + ": no binding listens to this address");
+      continue;
+    }
+    if (!(in.value >= 0.0 && in.value <= 1.0)) {
+      refuse(in.address + ": bound addresses take values from 0 to 1, not " + std::to_string(in.value));
+      continue;
+    }
+    lastValues_[source] = in.value;
+    for (std::size_t i = 0; i < project.bindings.size(); ++i)
+      if (project.bindings[i].source == source) bound[i] = in.value;
+    ++applied_;
+  }
+  if (changed || !bound.empty()) pendingArrival_ = inputs.front().arrived;
+  for (const auto& [index, v] : bound) {
+    const Project& project = document.project();
+    if (index >= project.bindings.size()) continue;
+    try {
+      const ProjectParameter parameter = boundParameter(project, index);
+      const Binding& b = project.bindings[index];
+      document.applyUnrecorded(SetParameter{b.path, boundValue(b, parameter, v)});
+      changed = true;
+    } catch (const ModelError& e) {
+      refuse(project.bindings[index].source + ": " + e.what());
+    }
+  }
+  return changed;
+}
+
+void LivePanel::draw(ModellerState& state) {
+  const Project& project = state.document.project();
+  if (osc_)
+    ImGui::Text("OSC: listening on 127.0.0.1:%d", osc_->port());
+  else
+    ImGui::TextDisabled("OSC: off (start the modeller with --osc-port P)");
+  if (osc_) {
+    ImGui::Text("%lld received, %lld applied, %lld malformed, %lld refused", static_cast<long long>(osc_->received()),
+                static_cast<long long>(applied_), static_cast<long long>(osc_->malformed()),
+                static_cast<long long>(refused_));
+    if (latencySamples_ > 0)
+      ImGui::Text("From a message to the preview's restart: %.1f ms (largest %.1f ms)", lastLatencyMs_,
+                  largestLatencyMs_);
+    if (!lastRefusal_.empty()) {
+      ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.55f, 0.45f, 1.0f));
+      ImGui::TextWrapped("Last refused: %s", lastRefusal_.c_str());
+      ImGui::PopStyleColor();
+    }
+  }
+  ImGui::Separator();
+  if (project.bindings.empty()) {
+    ImGui::TextWrapped("No bindings. A project's \"bindings\" drive its numbers from sound, OSC or MIDI.");
+    return;
+  }
+  if (ImGui::BeginTable("bindings", 4, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
+    ImGui::TableSetupColumn("Parameter");
+    ImGui::TableSetupColumn("Source");
+    ImGui::TableSetupColumn("Range");
+    ImGui::TableSetupColumn("Value");
+    ImGui::TableHeadersRow();
+    for (const Binding& b : project.bindings) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(b.path.c_str());
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(b.source.c_str());
+      ImGui::TableNextColumn();
+      ImGui::Text("%.4g .. %.4g", b.min, b.max);
+      ImGui::TableNextColumn();
+      try {
+        ImGui::Text("%.4g", parameterValue(project, b.path));
+      } catch (const ModelError&) {
+        ImGui::TextDisabled("(gone)");
+      }
+    }
+    ImGui::EndTable();
+  }
+}
+
+void LivePanel::previewRestarted() {
+  if (!pendingArrival_) return;
+  lastLatencyMs_ =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - *pendingArrival_).count();
+  largestLatencyMs_ = std::max(largestLatencyMs_, lastLatencyMs_);
+  ++latencySamples_;
+  pendingArrival_.reset();
+}
+
+nlohmann::json LivePanel::probeJson() const {
+  nlohmann::json j;
+  j["osc_port"] = osc_ ? osc_->port() : 0;
+  j["received"] = osc_ ? osc_->received() : 0;
+  j["malformed"] = osc_ ? osc_->malformed() : 0;
+  j["applied"] = applied_;
+  j["refused"] = refused_;
+  j["last_refusal"] = lastRefusal_;
+  j["latency_ms"] = lastLatencyMs_;
+  j["largest_latency_ms"] = largestLatencyMs_;
+  j["latency_samples"] = latencySamples_;
+  return j;
+}
+
+}  // namespace gridifs::ui

@@ -1,0 +1,56 @@
+#pragma once
+// Live control in the modeller (DESIGN §7.13): the OSC input (`--osc-port P`, 127.0.0.1 only)
+// applied between frames, and View › Live, which lists the project's bindings with their current
+// values and counts what came in and what was refused.
+//
+// What OSC does to the project:
+// - "/gridifs/set ,sf PATH VALUE" sets any parameter within its range as one undo step ("Set
+//   PATH"), as Python's set() does;
+// - a number in 0..1 at an address some binding listens to ("osc:ADDRESS") moves the bound
+//   parameters to min + v·(max − min) without undo steps, as the playhead does: a performance,
+//   not an edit.
+// A malformed message, one at an address nothing listens to, a bound value outside 0..1 or a set
+// the parameter refuses is counted and its reason shown, and never applied.
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+#include "live/osc_listener.h"
+#include "ui/base/modeller_state.h"
+
+namespace gridifs::ui {
+
+class LivePanel {
+ public:
+  /// Starts listening on 127.0.0.1:`port`; `wake` wakes the UI's event loop. Returns the problem
+  /// in one sentence when the port cannot be had.
+  std::string listen(int port, std::function<void()> wake);
+  /// Applies the OSC messages that came since the last frame; true when the project changed.
+  bool applyInput(ModellerState& state);
+  /// The Live window's content.
+  void draw(ModellerState& state);
+  nlohmann::json probeJson() const;
+  /// Called once the preview has taken the frame's project: the time from the oldest message
+  /// applied this frame arriving to now is the input's latency (View › Live and the probe show
+  /// the last and the largest).
+  void previewRestarted();
+
+ private:
+  /// Refuses a message: counted, and its reason kept for the window.
+  void refuse(const std::string& why);
+
+  std::unique_ptr<OscListener> osc_;
+  std::int64_t applied_ = 0, refused_ = 0;
+  std::string lastRefusal_;
+  std::map<std::string, double> lastValues_;  // by source: the last value in 0..1
+  std::optional<std::chrono::steady_clock::time_point> pendingArrival_;
+  double lastLatencyMs_ = 0.0, largestLatencyMs_ = 0.0;
+  std::int64_t latencySamples_ = 0;
+};
+
+}  // namespace gridifs::ui
