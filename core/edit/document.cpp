@@ -94,6 +94,18 @@ void Document::applyUnrecorded(const ProjectEdit& edit) {
   editUnrecorded([&edit](Project& p) { applyEdit(p, edit); });
 }
 
+void Document::applyLiveValue(const ProjectEdit& edit) {
+  Rule rule = std::move(rule_);
+  rule_ = nullptr;
+  try {
+    applyUnrecorded(edit);
+  } catch (...) {
+    rule_ = std::move(rule);
+    throw;
+  }
+  rule_ = std::move(rule);
+}
+
 void Document::updateGesture(const ProjectEdit& edit) {
   updateGesture([&edit](Project& p) { applyEdit(p, edit); });
 }

@@ -65,6 +65,9 @@ class Document {
   void apply(const std::string& label, const ProjectEdit& edit);
   /// A named edit without an undo step, like editUnrecorded() (the playhead's SetTime).
   void applyUnrecorded(const ProjectEdit& edit);
+  /// A value from live input or sound (model/live_binding.h): like applyUnrecorded(), but outside
+  /// the keyframing rule, so a bound number moves over its track without being keyed.
+  void applyLiveValue(const ProjectEdit& edit);
 
   /// A rule applied to every change after it is made and before it is validated, given the
   /// project before and after (the modeller's keyframing: model/project_time.h

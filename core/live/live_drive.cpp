@@ -6,18 +6,23 @@
 namespace gridifs {
 
 LiveDrive LiveDrive::forProject(const Project& project, const std::filesystem::path& folder) {
-  LiveDrive drive;
-  drive.curves_.resize(project.bindings.size());
   bool audio = false;
   for (const Binding& b : project.bindings) {
     const auto source = parseBindingSource(b.source);
     audio |= source && source->kind == BindingSource::Kind::Audio;
   }
-  if (!audio || !project.audio) return drive;
+  if (!audio || !project.audio) return fromEnvelope(project, std::nullopt);
   std::filesystem::path file = project.audio->file;
   if (file.is_relative()) file = folder / file;
   const double fps = project.animation.value_or(AnimationSettings{}).fps;
-  drive.envelope_ = analyseAudio(file, project.audio->bands, fps);
+  return fromEnvelope(project, analyseAudio(file, project.audio->bands, fps));
+}
+
+LiveDrive LiveDrive::fromEnvelope(const Project& project, std::optional<AudioEnvelope> envelope) {
+  LiveDrive drive;
+  drive.curves_.resize(project.bindings.size());
+  drive.envelope_ = std::move(envelope);
+  if (!drive.envelope_) return drive;
   for (std::size_t i = 0; i < project.bindings.size(); ++i) {
     const auto source = parseBindingSource(project.bindings[i].source);
     if (source && source->kind == BindingSource::Kind::Audio && source->band < int(drive.envelope_->energy.size()))

@@ -22,6 +22,9 @@ class LiveDrive {
   /// Analyses the sound of `project`'s "audio" (its file relative to `folder`) when an audio
   /// binding reads it, at the project's frame rate. Throws IoError when the sound cannot be read.
   static LiveDrive forProject(const Project& project, const std::filesystem::path& folder);
+  /// The same from a sound already analysed for `project`'s audio (or none): only the bindings'
+  /// curves are made.
+  static LiveDrive fromEnvelope(const Project& project, std::optional<AudioEnvelope> envelope);
 
   /// The sound's analysis, when the project has audio bindings.
   const std::optional<AudioEnvelope>& envelope() const { return envelope_; }

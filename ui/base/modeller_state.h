@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "edit/document.h"
+#include "live/audio_envelope.h"
 #include "model/function_ref.h"
 #include "model/grid.h"
 #include "render/chaos_renderer.h"
@@ -93,8 +94,11 @@ class ModellerState {
   bool showCombine = false;          // File > Combine...
   bool showCamera = false;           // View > Camera: the Camera window (projection, orbit, stereo)
   bool showLive = false;             // View > Live: bindings, their values and the OSC input
-  bool showExplore = false;          // View > Explore (E): toggles the Explore window
-  bool exploreRandom = false;        // File > New random world: Explore draws random worlds
+  /// The project's sound as analysed for its bindings (live/audio_envelope.h), for the timeline's
+  /// waveform; null when the project has none (ui/panels/live_panel.cpp keeps it current).
+  std::shared_ptr<const AudioEnvelope> sound;
+  bool showExplore = false;    // View > Explore (E): toggles the Explore window
+  bool exploreRandom = false;  // File > New random world: Explore draws random worlds
   int renderThreads = 1;
   RenderStats previewStats;
   std::string previewDevice = "cpu";  // which renderer fills the preview ("cpu", "gpu (...)")

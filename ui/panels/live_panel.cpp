@@ -25,11 +25,67 @@ void LivePanel::refuse(const std::string& why) {
   lastRefusal_ = why;
 }
 
-bool LivePanel::applyInput(ModellerState& state) {
-  if (!osc_) return false;
-  const std::vector<OscInput> inputs = osc_->take();
-  if (inputs.empty()) return false;
+void LivePanel::refreshSound(ModellerState& state) {
+  const Project& project = state.document.project();
+  const double fps = project.animation.value_or(AnimationSettings{}).fps;
+  const std::filesystem::path folder = state.document.path().parent_path();
+  const bool soundChanged = project.audio != soundFor_ || fps != soundFps_ || folder != soundFolder_;
+  if (soundChanged) {
+    soundFor_ = project.audio;
+    soundFps_ = fps;
+    soundFolder_ = folder;
+    state.sound.reset();
+    std::optional<AudioEnvelope> envelope;
+    if (project.audio) {
+      std::filesystem::path file = project.audio->file;
+      if (file.is_relative()) file = (folder.empty() ? std::filesystem::path(".") : folder) / file;
+      try {
+        envelope = analyseAudio(file, project.audio->bands, fps);
+        state.sound = std::make_shared<const AudioEnvelope>(*envelope);
+      } catch (const IoError& e) {
+        state.error(e.what());
+      }
+    }
+    drive_ = LiveDrive::fromEnvelope(project, std::move(envelope));
+    driveFor_ = project.bindings;
+    followedTime_.reset();
+  } else if (project.bindings != driveFor_) {
+    std::optional<AudioEnvelope> envelope;
+    if (state.sound) envelope = *state.sound;
+    drive_ = LiveDrive::fromEnvelope(project, std::move(envelope));
+    driveFor_ = project.bindings;
+    followedTime_.reset();
+  }
+}
+
+bool LivePanel::followPlayhead(ModellerState& state) {
+  const Project& project = state.document.project();
+  if (project.bindings.empty() || followedTime_ == project.time) return false;
+  followedTime_ = project.time;
   bool changed = false;
+  for (std::size_t i = 0; i < project.bindings.size(); ++i) {
+    const Project& now = state.document.project();
+    if (i >= now.bindings.size()) break;
+    const std::optional<double> v = drive_.valueAt(now, i, now.time);
+    if (!v) continue;
+    try {
+      const ProjectParameter parameter = boundParameter(now, i);
+      const Binding& b = now.bindings[i];
+      state.document.applyLiveValue(SetParameter{b.path, boundValue(b, parameter, *v)});
+      changed = true;
+    } catch (const ModelError& e) {
+      refuse(now.bindings[i].source + ": " + e.what());
+    }
+  }
+  return changed;
+}
+
+bool LivePanel::applyInput(ModellerState& state) {
+  refreshSound(state);
+  bool changed = followPlayhead(state);
+  if (!osc_) return changed;
+  const std::vector<OscInput> inputs = osc_->take();
+  if (inputs.empty()) return changed;
   Document& document = state.document;
   // Of several values for one bound address in a frame, the last one counts: the preview restarts
   // once per frame anyway.
@@ -59,6 +115,7 @@ bool LivePanel::applyInput(ModellerState& state) {
       continue;
     }
     lastValues_[source] = in.value;
+    drive_.setLive(source, in.value);
     for (std::size_t i = 0; i < project.bindings.size(); ++i)
       if (project.bindings[i].source == source) bound[i] = in.value;
     ++applied_;
@@ -70,7 +127,7 @@ bool LivePanel::applyInput(ModellerState& state) {
     try {
       const ProjectParameter parameter = boundParameter(project, index);
       const Binding& b = project.bindings[index];
-      document.applyUnrecorded(SetParameter{b.path, boundValue(b, parameter, v)});
+      document.applyLiveValue(SetParameter{b.path, boundValue(b, parameter, v)});
       changed = true;
     } catch (const ModelError& e) {
       refuse(project.bindings[index].source + ": " + e.what());

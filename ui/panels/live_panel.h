@@ -13,13 +13,16 @@
 // the parameter refuses is counted and its reason shown, and never applied.
 #include <chrono>
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "live/live_drive.h"
 #include "live/osc_listener.h"
 #include "ui/base/modeller_state.h"
 
@@ -43,12 +46,25 @@ class LivePanel {
  private:
   /// Refuses a message: counted, and its reason kept for the window.
   void refuse(const std::string& why);
+  /// Analyses the project's sound again when its audio, frame rate or folder changed, and makes
+  /// the bindings' curves again when they changed.
+  void refreshSound(ModellerState& state);
+  /// Sets the sound-bound numbers to their values at the playhead, and the live-bound ones to
+  /// their last values (a time change has just put their tracks' values back).
+  bool followPlayhead(ModellerState& state);
 
   std::unique_ptr<OscListener> osc_;
   std::int64_t applied_ = 0, refused_ = 0;
   std::string lastRefusal_;
   std::map<std::string, double> lastValues_;  // by source: the last value in 0..1
   std::optional<std::chrono::steady_clock::time_point> pendingArrival_;
+  // The sound: what it was analysed for, and the drive made from it for the bindings.
+  std::optional<AudioSettings> soundFor_;
+  double soundFps_ = 0.0;
+  std::filesystem::path soundFolder_;
+  std::vector<Binding> driveFor_;
+  LiveDrive drive_;
+  std::optional<double> followedTime_;
   double lastLatencyMs_ = 0.0, largestLatencyMs_ = 0.0;
   std::int64_t latencySamples_ = 0;
 };

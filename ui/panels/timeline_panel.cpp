@@ -64,6 +64,24 @@ void scrubBar(ModellerState& state, EditQueue& edits, const AnimationSettings& a
 
   ImDrawList* draw = ImGui::GetWindowDrawList();
   draw->AddRectFilled(p0, ImVec2(p0.x + width, p0.y + height), IM_COL32(30, 32, 38, 255), 3.0f);
+  // The project's sound under the ticks: each column's loudest peaks over the frames it covers.
+  if (state.sound && state.sound->frames() > 0) {
+    const AudioEnvelope& sound = *state.sound;
+    const float mid = p0.y + height * 0.5f, half = height * 0.42f;
+    for (float x = x0; x < x1; x += 1.0f) {
+      const double t0 = (double(first) + double(x - x0) / double(x1 - x0) * double(last - first)) / a.fps;
+      const double t1 = (double(first) + double(x + 1.0f - x0) / double(x1 - x0) * double(last - first)) / a.fps;
+      std::int64_t k0 = envelopeFrameAt(t0, sound.fps), k1 = std::max(k0, envelopeFrameAt(t1, sound.fps) - 1);
+      if (k0 < 0 || k0 >= sound.frames()) continue;
+      k1 = std::min(k1, sound.frames() - 1);
+      float lo = 0.0f, hi = 0.0f;
+      for (std::int64_t k = k0; k <= k1; ++k) {
+        lo = std::min(lo, sound.peaks[std::size_t(k)][0]);
+        hi = std::max(hi, sound.peaks[std::size_t(k)][1]);
+      }
+      draw->AddLine(ImVec2(x, mid - hi * half), ImVec2(x, mid - lo * half + 1.0f), IM_COL32(70, 120, 105, 255));
+    }
+  }
   // Frame ticks: every frame when there is room, else every 5th, 10th, ...
   long step = 1;
   while (float(step) * (x1 - x0) / float(last - first) < 6.0f && step < 100000000) step *= (step % 2 == 1 ? 5 : 2);

@@ -132,9 +132,12 @@ float drawMenuBar(AppCommands& app) {
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("Variants of the open project, random worlds and breeding, as live thumbnails");
     if (ImGui::MenuItem("Camera", nullptr, s.showCamera)) s.showCamera = !s.showCamera;
-    if (ImGui::MenuItem("Live", nullptr, s.showLive)) s.showLive = !s.showLive;
     s.probe.item("menu.camera");
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("The camera's projection, orbit, field of view and stereo pair");
+    if (ImGui::MenuItem("Live", nullptr, s.showLive)) s.showLive = !s.showLive;
+    s.probe.item("menu.live");
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("The bindings that sound, OSC and MIDI drive, their values, and what came in");
     ImGui::Separator();
     static const char* names[] = {"Top", "Side", "Front", "User"};
     static const char* keys[] = {"1", "2", "3", "4"};
