@@ -4,7 +4,10 @@
 // applied. The preview restarts on the new value.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "io/project_io.h"
+#include "live/live_drive.h"
 #include "tests/gui/gui_harness.h"
 #include "tests/support/osc_packet.h"
 
@@ -61,4 +64,39 @@ TEST(LiveGui, OscMovesBoundParametersAndSetsAnyWithinItsRange) {
   EXPECT_EQ(saved.functions[0].weight, 2.5);
   ASSERT_EQ(saved.bindings.size(), 1u);
   EXPECT_EQ(saved.bindings[0].source, "osc:/knob1");
+}
+
+TEST(LiveGui, SoundBoundNumbersFollowThePlayheadWithoutUndoSteps) {
+  if (!haveDisplay()) GTEST_SKIP() << "no X display (run under xvfb-run)";
+  TempFolder home;
+  const fs::path example = fs::path(GRIDIFS_ASSETS) / "live";
+  const fs::path project = home.path / "dancing_twist.gridifs";
+  {
+    gridifs::Project p = gridifs::loadProject(example / "dancing_twist.gridifs");
+    p.render.samples = 200'000;
+    gridifs::saveProject(p, project);
+    fs::copy_file(example / "beat.wav", home.path / "beat.wav");
+  }
+  const gridifs::Project loaded = gridifs::loadProject(project);
+  const gridifs::LiveDrive drive = gridifs::LiveDrive::forProject(loaded, home.path);
+  App app(home, {project.string()});
+  nlohmann::json probe = app.waitForPreview();
+  const std::string undo = probe["undo"];
+  // Scrub to about a third of the timeline: the yaw (bound to the chord's band) is the binding's
+  // value at the frame the playhead landed on.
+  const Rect scrub = rectOf(probe, "timeline.scrub");
+  clickAt(scrub.x + scrub.w / 3, scrub.y + scrub.h / 2);
+  probe = app.waitFor([](const nlohmann::json& j) { return j["timeline"]["time"].get<double>() > 1.0; });
+  const double t = probe["timeline"]["time"];
+  ASSERT_GT(t, 1.0);
+  const auto v = drive.valueAt(loaded, 4, t);
+  ASSERT_TRUE(v);
+  ASSERT_EQ(loaded.bindings[4].path, "camera.yaw");
+  const double expected = 10.0 + *v * 60.0;
+  probe = app.waitFor([&](const nlohmann::json& j) {
+    return std::abs(j["camera"]["yaw"].get<double>() - expected) < 1e-9;
+  });
+  EXPECT_NEAR(probe["camera"]["yaw"].get<double>(), expected, 1e-9) << "at t = " << t;
+  EXPECT_NE(probe["camera"]["yaw"].get<double>(), loaded.camera.yaw);
+  EXPECT_EQ(probe["undo"], undo) << "following the sound is no edit";
 }
