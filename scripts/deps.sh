@@ -11,7 +11,7 @@ GRIDIFS_RUN_PACKAGES=(
   libtbb-dev libpugixml-dev libopenvdb-dev libboost-iostreams-dev libnanoflann-dev zlib1g-dev
   fonts-dejavu-core
   # Sound that animations follow (libsndfile reads it, FFTW splits it into bands) and OSC input.
-  libsndfile1-dev libfftw3-dev liblo-dev
+  libsndfile1-dev libfftw3-dev liblo-dev librtmidi-dev
   # flam3's palettes, which flame projects and imported .flame files name by number.
   flam3-palette
 )
@@ -27,6 +27,8 @@ GRIDIFS_TEST_PACKAGES=(
   clang libclang-rt-14-dev clang-format
   # scripts/slurm-local: a one-node Slurm for the render-job tests; ss picks its free ports.
   slurm-wlm munge iproute2
+  # MIDI through a real transport: JACK's server with its dummy driver (no sound hardware).
+  jackd2
   # The Python module (pybind11 against the system Python 3.11 that Debian's Blender runs), its
   # python tier, the examples' plots, and the blender tier's Blender.
   pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib blender

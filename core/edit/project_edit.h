@@ -12,6 +12,7 @@
 #include <string>
 #include <variant>
 
+#include "edit/binding_edits.h"
 #include "edit/construction_edits.h"
 #include "edit/field_layer_edits.h"
 #include "edit/function_edits.h"
@@ -64,6 +65,8 @@ using ProjectEdit = std::variant<
     AddConstructionLeaf, GroupConstructionNodes, SetConstructionOp, RemoveConstructionNode, ReloadConstructionLeaves,
     // any number by its parameter path (edit/parameter_edit.h)
     SetParameter,
+    // live bindings and recorded takes (edit/binding_edits.h)
+    AddBinding, RemoveBinding, RecordTake,
     // the whole project
     ReplaceProject>;
 

@@ -93,10 +93,59 @@ TEST(LiveGui, SoundBoundNumbersFollowThePlayheadWithoutUndoSteps) {
   ASSERT_TRUE(v);
   ASSERT_EQ(loaded.bindings[4].path, "camera.yaw");
   const double expected = 10.0 + *v * 60.0;
-  probe = app.waitFor([&](const nlohmann::json& j) {
-    return std::abs(j["camera"]["yaw"].get<double>() - expected) < 1e-9;
-  });
+  probe = app.waitFor(
+      [&](const nlohmann::json& j) { return std::abs(j["camera"]["yaw"].get<double>() - expected) < 1e-9; });
   EXPECT_NEAR(probe["camera"]["yaw"].get<double>(), expected, 1e-9) << "at t = " << t;
   EXPECT_NE(probe["camera"]["yaw"].get<double>(), loaded.camera.yaw);
   EXPECT_EQ(probe["undo"], undo) << "following the sound is no edit";
+}
+
+TEST(LiveGui, ATakeTurnsLiveInputIntoKeysAsOneUndoStep) {
+  if (!haveDisplay()) GTEST_SKIP() << "no X display (run under xvfb-run)";
+  TempFolder home;
+  const fs::path project = exampleCopy(home, "default.gridifs", 300'000);
+  {
+    gridifs::Project p = gridifs::loadProject(project);
+    p.bindings.push_back(gridifs::Binding{"camera.yaw", "osc:/knob1", -180.0, 180.0, 0.0});
+    gridifs::saveProject(p, project);
+  }
+  const int port = gridifs::test_support::freeUdpPort();
+  App app(home, {project.string(), "--osc-port", std::to_string(port)});
+  nlohmann::json probe = app.waitForPreview();
+  focusWindow();
+  clickRect(rectOf(probe, "menu.view"));
+  const auto live = app.waitForStableRect("menu.live");
+  ASSERT_TRUE(live) << "the View menu opens";
+  clickRect(*live);
+  const auto record = app.waitForStableRect("live.record");
+  ASSERT_TRUE(record) << "View > Live opens";
+  clickRect(*record);
+  probe = app.waitFor([](const nlohmann::json& j) { return j["live"]["recording"] == true; });
+  ASSERT_TRUE(probe["live"]["recording"].get<bool>());
+
+  // A value at the start, then the playhead moved (the knob held), then a new value there.
+  ASSERT_TRUE(sendUdp(port, OscPacket("/knob1").f(0.25f).bytes()));
+  app.waitFor([](const nlohmann::json& j) { return j["camera"]["yaw"] == -90.0; });
+  const Rect scrub = rectOf(probe, "timeline.scrub");
+  clickAt(scrub.x + scrub.w / 2, scrub.y + scrub.h / 2);
+  probe = app.waitFor([](const nlohmann::json& j) { return j["timeline"]["time"].get<double>() > 0.5; });
+  const double t = probe["timeline"]["time"];
+  ASSERT_GT(t, 0.5);
+  ASSERT_TRUE(sendUdp(port, OscPacket("/knob1").f(0.75f).bytes()));
+  app.waitFor([](const nlohmann::json& j) { return j["camera"]["yaw"] == 90.0; });
+  clickRect(rectOf(app.probe(), "live.record"));  // Stop (the window's lines above it may have grown)
+  probe = app.waitFor([](const nlohmann::json& j) { return j["undo"] == "Record take"; });
+  ASSERT_EQ(probe["undo"], "Record take") << probe["live"].dump() << " " << probe["timeline"]["tracks"].dump() << " "
+                                          << probe["rects"]["live.record"].dump() << " " << probe["status"];
+  const auto& keys = probe["timeline"]["tracks"]["camera.yaw"];
+  ASSERT_EQ(keys.size(), 2u) << keys.dump();
+  EXPECT_EQ(keys[0][0], 0.0);
+  EXPECT_EQ(keys[0][1], -90.0);
+  EXPECT_NEAR(keys[1][0].get<double>(), t, 1e-9);
+  EXPECT_EQ(keys[1][1], 90.0);
+
+  // One undo step takes the whole take back.
+  pressKeys("ctrl+z");
+  probe = app.waitFor([](const nlohmann::json& j) { return !j["timeline"]["tracks"].contains("camera.yaw"); });
+  EXPECT_FALSE(probe["timeline"]["tracks"].contains("camera.yaw"));
 }

@@ -97,6 +97,9 @@ class ModellerState {
   /// The project's sound as analysed for its bindings (live/audio_envelope.h), for the timeline's
   /// waveform; null when the project has none (ui/panels/live_panel.cpp keeps it current).
   std::shared_ptr<const AudioEnvelope> sound;
+  /// A key button's "Bind…": the parameter path the next moved control (MIDI, or an OSC address
+  /// nothing listens to yet) is bound to; empty when not learning.
+  std::string learnPath;
   bool showExplore = false;    // View > Explore (E): toggles the Explore window
   bool exploreRandom = false;  // File > New random world: Explore draws random worlds
   int renderThreads = 1;

@@ -78,9 +78,25 @@ void keyButton(ModellerState& state, EditQueue& edits, const std::string& id, co
   }
   if (hovered) {
     state.contextHelp = keyState == KeyState::KeyHere
-                            ? "Remove the key at the current time"
-                            : "Set a key at the current time (the parameter then follows the timeline)";
+                            ? "Remove the key at the current time; right-click to bind it to a controller"
+                            : "Set a key at the current time (the parameter then follows the timeline); "
+                              "right-click to bind it to a controller";
   }
+  // Right-click: bind the number to a controller, learnt from the next one moved.
+  ImGui::PushID(id.c_str());
+  if (ImGui::BeginPopupContextItem("##keymenu")) {
+    const Project& project = state.document.project();
+    for (const KeyedNumber& n : numbers) {
+      const std::string label = numbers.size() == 1 ? "Bind... (move a control)" : "Bind " + n.path + "...";
+      if (ImGui::MenuItem(label.c_str())) state.learnPath = n.path;
+      state.probe.item(numbers.size() == 1 ? "key.bind" : "key.bind." + n.path);
+      for (const Binding& b : project.bindings)
+        if (b.path == n.path && ImGui::MenuItem(("Unbind " + b.source).c_str()))
+          edits.commit(RemoveBinding{b.path, b.source});
+    }
+    ImGui::EndPopup();
+  }
+  ImGui::PopID();
   if (clicked) {
     if (keyState == KeyState::KeyHere) {
       RemoveKeys remove;

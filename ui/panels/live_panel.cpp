@@ -5,9 +5,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "anim/track_path.h"
 #include "base/errors.h"
+#include "edit/binding_edits.h"
 #include "edit/parameter_edit.h"
 #include "model/live_binding.h"
+#include "model/validation.h"
 
 namespace gridifs::ui {
 
@@ -18,6 +21,111 @@ std::string LivePanel::listen(int port, std::function<void()> wake) {
     return e.what();
   }
   return {};
+}
+
+std::string LivePanel::openMidi(std::function<void()> wake) {
+  midiTried_ = true;
+  wake_ = wake;
+  try {
+    midi_ = std::make_unique<MidiInput>(std::move(wake));
+    midiProblem_.clear();
+  } catch (const IoError& e) {
+    midiProblem_ = e.what();
+  }
+  return midiProblem_;
+}
+
+void LivePanel::learn(ModellerState& state, const std::string& source) {
+  const std::string path = state.learnPath;
+  state.learnPath.clear();
+  try {
+    const Project& project = state.document.project();
+    const FoundParameter found = findParameter(project, *TrackPath::parse(path));
+    if (found.lookup != ParameterLookup::Number) throw ModelError(path, "is no number to bind");
+    // The slider's range, or one either side of the value where the number has none.
+    ParameterSpan span = found.parameter.span();
+    const double now = found.parameter.get(project);
+    if (!(span.hi > span.lo)) span = {now - 1.0, now + 1.0};
+    // A range end the project refuses as a whole (a flat camera's field of view stops at 170°
+    // though the number reads up to 360) is pulled in to the farthest value it accepts.
+    const auto accepted = [&](double v) {
+      try {
+        Project probe = project;
+        found.parameter.set(probe, v);
+        validateProject(probe);
+        return true;
+      } catch (const ModelError&) {
+        return false;
+      }
+    };
+    for (double* end : {&span.lo, &span.hi}) {
+      if (accepted(*end)) continue;
+      double good = now, bad = *end;
+      for (int i = 0; i < 40; ++i) {
+        const double mid = 0.5 * (good + bad);
+        (accepted(mid) ? good : bad) = mid;
+      }
+      // A round end where one is accepted (170, not 169.99999999999997).
+      const double rounded = std::round(good * 1e6) / 1e6;
+      *end = found.parameter.wholeNumber() ? std::round(good) : accepted(rounded) ? rounded : good;
+    }
+    state.document.apply(AddBinding{Binding{path, source, span.lo, span.hi, 0.0}});
+    state.statusText = "Bound " + path + " to " + source;
+    state.statusIsError = false;
+  } catch (const ModelError& e) {
+    state.error(std::string("cannot bind: ") + e.what());
+  }
+}
+
+void LivePanel::applyMidi(ModellerState& state, std::map<std::size_t, double>& bound) {
+  if (!midi_) return;
+  for (const MidiControl& c : midi_->take()) {
+    const std::string any = "midi:cc:" + std::to_string(c.controller);
+    const std::string channel = "midi:" + std::to_string(c.channel) + ":cc:" + std::to_string(c.controller);
+    const double v = double(c.value) / 127.0;
+    if (!state.learnPath.empty()) {
+      learn(state, channel);
+      continue;
+    }
+    lastValues_[channel] = v;
+    drive_.setLive(channel, v);
+    drive_.setLive(any, v);
+    const Project& project = state.document.project();
+    bool listened = false;
+    for (std::size_t i = 0; i < project.bindings.size(); ++i)
+      if (project.bindings[i].source == any || project.bindings[i].source == channel) {
+        bound[i] = v;
+        listened = true;
+      }
+    if (listened) ++applied_;
+  }
+}
+
+void LivePanel::recordValue(const Project& project, std::size_t index, double value) {
+  if (!recording_ || index >= project.bindings.size()) return;
+  const double fps = project.animation.value_or(AnimationSettings{}).fps;
+  const long frame = std::lround(project.time * fps);
+  take_[project.bindings[index].path][frame] = Keyframe{double(frame) / fps, value};
+}
+
+void LivePanel::finishTake(ModellerState& state) {
+  recording_ = stopRequested_ = false;
+  RecordTake edit;
+  edit.start = 1e300;
+  edit.end = -1e300;
+  for (const auto& [path, frames] : take_)
+    for (const auto& [frame, key] : frames) {
+      edit.keys[path].push_back(key);
+      edit.start = std::min(edit.start, key.t);
+      edit.end = std::max(edit.end, key.t);
+    }
+  take_.clear();
+  if (edit.keys.empty()) return;
+  try {
+    state.document.apply(edit);
+  } catch (const ModelError& e) {
+    state.error(std::string("the take cannot be kept: ") + e.what());
+  }
 }
 
 void LivePanel::refuse(const std::string& why) {
@@ -71,7 +179,11 @@ bool LivePanel::followPlayhead(ModellerState& state) {
     try {
       const ProjectParameter parameter = boundParameter(now, i);
       const Binding& b = now.bindings[i];
-      state.document.applyLiveValue(SetParameter{b.path, boundValue(b, parameter, *v)});
+      const double value = boundValue(b, parameter, *v);
+      state.document.applyLiveValue(SetParameter{b.path, value});
+      // Sound is rendered from the audio itself; a take keeps what live input played.
+      const auto source = parseBindingSource(b.source);
+      if (source && source->kind != BindingSource::Kind::Audio) recordValue(state.document.project(), i, value);
       changed = true;
     } catch (const ModelError& e) {
       refuse(now.bindings[i].source + ": " + e.what());
@@ -81,15 +193,17 @@ bool LivePanel::followPlayhead(ModellerState& state) {
 }
 
 bool LivePanel::applyInput(ModellerState& state) {
+  if (stopRequested_) finishTake(state);
   refreshSound(state);
   bool changed = followPlayhead(state);
-  if (!osc_) return changed;
-  const std::vector<OscInput> inputs = osc_->take();
-  if (inputs.empty()) return changed;
+  // "Bind…" opens the MIDI input the first time, so that a controller can be learnt.
+  if (!state.learnPath.empty() && !midi_ && !midiTried_) openMidi(wake_);
   Document& document = state.document;
-  // Of several values for one bound address in a frame, the last one counts: the preview restarts
-  // once per frame anyway.
+  // Of several values for one binding in a frame, the last one counts: the preview restarts once
+  // per frame anyway.
   std::map<std::size_t, double> bound;  // binding index → value to set
+  applyMidi(state, bound);
+  const std::vector<OscInput> inputs = osc_ ? osc_->take() : std::vector<OscInput>{};
   for (const OscInput& in : inputs) {
     if (in.isSet) {
       try {
@@ -102,16 +216,20 @@ bool LivePanel::applyInput(ModellerState& state) {
       continue;
     }
     const std::string source = "osc:" + in.address;
+    if (!(in.value >= 0.0 && in.value <= 1.0)) {
+      refuse(in.address + ": bound addresses take values from 0 to 1, not " + std::to_string(in.value));
+      continue;
+    }
     const Project& project = document.project();
     bool listened = false;
     for (std::size_t i = 0; i < project.bindings.size(); ++i)
       if (project.bindings[i].source == source) listened = true;
-    if (!listened) {
-      refuse(in.address + ": no binding listens to this address");
+    if (!listened && !state.learnPath.empty()) {
+      learn(state, source);
       continue;
     }
-    if (!(in.value >= 0.0 && in.value <= 1.0)) {
-      refuse(in.address + ": bound addresses take values from 0 to 1, not " + std::to_string(in.value));
+    if (!listened) {
+      refuse(in.address + ": no binding listens to this address");
       continue;
     }
     lastValues_[source] = in.value;
@@ -120,14 +238,16 @@ bool LivePanel::applyInput(ModellerState& state) {
       if (project.bindings[i].source == source) bound[i] = in.value;
     ++applied_;
   }
-  if (changed || !bound.empty()) pendingArrival_ = inputs.front().arrived;
+  if (!inputs.empty() && (changed || !bound.empty())) pendingArrival_ = inputs.front().arrived;
   for (const auto& [index, v] : bound) {
     const Project& project = document.project();
     if (index >= project.bindings.size()) continue;
     try {
       const ProjectParameter parameter = boundParameter(project, index);
       const Binding& b = project.bindings[index];
-      document.applyLiveValue(SetParameter{b.path, boundValue(b, parameter, v)});
+      const double value = boundValue(b, parameter, v);
+      document.applyLiveValue(SetParameter{b.path, value});
+      recordValue(document.project(), index, value);
       changed = true;
     } catch (const ModelError& e) {
       refuse(project.bindings[index].source + ": " + e.what());
@@ -155,7 +275,35 @@ void LivePanel::draw(ModellerState& state) {
       ImGui::PopStyleColor();
     }
   }
+  if (midi_)
+    ImGui::Text("MIDI: port gridifs:midi-in (%s)", midi_->system().c_str());
+  else if (!midiProblem_.empty())
+    ImGui::TextDisabled("MIDI: %s", midiProblem_.c_str());
+  else
+    ImGui::TextDisabled("MIDI: opens on the first Bind... (right-click a key button)");
+  if (!state.learnPath.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.85f, 0.35f, 1.0f));
+    ImGui::TextWrapped("Move a control to bind %s", state.learnPath.c_str());
+    ImGui::PopStyleColor();
+    ImGui::SameLine();
+    if (ImGui::SmallButton("Cancel")) state.learnPath.clear();
+  }
   ImGui::Separator();
+  if (ImGui::Button(recording_ ? "Stop" : "Record")) {
+    if (recording_)
+      stopRequested_ = true;
+    else
+      recording_ = true;
+  }
+  state.probe.item("live.record");
+  if (ImGui::IsItemHovered())
+    state.contextHelp = "Record a take: live input becomes keys on the bound parameters' tracks (one undo step)";
+  if (recording_) {
+    std::size_t keys = 0;
+    for (const auto& [path, frames] : take_) keys += frames.size();
+    ImGui::SameLine();
+    ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.3f, 1.0f), "recording: %zu keys", keys);
+  }
   if (project.bindings.empty()) {
     ImGui::TextWrapped("No bindings. A project's \"bindings\" drive its numbers from sound, OSC or MIDI.");
     return;
@@ -205,6 +353,9 @@ nlohmann::json LivePanel::probeJson() const {
   j["latency_ms"] = lastLatencyMs_;
   j["largest_latency_ms"] = largestLatencyMs_;
   j["latency_samples"] = latencySamples_;
+  j["midi"] = midi_ ? midi_->system() : "";
+  j["midi_problem"] = midiProblem_;
+  j["recording"] = recording_;
   return j;
 }
 

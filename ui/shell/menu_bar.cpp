@@ -125,7 +125,9 @@ float drawMenuBar(AppCommands& app) {
     if (ImGui::MenuItem("Invert", "Ctrl+I")) invertSelection(s);
     ImGui::EndMenu();
   }
-  if (ImGui::BeginMenu("View")) {
+  const bool viewMenu = ImGui::BeginMenu("View");
+  s.probe.item("menu.view");
+  if (viewMenu) {
     if (ImGui::MenuItem("Frame", "F")) app.frameViews();
     if (ImGui::MenuItem("Explore...", "E")) s.showExplore = true;
     s.probe.item("menu.explore");

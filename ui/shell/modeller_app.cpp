@@ -421,6 +421,10 @@ void ModellerApp::writeProbe(double frameMs) {
   j["construction"] = constructionTree_.probeJson(state_);
   const Project& project = state_.document.project();
   j["live"] = live_.probeJson();
+  j["live"]["learning"] = state_.learnPath;
+  j["live"]["bindings"] = nlohmann::json::array();
+  for (const Binding& b : state_.document.project().bindings)
+    j["live"]["bindings"].push_back({{"path", b.path}, {"source", b.source}, {"min", b.min}, {"max", b.max}});
   j["camera"] = {{"projection", projectionName(project.camera.projection)},
                  {"fov", project.camera.fov},
                  {"yaw", project.camera.yaw},
@@ -463,10 +467,14 @@ bool ModellerApp::startSession() {
   // Installed before ImGui's callbacks are chained to it (see runModeller): record presses.
   glfwSetWindowUserPointer(window_, &state_);
   files_.checkForRecovery();
+  // Live input's threads wake the event loop, which waits while nothing moves.
+  live_.setWake([] { glfwPostEmptyEvent(); });
   if (options_.oscPort > 0) {
-    // The listener's thread wakes the event loop, which waits while nothing moves.
     if (const std::string error = live_.listen(options_.oscPort, [] { glfwPostEmptyEvent(); }); !error.empty())
       state_.error(error);
+  }
+  if (options_.midi) {
+    if (const std::string error = live_.openMidi([] { glfwPostEmptyEvent(); }); !error.empty()) state_.error(error);
   }
   if (!options_.file.empty())
     files_.openAtStartup(options_.file);

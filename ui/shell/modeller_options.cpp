@@ -54,6 +54,8 @@ std::optional<std::string> parseModellerOptions(int argc, char** argv, ModellerO
       if (!next(value) || !number(value, n) || n < 1 || n > 65535 || n != std::floor(n))
         return "--osc-port needs a port number from 1 to 65535";
       out.oscPort = int(n);
+    } else if (arg == "--midi") {
+      out.midi = true;
     } else if (arg == "--stats") {
       out.stats = true;
     } else if (!arg.empty() && arg[0] == '-') {

@@ -11,6 +11,7 @@
 //   --ui-scale S           override the monitor content scale (HiDPI checks on any display)
 //   --device D             preview renderer: auto (a hardware GPU when there is one), gpu or cpu
 //   --osc-port P           listen for OSC on 127.0.0.1:P (off without it)
+//   --midi                 open the MIDI input at start (else on the first "Bind…")
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -30,6 +31,7 @@ struct ModellerOptions {
   float uiScale = 0.0f;         // 0: the monitor's content scale
   std::string device = "auto";  // auto | gpu | cpu
   int oscPort = 0;              // 0: no OSC
+  bool midi = false;
 };
 
 /// Parses argv (argv[0] is the program; a leading FILE argument is skipped when it equals
