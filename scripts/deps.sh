@@ -10,8 +10,9 @@ GRIDIFS_RUN_PACKAGES=(
   nlohmann-json3-dev libcli11-dev libepoxy-dev libegl-dev libegl-mesa0 libgl1-mesa-dri
   libtbb-dev libpugixml-dev libopenvdb-dev libboost-iostreams-dev libnanoflann-dev zlib1g-dev
   fonts-dejavu-core
-  # Sound that animations follow (libsndfile reads it, FFTW splits it into bands) and OSC input.
-  libsndfile1-dev libfftw3-dev liblo-dev librtmidi-dev
+  # Sound that animations follow (libsndfile reads it, FFTW splits it into bands, SDL plays it),
+  # OSC and MIDI input.
+  libsndfile1-dev libfftw3-dev liblo-dev librtmidi-dev libsdl2-dev
   # flam3's palettes, which flame projects and imported .flame files name by number.
   flam3-palette
 )

@@ -83,7 +83,7 @@ AudioEnvelope analyseAudio(const std::filesystem::path& file, const std::vector<
                            double fps) {
   AudioEnvelope envelope;
   envelope.fps = fps;
-  const std::vector<float> mono = readMono(file, envelope.sampleRate);
+  std::vector<float> mono = readMono(file, envelope.sampleRate);
   envelope.sampleCount = std::int64_t(mono.size());
   const double samplesPerFrame = envelope.sampleRate / fps;
   const std::int64_t frames = std::max<std::int64_t>(1, std::int64_t(std::ceil(double(mono.size()) / samplesPerFrame)));
@@ -139,6 +139,7 @@ AudioEnvelope analyseAudio(const std::filesystem::path& file, const std::vector<
   }
   fftwf_free(input);
   fftwf_free(output);
+  envelope.samples = std::make_shared<const std::vector<float>>(std::move(mono));
   // Divided by the band's largest: energies in float are non-negative, silence exactly 0.
   for (std::vector<float>& band : envelope.energy) {
     const float largest = *std::max_element(band.begin(), band.end());

@@ -9,6 +9,7 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <vector>
 
 namespace gridifs {
@@ -21,6 +22,8 @@ struct AudioEnvelope {
   std::vector<std::vector<float>> energy;
   /// The sound mixed to mono, as min/max pairs of peaks per frame (the timeline's waveform).
   std::vector<std::array<float, 2>> peaks;
+  /// The sound mixed to mono at sampleRate (what the modeller plays), shared between copies.
+  std::shared_ptr<const std::vector<float>> samples;
 
   double seconds() const { return sampleRate > 0.0 ? double(sampleCount) / sampleRate : 0.0; }
   std::int64_t frames() const { return energy.empty() ? 0 : std::int64_t(energy.front().size()); }

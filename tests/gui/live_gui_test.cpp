@@ -149,3 +149,48 @@ TEST(LiveGui, ATakeTurnsLiveInputIntoKeysAsOneUndoStep) {
   probe = app.waitFor([](const nlohmann::json& j) { return !j["timeline"]["tracks"].contains("camera.yaw"); });
   EXPECT_FALSE(probe["timeline"]["tracks"].contains("camera.yaw"));
 }
+
+/// The dancing example with its sound beside it in `home`.
+fs::path dancingCopy(const TempFolder& home) {
+  const fs::path example = fs::path(GRIDIFS_ASSETS) / "live";
+  const fs::path project = home.path / "dancing_twist.gridifs";
+  gridifs::Project p = gridifs::loadProject(example / "dancing_twist.gridifs");
+  p.render.samples = 100'000;
+  gridifs::saveProject(p, project);
+  fs::copy_file(example / "beat.wav", home.path / "beat.wav", fs::copy_options::overwrite_existing);
+  return project;
+}
+
+/// Presses Play and returns how far the playhead got after about a second.
+double playForASecond(App& app) {
+  nlohmann::json probe = app.waitForPreview();
+  clickRect(rectOf(probe, "timeline.play"));
+  probe = app.waitFor([](const nlohmann::json& j) { return j["timeline"]["playing"] == true; });
+  const double t0 = probe["timeline"]["time"];
+  std::this_thread::sleep_for(1200ms);
+  return app.probe()["timeline"]["time"].get<double>() - t0;
+}
+
+TEST(LiveGui, PlaybackSoundsWhereThereIsAnOutputAndKeepsASilentClockWhereNot) {
+  if (!haveDisplay()) GTEST_SKIP() << "no X display (run under xvfb-run)";
+  {
+    // These machines have no sound card: SDL finds no output, and the timeline keeps its clock.
+    TempFolder home;
+    App app(home, {dancingCopy(home).string()});
+    const double moved = playForASecond(app);
+    EXPECT_GT(moved, 0.5) << "the silent clock plays";
+    const std::string output = app.probe()["live"]["sound_output"];
+    EXPECT_NE(output.find("silent clock"), std::string::npos) << output;
+  }
+  {
+    // SDL's dummy driver consumes the sound in real time: its played samples drive the playhead.
+    ::setenv("SDL_AUDIODRIVER", "dummy", 1);
+    TempFolder home;
+    App app(home, {dancingCopy(home).string()});
+    const double moved = playForASecond(app);
+    ::unsetenv("SDL_AUDIODRIVER");
+    EXPECT_GT(moved, 0.5) << "the sound's clock plays";
+    EXPECT_LT(moved, 2.5);
+    EXPECT_EQ(app.probe()["live"]["sound_output"], "dummy");
+  }
+}

@@ -13,6 +13,7 @@
 
 #include "edit/document.h"
 #include "live/audio_envelope.h"
+#include "live/sound_output.h"
 #include "model/function_ref.h"
 #include "model/grid.h"
 #include "render/chaos_renderer.h"
@@ -97,6 +98,10 @@ class ModellerState {
   /// The project's sound as analysed for its bindings (live/audio_envelope.h), for the timeline's
   /// waveform; null when the project has none (ui/panels/live_panel.cpp keeps it current).
   std::shared_ptr<const AudioEnvelope> sound;
+  /// Where the timeline's playback sounds (live/sound_output.h); null on a silent clock, whose
+  /// reason soundOutputProblem gives.
+  std::unique_ptr<SoundOutput> soundOutput;
+  std::string soundOutputProblem;
   /// A key button's "Bind…": the parameter path the next moved control (MIDI, or an OSC address
   /// nothing listens to yet) is bound to; empty when not learning.
   std::string learnPath;

@@ -281,6 +281,10 @@ void LivePanel::draw(ModellerState& state) {
     ImGui::TextDisabled("MIDI: %s", midiProblem_.c_str());
   else
     ImGui::TextDisabled("MIDI: opens on the first Bind... (right-click a key button)");
+  if (state.soundOutput)
+    ImGui::Text("Sound: plays through %s", state.soundOutput->driver().c_str());
+  else if (!state.soundOutputProblem.empty())
+    ImGui::TextDisabled("Sound: %s", state.soundOutputProblem.c_str());
   if (!state.learnPath.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.85f, 0.35f, 1.0f));
     ImGui::TextWrapped("Move a control to bind %s", state.learnPath.c_str());

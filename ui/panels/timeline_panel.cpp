@@ -142,17 +142,34 @@ void togglePlaybackNow(ModellerState& state) {
   play.playing = true;
   play.startTime = from;
   play.startClock = state.now;
+  // The sound from the playhead on; its clock then drives the playhead. The output opens the
+  // first time a project with sound plays.
+  if (!state.soundOutput && state.soundOutputProblem.empty() && state.sound && state.sound->samples)
+    state.soundOutput = SoundOutput::open(state.soundOutputProblem);
+  if (state.soundOutput && state.sound && state.sound->samples)
+    state.soundOutput->play(state.sound->samples, state.sound->sampleRate, from);
 }
 
 void advancePlayback(ModellerState& state) {
   ModellerState::Playback& play = state.playback;
-  if (!play.playing) return;
+  SoundOutput* sound = state.soundOutput.get();
+  if (!play.playing) {
+    if (sound && sound->playing()) sound->stop();  // stopped, scrubbed or stepped
+    return;
+  }
   const AnimationSettings a = timelineOf(state.document.project());
   const long first = frameOf(a.start, a.fps), last = std::max(frameOf(a.end, a.fps), first);
-  long f = frameOf(play.startTime, a.fps) + long(std::floor((state.now - play.startClock) * a.fps));
+  // The clock: the sound's own where it plays (picture follows sound), else the wall's.
+  const double elapsed = sound && sound->playing() ? sound->seconds() - play.startTime : state.now - play.startClock;
+  long f = frameOf(play.startTime, a.fps) + long(std::floor(elapsed * a.fps + 1e-9));
   if (f > last) {
     if (a.loop) {
       f = first + (f - first) % (last - first + 1);
+      // The loop starts again, and with it the sound.
+      play.startTime = double(f) / a.fps;
+      play.startClock = state.now;
+      if (sound && sound->playing() && state.sound && state.sound->samples)
+        sound->play(state.sound->samples, state.sound->sampleRate, play.startTime);
     } else {
       f = last;
       play.playing = false;

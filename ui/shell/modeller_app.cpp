@@ -422,6 +422,7 @@ void ModellerApp::writeProbe(double frameMs) {
   const Project& project = state_.document.project();
   j["live"] = live_.probeJson();
   j["live"]["learning"] = state_.learnPath;
+  j["live"]["sound_output"] = state_.soundOutput ? state_.soundOutput->driver() : state_.soundOutputProblem;
   j["live"]["bindings"] = nlohmann::json::array();
   for (const Binding& b : state_.document.project().bindings)
     j["live"]["bindings"].push_back({{"path", b.path}, {"source", b.source}, {"min", b.min}, {"max", b.max}});
