@@ -1,6 +1,7 @@
 #include "edit/document.h"
 
 #include "base/errors.h"
+#include "model/live_binding.h"
 #include "model/stack_evaluator.h"
 #include "model/validation.h"
 
@@ -65,6 +66,8 @@ bool Document::applyChange(const Change& change, Project& before) {
   Project next = project_;
   change(next);
   if (rule_) next = rule_(project_, std::move(next));
+  // Bindings of numbers the change removed go with them (undo brings both back).
+  if (!next.bindings.empty()) dropUnresolvedBindings(next);
   if (next == project_) return false;
   validate(next);
   std::swap(project_, next);

@@ -14,6 +14,7 @@
 #include "io/parameter_paths.h"
 #include "model/flame_variations.h"
 #include "model/free_form_presets.h"
+#include "model/live_binding.h"
 #include "model/operation_table.h"
 #include "model/palette_reference.h"
 #include "model/project_parameter.h"
@@ -432,6 +433,7 @@ void fitToFunctions(Project& child, const Project& parent) {
     else
       ++it;
   }
+  dropUnresolvedBindings(child);
 }
 
 std::uint64_t drawSeed(std::uint64_t seed, std::uint64_t draw) { return splitmix64(seed ^ splitmix64(draw + 1)); }

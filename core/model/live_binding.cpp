@@ -1,5 +1,6 @@
 #include "model/live_binding.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -108,6 +109,18 @@ void checkBindings(const Project& project) {
       }
     }
   }
+}
+
+std::size_t dropUnresolvedBindings(Project& project) {
+  const std::size_t before = project.bindings.size();
+  auto& list = project.bindings;
+  list.erase(std::remove_if(list.begin(), list.end(),
+                            [&](const Binding& b) {
+                              const std::optional<TrackPath> parsed = TrackPath::parse(b.path);
+                              return !parsed || findParameter(project, *parsed).lookup != ParameterLookup::Number;
+                            }),
+             list.end());
+  return before - list.size();
 }
 
 double boundValue(const Binding& binding, const ProjectParameter& parameter, double v) {

@@ -36,6 +36,11 @@ void checkBindings(const Project& project);
 /// The parameter binding `index` of `project` drives. Expects checkBindings to have passed.
 ProjectParameter boundParameter(const Project& project, std::size_t index);
 
+/// Drops the bindings whose path names no number of `project` any more (the function or the
+/// operation it named was removed), so that an edit never leaves a project the file reader
+/// would refuse. Returns how many went.
+std::size_t dropUnresolvedBindings(Project& project);
+
 /// The value binding `binding` gives its parameter for v in [0, 1] (clamped; NaN counts as 0),
 /// rounded to a whole number for whole-number parameters.
 double boundValue(const Binding& binding, const ProjectParameter& parameter, double v);

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "base/errors.h"
+#include "edit/document.h"
 #include "io/project_io.h"
 #include "live/audio_envelope.h"
 #include "live/live_drive.h"
@@ -113,6 +114,21 @@ TEST(LiveBinding, BadBindingsAreRefusedOnLoadWithOneSentence) {
   p = boundProject();
   p.bindings[2].smooth = 61;
   EXPECT_NE(refusal(p).find("bindings[2].smooth"), std::string::npos) << refusal(p);
+}
+
+TEST(LiveBinding, AnEditThatRemovesTheNumberDropsItsBindingAndUndoBringsItBack) {
+  Project p = defaultNewProject();
+  p.functions.push_back(p.functions[0]);
+  p.bindings.push_back(Binding{"functions[1].weight", "osc:/w", 0.0, 2.0, 0.0});
+  p.bindings.push_back(Binding{"camera.yaw", "osc:/y", 0.0, 90.0, 0.0});
+  Document document(p);
+  document.apply(RemoveFunction{1});
+  ASSERT_EQ(document.project().bindings.size(), 1u);
+  EXPECT_EQ(document.project().bindings[0].path, "camera.yaw");
+  // What is left reads back: the file reader would have refused the dangling binding.
+  EXPECT_NO_THROW(parseProject(serializeProject(document.project())));
+  document.undo();
+  EXPECT_EQ(document.project().bindings.size(), 2u);
 }
 
 TEST(AudioEnvelope, SilenceIsExactlyZeroAndAToneInItsBandIsOne) {
