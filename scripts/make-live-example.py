@@ -3,9 +3,10 @@
 beat.wav (8 s, 22.05 kHz mono): a kick on every beat at 120 bpm (the 20-200 Hz band), a chord
 that swells over two bars (200-2000 Hz) and off-beat hats (2-10 kHz). The bindings twist the
 functions with the kick, turn the camera with the chord and scale the first function's weight
-with the hats. Run: scripts/make-live-example.py"""
+with the hats. Run after a build (it saves through build/python): scripts/make-live-example.py"""
 import json
 import os
+import sys
 import wave
 
 import numpy as np
@@ -42,6 +43,14 @@ project["bindings"] = [
     {"path": "camera.yaw", "source": "audio:1", "min": 10, "max": 70, "smooth": 0.3},
     {"path": "functions[0].weight", "source": "audio:2", "min": 1, "max": 2.5, "smooth": 0.05},
 ]
-with open(os.path.join(OUT, "dancing_twist.gridifs"), "w") as f:
+target = os.path.join(OUT, "dancing_twist.gridifs")
+with open(target, "w") as f:
     json.dump(project, f, indent=2)
     f.write("\n")
+# Saved again by GridIFS itself, so the shipped file is in the form the modeller writes.
+sys.path.insert(0, os.path.join(HERE, "..", "build", "python"))
+import gridifs  # noqa: E402
+
+gridifs.Project.load(target).save(target)
+if os.path.exists(target + "~"):
+    os.remove(target + "~")
