@@ -269,6 +269,18 @@ void ChaosCompute::setProjectionUniforms(const OrbitCamera& camera) {
   glUniformMatrix3fv(loc("uEyeTurn"), 2, GL_FALSE, &turn[0][0]);
   const float sign[2] = {float(camera.eyeSign(0)), float(camera.eyeSign(1))};
   glUniform1fv(loc("uEyeSign"), 2, sign);
+  // The lens blur (Camera::lens_blur, flam3's cam_dof): the view's right and up axes in world
+  // space, and the view depth's row, as the CPU's lens (render/shaded_plot.h) takes them.
+  const double blur = camera.settings().lens_blur;
+  glUniform1f(loc("uLensAperture"), float(0.1 * blur));
+  if (blur > 0.0) {
+    const glm::dmat4& view = camera.view();
+    glUniform3f(loc("uLensRight"), float(view[0][0]), float(view[1][0]), float(view[2][0]));
+    glUniform3f(loc("uLensUp"), float(view[0][1]), float(view[1][1]), float(view[2][1]));
+    const OrbitCamera::PixelRows centre = camera.pixelRows(0);
+    glUniform4f(loc("uLensDepthRow"), centre.rowD[0], centre.rowD[1], centre.rowD[2], centre.rowD[3]);
+    glUniform1f(loc("uLensFocus"), float(camera.settings().distance));
+  }
 }
 
 void ChaosCompute::setup(const CompiledIfs& ifs, const RenderJob& job, ChainRange share, int voxelResolution) {

@@ -81,6 +81,12 @@ uniform float uPixelsPerRadian, uHalfFov, uEyeRadius;
 uniform vec3 uViewUp;
 uniform mat3 uEyeTurn[2];
 uniform float uEyeSign[2];
+// The camera's lens blur (flam3's cam_dof): a sample at view depth d moves in the image plane,
+// at a uniform angle, by a uniform distance up to uLensAperture · |d − uLensFocus|.
+uniform float uLensAperture;  // 0: no blur
+uniform float uLensFocus;
+uniform vec4 uLensDepthRow;   // view depth = dot(uLensDepthRow, (x, y, z, 1))
+uniform vec3 uLensRight, uLensUp;
 uniform uint uStride;
 uniform vec2 uDepthQuant;  // 32-bit keys: q = (depth - x) · y in [0, 65535]
 uniform bool uPalette;
@@ -403,6 +409,12 @@ void main() {
     points[2u * (k * uChains + chain) + 1u] = vec4(clamp(qc.rgb, 0.0, 1.0), 0.0);
     ++tally.y;
 #else
+    if (uLensAperture > 0.0) {
+      const float radius = uLensAperture * abs(dot(uLensDepthRow, vec4(q, 1.0)) - uLensFocus);
+      const float angle = float(nextRandom(ch.rng) >> 8) * (6.28318530718 / 16777216.0);
+      const float distance = float(nextRandom(ch.rng) >> 8) * (1.0 / 16777216.0) * radius;
+      q += (cos(angle) * uLensRight + sin(angle) * uLensUp) * distance;
+    }
     if (plot(q, qc)) ++tally.y;
 #endif
   }

@@ -150,6 +150,16 @@ FlameExport exportFlame(const Project& project, const std::filesystem::path& pro
     x << " cam_pitch=\"" << num(f.pitch) << "\" cam_yaw=\"" << num(f.yaw) << "\" cam_perspective=\""
       << num(f.perspective) << "\" cam_zpos=\"" << num(f.zpos) << "\"";
   }
+  // The lens blur keeps the plane through the target sharp: the flame camera's c_z = 0 plane when
+  // it is written as a 3D camera, and the flat view's own plane (where a native genome lies).
+  if (native && cam.lens_blur != 0.0) {
+    x << " cam_dof=\"" << num(cam.lens_blur) << "\"";
+    // A flat view keeps the plane through its target sharp: flam3's plane z = cam_zpos (X's z is
+    // the flame's −z).
+    if (!camera3D && cam.target.z != 0.0) x << " cam_zpos=\"" << num(-cam.target.z) << "\"";
+  } else if (cam.lens_blur != 0.0) {
+    out.warnings.push_back("the camera's lens blur was left out: a sampled flame has no plane for it to keep sharp");
+  }
   if (fl.palette_keys.empty() && fl.palette.rfind("flam3:", 0) == 0 &&
       fl.palette.find_first_not_of("0123456789", 6) == std::string::npos)
     x << " palette=\"" << fl.palette.substr(6) << "\"";

@@ -186,6 +186,8 @@ FlameGenome parseGenome(const pugi::xml_node& flame, std::size_t index) {
   g.camPerspective = number(flame, "cam_persp", number(flame, "cam_perspective", 0.0, where), where);
   g.camZpos = number(flame, "cam_zpos", 0.0, where);
   g.camZoom = number(flame, "cam_zoom", 1.0, where);
+  g.camDof = number(flame, "cam_dof", 0.0, where);
+  if (!(std::fabs(g.camDof) <= 1e3)) fail(where + " cam_dof is out of range");
   if (!(g.camZoom > 1e-6 && g.camZoom < 1e6)) fail(where + " cam_zoom is out of range");
   if (std::fabs(g.camPitch) > 1e3 || std::fabs(g.camYaw) > 1e3) fail(where + " cam_pitch or cam_yaw is out of range");
   if (std::fabs(g.camPerspective) > 1e3 || std::fabs(g.camZpos) > 1e6)
@@ -242,9 +244,9 @@ FlameGenome parseGenome(const pugi::xml_node& flame, std::size_t index) {
   g.threeD = g.camPitch != 0.0 || g.camYaw != 0.0 || g.camPerspective != 0.0;
   for (const FlameXform& x : g.xforms) g.threeD |= x.isThreeD();
   if (g.finalXform) g.threeD |= g.finalXform->isThreeD();
-  // What a GridIFS scene cannot hold: a random blur of the camera, fog, moved camera positions.
+  // What a GridIFS scene cannot hold: fog, moved camera positions.
   std::string camera;
-  for (const char* name : {"cam_dof", "cam_zdimish", "cam_pos_x", "cam_pos_y", "cam_pos_z"})
+  for (const char* name : {"cam_zdimish", "cam_pos_x", "cam_pos_y", "cam_pos_z"})
     if (number(flame, name, 0.0, where) != 0.0) camera += std::string(camera.empty() ? "" : ", ") + name;
   if (!camera.empty())
     g.warnings.push_back("the camera settings " + camera + " have no GridIFS equivalent and were left out");

@@ -70,6 +70,9 @@ struct FlameGenome {
   /// files store them, perspective (1 / the eye's distance from the z = 0 plane), zpos (subtracted
   /// from z before the camera turns), and JWildfire's extra zoom factor.
   double camPitch = 0.0, camYaw = 0.0, camPerspective = 0.0, camZpos = 0.0, camZoom = 1.0;
+  /// cam_dof: each sample moves, at a random angle, by a random distance up to 0.1 · |camDof|
+  /// times its distance from the plane c_z = 0, before the perspective divide.
+  double camDof = 0.0;
   /// Whether the genome is 3D: a 3D camera, z variations or 3D affine parts.
   bool threeD = false;
   /// `gridifs_frame` ("centerX centerY scale"), written by GridIFS's exporter so that importing

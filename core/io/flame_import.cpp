@@ -338,7 +338,9 @@ void frameNatively(const FlameGenome& genome, Camera& cam, FlameSettings& flame)
   cam.projection = CameraProjection::Orthographic;
   cam.pitch = -90.0;
   cam.yaw = -90.0 - genome.rotate;
-  cam.target = Vec3(genome.centerX, genome.centerY, 0.0);
+  // A flat camera keeps the plane z = cam_zpos sharp under cam_dof (X's z is the flame's −z).
+  cam.target =
+      Vec3(genome.centerX, genome.centerY, genome.camDof != 0.0 && genome.camZpos != 0.0 ? -genome.camZpos : 0.0);
   const double halfH = 0.5 * genome.height / genome.pixelsPerUnit();
   cam.fov = 2.0 * std::atan(0.5) * 180.0 / kPi;  // 53.13°: halfH = distance / 2
   cam.distance = 2.0 * halfH;
@@ -518,7 +520,14 @@ FlameImport importFlameGenome(const FlameGenome& genome, const FlameImportOption
   fl.estimator_curve = clamped(genome.estimator_curve, 0.05, 10.0, "estimator_curve");
   fl.filter_radius = clamped(genome.filter, 0.0, 10.0, "filter");
   fl.density_unit = out.frame.scale;  // keeps flam3's exposure (hits per pixel of its plane)
-  if (native) frameNatively(genome, p.camera, fl);
+  if (native) {
+    frameNatively(genome, p.camera, fl);
+    // The camera pivots on the flame's plane c_z = 0 (io/flame_camera.h), the plane cam_dof keeps
+    // sharp; the blur's reach is a ratio of distances, the same at any scale.
+    p.camera.lens_blur = std::fabs(genome.camDof);
+  } else if (genome.camDof != 0.0) {
+    out.warnings.push_back("the camera's cam_dof blur was left out: it needs a natively imported genome");
+  }
   try {
     validateProject(p);
   } catch (const ModelError& e) {

@@ -51,6 +51,10 @@ struct Camera {
   /// Lens shift of a flat camera, in frame heights: the picture's centre moves right (x) and up
   /// (y) without turning the camera (an off-axis view, as a view camera's rising front).
   double shift_x = 0.0, shift_y = 0.0;
+  /// A flat camera's lens blur, flam3's cam_dof (Apophysis 7X's 3D camera): every sample moves
+  /// across the picture, at a random angle, by a random distance up to 0.1 · lens_blur times its
+  /// depth's distance from the target's plane, which stays sharp. 0: none.
+  double lens_blur = 0.0;
   bool orthographic() const { return projection == CameraProjection::Orthographic; }
   /// Fisheye and equirectangular: the depth of a point is its distance from the eye, not its
   /// distance along the view axis, and straight lines do not stay straight.

@@ -76,6 +76,13 @@ void shiftRule(const void* group, const std::string& path) {
     fail(path, "a lens shift needs a perspective or orthographic camera (fisheye and equirectangular have none)");
 }
 
+/// The blur moves samples across a flat picture plane, which a panoramic image does not have.
+void lensBlurRule(const void* group, const std::string& path) {
+  const Camera& c = *static_cast<const Camera*>(group);
+  if (c.panoramic() && c.lens_blur != 0.0)
+    fail(path, "a lens blur needs a perspective or orthographic camera (fisheye and equirectangular have none)");
+}
+
 }  // namespace
 
 const SettingTableOf<Camera>& cameraTable() {
@@ -155,6 +162,17 @@ const SettingTableOf<Camera>& cameraTable() {
                                  .format = "shift y %.3f",
                                  .omitDefault = true,
                                  .rule = shiftRule}),
+      setting<&Camera::lens_blur>({.key = "lens_blur",
+                                   .label = "Lens blur",
+                                   .tooltip = "Blurs what lies in front of or behind the target's plane, more "
+                                              "the farther it lies (flam3's cam_dof)",
+                                   .min = 0.0,
+                                   .max = 1000.0,
+                                   .sliderMin = 0.0,
+                                   .sliderMax = 2.0,
+                                   .format = "lens blur %.3f",
+                                   .omitDefault = true,
+                                   .rule = lensBlurRule}),
   }}};
   return table;
 }

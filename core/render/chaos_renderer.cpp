@@ -73,7 +73,10 @@ struct PreparedJob {
   ChunkRange chunks;
   std::shared_ptr<std::atomic<std::int64_t>> nextChunk;
 
-  bool shaded() const { return !job.shadowLights.empty() || job.dofAperture > 0.0; }
+  /// Whether samples go through a lens (HotLens) before the camera: the shaded display's depth of
+  /// field, else the camera's lens blur.
+  bool lensBlurs() const { return job.dofAperture > 0.0 || job.camera.lens_blur > 0.0; }
+  bool shaded() const { return !job.shadowLights.empty() || lensBlurs(); }
 
   PreparedJob(std::shared_ptr<const CompiledIfs> compiled, const RenderJob& renderJob)
       : ifs(std::move(compiled)), job(renderJob), chunks(jobChunks(renderJob)) {
@@ -82,7 +85,7 @@ struct PreparedJob {
       throw ModelError("functions", "no unmuted function has a positive weight");
     hotIfs = kernel::makeHotIfs(*ifs, hot, job.skip, limits::kEscapeBound);
     camera = kernel::makeHotCamera(OrbitCamera(job.camera, job.width, job.height));
-    if (job.dofAperture > 0.0) {
+    if (lensBlurs()) {
       const OrbitCamera orbit(job.camera, job.width, job.height);
       const glm::dmat4& view = orbit.view();  // rows of the rotation: the view axes in world space
       for (int d = 0; d < 3; ++d) {
@@ -92,8 +95,16 @@ struct PreparedJob {
       lens.right[3] = lens.up[3] = 0.0f;
       const kernel::v4f* columns[4] = {&camera.cx, &camera.cy, &camera.cz, &camera.c1};
       for (int d = 0; d < 4; ++d) lens.depthRow[d] = (*columns[d])[3];
-      lens.aperture = float(job.dofAperture);
-      lens.focus = float(job.dofFocus);
+      if (job.dofAperture > 0.0) {
+        lens.aperture = float(job.dofAperture);
+        lens.focus = float(job.dofFocus);
+      } else {
+        // flam3's cam_dof (Apophysis 7X): up to 0.1 · cam_dof times the distance from the plane
+        // the camera pivots on (the target's), measured along the view axis.
+        lens.aperture = float(0.1 * job.camera.lens_blur);
+        lens.focus = float(job.camera.distance);
+        lens.uniformRadius = true;
+      }
     }
     if (job.palette) {
       for (const Rgb& c : job.palette->colors) palette.push_back(kernel::v4f{c.r, c.g, c.b, 0.0f});
@@ -257,9 +268,10 @@ template <bool kColor>
   kernel::ShadedPlot<kColor> plot;
   plot.camera = kernel::ZBufferPlot<kColor>{job.camera, w.cells.data(), w.colorSums.data(),
                                             job.palette.empty() ? nullptr : job.palette.data()};
+  plot.camera.keys = job.job.depthKeys;
   plot.light = lightPlot(job, w, false);
   plot.lens = job.lens;
-  plot.jitter = job.job.dofAperture > 0.0;
+  plot.jitter = job.lensBlurs();
   plot.rng = w.lensRng;
   kernel::runChain(chain, job.hotIfs, count, plot, counters);
   w.lensRng = plot.rng;
@@ -287,7 +299,24 @@ GRIDIFS_KERNEL_CLONES void runLightBatch(kernel::ChainState& chain, const Prepar
 GRIDIFS_KERNEL_CLONES void runBarycentricBatch(kernel::ChainState& chain, kernel::BarycentricState& bary,
                                                const PreparedJob& job, ChaosRenderer::Worker& w, std::int64_t count,
                                                kernel::ChainCounters& counters) {
-  if (job.job.accumulateColor) {
+  if (job.lensBlurs()) {
+    // Free-form IFSs plot no light buffers: only the lens.
+    auto blurred = [&]<bool kColor>() {
+      kernel::ShadedPlot<kColor> plot;
+      plot.camera = kernel::ZBufferPlot<kColor>{job.camera, w.cells.data(), w.colorSums.data(),
+                                                job.palette.empty() ? nullptr : job.palette.data()};
+      plot.camera.keys = job.job.depthKeys;
+      plot.lens = job.lens;
+      plot.jitter = true;
+      plot.rng = w.lensRng;
+      kernel::runBarycentricChain(chain, bary, job.hotIfs, count, plot, counters);
+      w.lensRng = plot.rng;
+    };
+    if (job.job.accumulateColor)
+      blurred.template operator()<true>();
+    else
+      blurred.template operator()<false>();
+  } else if (job.job.accumulateColor) {
     kernel::ZBufferPlot<true> plot{job.camera, w.cells.data(), w.colorSums.data(),
                                    job.palette.empty() ? nullptr : job.palette.data()};
     plot.keys = job.job.depthKeys;

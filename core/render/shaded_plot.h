@@ -37,11 +37,16 @@ inline HotLight makeHotLight(const LightView& view, std::uint16_t* depth) {
   return h;
 }
 
-/// Depth-of-field jitter: the camera's view axes in world space and the lens.
+/// Depth-of-field jitter: the camera's view axes in world space and the lens. A sample at view
+/// depth d moves in the image plane by at most aperture · |d − focus| world units.
 struct HotLens {
   v4f right, up;  // world unit vectors of the image plane
   v4f depthRow;   // view depth = dot(depthRow, (x, y, z, 1))
   float aperture = 0.0f, focus = 0.0f;
+  /// false: a uniform point of that disc (a thin lens: the shaded display's depth of field).
+  /// true: a uniform angle and a uniform distance up to the radius, as the flame camera's
+  /// cam_dof draws them (Apophysis 7X's 3D camera; the camera's lens_blur).
+  bool uniformRadius = false;
 };
 
 /// The light half of the shaded plotter. Samples are collected in chunks and projected into the
@@ -193,6 +198,13 @@ struct ShadedPlot {
         x = Rng::signedUnit(bits);
         y = Rng::signedUnit(bits >> 32);
       } while (x * x + y * y > 1.0f);
+      if (lens.uniformRadius) {
+        // A disc point's distance s from the centre has P(s ≤ t) = t², so s² is uniform on
+        // [0, 1]: scaling the point by s moves it to distance s² at the same angle.
+        const float s = std::sqrt(x * x + y * y);
+        x *= s;
+        y *= s;
+      }
       q = q + lens.right * (x * radius) + lens.up * (y * radius);
     }
     return camera(q, col);

@@ -71,6 +71,52 @@ inline int sierpinskiAddress(Vec3 p, int level, double eps) {
 /// Two square layers at x = +0.5 (red, half the size) and x = -0.5 (blue, full size), each made of
 /// four functions that flatten x (scale 0) and tile their square; color_speed 1 makes every point
 /// carry its layer's colour. Seen along -x (yaw 0, pitch 0, ortho) the red layer is in front.
+/// A one-function IFS whose attractor is the single point `at` (a function of scale 0 moved
+/// there), seen by a perspective camera at (4, 0, 0) looking at the origin, 160×160 pixels.
+inline Project onePoint(const Vec3& at) {
+  Project p;
+  p.camera.yaw = 0;
+  p.camera.pitch = 0;
+  p.camera.distance = 4.0;
+  p.camera.fov = 40;
+  p.render.width = 160;
+  p.render.height = 160;
+  p.render.samples = 400'000;
+  Function f;
+  f.name = "point";
+  f.resolution = {2, 2, 2};
+  f.placement.scale = Vec3{0.0};
+  f.placement.translate = at;
+  p.functions.push_back(f);
+  return p;
+}
+
+/// How the hits of a blurred point spread about `centre` (frame pixels): the hits' mean distance
+/// from it, the largest distance of a hit, and the share of hits within `halfReach`.
+struct PointSpread {
+  double meanDistance = 0.0, farthest = 0.0, innerShare = 0.0;
+  std::uint64_t hits = 0;
+};
+inline PointSpread pointSpread(const std::vector<std::uint32_t>& density, int width, double centreX, double centreY,
+                               double halfReach) {
+  PointSpread s;
+  double sum = 0.0, inner = 0.0;
+  for (std::size_t i = 0; i < density.size(); ++i) {
+    if (!density[i]) continue;
+    const double d =
+        std::hypot(double(i % std::size_t(width)) + 0.5 - centreX, double(i / std::size_t(width)) + 0.5 - centreY);
+    sum += d * density[i];
+    if (d < halfReach) inner += density[i];
+    s.hits += density[i];
+    s.farthest = std::max(s.farthest, d);
+  }
+  if (s.hits) {
+    s.meanDistance = sum / double(s.hits);
+    s.innerShare = inner / double(s.hits);
+  }
+  return s;
+}
+
 inline Project twoLayers() {
   Project p;
   p.camera.yaw = 0;

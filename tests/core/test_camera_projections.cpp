@@ -10,11 +10,16 @@
 #include <random>
 #include <vector>
 
+#include "core/flame_seed_checks.h"
+#include "core/renderer_scenes.h"
 #include "io/project_io.h"
 #include "model/project.h"
 #include "model/validation.h"
+#include "render/accumulation.h"
 #include "render/camera.h"
 #include "render/chaos_kernel.h"
+#include "render/chaos_renderer.h"
+#include "render/compiled_ifs.h"
 
 namespace gridifs {
 namespace {
@@ -107,6 +112,16 @@ std::vector<Camera> cameras() {
       c.pitch = 90.0;
       out.push_back(c);
     }
+  // Fisheyes within a hemisphere (a 180° dome master, a 130° lens) take the renderer's shorter
+  // path (half-angle tangents instead of an arctangent's octants).
+  const std::size_t all = out.size();
+  for (std::size_t i = 0; i < all; ++i)
+    if (out[i].projection == CameraProjection::Fisheye)
+      for (double fov : {180.0, 130.0}) {
+        Camera c = out[i];
+        c.fov = fov;
+        out.push_back(c);
+      }
   return out;
 }
 
@@ -129,9 +144,10 @@ TEST(CameraProjections, RaysThroughPixelsInvertTheProjection) {
       ASSERT_NEAR(p.depth, depth, 1e-6) << projectionName(c.projection);
       ++checked;
     }
-    // A 200° fisheye's circle covers about half of a 4:3 frame (a third of a stereo eye's); a
-    // side-by-side equirectangular eye taller than 180° has rays beyond the poles.
-    EXPECT_GT(checked, c.panoramic() ? 100 : 250) << projectionName(c.projection);
+    // A 200° fisheye's circle covers about half of a 4:3 frame (a third of a stereo eye's, less
+    // for narrower ones); a side-by-side equirectangular eye taller than 180° has rays beyond the
+    // poles.
+    EXPECT_GT(checked, c.panoramic() ? 80 : 250) << projectionName(c.projection) << " " << c.fov;
   }
 }
 
@@ -255,6 +271,64 @@ TEST(CameraProjections, RollTurnsThePictureAndShiftSlidesIt) {
   EXPECT_EQ(parseProject(serializeProject(shifted)).camera, shifted.camera);
   // A camera without them saves without them.
   EXPECT_EQ(serializeProject(withCamera("{}")).find("roll"), std::string::npos);
+}
+
+TEST(CameraProjections, LensBlurSpreadsAPointAsFlam3sCamDofDoes) {
+  // flam3's cam_dof (Apophysis 7X's 3D camera): a point at distance Δ from the plane the camera
+  // keeps sharp moves across the picture, at a uniform angle, by a uniform distance up to
+  // 0.1 · cam_dof · Δ. Seen at depth D by a camera of vertical field fov over H pixels, that reach
+  // is R = 0.1 · cam_dof · Δ · (H/2) / (D · tan(fov/2)) pixels; a uniform distance gives a mean
+  // distance of R/2 and half the hits within R/2 (a uniform point of the disc would give 2R/3 and
+  // a quarter).
+  for (const bool flame : {false, true}) {
+    for (const double delta : {1.0, -0.8}) {
+      SCOPED_TRACE((flame ? "flame, delta " : "zbuffer, delta ") + std::to_string(delta));
+      Project p = test::onePoint(Vec3(delta, 0.1, -0.05));  // the eye at x = 4: depth 4 − Δ
+      p.camera.lens_blur = 3.0;
+      p.render.mode = flame ? DisplayMode::Flame : DisplayMode::ZBuffer;
+      RenderJob job = RenderJob::fromProject(p, 2);
+      job.accumulateColor = flame;
+      const Accumulation a = accumulateToCompletion(compileIfs(p), job);
+      const OrbitCamera camera(p.camera, p.render.width, p.render.height);
+      const ProjectedPoint centre = camera.project(glm::dvec3(delta, 0.1, -0.05));
+      const double reach =
+          0.1 * 3.0 * std::abs(delta) * (p.render.height / 2.0) / ((4.0 - delta) * std::tan(20.0 * kDegree));
+      ASSERT_GT(reach, 10.0);
+      const test::PointSpread s = test::pointSpread(a.density, a.width, centre.x, centre.y, reach / 2.0);
+      EXPECT_GT(s.hits, 300'000u);
+      EXPECT_NEAR(s.meanDistance, reach / 2.0, 0.03 * reach);
+      EXPECT_NEAR(s.innerShare, 0.5, 0.03);
+      EXPECT_LE(s.farthest, reach + 1.0);
+      EXPECT_GE(s.farthest, reach - 1.5);
+    }
+  }
+  // On the plane through the target nothing moves; without the blur nothing moves anywhere.
+  for (const double blur : {1.5, 0.0}) {
+    const Vec3 at = blur > 0.0 ? Vec3(0.0, 0.3, 0.2) : Vec3(1.0, 0.3, 0.2);
+    Project p = test::onePoint(at);
+    p.camera.lens_blur = blur;
+    const Accumulation a = accumulateToCompletion(compileIfs(p), RenderJob::fromProject(p, 2));
+    int lit = 0;
+    for (std::uint32_t d : a.density) lit += d > 0;
+    EXPECT_EQ(lit, 1) << blur;
+  }
+  // A function of the seed alone, for any thread count: the lens draws from its own stream,
+  // seeded per chunk as the chains are.
+  Project tetra = test::sierpinskiTetrahedron();
+  tetra.camera.lens_blur = 2.0;
+  test::expectAFunctionOfTheSeedForAnyThreadCount(tetra, 300'000);
+  // The blur needs a flat picture plane; the file refuses it on a panoramic camera.
+  Project dome = test::onePoint(Vec3(0.0));
+  dome.camera.projection = CameraProjection::Fisheye;
+  dome.camera.fov = 180.0;
+  dome.camera.lens_blur = 0.5;
+  try {
+    validateProject(dome);
+    ADD_FAILURE() << "a lens blur on a fisheye camera was accepted";
+  } catch (const ModelError& e) {
+    EXPECT_NE(std::string(e.what()).find("a lens blur needs a perspective or orthographic camera"), std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(CameraProjections, TheFileNamesProjectionsAndRefusesUnusableOnes) {

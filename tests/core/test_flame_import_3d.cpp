@@ -69,12 +69,9 @@ TEST(FlameImport3D, AffinePartsAndZVariationsFollowJWildfire) {
     EXPECT_TRUE(x.isAffine());
     EXPECT_FALSE(x.xyDependsOnZ());
   }
-  bool dofWarned = false;
-  for (const std::string& w : g.warnings) {
-    dofWarned |= w.find("cam_dof") != std::string::npos;
-    EXPECT_EQ(w.find("2D"), std::string::npos) << w;
-  }
-  EXPECT_TRUE(dofWarned);
+  for (const std::string& w : g.warnings) EXPECT_EQ(w.find("2D"), std::string::npos) << w;
+  // cam_dof is read (a sampled import leaves it out with a warning: FlameCli's test).
+  EXPECT_GT(g.camDof, 0.0);
 
   // A yz part that turns y into z: y' = 0.8 y − 0.6 z, z' = 0.6 y + 0.8 z + 0.2; then swirl
   // (which preserve_z makes carry 0.3 z') and linear 0.6.

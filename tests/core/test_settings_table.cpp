@@ -123,23 +123,27 @@ TEST(SettingsTable, DefaultsAreValidAndEveryFieldIsWritten) {
   EXPECT_NO_THROW(validateProject(p));
   p.render.mode = DisplayMode::Shaded;  // writes render.shading
   nlohmann::json root = nlohmann::json::parse(serializeProject(p));
-  const auto lensShift = [](const SettingSpec& s) { return std::string(s.key).rfind("shift_", 0) == 0; };
+  const auto flatOnly = [](const SettingSpec& s) {
+    return std::string(s.key).rfind("shift_", 0) == 0 || std::string(s.key) == "lens_blur";
+  };
   for (const Group& g : groups()) {
     SCOPED_TRACE(g.path);
     const nlohmann::json& object = at(root, g.path);
     for (const SettingSpec& s : g.table->fields) {
-      if (g.table == &cameraTable() && lensShift(s)) continue;
+      if (g.table == &cameraTable() && flatOnly(s)) continue;
       EXPECT_TRUE(object.contains(s.key)) << s.key;
     }
   }
-  // A panoramic camera has no lens shift: a flat one writes it.
+  // A panoramic camera has no lens shift or lens blur: a flat one writes them.
   p.camera.projection = CameraProjection::Perspective;
   p.camera.shift_x = 0.1;
   p.camera.shift_y = -0.1;
+  p.camera.lens_blur = 0.5;
   EXPECT_NO_THROW(validateProject(p));
   root = nlohmann::json::parse(serializeProject(p));
   EXPECT_TRUE(root["camera"].contains("shift_x"));
   EXPECT_TRUE(root["camera"].contains("shift_y"));
+  EXPECT_TRUE(root["camera"].contains("lens_blur"));
 }
 
 TEST(SettingsTable, EveryNumberOutsideItsRangeIsRefusedWithItsPath) {

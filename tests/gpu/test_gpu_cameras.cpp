@@ -9,6 +9,7 @@
 #include "gpu/correlation.h"
 #include "gpu/gpu_chaos_renderer.h"
 #include "gpu_test_support.h"
+#include "render/accumulation.h"
 #include "render/compiled_ifs.h"
 
 namespace gridifs {
@@ -84,6 +85,30 @@ TEST(GpuCameras, PanoramicAndStereoPointsLandWhereTheFormulasSay) {
     EXPECT_NEAR(double(g.stats.plotted), double(cpu.stats.plotted), 0.02 * double(job.samples));
     EXPECT_GE(test::correlation(test::blockDensity(cpu), test::blockDensity(g)), 0.98);
   }
+}
+
+TEST(GpuCameras, LensBlurSpreadsAPointAsTheCpuDoes) {
+  // The camera's lens blur (flam3's cam_dof) on the GPU: the same reach, the same uniform
+  // distance (mean R/2, half the hits within R/2) as the CPU's (core's CameraProjections test).
+  gpu::GpuChaosRenderer gpu;
+  const Vec3 at(1.0, 0.1, -0.05);
+  Project p = test::onePoint(at);
+  p.camera.lens_blur = 3.0;
+  const auto ifs = compileIfs(p);
+  const RenderJob job = RenderJob::fromProject(p, 2);
+  gpu.restart(ifs, job);
+  ASSERT_TRUE(gpu.waitUntilDone());
+  Accumulation a;
+  gpu.accumulation(a);
+  const OrbitCamera camera(p.camera, p.render.width, p.render.height);
+  const ProjectedPoint centre = camera.project(glm::dvec3(at.x, at.y, at.z));
+  const double reach = 0.1 * 3.0 * 1.0 * (p.render.height / 2.0) / (3.0 * std::tan(20.0 * M_PI / 180.0));
+  const test::PointSpread s = test::pointSpread(a.density, a.width, centre.x, centre.y, reach / 2.0);
+  EXPECT_GT(s.hits, 300'000u);
+  EXPECT_NEAR(s.meanDistance, reach / 2.0, 0.03 * reach);
+  EXPECT_NEAR(s.innerShare, 0.5, 0.03);
+  EXPECT_LE(s.farthest, reach + 1.0);
+  EXPECT_GE(s.farthest, reach - 1.5);
 }
 
 }  // namespace

@@ -32,8 +32,8 @@ std::optional<int> choiceCombo(ModellerState& state, const SettingSpec& spec, in
 }
 
 /// A slider of the camera's number `key` over its table's slider range, with a key button when
-/// `keyable`: roll and the lens shift are written only when set, so they have no track until they
-/// differ from 0.
+/// `keyable`: roll, the lens shift and the lens blur are written only when set, so they have no
+/// track until they differ from 0.
 void cameraSlider(ModellerState& state, EditQueue& edits, const Camera& camera, const char* key, bool keyable = true) {
   const SettingSpec& spec = cameraTable().field(key);
   double value = spec.number(&camera);
@@ -70,8 +70,8 @@ void drawCameraPanel(ModellerState& state, EditQueue& edits) {
     if (next.panoramic() && !camera.panoramic())
       next.fov = next.projection == CameraProjection::Fisheye ? 180.0 : 360.0;
     if (!next.panoramic()) next.fov = std::min(next.fov, kMaxFlatFov);
-    if (next.orthographic()) next.stereo.reset();             // no parallax without perspective
-    if (next.panoramic()) next.shift_x = next.shift_y = 0.0;  // no flat picture to slide
+    if (next.orthographic()) next.stereo.reset();                              // no parallax without perspective
+    if (next.panoramic()) next.shift_x = next.shift_y = next.lens_blur = 0.0;  // no flat picture to slide or blur
     edits.commit(std::string("Projection: ") + projectionName(next.projection), SetCamera{next});
   }
 
@@ -80,6 +80,7 @@ void drawCameraPanel(ModellerState& state, EditQueue& edits) {
   if (!camera.panoramic()) {
     cameraSlider(state, edits, camera, "shift_x", false);
     cameraSlider(state, edits, camera, "shift_y", false);
+    cameraSlider(state, edits, camera, "lens_blur", false);
   }
 
   sectionTitle("Stereo");

@@ -429,6 +429,7 @@ void ModellerApp::writeProbe(double frameMs) {
   j["camera"] = {{"projection", projectionName(project.camera.projection)},
                  {"fov", project.camera.fov},
                  {"yaw", project.camera.yaw},
+                 {"lens_blur", project.camera.lens_blur},
                  {"stereo", project.camera.stereo.has_value()}};
   nlohmann::json tracks = nlohmann::json::object();
   for (const auto& [path, track] : project.tracks) {

@@ -12,7 +12,13 @@ With u = c_x and v = the in-plane part of c_z, both linear in (x, y), that is a 
   c_y = (cos(pitch)/sin(pitch))·v + sin(pitch)·zpos, i.e. β·v + γ;
   x_out = x''/A, y_out = ((β + γ·k)/(cos a · s)·y'' + γ)/A, where the pre-affine scales v by s so
   that sin a = k/s stays within (−1, 1).
-flam3-render then applies the centre and rotation as it always does. Run it from this folder.
+flam3-render then applies the centre and rotation as it always does.
+
+cam_dof moves the turned point by dr = rand · 0.1 · cam_dof · c_z at a random angle before the divide
+(Apophysis 7X's ProjectPitchYawDOF). A level camera (pitch 0) keeps c_z = −zpos on the plane, so
+the move has a constant reach R = 0.1 · cam_dof · |zpos|: flam3's own `blur` variation (a uniform
+angle and a uniform distance up to its weight) in the final xform, beside `linear`, before the
+post-affine divide by 1 − perspective · c_z. Run it from this folder.
 """
 import math
 
@@ -40,6 +46,10 @@ VIEWS = {"julia": ((0.05, 0.13), 120.0), "blur": ((0.06, 0.65), 100.0), "spheric
 # The orthographic one: the same julia genome seen without perspective, from another side.
 GENOMES["julia_orthographic"] = GENOMES["julia"]
 CAMERAS = {"julia_orthographic": {"pitch": -0.9, "yaw": 2.2, "perspective": 0.0, "zpos": -0.4, "rotate": -60.0}}
+# The lens blur: the julia genome seen level, its plane 1.0 behind the plane the camera keeps sharp.
+GENOMES["julia_dof"] = GENOMES["julia"]
+VIEWS["julia_dof"] = ((0.05, 0.13), 140.0)
+CAMERAS["julia_dof"] = {"pitch": 0.0, "yaw": 0.4, "perspective": 0.25, "zpos": 1.0, "rotate": 25.0, "dof": 0.8}
 HEADER = ('size="256 256" scale="{scale}" center="{cx} {cy}" rotate="{rotate}" oversample="1" filter="0.5" '
           'quality="60" background="0 0 0" brightness="4" gamma="2" gamma_threshold="0.01" vibrancy="1" '
           'highlight_power="1" estimator_radius="9" estimator_minimum="0" estimator_curve="0.4" palette="27"')
@@ -49,7 +59,21 @@ def num(v):
     return "%.12g" % v
 
 
+def blurred_final_xform(cam):
+    yaw, persp, zpos, dof = cam["yaw"], cam["perspective"], cam["zpos"], cam["dof"]
+    assert cam["pitch"] == 0.0
+    cy, sy = math.cos(-yaw), math.sin(-yaw)
+    pre = (cy, -sy, 0.0, sy, cy, 0.0)  # c = M(0, yaw) · (x, y)
+    zr = 1.0 + persp * zpos            # 1 − perspective · c_z, c_z = −zpos
+    post = (1.0 / zr, 0.0, 0.0, 0.0, 1.0 / zr, 0.0)
+    coefs = lambda m: " ".join(num(m[i]) for i in (0, 3, 1, 4, 2, 5))
+    return ('<finalxform color="0" color_speed="0" linear="1" blur="%s" coefs="%s" post="%s"/>'
+            % (num(0.1 * dof * abs(zpos)), coefs(pre), coefs(post)))
+
+
 def reference_final_xform(cam):
+    if cam.get("dof"):
+        return blurred_final_xform(cam)
     pitch, yaw, persp, zpos = cam["pitch"], cam["yaw"], cam["perspective"], cam["zpos"]
     cy, sy, cp, sp = math.cos(-yaw), math.sin(-yaw), math.cos(pitch), math.sin(pitch)
     m0 = (cy, -sy)
@@ -73,6 +97,8 @@ def main():
         cam = CAMERAS.get(name, CAMERA)
         camera = 'cam_pitch="%s" cam_yaw="%s" cam_perspective="%s" cam_zpos="%s"' % (
             num(cam["pitch"]), num(cam["yaw"]), num(cam["perspective"]), num(cam["zpos"]))
+        if cam.get("dof"):
+            camera += ' cam_dof="%s"' % num(cam["dof"])
         (cx, cy), scale = VIEWS[name]
         header = HEADER.format(scale=num(scale), cx=num(cx), cy=num(cy), rotate=num(cam["rotate"]))
         body = "".join("   <xform %s/>\n" % x for x in xforms)
