@@ -12,6 +12,7 @@
 #include <array>
 #include <atomic>
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <type_traits>
@@ -28,8 +29,10 @@
 #endif
 
 // Callers of runChain compile it twice, picked at load time: AVX2 (the 32-byte node-pair loads and
-// lerps are single instructions) and the portable baseline. FMA is deliberately not enabled: GCC
-// would contract a + (b - a)·t into fused multiply-adds, and images would then depend on the CPU.
+// lerps are single instructions) and the portable baseline. FMA is deliberately not used: contracted
+// into fused multiply-adds, a + (b - a)·t would round differently, and images would then depend
+// on the CPU (the build also passes -ffp-contract=off). An AVX-512 (x86-64-v4) clone was measured
+// on an AVX-512 CPU: without contraction it ran no faster than AVX2 (docs/RENDERER.md).
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GRIDIFS_NO_KERNEL_CLONES)
 #define GRIDIFS_KERNEL_CLONES __attribute__((target_clones("avx2", "default")))
 #else
@@ -889,6 +892,8 @@ struct ZBufferPlot {
     HotCamera::Kind kind;
     bool stereo;
     v8f centreX, centreY, pixelsPerRadian, halfFov;      // panoramic
+    bool hemisphere;                                     // a fisheye of at most 180°
+    v8f twicePixelsPerRadian, halfAngleTanSquared;       // hemisphere: 2·pixelsPerRadian, tan²(halfFov/2)
     v8f radiusSquared, radiusTimesSign, up[3], turn[9];  // omni-directional stereo
   };
   Projected projection() const {
@@ -912,6 +917,10 @@ struct ZBufferPlot {
     lanes(p.centreY, cam.centre[0][1], cam.centre[1][1]);
     p.pixelsPerRadian = v8f{} + cam.pixelsPerRadian;
     p.halfFov = v8f{} + cam.halfFov;
+    p.hemisphere = cam.kind == HotCamera::Fisheye && cam.halfFov <= float(M_PI / 2);
+    const float halfAngleTan = std::tan(0.5f * cam.halfFov);
+    p.twicePixelsPerRadian = v8f{} + 2.0f * cam.pixelsPerRadian;
+    p.halfAngleTanSquared = v8f{} + halfAngleTan * halfAngleTan;
     p.radiusSquared = v8f{} + cam.radius * cam.radius;
     lanes(p.radiusTimesSign, cam.radius * cam.sign[0], cam.radius * cam.sign[1]);
     for (int d = 0; d < 3; ++d) p.up[d] = v8f{} + cam.up[d];
@@ -985,7 +994,25 @@ struct ZBufferPlot {
       vz = pr.turn[6] * wx + pr.turn[7] * wy + pr.turn[8] * wz;
     }
     sqrtEight(vx * vx + vy * vy + vz * vz, depth);
-    if (pr.kind == HotCamera::Fisheye) {
+    if (pr.hemisphere) {
+      // Within a hemisphere θ ≤ 90°, so t = tan(θ/2) = h/(d − z) ≤ 1 (d the distance, h = √(x² + y²))
+      // and θ = 2·atan t = 2·t·P(t²), P(u) = atan(√u)/√u: the radius along (x, y)/h is
+      // θ·pixelsPerRadian/h = 2·pixelsPerRadian·P(t²)/(d − z), with t² = h²/(d − z)². No
+      // arctangent's octants and no second square root; θ ≤ halfFov is t² ≤ tan²(halfFov/2).
+      // P is a minimax fit on [0, 1] within 1.4e-8; in float, θ comes within 3e-7 radians (a
+      // thousandth of a pixel on an 8192-pixel dome master).
+      const V8i ahead = depth - vz > 0.0f;  // d − z = 0 only straight behind the eye
+      const v8f inverse = 1.0f / (ahead ? depth - vz : v8f{} + 1.0f);
+      const v8f h2 = vx * vx + vy * vy;
+      const v8f u = h2 * (inverse * inverse), u2 = u * u, u4 = u2 * u2;
+      const v8f low = (1.0f + u * -3.333309293e-01f) + u2 * (1.999304891e-01f + u * -1.420710236e-01f);
+      const v8f high = (1.065457687e-01f + u * -7.533492893e-02f) + u2 * (4.303749651e-02f + u * -1.628200337e-02f);
+      const v8f series = low + u4 * (high + u4 * 2.903333167e-03f);
+      const v8f k = pr.twicePixelsPerRadian * series * inverse;
+      ix = pr.centreX + k * vx;
+      iy = pr.centreY - k * vy;
+      drawable &= ahead & (u <= pr.halfAngleTanSquared);
+    } else if (pr.kind == HotCamera::Fisheye) {
       // θ = atan2(h, −z), and the radius θ·pixelsPerRadian along (x, y)/h: one division for both.
       v8f h, theta;
       sqrtEight(vx * vx + vy * vy, h);
