@@ -3,7 +3,8 @@
 # (quality × width × height): each genome of tests/data/flame/bench/ is imported with
 # `gridifs import-flame`, then flam3-render (nthreads=1) and `gridifs render --threads 1` run in
 # alternation REPEAT times (default 3); the table gives median wall and CPU (user + system) seconds
-# and the medians of the per-round ratios flam3 / gridifs (r_wall, r_cpu: the default device, which
+# and peak memory (maximum resident set, MB), and the medians of the per-round ratios flam3 /
+# gridifs (r_wall, r_cpu: the default device, which
 # probes the GPU first; r_gcpu: wall with --device cpu). With BASELINE=/path/to/older/gridifs that binary runs in the same
 # rounds (before/after from one run). Then the canonical 3D grid scene (tests/bench/canonical_scene.h)
 # against flam3's 3-function Sierpinski at the same samples, as scripts/bench-whole-process measures
@@ -18,9 +19,9 @@ BASELINE="${BASELINE:-}"
 WORK="$(mktemp -d "${TMPDIR:-/tmp}/gridifs-flam3ratio.XXXXXX")"
 trap 'rm -rf "$WORK"' EXIT
 
-measure() {  # "wall cpu" seconds of "$@" (cpu: user + system)
-  /usr/bin/time -f "%e %U %S" -o "$WORK/time" "$@" >/dev/null 2>&1 || echo "failed: $*" >&2
-  tail -1 "$WORK/time" | awk '{printf "%s %.2f", $1, $2 + $3}'
+measure() {  # "wall cpu peak" of "$@": seconds, seconds (user + system), MB (maximum resident set)
+  /usr/bin/time -f "%e %U %S %M" -o "$WORK/time" "$@" >/dev/null 2>&1 || echo "failed: $*" >&2
+  tail -1 "$WORK/time" | awk '{printf "%s %.2f %.0f", $1, $2 + $3, $4 / 1024}'
 }
 median() { python3 -c "import statistics,sys; print('%.2f' % statistics.median(float(a) for a in sys.argv[1:]))" "$@"; }
 ratio() { python3 -c "print($1 / $2)"; }
@@ -30,29 +31,30 @@ ratio() { python3 -c "print($1 / $2)"; }
 # per-round ratios flam3 / gridifs, wall and CPU.
 run_case() {
   local name="$1" flame="$2" project="$3" samples="$4"
-  local fw=() fc=() gw=() gc=() cw=() bw=() bc=() rw=() rc=() rcw=() rbw=() rbc=()
+  local fw=() fc=() fm=() gw=() gc=() gm=() cw=() bw=() bc=() rw=() rc=() rcw=() rbw=() rbc=()
   for ((i = 0; i < REPEAT; ++i)); do
     local f g c b
     read -r -a f <<<"$(measure env nthreads=1 seed=1 out="$WORK/flam3.png" sh -c "flam3-render < '$flame'")"
     read -r -a g <<<"$(measure "$G" render "$project" -o "$WORK/g.png" --samples "$samples" --threads 1 -q)"
     read -r -a c <<<"$(measure "$G" render "$project" -o "$WORK/c.png" --samples "$samples" --threads 1 -q --device cpu)"
-    fw+=("${f[0]}") fc+=("${f[1]}") gw+=("${g[0]}") gc+=("${g[1]}") cw+=("${c[0]}")
+    fw+=("${f[0]}") fc+=("${f[1]}") fm+=("${f[2]}") gw+=("${g[0]}") gc+=("${g[1]}") gm+=("${g[2]}") cw+=("${c[0]}")
     rw+=("$(ratio "${f[0]}" "${g[0]}")") rc+=("$(ratio "${f[1]}" "${g[1]}")") rcw+=("$(ratio "${f[0]}" "${c[0]}")")
     if [[ -n "$BASELINE" ]]; then
       read -r -a b <<<"$(measure "$BASELINE" render "$project" -o "$WORK/b.png" --samples "$samples" --threads 1 -q)"
       bw+=("${b[0]}") bc+=("${b[1]}") rbw+=("$(ratio "${f[0]}" "${b[0]}")") rbc+=("$(ratio "${f[1]}" "${b[1]}")")
     fi
   done
-  printf "%-18s %9s %5s/%-5s %5s/%-5s %6s %6sx %6sx %6sx" "$name" "$samples" "$(median "${fw[@]}")" \
-    "$(median "${fc[@]}")" "$(median "${gw[@]}")" "$(median "${gc[@]}")" "$(median "${cw[@]}")" \
-    "$(median "${rw[@]}")" "$(median "${rc[@]}")" "$(median "${rcw[@]}")"
+  printf "%-18s %11s %5s/%-5s %5s/%-5s %4.0f/%-4.0f %6s %6sx %6sx %6sx" "$name" "$samples" "$(median "${fw[@]}")" \
+    "$(median "${fc[@]}")" "$(median "${gw[@]}")" "$(median "${gc[@]}")" "$(median "${fm[@]}")" \
+    "$(median "${gm[@]}")" "$(median "${cw[@]}")" "$(median "${rw[@]}")" "$(median "${rc[@]}")" "$(median "${rcw[@]}")"
   [[ -n "$BASELINE" ]] && printf "   %5s/%-5s %6sx %6sx" "$(median "${bw[@]}")" "$(median "${bc[@]}")" \
     "$(median "${rbw[@]}")" "$(median "${rbc[@]}")"
   printf "\n"
 }
 
 echo "one thread, whole process, median of $REPEAT alternating rounds; load $(cut -d' ' -f1-3 /proc/loadavg), $(nproc) cores"
-printf "%-18s %9s %11s %11s %6s %7s %7s %7s" genome samples "flam3 w/cpu" "gridifs w/c" "g_cpu" \
+echo "CPU: $(lscpu | sed -n 's/^Model name: *//p' | head -1) ($(grep -o -m1 'avx512f' /proc/cpuinfo || echo 'no AVX-512'))"
+printf "%-18s %11s %11s %11s %9s %6s %7s %7s %7s" genome samples "flam3 w/cpu" "gridifs w/c" "MB f/g" "g_cpu" \
   "r_wall" "r_cpu" "r_gcpu"
 [[ -n "$BASELINE" ]] && printf "   %11s %7s %7s" "base w/cpu" "rb_wall" "rb_cpu"
 printf "\n"
