@@ -27,7 +27,7 @@ GRIDIFS_TEST_PACKAGES=(
   # scripts/fuzz: clang and libFuzzer; scripts/test checks the sources' format.
   clang libclang-rt-14-dev clang-format
   # scripts/slurm-local: a one-node Slurm for the render-job tests; ss picks its free ports.
-  slurm-wlm munge iproute2
+  slurm-wlm munge iproute2 procps
   # MIDI through a real transport: JACK's server with its dummy driver (no sound hardware).
   jackd2
   # The Python module (pybind11 against the system Python 3.11 that Debian's Blender runs), its

@@ -144,10 +144,16 @@ TEST(Farm, ACancelledTaskKeepsItsMergeWaitingAndTheSameCommandFinishesWithTheSam
   ASSERT_EQ(gridifs(farmCommand).exitCode, 0);
   std::string renderJob = slurp(dir.path / "job" / "jobs");
   renderJob = renderJob.substr(0, renderJob.find(' '));
-  // Cancel element 2 once it runs.
+  // Cancel element 2 once its render runs: Slurm reports the element RUNNING while it still
+  // launches the batch script, and a cancel in that window can leave the script to run to its end
+  // unsignalled (the job shows COMPLETING while the render writes its part). So wait for the
+  // render's own process (this machine is the test cluster's only node).
+  // "[s]" keeps pgrep's pattern from matching the shell that runs pgrep.
+  const std::string partTwo = (dir.path / "job" / "parts").string() + "/[s]_p2.gpart";
   bool cancelled = false;
   for (int i = 0; i < 1000 && !cancelled; ++i) {
-    if (slurm("squeue -h -j " + renderJob + "_2 -o '%T'").find("RUNNING") != std::string::npos) {
+    if (slurm("squeue -h -j " + renderJob + "_2 -o '%T'").find("RUNNING") != std::string::npos &&
+        !slurm("pgrep -f " + quote(partTwo)).empty()) {
       slurm("scancel " + renderJob + "_2");
       cancelled = true;
     }
