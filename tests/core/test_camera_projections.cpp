@@ -312,6 +312,22 @@ TEST(CameraProjections, LensBlurSpreadsAPointAsFlam3sCamDofDoes) {
     for (std::uint32_t d : a.density) lit += d > 0;
     EXPECT_EQ(lit, 1) << blur;
   }
+  // A free-form IFS (its own chaos loop) goes through the same lens: the blurred points cover
+  // more pixels.
+  {
+    Project freeForm = loadProject(std::string(GRIDIFS_ASSETS) + "/freeform/fig5_4_fractal_gasket.gridifs");
+    ASSERT_FALSE(freeForm.camera.panoramic());
+    auto litPixels = [](const Project& p) {
+      RenderJob job = RenderJob::fromProject(p, 2);
+      job.samples = 300'000;
+      int lit = 0;
+      for (std::uint32_t d : accumulateToCompletion(compileIfs(p), job).density) lit += d > 0;
+      return lit;
+    };
+    const int sharp = litPixels(freeForm);
+    freeForm.camera.lens_blur = 2.0;
+    EXPECT_GT(litPixels(freeForm), sharp * 11 / 10) << sharp;
+  }
   // A function of the seed alone, for any thread count: the lens draws from its own stream,
   // seeded per chunk as the chains are.
   Project tetra = test::sierpinskiTetrahedron();
