@@ -1,5 +1,5 @@
 #pragma once
-// Reading and writing a project's "audio" and "bindings" (internal to io/; DESIGN §7.13,
+// Reading and writing a project's "audio" and "bindings" (internal to io/; docs/LIVE.md,
 // model/live_binding.h). Throws ModelError with a JSON path.
 #include <nlohmann/json.hpp>
 

@@ -1,5 +1,5 @@
 #pragma once
-// A sound file's band energies, one value per animation frame (DESIGN §7.13): frame k's window
+// A sound file's band energies, one value per animation frame: frame k's window
 // is the sound from k/fps to (k+1)/fps, mixed to mono, weighted by a Hann window and transformed
 // (FFTW, zero-padded to a power of two); band B's energy is the sum of |X(f)|² over the bins
 // whose frequency f lies in [low, high), divided by the band's largest over the file, so

@@ -1,5 +1,5 @@
 #pragma once
-// MIDI controllers for live bindings ("midi:cc:N", "midi:CH:cc:N"; DESIGN §7.13) through RtMidi:
+// MIDI controllers for live bindings ("midi:cc:N", "midi:CH:cc:N"; docs/LIVE.md) through RtMidi:
 // a virtual input port named "gridifs:midi-in" that controllers and sequencers connect to. The
 // ALSA sequencer where the machine has one (/dev/snd/seq), else a running JACK server (JACK's
 // dummy driver needs no sound hardware). Control changes are queued for the UI thread.

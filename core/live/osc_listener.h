@@ -1,5 +1,5 @@
 #pragma once
-// The modeller's OSC input (DESIGN §7.13): a UDP socket bound to 127.0.0.1 only (nothing beyond
+// The modeller's OSC input: a UDP socket bound to 127.0.0.1 only (nothing beyond
 // this machine can reach it), its datagrams decoded by liblo on a thread of its own and queued
 // for the UI thread, which applies them between frames. Two forms are taken:
 // - "/gridifs/set ,sf PATH VALUE" (or ,sd / ,si): set any parameter within its range;

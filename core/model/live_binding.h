@@ -1,5 +1,5 @@
 #pragma once
-// Bindings (DESIGN §7.13): a number of the project, named by its parameter path, driven by live
+// Bindings: a number of the project, named by its parameter path, driven by live
 // input or by sound. A binding maps its source's value v ∈ [0, 1] to min + v·(max − min) and
 // sets it over whatever the parameter's track says:
 // - "audio:B": the energy of band B of the project's audio in each frame's window, divided by

@@ -95,7 +95,7 @@ struct Lineage {
   bool operator==(const Lineage&) const = default;
 };
 
-/// "audio": a sound the project's animation follows (DESIGN §7.13): the file (relative to the
+/// "audio": a sound the project's animation follows: the file (relative to the
 /// project's folder) and the frequency bands, [low, high) in Hz, whose energies `audio:B`
 /// bindings read.
 struct AudioSettings {

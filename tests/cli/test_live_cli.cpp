@@ -1,4 +1,4 @@
-// Sound on the command line (DESIGN §7.13): `render --frames` follows the audio bindings, and
+// Sound on the command line: `render --frames` follows the audio bindings, and
 // `--video` carries the project's sound; bad bindings and a missing sound are refused with exit
 // 2 and one sentence, before any frame is written.
 #include <gtest/gtest.h>

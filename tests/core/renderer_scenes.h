@@ -1,5 +1,7 @@
 #pragma once
 // Scenes with known attractors for the renderer tests, and a wait on a condition.
+#include <gtest/gtest.h>
+
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -115,6 +117,19 @@ inline PointSpread pointSpread(const std::vector<std::uint32_t>& density, int wi
     s.innerShare = inner / double(s.hits);
   }
   return s;
+}
+
+/// A point blurred by a uniform angle and a uniform distance up to `reach` pixels (flam3's
+/// cam_dof): mean distance reach/2, half the hits within reach/2, none beyond it (a uniform point
+/// of the disc would give 2·reach/3 and a quarter).
+inline void expectUniformDistanceSpread(const std::vector<std::uint32_t>& density, int width, double centreX,
+                                        double centreY, double reach) {
+  const PointSpread s = pointSpread(density, width, centreX, centreY, reach / 2.0);
+  EXPECT_GT(s.hits, 300'000u);
+  EXPECT_NEAR(s.meanDistance, reach / 2.0, 0.03 * reach);
+  EXPECT_NEAR(s.innerShare, 0.5, 0.03);
+  EXPECT_LE(s.farthest, reach + 1.0);
+  EXPECT_GE(s.farthest, reach - 1.5);
 }
 
 inline Project twoLayers() {

@@ -1,4 +1,4 @@
-// Bindings and sound (DESIGN §7.13): sources parse, the file holds bindings and refuses bad ones
+// Bindings and sound: sources parse, the file holds bindings and refuses bad ones
 // with the parameter's own words, and the band envelope of synthetic sounds is what the
 // definition says: silence gives exactly 0 (the binding's min), a tone in a band its max, and a
 // tone in one band leaves another nearly still.

@@ -1,5 +1,5 @@
 """The band envelope that "audio:B" bindings read, against a numpy reference of its definition
-(DESIGN §7.13): frame k's window is the sound from k/fps to (k+1)/fps, mixed to mono, Hann
+(docs/LIVE.md): frame k's window is the sound from k/fps to (k+1)/fps, mixed to mono, Hann
 weighted, zero-padded to a power of two (at least 256); a band sums |X(f)|^2 over the bins with
 low <= f < high, divided by its largest over the file."""
 import math

@@ -1,5 +1,5 @@
 #pragma once
-// Live control in the modeller (DESIGN §7.13): the OSC input (`--osc-port P`, 127.0.0.1 only)
+// Live control in the modeller: the OSC input (`--osc-port P`, 127.0.0.1 only)
 // applied between frames, and View › Live, which lists the project's bindings with their current
 // values and counts what came in and what was refused.
 //
