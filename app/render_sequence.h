@@ -15,7 +15,6 @@ struct SequenceOptions {
   std::optional<std::string> video;   // OUT.mp4, assembled with ffmpeg
 };
 
-constexpr int kMaxMotionBlurSamples = 256;
 constexpr std::int64_t kMaxSequenceFrames = 100000;
 
 /// Frames first..last, both included.

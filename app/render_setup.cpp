@@ -89,27 +89,15 @@ RenderSetup prepareRenderOf(const Project& loaded, const std::filesystem::path& 
   } catch (const ModelError& e) {
     throw CliError(kBadInput, file.string() + ": " + e.message());
   }
-  if (overrides.volume || usesSetIteration(setup.project)) {
-    // Median functions map sets, not points: the renderer draws the points of their density
-    // volume (what `gridifs volume` writes), computed here from the project's "volume" settings.
-    VolumeJob volumeJob;
-    volumeJob.settings = setup.project.volume.value_or(VolumeSettings{});
-    volumeJob.threads = options.threads;
-    volumeJob.projectFolder = options.folder.empty() ? std::filesystem::path(".") : options.folder;
-    try {
-      setup.ifs = compileVolumePoints(
-          setup.project, overrides.volume ? *overrides.volume : computeDensityVolume(setup.project, volumeJob));
-    } catch (const ModelError& e) {
-      throw CliError(kBadInput, file.string() + ": " + e.what());
-    }
-    return setup;
-  }
+  // Median functions (or a page of the book of drawings) draw the points of a density volume;
+  // the grids are evaluated once, for the IFS and for the contractivity warnings below.
   Document document(setup.project);
   try {
-    setup.ifs = compileRenderIfs(document.project(), document.evaluation(), options.folder, options.setResolution);
+    setup.ifs = compileChaosIfs(document.project(), document.evaluation(), options, overrides.volume);
   } catch (const RenderJobError& e) {
     throw CliError(kBadInput, file.string() + ": " + e.what());
   }
+  if (overrides.volume || usesSetIteration(setup.project)) return setup;
   // The chaos game still draws something for an expanding function (clamping to X keeps the chain
   // bounded), so this is a warning, as in `gridifs info`.
   for (const CompiledFunction& f : setup.ifs->functions) {

@@ -21,10 +21,7 @@ int runExportPoints(const std::string& file, const std::string& out, RenderOverr
   const std::string device = checkedDevice(overrides.device);
   if (!overrides.samples) overrides.samples = std::to_string(kDefaultExportSamples);
   const RenderSetup setup = prepareRender(file, overrides, kMaxExportSamples);
-  const std::string description = "GridIFS export-points of " + std::filesystem::path(file).filename().string() + ": " +
-                                  std::to_string(setup.job.samples) + " samples, seed " +
-                                  std::to_string(setup.job.seed) + ", " + std::to_string(setup.job.threads) +
-                                  " streams";
+  const std::string description = pointCloudDescription(std::filesystem::path(file).filename().string(), setup.job);
   std::string used;
   const PointGenerator generator = pointGeneratorOn(device, used);
   ProgressBar bar("export-points", quiet);

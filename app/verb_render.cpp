@@ -20,11 +20,11 @@
 #include "app/render_sequence.h"
 #include "app/render_setup.h"
 #include "app/render_volume.h"
-#include "app/shaded_image_output.h"
 #include "base/atomic_file.h"
 #include "base/color_space.h"
 #include "flame/palette_gradient.h"
 #include "io/project_io.h"
+#include "job/frame_output.h"
 #include "model/settings_tables.h"
 #include "render/camera.h"
 #include "render/flame_render.h"
@@ -46,51 +46,25 @@ struct InterruptGuard {
   ~InterruptGuard() { std::signal(SIGINT, previous); }
 };
 
-void writeImage(const RenderImage& image, const std::filesystem::path& out, const RenderSetup& setup,
-                const std::string& file) {
-  const std::size_t n = std::size_t(image.width) * std::size_t(image.height);
-  ImageFileLayout layout;
-  layout.width = image.width;
-  layout.height = image.height;
-  // No thread count: the image does not depend on it, and a merged render writes the same bytes.
-  layout.description = "GridIFS render of " + file + ", " + std::to_string(setup.job.samples) + " samples, seed " +
-                       std::to_string(setup.job.seed);
+/// Writes the frame through core's frame step (job/frame_output.h), with the command line's exit
+/// codes: 1 when the file cannot be written, 2 when the project cannot develop the image.
+void writeFrameFile(const RenderImage& image, const RenderSetup& setup, const RenderJob& rendered,
+                    const std::string& file, const std::string& out, const FlameOptions* flame = nullptr) {
+  FrameOutput output;
+  output.file = out;
+  output.source = std::filesystem::path(file).filename().string();
+  if (flame) {
+    output.bitDepth = flame->bitDepth.value_or(0);
+    output.transparent = flame->transparent;
+  }
   try {
-    if (lowerExtension(out) == "exr") {
-      // Z, and P: the world position each pixel's centre sees at its depth (0 where empty), plus
-      // the camera's matrices, for compositing.
-      layout.channels = {"R", "G", "B", "A", "Z", "P.x", "P.y", "P.z"};
-      layout.alphaChannel = 3;
-      layout.zChannel = 4;
-      layout.stored = StoredSample::Float;
-      const OrbitCamera camera(setup.job.camera, image.width, image.height);
-      const ExrCameraMatrices matrices = exrCameraMatrices(camera);
-      layout.worldToCamera = matrices.worldToCamera;
-      layout.worldToNDC = matrices.worldToNDC;
-      constexpr std::size_t k = 8;
-      std::vector<float> pixels(n * k);
-      for (std::size_t i = 0; i < n; ++i) {
-        const std::uint8_t* px = &image.rgba[i * 4];
-        const bool hit = px[3] != 0;
-        for (int c = 0; c < 3; ++c) pixels[i * k + c] = hit ? srgbToLinear(px[c] / 255.0f) : 0.0f;
-        pixels[i * k + 3] = hit ? 1.0f : 0.0f;
-        pixels[i * k + 4] = hit ? image.depth[i] : kEmptyPixelDepth;
-        if (hit) {
-          const glm::dvec3 p = pixelWorldPosition(camera, int(i % std::size_t(image.width)),
-                                                  int(i / std::size_t(image.width)), image.depth[i]);
-          for (int c = 0; c < 3; ++c) pixels[i * k + 5 + std::size_t(c)] = float(p[c]);
-        }
-      }
-      writeImageFile(out, layout, pixels.data());
-    } else {
-      layout.channels = {"R", "G", "B"};
-      std::vector<std::uint8_t> pixels(n * 3);
-      for (std::size_t i = 0; i < n; ++i)
-        for (int c = 0; c < 3; ++c) pixels[i * 3 + c] = image.rgba[i * 4 + c];
-      writeImageFile(out, layout, pixels.data());
-    }
+    writeFrame(image, setup.project, setup.job, rendered, output);
   } catch (const IoError& e) {
     throw CliError(kFailure, e.what());
+  } catch (const ModelError& e) {
+    throw CliError(kBadInput, file + ": " + e.what());
+  } catch (const std::invalid_argument& e) {
+    throw CliError(kBadInput, file + ": " + e.what());
   }
 }
 
@@ -133,18 +107,21 @@ std::string partProject(const RenderSetup& setup) {
   return serializeProject(p);
 }
 
-/// Runs `job` to completion on `device` (app/render_device_option.h) with a progress bar (interruptible with Ctrl-C).
-/// With several setups (the time samples of one motion-blurred frame) the job's samples are split
-/// among them, each with its own seed, and the results merged. With source.part it writes the
+/// Runs `jobs` (one per setup, each the whole frame's job at its setup's time) to completion on
+/// `device` (app/render_device_option.h) with a progress bar (interruptible with Ctrl-C). With
+/// several setups (the time samples of one motion-blurred frame) the frame's samples are split
+/// among them, each with its own seed and camera, and the results merged. With source.part it writes the
 /// accumulations as a part file and returns nothing; with source.merged it renders nothing and
 /// develops the merged accumulations instead.
 /// Throws CliError when interrupted or when at least half of the points were unusable (nothing is written then).
-std::optional<RenderImage> renderWithProgress(const std::vector<RenderSetup>& setups, const RenderJob& job,
-                                              const std::string& file, const std::string& out, bool quiet,
-                                              const std::string& device, const DisplaySettings* displayOverride,
-                                              FrameProgress progress, const FrameSource& source, double motionFade) {
+std::optional<RenderImage> renderWithProgress(const std::vector<RenderSetup>& setups,
+                                              const std::vector<RenderJob>& jobs, const std::string& file,
+                                              const std::string& out, bool quiet, const std::string& device,
+                                              const DisplaySettings* displayOverride, FrameProgress progress,
+                                              const FrameSource& source, double motionFade) {
   ProgressBar ownBar(source.merged ? "merge" : "render", quiet || source.merged);
   ProgressBar& bar = progress.bar ? *progress.bar : ownBar;
+  const RenderJob& job = jobs.front();
   if (!progress.bar) {
     // A part's bar runs over its own share (on the CPU: its chunks of every time sample).
     progress.total = job.samples;
@@ -152,7 +129,7 @@ std::optional<RenderImage> renderWithProgress(const std::vector<RenderSetup>& se
       progress.total = 0;
       const std::int64_t count = std::int64_t(setups.size());
       for (std::int64_t i = 0; i < count; ++i) {
-        const std::int64_t samples = job.samples / count + (i < job.samples % count ? 1 : 0);
+        const std::int64_t samples = timeSampleShare(job.samples, i, count);
         progress.total += rangeSamples(samples, chunksOf(samples, &source.part->part));
       }
     }
@@ -170,9 +147,10 @@ std::optional<RenderImage> renderWithProgress(const std::vector<RenderSetup>& se
   if (progress.threadsBounded && !source.part && !source.merged) loadImageWriterNow();
   for (std::int64_t i = 0; i < count && !source.merged; ++i) {
     const RenderSetup& setup = setups[std::size_t(i)];
-    RenderJob part = job;
-    part.samples = job.samples / count + (i < job.samples % count ? 1 : 0);
-    part.seed = job.seed + std::uint64_t(i);
+    // The same shares and seeds as core's time samples (job/frame_output.h).
+    RenderJob part = jobs[std::size_t(i)];
+    part.samples = timeSampleShare(part.samples, i, count);
+    part.seed += std::uint64_t(i);
     if (source.part) part.part = source.part->part;
     try {
       accumulations.push_back(accumulateOnDevice(
@@ -240,15 +218,7 @@ std::optional<RenderImage> renderWithProgress(const std::vector<RenderSetup>& se
       displayOverride ? *displayOverride : DisplaySettings::fromProject(setups.front().project);
   // Draves & Reckase 2003, §9: the time samples add into one histogram; with a motion fade the
   // earlier ones are drawn dimmer (directional motion blur, core/render/motion_blur.h).
-  const std::vector<double> weights = motionBlurWeights(int(sums.size()), motionFade);
-  TimeSampleSum sum;
-  for (std::size_t i = 0; i < sums.size(); ++i) {
-    RenderImage sample;
-    toRenderImage(sums[i], display, sample);
-    sample.stats.budget = sample.stats.samples;
-    addTimeSample(sum, std::move(sample), weights[i]);
-  }
-  const RenderImage image = finishTimeSamples(std::move(sum));
+  const RenderImage image = mergeTimeSamples(sums, display, motionFade);
   if (!progress.bar) bar.finish();
   const RenderStats& s = image.stats;
   if (s.badFraction() >= 0.5)
@@ -282,36 +252,31 @@ int runFlameRender(const std::string& file, const std::string& out, const std::v
   if (!source.part && (exr ? (bits != 16 && bits != 32) : (bits != 8 && bits != 16)))
     throw CliError(kBadInput, std::string("--bit-depth must be ") +
                                   (exr ? "16 (half) or 32 (float) for EXR" : "8 or 16 for PNG and TIFF"));
-  // Supersampled, with a gutter around the frame, palette colors per sample (core/flame_render.h).
-  RenderJob job = flameRenderJob(setup.job, settings, palette);
-  job.depthKeys = false;  // developed from hit counts and colour sums alone
+  // Supersampled, with a gutter around the frame, palette colors per sample, no z-buffer keys: the
+  // display's job of core's prepared render (job/prepared_render.h), one per time sample.
+  std::vector<RenderJob> jobs;
   const int ss = std::max(1, settings.supersample);
-  try {
-    validateRenderJob(job);
-  } catch (const ModelError& e) {
-    throw CliError(kBadInput, file + ": with supersample " + std::to_string(ss) + ", " + e.message());
+  for (const RenderSetup& at : setups) {
+    try {
+      jobs.push_back(displayRenderJob(at.project, at.job, CompiledIfs{}, palette));
+      validateRenderJob(jobs.back());
+    } catch (const ModelError& e) {
+      throw CliError(kBadInput, file + ": with supersample " + std::to_string(ss) + ", " + e.message());
+    }
   }
+  const RenderJob& job = jobs.front();
   FrameSource flameSource = source;
   if (flameSource.part) flameSource.part->withoutKeys = true;
   const std::optional<RenderImage> rendered =
-      renderWithProgress(setups, job, file, out, quiet, device, nullptr, progress, flameSource, options.motionFade);
+      renderWithProgress(setups, jobs, file, out, quiet, device, nullptr, progress, flameSource, options.motionFade);
   if (!rendered) return kSuccess;  // a part: written as it is
   const RenderImage& image = *rendered;
   // Hit counts, not the z-buffer: merged flame parts carry no keys.
   if (std::all_of(image.density.begin(), image.density.end(), [](std::uint32_t n) { return n == 0; }))
     std::fprintf(stderr, "warning: %s: no point landed in the %dx%d frame; check the camera.\n", file.c_str(),
                  setup.job.width, setup.job.height);
-  try {
-    const FlameImage flame =
-        developFlameSnapshot(image, settings, setup.project.camera, setup.job.width, setup.job.height,
-                             setup.project.render.background, exr || options.transparent, job.threads);
-    writeFlameImage(flame, out, bits, exr || options.transparent, &setup.project.camera);
-    printDeviceNote();
-  } catch (const IoError& e) {
-    throw CliError(kFailure, e.what());
-  } catch (const std::invalid_argument& e) {
-    throw CliError(kBadInput, file + ": " + e.what());
-  }
+  writeFrameFile(image, setup, job, file, out, &options);
+  printDeviceNote();
   return kSuccess;
 }
 
@@ -338,21 +303,13 @@ int runShadedRender(const std::string& file, const std::string& out, const std::
                  "filled by the CPU chaos game).\n");
   const DisplaySettings display = shadedDisplaySettings(setup.project);
   const std::optional<RenderImage> rendered =
-      renderWithProgress(setups, job, file, out, quiet, "cpu", &display, progress, source, 0.0);
+      renderWithProgress(setups, {job}, file, out, quiet, "cpu", &display, progress, source, 0.0);
   if (!rendered) return kSuccess;  // a part: written as it is
   const RenderImage& image = *rendered;
   if (image.hitPixels == 0)
     std::fprintf(stderr, "warning: %s: no point landed in the %dx%d frame; check the camera.\n", file.c_str(),
                  image.width, image.height);
-  ShadedImage shaded;
-  try {
-    developShaded(image, shading, setup.project.camera, setup.project.render.background, job.threads, shaded);
-  } catch (const ModelError& e) {
-    throw CliError(kBadInput, file + ": " + e.what());
-  }
-  const std::string description = "GridIFS shaded render of " + file + ", " + std::to_string(job.samples) +
-                                  " samples, seed " + std::to_string(job.seed);
-  writeShadedImage(shaded, image, setup.project.camera, out, description);
+  writeFrameFile(image, setup, job, file, out);
   return kSuccess;
 }
 
@@ -388,11 +345,13 @@ int renderFrame(const Project& loaded, const std::string& file, const std::strin
     throw CliError(kBadInput,
                    "--palette, --hue, --supersample, --density-display and the filter and estimator options apply "
                    "to --mode flame only");
-  // The flame options become the project's settings, so that a part carries them to its merge.
-  for (RenderSetup& s : setups) s.project.render.flame = flame.applied(s.project.render.flame);
+  // The mode and the flame options become the project's settings, so that a part carries them to
+  // its merge and the frame step (job/frame_output.h) writes the mode's outputs.
+  for (RenderSetup& s : setups) {
+    s.project.render.flame = flame.applied(s.project.render.flame);
+    s.project.render.mode = mode;
+  }
   if (source.part) {
-    // The part's project says how to finish it: the mode and palette as rendered.
-    setups.front().project.render.mode = mode;
     nlohmann::json options = {
         {"mode", std::string(displayModeName(mode))}, {"motion_blur", blur}, {"shutter", shutter}};
     if (flame.motionFade != 0.0) options["motion_fade"] = flame.motionFade;
@@ -403,8 +362,10 @@ int renderFrame(const Project& loaded, const std::string& file, const std::strin
   if (flame.bitDepth || flame.transparent)
     throw CliError(kBadInput, "--bit-depth and --transparent apply to --mode flame only");
   if (mode == DisplayMode::Shaded) return runShadedRender(file, out, setups, quiet, device, progress, source);
+  std::vector<RenderJob> jobs;
+  for (const RenderSetup& at : setups) jobs.push_back(at.job);
   const std::optional<RenderImage> rendered =
-      renderWithProgress(setups, setup.job, file, out, quiet, device, nullptr, progress, source, flame.motionFade);
+      renderWithProgress(setups, jobs, file, out, quiet, device, nullptr, progress, source, flame.motionFade);
   if (!rendered) return kSuccess;  // a part: written as it is
   const RenderImage& image = *rendered;
   const RenderStats& s = image.stats;
@@ -415,7 +376,7 @@ int renderFrame(const Project& loaded, const std::string& file, const std::strin
   if (image.hitPixels == 0)
     std::fprintf(stderr, "warning: %s: no point landed in the %dx%d frame; check the camera.\n", file.c_str(),
                  image.width, image.height);
-  writeImage(image, out, setup, file);
+  writeFrameFile(image, setup, setup.job, file, out);
   if (!progress.bar) printDeviceNote();
   return kSuccess;
 }

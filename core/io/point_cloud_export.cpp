@@ -23,6 +23,12 @@ std::string pointCloudHeader(std::uint64_t count, const std::string& description
          "property uchar blue\nend_header\n";
 }
 
+std::string pointCloudDescription(const std::string& source, const RenderJob& job) {
+  return "GridIFS export-points of " + (source.empty() ? std::string("untitled") : source) + ": " +
+         std::to_string(job.samples) + " samples, seed " + std::to_string(job.seed) + ", " +
+         std::to_string(job.threads) + " streams";
+}
+
 PointCloudResult writePointCloud(const CompiledIfs& ifs, const RenderJob& job, const fs::path& out,
                                  const std::string& description,
                                  const std::function<bool(const RenderStats&)>& progress,

@@ -22,6 +22,10 @@ struct PointCloudResult {
 /// of the samples were non-finite or escaped (the IFS has no usable attractor; nothing written).
 /// `generator` walks the chaos game (default: generatePoints on the CPU; the GPU's
 /// generatePointsGpu has the same signature).
+/// The PLY's comment: what the points are of (`source`, the project's file name), with the job's
+/// samples, seed and worker streams (the points depend on all three).
+std::string pointCloudDescription(const std::string& source, const RenderJob& job);
+
 using PointGenerator = std::function<RenderStats(const CompiledIfs&, const RenderJob&,
                                                  const std::function<bool(const PointBatch&, const RenderStats&)>&)>;
 PointCloudResult writePointCloud(const CompiledIfs& ifs, const RenderJob& job, const std::filesystem::path& out,

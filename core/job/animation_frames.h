@@ -20,13 +20,15 @@ std::optional<std::string> checkFramePattern(const std::string& pattern);
 
 /// A frame's file name is frameFileName (base/text_format.h) once the pattern passes.
 
-/// Renders frame `frame` of `project` to `out`, written atomically (a temporary file renamed
-/// over it). `progress` receives the frame's fraction done and returns false to cancel (then
-/// RenderCancelled is thrown and nothing is written). `projectFolder` resolves palette and
-/// condensation set files.
+/// Renders frame `frame` of `project` to `out` as `gridifs render --time frame/fps` writes it
+/// (job/frame_output.h), atomically (a temporary file renamed over it). `progress` receives the
+/// frame's fraction done and returns false to cancel (then RenderCancelled is thrown and nothing
+/// is written). `projectFolder` resolves palette and condensation set files; `source` is the
+/// project's file name, for the image's description.
 /// Throws ModelError for a project that is invalid at that time, IoError when the file cannot be
 /// written.
 void renderAnimationFrame(const Project& project, long frame, const std::filesystem::path& out, int threads,
-                          const std::filesystem::path& projectFolder, const std::function<bool(double)>& progress);
+                          const std::filesystem::path& projectFolder, const std::string& source,
+                          const std::function<bool(double)>& progress);
 
 }  // namespace gridifs

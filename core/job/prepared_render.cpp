@@ -48,6 +48,28 @@ std::shared_ptr<const CompiledIfs> compileRenderIfs(const Project& project, cons
   }
 }
 
+std::shared_ptr<const CompiledIfs> compileChaosIfs(const Project& project, const EvaluationCache& evaluation,
+                                                   const RenderJobOptions& options,
+                                                   std::shared_ptr<const DensityVolume> volume) {
+  if (!volume && !usesSetIteration(project))
+    return compileRenderIfs(project, evaluation, options.folder, options.setResolution);
+  // Sokolov & Gentil, §3.2: median functions map sets, not points, so the renderer draws the
+  // points of the project's density volume (what `gridifs volume` writes) from its "volume"
+  // settings.
+  try {
+    if (volume) return compileVolumePoints(project, *volume);
+    VolumeJob volumeJob;
+    volumeJob.settings = project.volume.value_or(VolumeSettings{});
+    volumeJob.threads = options.threads;
+    volumeJob.projectFolder = options.folder.empty() ? std::filesystem::path(".") : options.folder;
+    return compileVolumePoints(project, computeDensityVolume(project, volumeJob));
+  } catch (const RenderJobError&) {
+    throw;
+  } catch (const ModelError& e) {
+    throw RenderJobError(e);
+  }
+}
+
 std::shared_ptr<const Palette> renderPalette(const Project& project, const std::filesystem::path& folder,
                                              bool preview) {
   try {
@@ -72,9 +94,13 @@ RenderJob displayRenderJob(const Project& project, const RenderJob& output, cons
       return job;
     }
     switch (project.render.mode) {
-      case DisplayMode::Flame:
-        // Draves & Reckase 2003, §4–8: supersampled, with a gutter, palette colours per sample.
-        return flameRenderJob(output, project.render.flame, std::move(palette));
+      case DisplayMode::Flame: {
+        // Draves & Reckase 2003, §4–8: supersampled, with a gutter, palette colours per sample,
+        // developed from hit counts and colour sums alone (no z-buffer keys).
+        RenderJob job = flameRenderJob(output, project.render.flame, std::move(palette));
+        job.depthKeys = false;
+        return job;
+      }
       case DisplayMode::Shaded:
         return shadedRenderJob(output, project.render.shading, ifs);
       default:
@@ -101,23 +127,8 @@ PreparedRender prepareRender(const Project& project, const RenderJobOptions& opt
   } catch (const ModelError& e) {
     throw RenderJobError(e);
   }
-  if (usesSetIteration(r.project)) {
-    // Sokolov & Gentil, §3.2: median functions map sets, not points, so the renderer draws the
-    // points of the project's density volume (what `gridifs volume` writes) from its "volume"
-    // settings, as the command line does.
-    VolumeJob volumeJob;
-    volumeJob.settings = r.project.volume.value_or(VolumeSettings{});
-    volumeJob.threads = options.threads;
-    volumeJob.projectFolder = options.folder.empty() ? std::filesystem::path(".") : options.folder;
-    try {
-      r.ifs = compileVolumePoints(r.project, computeDensityVolume(r.project, volumeJob));
-    } catch (const ModelError& e) {
-      throw RenderJobError(e);
-    }
-  } else {
-    const EvaluationCache evaluation;
-    r.ifs = compileRenderIfs(r.project, evaluation, options.folder, options.setResolution);
-  }
+  const EvaluationCache evaluation;
+  r.ifs = compileChaosIfs(r.project, evaluation, options);
   const bool flame = options.preview || r.project.render.mode == DisplayMode::Flame;
   if (flame) r.palette = renderPalette(r.project, options.folder, options.preview);
   r.job = displayRenderJob(r.project, r.output, *r.ifs, r.palette, options.preview);

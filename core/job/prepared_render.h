@@ -15,6 +15,7 @@
 #include "model/project.h"
 #include "render/chaos_renderer.h"
 #include "render/compiled_ifs.h"
+#include "volume/density_volume.h"
 
 namespace gridifs {
 
@@ -73,6 +74,14 @@ RenderJob outputRenderJob(const Project& project, const RenderJobOptions& option
 /// (empty: the working folder) and voxelized at `setResolution`³. Throws RenderJobError.
 std::shared_ptr<const CompiledIfs> compileRenderIfs(const Project& project, const EvaluationCache& evaluation,
                                                     const std::filesystem::path& folder, int setResolution = 256);
+
+/// The IFS the chaos game runs for `project`: compileRenderIfs with options.folder and
+/// options.setResolution; for a project with median functions, or when `volume` is given, the
+/// points of a density volume instead (`volume`, or the project's own computed from its "volume"
+/// settings on options.threads). Throws RenderJobError.
+std::shared_ptr<const CompiledIfs> compileChaosIfs(const Project& project, const EvaluationCache& evaluation,
+                                                   const RenderJobOptions& options,
+                                                   std::shared_ptr<const DensityVolume> volume = nullptr);
 
 /// The palette of the flame display, resolved beside the project. Throws RenderJobError naming
 /// render.flame.palette; with `preview`, falls back to the default palette instead.

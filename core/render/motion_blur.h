@@ -13,6 +13,9 @@
 
 namespace gridifs {
 
+/// The most time samples one frame takes (the range of animation.motion_blur and --motion-blur).
+constexpr int kMaxMotionBlurSamples = 256;
+
 /// The colour weights of `n` time samples, earliest first: w_i ∝ ((i + 1)/n)^fade (flam3's
 /// exponential temporal filter), scaled so that they average 1: a shape that does not move looks
 /// the same at any fade, and fade 0 is the uniform blur. n ≥ 1, fade ≥ 0.

@@ -41,7 +41,6 @@ TEST(AnimationFrames, FrameNumbersAreFormattedIntoThePattern) {
 TEST(AnimationFrames, MotionBlurredFrameIsTheCommandLinesFrame) {
   namespace fs = std::filesystem;
   gridifs::Project p = gridifs::loadProject(std::string(GRIDIFS_ASSETS) + "/animation/breathing_twist.gridifs");
-  p.tracks.erase("camera.yaw");  // the command line keeps the first time sample's camera
   p.render.width = 64;
   p.render.height = 48;
   p.render.samples = 200000;
@@ -54,7 +53,7 @@ TEST(AnimationFrames, MotionBlurredFrameIsTheCommandLinesFrame) {
   const fs::path dir = fs::temp_directory_path() / ("gridifs-frames-blur-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   gridifs::saveProject(p, dir / "blur.gridifs");
-  gridifs::renderAnimationFrame(p, 12, dir / "dialog.png", 2, dir, {});
+  gridifs::renderAnimationFrame(p, 12, dir / "dialog.png", 2, dir, "blur.gridifs", {});
   const std::string cli = std::string(GRIDIFS_EXE) + " render '" + (dir / "blur.gridifs").string() + "' -o '" +
                           (dir / "cli_%02d.png").string() + "' --frames 12:12 --threads 2 -q 2>/dev/null";
   ASSERT_EQ(std::system(cli.c_str()), 0);

@@ -17,6 +17,7 @@
 #include "render/compiled_ifs.h"
 #include "ui/base/widgets.h"
 #include "volume/condensation_mesh.h"
+#include "volume/measure_attractor.h"
 
 namespace gridifs::ui {
 namespace {
@@ -212,23 +213,30 @@ void ExportDialog::start(ModellerState& state) {
         throw ModelError("", "the point file must be a .ply file: " + output.string());
       if (!fs::is_directory(output.parent_path().empty() ? fs::path(".") : output.parent_path(), ec))
         throw ModelError("", "the folder of " + output.string() + " does not exist");
-      // The points of `gridifs export-points`: the same job, and condensation sets read from
-      // files beside the project (job/prepared_render.h).
+      // The points of `gridifs export-points`: the same job, condensation sets read from files
+      // beside the project, and for median functions the points of the density volume
+      // (job/prepared_render.h).
       RenderJobOptions options;
       options.threads = 0;  // all cores, as the CLI
       options.samples = samples_;
       options.folder = state.projectFolder();
       const RenderJob job = outputRenderJob(state.document.project(), options);
       validateRenderJob(job);
-      std::shared_ptr<const CompiledIfs> ifs = compileRenderIfs(state.document.project(), state.document.evaluation(),
-                                                                options.folder, options.setResolution);
-      const std::string description =
-          "GridIFS export-points of " +
-          (state.document.path().empty() ? std::string("untitled") : state.document.path().filename().string()) + ": " +
-          std::to_string(job.samples) + " samples, seed " + std::to_string(job.seed) + ", " +
-          std::to_string(job.threads) + " streams";
-      task_.start([ifs, job, output, description](JobContext& context) -> TaskOutcome {
+      // Median functions need their density volume (seconds): it is computed on the task's
+      // thread, from a copy of the project; other projects compile here, from the document's
+      // evaluated grids, and fail inline.
+      const bool setIteration = usesSetIteration(state.document.project());
+      std::shared_ptr<const CompiledIfs> compiled;
+      if (!setIteration) compiled = compileChaosIfs(state.document.project(), state.document.evaluation(), options);
+      const Project project = state.document.project();
+      const std::string description = pointCloudDescription(state.document.path().filename().string(), job);
+      task_.start([compiled, project, options, job, output, description](JobContext& context) -> TaskOutcome {
         try {
+          std::shared_ptr<const CompiledIfs> ifs = compiled;
+          if (!ifs) {
+            context.progress(0.0);
+            ifs = compileChaosIfs(project, EvaluationCache{}, options);
+          }
           const PointCloudResult written = writePointCloud(*ifs, job, output, description, [&](const RenderStats& s) {
             context.progress(s.progress());
             return !context.stopRequested();

@@ -93,33 +93,36 @@ void RenderAnimationDialog::start(ModellerState& state) {
   const std::string pattern = pattern_;
   const long first = first_, last = last_;
   const fs::path projectFolder = state.document.path().parent_path();
+  const std::string source = state.document.path().filename().string();
   const int threads = state.renderThreads;
   framesDone_ = 0;
   frameCount_ = int(last - first + 1);
   phase_ = TaskPhase::Running;
-  task_.start([this, project, pattern, first, last, projectFolder, threads](JobContext& context) -> TaskOutcome {
-    const double count = double(last - first + 1);
-    long frame = first;
-    try {
-      for (; frame <= last; ++frame) {
-        const double done = double(frame - first);
-        renderAnimationFrame(project, frame, frameFileName(pattern, frame), threads, projectFolder, [&](double f) {
-          context.progress((done + f) / count);
-          return !context.stopRequested();
-        });
-        ++framesDone_;
-      }
-      return {TaskPhase::Done, "Rendered " + std::to_string(last - first + 1) +
-                                   " frames: " + frameFileName(pattern, first) + " … " +
-                                   fs::path(frameFileName(pattern, last)).filename().string() + "."};
-    } catch (const RenderCancelled&) {
-      return {TaskPhase::Cancelled, "Cancelled at frame " + std::to_string(frame) + "; " +
-                                        std::to_string(frame - first) + " frames were written, frame " +
-                                        std::to_string(frame) + " was not."};
-    } catch (const std::exception& e) {
-      return {TaskPhase::Failed, "Frame " + std::to_string(frame) + ": " + e.what()};
-    }
-  });
+  task_.start(
+      [this, project, pattern, first, last, projectFolder, source, threads](JobContext& context) -> TaskOutcome {
+        const double count = double(last - first + 1);
+        long frame = first;
+        try {
+          for (; frame <= last; ++frame) {
+            const double done = double(frame - first);
+            renderAnimationFrame(project, frame, frameFileName(pattern, frame), threads, projectFolder, source,
+                                 [&](double f) {
+                                   context.progress((done + f) / count);
+                                   return !context.stopRequested();
+                                 });
+            ++framesDone_;
+          }
+          return {TaskPhase::Done, "Rendered " + std::to_string(last - first + 1) +
+                                       " frames: " + frameFileName(pattern, first) + " … " +
+                                       fs::path(frameFileName(pattern, last)).filename().string() + "."};
+        } catch (const RenderCancelled&) {
+          return {TaskPhase::Cancelled, "Cancelled at frame " + std::to_string(frame) + "; " +
+                                            std::to_string(frame - first) + " frames were written, frame " +
+                                            std::to_string(frame) + " was not."};
+        } catch (const std::exception& e) {
+          return {TaskPhase::Failed, "Frame " + std::to_string(frame) + ": " + e.what()};
+        }
+      });
 }
 
 void RenderAnimationDialog::draw(ModellerState& state) {
@@ -345,6 +348,7 @@ nlohmann::json RenderAnimationDialog::probeJson() const {
           {"phase", taskPhaseName(phase_)},
           {"progress", task_.progress()},
           {"frames_done", framesDone_.load()},
+          {"output", pattern_},
           {"message", message_}};
 }
 
