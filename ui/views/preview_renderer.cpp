@@ -1,6 +1,6 @@
 #include "ui/views/preview_renderer.h"
 
-#include "job/prepared_render.h"
+#include "job/preview_plan.h"
 #include "render/compiled_ifs.h"
 #include "render/shaded_image.h"
 #if GRIDIFS_HAVE_GPU
@@ -33,13 +33,14 @@ std::string PreviewRenderer::useDevice(const std::string& device) {
 }
 
 void PreviewRenderer::publish(const Document& document, int width, int height, int threads) {
-  width = std::max(width, 16);
-  height = std::max(height, 16);
+  width = std::max(width, kMinPreviewSide);
+  height = std::max(height, kMinPreviewSide);
   if (document.revision() == revision_ && width == width_ && height == height_ && threads == threads_) return;
   revision_ = document.revision();
   const Project& project = document.project();
-  const Revisions& now = document.revisions();
-  if (now.display != published_.display) {
+  // What the edit asks for is core's decision (job/preview_plan.h).
+  const PreviewDecision decision = decidePreview(last_, document.revisions(), width, height, threads);
+  if (decision.redisplay) {
     // The shaded display develops the structural colour itself: no depth cueing in its buffers.
     const DisplaySettings display = renderDisplaySettings(project);
     if (!(display.background == display_.background) || display.depthCue != display_.depthCue) {
@@ -47,44 +48,32 @@ void PreviewRenderer::publish(const Document& document, int width, int height, i
       displayChanged_ = true;
     }
   }
-  // Background, depth cue, the display mode and the flame tone mapping only change how the
-  // buffers become a picture (snapshot(), ui/views/flame_display.cpp): no restart. The palette is
-  // looked up per sample, so it is a render input.
-  const bool sameInput =
-      now.geometry == published_.geometry && now.render == published_.render && now.camera == published_.camera;
-  const bool sameGeometry = havePublished_ && ifs_ && now.geometry == published_.geometry;
-  published_ = now;
-  if (havePublished_ && sameInput && width == width_ && height == height_ && threads == threads_) return;
+  last_.revisions = document.revisions();
+  width_ = width;
+  height_ = height;
+  threads_ = threads;
+  if (!decision.restart) return;
+  last_.width = width;
+  last_.height = height;
+  last_.threads = threads;
+  last_.started = true;
   try {
-    // Condensation sets read from files are sampled from 128³ voxels beside the project: coarser
-    // than the CLI's 256³, so an edit restarts the preview quickly.
-    const std::filesystem::path folder = document.path().parent_path().empty() ? "." : document.path().parent_path();
-    // The same compiled IFS while the functions are unchanged: a restart that then changes only
-    // the shadowed lights keeps the camera's buffers (ChaosRenderer::restart).
-    auto ifs = sameGeometry ? ifs_ : compileRenderIfs(document.project(), document.evaluation(), folder, 128);
-    // The steps of prepareRender (job/prepared_render.h) for the preview: low priority threads
-    // (the modeller stays at ≥ 30 fps while rendering), colour sums always on so that the mode
-    // switch is instant, and the shaded display's lights.
-    RenderJobOptions options;
-    options.threads = threads;
-    options.width = width;
-    options.height = height;
-    options.preview = true;
-    const RenderJob job = displayRenderJob(project, outputRenderJob(project, options), *ifs,
-                                           renderPalette(project, folder, /*preview=*/true), /*preview=*/true);
+    const PreparedRender prepared =
+        preparePreview(document, width, height, threads, decision.recompile ? nullptr : ifs_);
 #if GRIDIFS_HAVE_GPU
     try {
-      renderer_->restart(ifs, job);
+      renderer_->restart(prepared.ifs, prepared.job);
     } catch (const gpu::GpuUnavailable& e) {
       // The GPU cannot hold this preview (e.g. its memory): auto goes on on the CPU.
       if (device_ != "auto") throw ModelError("", std::string("the GPU cannot render the preview: ") + e.what());
       renderer_ = std::make_unique<ChaosRenderer>();
-      renderer_->restart(ifs, job);
+      renderer_->restart(prepared.ifs, prepared.job);
     }
 #else
-    renderer_->restart(ifs, job);
+    renderer_->restart(prepared.ifs, prepared.job);
 #endif
-    ifs_ = ifs;
+    ifs_ = prepared.ifs;
+    last_.haveIfs = true;
     if (paused_) renderer_->pause();
     ++restarts_;
     running_ = true;
@@ -93,17 +82,9 @@ void PreviewRenderer::publish(const Document& document, int width, int height, i
     // Keep showing the last image; the artist sees why in the status bar. The next restart
     // compiles again (this one may have failed to compile what is now published).
     ifs_.reset();
-    havePublished_ = true;
-    width_ = width;
-    height_ = height;
-    threads_ = threads;
+    last_.haveIfs = false;
     error_ = e.what();
-    return;
   }
-  havePublished_ = true;
-  width_ = width;
-  height_ = height;
-  threads_ = threads;
 }
 
 bool PreviewRenderer::fetch(RenderImage& image) {

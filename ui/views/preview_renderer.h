@@ -8,6 +8,7 @@
 #include <string>
 
 #include "edit/document.h"
+#include "job/preview_plan.h"
 #include "render/chaos_renderer.h"
 
 namespace gridifs::ui {
@@ -31,7 +32,7 @@ class PreviewRenderer {
   void setPaused(bool paused);
   /// The next publish() restarts even when nothing changed.
   void forceRestart() {
-    havePublished_ = false;
+    last_.started = false;
     revision_ = 0;
   }
   RenderStats stats() const { return renderer_->stats(); }
@@ -46,9 +47,8 @@ class PreviewRenderer {
   std::shared_ptr<const CompiledIfs> ifs_;  // the last one restarted with
   std::string device_ = "cpu";
   std::uint64_t revision_ = 0;
-  Revisions published_{0, 0, 0, 0};  // the document's revisions at the last publish
-  bool havePublished_ = false;
-  int width_ = 0, height_ = 0, threads_ = 0;
+  PreviewInputs last_;                        // what the workers last started from (job/preview_plan.h)
+  int width_ = 0, height_ = 0, threads_ = 0;  // the last publish's size and threads
   DisplaySettings display_;
   bool displayChanged_ = true;
   std::int64_t lastSamples_ = -1;
