@@ -5,11 +5,10 @@
 #include <cstdio>
 #include <iostream>
 #include <map>
-#include <mutex>
 
 #include "base/errors.h"
 #include "io/project_io.h"
-#include "live/live_drive.h"
+#include "job/prepared_render.h"
 #include "model/project_time.h"
 
 namespace gridifs::cli {
@@ -78,25 +77,6 @@ void addTimeOption(CLI::App& app, std::optional<double>& time) {
                  "take their values (default: the project's time)");
 }
 
-const LiveDrive& liveDriveFor(const Project& project, const std::filesystem::path& file) {
-  // The sound is analysed once per process and project, not once per frame.
-  static std::mutex lock;
-  static std::map<std::string, std::pair<Project, LiveDrive>> drives;
-  const std::lock_guard<std::mutex> hold(lock);
-  const std::string key = std::filesystem::absolute(file).lexically_normal().string();
-  auto it = drives.find(key);
-  if (it == drives.end() || it->second.first.audio != project.audio || it->second.first.bindings != project.bindings ||
-      it->second.first.animation != project.animation) {
-    Project kept;
-    kept.audio = project.audio;
-    kept.bindings = project.bindings;
-    kept.animation = project.animation;
-    LiveDrive drive = LiveDrive::forProject(project, file.parent_path());
-    it = drives.insert_or_assign(key, std::pair{std::move(kept), std::move(drive)}).first;
-  }
-  return it->second.second;
-}
-
 std::filesystem::path audioFileOf(const Project& project, const std::filesystem::path& file) {
   if (!project.audio) return {};
   const std::filesystem::path audio = project.audio->file;
@@ -105,15 +85,9 @@ std::filesystem::path audioFileOf(const Project& project, const std::filesystem:
 
 Project projectForVerbAt(const Project& loaded, const std::filesystem::path& file, std::optional<double> time) {
   try {
-    const double t = time.value_or(loaded.time);
-    Project at = projectAtTime(loaded, t);
-    // Sound-bound numbers follow the audio; live sources (OSC, MIDI) have no value outside the
-    // modeller, so their numbers keep their tracks' values.
-    if (!loaded.bindings.empty()) liveDriveFor(loaded, file).applyBindings(at, t);
-    return at;
-  } catch (const ModelError& e) {
-    throw CliError(kBadInput, file.string() + ": " + e.what());
-  } catch (const IoError& e) {
+    // The tracks, and the numbers bound to the sound, as every render sees them (core/job).
+    return renderProjectAt(loaded, time.value_or(loaded.time), file.parent_path());
+  } catch (const RenderJobError& e) {
     throw CliError(kBadInput, file.string() + ": " + e.what());
   }
 }

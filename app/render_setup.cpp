@@ -48,70 +48,75 @@ void checkOutputPath(const std::filesystem::path& out, const std::vector<std::st
     throw CliError(kBadInput, "cannot write " + out.string() + ": it is a folder");
 }
 
-RenderSetup prepareRender(const std::filesystem::path& file, const RenderOverrides& overrides,
-                          std::int64_t maxSamples) {
-  return prepareRenderOf(loadForVerb(file), file, overrides, maxSamples);
-}
-
-RenderSetup prepareRenderOf(const Project& loaded, const std::filesystem::path& file, const RenderOverrides& overrides,
-                            std::int64_t maxSamples, bool warn) {
-  // The steps of gridifs::prepareRender (job/prepared_render.h), with the command line's own
-  // checks and wording between them; the display mode's job is made by the mode's runner
-  // (app/verb_render.cpp), which knows --palette and merged parts.
-  RenderSetup setup;
-  setup.project = projectForVerbAt(loaded, file, overrides.time);
-  // Precedence: --samples, then --quality, then the project's quality, then its samples.
-  if (overrides.quality) {
-    if (overrides.samples) throw CliError(kBadInput, "--samples and --quality exclude each other: give one of them");
-    if (!(*overrides.quality >= 1e-3 && *overrides.quality <= 1e6))
-      throw CliError(kBadInput, "--quality must be between 0.001 and 1000000 samples per pixel");
-    setup.project.render.quality = *overrides.quality;
-  }
+RenderJobOptions renderJobOptions(const std::filesystem::path& file, const RenderOverrides& overrides,
+                                  std::int64_t maxSamples, std::optional<double> time) {
+  if (overrides.threads && (*overrides.threads < 1 || *overrides.threads > limits::kMaxRenderThreads))
+    throw CliError(kBadInput, "--threads must be between 1 and " + std::to_string(limits::kMaxRenderThreads));
   RenderJobOptions options;
+  options.time = time;
   options.threads = overrides.threads.value_or(0);
   options.width = overrides.width;
   options.height = overrides.height;
   options.seed = overrides.seed;
+  // Precedence: --samples, then --quality, then the project's quality, then its samples.
   if (overrides.samples) options.samples = parseSamples(*overrides.samples, maxSamples);
+  if (overrides.quality) {
+    if (overrides.samples) throw CliError(kBadInput, "--samples and --quality exclude each other: give one of them");
+    if (!(*overrides.quality >= 1e-3 && *overrides.quality <= 1e6))
+      throw CliError(kBadInput, "--quality must be between 0.001 and 1000000 samples per pixel");
+    const double quality = *overrides.quality;
+    options.adjust = [quality](Project& p) { p.render.quality = quality; };
+  }
   // Condensation sets read from files (meshes, VDB grids) are found beside the project.
   options.folder = file.parent_path();
-  RenderJob& job = setup.job;
-  job = outputRenderJob(setup.project, options);
-  if (overrides.threads && (*overrides.threads < 1 || *overrides.threads > limits::kMaxRenderThreads))
-    throw CliError(kBadInput, "--threads must be between 1 and " + std::to_string(limits::kMaxRenderThreads));
-  if (job.samples < 1)
-    throw CliError(kBadInput, file.string() + ": render.samples must be at least 1 (or pass --samples)");
-  if (job.samples > maxSamples)
-    throw CliError(kBadInput, file.string() + ": " + std::to_string(job.samples) +
-                                  " samples is more than the limit of " + std::to_string(maxSamples));
+  options.volume = overrides.volume;
+  options.device = overrides.device.value_or("auto");
+  return options;
+}
+
+PreparedRender prepareForVerb(const Project& loaded, const std::filesystem::path& file, const RenderJobOptions& options,
+                              std::int64_t maxSamples, bool warn, bool points) {
+  // The grids are evaluated once, for the IFS and for the contractivity warnings below.
+  EvaluationCache evaluation;
+  RenderJobOptions asked = options;
+  if (!asked.evaluation) asked.evaluation = &evaluation;
+  PreparedRender prepared;
   try {
-    validateRenderJob(job);
-  } catch (const ModelError& e) {
-    throw CliError(kBadInput, file.string() + ": " + e.message());
-  }
-  // Median functions (or a page of the book of drawings) draw the points of a density volume;
-  // the grids are evaluated once, for the IFS and for the contractivity warnings below.
-  Document document(setup.project);
-  try {
-    setup.ifs = compileChaosIfs(document.project(), document.evaluation(), options, overrides.volume);
+    prepared = points ? preparePoints(loaded, asked) : prepareRender(loaded, asked);
   } catch (const RenderJobError& e) {
     throw CliError(kBadInput, file.string() + ": " + e.what());
   }
-  if (overrides.volume || usesSetIteration(setup.project)) return setup;
+  if (prepared.output.samples > maxSamples)
+    throw CliError(kBadInput, file.string() + ": " + std::to_string(prepared.output.samples) +
+                                  " samples is more than the limit of " + std::to_string(maxSamples));
+  if (warn) warnIfNotContractive(prepared, *asked.evaluation, file);
+  return prepared;
+}
+
+void warnIfNotContractive(const PreparedRender& prepared, const EvaluationCache& evaluation,
+                          const std::filesystem::path& file) {
+  if (!prepared.ifs || usesSetIteration(prepared.project)) return;
   // The chaos game still draws something for an expanding function (clamping to X keeps the chain
   // bounded), so this is a warning, as in `gridifs info`.
-  for (const CompiledFunction& f : setup.ifs->functions) {
-    if (!warn) break;
-    const Function& source = setup.project.functions[f.sourceIndex];
+  for (const CompiledFunction& f : prepared.ifs->functions) {
+    if (f.sourceIndex >= prepared.project.functions.size()) continue;  // a volume's points
+    const Function& source = prepared.project.functions[f.sourceIndex];
     if (isSetKind(source.kind)) continue;  // a constant map: contraction factor 0
     const ContractivityEstimate c = source.kind == FunctionKind::Matrix
                                         ? ContractivityEstimate{simplexContraction(source.matrix), Index3{0, 0, 0}}
-                                        : estimateContractivity(*document.evaluatedGrid(f.sourceIndex));
+                                        : estimateContractivity(*evaluation.function(prepared.project, f.sourceIndex));
     if (c.bound >= 1.0)
       std::fprintf(stderr, "warning: %s: function %zu \"%s\" may not be contractive (Lipschitz bound %.3g).\n",
-                   file.c_str(), f.sourceIndex, setup.project.functions[f.sourceIndex].name.c_str(), c.bound);
+                   file.c_str(), f.sourceIndex, source.name.c_str(), c.bound);
   }
-  return setup;
+}
+
+PreparedRender preparePointsOf(const std::filesystem::path& file, const RenderOverrides& overrides,
+                               std::int64_t maxSamples) {
+  const Project loaded = loadForVerb(file);
+  return prepareForVerb(loaded, file,
+                        renderJobOptions(file, overrides, maxSamples, overrides.time.value_or(loaded.time)), maxSamples,
+                        true, true);
 }
 
 }  // namespace gridifs::cli

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "base/text_format.h"
+#include "job/prepared_render.h"
 #include "model/flame_settings.h"
 #include "render/chaos_renderer.h"
 #include "volume/density_volume.h"
@@ -52,24 +53,30 @@ struct FlameOptions {
   FlameSettings applied(FlameSettings settings) const;
 };
 
-struct RenderSetup {
-  Project project;
-  std::shared_ptr<const CompiledIfs> ifs;
-  RenderJob job;
-};
-
 /// Parses a sample count such as "20000000" or "2e7". Throws CliError(2) naming the option.
 std::int64_t parseSamples(const std::string& text, std::int64_t maximum);
 
-/// Loads `file`, applies `overrides`, validates the job and compiles the IFS; warns on stderr when
-/// a function may not be contractive. Bad input → CliError(2) naming the file.
-RenderSetup prepareRender(const std::filesystem::path& file, const RenderOverrides& overrides, std::int64_t maxSamples);
+/// The options of core's render preparation (job/prepared_render.h) from the command line's:
+/// the project's folder for relative files, --threads, --width, --height, --seed, --samples (at
+/// most `maxSamples`), --quality and the volume to draw, checked with the option's own words
+/// (CliError(2)). `time`: the moment to prepare.
+RenderJobOptions renderJobOptions(const std::filesystem::path& file, const RenderOverrides& overrides,
+                                  std::int64_t maxSamples, std::optional<double> time);
 
-/// prepareRender for a project already loaded from `file` (a frame of a sequence): the project at
-/// overrides.time with its tracks evaluated, then the same checks and compilation. `warn` prints
-/// the contractivity warnings (once per sequence, not once per frame).
-RenderSetup prepareRenderOf(const Project& loaded, const std::filesystem::path& file, const RenderOverrides& overrides,
-                            std::int64_t maxSamples, bool warn = true);
+/// Core's prepareRender (or, with `points`, preparePoints) for `loaded`, read from `file`, at
+/// options.time; a RenderJobError becomes CliError(2) naming the file. With `warn`, prints on
+/// stderr which functions may not be contractive (once per sequence, not once per frame).
+PreparedRender prepareForVerb(const Project& loaded, const std::filesystem::path& file, const RenderJobOptions& options,
+                              std::int64_t maxSamples, bool warn, bool points = false);
+
+/// Prints on stderr which functions of `prepared` may not be contractive, their grids taken from
+/// `evaluation` (the cache it was compiled with).
+void warnIfNotContractive(const PreparedRender& prepared, const EvaluationCache& evaluation,
+                          const std::filesystem::path& file);
+
+/// Loads `file` and prepares its points at its own time with `overrides` (export-points).
+PreparedRender preparePointsOf(const std::filesystem::path& file, const RenderOverrides& overrides,
+                               std::int64_t maxSamples);
 
 /// One image of `loaded` as `gridifs render` makes it in the project's display mode, written to
 /// `out` (.png, .exr, .tif). Throws CliError as render does.

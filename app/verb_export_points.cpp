@@ -20,14 +20,14 @@ int runExportPoints(const std::string& file, const std::string& out, RenderOverr
   checkOutputPath(out, {"ply"}, "the point file");
   const std::string device = checkedDevice(overrides.device);
   if (!overrides.samples) overrides.samples = std::to_string(kDefaultExportSamples);
-  const RenderSetup setup = prepareRender(file, overrides, kMaxExportSamples);
-  const std::string description = pointCloudDescription(std::filesystem::path(file).filename().string(), setup.job);
+  const PreparedRender setup = preparePointsOf(file, overrides, kMaxExportSamples);
+  const std::string description = pointCloudDescription(std::filesystem::path(file).filename().string(), setup.output);
   std::string used;
   const PointGenerator generator = pointGeneratorOn(device, used);
   ProgressBar bar("export-points", quiet);
   try {
     writePointCloud(
-        *setup.ifs, setup.job, out, description, [&](const RenderStats& s) { return bar.report(s); }, generator);
+        *setup.ifs, setup.output, out, description, [&](const RenderStats& s) { return bar.report(s); }, generator);
   } catch (const ModelError& e) {
     throw CliError(kBadInput, file + ": " + e.message());
   } catch (const IoError& e) {

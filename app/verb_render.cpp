@@ -20,17 +20,12 @@
 #include "app/render_sequence.h"
 #include "app/render_setup.h"
 #include "app/render_volume.h"
-#include "base/atomic_file.h"
-#include "base/color_space.h"
-#include "flame/palette_gradient.h"
 #include "io/project_io.h"
 #include "job/frame_output.h"
 #include "model/settings_tables.h"
-#include "render/camera.h"
 #include "render/flame_render.h"
 #include "render/image_file.h"
 #include "render/motion_blur.h"
-#include "render/shaded_image.h"
 
 namespace gridifs::cli {
 namespace {
@@ -48,17 +43,15 @@ struct InterruptGuard {
 
 /// Writes the frame through core's frame step (job/frame_output.h), with the command line's exit
 /// codes: 1 when the file cannot be written, 2 when the project cannot develop the image.
-void writeFrameFile(const RenderImage& image, const RenderSetup& setup, const RenderJob& rendered,
-                    const std::string& file, const std::string& out, const FlameOptions* flame = nullptr) {
+void writeFrameFile(const RenderImage& image, const PreparedRender& frame, const std::string& file,
+                    const std::string& out, const FlameOptions& flame) {
   FrameOutput output;
   output.file = out;
   output.source = std::filesystem::path(file).filename().string();
-  if (flame) {
-    output.bitDepth = flame->bitDepth.value_or(0);
-    output.transparent = flame->transparent;
-  }
+  output.bitDepth = flame.bitDepth.value_or(0);
+  output.transparent = flame.transparent;
   try {
-    writeFrame(image, setup.project, setup.job, rendered, output);
+    writeFrame(image, frame.project, frame.output, frame.job, output);
   } catch (const IoError& e) {
     throw CliError(kFailure, e.what());
   } catch (const ModelError& e) {
@@ -97,46 +90,40 @@ struct FrameProgress {
 
 /// The project as a part stores it: as rendered at the frame's time, with the job's size, samples
 /// and seed in its render settings, so that `merge` rebuilds the same job from it alone.
-std::string partProject(const RenderSetup& setup) {
-  Project p = setup.project;
-  p.render.width = setup.job.width;
-  p.render.height = setup.job.height;
-  p.render.samples = setup.job.samples;
+std::string partProject(const PreparedRender& frame) {
+  Project p = frame.project;
+  p.render.width = frame.output.width;
+  p.render.height = frame.output.height;
+  p.render.samples = frame.output.samples;
   p.render.quality.reset();  // the samples above are the count rendered
-  p.render.seed = setup.job.seed;
+  p.render.seed = frame.output.seed;
   return serializeProject(p);
 }
 
-/// Runs `jobs` (one per setup, each the whole frame's job at its setup's time) to completion on
-/// `device` (app/render_device_option.h) with a progress bar (interruptible with Ctrl-C). With
-/// several setups (the time samples of one motion-blurred frame) the frame's samples are split
-/// among them, each with its own seed and camera, and the results merged. With source.part it writes the
-/// accumulations as a part file and returns nothing; with source.merged it renders nothing and
-/// develops the merged accumulations instead.
-/// Throws CliError when interrupted or when at least half of the points were unusable (nothing is written then).
-std::optional<RenderImage> renderWithProgress(const std::vector<RenderSetup>& setups,
-                                              const std::vector<RenderJob>& jobs, const std::string& file,
+/// Runs the time samples of one frame (core's prepareTimeSamples: each with its own camera, share
+/// of the samples and seed) to completion on `device` (app/render_device_option.h) with a progress
+/// bar (interruptible with Ctrl-C), and merges them. With source.part it writes the accumulations
+/// as a part file and returns nothing; with source.merged it renders nothing and develops the
+/// merged accumulations instead (`samples` then holds the one prepareDevelop made).
+/// Throws CliError when interrupted or when at least half of the points were unusable (nothing is
+/// written then).
+std::optional<RenderImage> renderWithProgress(const std::vector<TimeSample>& samples, const std::string& file,
                                               const std::string& out, bool quiet, const std::string& device,
-                                              const DisplaySettings* displayOverride, FrameProgress progress,
-                                              const FrameSource& source, double motionFade) {
+                                              FrameProgress progress, const FrameSource& source, double motionFade) {
   ProgressBar ownBar(source.merged ? "merge" : "render", quiet || source.merged);
   ProgressBar& bar = progress.bar ? *progress.bar : ownBar;
-  const RenderJob& job = jobs.front();
+  const PreparedRender& frame = samples.front().render;
+  const std::int64_t count = std::int64_t(samples.size());
   if (!progress.bar) {
     // A part's bar runs over its own share (on the CPU: its chunks of every time sample).
-    progress.total = job.samples;
-    if (source.part) {
-      progress.total = 0;
-      const std::int64_t count = std::int64_t(setups.size());
-      for (std::int64_t i = 0; i < count; ++i) {
-        const std::int64_t samples = timeSampleShare(job.samples, i, count);
-        progress.total += rangeSamples(samples, chunksOf(samples, &source.part->part));
-      }
-    }
+    progress.total = 0;
+    for (const TimeSample& sample : samples)
+      progress.total +=
+          source.part ? rangeSamples(sample.render.job.samples, chunksOf(sample.render.job.samples, &source.part->part))
+                      : sample.render.job.samples;
   }
   std::optional<InterruptGuard> interrupt;
   if (!progress.observer) interrupt.emplace();  // an observer's caller handles Ctrl-C itself
-  const std::int64_t count = std::int64_t(setups.size());
   std::int64_t done = 0;
   std::vector<Accumulation> accumulations;
   std::string used = "cpu";
@@ -145,16 +132,13 @@ std::optional<RenderImage> renderWithProgress(const std::vector<RenderSetup>& se
   bool warmed = source.part.has_value() || progress.observer || progress.threadsBounded;
   if (!warmed) keepFreedMemory();
   if (progress.threadsBounded && !source.part && !source.merged) loadImageWriterNow();
-  for (std::int64_t i = 0; i < count && !source.merged; ++i) {
-    const RenderSetup& setup = setups[std::size_t(i)];
-    // The same shares and seeds as core's time samples (job/frame_output.h).
-    RenderJob part = jobs[std::size_t(i)];
-    part.samples = timeSampleShare(part.samples, i, count);
-    part.seed += std::uint64_t(i);
-    if (source.part) part.part = source.part->part;
+  for (const TimeSample& sample : samples) {
+    if (source.merged) break;
+    RenderJob job = sample.render.job;
+    if (source.part) job.part = source.part->part;
     try {
       accumulations.push_back(accumulateOnDevice(
-          device, setup.ifs, part,
+          device, sample.render.ifs, job,
           [&](const RenderStats& s) {
             // The image library loads on a second core while the chaos game runs, started once the
             // workers run: dlopen holds the dynamic loader's lock while it maps and relocates
@@ -181,7 +165,7 @@ std::optional<RenderImage> renderWithProgress(const std::vector<RenderSetup>& se
       bar.finish();
       throw CliError(kFailure, "render of " + file + " interrupted; " + out + " was not written");
     }
-    done += part.samples;
+    done += job.samples;
   }
   if (source.part) {
     if (!progress.bar) bar.finish();
@@ -190,15 +174,15 @@ std::optional<RenderImage> renderWithProgress(const std::vector<RenderSetup>& se
     header.part = source.part->part.index;
     header.parts = source.part->part.count;
     header.device = used;
-    RenderJob first = job;
-    first.samples = job.samples / count;
+    RenderJob first = frame.job;
+    first.samples = frame.output.samples / count;
     first.part = source.part->part;
     const ChunkRange chunks = playedRange(used, first);
     header.chunkBegin = chunks.begin;
     header.chunkEnd = chunks.end;
     header.frame = source.part->frame;
     header.source = file;
-    header.project = partProject(setups.front());
+    header.project = partProject(frame);
     header.options = source.part->options;
     header.digest = partDigest(header.kind, header.project, header.options, header.parts, header.device, header.frame);
     if (source.part->withoutKeys)
@@ -213,12 +197,9 @@ std::optional<RenderImage> renderWithProgress(const std::vector<RenderSetup>& se
     }
     return std::nullopt;
   }
-  const std::vector<Accumulation>& sums = source.merged ? *source.merged : accumulations;
-  const DisplaySettings display =
-      displayOverride ? *displayOverride : DisplaySettings::fromProject(setups.front().project);
   // Draves & Reckase 2003, §9: the time samples add into one histogram; with a motion fade the
   // earlier ones are drawn dimmer (directional motion blur, core/render/motion_blur.h).
-  const RenderImage image = mergeTimeSamples(sums, display, motionFade);
+  const RenderImage image = mergeTimeSamples(source.merged ? *source.merged : accumulations, frame.display, motionFade);
   if (!progress.bar) bar.finish();
   const RenderStats& s = image.stats;
   if (s.badFraction() >= 0.5)
@@ -229,92 +210,17 @@ std::optional<RenderImage> renderWithProgress(const std::vector<RenderSetup>& se
   return image;
 }
 
-/// `--mode flame` (Draves & Reckase 2003, §4–8): the same chaos game at supersample× the size with
-/// palette colour sums, developed by log-density tone mapping and the filters. PNG/TIFF: RGB over
-/// the background (RGBA with --transparent), 8 or 16 bits; EXR: premultiplied RGBA, float or half.
-int runFlameRender(const std::string& file, const std::string& out, const std::vector<RenderSetup>& setups,
-                   const FlameOptions& options, bool quiet, const std::string& device, FrameProgress progress,
-                   const FrameSource& source) {
-  const RenderSetup& setup = setups.front();
-  // renderFrame applied the options to the project already (a part carries them).
-  const FlameSettings settings = setup.project.render.flame;
-  std::shared_ptr<const Palette> palette;
-  try {
-    // Merged parts hold the palette's colour sums already; the palette file may not be here.
-    if (!source.merged)
-      palette =
-          std::make_shared<const Palette>(resolveFlamePalette(settings, std::filesystem::path(file).parent_path()));
-  } catch (const PaletteError& e) {
-    throw CliError(kBadInput, file + ": " + e.what());
-  }
-  const bool exr = lowerExtension(out) == "exr";
-  const int bits = options.bitDepth.value_or(exr ? 32 : 8);
-  if (!source.part && (exr ? (bits != 16 && bits != 32) : (bits != 8 && bits != 16)))
-    throw CliError(kBadInput, std::string("--bit-depth must be ") +
-                                  (exr ? "16 (half) or 32 (float) for EXR" : "8 or 16 for PNG and TIFF"));
-  // Supersampled, with a gutter around the frame, palette colors per sample, no z-buffer keys: the
-  // display's job of core's prepared render (job/prepared_render.h), one per time sample.
-  std::vector<RenderJob> jobs;
-  const int ss = std::max(1, settings.supersample);
-  for (const RenderSetup& at : setups) {
-    try {
-      jobs.push_back(displayRenderJob(at.project, at.job, CompiledIfs{}, palette));
-      validateRenderJob(jobs.back());
-    } catch (const ModelError& e) {
-      throw CliError(kBadInput, file + ": with supersample " + std::to_string(ss) + ", " + e.message());
-    }
-  }
-  const RenderJob& job = jobs.front();
-  FrameSource flameSource = source;
-  if (flameSource.part) flameSource.part->withoutKeys = true;
-  const std::optional<RenderImage> rendered =
-      renderWithProgress(setups, jobs, file, out, quiet, device, nullptr, progress, flameSource, options.motionFade);
-  if (!rendered) return kSuccess;  // a part: written as it is
-  const RenderImage& image = *rendered;
-  // Hit counts, not the z-buffer: merged flame parts carry no keys.
-  if (std::all_of(image.density.begin(), image.density.end(), [](std::uint32_t n) { return n == 0; }))
-    std::fprintf(stderr, "warning: %s: no point landed in the %dx%d frame; check the camera.\n", file.c_str(),
-                 setup.job.width, setup.job.height);
-  writeFrameFile(image, setup, job, file, out, &options);
-  printDeviceNote();
-  return kSuccess;
-}
-
-/// `--mode shaded`: the chaos game fills the camera's z-buffer and one depth buffer per shadowed
-/// light (with depth of field when the aperture is above 0), then the image is developed with the
-/// lights, occlusion and fog (core/render/shaded_image.h). Shadow maps and depth of field are
-/// CPU chaos-game effects, so this mode always renders on the CPU.
-int runShadedRender(const std::string& file, const std::string& out, const std::vector<RenderSetup>& setups, bool quiet,
-                    const std::string& device, FrameProgress progress, const FrameSource& source) {
-  if (setups.size() > 1)
-    throw CliError(kBadInput, "--motion-blur applies to the zbuffer and flame modes, not to shaded renders");
-  const RenderSetup& setup = setups.front();
-  const ShadingSettings& shading = setup.project.render.shading;
-  RenderJob job = setup.job;  // merged parts carry their lights' views and depths
-  try {
-    if (!source.merged) job = shadedRenderJob(setup.job, shading, *setup.ifs);
-    validateRenderJob(job);
-  } catch (const ModelError& e) {
-    throw CliError(kBadInput, file + ": " + e.what());
-  }
-  if (device == "gpu" && !source.merged)
-    std::fprintf(stderr,
-                 "note: the shaded display renders on the CPU (its shadow maps and depth of field are "
-                 "filled by the CPU chaos game).\n");
-  const DisplaySettings display = shadedDisplaySettings(setup.project);
-  const std::optional<RenderImage> rendered =
-      renderWithProgress(setups, {job}, file, out, quiet, "cpu", &display, progress, source, 0.0);
-  if (!rendered) return kSuccess;  // a part: written as it is
-  const RenderImage& image = *rendered;
-  if (image.hitPixels == 0)
-    std::fprintf(stderr, "warning: %s: no point landed in the %dx%d frame; check the camera.\n", file.c_str(),
-                 image.width, image.height);
-  writeFrameFile(image, setup, job, file, out);
-  return kSuccess;
-}
-
-/// One image: the project at overrides.time (or its own time), or, with `blur` > 1, at `blur` times
-/// spread evenly over `shutter` seconds centred on that time, merged.
+/// One image: the project at overrides.time (or its own time) in the display mode (--mode, or the
+/// project's), or, with `blur` > 1, at `blur` times spread evenly over `shutter` seconds centred on
+/// that time, merged (Draves & Reckase 2003, §9). Core prepares the time samples
+/// (job/frame_output.h) and writes the frame with every output its mode has:
+/// - flame (§4–8): the chaos game at supersample× the size with palette colour sums, developed by
+///   log-density tone mapping and the filters; PNG/TIFF RGB over the background (RGBA with
+///   --transparent), 8 or 16 bits; EXR premultiplied RGBA, float or half;
+/// - shaded: the camera's z-buffer and one depth buffer per shadowed light (with depth of field
+///   when the aperture is above 0), developed with the lights, occlusion and fog; always on the
+///   CPU, whose chaos game fills the shadow maps;
+/// - z-buffer: PNG/TIFF 8-bit RGB, EXR float RGBA + Z + P.
 int renderFrame(const Project& loaded, const std::string& file, const std::string& out,
                 const RenderOverrides& overrides, bool quiet, const FlameOptions& flameOptions, int blur,
                 double shutter, FrameProgress progress, bool warn, FrameSource source = {}) {
@@ -323,61 +229,86 @@ int renderFrame(const Project& loaded, const std::string& file, const std::strin
   progress.threadsBounded = overrides.threads.has_value();
   FlameOptions flame = flameOptions;
   flame.motionFade = flame.motionFadeOption.value_or(loaded.animation ? loaded.animation->motion_fade : 0.0);
-  DisplayMode mode = DisplayMode::ZBuffer;
+  DisplayMode mode = loaded.render.mode;
   if (flame.mode && !parseDisplayMode(*flame.mode, mode))
     throw CliError(kBadInput, "--mode must be zbuffer, flame, shaded or volume, not \"" + *flame.mode + "\"");
-  std::vector<RenderSetup> setups;
-  const double time = overrides.time.value_or(loaded.time);
-  for (int i = 0; i < blur; ++i) {
-    if (source.merged) {
-      // The parts' project is the one rendered, with the job's settings in it: nothing to compile.
-      setups.push_back(RenderSetup{loaded, nullptr, RenderJob::fromProject(loaded, overrides.threads.value_or(0))});
-      continue;
-    }
-    RenderOverrides at = overrides;
-    // Draves & Reckase, motion blur: time samples spread over the shutter. One sample is the
-    // frame's own time exactly, so an unblurred frame equals a render at --time.
-    at.time = blur == 1 ? time : time + shutter * ((i + 0.5) / blur - 0.5);
-    setups.push_back(prepareRenderOf(loaded, file, at, limits::kMaxRenderSamples, warn && i == 0));
-  }
-  if (!flame.mode) mode = setups.front().project.render.mode;
   if (flame.anyFlameSetting() && mode != DisplayMode::Flame)
     throw CliError(kBadInput,
                    "--palette, --hue, --supersample, --density-display and the filter and estimator options apply "
                    "to --mode flame only");
-  // The mode and the flame options become the project's settings, so that a part carries them to
-  // its merge and the frame step (job/frame_output.h) writes the mode's outputs.
-  for (RenderSetup& s : setups) {
-    s.project.render.flame = flame.applied(s.project.render.flame);
-    s.project.render.mode = mode;
-  }
-  if (source.part) {
-    nlohmann::json options = {
-        {"mode", std::string(displayModeName(mode))}, {"motion_blur", blur}, {"shutter", shutter}};
-    if (flame.motionFade != 0.0) options["motion_fade"] = flame.motionFade;
-    source.part->options = options.dump();
-  }
-  const RenderSetup& setup = setups.front();
-  if (mode == DisplayMode::Flame) return runFlameRender(file, out, setups, flame, quiet, device, progress, source);
-  if (flame.bitDepth || flame.transparent)
+  if (mode != DisplayMode::Flame && (flame.bitDepth || flame.transparent))
     throw CliError(kBadInput, "--bit-depth and --transparent apply to --mode flame only");
-  if (mode == DisplayMode::Shaded) return runShadedRender(file, out, setups, quiet, device, progress, source);
-  std::vector<RenderJob> jobs;
-  for (const RenderSetup& at : setups) jobs.push_back(at.job);
+  if (mode == DisplayMode::Flame && !source.part) {
+    const bool exr = lowerExtension(out) == "exr";
+    const int bits = flame.bitDepth.value_or(exr ? 32 : 8);
+    if (exr ? (bits != 16 && bits != 32) : (bits != 8 && bits != 16))
+      throw CliError(kBadInput, std::string("--bit-depth must be ") +
+                                    (exr ? "16 (half) or 32 (float) for EXR" : "8 or 16 for PNG and TIFF"));
+  }
+  if (mode == DisplayMode::Shaded && blur > 1)
+    throw CliError(kBadInput, "--motion-blur applies to the zbuffer and flame modes, not to shaded renders");
+  const double time = overrides.time.value_or(loaded.time);
+  RenderJobOptions options = renderJobOptions(file, overrides, limits::kMaxRenderSamples, time);
+  // One cache of evaluated grids for every time sample (it is keyed by each function's content)
+  // and for the contractivity warnings.
+  const EvaluationCache evaluation;
+  options.evaluation = &evaluation;
+  // The mode and the flame options become the project's settings at every time sample, over what
+  // its tracks say, so that a part carries them to its merge and the frame step writes the mode's
+  // outputs.
+  const auto quality = options.adjust;
+  options.adjust = [quality, mode, &flame](Project& p) {
+    if (quality) quality(p);
+    p.render.mode = mode;
+    p.render.flame = flame.applied(p.render.flame);
+  };
+  std::vector<TimeSample> samples;
+  try {
+    if (source.merged) {
+      // The parts' project is the one rendered, with the job's settings in it: nothing to compile.
+      RenderJobOptions develop = options;
+      develop.time.reset();
+      samples.push_back(TimeSample{prepareDevelop(loaded, develop), time});
+    } else {
+      samples = prepareTimeSamples(loaded, options, blur, shutter);
+    }
+  } catch (const RenderJobError& e) {
+    throw CliError(kBadInput, file + ": " + e.what());
+  }
+  if (warn && !source.merged && !overrides.volume) warnIfNotContractive(samples.front().render, evaluation, file);
+  const PreparedRender& frame = samples.front().render;
+  if (source.part) {
+    // The part's project says how to finish it: the mode and palette as rendered.
+    nlohmann::json partOptions = {
+        {"mode", std::string(displayModeName(mode))}, {"motion_blur", blur}, {"shutter", shutter}};
+    if (flame.motionFade != 0.0) partOptions["motion_fade"] = flame.motionFade;
+    source.part->options = partOptions.dump();
+    // The flame display develops from hit counts and colour sums alone.
+    source.part->withoutKeys = mode == DisplayMode::Flame;
+  }
+  if (mode == DisplayMode::Shaded && device == "gpu" && !source.merged)
+    std::fprintf(stderr,
+                 "note: the shaded display renders on the CPU (its shadow maps and depth of field are "
+                 "filled by the CPU chaos game).\n");
   const std::optional<RenderImage> rendered =
-      renderWithProgress(setups, jobs, file, out, quiet, device, nullptr, progress, source, flame.motionFade);
+      renderWithProgress(samples, file, out, quiet, mode == DisplayMode::Shaded ? "cpu" : device, progress, source,
+                         mode == DisplayMode::Shaded ? 0.0 : flame.motionFade);
   if (!rendered) return kSuccess;  // a part: written as it is
   const RenderImage& image = *rendered;
   const RenderStats& s = image.stats;
-  if (s.badSamples > 0)
+  if (mode == DisplayMode::ZBuffer && s.badSamples > 0)
     std::fprintf(stderr,
                  "warning: %s: %lld samples (%.3g%%) were non-finite or escaped and were replaced by fresh points.\n",
                  file.c_str(), static_cast<long long>(s.badSamples), 100.0 * s.badFraction());
-  if (image.hitPixels == 0)
+  // Hit counts, not the z-buffer: merged flame parts carry no keys.
+  const bool empty = mode == DisplayMode::Flame ? std::all_of(image.density.begin(), image.density.end(),
+                                                              [](std::uint32_t n) { return n == 0; })
+                                                : image.hitPixels == 0;
+  if (empty)
     std::fprintf(stderr, "warning: %s: no point landed in the %dx%d frame; check the camera.\n", file.c_str(),
-                 image.width, image.height);
-  writeFrameFile(image, setup, setup.job, file, out);
-  if (!progress.bar) printDeviceNote();
+                 frame.output.width, frame.output.height);
+  writeFrameFile(image, frame, file, out, flame);
+  if (!progress.bar || mode == DisplayMode::Flame) printDeviceNote();
   return kSuccess;
 }
 
@@ -405,10 +336,13 @@ int renderSequence(const std::string& file, const std::string& pattern, const Re
       throw CliError(kBadInput,
                      file + ": its audio file " + audio.string() + " is not there, so --video cannot carry it");
   }
-  RenderOverrides first = overrides;
-  first.time = frameTime(frames.first);
-  const std::int64_t samplesPerFrame =
-      prepareRenderOf(loaded, file, first, limits::kMaxRenderSamples, false).job.samples;
+  std::int64_t samplesPerFrame = 0;
+  try {
+    samplesPerFrame =
+        frameSampleCount(loaded, renderJobOptions(file, overrides, limits::kMaxRenderSamples, frameTime(frames.first)));
+  } catch (const RenderJobError& e) {
+    throw CliError(kBadInput, file + ": " + e.what());
+  }
   ProgressBar bar("render " + std::to_string(frames.count()) + " frames", quiet);
   for (std::int64_t f = frames.first; f <= frames.last; ++f) {
     RenderOverrides at = overrides;

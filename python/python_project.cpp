@@ -291,10 +291,12 @@ py::tuple PythonProject::points(std::int64_t count, std::optional<std::uint64_t>
   PointArrays arrays(count);
   ProgressReporter reporter(progress);
   released(reporter, file, [&] {
-    const cli::RenderSetup setup = cli::prepareRenderOf(project, file, overrides, kMaxPoints, false);
-    generatePoints(*setup.ifs, setup.job, [&](const PointBatch& batch, const RenderStats& stats) {
+    const PreparedRender setup = cli::prepareForVerb(
+        project, file, cli::renderJobOptions(file, overrides, kMaxPoints, time.value_or(project.time)), kMaxPoints,
+        false, true);
+    generatePoints(*setup.ifs, setup.output, [&](const PointBatch& batch, const RenderStats& stats) {
       arrays.append(batch);
-      return reporter.report(double(stats.samples) / double(std::max<std::int64_t>(1, setup.job.samples)));
+      return reporter.report(double(stats.samples) / double(std::max<std::int64_t>(1, setup.output.samples)));
     });
   });
   return arrays.take();

@@ -73,12 +73,19 @@ std::string frameDescription(const char* what, const FrameOutput& out, const Ren
          std::to_string(job.samples) + " samples, seed " + std::to_string(job.seed);
 }
 
-/// 8-bit RGB of the first three channels of an RGBA8 buffer (PNG and TIFF).
-std::vector<std::uint8_t> rgbOf(const std::vector<std::uint8_t>& rgba, std::size_t n) {
+/// PNG and TIFF: 8-bit RGB, the first three channels of an RGBA8 picture over the background.
+void writeRgb8(const FrameOutput& out, int width, int height, const std::vector<std::uint8_t>& rgba,
+               const std::string& description) {
+  const std::size_t n = std::size_t(width) * std::size_t(height);
   std::vector<std::uint8_t> rgb(n * 3);
   for (std::size_t i = 0; i < n; ++i)
     for (std::size_t c = 0; c < 3; ++c) rgb[i * 3 + c] = rgba[i * 4 + c];
-  return rgb;
+  ImageFileLayout layout;
+  layout.width = width;
+  layout.height = height;
+  layout.channels = {"R", "G", "B"};
+  layout.description = description;
+  writeImageFile(out.file, layout, rgb.data());
 }
 
 /// The compositing layout of an EXR: R G B A Z, then `extra`, then P, with the camera's matrices.
@@ -107,15 +114,7 @@ void writeWorldPosition(const OrbitCamera& camera, int width, std::size_t i, flo
 void writeZBuffer(const RenderImage& image, const RenderJob& output, const FrameOutput& out) {
   const std::size_t n = std::size_t(image.width) * std::size_t(image.height);
   const std::string description = frameDescription("GridIFS render of ", out, output);
-  if (lowerExtension(out.file) != "exr") {
-    ImageFileLayout layout;
-    layout.width = image.width;
-    layout.height = image.height;
-    layout.channels = {"R", "G", "B"};
-    layout.description = description;
-    writeImageFile(out.file, layout, rgbOf(image.rgba, n).data());
-    return;
-  }
+  if (lowerExtension(out.file) != "exr") return writeRgb8(out, image.width, image.height, image.rgba, description);
   const OrbitCamera camera(output.camera, image.width, image.height);
   ImageFileLayout layout = exrLayout(image.width, image.height, camera, {});
   layout.description = description;
@@ -138,15 +137,7 @@ void writeShaded(const RenderImage& image, const Project& project, const RenderJ
   developShaded(image, project.render.shading, project.camera, project.render.background, rendered.threads, shaded);
   const std::size_t n = std::size_t(shaded.width) * std::size_t(shaded.height);
   const std::string description = frameDescription("GridIFS shaded render of ", out, rendered);
-  if (lowerExtension(out.file) != "exr") {
-    ImageFileLayout layout;
-    layout.width = shaded.width;
-    layout.height = shaded.height;
-    layout.channels = {"R", "G", "B"};
-    layout.description = description;
-    writeImageFile(out.file, layout, rgbOf(shaded.rgba, n).data());
-    return;
-  }
+  if (lowerExtension(out.file) != "exr") return writeRgb8(out, shaded.width, shaded.height, shaded.rgba, description);
   const OrbitCamera camera(project.camera, shaded.width, shaded.height);
   ImageFileLayout layout = exrLayout(shaded.width, shaded.height, camera, {"N.x", "N.y", "N.z", "AO", "shadow"});
   layout.description = description;

@@ -1,8 +1,11 @@
 #include "job/prepared_render.h"
 
 #include <algorithm>
+#include <map>
+#include <mutex>
 
 #include "flame/palette_gradient.h"
+#include "live/live_drive.h"
 #include "model/project_time.h"
 #include "render/flame_render.h"
 #include "render/shaded_image.h"
@@ -12,12 +15,64 @@
 
 namespace gridifs {
 
-Project renderProjectAt(const Project& project, double time) {
+namespace {
+
+/// The sound's drive of `project`, analysed once per process and sound (not once per frame).
+const LiveDrive& soundDriveFor(const Project& project, const std::filesystem::path& folder) {
+  static std::mutex lock;
+  static std::map<std::string, std::pair<Project, LiveDrive>> drives;
+  const std::lock_guard<std::mutex> hold(lock);
+  const std::string key = std::filesystem::absolute(folder.empty() ? "." : folder).lexically_normal().string();
+  auto it = drives.find(key);
+  if (it == drives.end() || it->second.first.audio != project.audio || it->second.first.bindings != project.bindings ||
+      it->second.first.animation != project.animation) {
+    Project kept;
+    kept.audio = project.audio;
+    kept.bindings = project.bindings;
+    kept.animation = project.animation;
+    LiveDrive drive = LiveDrive::forProject(project, folder);
+    it = drives.insert_or_assign(key, std::pair{std::move(kept), std::move(drive)}).first;
+  }
+  return it->second.second;
+}
+
+/// The project at options.time (as given without one), adjusted.
+Project projectFor(const Project& project, const RenderJobOptions& options) {
+  Project at = options.time ? renderProjectAt(project, *options.time, options.folder) : project;
+  if (options.adjust) options.adjust(at);
+  return at;
+}
+
+/// The display job within the renderer's limits; only the flame display's supersampling makes it
+/// larger than the output.
+void validateDisplayJob(const PreparedRender& r, bool preview) {
   try {
-    return projectAtTime(project, time);
+    validateRenderJob(r.job);
   } catch (const ModelError& e) {
+    if (r.project.render.mode == DisplayMode::Flame && !preview)
+      throw RenderJobError(
+          e.path(),
+          "with supersample " + std::to_string(std::max(1, r.project.render.flame.supersample)) + ", " + e.message());
     throw RenderJobError(e);
   }
+}
+
+}  // namespace
+
+Project renderProjectAt(const Project& project, double time, const std::filesystem::path& folder) {
+  try {
+    Project at = projectAtTime(project, time);
+    if (!project.bindings.empty()) soundDriveFor(project, folder).applyBindings(at, time);
+    return at;
+  } catch (const ModelError& e) {
+    throw RenderJobError(e);
+  } catch (const IoError& e) {
+    throw RenderJobError("audio.file", e.what());
+  }
+}
+
+std::int64_t frameSampleCount(const Project& project, const RenderJobOptions& options) {
+  return outputRenderJob(projectFor(project, options), options).samples;
 }
 
 RenderJob outputRenderJob(const Project& project, const RenderJobOptions& options) {
@@ -116,34 +171,50 @@ DisplaySettings renderDisplaySettings(const Project& project) {
                                                     : DisplaySettings::fromProject(project);
 }
 
-PreparedRender prepareRender(const Project& project, const RenderJobOptions& options) {
-  PreparedRender r;
-  r.project = options.time ? renderProjectAt(project, *options.time) : project;
-  r.output = outputRenderJob(r.project, options);
+void checkRenderOutput(const Project& project, const RenderJobOptions& options) {
+  const RenderJob output = outputRenderJob(project, options);
   // The renderer would draw an empty picture: say so instead.
-  if (r.output.samples < 1) throw RenderJobError("render.samples", "must be at least 1");
+  if (output.samples < 1) throw RenderJobError("render.samples", "must be at least 1");
   try {
-    validateRenderJob(r.output);
+    validateRenderJob(output);
   } catch (const ModelError& e) {
     throw RenderJobError(e);
   }
-  const EvaluationCache evaluation;
-  r.ifs = compileChaosIfs(r.project, evaluation, options);
+}
+
+PreparedRender preparePoints(const Project& project, const RenderJobOptions& options) {
+  PreparedRender r;
+  r.project = projectFor(project, options);
+  checkRenderOutput(r.project, options);
+  r.output = outputRenderJob(r.project, options);
+  const EvaluationCache fresh;
+  r.ifs = compileChaosIfs(r.project, options.evaluation ? *options.evaluation : fresh, options, options.volume);
+  r.job = r.output;
+  r.display = renderDisplaySettings(r.project);
+  r.device = options.device;
+  return r;
+}
+
+PreparedRender prepareRender(const Project& project, const RenderJobOptions& options) {
+  PreparedRender r = preparePoints(project, options);
   const bool flame = options.preview || r.project.render.mode == DisplayMode::Flame;
   if (flame) r.palette = renderPalette(r.project, options.folder, options.preview);
   r.job = displayRenderJob(r.project, r.output, *r.ifs, r.palette, options.preview);
-  try {
-    validateRenderJob(r.job);
-  } catch (const ModelError& e) {
-    // Only the flame display's supersampling makes the renderer's job larger than the output.
-    if (r.project.render.mode == DisplayMode::Flame && !options.preview)
-      throw RenderJobError(
-          e.path(),
-          "with supersample " + std::to_string(std::max(1, r.project.render.flame.supersample)) + ", " + e.message());
-    throw RenderJobError(e);
-  }
-  r.display = renderDisplaySettings(r.project);
+  validateDisplayJob(r, options.preview);
   r.device = r.project.render.mode == DisplayMode::Shaded ? "cpu" : options.device;
+  return r;
+}
+
+PreparedRender prepareDevelop(const Project& project, const RenderJobOptions& options) {
+  PreparedRender r;
+  r.project = projectFor(project, options);
+  r.output = outputRenderJob(r.project, options);
+  r.job = r.output;
+  if (r.project.render.mode == DisplayMode::Flame)
+    r.job = displayRenderJob(r.project, r.output, CompiledIfs{}, nullptr);
+  validateDisplayJob(r, false);
+  r.display = renderDisplaySettings(r.project);
+  r.device = "cpu";
   return r;
 }
 

@@ -5,6 +5,7 @@
 // read from files beside the project, the same palette and lights.
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -43,6 +44,15 @@ struct RenderJobOptions {
   int setResolution = 256;
   /// auto, gpu or cpu (the caller opens the renderer).
   std::string device = "auto";
+  /// The evaluated grids to compile with (a cache that outlives the call, keyed by each
+  /// function's content, so one serves every time sample); none: evaluated afresh.
+  const EvaluationCache* evaluation = nullptr;
+  /// A project with median functions draws the points of this volume (a page of the book of
+  /// drawings) instead of computing its own density volume.
+  std::shared_ptr<const DensityVolume> volume;
+  /// Applied to the project at its time before anything is prepared: the command line's --mode,
+  /// --quality and flame options, which win over what the tracks say.
+  std::function<void(Project&)> adjust;
   /// The interactive preview: low priority threads, colour sums in every mode so that switching
   /// to the flame display needs no restart, the flame histogram at the preview's own pixels, and
   /// the default palette while the project's cannot be read (the palette picker says why).
@@ -62,8 +72,16 @@ struct PreparedRender {
   std::string device;
 };
 
-/// The project at `time` with its tracks evaluated. Throws RenderJobError.
-Project renderProjectAt(const Project& project, double time);
+/// The project at `time` as every render sees it: its tracks evaluated (model/project_time.h), and
+/// the numbers bound to its sound (live/live_drive.h) at their value then, the sound read from
+/// `folder` (empty: the working folder) and analysed once per process. Live sources (OSC, MIDI)
+/// have no value outside the modeller: their numbers keep their tracks' values. Throws
+/// RenderJobError.
+Project renderProjectAt(const Project& project, double time, const std::filesystem::path& folder = {});
+
+/// The samples one frame of `project` renders with `options` (at options.time, adjusted): what a
+/// progress bar over a sequence needs before the first frame is prepared. Throws RenderJobError.
+std::int64_t frameSampleCount(const Project& project, const RenderJobOptions& options);
 
 /// The output image's job from the project's render settings and the options' overrides; not
 /// yet validated.
@@ -98,9 +116,26 @@ RenderJob displayRenderJob(const Project& project, const RenderJob& output, cons
 /// depth cueing in its buffers).
 DisplaySettings renderDisplaySettings(const Project& project);
 
+/// Checks that the output job of `project` with `options` (its size and samples; the project as
+/// given) is one a render takes, as preparePoints does first: a dialog's fast inline check before
+/// its work starts. Throws RenderJobError.
+void checkRenderOutput(const Project& project, const RenderJobOptions& options);
+
+/// The points a render would plot, without a display: the project at options.time (adjusted), its
+/// output job (validated) and the chaos game's IFS (compileChaosIfs); job is the output job and
+/// there is no palette. What `gridifs export-points` and File › Export points write. Throws
+/// RenderJobError naming the JSON path of the cause.
+PreparedRender preparePoints(const Project& project, const RenderJobOptions& options);
+
 /// All of the above, validated; for a project with median functions the compiled IFS draws the
 /// points of its density volume, as the command line's render does. Throws RenderJobError naming
 /// the JSON path of the cause.
 PreparedRender prepareRender(const Project& project, const RenderJobOptions& options);
+
+/// The jobs of a frame developed from accumulations made elsewhere (merged render parts): the
+/// project as given, its output job, and the display job whose buffers the parts hold (a flame's
+/// supersampled one; the shaded display's lights are in the parts already). No IFS and no palette
+/// (the colour sums hold it). Throws RenderJobError.
+PreparedRender prepareDevelop(const Project& project, const RenderJobOptions& options);
 
 }  // namespace gridifs

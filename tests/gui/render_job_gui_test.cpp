@@ -26,6 +26,23 @@ fs::path pineTreesCopy(const TempFolder& home) {
   return file;
 }
 
+/// Waits for the preview's first image, or, for a project with median functions (which opens in
+/// the volume preview, whose chaos-game preview never starts), for the window only.
+nlohmann::json waitUntilOpen(App& app, bool chaosPreview) {
+  if (chaosPreview) return app.waitForPreview();
+  return app.waitFor([](const nlohmann::json& j) { return j.contains("window") && !j["modal"].get<bool>(); });
+}
+
+/// Waits until the dialog task `dialog` ("render_animation" or "export") is done or failed.
+nlohmann::json waitForTask(App& app, const std::string& dialog) {
+  return app.waitFor(
+      [&](const nlohmann::json& j) {
+        const std::string phase = j[dialog]["phase"];
+        return phase == "done" || phase == "failed";
+      },
+      120s);
+}
+
 std::string fileBytes(const fs::path& file) {
   std::ifstream in(file, std::ios::binary);
   return std::string(std::istreambuf_iterator<char>(in), {});
@@ -37,12 +54,9 @@ int gridifsCommand(const std::string& args) {
 }
 
 /// Exports the points of the project the modeller has open through File › Export points with the
-/// dialog's defaults; the file it wrote. A project with median functions opens in the volume
-/// preview, whose chaos-game preview never starts: `chaosPreview` false waits for the window only.
+/// dialog's defaults; the file it wrote (`chaosPreview` as in waitUntilOpen).
 fs::path exportPointsFromDialog(App& app, const fs::path& out, bool chaosPreview = true) {
-  nlohmann::json probe = chaosPreview ? app.waitForPreview() : app.waitFor([](const nlohmann::json& j) {
-    return j.contains("window") && !j["modal"].get<bool>();
-  });
+  nlohmann::json probe = waitUntilOpen(app, chaosPreview);
   clickFileMenu(app, probe, "menu.export_points");
   const std::optional<Rect> exportButton = app.waitForStableRect("export.run");
   EXPECT_TRUE(exportButton) << "the export dialog did not open";
@@ -51,12 +65,7 @@ fs::path exportPointsFromDialog(App& app, const fs::path& out, bool chaosPreview
   probe = app.probe();
   EXPECT_EQ(probe["export"]["output"], out.string());
   clickRect(*exportButton);
-  probe = app.waitFor(
-      [](const nlohmann::json& j) {
-        const std::string phase = j["export"]["phase"];
-        return phase == "done" || phase == "failed";
-      },
-      120s);
+  probe = waitForTask(app, "export");
   EXPECT_EQ(probe["export"]["phase"], "done") << probe["export"]["message"];
   return out;
 }
@@ -71,12 +80,7 @@ TEST(RenderJobGui, RenderAnimationRendersACondensationSetFromAMeshFile) {
   const std::optional<Rect> render = app.waitForStableRect("animation.render");
   ASSERT_TRUE(render) << "the dialog did not open";
   clickRect(*render);
-  probe = app.waitFor(
-      [](const nlohmann::json& j) {
-        const std::string phase = j["render_animation"]["phase"];
-        return phase == "done" || phase == "failed";
-      },
-      120s);
+  probe = waitForTask(app, "render_animation");
   ASSERT_EQ(probe["render_animation"]["phase"], "done") << probe["render_animation"].dump();
   EXPECT_EQ(probe["render_animation"]["frames_done"].get<int>(), 3);
   for (int f = 0; f <= 2; ++f) {
@@ -147,9 +151,7 @@ namespace {
 /// typed into the dialog) and checks each against `gridifs render --frames 0:1`, byte for byte.
 void renderExrFramesLikeTheCommandLine(const TempFolder& home, const fs::path& project, bool chaosPreview) {
   App app(home, {project.string()});
-  nlohmann::json probe = chaosPreview ? app.waitForPreview() : app.waitFor([](const nlohmann::json& j) {
-    return j.contains("window") && !j["modal"].get<bool>();
-  });
+  nlohmann::json probe = waitUntilOpen(app, chaosPreview);
   clickFileMenu(app, probe, "menu.render_animation");
   const std::optional<Rect> output = app.waitForStableRect("animation.output");
   ASSERT_TRUE(output) << "the dialog did not open";
@@ -167,12 +169,7 @@ void renderExrFramesLikeTheCommandLine(const TempFolder& home, const fs::path& p
   const std::optional<Rect> render = app.waitForStableRect("animation.render");
   ASSERT_TRUE(render);
   clickRect(*render);
-  probe = app.waitFor(
-      [](const nlohmann::json& j) {
-        const std::string phase = j["render_animation"]["phase"];
-        return phase == "done" || phase == "failed";
-      },
-      120s);
+  probe = waitForTask(app, "render_animation");
   ASSERT_EQ(probe["render_animation"]["phase"], "done") << probe["render_animation"].dump();
   ASSERT_EQ(gridifsCommand("render '" + project.string() + "' -o '" + (home.path / "cli_%04d.exr").string() +
                            "' --frames 0:1"),

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
 
 #include "base/text_format.h"
 #include "io/point_cloud_export.h"
@@ -220,27 +221,28 @@ void ExportDialog::start(ModellerState& state) {
       options.threads = 0;  // all cores, as the CLI
       options.samples = samples_;
       options.folder = state.projectFolder();
-      const RenderJob job = outputRenderJob(state.document.project(), options);
-      validateRenderJob(job);
+      const Project& project = state.document.project();
+      const std::string source = state.document.path().filename().string();
       // Median functions need their density volume (seconds): it is computed on the task's
-      // thread, from a copy of the project; other projects compile here, from the document's
-      // evaluated grids, and fail inline.
-      const bool setIteration = usesSetIteration(state.document.project());
-      std::shared_ptr<const CompiledIfs> compiled;
-      if (!setIteration) compiled = compileChaosIfs(state.document.project(), state.document.evaluation(), options);
-      const Project project = state.document.project();
-      const std::string description = pointCloudDescription(state.document.path().filename().string(), job);
-      task_.start([compiled, project, options, job, output, description](JobContext& context) -> TaskOutcome {
+      // thread, from a copy of the project, once the settings are checked here; other projects
+      // are prepared here, from the document's evaluated grids, and fail inline.
+      std::optional<PreparedRender> prepared;
+      if (usesSetIteration(project)) {
+        checkRenderOutput(project, options);
+      } else {
+        options.evaluation = &state.document.evaluation();
+        prepared = preparePoints(project, options);
+        options.evaluation = nullptr;
+      }
+      task_.start([prepared, project, options, output, source](JobContext& context) -> TaskOutcome {
         try {
-          std::shared_ptr<const CompiledIfs> ifs = compiled;
-          if (!ifs) {
-            context.progress(0.0);
-            ifs = compileChaosIfs(project, EvaluationCache{}, options);
-          }
-          const PointCloudResult written = writePointCloud(*ifs, job, output, description, [&](const RenderStats& s) {
-            context.progress(s.progress());
-            return !context.stopRequested();
-          });
+          const PreparedRender points = prepared ? *prepared : preparePoints(project, options);
+          const std::string description = pointCloudDescription(source, points.output);
+          const PointCloudResult written =
+              writePointCloud(*points.ifs, points.output, output, description, [&](const RenderStats& s) {
+                context.progress(s.progress());
+                return !context.stopRequested();
+              });
           if (written.cancelled) throw DeterministicCancelled();
           const std::uint64_t n = written.written;
           return {TaskPhase::Done, "Wrote " + output.string() + ": " + withThousands(n) + " points."};

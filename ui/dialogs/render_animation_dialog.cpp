@@ -13,6 +13,7 @@
 #include "base/text_format.h"
 #include "farm/farm_job.h"
 #include "job/animation_frames.h"
+#include "job/prepared_render.h"
 #include "render/chaos_renderer.h"
 #include "render/image_file.h"
 #include "ui/base/widgets.h"
@@ -85,7 +86,7 @@ void RenderAnimationDialog::start(ModellerState& state) {
   animation.motion_fade = motionFade_;
   project.animation = animation;
   try {
-    validateRenderJob(RenderJob::fromProject(project, 1));
+    checkRenderOutput(project, RenderJobOptions{});
   } catch (const ModelError& e) {
     message_ = std::string("Cannot render: ") + e.what();
     return;
