@@ -62,9 +62,9 @@ void Document::commit(Project before, const std::string& label) {
   push(undo_, std::move(before), label);
 }
 
-bool Document::applyChange(const Change& change, Project& before) {
+bool Document::applyChange(const ProjectEdit& edit, Project& before) {
   Project next = project_;
-  change(next);
+  applyEdit(next, edit);
   if (rule_) next = rule_(project_, std::move(next));
   // Bindings of numbers the change removed go with them (undo brings both back).
   if (!next.bindings.empty()) dropUnresolvedBindings(next);
@@ -76,25 +76,17 @@ bool Document::applyChange(const Change& change, Project& before) {
   return true;
 }
 
-void Document::edit(const std::string& label, const Change& change) {
-  if (gesture_) endGesture();
-  Project before;
-  if (applyChange(change, before)) commit(std::move(before), label);
-}
-
-void Document::editUnrecorded(const Change& change) {
-  Project before;
-  applyChange(change, before);
-}
-
 void Document::apply(const ProjectEdit& edit) { apply(editLabel(edit), edit); }
 
 void Document::apply(const std::string& label, const ProjectEdit& edit) {
-  this->edit(label, [&edit](Project& p) { applyEdit(p, edit); });
+  if (gesture_) endGesture();
+  Project before;
+  if (applyChange(edit, before)) commit(std::move(before), label);
 }
 
 void Document::applyUnrecorded(const ProjectEdit& edit) {
-  editUnrecorded([&edit](Project& p) { applyEdit(p, edit); });
+  Project before;
+  applyChange(edit, before);
 }
 
 void Document::applyLiveValue(const ProjectEdit& edit) {
@@ -107,10 +99,6 @@ void Document::applyLiveValue(const ProjectEdit& edit) {
     throw;
   }
   rule_ = std::move(rule);
-}
-
-void Document::updateGesture(const ProjectEdit& edit) {
-  updateGesture([&edit](Project& p) { applyEdit(p, edit); });
 }
 
 void Document::validate(const Project& next) {
@@ -128,10 +116,10 @@ void Document::beginGesture(const std::string& label) {
   gesture_ = Step{project_, label};
 }
 
-void Document::updateGesture(const Change& change) {
+void Document::updateGesture(const ProjectEdit& edit) {
   if (!gesture_) beginGesture("Edit");
   Project before;
-  applyChange(change, before);
+  applyChange(edit, before);
 }
 
 void Document::endGesture() {

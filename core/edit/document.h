@@ -38,8 +38,6 @@ bool sameRenderInput(const RenderSettings& a, const RenderSettings& b);
 /// Not thread-safe: owned and used by one thread (the UI thread, or a CLI verb).
 class Document {
  public:
-  using Change = std::function<void(Project&)>;
-
   explicit Document(Project project = {});
 
   const Project& project() const { return project_; }
@@ -51,19 +49,14 @@ class Document {
   /// Whether the project differs from what was last saved or opened.
   bool dirty() const { return project_ != saved_; }
 
-  /// Applies `change` as one undo step. The result is validated first: an invalid
-  /// project throws ModelError and leaves the document untouched. No-op changes push nothing.
-  void edit(const std::string& label, const Change& change);
-  /// Applies `change` like edit(), validated, but records no undo step (the modeller's playhead:
-  /// artists scrub and play without filling the history). Undo and redo keep such a change.
-  void editUnrecorded(const Change& change);
-
-  /// A named edit (edit/project_edit.h) as one undo step named by its label() or by `label`:
-  /// validated like edit(); an edit that names something the project lacks throws ModelError,
-  /// and the document stays untouched either way.
+  /// A named edit (edit/project_edit.h, the one vocabulary of changes) as one undo step named by
+  /// its label() or by `label`. The result is validated first: an invalid project, or an edit
+  /// that names something the project lacks, throws ModelError and leaves the document
+  /// untouched. An edit that changes nothing pushes nothing.
   void apply(const ProjectEdit& edit);
   void apply(const std::string& label, const ProjectEdit& edit);
-  /// A named edit without an undo step, like editUnrecorded() (the playhead's SetTime).
+  /// A named edit like apply(), validated, but without an undo step (the modeller's playhead,
+  /// SetTime: artists scrub and play without filling the history). Undo and redo keep it.
   void applyUnrecorded(const ProjectEdit& edit);
   /// A value from live input or sound (model/live_binding.h): like applyUnrecorded(), but outside
   /// the keyframing rule, so a bound number moves over its track without being keyed.
@@ -79,7 +72,6 @@ class Document {
   /// A gesture (slider drag, node drag) previews live and commits one undo step on end.
   void beginGesture(const std::string& label);
   /// Throws ModelError and keeps the last valid state when the change is invalid.
-  void updateGesture(const Change& change);
   void updateGesture(const ProjectEdit& edit);
   void endGesture();
   void cancelGesture();
@@ -128,9 +120,9 @@ class Document {
   bool travel(std::vector<Step>& from, std::vector<Step>& to);
   /// Throws ModelError when `next` is invalid.
   void validate(const Project& next);
-  /// Applies `change` to a copy, validates and publishes it; false (and nothing changed) when the
-  /// change changes nothing. `before` receives the project as it was.
-  bool applyChange(const Change& change, Project& before);
+  /// Applies `edit` to a copy, validates and publishes it; false (and nothing changed) when the
+  /// edit changes nothing. `before` receives the project as it was.
+  bool applyChange(const ProjectEdit& edit, Project& before);
 
   Project project_, saved_;
   std::filesystem::path path_;

@@ -9,18 +9,14 @@ void EditQueue::commit(ProjectEdit edit) {
   commit(std::move(label), std::move(edit));
 }
 void EditQueue::commit(std::string label, ProjectEdit edit) {
-  items_.push_back({Kind::Commit, std::move(label), {}, std::move(edit)});
+  items_.push_back({Kind::Commit, std::move(label), std::move(edit)});
 }
-void EditQueue::commit(std::string label, Document::Change change) {
-  items_.push_back({Kind::Commit, std::move(label), std::move(change), {}});
-}
-void EditQueue::begin(std::string label) { items_.push_back({Kind::Begin, std::move(label), {}, {}}); }
-void EditQueue::update(ProjectEdit edit) { items_.push_back({Kind::Update, {}, {}, std::move(edit)}); }
-void EditQueue::update(Document::Change change) { items_.push_back({Kind::Update, {}, std::move(change), {}}); }
-void EditQueue::end() { items_.push_back({Kind::End, {}, {}, {}}); }
-void EditQueue::cancel() { items_.push_back({Kind::Cancel, {}, {}, {}}); }
-void EditQueue::undo() { items_.push_back({Kind::Undo, {}, {}, {}}); }
-void EditQueue::redo() { items_.push_back({Kind::Redo, {}, {}, {}}); }
+void EditQueue::begin(std::string label) { items_.push_back({Kind::Begin, std::move(label), {}}); }
+void EditQueue::update(ProjectEdit edit) { items_.push_back({Kind::Update, {}, std::move(edit)}); }
+void EditQueue::end() { items_.push_back({Kind::End, {}, {}}); }
+void EditQueue::cancel() { items_.push_back({Kind::Cancel, {}, {}}); }
+void EditQueue::undo() { items_.push_back({Kind::Undo, {}, {}}); }
+void EditQueue::redo() { items_.push_back({Kind::Redo, {}, {}}); }
 void EditQueue::after(std::function<void()> action) { after_.push_back(std::move(action)); }
 
 std::string EditQueue::apply(Document& document) {
@@ -29,20 +25,14 @@ std::string EditQueue::apply(Document& document) {
     try {
       switch (item.kind) {
         case Kind::Commit:
-          if (item.edit)
-            document.apply(item.label, *item.edit);
-          else
-            document.edit(item.label, item.change);
+          document.apply(item.label, *item.edit);
           break;
         case Kind::Begin:
           document.beginGesture(item.label);
           break;
         case Kind::Update:
           if (!document.inGesture()) document.beginGesture("Edit");
-          if (item.edit)
-            document.updateGesture(*item.edit);
-          else
-            document.updateGesture(item.change);
+          document.updateGesture(*item.edit);
           break;
         case Kind::End:
           document.endGesture();

@@ -1,8 +1,8 @@
 #pragma once
 // Edits collected while the UI is built and applied to the Document afterwards (the fixed
-// frame order: build UI → apply edits). Widgets edit local copies and enqueue one
-// change; a slider drag is one gesture (begin on IsItemActivated, end on deactivation).
-// Headless: the modeller's widgets fill it (ui/base/edit_queue.h), tests drive it directly.
+// frame order: build UI → apply edits). Widgets edit local copies and enqueue one named
+// edit (edit/project_edit.h), the one vocabulary of changes; a slider drag is one gesture (begin on IsItemActivated,
+// end on deactivation). Headless: the modeller's widgets fill it (ui/base/edit_queue.h), tests drive it directly.
 //
 // Thread-safety: used by the thread that owns the Document.
 #include <functional>
@@ -19,12 +19,9 @@ class EditQueue {
   /// One undo step: a named edit (edit/project_edit.h), named by its label() or by `label`.
   void commit(ProjectEdit edit);
   void commit(std::string label, ProjectEdit edit);
-  /// One undo step of any change (tests and headless callers; the modeller uses named edits).
-  void commit(std::string label, Document::Change change);
   /// A live-previewed gesture: begin, any number of updates, end (one undo step).
   void begin(std::string label);
   void update(ProjectEdit edit);
-  void update(Document::Change change);
   void end();
   void cancel();
   void undo();
@@ -44,8 +41,7 @@ class EditQueue {
   struct Item {
     Kind kind;
     std::string label;
-    Document::Change change;
-    std::optional<ProjectEdit> edit;  // instead of `change`
+    std::optional<ProjectEdit> edit;  // Commit and Update
   };
   std::vector<Item> items_;
   std::vector<std::function<void()>> after_;

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "edit/document.h"
+#include "edit/project_edit.h"
 #include "io/project_io.h"
 #include "model/project_time.h"
 #include "project_samples.h"
@@ -22,14 +23,14 @@ TEST(Document, RandomEditSequencesUndoAndRedoExactly) {
       if (action < 5) {
         const std::size_t f = std::size_t(sampler.integer(0, int(doc.project().functions.size()) - 1));
         Operation op = sampler.operation();
-        doc.edit("add op", [&](Project& p) { p.functions[f].ops.push_back(op); });
+        doc.apply("add op", AddOperation{FunctionRef(int(f)), int(doc.project().functions[f].ops.size()), op});
         states.resize(cursor + 1);
         states.push_back(doc.project());
         ++cursor;
       } else if (action < 6) {
         const double w = sampler.real(0.1, 2);
         doc.beginGesture("weight drag");
-        for (int k = 0; k < 5; ++k) doc.updateGesture([&](Project& p) { p.functions[0].weight = w + k; });
+        for (int k = 0; k < 5; ++k) doc.updateGesture(SetFunctionWeight{FunctionRef(0), w + k});
         doc.endGesture();  // one undo step for the whole drag
         states.resize(cursor + 1);
         states.push_back(doc.project());
@@ -53,13 +54,9 @@ TEST(Document, InvalidEditsAreRejectedAndChangeNothing) {
   const Project before = doc.project();
   CalculatorOp broken;
   broken.x = "x +* 2";
-  EXPECT_THROW(doc.edit("calc",
-                        [&](Project& p) {
-                          Operation op;
-                          op.params = broken;
-                          p.functions[0].ops.push_back(op);
-                        }),
-               ModelError);
+  Operation op;
+  op.params = broken;
+  EXPECT_THROW(doc.apply("calc", AddOperation{FunctionRef(0), 0, op}), ModelError);
   EXPECT_EQ(doc.project(), before);
   EXPECT_FALSE(doc.canUndo());
   EXPECT_FALSE(doc.dirty());
@@ -68,7 +65,7 @@ TEST(Document, InvalidEditsAreRejectedAndChangeNothing) {
 TEST(Document, DirtyTracksTheSavedState) {
   Document doc(defaultNewProject());
   EXPECT_FALSE(doc.dirty());
-  doc.edit("rename", [](Project& p) { p.functions[0].name = "x"; });
+  doc.apply(RenameFunction{FunctionRef(0), "x"});
   EXPECT_TRUE(doc.dirty());
   doc.undo();
   EXPECT_FALSE(doc.dirty());
@@ -81,7 +78,7 @@ TEST(Document, CancelledGestureRestoresTheStart) {
   Document doc(defaultNewProject());
   const Project before = doc.project();
   doc.beginGesture("drag");
-  doc.updateGesture([](Project& p) { p.functions[0].placement.translate.x = 0.4; });
+  doc.updateGesture(SetParameter{"functions[0].placement.translate[0]", 0.4});
   EXPECT_NE(doc.project(), before);
   doc.cancelGesture();
   EXPECT_EQ(doc.project(), before);
@@ -92,7 +89,7 @@ TEST(Document, EvaluatedGridsFollowEdits) {
   Document doc(defaultNewProject());
   const auto first = doc.evaluatedGrid(0);
   EXPECT_EQ(doc.evaluatedGrid(0), first);  // cached
-  doc.edit("move", [](Project& p) { p.functions[0].placement.translate.x = 0.25; });
+  doc.apply(SetParameter{"functions[0].placement.translate[0]", 0.25});
   const auto moved = doc.evaluatedGrid(0);
   EXPECT_NE(moved, first);
   EXPECT_NEAR(moved->node(0, 0, 0).x, first->node(0, 0, 0).x + 0.25, 1e-12);
@@ -120,7 +117,7 @@ TEST(Document, UndoHistoryStaysUnderItsMemoryCapByDroppingTheOldestSteps) {
   ASSERT_LT(edits, int(Document::kMaxUndoSteps)) << "the memory cap, not the step cap, must bind";
 
   Document doc(big);
-  for (int e = 1; e <= edits; ++e) doc.edit("weight", [&](Project& p) { p.functions[0].weight = 1.0 + e; });
+  for (int e = 1; e <= edits; ++e) doc.apply(SetFunctionWeight{FunctionRef(0), 1.0 + e});
   EXPECT_LE(doc.historyBytes(), Document::kMaxHistoryBytes);
   EXPECT_GT(doc.historyBytes(), Document::kMaxHistoryBytes - 2 * snapshot);
   int undone = 0;
@@ -138,16 +135,16 @@ TEST(Document, UndoHistoryStaysUnderItsMemoryCapByDroppingTheOldestSteps) {
 TEST(Document, UnrecordedTimeChangesSurviveUndoAndKeyedEditsUndo) {
   Document d(loadProject(std::filesystem::path(GRIDIFS_ASSETS) / "sierpinski_tetrahedron.gridifs"));
   d.setRule(keyEditedParameters);
-  d.edit("Set key", [](Project& p) { p.tracks["camera.yaw"].keys = {{0.0, p.camera.yaw}}; });
+  d.apply(SetKeys{{{"camera.yaw", d.project().camera.yaw}}});
   ASSERT_TRUE(d.canUndo());
-  d.editUnrecorded([](Project& p) { p.time = 1.0; });
+  d.applyUnrecorded(SetTime{1.0});
   EXPECT_EQ(d.undoLabel(), "Set key");  // the playhead made no undo step
-  d.edit("Yaw", [](Project& p) { p.camera.yaw += 30.0; });
+  d.apply("Yaw", SetParameter{"camera.yaw", d.project().camera.yaw + 30.0});
   ASSERT_EQ(d.project().tracks.at("camera.yaw").keys.size(), 2u);
   const double keyedYaw = d.project().camera.yaw;
-  d.editUnrecorded([](Project& p) { p.time = 0.0; });
+  d.applyUnrecorded(SetTime{0.0});
   EXPECT_DOUBLE_EQ(d.project().camera.yaw, keyedYaw - 30.0);
-  d.editUnrecorded([](Project& p) { p.time = 1.0; });
+  d.applyUnrecorded(SetTime{1.0});
   EXPECT_DOUBLE_EQ(d.project().camera.yaw, keyedYaw);
   ASSERT_TRUE(d.undo());
   EXPECT_EQ(d.project().tracks.at("camera.yaw").keys.size(), 1u);

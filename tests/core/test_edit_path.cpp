@@ -1,6 +1,6 @@
-// The modeller's edit path without a window: widgets' edits go through the EditQueue into the
-// Document, which publishes per-concern revisions; a geometry change compiles a new snapshot
-// from the Document's evaluation cache and restarts the renderer as a new generation.
+// The modeller's edit path without a window: widgets' edits (ProjectEdit values, the panels' own)
+// go through the EditQueue into the Document, which publishes per-concern revisions; a geometry change compiles a new
+// snapshot from the Document's evaluation cache and restarts the renderer as a new generation.
 #include <gtest/gtest.h>
 
 #include "edit/document.h"
@@ -19,9 +19,12 @@ TEST(EditPath, SliderDragIsOneUndoStepAndChangesGeometryOnly) {
   Document document(test::sierpinskiTetrahedron());
   const Revisions before = document.revisions();
   EditQueue edits;
+  Placement placement = document.project().functions[0].placement;
   edits.begin("Scale");
-  for (int frame = 1; frame <= 10; ++frame)
-    edits.update([frame](Project& p) { p.functions[0].placement.scale = Vec3{0.5 - 0.01 * frame}; });
+  for (int frame = 1; frame <= 10; ++frame) {
+    placement.scale = Vec3{0.5 - 0.01 * frame};
+    edits.update(SetPlacement{FunctionRef(0), placement});
+  }
   edits.end();
   EXPECT_EQ(edits.apply(document), "");
   EXPECT_EQ(document.project().functions[0].placement.scale, Vec3{0.4});
@@ -40,14 +43,14 @@ TEST(EditPath, DisplayAndCameraEditsLeaveGeometryAlone) {
   Document document(test::sierpinskiTetrahedron());
   EditQueue edits;
   const Revisions r0 = document.revisions();
-  edits.commit("Background", [](Project& p) { p.render.background = Vec3{0.2}; });
+  edits.commit("Background", SetBackground{Vec3{0.2}});
   edits.apply(document);
   const Revisions r1 = document.revisions();
   EXPECT_GT(r1.display, r0.display);
   EXPECT_EQ(r1.geometry, r0.geometry);
   EXPECT_EQ(r1.render, r0.render);
-  edits.commit("Palette", [](Project& p) { p.render.flame.palette = "ice"; });
-  edits.commit("Orbit", [](Project& p) { p.camera.yaw += 10.0; });
+  edits.commit("Palette", SetPalette{"ice"});
+  edits.commit("Orbit", SetParameter{"camera.yaw", document.project().camera.yaw + 10.0});
   edits.apply(document);
   const Revisions r2 = document.revisions();
   EXPECT_GT(r2.render, r1.render);  // the palette is looked up per sample
@@ -64,8 +67,7 @@ TEST(EditPath, ControlPointDragIsOneUndoStepAndChangesGeometry) {
   const Vec3 start = document.project().space->control_points[1];
   EditQueue edits;
   edits.begin("Move control point");
-  for (int frame = 1; frame <= 5; ++frame)
-    edits.update([start, frame](Project& p) { p.space->control_points[1] = start + Vec3(0.02 * frame, 0.0, 0.0); });
+  for (int frame = 1; frame <= 5; ++frame) edits.update(MoveControlPoint{1, start + Vec3(0.02 * frame, 0.0, 0.0)});
   edits.end();
   EXPECT_EQ(edits.apply(document), "");
   EXPECT_GT(document.revisions().geometry, before.geometry);  // the preview restarts on this
@@ -80,9 +82,9 @@ TEST(EditPath, RejectedEditKeepsTheDocumentAndReportsWhy) {
   Document document(test::sierpinskiTetrahedron());
   const Revisions before = document.revisions();
   EditQueue edits;
-  edits.commit("Weight", [](Project& p) {
-    for (Function& f : p.functions) f.weight = 0.0;
-  });
+  Project weightless = document.project();
+  for (Function& f : weightless.functions) f.weight = 0.0;
+  edits.commit("Weight", ReplaceProject{weightless});
   const std::string error = edits.apply(document);
   EXPECT_NE(error.find("weight"), std::string::npos) << error;
   EXPECT_EQ(document.revisions(), before);
@@ -93,7 +95,8 @@ TEST(EditPath, AnEditReEvaluatesOnlyTheEditedFunction) {
   ASSERT_GE(document.project().functions.size(), 2u);
   const auto first = document.evaluatedGrid(0), second = document.evaluatedGrid(1);
   EditQueue edits;
-  edits.commit("Move", [](Project& p) { p.functions[0].placement.translate.x += 0.01; });
+  edits.commit(SetParameter{"functions[0].placement.translate[0]",
+                            document.project().functions[0].placement.translate.x + 0.01});
   edits.apply(document);
   EXPECT_NE(document.evaluatedGrid(0), first);
   EXPECT_EQ(document.evaluatedGrid(1), second);  // the same shared grid: not evaluated again
@@ -114,7 +117,8 @@ TEST(EditPath, GeometryEditRestartsTheRendererAsANewGeneration) {
 
   std::uint64_t published = document.revisions().geometry;
   EditQueue edits;
-  edits.commit("Move", [](Project& p) { p.functions[0].placement.translate.y += 0.2; });
+  edits.commit(
+      SetParameter{"functions[0].placement.translate[1]", document.project().functions[0].placement.translate.y + 0.2});
   edits.apply(document);
   ASSERT_NE(document.revisions().geometry, published);  // what the preview compares
   published = document.revisions().geometry;

@@ -55,14 +55,15 @@ TEST(FinalFunction, AddingItLeavesEveryPointAndColourWhereItWas) {
     const auto before = chaosPoints(document);
     const Revisions r0 = document.revisions();
     EditQueue edits;
-    edits.commit("Add final function", [interpolation](Project& p) {
-      p.final_function = identityFinalFunction();
-      p.final_function->interpolation = interpolation;
-    });
+    edits.commit(AddFinalFunction{});
+    const SetInterpolation bezier{FunctionRef::finalFunction(), interpolation};
+    if (interpolation != LatticeInterpolation::Trilinear) edits.commit(bezier);
     ASSERT_EQ(edits.apply(document), "");
     ASSERT_TRUE(document.project().final_function);
     EXPECT_EQ(document.project().final_function->resolution, (Index3{6, 6, 6}));  // like a new function
-    EXPECT_EQ(document.undoLabel(), "Add final function");
+    EXPECT_EQ(document.project().final_function->interpolation, interpolation);
+    EXPECT_EQ(document.undoLabel(),
+              interpolation == LatticeInterpolation::Trilinear ? "Add final function" : bezier.label());
     EXPECT_GT(document.revisions().geometry, r0.geometry);
     const auto after = chaosPoints(document);
     ASSERT_EQ(after.first.size(), before.first.size());
@@ -77,7 +78,7 @@ TEST(FinalFunction, AddingItLeavesEveryPointAndColourWhereItWas) {
 TEST(FinalFunction, EditingItsLatticeIsGeometryAndUndoRestoresIt) {
   Document document(test::sierpinskiTetrahedron());
   EditQueue edits;
-  edits.commit("Add final function", [](Project& p) { p.final_function = identityFinalFunction(); });
+  edits.commit(AddFinalFunction{});
   edits.apply(document);
   const Project added = document.project();
   const auto identity = chaosPoints(document);
@@ -85,15 +86,13 @@ TEST(FinalFunction, EditingItsLatticeIsGeometryAndUndoRestoresIt) {
 
   // A node drag as the grid views make it: one gesture through the FunctionRef, one undo step.
   const FunctionRef ref = FunctionRef::finalFunction();
+  MoveNodes drag{ref, *added.final_function, std::vector<unsigned char>(6 * 6 * 6, 0), Vec3{0.0}};
+  drag.mask[5 + 6 * (5 + 6 * 5)] = 1;  // node (5, 5, 5), the far corner
   edits.begin("Move nodes");
-  for (int frame = 1; frame <= 4; ++frame)
-    edits.update([ref, frame](Project& p) {
-      Function& f = ref.in(p);
-      f.ops.clear();
-      Operation op;
-      op.params = NodesOp{{{Index3{5, 5, 5}, Vec3{0.1 * frame, 0.0, 0.0}}}};
-      f.ops.push_back(op);
-    });
+  for (int frame = 1; frame <= 4; ++frame) {
+    drag.displacement = Vec3{0.1 * frame, 0.0, 0.0};
+    edits.update(drag);
+  }
   edits.end();
   ASSERT_EQ(edits.apply(document), "");
   EXPECT_GT(document.revisions().geometry, geometry);  // the preview restarts on this
@@ -107,10 +106,10 @@ TEST(FinalFunction, EditingItsLatticeIsGeometryAndUndoRestoresIt) {
   EXPECT_GT(moved, 0.01) << "points near the moved corner node follow it";
 
   // Bézier with more than 8 nodes per axis is refused, and the document keeps its last state.
-  edits.commit("Bézier final lattice", [ref](Project& p) {
-    ref.in(p).interpolation = LatticeInterpolation::Bezier;
-    ref.in(p).resolution = {9, 6, 6};
-  });
+  Project bezier = document.project();
+  ref.in(bezier).interpolation = LatticeInterpolation::Bezier;
+  ref.in(bezier).resolution = {9, 6, 6};
+  edits.commit("Bézier final lattice", ReplaceProject{bezier});
   const std::string error = edits.apply(document);
   EXPECT_NE(error.find("final.resolution[0]"), std::string::npos) << error;
   EXPECT_NE(error.find("at most 8 nodes per axis"), std::string::npos) << error;
@@ -134,11 +133,11 @@ TEST(FinalFunction, ItsParametersAreKeyedLikeAFunction) {
   p.tracks[path] = track;
   Document document(p);
   document.setRule(keyEditedParameters);
-  document.editUnrecorded([](Project& q) { q.time = 1.0; });
+  document.applyUnrecorded(SetTime{1.0});
   EXPECT_DOUBLE_EQ(document.project().final_function->placement.scale.x, 0.5);
   // Editing the keyed value at another time adds a key there.
-  document.editUnrecorded([](Project& q) { q.time = 0.5; });
-  document.edit("Scale placement", [](Project& q) { q.final_function->placement.scale.x = 2.0; });
+  document.applyUnrecorded(SetTime{0.5});
+  document.apply(SetParameter{path, 2.0});
   EXPECT_EQ(document.project().tracks.at(path).keys.size(), 3u);
   EXPECT_DOUBLE_EQ(document.project().final_function->placement.scale.x, 2.0);
 }

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "edit/document.h"
+#include "edit/project_edit.h"
 #include "model/validation.h"
 
 using namespace gridifs;
@@ -57,14 +58,18 @@ TEST(Validation, ChangeOfOneFunctionGivesTheFullVerdict) {
 
 TEST(Validation, DocumentRefusesABrokenEditAfterValidEdits) {
   Document document(twoCalculators());
-  document.edit("Turn", [](Project& p) { std::get<CalculatorOp>(p.functions[0].ops[0].params).vars[0].value = 0.3; });
+  Operation turned = document.project().functions[0].ops[0];
+  std::get<CalculatorOp>(turned.params).vars[0].value = 0.3;
+  document.apply("Turn", SetOperation{FunctionRef(0), 0, turned});
   const Project good = document.project();
-  EXPECT_THROW(
-      document.edit("Break", [](Project& p) { std::get<CalculatorOp>(p.functions[1].ops[0].params).x = "sin("; }),
-      ModelError);
+  Operation broken = document.project().functions[1].ops[0];
+  std::get<CalculatorOp>(broken.params).x = "sin(";
+  EXPECT_THROW(document.apply("Break", SetOperation{FunctionRef(1), 0, broken}), ModelError);
   EXPECT_EQ(document.project(), good);
   document.beginGesture("Drag");
-  EXPECT_THROW(document.updateGesture([](Project& p) { p.functions[0].resolution[0] = 1; }), ModelError);
+  Index3 flat = document.project().functions[0].resolution;
+  flat[0] = 1;
+  EXPECT_THROW(document.updateGesture(SetFunctionResolution{FunctionRef(0), flat}), ModelError);
   EXPECT_EQ(document.project(), good);
   document.endGesture();
 }
@@ -74,5 +79,5 @@ TEST(Validation, DocumentChecksAProjectFromOutsideInFull) {
   Project invalid = twoCalculators();
   std::get<CalculatorOp>(invalid.functions[1].ops[0].params).z = "z +";
   Document document(invalid);
-  EXPECT_THROW(document.edit("Turn", [](Project& p) { p.functions[0].weight = 2.0; }), ModelError);
+  EXPECT_THROW(document.apply(SetFunctionWeight{FunctionRef(0), 2.0}), ModelError);
 }
