@@ -18,14 +18,7 @@ using gridifs::SetParameter;
 
 /// A preview that started from `document` at 320×240 on 2 threads.
 PreviewInputs startedFrom(const Document& document) {
-  PreviewInputs last;
-  last.revisions = document.revisions();
-  last.width = 320;
-  last.height = 240;
-  last.threads = 2;
-  last.started = true;
-  last.haveIfs = true;
-  return last;
+  return PreviewInputs{document.revisions(), 320, 240, 2, /*started=*/true, /*haveIfs=*/true};
 }
 
 PreviewDecision afterEdit(const std::string& path, double value) {

@@ -35,7 +35,8 @@ std::string PreviewRenderer::useDevice(const std::string& device) {
 void PreviewRenderer::publish(const Document& document, int width, int height, int threads) {
   width = std::max(width, kMinPreviewSide);
   height = std::max(height, kMinPreviewSide);
-  if (document.revision() == revision_ && width == width_ && height == height_ && threads == threads_) return;
+  if (document.revision() == revision_ && width == last_.width && height == last_.height && threads == last_.threads)
+    return;
   revision_ = document.revision();
   const Project& project = document.project();
   // What the edit asks for is core's decision (job/preview_plan.h).
@@ -49,9 +50,7 @@ void PreviewRenderer::publish(const Document& document, int width, int height, i
     }
   }
   last_.revisions = document.revisions();
-  width_ = width;
-  height_ = height;
-  threads_ = threads;
+  // Without a restart the size and threads are the ones started with (else decidePreview restarts).
   if (!decision.restart) return;
   last_.width = width;
   last_.height = height;
