@@ -43,6 +43,7 @@ namespace gridifs::kernel {
 
 typedef float v4f __attribute__((vector_size(16)));
 typedef float v8f __attribute__((vector_size(32)));
+typedef float v16f __attribute__((vector_size(64)));
 typedef std::int32_t v4i __attribute__((vector_size(16)));
 
 /// Flushes denormal floats to zero (FTZ) and reads denormal inputs as zero (DAZ) on the calling
@@ -728,6 +729,110 @@ inline HotCamera makeHotCamera(const OrbitCamera& camera) {
   r3 = __builtin_shufflevector(out[3][0], out[3][1], 0, 1, 2, 3, 4, 5, 6, 7);
 }
 
+/// What the plotters project eight samples at a time with: a HotCamera's numbers per lane (pixel
+/// rows, the eye's pixels, the panoramic constants), built once per chunk. Lane k takes eye k mod 2.
+/// A panoramic camera's per-lane constants at the width V: eight lanes, or sixteen as two
+/// groups of eight (lane k still of eye k mod 2).
+template <class V>
+struct PanoramicLanes {
+  V centreX, centreY, pixelsPerRadian, halfFov, twicePixelsPerRadian, halfAngleTanSquared;
+  V radiusSquared, radiusTimesSign, up[3], turn[9];
+};
+struct ProjectionLanes {
+  v8f rows[4][4];      // rows[r][c] per lane: the lane's eye's row r, coefficient c
+  v8f x0, x1, y0, y1;  // per lane: the eye's pixels
+  v8f nearPlane;
+  std::uint32_t stride;
+  HotCamera::Kind kind;
+  bool stereo;
+  bool hemisphere;  // a fisheye of at most 180°
+  // Panoramic: the centre and scale; for a hemisphere 2·pixelsPerRadian and tan²(halfFov/2);
+  // for omni-directional stereo the eyes' circle, the world's up and the convergence turn.
+  PanoramicLanes<v8f> lanes;
+};
+inline ProjectionLanes projectionLanes(const HotCamera& cam) {
+  ProjectionLanes p;
+  // Lane k takes eye k mod 2 (by reference: a lambda returning an eight-lane vector would cross
+  // the ABI that differs without AVX).
+  auto lanes = [](v8f& out, float left, float right) {
+    for (int k = 0; k < 8; ++k) out[k] = (k & 1) ? right : left;
+  };
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) lanes(p.rows[r][c], cam.rows[0][r][c], cam.rows[1][r][c]);
+  lanes(p.x0, cam.bounds[0][0], cam.bounds[1][0]);
+  lanes(p.x1, cam.bounds[0][1], cam.bounds[1][1]);
+  lanes(p.y0, cam.bounds[0][2], cam.bounds[1][2]);
+  lanes(p.y1, cam.bounds[0][3], cam.bounds[1][3]);
+  p.nearPlane = v8f{} + cam.nearPlane;
+  p.stride = cam.stride;
+  p.kind = cam.kind;
+  p.stereo = cam.stereo;
+  lanes(p.lanes.centreX, cam.centre[0][0], cam.centre[1][0]);
+  lanes(p.lanes.centreY, cam.centre[0][1], cam.centre[1][1]);
+  p.lanes.pixelsPerRadian = v8f{} + cam.pixelsPerRadian;
+  p.lanes.halfFov = v8f{} + cam.halfFov;
+  p.hemisphere = cam.kind == HotCamera::Fisheye && cam.halfFov <= float(M_PI / 2);
+  const float halfAngleTan = std::tan(0.5f * cam.halfFov);
+  p.lanes.twicePixelsPerRadian = v8f{} + 2.0f * cam.pixelsPerRadian;
+  p.lanes.halfAngleTanSquared = v8f{} + halfAngleTan * halfAngleTan;
+  p.lanes.radiusSquared = v8f{} + cam.radius * cam.radius;
+  lanes(p.lanes.radiusTimesSign, cam.radius * cam.sign[0], cam.radius * cam.sign[1]);
+  for (int d = 0; d < 3; ++d) p.lanes.up[d] = v8f{} + cam.up[d];
+  for (int k = 0; k < 9; ++k) lanes(p.lanes.turn[k], cam.turn[0][k], cam.turn[1][k]);
+  return p;
+}
+
+// The panoramic projections' math (render/panoramic_lanes.inc), compiled for eight lanes
+// everywhere (with the kernels' AVX2 and baseline clones) and for AVX-512's sixteen where GCC
+// builds the kernels' clones. Sixteen lanes carry two groups of eight in every instruction, so
+// the long dependent chain of one group (square roots, a division, the arctangents'
+// polynomials) overlaps the other's where eight lanes left the CPU waiting: equirectangular
+// 0.80 → 0.94 of perspective's samples per second (docs/CAMERAS.md). Both widths do the same
+// float operations per lane, so the pictures are the same bits on every CPU.
+#define GRIDIFS_LANES_FUNCTION GRIDIFS_KERNEL_CLONES
+namespace eight_lanes {
+using Lanes = v8f;
+[[gnu::always_inline]] inline void widen(const v8f& x, Lanes& out) { out = x; }
+/// Eight points as x, y and z lanes.
+[[gnu::always_inline]] inline void loadLanes(const v4f* points, Lanes& x, Lanes& y, Lanes& z) {
+  v8f w;
+  transposeEight(points, x, y, z, w);
+}
+#include "render/panoramic_lanes.inc"
+}  // namespace eight_lanes
+#undef GRIDIFS_LANES_FUNCTION
+
+// A region whose target is AVX-512, not a template instantiated for sixteen lanes: a template's
+// body is compiled for the default target first, where a sixteen-lane comparison used as a
+// condition is lowered lane by lane, and it stays so once inlined.
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__) && !defined(GRIDIFS_NO_KERNEL_CLONES)
+#define GRIDIFS_SIXTEEN_LANES 1
+#pragma GCC push_options
+#pragma GCC target("arch=x86-64-v4")
+#define GRIDIFS_LANES_FUNCTION [[gnu::noinline]]
+namespace sixteen_lanes {
+using Lanes = v16f;
+/// Eight lanes' constants for two groups of eight (lane k still of eye k mod 2).
+[[gnu::always_inline]] inline void widen(const v8f& x, Lanes& out) {
+  out = __builtin_shufflevector(x, x, 0, 1, 2, 3, 4, 5, 6, 7, 0, 1, 2, 3, 4, 5, 6, 7);
+}
+/// Sixteen points as x, y and z lanes: two groups of eight side by side.
+[[gnu::always_inline]] inline void loadLanes(const v4f* points, Lanes& x, Lanes& y, Lanes& z) {
+  v8f xa, ya, za, wa, xb, yb, zb, wb;
+  transposeEight(points, xa, ya, za, wa);
+  transposeEight(points + 8, xb, yb, zb, wb);
+  x = __builtin_shufflevector(xa, xb, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+  y = __builtin_shufflevector(ya, yb, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+  z = __builtin_shufflevector(za, zb, 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15);
+}
+#include "render/panoramic_lanes.inc"
+}  // namespace sixteen_lanes
+#undef GRIDIFS_LANES_FUNCTION
+#pragma GCC pop_options
+#else
+#define GRIDIFS_SIXTEEN_LANES 0
+#endif
+
 /// The z-buffer plotter (Gröller & Wegenkittl 1994, §3.1). Keys are (depth bits << 32 | packed colour): depth is
 /// positive, so unsigned order is depth order and equal depths fall back to the colour, which makes
 /// the per-pixel minimum independent of sample and worker order. Buffer accesses go through
@@ -881,167 +986,11 @@ struct ZBufferPlot {
     stagedNext = kChunk;
   }
 
-  /// Eight samples projected: pixel index (0 outside), depth and whether they land (Gröller &
+  /// Eight samples of a flat camera projected: pixel index (0 outside), depth and whether they land (Gröller &
   /// Wegenkittl 1994, §3.1: the camera's pixel rows), the same float operations as one sample at
   /// a time. NaN points fall outside.
-  struct Projected {
-    v8f rows[4][4];      // rows[r][c] per lane: the lane's eye's row r, coefficient c
-    v8f x0, x1, y0, y1;  // per lane: the eye's pixels
-    v8f nearPlane;
-    std::uint32_t stride;
-    HotCamera::Kind kind;
-    bool stereo;
-    v8f centreX, centreY, pixelsPerRadian, halfFov;      // panoramic
-    bool hemisphere;                                     // a fisheye of at most 180°
-    v8f twicePixelsPerRadian, halfAngleTanSquared;       // hemisphere: 2·pixelsPerRadian, tan²(halfFov/2)
-    v8f radiusSquared, radiusTimesSign, up[3], turn[9];  // omni-directional stereo
-  };
-  Projected projection() const {
-    Projected p;
-    // Lane k takes eye k mod 2 (by reference: a lambda returning an eight-lane vector would cross
-    // the ABI that differs without AVX).
-    auto lanes = [](v8f& out, float left, float right) {
-      for (int k = 0; k < 8; ++k) out[k] = (k & 1) ? right : left;
-    };
-    for (int r = 0; r < 4; ++r)
-      for (int c = 0; c < 4; ++c) lanes(p.rows[r][c], cam.rows[0][r][c], cam.rows[1][r][c]);
-    lanes(p.x0, cam.bounds[0][0], cam.bounds[1][0]);
-    lanes(p.x1, cam.bounds[0][1], cam.bounds[1][1]);
-    lanes(p.y0, cam.bounds[0][2], cam.bounds[1][2]);
-    lanes(p.y1, cam.bounds[0][3], cam.bounds[1][3]);
-    p.nearPlane = v8f{} + cam.nearPlane;
-    p.stride = cam.stride;
-    p.kind = cam.kind;
-    p.stereo = cam.stereo;
-    lanes(p.centreX, cam.centre[0][0], cam.centre[1][0]);
-    lanes(p.centreY, cam.centre[0][1], cam.centre[1][1]);
-    p.pixelsPerRadian = v8f{} + cam.pixelsPerRadian;
-    p.halfFov = v8f{} + cam.halfFov;
-    p.hemisphere = cam.kind == HotCamera::Fisheye && cam.halfFov <= float(M_PI / 2);
-    const float halfAngleTan = std::tan(0.5f * cam.halfFov);
-    p.twicePixelsPerRadian = v8f{} + 2.0f * cam.pixelsPerRadian;
-    p.halfAngleTanSquared = v8f{} + halfAngleTan * halfAngleTan;
-    p.radiusSquared = v8f{} + cam.radius * cam.radius;
-    lanes(p.radiusTimesSign, cam.radius * cam.sign[0], cam.radius * cam.sign[1]);
-    for (int d = 0; d < 3; ++d) p.up[d] = v8f{} + cam.up[d];
-    for (int k = 0; k < 9; ++k) lanes(p.turn[k], cam.turn[0][k], cam.turn[1][k]);
-    return p;
-  }
-  // Eight lanes as two halves of four, results through references: an eight-lane vector passed
-  // or returned by value would cross the ABI that differs without AVX.
-  [[gnu::always_inline]] static void sqrtEight(const v8f& x, v8f& out) {
-    const v4f lo = lane_math::sqrt(__builtin_shufflevector(x, x, 0, 1, 2, 3));
-    const v4f hi = lane_math::sqrt(__builtin_shufflevector(x, x, 4, 5, 6, 7));
-    out = __builtin_shufflevector(lo, hi, 0, 1, 2, 3, 4, 5, 6, 7);
-  }
-  /// atan2(y, x) of eight lanes at once: model/lane_math.h's octant folding, then a shorter
-  /// polynomial (1.1e-7 radians in all), in two steps so that two of them share one division (a
-  /// division of eight floats costs as much as the whole series): atan2Reduce gives the octant
-  /// and the ratio's numerator and denominator, atan2Finish the angle from the ratio.
-  struct Atan2Parts {
-    v8f numerator, denominator;
-    v8f offset;                    // π/4 where the ratio was folded, else 0
-    v8f yMajor, xNegative, ySign;  // lane masks (all bits set) and y's sign bit
-  };
-  [[gnu::always_inline]] static void atan2Reduce(const v8f& y, const v8f& x, Atan2Parts& parts) {
-    typedef std::int32_t v8i __attribute__((vector_size(32)));
-    constexpr float kPi = 3.14159265358979323846f;
-    const v8f ax = v8f(v8i(x) & 0x7FFFFFFF), ay = v8f(v8i(y) & 0x7FFFFFFF);
-    const v8i yMajor = ay > ax;
-    const v8f mn = yMajor ? ax : ay, mx = yMajor ? ay : ax;
-    const v8i fold = mn > 0.414213562f * mx;
-    parts.numerator = mx > 0.0f ? (fold ? mn - mx : mn) : v8f{};  // atan2(0, 0) = ±0 or ±π, by the signs
-    parts.denominator = mx > 0.0f ? (fold ? mn + mx : mx) : v8f{} + 1.0f;
-    parts.offset = fold ? v8f{} + kPi / 4 : v8f{};
-    parts.yMajor = v8f(yMajor);
-    parts.xNegative = v8f(v8i(x) >> 31);
-    parts.ySign = v8f(v8i(y) & std::int32_t(0x80000000u));
-  }
-  [[gnu::always_inline]] static void atan2Finish(const v8f& u, const Atan2Parts& parts, v8f& out) {
-    typedef std::int32_t v8i __attribute__((vector_size(32)));
-    constexpr float kPi = 3.14159265358979323846f;
-    // On |u| ≤ tan(π/8), atan u ≈ u·(c0 + c1·u² + c2·u⁴ + c3·u⁶) within 1.1e-7 radians (a
-    // minimax fit): a thousandth of a pixel even for a 16384-pixel-wide panorama, and two
-    // multiply-adds fewer than model/lane_math.h's series.
-    const v8f u2 = u * u, s2 = u2 * u2;
-    const v8f p = (0.99999761f + u2 * -0.33314171f) + s2 * (0.19580993f + u2 * -0.10779784f);
-    v8f angle = u * p + parts.offset;
-    angle = v8i(parts.yMajor) != 0 ? kPi / 2 - angle : angle;
-    angle = v8i(parts.xNegative) != 0 ? kPi - angle : angle;
-    out = v8f((v8i(angle) & 0x7FFFFFFF) | v8i(parts.ySign));
-  }
-  /// A panoramic camera's pixel position, depth and drawability of eight view-space points
-  /// (render/camera.h: OrbitCamera::project's formulas in float). vx, vy, vz are overwritten.
-  template <class V8i>
-  [[gnu::always_inline]] static void projectPanoramic(const Projected& pr, v8f& vx, v8f& vy, v8f& vz, v8f& ix, v8f& iy,
-                                                      v8f& depth, V8i& inside) {
-    V8i drawable = V8i{} - 1;
-    if (pr.stereo) {
-      // The eye on the circle whose ray touches it (OrbitCamera::panoramicEyeView).
-      const v8f along = vx * pr.up[0] + vy * pr.up[1] + vz * pr.up[2];
-      const v8f hx = vx - along * pr.up[0], hy = vy - along * pr.up[1], hz = vz - along * pr.up[2];
-      const v8f d2 = hx * hx + hy * hy + hz * hz;
-      drawable = d2 > pr.radiusSquared;
-      v8f t;
-      sqrtEight(drawable ? d2 - pr.radiusSquared : v8f{}, t);
-      const v8f inverse = 1.0f / (drawable ? d2 : v8f{} + 1.0f);
-      const v8f a = pr.radiusSquared * inverse, b = pr.radiusTimesSign * t * inverse;
-      const v8f crossX = hy * pr.up[2] - hz * pr.up[1], crossY = hz * pr.up[0] - hx * pr.up[2],
-                crossZ = hx * pr.up[1] - hy * pr.up[0];
-      const v8f wx = vx - (a * hx + b * crossX), wy = vy - (a * hy + b * crossY), wz = vz - (a * hz + b * crossZ);
-      vx = pr.turn[0] * wx + pr.turn[1] * wy + pr.turn[2] * wz;
-      vy = pr.turn[3] * wx + pr.turn[4] * wy + pr.turn[5] * wz;
-      vz = pr.turn[6] * wx + pr.turn[7] * wy + pr.turn[8] * wz;
-    }
-    sqrtEight(vx * vx + vy * vy + vz * vz, depth);
-    if (pr.hemisphere) {
-      // Within a hemisphere θ ≤ 90°, so t = tan(θ/2) = h/(d − z) ≤ 1 (d the distance, h = √(x² + y²))
-      // and θ = 2·atan t = 2·t·P(t²), P(u) = atan(√u)/√u: the radius along (x, y)/h is
-      // θ·pixelsPerRadian/h = 2·pixelsPerRadian·P(t²)/(d − z), with t² = h²/(d − z)². No
-      // arctangent's octants and no second square root; θ ≤ halfFov is t² ≤ tan²(halfFov/2).
-      // P is a minimax fit on [0, 1] within 1.4e-8; in float, θ comes within 3e-7 radians (a
-      // thousandth of a pixel on an 8192-pixel dome master).
-      const V8i ahead = depth - vz > 0.0f;  // d − z = 0 only straight behind the eye
-      const v8f inverse = 1.0f / (ahead ? depth - vz : v8f{} + 1.0f);
-      const v8f h2 = vx * vx + vy * vy;
-      const v8f u = h2 * (inverse * inverse), u2 = u * u, u4 = u2 * u2;
-      const v8f low = (1.0f + u * -3.333309293e-01f) + u2 * (1.999304891e-01f + u * -1.420710236e-01f);
-      const v8f high = (1.065457687e-01f + u * -7.533492893e-02f) + u2 * (4.303749651e-02f + u * -1.628200337e-02f);
-      const v8f series = low + u4 * (high + u4 * 2.903333167e-03f);
-      const v8f k = pr.twicePixelsPerRadian * series * inverse;
-      ix = pr.centreX + k * vx;
-      iy = pr.centreY - k * vy;
-      drawable &= ahead & (u <= pr.halfAngleTanSquared);
-    } else if (pr.kind == HotCamera::Fisheye) {
-      // θ = atan2(h, −z), and the radius θ·pixelsPerRadian along (x, y)/h: one division for both.
-      v8f h, theta;
-      sqrtEight(vx * vx + vy * vy, h);
-      Atan2Parts parts;
-      atan2Reduce(h, -vz, parts);
-      const v8f safeH = h > 0.0f ? h : v8f{} + 1.0f;
-      const v8f inverse = 1.0f / (parts.denominator * safeH);
-      atan2Finish(parts.numerator * safeH * inverse, parts, theta);
-      const v8f k = h > 0.0f ? theta * pr.pixelsPerRadian * (parts.denominator * inverse) : v8f{};
-      ix = pr.centreX + k * vx;
-      iy = pr.centreY - k * vy;
-      drawable &= theta <= pr.halfFov;
-    } else {
-      // Longitude atan2(x, −z) and latitude atan2(y, √(x² + z²)): one division for both ratios.
-      v8f longitude, latitude, horizontal;
-      sqrtEight(vx * vx + vz * vz, horizontal);
-      Atan2Parts across, up;
-      atan2Reduce(vx, -vz, across);
-      atan2Reduce(vy, horizontal, up);
-      const v8f inverse = 1.0f / (across.denominator * up.denominator);
-      atan2Finish(across.numerator * up.denominator * inverse, across, longitude);
-      atan2Finish(up.numerator * across.denominator * inverse, up, latitude);
-      ix = pr.centreX + longitude * pr.pixelsPerRadian;
-      iy = pr.centreY - latitude * pr.pixelsPerRadian;
-    }
-    inside = drawable;
-  }
   template <class V8u, class V8i>
-  [[gnu::always_inline]] static void projectEight(const Projected& pr, const v4f* eight, V8u& pixel, v8f& depth,
+  [[gnu::always_inline]] static void projectEight(const ProjectionLanes& pr, const v4f* eight, V8u& pixel, v8f& depth,
                                                   V8i& inside) {
     v8f x, y, z, unused;
     transposeEight(eight, x, y, z, unused);
@@ -1049,22 +998,43 @@ struct ZBufferPlot {
     v8f px = pr.rows[0][0] * x + pr.rows[0][1] * y + pr.rows[0][2] * z + pr.rows[0][3];
     v8f py = pr.rows[1][0] * x + pr.rows[1][1] * y + pr.rows[1][2] * z + pr.rows[1][3];
     v8f pw = pr.rows[2][0] * x + pr.rows[2][1] * y + pr.rows[2][2] * z + pr.rows[2][3];
-    v8f ix, iy;
-    V8i drawable = V8i{} - 1;
-    if (pr.kind == HotCamera::Flat) [[likely]] {
-      depth = pr.rows[3][0] * x + pr.rows[3][1] * y + pr.rows[3][2] * z + pr.rows[3][3];
-      const v8f reciprocal = 1.0f / pw;
-      ix = px * reciprocal;
-      iy = py * reciprocal;
-    } else {
-      projectPanoramic(pr, px, py, pw, ix, iy, depth, drawable);
-    }
+    depth = pr.rows[3][0] * x + pr.rows[3][1] * y + pr.rows[3][2] * z + pr.rows[3][3];
+    const v8f reciprocal = 1.0f / pw;
+    const v8f ix = px * reciprocal, iy = py * reciprocal;
     // NaN fails every comparison, so it falls outside.
-    inside = drawable & (depth > pr.nearPlane) & (ix >= pr.x0) & (ix < pr.x1) & (iy >= pr.y0) & (iy < pr.y1);
+    inside = (depth > pr.nearPlane) & (ix >= pr.x0) & (ix < pr.x1) & (iy >= pr.y0) & (iy < pr.y1);
     const V8u column = V8u(__builtin_convertvector(inside ? ix : v8f{}, V8i));
     const V8u row = V8u(__builtin_convertvector(inside ? iy : v8f{}, V8i));
     pixel = row * pr.stride + column;
   }
+  /// The collected samples rounded up to whole groups: of eight, or sixteen for a panoramic
+  /// camera, which may project sixteen at once.
+  int paddedCount() const {
+    const int group = cam.kind == HotCamera::Flat ? kGroup : 2 * kGroup;
+    return (count + group - 1) / group * group;
+  }
+  /// A chunk's groups of a panoramic camera, projected before any is staged (see stage()).
+  template <class V8u, class V8i>
+  struct PanoramicGroups {
+    V8u pixel[kChunk / kGroup];
+    v8f depth[kChunk / kGroup];
+    V8i inside[kChunk / kGroup];
+    void project(const ProjectionLanes& pr, const v4f* points, int n) {
+      auto* const pixels = reinterpret_cast<std::uint32_t*>(pixel);
+      auto* const depths = reinterpret_cast<float*>(depth);
+      auto* const insides = reinterpret_cast<std::int32_t*>(inside);
+#if GRIDIFS_SIXTEEN_LANES
+      static const bool sixteenLanes = __builtin_cpu_supports("x86-64-v4");
+      if (sixteenLanes) return sixteen_lanes::projectChunk(pr, points, n, pixels, depths, insides);
+#endif
+      eight_lanes::projectChunk(pr, points, n, pixels, depths, insides);
+    }
+    [[gnu::always_inline]] void take(int i, V8u& p, v8f& d, V8i& in) const {
+      p = pixel[i / kGroup];
+      d = depth[i / kGroup];
+      in = inside[i / kGroup];
+    }
+  };
   /// The eight samples' keys: depth bits << 32 | packed colour (packColor, eight at a time).
   template <class V8u>
   [[gnu::always_inline]] static void keysOfEight(const v4f* colours, const v8f& depth, V8u& high, V8u& low) {
@@ -1085,22 +1055,32 @@ struct ZBufferPlot {
     typedef std::int32_t v8i __attribute__((vector_size(32)));
     typedef std::uint32_t v8u __attribute__((vector_size(32)));
     // A partial chunk is padded with NaN points, which fall outside the image.
-    const int n = (count + kGroup - 1) / kGroup * kGroup;
+    const int n = paddedCount();
     for (int i = count; i < n; ++i) {
       points[i] = v4f{} + __builtin_nanf("");
       colors[i] = 0;
     }
-    const Projected pr = projection();
+    const ProjectionLanes pr = projectionLanes(cam);
     typedef std::uint64_t v4u64 __attribute__((vector_size(32)));
     typedef std::int64_t v4i64 __attribute__((vector_size(32)));
     const v4u64 cellBase = v4u64{} + std::uint64_t(reinterpret_cast<std::uintptr_t>(cells));
     const v4u64 scratchCell = v4u64{} + std::uint64_t(reinterpret_cast<std::uintptr_t>(&scratch));
     v8i landed{};
+    // A panoramic camera's groups are projected first, all of them, and staged after: its
+    // projection is a long chain of dependent operations (a square root, a division, the
+    // arctangents' polynomials), and with nothing but projections between them the CPU overlaps
+    // the chains of consecutive groups (equirectangular 0.69 → 0.82 of perspective's samples per
+    // second). A flat camera's short projection gains nothing from it and stays in one loop.
+    PanoramicGroups<v8u, v8i> panoramic;
+    if (pr.kind != HotCamera::Flat) panoramic.project(pr, points, n);
     for (int i = 0; i < n; i += kGroup) {
       v8u pixel;
       v8f depth;
       v8i inside;
-      projectEight(pr, points + i, pixel, depth, inside);
+      if (pr.kind == HotCamera::Flat)
+        projectEight(pr, points + i, pixel, depth, inside);
+      else
+        panoramic.take(i, pixel, depth, inside);
       // Every sample keeps its place, so there is no branch per sample (which mispredicted
       // wherever a fifth of the samples fall outside, as spherical flames' do) and no list to
       // build: one outside, the NaN padding too, writes the scratch cell.
@@ -1142,7 +1122,7 @@ struct ZBufferPlot {
   [[gnu::noinline]] GRIDIFS_KERNEL_CLONES void drainColourSums() {
     typedef std::int32_t v8i __attribute__((vector_size(32)));
     typedef std::uint32_t v8u __attribute__((vector_size(32)));
-    const int n = (count + kGroup - 1) / kGroup * kGroup;
+    const int n = paddedCount();
     for (int i = count; i < n; ++i) {
       points[i] = v4f{} + __builtin_nanf("");
       colors[i] = v4f{};
@@ -1151,12 +1131,17 @@ struct ZBufferPlot {
     alignas(32) std::uint64_t keysOf[kChunk];
     std::uint16_t landed[kChunk];
     int landedCount = 0;
-    const Projected pr = projection();
+    const ProjectionLanes pr = projectionLanes(cam);
+    PanoramicGroups<v8u, v8i> panoramic;  // as in stage()
+    if (pr.kind != HotCamera::Flat) panoramic.project(pr, points, n);
     for (int i = 0; i < n; i += kGroup) {
       v8u pixel;
       v8f depth;
       v8i inside;
-      projectEight(pr, points + i, pixel, depth, inside);
+      if (pr.kind == HotCamera::Flat)
+        projectEight(pr, points + i, pixel, depth, inside);
+      else
+        panoramic.take(i, pixel, depth, inside);
       std::memcpy(pixels + i, &pixel, sizeof pixel);
       if (keys) {
         v8u high, low;

@@ -190,6 +190,51 @@ TEST(CameraProjections, TheRenderersFloatProjectionFollowsTheCamera) {
   }
 }
 
+TEST(CameraProjections, SixteenLanesProjectExactlyAsEightDo) {
+  // Where the CPU has AVX-512 the plotters project a panoramic camera's samples sixteen at a
+  // time; every other CPU eight at a time. Both must give the same bits: the same pixel, the
+  // same depth, the same verdict, for every kind of point (NaN, infinite, the eye itself,
+  // straight behind it, far away).
+#if GRIDIFS_SIXTEEN_LANES
+  if (!__builtin_cpu_supports("x86-64-v4")) GTEST_SKIP() << "this CPU has no AVX-512 (x86-64-v4)";
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<float> unit(-1.0f, 1.0f);
+  constexpr int kCount = 256;
+  for (const Camera& c : cameras()) {
+    if (!c.panoramic()) continue;
+    const OrbitCamera camera(c, 320, 240);
+    const kernel::ProjectionLanes lanes = kernel::projectionLanes(kernel::makeHotCamera(camera));
+    std::vector<kernel::v4f> points(kCount);
+    for (kernel::v4f& p : points) p = kernel::v4f{unit(rng) * 2.5f, unit(rng) * 2.5f, unit(rng) * 2.5f, 0.0f};
+    const glm::dvec3 eye = camera.eye(), forward = glm::normalize(glm::dvec3(c.target.x, c.target.y, c.target.z) - eye);
+    const glm::dvec3 behind = eye - 2.0 * forward;
+    points[3] = kernel::v4f{} + NAN;
+    points[7] = kernel::v4f{INFINITY, 0.0f, 0.0f, 0.0f};
+    points[11] = kernel::v4f{float(eye.x), float(eye.y), float(eye.z), 0.0f};
+    points[12] = kernel::v4f{float(behind.x), float(behind.y), float(behind.z), 0.0f};
+    points[13] = kernel::v4f{1e30f, -1e30f, 1e30f, 0.0f};
+    std::vector<std::uint32_t> pixel8(kCount), pixel16(kCount);
+    std::vector<float> depth8(kCount), depth16(kCount);
+    std::vector<std::int32_t> inside8(kCount), inside16(kCount);
+    kernel::eight_lanes::projectChunk(lanes, points.data(), kCount, pixel8.data(), depth8.data(), inside8.data());
+    kernel::sixteen_lanes::projectChunk(lanes, points.data(), kCount, pixel16.data(), depth16.data(), inside16.data());
+    int landed = 0;
+    for (int i = 0; i < kCount; ++i) {
+      ASSERT_EQ(inside8[i], inside16[i]) << projectionName(c.projection) << " stereo " << bool(c.stereo) << " " << i;
+      ASSERT_EQ(pixel8[i], pixel16[i]) << projectionName(c.projection) << " " << i;
+      ASSERT_EQ(std::bit_cast<std::uint32_t>(depth8[i]), std::bit_cast<std::uint32_t>(depth16[i]))
+          << projectionName(c.projection) << " " << i;
+      landed += inside8[i] != 0;
+    }
+    EXPECT_GT(landed, 60) << projectionName(c.projection) << " " << c.fov;
+    EXPECT_EQ(inside8[3], 0);
+    EXPECT_EQ(inside8[7], 0);
+  }
+#else
+  GTEST_SKIP() << "built without the sixteen-lane projections (GCC's kernel clones only)";
+#endif
+}
+
 TEST(CameraProjections, StereoEyesSeeParallaxThatVanishesAtTheConvergenceDistance) {
   for (CameraProjection projection :
        {CameraProjection::Perspective, CameraProjection::Fisheye, CameraProjection::Equirectangular}) {
