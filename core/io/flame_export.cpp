@@ -59,23 +59,104 @@ FlameAffine toFlame(const FlameAffine& g, const FlameFrame& frame) {
   return f;
 }
 
+/// Whether a variation's z output is a constant or a function of x and y (not of z), whose sign
+/// turns with X's z.
+bool flipsWithZ(const std::string& name) { return name == "ztranslate" || name == "zcone"; }
+
 std::string coefsText(const FlameAffine& f) {
   // The file's order is a d b e c f.
   return num(f.a) + " " + num(f.d) + " " + num(f.b) + " " + num(f.e) + " " + num(f.c) + " " + num(f.f);
 }
 
 /// A function's variations and their parameters as xform attributes (linear 1 without any).
-std::string variationAttributes(const Function& fn, const std::string& label, std::vector<std::string>& warnings) {
+std::string variationAttributes(const Function& fn, const std::string& label, std::vector<std::string>& warnings,
+                                bool leavesPlane = false) {
   std::string text;
   for (const auto& [name, weight] : fn.variations)
-    text += (text.empty() ? "" : " ") + name + "=\"" + num(weight) + "\"";
+    text += (text.empty() ? "" : " ") + name + "=\"" + num(leavesPlane && flipsWithZ(name) ? -weight : weight) + "\"";
   if (text.empty()) text = "linear=\"1\"";
   for (const auto& [attribute, value] : fn.variation_params) text += " " + attribute + "=\"" + num(value) + "\"";
-  if (fn.post) {
+  if (fn.post && !leavesPlane) {
     const auto m = fn.post->affine();
     if (m[0][2] != 0.0 || m[1][2] != 0.0 || m[2][0] != 0.0 || m[2][1] != 0.0 || m[2][3] != 0.0)
       warnings.push_back(label + "'s post map moves points out of the plane z = 0; its plane part is exported");
   }
+  return text;
+}
+
+/// A 3D affine map y = m·x + t.
+struct Affine3 {
+  double m[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+  double t[3] = {0, 0, 0};
+};
+
+/// From X = (x, y, −z) to the flame's space: S·A·S and S·t (S the flip of z).
+Affine3 flippedZ(const Affine3& a) {
+  const double sign[3] = {1.0, 1.0, -1.0};
+  Affine3 f;
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) f.m[r][c] = sign[r] * sign[c] * a.m[r][c];
+    f.t[r] = sign[r] * a.t[r];
+  }
+  return f;
+}
+
+/// A function's grid as a 3D affine map, when it is one (nodes within 1e-9 of it).
+std::optional<Affine3> gridAffine3(const Function& fn, const std::string& path, double time) {
+  const auto grid = evaluateFunctionAt(fn, path, time);
+  Affine3 a;
+  const Vec3 origin = grid->evaluate(Vec3(0.0));
+  for (int c = 0; c < 3; ++c) {
+    Vec3 e(0.0);
+    e[c] = 1.0;
+    const Vec3 image = grid->evaluate(e) - origin;
+    for (int r = 0; r < 3; ++r) a.m[r][c] = image[r];
+  }
+  for (int r = 0; r < 3; ++r) a.t[r] = origin[r];
+  for (int k = 0; k < 8; ++k) {
+    const Vec3 corner((k & 1) ? 1.0 : -1.0, (k & 2) ? 1.0 : -1.0, (k & 4) ? 1.0 : -1.0);
+    const Vec3 got = grid->evaluate(corner);
+    for (int r = 0; r < 3; ++r) {
+      const double want = a.m[r][0] * corner.x + a.m[r][1] * corner.y + a.m[r][2] * corner.z + a.t[r];
+      if (std::fabs(got[r] - want) > 1e-9 * (1.0 + std::fabs(want))) return std::nullopt;
+    }
+  }
+  return a;
+}
+
+/// A 3D affine map in JWildfire's form: the xy part, then yz (y and z mixed), then zx (x and z),
+/// the translations added last (io/flame_genome.h). With yz's and zx's first diagonal entries 1
+/// and yz's last 1, the other entries follow from the matrix; none when its xy block (the rows
+/// of x and y over x and y) is singular or the remaining pivot vanishes.
+struct JWildfireAffine {
+  FlameAffine xy, yz, zx;
+};
+std::optional<JWildfireAffine> jwildfireForm(const Affine3& a) {
+  const auto& L = a.m;
+  const double d = L[1][0], e = L[1][1], q = L[1][2], v = L[0][2], t = L[2][2];
+  const double det = L[0][1] * d - L[0][0] * e;
+  if (std::fabs(det) < 1e-12 || (d == 0.0 && e == 0.0)) return std::nullopt;
+  const double w = (L[2][1] * d - L[2][0] * e) / det;
+  const double k = std::fabs(d) >= std::fabs(e) ? (L[2][0] - w * L[0][0]) / d : (L[2][1] - w * L[0][1]) / e;
+  double r = 0.0;
+  if (k != 0.0) {
+    if (std::fabs(t - w * v) < 1e-12) return std::nullopt;
+    r = k / (t - w * v);
+  }
+  JWildfireAffine out;
+  out.xy = FlameAffine{L[0][0] - v * r * d, L[0][1] - v * r * e, a.t[0], d, e, a.t[1]};
+  out.yz = FlameAffine{1.0, q, 0.0, r, 1.0, a.t[2]};
+  out.zx = FlameAffine{1.0, v, 0.0, w, t, 0.0};
+  return out;
+}
+
+/// The attributes of a 3D map in JWildfire's form: `coefs` (or `post`) and the 3D parts that are
+/// not the identity. `prefix` is "" for the pre-affine map, "post" for the post map.
+std::string affine3Attributes(const JWildfireAffine& j, bool post) {
+  const FlameAffine identity;
+  std::string text = std::string(post ? "post" : "coefs") + "=\"" + coefsText(j.xy) + "\"";
+  if (!(j.yz == identity)) text += std::string(post ? " yzPost" : " yzCoefs") + "=\"" + coefsText(j.yz) + "\"";
+  if (!(j.zx == identity)) text += std::string(post ? " zxPost" : " zxCoefs") + "=\"" + coefsText(j.zx) + "\"";
   return text;
 }
 
@@ -132,6 +213,27 @@ FlameExport exportFlame(const Project& project, const std::filesystem::path& pro
     }
   }
   if (rotate == 0.0) rotate = 0.0;  // no "-0"
+  // A native project whose maps leave the plane z = 0 (imported from a 3D genome, or made so) is
+  // written in JWildfire's 3D form: each map's 3D parts, ztranslate's and zcone's signs turned
+  // back (X's z is the flame's −z), and preserve_z, under which the planar variations carry w·z
+  // as GridIFS's do.
+  bool leavesPlane = false;
+  if (native) {
+    auto leaves = [&](const Function& fn, const std::string& path) {
+      if (fn.muted) return false;
+      for (const auto& [name, weight] : fn.variations)
+        if (flipsWithZ(name) && weight != 0.0) return true;
+      if (fn.post) {
+        const auto m = fn.post->affine();
+        if (m[2][0] != 0.0 || m[2][1] != 0.0 || m[2][3] != 0.0 || m[0][2] != 0.0 || m[1][2] != 0.0) return true;
+      }
+      const auto a = gridAffine3(fn, path, project.time);
+      return a && (a->m[2][0] != 0.0 || a->m[2][1] != 0.0 || a->m[2][2] != 0.0 || a->t[2] != 0.0);
+    };
+    for (std::size_t i = 0; i < project.functions.size(); ++i)
+      leavesPlane |= leaves(project.functions[i], "functions[" + std::to_string(i) + "]");
+    if (project.final_function) leavesPlane |= leaves(*project.final_function, "final");
+  }
   const FlameSettings& fl = r.flame;
   std::ostringstream x;
   x << "<flame name=\"" << xmlEscape(name) << "\" version=\"GridIFS\" size=\"" << r.width << " " << r.height
@@ -150,6 +252,7 @@ FlameExport exportFlame(const Project& project, const std::filesystem::path& pro
     x << " cam_pitch=\"" << num(f.pitch) << "\" cam_yaw=\"" << num(f.yaw) << "\" cam_perspective=\""
       << num(f.perspective) << "\" cam_zpos=\"" << num(f.zpos) << "\"";
   }
+  if (leavesPlane) x << " preserve_z=\"1\"";
   // The lens blur keeps the plane through the target sharp: the flame camera's c_z = 0 plane when
   // it is written as a 3D camera, and the flat view's own plane (where a native genome lies).
   if (native && cam.lens_blur != 0.0) {
@@ -196,6 +299,41 @@ FlameExport exportFlame(const Project& project, const std::filesystem::path& pro
            coefsText(post) + "\" name=\"" + xmlEscape(fn.name) + "\"";
   };
   auto xformAttributes = [&](const Function& fn, const std::string& path, const std::string& label) {
+    if (leavesPlane) {
+      const auto grid3 = gridAffine3(fn, path, project.time);
+      if (grid3) {
+        Affine3 pre = flippedZ(*grid3), post;
+        if (fn.post) {
+          const auto m = fn.post->affine();
+          Affine3 inX;
+          for (int r = 0; r < 3; ++r) {
+            for (int c = 0; c < 3; ++c) inX.m[r][c] = m[std::size_t(r)][std::size_t(c)];
+            inX.t[r] = m[std::size_t(r)][3];
+          }
+          post = flippedZ(inX);
+        }
+        if (camera3D) {
+          const double mx = camera3D->moveX, my = camera3D->moveY;
+          for (int r = 0; r < 3; ++r) pre.t[r] -= pre.m[r][0] * mx + pre.m[r][1] * my;
+          post.t[0] += mx;
+          post.t[1] += my;
+        }
+        const auto jPre = jwildfireForm(pre), jPost = jwildfireForm(post);
+        if (jPre && jPost) {
+          const JWildfireAffine identity{FlameAffine{}, FlameAffine{}, FlameAffine{}};
+          const bool hasPost = !(jPost->xy == identity.xy && jPost->yz == identity.yz && jPost->zx == identity.zx);
+          return "color=\"" + num(fn.palette_index) + "\" color_speed=\"" + num(fn.color_speed) + "\" " +
+                 variationAttributes(fn, label, out.warnings, true) + " " + affine3Attributes(*jPre, false) +
+                 (hasPost ? " " + affine3Attributes(*jPost, true) : std::string()) + " name=\"" + xmlEscape(fn.name) +
+                 "\"";
+        }
+        out.warnings.push_back(label +
+                               "'s 3D map has no JWildfire form (its x and y rows are dependent); its plane "
+                               "part is exported");
+      } else {
+        out.warnings.push_back(label + "'s grid is not an affine map in 3D; its plane part is exported");
+      }
+    }
     const auto grid = evaluateFunctionAt(fn, path, project.time);
     double error = 0.0;
     const FlameAffine fit = fitAffine(*grid, error);

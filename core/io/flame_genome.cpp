@@ -290,10 +290,13 @@ FlamePoint applyAffine3(const FlameAffine& xy, const std::optional<FlameAffine>&
 
 }  // namespace
 
-static bool isGenomeZVariation(const std::string& name) {
+bool isGenomeZVariation(const std::string& name) {
   return name == "linear" || name == "linear3D" || name == "zscale" || name == "ztranslate" || name == "zcone" ||
          name == "flatten";
 }
+
+FlamePoint FlameXform::preAffine(FlamePoint p) const { return applyAffine3(coefs, yz, zx, p); }
+FlamePoint FlameXform::postAffine(FlamePoint p) const { return applyAffine3(post, postYz, postZx, p); }
 
 FlamePoint FlameXform::apply(FlamePoint p) const {
   const FlamePoint t = applyAffine3(coefs, yz, zx, p);

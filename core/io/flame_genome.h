@@ -40,6 +40,9 @@ struct FlameXform {
 
   /// The whole map: post(Σ_v w_v · V_v(pre(p))) (Draves & Reckase §3, §3.1).
   FlamePoint apply(FlamePoint p) const;
+  /// The pre-affine map with its 3D parts (identity in z without them), and the post map likewise.
+  FlamePoint preAffine(FlamePoint p) const;
+  FlamePoint postAffine(FlamePoint p) const;
   /// Whether the map is affine (only linear and the affine z variations, or no variation).
   bool isAffine() const;
   /// Whether any variation receives a point whose x or y depends on the input z (the 3D
@@ -49,6 +52,11 @@ struct FlameXform {
   /// Whether the xform has 3D parts (z variations or 3D affine parts).
   bool isThreeD() const;
 };
+
+/// Whether a genome's variation `name` writes z in the 3D extension's semantics (Apophysis 7X,
+/// JWildfire): linear, linear3D and the z variations. The others see the plane and carry z only
+/// under preserve_z.
+bool isGenomeZVariation(const std::string& name);
 
 struct FlameGenome {
   std::string name;

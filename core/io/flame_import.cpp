@@ -22,10 +22,26 @@ constexpr double kNodeClamp = 1e4;
 
 double clampCoordinate(double v) { return std::isfinite(v) ? std::clamp(v, -kNodeClamp, kNodeClamp) : kNodeClamp; }
 
-/// A 2D genome's xform as a function with native variations: a 2×2×2 grid whose corners are the
-/// pre-affine map's images (it extrapolates, so it is that map on the whole plane; z goes to the
-/// plane z = 0), the xform's variations and parameters by name, and its post map.
-Function nativeXform(const FlameXform& x, const std::string& name) {
+/// Whether some xform of the genome leaves the plane z = 0 (z variations, 3D affine parts).
+bool leavesThePlane(const FlameGenome& genome) {
+  for (const FlameXform& x : genome.xforms)
+    if (x.isThreeD()) return true;
+  return genome.finalXform && genome.finalXform->isThreeD();
+}
+
+/// A genome's point in X = (x, y, −z), the space of a natively imported genome (io/flame_camera.h),
+/// and back: the same flip.
+FlamePoint flipZ(FlamePoint p) { return {p.x, p.y, -p.z}; }
+
+/// An xform as a function with native variations: a 2×2×2 grid whose corners are the pre-affine
+/// map's images (it extrapolates, so it is that map everywhere), the xform's variations and
+/// parameters by name, and its post map. A planar genome's grid sends z to the plane z = 0. A
+/// genome that leaves the plane keeps its 3D affine parts, in X = (x, y, −z): each map becomes
+/// S∘f∘S (S the flip of z), which leaves the grid and post maps affine and turns the sign of the
+/// two variations whose z does not scale with the point's (ztranslate, zcone). Its planar
+/// variations see only x and y, as in the genome, and GridIFS's carry w·z: where the genome drops
+/// z (no preserve_z) a zscale of −Σ w over them takes it away again.
+Function nativeXform(const FlameXform& x, const std::string& name, bool leavesPlane) {
   Function fn;
   fn.name = name;
   fn.resolution = {2, 2, 2};
@@ -37,13 +53,40 @@ Function nativeXform(const FlameXform& x, const std::string& name) {
     for (int j = 0; j < 2; ++j)
       for (int i = 0; i < 2; ++i) {
         const Vec3 u(-1.0 + 2.0 * i, -1.0 + 2.0 * j, -1.0 + 2.0 * k);
-        const FlamePoint q = x.coefs.apply({u.x, u.y, 0.0});
-        nodes.moves.push_back({{i, j, k}, Vec3(q.x, q.y, 0.0) - u});
+        const FlamePoint q = leavesPlane ? flipZ(x.preAffine(flipZ({u.x, u.y, u.z}))) : x.coefs.apply({u.x, u.y, 0.0});
+        nodes.moves.push_back({{i, j, k}, Vec3(q.x, q.y, leavesPlane ? q.z : 0.0) - u});
       }
   fn.ops.push_back(Operation{nodes, Center{}, Selection{}, false});
-  for (const auto& [variation, weight] : x.variations) fn.variations[variation] += weight;
+  double planarWeight = 0.0;
+  for (const auto& [variation, weight] : x.variations) {
+    const bool flipsSign = leavesPlane && (variation == "ztranslate" || variation == "zcone");
+    fn.variations[variation] += flipsSign ? -weight : weight;
+    if (!isGenomeZVariation(variation)) planarWeight += weight;
+  }
+  if (leavesPlane && !x.preserveZ && planarWeight != 0.0) fn.variations["zscale"] -= planarWeight;
   for (const auto& [attribute, value] : x.params) fn.variation_params[attribute] = value;
-  if (!x.post.isIdentity()) {
+  if (leavesPlane) {
+    // The post map's matrix in X: S·M·S and S·t.
+    const FlamePoint t = flipZ(x.postAffine({}));
+    const double sign[3] = {1.0, 1.0, -1.0};
+    std::array<std::array<double, 4>, 3> m{};
+    bool identity = true;
+    for (int c = 0; c < 3; ++c) {
+      FlamePoint e{};
+      (c == 0 ? e.x : c == 1 ? e.y : e.z) = 1.0;
+      const FlamePoint image = x.postAffine(e), origin = x.postAffine({});
+      const double column[3] = {image.x - origin.x, image.y - origin.y, image.z - origin.z};
+      for (int r = 0; r < 3; ++r) {
+        m[std::size_t(r)][std::size_t(c)] = sign[r] * sign[c] * column[r];
+        identity &= m[std::size_t(r)][std::size_t(c)] == (r == c ? 1.0 : 0.0);
+      }
+    }
+    m[0][3] = t.x;
+    m[1][3] = t.y;
+    m[2][3] = t.z;
+    identity &= t.x == 0.0 && t.y == 0.0 && t.z == 0.0;
+    if (!identity) fn.post = PostTransform{{}, m};
+  } else if (!x.post.isIdentity()) {
     const FlameAffine& m = x.post;
     fn.post = PostTransform{
         {}, std::array<std::array<double, 4>, 3>{{{m.a, m.b, 0.0, m.c}, {m.d, m.e, 0.0, m.f}, {0.0, 0.0, 1.0, 0.0}}}};
@@ -325,8 +368,9 @@ void frameNatively(const FlameGenome& genome, Camera& cam, FlameSettings& flame)
   f.yaw = genome.camYaw;
   f.perspective = genome.camPerspective;
   f.zpos = genome.camZpos;
-  if (f.threeD()) {
-    // How far the attractor reaches from the camera's pivot, for an orthographic eye to stand beyond.
+  if (f.threeD() || leavesThePlane(genome)) {
+    // How far the attractor reaches from the camera's pivot, for an orthographic eye to stand beyond
+    // (a genome that leaves the plane, seen flat, has depth too).
     const auto e = attractorExtent(genome, FlameFrame{});
     double reach = 0.0;
     for (double x : {e[0], e[1]})
@@ -389,14 +433,29 @@ void frameSampled(const FlameGenome& genome, FlameImport& out, Camera& cam) {
     throw FlameError("the genome's view is too small or too large to frame");
 }
 
+std::string whyNotNative(const FlameGenome& genome) {
+  if (genome.frameHint) return "it is GridIFS's own grid export";
+  if (!leavesThePlane(genome)) return {};
+  // GridIFS's spherical, bubble and eyefish are 3D (they see z); the genome's see the plane. A
+  // dependent variation reads the xy pre-affine coefficients, which GridIFS takes from the whole
+  // map, z parts included.
+  std::vector<const FlameXform*> all;
+  for (const FlameXform& x : genome.xforms) all.push_back(&x);
+  if (genome.finalXform) all.push_back(&*genome.finalXform);
+  for (const FlameXform* x : all)
+    for (const auto& v : x->variations) {
+      if (!isGenomeZVariation(v.first) && flameVariationWritesZ(v.first))
+        return "its " + v.first + " sees the plane, GridIFS's sees z too";
+      const FlameVariation* variation = findFlameVariation(v.first);
+      if ((x->yz || x->zx) && variation && variation->dependent)
+        return "its " + v.first + " reads coefficients that its 3D affine parts change";
+    }
+  return {};
+}
+
 }  // namespace
 
-bool isNativeGenome(const FlameGenome& genome) {
-  if (genome.frameHint) return false;
-  for (const FlameXform& x : genome.xforms)
-    if (x.isThreeD()) return false;
-  return !(genome.finalXform && genome.finalXform->isThreeD());
-}
+bool isNativeGenome(const FlameGenome& genome) { return whyNotNative(genome).empty(); }
 
 FlameImport importFlameGenome(const FlameGenome& genome, const FlameImportOptions& options) {
   if (options.resolution < 2 || options.resolution > limits::kMaxResolution)
@@ -404,6 +463,7 @@ FlameImport importFlameGenome(const FlameGenome& genome, const FlameImportOption
   FlameImport out;
   out.warnings = genome.warnings;
   const bool native = isNativeGenome(genome) && !options.sampleOntoGrids;
+  const bool leavesPlane = leavesThePlane(genome);
   if (!native) out.frame = chooseFrame(genome, out.warnings);
   Project& p = out.project;
 
@@ -439,12 +499,15 @@ FlameImport importFlameGenome(const FlameGenome& genome, const FlameImportOption
     out.palette = palette;
   }
 
-  // Planar genomes keep their variations natively, in the flame's own coordinates, whatever their
-  // camera; genomes whose xforms leave the plane (z variations, yz or zx coefficients) and
-  // GridIFS's own grid exports (gridifs_frame) are sampled onto grids.
+  // Genomes keep their variations natively, in the flame's own coordinates (X = (x, y, −z) for
+  // those that leave the plane), whatever their camera; GridIFS's own grid exports
+  // (gridifs_frame), --grids, and the few 3D genomes GridIFS's variations cannot follow
+  // (whyNotNative) are sampled onto grids.
+  if (!native && !options.sampleOntoGrids && !genome.frameHint)
+    out.warnings.push_back("the genome's maps are sampled onto grids: " + whyNotNative(genome));
   std::set<std::string> dropped;
   auto convert = [&](const FlameXform& x, const std::string& name) {
-    if (native) return nativeXform(x, name);
+    if (native) return nativeXform(x, name, leavesPlane);
     const FlameXform sampled = withoutRandomVariations(x, dropped);
     Function fn = sampleXform(sampled, out.frame, options.resolution, name);
     fn.sampling_error = flameSamplingError(fn, sampled, out.frame);

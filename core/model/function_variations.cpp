@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "base/errors.h"
+#include "base/types.h"
 #include "model/flame_variations.h"
 #include "model/stack_evaluator.h"
 
@@ -26,16 +27,18 @@ void validateFunctionVariations(const std::map<std::string, double>& variations,
                                 const std::map<std::string, double>& params) {
   for (const auto& [name, weight] : variations) {
     if (!findFlameVariation(name)) throw ModelError("variations." + name, "\"" + name + "\" is not a flame variation");
-    if (!std::isfinite(weight))
-      throw ModelError("variations." + name, "the weight of variation " + name + " is not a finite number");
+    if (!std::isfinite(weight) || std::abs(weight) > limits::kMaxCoordinate)
+      throw ModelError("variations." + name,
+                       "the weight of variation " + name + " is not a finite number of magnitude at most 1e6");
   }
   for (const auto& [attribute, value] : params) {
     int variation = -1, parameter = -1;
     if (!findVariationParameter(attribute, variation, parameter))
       throw ModelError("variation_params." + attribute,
                        "\"" + attribute + "\" is not a parameter of any flame variation");
-    if (!std::isfinite(value))
-      throw ModelError("variation_params." + attribute, "variation parameter " + attribute + " is not finite");
+    if (!std::isfinite(value) || std::abs(value) > limits::kMaxCoordinate)
+      throw ModelError("variation_params." + attribute,
+                       "variation parameter " + attribute + " is not a finite number of magnitude at most 1e6");
   }
 }
 

@@ -170,12 +170,13 @@ TEST(FlameCli, ZVariationsSeenFromAboveMatchFlam3) {
   EXPECT_GE(c.corrAlpha, 0.99);
   EXPECT_GE(c.corrLuma, 0.99);
   EXPECT_LE(std::fabs(c.median), 0.03);
-  // 3D genomes are seen level, along +y: X's y is the flame's depth, which xform 0 halves
-  // (linear carries z, zscale −0.5 takes half of it away).
+  // Imported natively, in X = (x, y, −z), seen from below as a flat genome is: the z variations
+  // kept by name, ztranslate's sign turned with X's z.
   const Project p = loadProject(dir.path / "imported.gridifs");
-  EXPECT_EQ(p.camera.pitch, 0.0);
-  const auto grid = evaluateFunctionAt(p.functions[0], "");
-  EXPECT_NEAR(grid->evaluate(Vec3(0.3, 0.5, -0.2)).y - grid->evaluate(Vec3(0.3, -0.5, -0.2)).y, 0.5, 1e-9);
+  EXPECT_EQ(p.camera.pitch, -90.0);
+  EXPECT_EQ(p.functions[0].resolution, (Index3{2, 2, 2}));
+  EXPECT_EQ(p.functions[0].variations,
+            (std::map<std::string, double>{{"linear", 1.0}, {"zscale", -0.5}, {"ztranslate", -0.3}}));
 }
 
 TEST(FlameCli, ImportsThreeDimensionalGenomes) {
@@ -185,10 +186,20 @@ TEST(FlameCli, ImportsThreeDimensionalGenomes) {
                                      " --genome tetrahedron-perspective -o " + quote(out.string()));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_EQ(r.err.find("2D"), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("cam_dof"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("sampled"), std::string::npos) << r.err;  // imported natively, cam_dof kept
   const Project p = loadProject(out);
   EXPECT_FALSE(p.camera.orthographic());
-  for (const Function& f : p.functions) EXPECT_EQ(f.resolution, (Index3{2, 2, 2}));
+  EXPECT_DOUBLE_EQ(p.camera.lens_blur, 0.1);
+  for (const Function& f : p.functions) {
+    EXPECT_EQ(f.resolution, (Index3{2, 2, 2}));
+    EXPECT_FALSE(f.sampling_error);
+  }
+  // Sampled onto grids (--grids), cam_dof has no plane to keep sharp and is left out.
+  const auto grids = dir.path / "tetra-grids.gridifs";
+  const CommandResult g = runGridifs("import-flame " + quote((kData / "tetrahedron3d.flame").string()) +
+                                     " --genome tetrahedron-perspective --grids -o " + quote(grids.string()));
+  ASSERT_EQ(g.exitCode, 0) << g.err;
+  EXPECT_NE(g.err.find("cam_dof"), std::string::npos) << g.err;
   for (const char* mode : {"zbuffer", "flame"}) {
     const CommandResult render = runGridifs("render " + quote(out.string()) + " -o " +
                                             quote((dir.path / (std::string(mode) + ".png")).string()) + " --mode " +
@@ -197,7 +208,7 @@ TEST(FlameCli, ImportsThreeDimensionalGenomes) {
   }
   const auto swirl = dir.path / "swirl.gridifs";
   const CommandResult s = runGridifs("import-flame " + quote((kData / "tetrahedron3d.flame").string()) +
-                                     " --genome 1 --resolution 16 -o " + quote(swirl.string()));
+                                     " --genome 1 --grids --resolution 16 -o " + quote(swirl.string()));
   ASSERT_EQ(s.exitCode, 0) << s.err;
   EXPECT_NE(s.err.find("blur3D"), std::string::npos) << s.err;
   EXPECT_EQ(loadProject(swirl).functions[0].resolution, (Index3{16, 8, 16}));

@@ -1,7 +1,8 @@
 // 3D genomes as JWildfire, Fractorium and Apophysis 7X write them: the 3D affine parts and z
-// variations against hand-written closed forms, exact affine grids in 3D, the flame camera
-// (pitch, yaw, perspective, zpos, rotate) against GridIFS's orbit camera, and flam3's palette
-// hue rotation.
+// variations against hand-written closed forms; the native import (variations kept, in
+// X = (x, y, −z)) against the genome's own map and camera; the sampled import (--grids): exact
+// affine grids in 3D and the flame camera (pitch, yaw, perspective, zpos, rotate) against
+// GridIFS's orbit camera; and flam3's palette hue rotation.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -9,10 +10,12 @@
 
 #include "flame/palette.h"
 #include "flame/palette_gradient.h"
+#include "io/flame_export.h"
 #include "io/flame_genome.h"
 #include "io/flame_import.h"
 #include "model/stack_evaluator.h"
 #include "render/camera.h"
+#include "render/compiled_ifs.h"
 
 using namespace gridifs;
 
@@ -91,9 +94,110 @@ TEST(FlameImport3D, AffinePartsAndZVariationsFollowJWildfire) {
   EXPECT_TRUE(blurWarned);
 }
 
+TEST(FlameImport3D, GenomesThatLeaveThePlaneKeepTheirVariationsNatively) {
+  // z variations, 3D affine parts before and after, a planar non-linear variation (whose z the
+  // genome drops: no preserve_z), a random one, and a final xform.
+  const auto genomes = parseFlameFile(
+      R"(<flame size="200 150" scale="40" rotate="15" cam_pitch="0.7" cam_yaw="-0.3" cam_persp="0.2" cam_zpos="0.2">
+      <xform weight="1" color="0" linear="0.8" zscale="-0.4" ztranslate="0.3" swirl="0.2" coefs="0.5 0.1 -0.1 0.5 0.4 0.3"/>
+      <xform weight="1" color="0.5" sinusoidal="0.7" zcone="0.4" yzCoefs="0.8 0.6 -0.6 0.8 0 0.2" zxCoefs="0.9 0.1 -0.1 0.9 0.1 0" coefs="0.6 0 0 0.6 -0.3 0"/>
+      <xform weight="1" color="1" linear3D="0.9" yzPost="1 0.3 0 0.7 0 0.1" post="0.8 0.1 -0.1 0.8 0 0.2" coefs="0.5 0 0 0.5 0 -0.4"/>
+      <xform weight="0.5" color="0.2" blur="0.3" linear="0.5" ztranslate="0.2" coefs="0.5 0 0 0.5 0.2 0.2"/>
+      <finalxform color="0" color_speed="0" linear="1" zscale="0.5" coefs="1 0 0 1 0 0"/>
+    </flame>)");
+  const FlameGenome& g = genomes[0];
+  ASSERT_TRUE(isNativeGenome(g));
+  const FlameImport imported = importFlameGenome(g, {});
+  const Project& p = imported.project;
+  ASSERT_EQ(p.functions.size(), 4u);
+  for (const std::string& w : imported.warnings) EXPECT_EQ(w.find("sampled"), std::string::npos) << w;
+  for (const Function& f : p.functions) {
+    EXPECT_EQ(f.resolution, (Index3{2, 2, 2}));
+    EXPECT_FALSE(f.sampling_error);
+  }
+  EXPECT_EQ(p.functions[3].variations.count("blur"), 1u);  // a random variation, kept
+  // The genome drops the planar variations' z; GridIFS's carry w·z, which a zscale takes away.
+  EXPECT_DOUBLE_EQ(p.functions[0].variations.at("zscale"), -0.4 - 0.2);
+  EXPECT_DOUBLE_EQ(p.functions[0].variations.at("ztranslate"), -0.3);  // X's z is the flame's −z
+  EXPECT_DOUBLE_EQ(p.functions[1].variations.at("zcone"), -0.4);
+  ASSERT_TRUE(p.final_function);
+
+  // Each compiled function is the genome's map seen in X = (x, y, −z), off the plane too.
+  const auto ifs = compileIfs(p);
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> u(-2.0, 2.0);
+  std::uint64_t random = 1;
+  const auto check = [&](const FlameXform& x, const CompiledFunction& f, const char* label) {
+    for (int n = 0; n < 300; ++n) {
+      const FlamePoint q{double(float(u(rng))), double(float(u(rng))), double(float(u(rng)))};
+      const FlamePoint e = x.apply(q);
+      const auto got = f.evaluateMap({float(q.x), float(q.y), float(-q.z)}, random);
+      const double tolerance = 2e-5 * (1.0 + std::hypot(e.x, e.y, e.z));
+      EXPECT_NEAR(got[0], e.x, tolerance) << label << " at " << q.x << ", " << q.y << ", " << q.z;
+      EXPECT_NEAR(got[1], e.y, tolerance) << label;
+      EXPECT_NEAR(got[2], -e.z, tolerance) << label;
+    }
+  };
+  for (std::size_t i = 0; i < 3; ++i) check(g.xforms[i], ifs->functions[i], "xform");
+  check(*g.finalXform, *ifs->finalFunction, "final");
+
+  // The camera: a point of the flame's space lands where the flame camera puts it.
+  const OrbitCamera orbit(p.camera, g.width, g.height);
+  for (int n = 0; n < 200; ++n) {
+    const FlamePoint q{u(rng) * 0.5, u(rng) * 0.5, u(rng) * 0.5};
+    const FlamePixel want = flamePixel(g, q);
+    const ProjectedPoint got = orbit.project(glm::dvec3(q.x, q.y, -q.z));
+    ASSERT_TRUE(got.inFront);
+    EXPECT_NEAR(got.x, want.x, 1e-6);
+    EXPECT_NEAR(got.y, want.y, 1e-6);
+  }
+
+  // Exported, the genome comes back the same: JWildfire's 3D parts (another factorization of the
+  // same maps), ztranslate's and zcone's signs turned back, preserve_z for GridIFS's w·z.
+  const FlameExport exported = exportFlame(p, std::filesystem::temp_directory_path(), "again");
+  EXPECT_NE(exported.xml.find("preserve_z=\"1\""), std::string::npos);
+  EXPECT_NE(exported.xml.find("yzCoefs"), std::string::npos);
+  for (const std::string& w : exported.warnings) EXPECT_EQ(w.find("plane part"), std::string::npos) << w;
+  const FlameGenome again = parseFlameFile(exported.xml)[0];
+  FlameImportOptions inlinePalette;
+  inlinePalette.inlinePaletteReference = "file:again.palette.json";
+  const FlameImport reimported = importFlameGenome(again, inlinePalette);
+  const auto ifs2 = compileIfs(reimported.project);
+  for (std::size_t i = 0; i < 4; ++i)
+    EXPECT_EQ(reimported.project.functions[i].variations, p.functions[i].variations) << i;
+  for (std::size_t i = 0; i < 3; ++i)
+    for (int n = 0; n < 100; ++n) {
+      const std::array<float, 3> q{float(u(rng)), float(u(rng)), float(u(rng))};
+      const auto a = ifs->functions[i].evaluateMap(q, random), b = ifs2->functions[i].evaluateMap(q, random);
+      for (int d = 0; d < 3; ++d)
+        EXPECT_NEAR(a[std::size_t(d)], b[std::size_t(d)], 1e-4 * (1.0 + std::fabs(a[std::size_t(d)]))) << i;
+    }
+  const OrbitCamera orbit2(reimported.project.camera, g.width, g.height);
+  const ProjectedPoint before = orbit.project(glm::dvec3(0.3, -0.2, 0.4)),
+                       after = orbit2.project(glm::dvec3(0.3, -0.2, 0.4));
+  EXPECT_NEAR(before.x, after.x, 1e-6);
+  EXPECT_NEAR(before.y, after.y, 1e-6);
+
+  // preserve_z keeps the planar variations' w·z: no zscale is added.
+  const FlameImport kept = importFlameGenome(loadFlameFile(kData / "tetrahedron3d.flame")[1], {});
+  EXPECT_EQ(kept.project.functions[0].variations, (std::map<std::string, double>{{"linear", 0.6}, {"swirl", 0.3}}));
+  // GridIFS's spherical sees z, the genome's only the plane: such a genome is sampled, and says why.
+  const auto spherical = parseFlameFile(R"(<flame size="100 100" scale="30">
+      <xform weight="1" color="0" spherical="0.5" ztranslate="0.3" coefs="0.5 0 0 0.5 0 0"/>
+    </flame>)");
+  EXPECT_FALSE(isNativeGenome(spherical[0]));
+  const FlameImport sampled = importFlameGenome(spherical[0], {});
+  bool told = false;
+  for (const std::string& w : sampled.warnings) told |= w.find("spherical") != std::string::npos;
+  EXPECT_TRUE(told);
+  EXPECT_TRUE(sampled.project.functions[0].sampling_error);
+}
+
 TEST(FlameImport3D, AffineXformsAreExactGridsInThreeDimensions) {
   const auto genomes = loadFlameFile(kData / "tetrahedron3d.flame");
-  const FlameImport imported = importFlameGenome(genomes[0], {});
+  FlameImportOptions grids;
+  grids.sampleOntoGrids = true;
+  const FlameImport imported = importFlameGenome(genomes[0], grids);
   ASSERT_EQ(imported.project.functions.size(), 4u);
   EXPECT_TRUE(imported.frame.threeD);
   std::mt19937 rng(7);
@@ -124,6 +228,7 @@ TEST(FlameImport3D, TheCameraSeesWhatTheFlameCameraSees) {
   const auto genomes = loadFlameFile(kData / "tetrahedron3d.flame");
   for (const FlameGenome& g : genomes) {
     FlameImportOptions options;
+    options.sampleOntoGrids = true;
     options.resolution = 8;
     options.inlinePaletteReference = "file:x.palette.json";
     const FlameImport imported = importFlameGenome(g, options);
@@ -157,6 +262,7 @@ TEST(FlameImport3D, OnlyXformsThatMixZIntoXyNeedLayersInZ) {
   double previous = 1e300;
   for (int resolution : {12, 24}) {
     FlameImportOptions options;
+    options.sampleOntoGrids = true;
     options.resolution = resolution;
     options.inlinePaletteReference = "file:x.palette.json";
     const FlameImport imported = importFlameGenome(genomes[1], options);
@@ -175,6 +281,7 @@ TEST(FlameImport3D, OnlyXformsThatMixZIntoXyNeedLayersInZ) {
       <xform weight="1" color="1" sinusoidal="0.8" yzCoefs="0.8 0.6 -0.6 0.8 0 0" coefs="0.7 0 0 0.7 -0.1 0"/>
     </flame>)");
   FlameImportOptions options;
+  options.sampleOntoGrids = true;
   options.resolution = 16;
   const FlameImport imported = importFlameGenome(straight[0], options);
   EXPECT_EQ(imported.project.functions[0].resolution, (Index3{16, 2, 16}));
