@@ -61,7 +61,9 @@ Function nativeXform(const FlameXform& x, const std::string& name, bool leavesPl
   for (const auto& [variation, weight] : x.variations) {
     const bool flipsSign = leavesPlane && (variation == "ztranslate" || variation == "zcone");
     fn.variations[variation] += flipsSign ? -weight : weight;
-    if (!isGenomeZVariation(variation)) planarWeight += weight;
+    // A pre-variation (pre_blur) moves the point and adds nothing to the sum, z included.
+    const FlameVariation* known = findFlameVariation(variation);
+    if (!isGenomeZVariation(variation) && !(known && known->pre)) planarWeight += weight;
   }
   if (leavesPlane && !x.preserveZ && planarWeight != 0.0) fn.variations["zscale"] -= planarWeight;
   for (const auto& [attribute, value] : x.params) fn.variation_params[attribute] = value;

@@ -102,7 +102,7 @@ TEST(FlameImport3D, GenomesThatLeaveThePlaneKeepTheirVariationsNatively) {
       <xform weight="1" color="0" linear="0.8" zscale="-0.4" ztranslate="0.3" swirl="0.2" coefs="0.5 0.1 -0.1 0.5 0.4 0.3"/>
       <xform weight="1" color="0.5" sinusoidal="0.7" zcone="0.4" yzCoefs="0.8 0.6 -0.6 0.8 0 0.2" zxCoefs="0.9 0.1 -0.1 0.9 0.1 0" coefs="0.6 0 0 0.6 -0.3 0"/>
       <xform weight="1" color="1" linear3D="0.9" yzPost="1 0.3 0 0.7 0 0.1" post="0.8 0.1 -0.1 0.8 0 0.2" coefs="0.5 0 0 0.5 0 -0.4"/>
-      <xform weight="0.5" color="0.2" blur="0.3" linear="0.5" ztranslate="0.2" coefs="0.5 0 0 0.5 0.2 0.2"/>
+      <xform weight="0.5" color="0.2" blur="0.3" pre_blur="0.1" linear="0.5" ztranslate="0.2" coefs="0.5 0 0 0.5 0.2 0.2"/>
       <finalxform color="0" color_speed="0" linear="1" zscale="0.5" coefs="1 0 0 1 0 0"/>
     </flame>)");
   const FlameGenome& g = genomes[0];
@@ -116,6 +116,8 @@ TEST(FlameImport3D, GenomesThatLeaveThePlaneKeepTheirVariationsNatively) {
     EXPECT_FALSE(f.sampling_error);
   }
   EXPECT_EQ(p.functions[3].variations.count("blur"), 1u);  // a random variation, kept
+  // pre_blur moves the point and adds nothing to the sum: only blur's w·z is taken away.
+  EXPECT_DOUBLE_EQ(p.functions[3].variations.at("zscale"), -0.3);
   // The genome drops the planar variations' z; GridIFS's carry w·z, which a zscale takes away.
   EXPECT_DOUBLE_EQ(p.functions[0].variations.at("zscale"), -0.4 - 0.2);
   EXPECT_DOUBLE_EQ(p.functions[0].variations.at("ztranslate"), -0.3);  // X's z is the flame's −z
