@@ -59,10 +59,6 @@ FlameAffine toFlame(const FlameAffine& g, const FlameFrame& frame) {
   return f;
 }
 
-/// Whether a variation's z output is a constant or a function of x and y (not of z), whose sign
-/// turns with X's z.
-bool flipsWithZ(const std::string& name) { return name == "ztranslate" || name == "zcone"; }
-
 std::string coefsText(const FlameAffine& f) {
   // The file's order is a d b e c f.
   return num(f.a) + " " + num(f.d) + " " + num(f.b) + " " + num(f.e) + " " + num(f.c) + " " + num(f.f);
@@ -73,7 +69,8 @@ std::string variationAttributes(const Function& fn, const std::string& label, st
                                 bool leavesPlane = false) {
   std::string text;
   for (const auto& [name, weight] : fn.variations)
-    text += (text.empty() ? "" : " ") + name + "=\"" + num(leavesPlane && flipsWithZ(name) ? -weight : weight) + "\"";
+    text +=
+        (text.empty() ? "" : " ") + name + "=\"" + num(leavesPlane && flipsSignWithZ(name) ? -weight : weight) + "\"";
   if (text.empty()) text = "linear=\"1\"";
   for (const auto& [attribute, value] : fn.variation_params) text += " " + attribute + "=\"" + num(value) + "\"";
   if (fn.post && !leavesPlane) {
@@ -222,7 +219,7 @@ FlameExport exportFlame(const Project& project, const std::filesystem::path& pro
     auto leaves = [&](const Function& fn, const std::string& path) {
       if (fn.muted) return false;
       for (const auto& [name, weight] : fn.variations)
-        if (flipsWithZ(name) && weight != 0.0) return true;
+        if (flipsSignWithZ(name) && weight != 0.0) return true;
       if (fn.post) {
         const auto m = fn.post->affine();
         if (m[2][0] != 0.0 || m[2][1] != 0.0 || m[2][3] != 0.0 || m[0][2] != 0.0 || m[1][2] != 0.0) return true;

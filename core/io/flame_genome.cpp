@@ -295,6 +295,8 @@ bool isGenomeZVariation(const std::string& name) {
          name == "flatten";
 }
 
+bool flipsSignWithZ(const std::string& name) { return name == "ztranslate" || name == "zcone"; }
+
 FlamePoint FlameXform::preAffine(FlamePoint p) const { return applyAffine3(coefs, yz, zx, p); }
 FlamePoint FlameXform::postAffine(FlamePoint p) const { return applyAffine3(post, postYz, postZx, p); }
 

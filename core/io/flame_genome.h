@@ -57,6 +57,9 @@ struct FlameXform {
 /// JWildfire): linear, linear3D and the z variations. The others see the plane and carry z only
 /// under preserve_z.
 bool isGenomeZVariation(const std::string& name);
+/// Whether variation `name`'s z output does not scale with the point's z (ztranslate: a constant;
+/// zcone: a function of x and y), so that seen in X = (x, y, −z) its weight changes sign.
+bool flipsSignWithZ(const std::string& name);
 
 struct FlameGenome {
   std::string name;

@@ -59,8 +59,7 @@ Function nativeXform(const FlameXform& x, const std::string& name, bool leavesPl
   fn.ops.push_back(Operation{nodes, Center{}, Selection{}, false});
   double planarWeight = 0.0;
   for (const auto& [variation, weight] : x.variations) {
-    const bool flipsSign = leavesPlane && (variation == "ztranslate" || variation == "zcone");
-    fn.variations[variation] += flipsSign ? -weight : weight;
+    fn.variations[variation] += leavesPlane && flipsSignWithZ(variation) ? -weight : weight;
     // A pre-variation (pre_blur) moves the point and adds nothing to the sum, z included.
     const FlameVariation* known = findFlameVariation(variation);
     if (!isGenomeZVariation(variation) && !(known && known->pre)) planarWeight += weight;
@@ -69,14 +68,14 @@ Function nativeXform(const FlameXform& x, const std::string& name, bool leavesPl
   for (const auto& [attribute, value] : x.params) fn.variation_params[attribute] = value;
   if (leavesPlane) {
     // The post map's matrix in X: S·M·S and S·t.
-    const FlamePoint t = flipZ(x.postAffine({}));
+    const FlamePoint origin = x.postAffine({}), t = flipZ(origin);
     const double sign[3] = {1.0, 1.0, -1.0};
     std::array<std::array<double, 4>, 3> m{};
     bool identity = true;
     for (int c = 0; c < 3; ++c) {
       FlamePoint e{};
       (c == 0 ? e.x : c == 1 ? e.y : e.z) = 1.0;
-      const FlamePoint image = x.postAffine(e), origin = x.postAffine({});
+      const FlamePoint image = x.postAffine(e);
       const double column[3] = {image.x - origin.x, image.y - origin.y, image.z - origin.z};
       for (int r = 0; r < 3; ++r) {
         m[std::size_t(r)][std::size_t(c)] = sign[r] * sign[c] * column[r];

@@ -729,8 +729,6 @@ inline HotCamera makeHotCamera(const OrbitCamera& camera) {
   r3 = __builtin_shufflevector(out[3][0], out[3][1], 0, 1, 2, 3, 4, 5, 6, 7);
 }
 
-/// What the plotters project eight samples at a time with: a HotCamera's numbers per lane (pixel
-/// rows, the eye's pixels, the panoramic constants), built once per chunk. Lane k takes eye k mod 2.
 /// A panoramic camera's per-lane constants at the width V: eight lanes, or sixteen as two
 /// groups of eight (lane k still of eye k mod 2).
 template <class V>
@@ -738,6 +736,8 @@ struct PanoramicLanes {
   V centreX, centreY, pixelsPerRadian, halfFov, twicePixelsPerRadian, halfAngleTanSquared;
   V radiusSquared, radiusTimesSign, up[3], turn[9];
 };
+/// What the plotters project eight samples at a time with: a HotCamera's numbers per lane (pixel
+/// rows, the eye's pixels, the panoramic constants), built once per chunk. Lane k takes eye k mod 2.
 struct ProjectionLanes {
   v8f rows[4][4];      // rows[r][c] per lane: the lane's eye's row r, coefficient c
   v8f x0, x1, y0, y1;  // per lane: the eye's pixels
@@ -787,7 +787,7 @@ inline ProjectionLanes projectionLanes(const HotCamera& cam) {
 // builds the kernels' clones. Sixteen lanes carry two groups of eight in every instruction, so
 // the long dependent chain of one group (square roots, a division, the arctangents'
 // polynomials) overlaps the other's where eight lanes left the CPU waiting: equirectangular
-// 0.80 → 0.94 of perspective's samples per second (docs/CAMERAS.md). Both widths do the same
+// 0.80 → 0.95 of perspective's samples per second (docs/CAMERAS.md). Both widths do the same
 // float operations per lane, so the pictures are the same bits on every CPU.
 #define GRIDIFS_LANES_FUNCTION GRIDIFS_KERNEL_CLONES
 namespace eight_lanes {
@@ -1069,7 +1069,7 @@ struct ZBufferPlot {
     // A panoramic camera's groups are projected first, all of them, and staged after: its
     // projection is a long chain of dependent operations (a square root, a division, the
     // arctangents' polynomials), and with nothing but projections between them the CPU overlaps
-    // the chains of consecutive groups (equirectangular 0.69 → 0.82 of perspective's samples per
+    // the chains of consecutive groups (equirectangular 0.71 → 0.80 of perspective's samples per
     // second). A flat camera's short projection gains nothing from it and stays in one loop.
     PanoramicGroups<v8u, v8i> panoramic;
     if (pr.kind != HotCamera::Flat) panoramic.project(pr, points, n);
