@@ -15,6 +15,7 @@ std::shared_ptr<ChaosVerbArgs> addChaosVerbOptions(CLI::App& app, const std::str
   app.add_option("--threads", a->overrides.threads, threadsHelp);
   addDeviceOption(app, a->overrides.device);
   addTimeOption(app, a->overrides.time);
+  addSetOption(app);
   app.add_flag("-q,--quiet", a->quiet, "no progress bar");
   return a;
 }

@@ -7,12 +7,44 @@
 #include <map>
 
 #include "base/errors.h"
+#include "edit/project_edit.h"
 #include "io/project_io.h"
 #include "job/prepared_render.h"
 #include "model/project_time.h"
+#include "model/validation.h"
 
 namespace gridifs::cli {
 namespace {
+
+/// The --set arguments of the verb being run (PATH=VALUE), in the order given.
+std::vector<std::string>& parameterSettings() {
+  static std::vector<std::string> settings;
+  return settings;
+}
+
+/// Sets the --set numbers in `project` as SetParameter edits, then checks the whole project.
+void applyParameterSettings(Project& project) {
+  for (const std::string& setting : parameterSettings()) {
+    const std::size_t equals = setting.rfind('=');
+    const std::string path = setting.substr(0, equals),
+                      text = equals == std::string::npos ? "" : setting.substr(equals + 1);
+    char* end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    if (path.empty() || text.empty() || *end != '\0')
+      throw CliError(kBadInput, "--set " + setting + ": expected PATH=NUMBER, such as functions[0].weight=0.5");
+    try {
+      applyEdit(project, SetParameter{path, value});
+    } catch (const ModelError& e) {
+      throw CliError(kBadInput, std::string("--set: ") + e.what());
+    }
+  }
+  if (parameterSettings().empty()) return;
+  try {
+    validateProject(project);  // rules across fields (an aperture needs a focus distance)
+  } catch (const ModelError& e) {
+    throw CliError(kBadInput, std::string("--set: ") + e.what());
+  }
+}
 
 std::map<std::string, Verb>& verbs() {
   static std::map<std::string, Verb> registry;
@@ -33,6 +65,7 @@ void printUsage(std::ostream& out) {
 
 int runVerb(const Verb& verb, int argc, char** argv) {
   CLI::App app(verb.summary, std::string("gridifs ") + verb.name);
+  parameterSettings().clear();
   std::function<int()> action = verb.setup(app);
   try {
     app.parse(argc, argv);
@@ -62,13 +95,25 @@ VerbRegistration::VerbRegistration(Verb verb) { verbs().emplace(verb.name, std::
 bool stderrIsTerminal() { return ::isatty(STDERR_FILENO) == 1; }
 
 Project loadForVerb(const std::filesystem::path& file) {
+  Project project;
   try {
-    return loadProject(file);
+    project = loadProject(file);
   } catch (const ModelError& e) {
     throw CliError(kBadInput, file.string() + ": " + e.what());
   } catch (const IoError& e) {
     throw CliError(kBadInput, "cannot read " + file.string() + ": " + e.what());
   }
+  applyParameterSettings(project);
+  return project;
+}
+
+void addSetOption(CLI::App& app) {
+  app.add_option("--set", parameterSettings(),
+                 "PATH=NUMBER: set the number at a parameter path of the project before working, as an edit "
+                 "would (repeatable; e.g. --set functions[0].weight=2 --set render.flame.gamma=3); 'gridifs info "
+                 "FILE --parameters' lists the paths")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
 }
 
 void addTimeOption(CLI::App& app, std::optional<double>& time) {

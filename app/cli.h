@@ -47,8 +47,15 @@ int run(int argc, char** argv, ModellerOpener openModeller);
 bool isVerb(const char* word);
 
 /// Loads a project for a verb; bad content → CliError(2), unreadable → CliError(2) too
-/// (an unreadable input file is bad input), each naming the file.
+/// (an unreadable input file is bad input), each naming the file. The numbers given with --set
+/// are then set, in order, as edits would set them.
 Project loadForVerb(const std::filesystem::path& file);
+
+/// Declares `--set PATH=VALUE` (repeatable) on a verb that reads a project: the number at that
+/// parameter path ("functions[0].weight", "render.flame.gamma", the paths of keyframe tracks) is
+/// set before the verb works, checked as the project file checks it. A value a file could not
+/// hold there → CliError(2) with the file reader's sentence.
+void addSetOption(CLI::App& app);
 
 /// Declares `--time T` (seconds) on a verb that reads a project: the project as it stands at T.
 void addTimeOption(CLI::App& app, std::optional<double>& time);

@@ -42,6 +42,7 @@ const VerbRegistration kExportCamera{
        auto out = std::make_shared<std::string>();
        auto frames = std::make_shared<std::optional<std::string>>();
        app.add_option("FILE", *file, "project file (.gridifs)")->required();
+       addSetOption(app);
        app.add_option("-o,--output", *out, "output camera (.usda or .chan)")->required();
        app.add_option("--frames", *frames, "frames A to B (A:B), frame f at time f/fps; default: the project's time");
        return [=] { return runExportCamera(*file, *out, *frames); };

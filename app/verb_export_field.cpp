@@ -221,6 +221,7 @@ const VerbRegistration kExportField{
        app.add_option("--palette", a->palette, "the image's palette: a built-in name (default gray)");
        app.add_option("--octaves", a->octaves, "only the first K meshes of each field, M_1 + ... + M_K");
        addTimeOption(app, a->time);
+       addSetOption(app);
        app.add_flag("--ascii", a->ascii, "ASCII PLY or STL instead of binary");
        return [=] { return runExportField(*a); };
      }}};

@@ -32,6 +32,7 @@ const VerbRegistration kExportFlame{
        auto file = std::make_shared<std::string>();
        auto out = std::make_shared<std::string>();
        app.add_option("FILE", *file, "project file (.gridifs)")->required();
+       addSetOption(app);
        app.add_option("-o,--output", *out, "output flame (.flame)")->required();
        return [=] { return runExportFlame(*file, *out); };
      }}};

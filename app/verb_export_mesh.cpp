@@ -153,6 +153,7 @@ const VerbRegistration kExportMesh{
                       ".obj or .stl (triangulated)")
            ->required();
        addTimeOption(app, a->time);
+       addSetOption(app);
        app.add_option("--depth", a->depth, "n in F^n(A): N^n copies of the base mesh")
            ->required()
            ->check(CLI::Range(0, kMaxDeterministicDepth));

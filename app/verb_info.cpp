@@ -3,10 +3,13 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
+#include "anim/track_path.h"
 #include "app/cli.h"
 #include "app/render_device_option.h"
+#include "io/parameter_paths.h"
 #include "model/contractivity.h"
 #include "model/free_form.h"
+#include "model/project_parameter.h"
 #include "model/state_expansion.h"
 #include "model/transition_matrix.h"
 
@@ -77,6 +80,28 @@ std::vector<FunctionReport> analyse(const Document& document, const std::filesys
     reports.push_back({&f, probability, estimateContractivity(*grid)});
   }
   return reports;
+}
+
+/// Every number of the project by its parameter path (the paths of --set, keyframe tracks and
+/// scripts), with its value and the range a slider moves it over.
+int runParameters(const std::string& file, bool asJson) {
+  const Project project = loadForVerb(file);
+  nlohmann::ordered_json list = nlohmann::ordered_json::array();
+  for (const std::string& path : parameterPaths(project)) {
+    const ProjectParameter parameter = findParameter(project, *TrackPath::parse(path)).parameter;
+    const ParameterSpan span = parameter.span();
+    if (asJson) {
+      nlohmann::ordered_json entry{{"path", path}, {"value", parameter.get(project)}};
+      if (span.lo < span.hi) entry["range"] = {span.lo, span.hi};
+      list.push_back(entry);
+    } else if (span.lo < span.hi) {
+      std::printf("%s = %.15g  (%g to %g)\n", path.c_str(), parameter.get(project), span.lo, span.hi);
+    } else {
+      std::printf("%s = %.15g\n", path.c_str(), parameter.get(project));
+    }
+  }
+  if (asJson) std::printf("%s\n", list.dump(2).c_str());
+  return kSuccess;
 }
 
 int runInfo(const std::string& file, bool asJson, const std::optional<std::string>& deviceOption) {
@@ -203,14 +228,22 @@ int runInfo(const std::string& file, bool asJson, const std::optional<std::strin
 }
 
 const VerbRegistration kInfo{
-    {"info", "FILE [--json --device D]: functions, weights, contractivity and the render device", [](CLI::App& app) {
+    {"info",
+     "FILE [--json --device D --parameters --set PATH=NUMBER]: functions, weights, contractivity and the render "
+     "device, or every number of the project by its parameter path",
+     [](CLI::App& app) {
        auto file = std::make_shared<std::string>();
        auto asJson = std::make_shared<bool>(false);
+       auto parameters = std::make_shared<bool>(false);
        auto device = std::make_shared<std::optional<std::string>>();
        app.add_option("FILE", *file, "project file (.gridifs)")->required();
        app.add_flag("--json", *asJson, "print JSON instead of a table");
        app.add_option("--device", *device, "which render device to report: auto (default), gpu or cpu");
-       return [=] { return runInfo(*file, *asJson, *device); };
+       app.add_flag("--parameters", *parameters,
+                    "list every number of the project by its parameter path (the paths of --set, keyframe tracks "
+                    "and scripts), with its value and slider range");
+       addSetOption(app);
+       return [=] { return *parameters ? runParameters(*file, *asJson) : runInfo(*file, *asJson, *device); };
      }}};
 
 }  // namespace

@@ -73,6 +73,7 @@ std::function<int()> setupFunctionVerb(CLI::App& app,
   app.add_option("FILE", *file, "project file (.gridifs)")->required();
   app.add_option("--function", *which, "function index 0..n-1 (as in functions[I]) or name")->required();
   addTimeOption(app, *time);
+  addSetOption(app);
   return [=] { return action(*file, *which, *time); };
 }
 

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <sstream>
 
 #include "app/chaos_verb_options.h"
 #include "app/cli.h"
@@ -473,6 +474,16 @@ int renderImageOf(const Project& loaded, const std::string& file, const std::str
 
 namespace {
 
+/// The help of a flame-display option that overrides field `key` of "render.flame": the table's
+/// tooltip and range.
+std::string flameOptionHelp(const char* key) {
+  const SettingSpec& field = flameSettingsTable().field(key);
+  std::ostringstream help;
+  help << "flame mode: " << field.tooltip << " (" << field.min << " to " << field.max
+       << "; default: the project's render.flame." << key << ")";
+  return help.str();
+}
+
 const VerbRegistration kRender{
     {"render",
      "FILE -o OUT.(png|exr|tif) [--width W --height H --samples N --seed S --threads T "
@@ -520,18 +531,15 @@ const VerbRegistration kRender{
        app.add_option("--quality", a->overrides.quality,
                       "samples per output pixel (flam3's quality): sets the sample count from the image size; "
                       "overrides the project's render.quality and render.samples; excludes --samples");
-       app.add_option("--hue", flame->hue, "flame mode: turn the palette's hue by this fraction of a circle (0..1)");
+       app.add_option("--hue", flame->hue, flameOptionHelp("hue"));
        app.add_option("--density-display", flame->densityDisplay,
                       "flame mode: log (log density), linear (hits over the densest pixel's) or binary (hit or not)");
-       app.add_option("--supersample", flame->supersample,
-                      "flame mode: histogram at N× the image size in each direction (1..8)");
-       app.add_option("--filter-radius", flame->filterRadius, "flame mode: Gaussian filter radius in pixels (0..10)");
+       app.add_option("--supersample", flame->supersample, flameOptionHelp("supersample"));
+       app.add_option("--filter-radius", flame->filterRadius, flameOptionHelp("filter_radius"));
        app.add_option("--estimator-radius", flame->estimatorRadius,
-                      "flame mode: density estimation's widest kernel in pixels (0 = off, up to 64)");
-       app.add_option("--estimator-minimum", flame->estimatorMinimum,
-                      "flame mode: density estimation's narrowest kernel in pixels");
-       app.add_option("--estimator-curve", flame->estimatorCurve,
-                      "flame mode: how fast the kernel narrows as density grows (0.05..10)");
+                      flameOptionHelp("estimator_radius") + "; 0 turns density estimation off");
+       app.add_option("--estimator-minimum", flame->estimatorMinimum, flameOptionHelp("estimator_minimum"));
+       app.add_option("--estimator-curve", flame->estimatorCurve, flameOptionHelp("estimator_curve"));
        app.add_option("--video", sequence->video,
                       "with --frames: also assemble the frames into this video with ffmpeg");
        auto part = std::make_shared<std::optional<std::string>>();

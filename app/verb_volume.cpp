@@ -170,6 +170,7 @@ const VerbRegistration kVolume{
        app.add_option("--seed", a->seed, "random seed (default: the project's)");
        app.add_option("--threads", a->threads, "worker threads (default: all cores)");
        addTimeOption(app, a->time);
+       addSetOption(app);
        addDeviceOption(app, a->device);
        app.add_option("--part", a->part,
                       "bin part K of N (K/N) of the chaos-game points into -o OUT.gpart; gridifs merge makes "

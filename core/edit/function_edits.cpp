@@ -71,13 +71,7 @@ std::string SetInterpolation::label() const {
   return interpolation == LatticeInterpolation::Bezier ? "Bézier final lattice" : "Trilinear final lattice";
 }
 
-void SetFunctionWeight::apply(Project& project) const { function.in(project).weight = weight; }
-
 void SetFunctionColor::apply(Project& project) const { function.in(project).color = color; }
-
-void SetPaletteIndex::apply(Project& project) const { function.in(project).palette_index = palette_index; }
-
-void SetColorSpeed::apply(Project& project) const { function.in(project).color_speed = color_speed; }
 
 void AddSymmetry::apply(Project& project) const {
   addSymmetry(project, symmetry, symmetryFrameForView(project.camera));

@@ -105,34 +105,11 @@ struct SetInterpolation {
   std::string label() const;
 };
 
-struct SetFunctionWeight {
-  FunctionRef function;
-  double weight = 1.0;
-  void apply(Project& project) const;
-  std::string label() const { return "Function weight"; }
-};
-
 struct SetFunctionColor {
   FunctionRef function;
   Vec3 color{1.0};
   void apply(Project& project) const;
   std::string label() const { return "Function color"; }
-};
-
-/// The structural colour coordinate c_i (Draves & Reckase 2003, §5).
-struct SetPaletteIndex {
-  FunctionRef function;
-  double palette_index = 0.0;
-  void apply(Project& project) const;
-  std::string label() const { return "Palette index"; }
-};
-
-/// How far a point's colour moves towards c_i (Draves & Reckase 2003, §5).
-struct SetColorSpeed {
-  FunctionRef function;
-  double color_speed = 0.5;
-  void apply(Project& project) const;
-  std::string label() const { return "Color speed"; }
 };
 
 /// Appends the functions that make the attractor symmetric about the project camera's view axis,

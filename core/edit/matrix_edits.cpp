@@ -34,13 +34,6 @@ std::string SetTransitionPreset::label() const {
 
 void RemoveTransitions::apply(Project& project) const { project.transitions.clear(); }
 
-void SetTransitionWeight::apply(Project& project) const {
-  if (from >= project.transitions.size() || to >= project.transitions[from].size())
-    throw ModelError("transitions[" + std::to_string(from) + "][" + std::to_string(to) + "]",
-                     "the transition matrix has no such cell");
-  project.transitions[from][to] = weight;
-}
-
 void SetMatrixEntry::apply(Project& project) const {
   Function& f = functionAt(project, function);
   if (row >= f.matrix.size() || column >= f.matrix[row].size())

@@ -39,14 +39,6 @@ struct RemoveTransitions {
   std::string label() const { return "Remove transition matrix"; }
 };
 
-/// The weight of "function `to` after function `from`" (0 forbids that step).
-struct SetTransitionWeight {
-  std::size_t from = 0, to = 0;
-  double weight = 1.0;
-  void apply(Project& project) const;
-  std::string label() const { return "transition weight"; }
-};
-
 /// Entry (row, column) of matrix function `function`. The row's diagonal entry (the next one when
 /// the diagonal itself is edited) takes up the difference, so the row keeps summing to 1 and every
 /// state of a drag is a valid matrix.

@@ -3,6 +3,7 @@
 #include "anim/track_path.h"
 #include "base/errors.h"
 #include "model/project_parameter.h"
+#include "model/settings_tables.h"
 
 namespace gridifs {
 namespace {
@@ -10,7 +11,7 @@ namespace {
 ProjectParameter numberAt(const Project& project, const std::string& path) {
   const std::optional<TrackPath> parsed = TrackPath::parse(path);
   if (!parsed) throw ModelError(path, "is not a parameter path like functions[0].ops[1].k");
-  const FoundParameter found = findParameter(project, *parsed);
+  const FoundParameter found = findParameter(project, *parsed, ParameterScope::Edit);
   switch (found.lookup) {
     case ParameterLookup::Number:
       break;
@@ -24,7 +25,23 @@ ProjectParameter numberAt(const Project& project, const std::string& path) {
 
 }  // namespace
 
-void SetParameter::apply(Project& project) const { numberAt(project, path).set(project, value); }
+void SetParameter::apply(Project& project) const {
+  const ProjectParameter parameter = numberAt(project, path);
+  if (!parameter.inAnimation()) {
+    parameter.set(project, value);
+    return;
+  }
+  // The timeline's rules (an end not before its start) are checked by reading the file, not by
+  // validateProject, so an edit checks them here.
+  const AnimationSettings before = *project.animation;
+  parameter.set(project, value);
+  try {
+    validateSettings(animationSettingsTable(), *project.animation, "animation");
+  } catch (const ModelError&) {
+    *project.animation = before;
+    throw;
+  }
+}
 
 double parameterValue(const Project& project, const std::string& path) { return numberAt(project, path).get(project); }
 

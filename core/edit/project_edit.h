@@ -39,28 +39,28 @@ struct ReplaceProject {
 using ProjectEdit = std::variant<
     // the function list and each function (edit/function_edits.h)
     AddFunction, DuplicateFunction, RemoveFunction, MoveFunction, AddFinalFunction, RemoveFinalFunction, RenameFunction,
-    SetFunctionMuted, SetFunctionResolution, SetPlacement, MovePlacement, SetInterpolation, SetFunctionWeight,
-    SetFunctionColor, SetPaletteIndex, SetColorSpeed, AddSymmetry,
+    SetFunctionMuted, SetFunctionResolution, SetPlacement, MovePlacement, SetInterpolation, SetFunctionColor,
+    AddSymmetry,
     // condensation and median sets (edit/set_edits.h)
-    SetCondensationSet, SetSetShape, SetSetFile, SetSetFill, SetSetGrid, SetMedianRotation,
+    SetCondensationSet, SetSetShape, SetSetFile, SetSetFill, SetSetGrid, SetMedianAxis,
     // flame variations (edit/variation_edits.h)
-    SetVariationWeight, AddVariation, RemoveVariation, SetVariationParameter, SetPostTransform,
+    AddVariation, RemoveVariation, SetPostTransform,
     // the operation stack and node drags (edit/operation_edits.h)
     AddOperation, RemoveOperation, MoveOperation, DuplicateOperation, SetOperationMuted, SetOperation,
     SetOperationSelection, PlaceCenter, MoveNodes,
     // settings, camera, time (edit/settings_edits.h) and shading (edit/shading_edits.h)
-    SetSettingNumber, SetDisplayMode, SetSampleBudget, SetBackground, SetPalette, SetDensityEstimation,
-    ResetFlameSettings, SetDensityDisplay, SetQuality, SetPaletteKeys, SetCamera, SetCameraDistance, SetTime,
-    SetAnimation, AddLight, RemoveLight, SetLightDirection, SetLightColor, SetLightShadows, SetFogColor, SetAperture,
+    SetDisplayMode, SetSampleBudget, SetBackground, SetPalette, SetDensityEstimation, ResetFlameSettings,
+    SetDensityDisplay, SetQuality, SetPaletteKeys, SetCamera, SetTime, SetAnimation, AddLight, RemoveLight,
+    SetLightDirection, SetLightColor, SetLightShadows, SetFogColor, SetAperture,
     // the volume's field layers (edit/field_layer_edits.h)
     AddFieldLayer, RemoveFieldLayer, SetFieldLayer,
     // keyframes (edit/key_edits.h)
     SetKeys, RemoveKeys,
     // transitions and free-form IFS (edit/matrix_edits.h)
-    SetTransitionPreset, RemoveTransitions, SetTransitionWeight, SetMatrixEntry, MoveControlPoint, ApplyFreeFormPreset,
-    BackToGridIfs, AddControlPoint, RemoveControlPoint, MapOntoControlNet,
+    SetTransitionPreset, RemoveTransitions, SetMatrixEntry, MoveControlPoint, ApplyFreeFormPreset, BackToGridIfs,
+    AddControlPoint, RemoveControlPoint, MapOntoControlNet,
     // the volume ray march and the stored preview mode (edit/volume_render_edits.h)
-    SetVolumeDensityScale, SetVolumeDisplay, SetTransferFunction, SetVolumeRenderResolution, SetPreviewMode,
+    SetVolumeDisplay, SetTransferFunction, SetPreviewMode,
     // the construction tree (edit/construction_edits.h)
     AddConstructionLeaf, GroupConstructionNodes, SetConstructionOp, RemoveConstructionNode, ReloadConstructionLeaves,
     // any number by its parameter path (edit/parameter_edit.h)

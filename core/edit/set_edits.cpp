@@ -20,10 +20,6 @@ std::string SetSetFill::label() const { return fill == SetFill::Surface ? "Fill 
 
 void SetSetGrid::apply(Project& project) const { function.in(project).set.grid = grid; }
 
-void SetMedianRotation::apply(Project& project) const {
-  Function& f = function.in(project);
-  f.rotate = rotate;
-  if (axis) f.rotate_axis = *axis;
-}
+void SetMedianAxis::apply(Project& project) const { function.in(project).rotate_axis = axis; }
 
 }  // namespace gridifs

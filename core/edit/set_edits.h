@@ -58,14 +58,13 @@ struct SetSetGrid {
   std::string label() const { return "VDB grid name"; }
 };
 
-/// Degrees per unit of distance between the sets' centres (Sokolov & Gentil, §4.1) and, when
-/// given, the axis of that rotation.
-struct SetMedianRotation {
+/// The axis of the rotated median (Sokolov & Gentil, §4.1); its angle per unit of distance
+/// between the sets' centres is a number set by SetParameter ("functions[i].rotate").
+struct SetMedianAxis {
   FunctionRef function;
-  double rotate = 0.0;
-  std::optional<Vec3> axis;
+  Vec3 axis{0.0, 0.0, 1.0};
   void apply(Project& project) const;
-  std::string label() const { return "Median rotation"; }
+  std::string label() const { return "Median rotation axis"; }
 };
 
 }  // namespace gridifs

@@ -7,89 +7,6 @@
 #include "model/settings_tables.h"
 
 namespace gridifs {
-namespace {
-
-void* groupIn(Project& project, SettingGroup group, std::size_t light) {
-  ShadingSettings& shading = project.render.shading;
-  switch (group) {
-    case SettingGroup::Render:
-      return &project.render;
-    case SettingGroup::Flame:
-      return &project.render.flame;
-    case SettingGroup::Shading:
-      return &shading;
-    case SettingGroup::Light:
-      return &lightAt(project, light);
-    case SettingGroup::AmbientOcclusion:
-      return &shading.ao;
-    case SettingGroup::Fog:
-      return &shading.fog;
-    case SettingGroup::DepthOfField:
-      return &shading.dof;
-  }
-  return nullptr;
-}
-
-std::string groupPath(SettingGroup group, std::size_t light) {
-  switch (group) {
-    case SettingGroup::Render:
-      return "render";
-    case SettingGroup::Flame:
-      return "render.flame";
-    case SettingGroup::Shading:
-      return "render.shading";
-    case SettingGroup::Light:
-      return "render.shading.lights[" + std::to_string(light) + "]";
-    case SettingGroup::AmbientOcclusion:
-      return "render.shading.ao";
-    case SettingGroup::Fog:
-      return "render.shading.fog";
-    case SettingGroup::DepthOfField:
-      return "render.shading.dof";
-  }
-  return {};
-}
-
-/// The numeric field `key` of `group`; ModelError when the table has no such number.
-const SettingSpec& numberField(SettingGroup group, const std::string& key, std::size_t light) {
-  const SettingTable& table = settingTable(group);
-  const auto it =
-      std::find_if(table.fields.begin(), table.fields.end(), [&](const SettingSpec& s) { return key == s.key; });
-  if (it == table.fields.end()) throw ModelError(settingPath(groupPath(group, light), key), "no such setting");
-  if (it->type != SettingType::Number && it->type != SettingType::Integer && it->type != SettingType::Count &&
-      it->type != SettingType::OptionalNumber)
-    throw ModelError(settingPath(groupPath(group, light), key), "not a number setting");
-  return *it;
-}
-
-}  // namespace
-
-const SettingTable& settingTable(SettingGroup group) {
-  switch (group) {
-    case SettingGroup::Render:
-      return renderSettingsTable();
-    case SettingGroup::Flame:
-      return flameSettingsTable();
-    case SettingGroup::Shading:
-      return shadingSettingsTable();
-    case SettingGroup::Light:
-      return shadingLightTable();
-    case SettingGroup::AmbientOcclusion:
-      return ambientOcclusionTable();
-    case SettingGroup::Fog:
-      return fogTable();
-    case SettingGroup::DepthOfField:
-      return depthOfFieldTable();
-  }
-  return renderSettingsTable();
-}
-
-void SetSettingNumber::apply(Project& project) const {
-  const SettingSpec& spec = numberField(group, key, light);
-  spec.setNumber(groupIn(project, group, light), value);
-}
-
-std::string SetSettingNumber::label() const { return numberField(group, key, light).label; }
 
 void SetDisplayMode::apply(Project& project) const { project.render.mode = mode; }
 
@@ -142,8 +59,6 @@ void SetQuality::apply(Project& project) const { project.render.quality = qualit
 void SetPaletteKeys::apply(Project& project) const { project.render.flame.palette_keys = keys; }
 
 void SetCamera::apply(Project& project) const { project.camera = camera; }
-
-void SetCameraDistance::apply(Project& project) const { project.camera.distance = distance; }
 
 void SetTime::apply(Project& project) const { project.time = time; }
 

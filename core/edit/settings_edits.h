@@ -1,7 +1,7 @@
 #pragma once
-// Named edits of the project's settings: any number of a settings table (model/settings_tables.h),
-// the display mode, sample budget, background and palette, the flame's tone mapping, the camera,
-// the time and the timeline. The shading's lights, fog colour and aperture are in
+// Named edits of the project's settings (a single number of a settings table is set by
+// SetParameter, edit/parameter_edit.h): the display mode, sample budget, background and palette, the flame's tone
+// mapping, the camera, the time and the timeline. The shading's lights, fog colour and aperture are in
 // edit/shading_edits.h. Each edit is a plain value gathered in ProjectEdit (edit/project_edit.h).
 //
 // Thread-safety: plain values; apply() touches only the project given. apply() throws ModelError
@@ -14,32 +14,6 @@
 #include "model/settings_table.h"
 
 namespace gridifs {
-
-/// A settings group of the project that sliders edit through its table.
-enum class SettingGroup {
-  Render,            // "render"
-  Flame,             // "render.flame"
-  Shading,           // "render.shading"
-  Light,             // "render.shading.lights[i]"
-  AmbientOcclusion,  // "render.shading.ao"
-  Fog,               // "render.shading.fog"
-  DepthOfField,      // "render.shading.dof"
-};
-
-/// The table of `group`.
-const SettingTable& settingTable(SettingGroup group);
-
-/// Sets the number `key` of a settings group (a Number, Integer, Count or OptionalNumber field;
-/// integers are rounded) as its slider does. `light` picks the light of SettingGroup::Light.
-struct SetSettingNumber {
-  SettingGroup group = SettingGroup::Render;
-  std::string key;
-  double value = 0.0;
-  std::size_t light = 0;
-  void apply(Project& project) const;
-  /// The table's label of the field ("Gamma threshold"); throws ModelError for an unknown key.
-  std::string label() const;
-};
 
 /// How buffers become a picture: z-buffer, flame or shaded.
 struct SetDisplayMode {
@@ -112,13 +86,6 @@ struct SetCamera {
   Camera camera;
   void apply(Project& project) const;
   std::string label() const { return "Camera"; }
-};
-
-/// Only the camera's distance to its target (a zoom).
-struct SetCameraDistance {
-  double distance = 4.0;
-  void apply(Project& project) const;
-  std::string label() const { return "Zoom preview camera"; }
 };
 
 /// The current time in seconds (the playhead; the modeller applies it without an undo step).

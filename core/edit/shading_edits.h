@@ -1,6 +1,6 @@
 #pragma once
 // Named edits of the shaded display's lights, fog colour and depth of field (render.shading). The
-// numbers with sliders go through SetSettingNumber (edit/settings_edits.h). Each edit is a plain
+// numbers with sliders go through SetParameter (edit/parameter_edit.h). Each edit is a plain
 // value gathered in ProjectEdit (edit/project_edit.h).
 //
 // Thread-safety: plain values; apply() touches only the project given. apply() throws ModelError

@@ -14,11 +14,6 @@ const FlameVariation& knownVariation(const std::string& name) {
 
 }  // namespace
 
-void SetVariationWeight::apply(Project& project) const {
-  knownVariation(name);
-  function.in(project).variations[name] = weight;
-}
-
 void AddVariation::apply(Project& project) const {
   knownVariation(name);
   Function& f = function.in(project);
@@ -31,14 +26,6 @@ void RemoveVariation::apply(Project& project) const {
   Function& f = function.in(project);
   if (!f.variations.erase(name)) throw ModelError("variations." + name, "the function does not use variation " + name);
   for (const auto& [attribute, fallback] : v.params) f.variation_params.erase(attribute);
-}
-
-void SetVariationParameter::apply(Project& project) const {
-  int variation = -1, parameter = -1;
-  if (!findVariationParameter(attribute, variation, parameter))
-    throw ModelError("variation_params." + attribute,
-                     "\"" + attribute + "\" is not a parameter of any flame variation");
-  function.in(project).variation_params[attribute] = value;
 }
 
 void SetPostTransform::apply(Project& project) const { function.in(project).post = post; }

@@ -4,6 +4,7 @@
 
 #include "base/errors.h"
 #include "model/function_kind.h"
+#include "model/validation.h"
 
 namespace gridifs {
 namespace {
@@ -15,36 +16,13 @@ VolumeRenderSettings& volumeRender(Project& project) {
 
 }  // namespace
 
-void SetVolumeDensityScale::apply(Project& project) const {
-  volumeRender(project).density_scale = std::clamp(scale, kMinVolumeDensityScale, kMaxVolumeDensityScale);
-}
-
 void SetVolumeDisplay::apply(Project& project) const { volumeRender(project).display = display; }
 
 void SetTransferFunction::apply(Project& project) const {
-  if (stops.size() > std::size_t(kMaxTransferStops))
-    throw ModelError("render.volume.transfer", "more than " + std::to_string(kMaxTransferStops) + " stops");
-  for (std::size_t i = 0; i < stops.size(); ++i) {
-    const std::string path = "render.volume.transfer[" + std::to_string(i) + "]";
-    const TransferStop& s = stops[i];
-    if (!(s.density >= 0.0 && s.density <= 1.0))
-      throw ModelError(path + ".density", "expected a number between 0 and 1");
-    if (!(s.opacity >= 0.0 && s.opacity <= 1.0))
-      throw ModelError(path + ".opacity", "expected a number between 0 and 1");
-    for (int c = 0; c < 3; ++c)
-      if (!(s.color[c] >= 0.0 && s.color[c] <= 1000.0))
-        throw ModelError(path + ".color", "expected 3 numbers between 0 and 1000");
-    if (i > 0 && !(s.density > stops[i - 1].density))
-      throw ModelError(path + ".density", "the stops must be sorted by increasing density");
-  }
-  volumeRender(project).transfer = stops;
-}
-
-void SetVolumeRenderResolution::apply(Project& project) const {
-  if (resolution < kMinVolumeResolution || resolution > kMaxVolumeResolution)
-    throw ModelError("render.volume.resolution", "expected an integer between " + std::to_string(kMinVolumeResolution) +
-                                                     " and " + std::to_string(kMaxVolumeResolution));
-  volumeRender(project).resolution = resolution;
+  VolumeRenderSettings next = project.render.volume.value_or(VolumeRenderSettings{});
+  next.transfer = stops;
+  validateVolumeRender(next, "render.volume");
+  project.render.volume = std::move(next);
 }
 
 StoredPreviewMode previewModeOnOpen(const Project& project) {

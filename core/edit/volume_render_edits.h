@@ -1,20 +1,13 @@
 #pragma once
-// Named edits of "render.volume" (the volume ray march: density scale, display, transfer
-// function, resolution) and of "view" (the preview mode the project opens in), and the rule
-// that picks the preview mode a project opens in. See edit/project_edit.h.
+// Named edits of "render.volume" (the volume ray march: display and transfer function; its
+// numbers are set by SetParameter, edit/parameter_edit.h) and of "view" (the preview mode the project opens in), and
+// the rule that picks the preview mode a project opens in. See edit/project_edit.h.
 #include <string>
 #include <vector>
 
 #include "model/project.h"
 
 namespace gridifs {
-
-/// σ: extinction per world unit at opacity 1 (clamped to the file's range).
-struct SetVolumeDensityScale {
-  double scale = 24.0;
-  void apply(Project& project) const;
-  std::string label() const { return "Volume density scale"; }
-};
 
 /// "lit" or "xray".
 struct SetVolumeDisplay {
@@ -29,13 +22,6 @@ struct SetTransferFunction {
   std::vector<TransferStop> stops;
   void apply(Project& project) const;
   std::string label() const { return "Volume transfer function"; }
-};
-
-/// N of the N³ volume `gridifs render --mode volume` computes (16..512).
-struct SetVolumeRenderResolution {
-  int resolution = 128;
-  void apply(Project& project) const;
-  std::string label() const { return "Volume render resolution"; }
 };
 
 /// "view.preview_mode": the modeller applies it without an undo step when the artist switches the

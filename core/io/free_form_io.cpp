@@ -2,7 +2,9 @@
 
 #include <cmath>
 
+#include "io/settings_json.h"
 #include "model/free_form.h"
+#include "model/settings_tables.h"
 
 namespace gridifs::free_form_io {
 namespace {
@@ -104,11 +106,8 @@ ordered_json writeMatrixFunction(const Function& fn) {
   o["name"] = fn.name;
   o["kind"] = functionKindName(fn.kind);
   o["matrix"] = fn.matrix;
-  o["weight"] = fn.weight;
-  o["color"] = ordered_json::array({fn.color.x, fn.color.y, fn.color.z});
-  o["palette_index"] = fn.palette_index;
-  o["color_speed"] = fn.color_speed;
-  o["muted"] = fn.muted;
+  for (const char* key : {"weight", "color", "palette_index", "color_speed", "muted"})
+    writeSettingField(functionTable().field(key), &fn, o);
   return o;
 }
 

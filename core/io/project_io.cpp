@@ -34,13 +34,6 @@ using ordered_json = nlohmann::ordered_json;
 
 using namespace json_read;
 
-double number(const json& obj, const char* key, const std::string& path, double fallback,
-              double lo = -limits::kMaxCoordinate, double hi = limits::kMaxCoordinate) {
-  auto it = obj.find(key);
-  if (it == obj.end()) return fallback;
-  return readNumber(*it, join(path, key), lo, hi);
-}
-
 bool boolean(const json& obj, const char* key, const std::string& path, bool fallback) {
   auto it = obj.find(key);
   return it == obj.end() ? fallback : readBoolean(*it, join(path, key));
@@ -139,13 +132,7 @@ Function readFunction(const json& f, const std::string& path, std::size_t index)
     for (int d = 0; d < 3; ++d)
       fn.resolution[d] = int(readInteger((*it)[d], item(p, d), limits::kMinResolution, limits::kMaxResolution));
   }
-  fn.weight = number(f, "weight", path, 1.0, 0.0, 1e9);
-  fn.color = vec3(f, "color", path, Vec3{1.0}, 0.0, 1.0);
-  fn.palette_index = number(f, "palette_index", path, 0.0, 0.0, 1.0);
-  fn.color_speed = number(f, "color_speed", path, 0.5, 0.0, 1.0);
-  fn.muted = boolean(f, "muted", path, false);
-  if (auto it = f.find("sampling_error"); it != f.end() && !it->is_null())
-    fn.sampling_error = readNumber(*it, join(path, "sampling_error"), 0.0, limits::kMaxCoordinate);
+  readSettingFields(functionTable(), f, path, &fn);
   if (auto it = f.find("placement"); it != f.end()) {
     const std::string p = join(path, "placement");
     requireObject(*it, p);
@@ -218,12 +205,7 @@ ordered_json writeFunction(const Function& f) {
   ordered_json o;
   o["name"] = f.name;
   o["resolution"] = {f.resolution[0], f.resolution[1], f.resolution[2]};
-  o["weight"] = f.weight;
-  o["color"] = writeVec3(f.color);
-  o["palette_index"] = f.palette_index;
-  o["color_speed"] = f.color_speed;
-  o["muted"] = f.muted;
-  if (f.sampling_error) o["sampling_error"] = *f.sampling_error;
+  writeSettingFields(functionTable(), &f, o);
   o["placement"] = {{"translate", writeVec3(f.placement.translate)},
                     {"rotate", writeVec3(f.placement.rotate)},
                     {"scale", writeVec3(f.placement.scale)}};

@@ -129,8 +129,6 @@ void readSettingFields(const SettingTable& table, const json& object, const std:
   }
 }
 
-namespace {
-
 void writeSettingField(const SettingSpec& s, const void* group, ordered_json& object) {
   switch (s.type) {
     case SettingType::Number:
@@ -168,8 +166,6 @@ void writeSettingField(const SettingSpec& s, const void* group, ordered_json& ob
       throw std::logic_error(std::string("settings field ") + s.key + " has a type settings cannot hold");
   }
 }
-
-}  // namespace
 
 void writeSettingFields(const SettingTable& table, const void* group, ordered_json& object) {
   // Fields written only when changed come after the others, in table order, so a file that never

@@ -14,6 +14,9 @@ namespace gridifs {
 /// Fields without a noun are range-checked here; fields with one only need finite numbers, and
 /// validateSettingFields names their meaning afterwards. Throws ModelError with a path under `path`.
 void readSettingFields(const SettingTable& table, const nlohmann::json& object, const std::string& path, void* group);
+/// Appends one field of `group` to `object` (an optional number only when set), for writers whose
+/// keys interleave with others.
+void writeSettingField(const SettingSpec& field, const void* group, nlohmann::ordered_json& object);
 /// Appends the fields of `group` to `object` in table order, those written only when changed last.
 void writeSettingFields(const SettingTable& table, const void* group, nlohmann::ordered_json& object);
 

@@ -205,16 +205,14 @@ ordered_json writeSetFunction(const Function& fn) {
   ordered_json o;
   o["name"] = fn.name;
   o["kind"] = functionKindName(fn.kind);
-  o["weight"] = fn.weight;
+  writeSettingField(functionTable().field("weight"), &fn, o);
   if (fn.kind == FunctionKind::Median) {
     o["rotate"] = fn.rotate;
     if (fn.rotate_axis != Vec3{0.0, 0.0, 1.0}) o["rotate_axis"] = vec(fn.rotate_axis);
   }
   o["set"] = writeSet(fn.set);
-  o["color"] = vec(fn.color);
-  o["palette_index"] = fn.palette_index;
-  o["color_speed"] = fn.color_speed;
-  o["muted"] = fn.muted;
+  for (const char* key : {"color", "palette_index", "color_speed", "muted"})
+    writeSettingField(functionTable().field(key), &fn, o);
   return o;
 }
 

@@ -17,10 +17,6 @@ namespace gridifs::volume_render_io {
 VolumeRenderSettings readVolumeRender(const nlohmann::json& object, const std::string& path);
 nlohmann::ordered_json writeVolumeRender(const VolumeRenderSettings& settings);
 
-/// Checks settings made elsewhere (the modeller, command-line overrides) against the same rules
-/// as the reader. Throws ModelError with a JSON path under `path`.
-void validateVolumeRender(const VolumeRenderSettings& settings, const std::string& path);
-
 /// "view.preview_mode" of the root object, if present. Throws ModelError.
 std::optional<StoredPreviewMode> readPreviewMode(const nlohmann::json& root);
 /// Adds "view" to the root object when the project has a stored preview mode.

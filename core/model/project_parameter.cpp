@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "model/field_layer.h"
+#include "model/flame_variations.h"
 #include "model/settings_tables.h"
 
 namespace gridifs {
@@ -82,7 +83,8 @@ int keyIndex(std::string_view key, const char* const (&keys)[3]) {
 /// the parameter as it goes.
 class ParameterResolver {
  public:
-  ParameterResolver(const Project& project, const TrackPath& path) : project_(project), path_(path) {}
+  ParameterResolver(const Project& project, const TrackPath& path, ParameterScope scope)
+      : project_(project), path_(path), editing_(scope == ParameterScope::Edit) {}
 
   FoundParameter run() {
     FoundParameter found;
@@ -233,12 +235,13 @@ class ParameterResolver {
     return settingField(table, group, object, token());
   }
 
-  Lookup settingField(const SettingTable& table, Group group, const void* object, std::string_view key) {
+  /// `first`: the position of the table's first field among the object's members.
+  Lookup settingField(const SettingTable& table, Group group, const void* object, std::string_view key, int first = 0) {
     for (std::size_t i = 0; i < table.fields.size(); ++i) {
       const SettingSpec& s = table.fields[i];
       if (key != s.key) continue;
-      if (s.omitDefault && s.isDefault(object)) return Lookup::Missing;  // not written
-      position(int(i));
+      if (s.omitDefault && s.isDefault(object) && !editing_) return Lookup::Missing;  // not written
+      position(first + int(i));
       p_.group_ = group;
       p_.field_ = &s;
       p_.fragile_ |= s.omitDefault;
@@ -256,7 +259,7 @@ class ParameterResolver {
           return settingNumber(table, s, Storage::Double);
         }
         case SettingType::OptionalNumber:
-          if (!s.value<std::optional<double>>(object)) return Lookup::Missing;  // not written until set
+          if (!s.value<std::optional<double>>(object) && !editing_) return Lookup::Missing;  // not written until set
           p_.fragile_ = true;
           return settingNumber(table, s, Storage::Optional);
         case SettingType::Integer:
@@ -321,10 +324,27 @@ class ParameterResolver {
     }
     if (key == "shading") {
       // Written when it says something, so it comes and goes with the values inside.
-      if (!(r.mode == DisplayMode::Shaded || !(r.shading == ShadingSettings{}))) return Lookup::Missing;
+      if (!(r.mode == DisplayMode::Shaded || !(r.shading == ShadingSettings{})) && !editing_) return Lookup::Missing;
       position(fields + 2);
       p_.fragile_ = true;
       return shading();
+    }
+    if (key == "volume" && (r.volume || editing_)) {
+      position(fields + 3);
+      p_.fragile_ |= !r.volume;
+      static const VolumeRenderSettings defaults;
+      const VolumeRenderSettings& v = r.volume ? *r.volume : defaults;
+      if (end()) return Lookup::NotANumber;
+      const std::string_view field = token();
+      if (field == "transfer") {
+        position(int(volumeRenderTable().fields.size()));
+        if (end()) return Lookup::NotANumber;
+        const int stop = index(v.transfer.size());
+        if (stop < 0) return Lookup::Missing;
+        p_.a_ = stop;
+        return settingsObject(transferStopTable(), Group::TransferStop, &v.transfer[std::size_t(stop)]);
+      }
+      return settingField(volumeRenderTable(), Group::VolumeRender, &v, field);
     }
     return settingField(renderSettingsTable(), Group::Render, &r, key);
   }
@@ -447,23 +467,10 @@ class ParameterResolver {
     if (end()) return Lookup::NotANumber;
     const std::string_view key = token();
     // Positions follow readFunction.
-    if (key == "name" || key == "muted") return text();
-    if (key == "weight") {
-      position(1);
-      return number(Where::Weight, Reader::Number, Storage::Double, 0.0, 1e9);
-    }
-    if (key == "color") {
-      position(2);
-      return component(3, Where::Color, Reader::Number, 0.0, 1.0);
-    }
-    if (key == "palette_index") {
-      position(3);
-      return number(Where::PaletteIndex, Reader::Number, Storage::Double, 0.0, 1.0);
-    }
-    if (key == "color_speed") {
-      position(4);
-      return number(Where::ColorSpeed, Reader::Number, Storage::Double, 0.0, 1.0);
-    }
+    if (key == "name") return text();
+    // The numbers every kind holds (model/settings_tables.h), read after the resolution.
+    for (const SettingSpec& s : functionTable().fields)
+      if (key == s.key) return settingField(functionTable(), Group::Function, &fn, key, 1);
     switch (fn.kind) {
       case FunctionKind::Matrix:
         if (key == "kind") return text();
@@ -487,7 +494,8 @@ class ParameterResolver {
           position(13);
           return number(Where::MedianRotate, Reader::SetNumber, Storage::Double);
         }
-        if (key == "rotate_axis" && fn.kind == FunctionKind::Median && fn.rotate_axis != Vec3{0.0, 0.0, 1.0}) {
+        if (key == "rotate_axis" && fn.kind == FunctionKind::Median &&
+            (fn.rotate_axis != Vec3{0.0, 0.0, 1.0} || editing_)) {
           position(14);
           return component(3, Where::MedianRotateAxis, Reader::SetNumber, 0.0, 0.0);
         }
@@ -499,11 +507,6 @@ class ParameterResolver {
       position(0);
       return component(3, Where::Resolution, Reader::Integer, limits::kMinResolution, limits::kMaxResolution,
                        Storage::Int);
-    }
-    if (key == "sampling_error" && fn.sampling_error) {  // written when set
-      position(6);
-      p_.fragile_ = true;
-      return number(Where::SamplingError, Reader::Number, Storage::Optional, 0.0, kMaxCoordinate);
     }
     if (key == "placement") {
       position(7);
@@ -546,8 +549,14 @@ class ParameterResolver {
     if (end()) return values.empty() ? Lookup::Missing : Lookup::NotANumber;
     const std::string name(token());
     const auto it = values.find(name);
-    if (it == values.end()) return Lookup::Missing;
-    position(int(std::distance(values.begin(), it)));
+    if (it == values.end()) {
+      // An edit may set a variation's parameter the file does not hold yet (it has its default).
+      int variation = -1, parameter = -1;
+      if (!(editing_ && where == Where::VariationParam && findVariationParameter(name, variation, parameter)))
+        return Lookup::Missing;
+      p_.fragile_ = true;
+    }
+    position(int(std::distance(values.begin(), values.lower_bound(name))));
     p_.key_ = name;
     // As io/variation_io reads them (json_read::readFinite): any number of magnitude at most 1e6.
     return number(where, Reader::Finite, Storage::Double);
@@ -726,6 +735,8 @@ class ParameterResolver {
 
   const Project& project_;
   const TrackPath& path_;
+  /// ParameterScope::Edit: numbers the file leaves out while they keep their defaults count too.
+  bool editing_ = false;
   std::size_t at_ = 0;
   std::size_t depth_ = 0;
   ProjectParameter p_;
@@ -738,8 +749,8 @@ ParameterSpan ProjectParameter::span() const {
   return {};
 }
 
-FoundParameter findParameter(const Project& project, const TrackPath& path) {
-  return ParameterResolver(project, path).run();
+FoundParameter findParameter(const Project& project, const TrackPath& path, ParameterScope scope) {
+  return ParameterResolver(project, path, scope).run();
 }
 
 // ---- access ----------------------------------------------------------------------------------
@@ -750,6 +761,9 @@ void* ProjectParameter::locate(Project& project) const {
     void* group = nullptr;
     ShadingSettings& shading = project.render.shading;
     switch (group_) {
+      case Group::Function:
+        group = f_ < 0 ? &*project.final_function : &project.functions[std::size_t(f_)];
+        break;
       case Group::Camera:
         group = &project.camera;
         break;
@@ -761,6 +775,14 @@ void* ProjectParameter::locate(Project& project) const {
         break;
       case Group::Flame:
         group = &project.render.flame;
+        break;
+      case Group::VolumeRender:
+        // An edit may set a number of "render.volume" before the project has one (its defaults).
+        if (!project.render.volume) project.render.volume.emplace();
+        group = &*project.render.volume;
+        break;
+      case Group::TransferStop:
+        group = &project.render.volume->transfer[std::size_t(a_)];
         break;
       case Group::Light:
         group = &shading.lights[std::size_t(a_)];
@@ -840,16 +862,6 @@ void* ProjectParameter::locate(Project& project) const {
   switch (where_) {
     case Where::Resolution:
       return &fn.resolution[std::size_t(c_)];
-    case Where::Weight:
-      return &fn.weight;
-    case Where::Color:
-      return vectorComponent(fn.color);
-    case Where::PaletteIndex:
-      return &fn.palette_index;
-    case Where::ColorSpeed:
-      return &fn.color_speed;
-    case Where::SamplingError:
-      return &fn.sampling_error;
     case Where::Placement:
       return vectorComponent(b_ == 0 ? fn.placement.translate : b_ == 1 ? fn.placement.rotate : fn.placement.scale);
     case Where::MatrixEntry:
@@ -861,7 +873,7 @@ void* ProjectParameter::locate(Project& project) const {
     case Where::VariationWeight:
       return &fn.variations.at(key_);
     case Where::VariationParam:
-      return &fn.variation_params.at(key_);
+      return &fn.variation_params[key_];  // an edit adds a parameter the function lacks
     case Where::PostPlacement: {
       Placement& p = fn.post->placement;
       return vectorComponent(b_ == 0 ? p.translate : b_ == 1 ? p.rotate : p.scale);
@@ -904,6 +916,18 @@ void* ProjectParameter::fieldComponent(void* field) const {
 }
 
 double ProjectParameter::get(const Project& project) const {
+  // A project without "render.volume" reads its defaults (locate() would add one).
+  if (where_ == Where::Setting && group_ == Group::VolumeRender && !project.render.volume) {
+    static const VolumeRenderSettings defaults;
+    return field_->number(&defaults, field_->type == SettingType::Vector ? c_ : 0);
+  }
+  // A variation parameter the function does not hold yet reads its default (locate() would add it).
+  if (where_ == Where::VariationParam) {
+    const Function& fn = f_ < 0 ? *project.final_function : project.functions[std::size_t(f_)];
+    int variation = -1, parameter = -1;
+    if (!fn.variation_params.count(key_) && findVariationParameter(key_, variation, parameter))
+      return flameVariations()[std::size_t(variation)].params[std::size_t(parameter)].second;
+  }
   // locate() hands out a pointer into the project; here it is only read.
   const void* slot = locate(const_cast<Project&>(project));
   switch (storage_) {
@@ -1014,6 +1038,9 @@ std::string ProjectParameter::path() const {
   if (where_ == Where::Setting) {
     std::string group;
     switch (group_) {
+      case Group::Function:
+        group = f_ < 0 ? std::string("final") : item("functions", f_);
+        break;
       case Group::Camera:
         group = "camera";
         break;
@@ -1025,6 +1052,12 @@ std::string ProjectParameter::path() const {
         break;
       case Group::Flame:
         group = "render.flame";
+        break;
+      case Group::VolumeRender:
+        group = "render.volume";
+        break;
+      case Group::TransferStop:
+        group = item("render.volume.transfer", a_);
         break;
       case Group::Light:
         group = item("render.shading.lights", a_);
@@ -1104,16 +1137,6 @@ std::string ProjectParameter::path() const {
   switch (where_) {
     case Where::Resolution:
       return item(fn + ".resolution", c_);
-    case Where::Weight:
-      return fn + ".weight";
-    case Where::Color:
-      return item(fn + ".color", c_);
-    case Where::PaletteIndex:
-      return fn + ".palette_index";
-    case Where::ColorSpeed:
-      return fn + ".color_speed";
-    case Where::SamplingError:
-      return fn + ".sampling_error";
     case Where::Placement:
       return item(fn + ".placement." + kPlacementKeys[b_], c_);
     case Where::MatrixEntry:

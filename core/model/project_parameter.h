@@ -67,7 +67,7 @@ class ProjectParameter {
   friend class ParameterResolver;
 
   enum class Where : std::uint8_t {
-    Setting,           // field `setting` of settings group `group` (light `a`), component `c`
+    Setting,           // field `setting` of settings group `group` (light `a`, function `f`), component `c`
     OpParam,           // function `f`, operation `o`: `param`, component `c`
     CalculatorVar,     // ... `param` (vars): variable `a`, `b` 0 value, 1 min, 2 max
     MorphPoint,        // ... `param` (pairs): pair `a`, `b` 0 from, 1 to, component `c`
@@ -76,11 +76,6 @@ class ProjectParameter {
     OpCenter,          // ... the center point, component `c`
     SelectionBound,    // ... selection box `a`, axis `b` (i, j, k), `c` 0 first, 1 last
     Resolution,        // function `f`: resolution `c`
-    Weight,            // function `f`
-    Color,             // function `f`: component `c`
-    PaletteIndex,      // function `f`
-    ColorSpeed,        // function `f`
-    SamplingError,     // function `f`
     Placement,         // function `f`: `b` 0 translate, 1 rotate, 2 scale, component `c`
     MatrixEntry,       // function `f`: row `a`, column `c`
     MedianRotate,      // function `f`
@@ -107,7 +102,22 @@ class ProjectParameter {
     Version,
   };
   /// The settings groups (model/settings_tables.h).
-  enum class Group : std::uint8_t { Camera, Stereo, Render, Flame, Light, Shading, Ao, Fog, Dof, Animation, Volume };
+  enum class Group : std::uint8_t {
+    Function,
+    VolumeRender,
+    TransferStop,
+    Camera,
+    Stereo,
+    Render,
+    Flame,
+    Light,
+    Shading,
+    Ao,
+    Fog,
+    Dof,
+    Animation,
+    Volume
+  };
   /// How the file reader checks the number; each has its own words.
   enum class Reader : std::uint8_t {
     Number,        // in [lo, hi]
@@ -164,7 +174,18 @@ struct FoundParameter {
   ProjectParameter parameter;  // when lookup is Number
 };
 
+/// Which numbers a path may name.
+enum class ParameterScope {
+  /// What the project file holds now (keyframe tracks, whose keys must survive a save).
+  File,
+  /// Also the numbers the file leaves out while they keep their defaults: a field written only
+  /// when changed, an optional number not yet set, the shading of a project not shaded yet, a
+  /// median's rotation axis. An edit sets them as a panel would (SetParameter).
+  Edit,
+};
+
 /// Looks `path` up in `project`. Never throws.
-FoundParameter findParameter(const Project& project, const TrackPath& path);
+FoundParameter findParameter(const Project& project, const TrackPath& path,
+                             ParameterScope scope = ParameterScope::File);
 
 }  // namespace gridifs

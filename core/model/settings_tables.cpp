@@ -295,7 +295,12 @@ const SettingTableOf<FlameSettings>& flameSettingsTable() {
                 .sliderMin = -1.0,
                 .sliderMax = 10.0,
                 .format = "%.2f"}),
-           setting<&FlameSettings::supersample>({.key = "supersample", .label = "Supersample", .min = 1, .max = 8}),
+           setting<&FlameSettings::supersample>(
+               {.key = "supersample",
+                .label = "Supersample",
+                .tooltip = "The histogram at this many times the image size in each direction, filtered down",
+                .min = 1,
+                .max = 8}),
            setting<&FlameSettings::estimator_radius>(
                {.key = "estimator_radius",
                 .label = "Estimator radius",
@@ -306,11 +311,21 @@ const SettingTableOf<FlameSettings>& flameSettingsTable() {
                 .sliderMax = 20.0,
                 .format = "%.1f px"}),
            setting<&FlameSettings::estimator_minimum>(
-               {.key = "estimator_minimum", .label = "Estimator minimum", .min = 0.0, .max = 64.0}),
-           setting<&FlameSettings::estimator_curve>(
-               {.key = "estimator_curve", .label = "Estimator curve", .min = 0.05, .max = 10.0}),
-           setting<&FlameSettings::filter_radius>(
-               {.key = "filter_radius", .label = "Filter radius", .min = 0.0, .max = 10.0}),
+               {.key = "estimator_minimum",
+                .label = "Estimator minimum",
+                .tooltip = "Narrowest kernel radius in pixels, used where the density is highest",
+                .min = 0.0,
+                .max = 64.0}),
+           setting<&FlameSettings::estimator_curve>({.key = "estimator_curve",
+                                                     .label = "Estimator curve",
+                                                     .tooltip = "How fast the kernel narrows as the density grows",
+                                                     .min = 0.05,
+                                                     .max = 10.0}),
+           setting<&FlameSettings::filter_radius>({.key = "filter_radius",
+                                                   .label = "Filter radius",
+                                                   .tooltip = "Gaussian filter radius in pixels",
+                                                   .min = 0.0,
+                                                   .max = 10.0}),
            setting<&FlameSettings::density_unit>({.key = "density_unit", .min = 1e-6, .max = 1e6, .omitDefault = true}),
            // Written only when changed, so files saved before these existed save byte for byte.
            setting<&FlameSettings::hue>(
@@ -585,6 +600,87 @@ const SettingTableOf<VolumeSettings>& volumeSettingsTable() {
        },
        nullptr,
        SettingWords::IntegerRange}};
+  return table;
+}
+
+const SettingTableOf<Function>& functionTable() {
+  static const SettingTableOf<Function> table{{{
+      setting<&Function::weight>({.key = "weight",
+                                  .label = "Weight",
+                                  .tooltip = "Probability of choosing this function is proportional to its weight",
+                                  .min = 0.0,
+                                  .max = 1e9,
+                                  .speed = 0.01}),
+      setting<&Function::color>({.key = "color",
+                                 .label = "Color",
+                                 .tooltip = "The function's colour in the z-buffer display",
+                                 .min = 0.0,
+                                 .max = 1.0}),
+      setting<&Function::palette_index>(
+          {.key = "palette_index",
+           .label = "Palette index",
+           .tooltip = "Structural color coordinate c_i for flame-style coloring (Draves & Reckase 2003, §5)",
+           .min = 0.0,
+           .max = 1.0,
+           .sliderMin = 0.0,
+           .sliderMax = 1.0}),
+      setting<&Function::color_speed>(
+          {.key = "color_speed",
+           .label = "Color speed",
+           .tooltip = "How far each point's colour moves towards this function's palette index",
+           .min = 0.0,
+           .max = 1.0,
+           .sliderMin = 0.0,
+           .sliderMax = 1.0}),
+      setting<&Function::muted>(
+          {.key = "muted", .label = "Muted", .tooltip = "A muted function takes no part in the IFS"}),
+      // Set by flame import when a map is sampled onto the grid: the largest distance between
+      // them at cell centres, written only when set.
+      setting<&Function::sampling_error>({.key = "sampling_error",
+                                          .label = "Sampling error",
+                                          .tooltip = "The largest distance between the grid and the map it samples",
+                                          .min = 0.0,
+                                          .max = limits::kMaxCoordinate}),
+  }}};
+  return table;
+}
+
+const ChoiceNames kVolumeDisplays{{"lit", "xray"}, {"Lit", "X-ray"}};
+
+const SettingTableOf<VolumeRenderSettings>& volumeRenderTable() {
+  static const SettingTableOf<VolumeRenderSettings> table{{{
+      setting<&VolumeRenderSettings::resolution>(
+          {.key = "resolution",
+           .label = "Volume resolution",
+           .tooltip = "Voxels per axis of the density volume the ray march reads",
+           .min = kMinVolumeResolution,
+           .max = kMaxVolumeResolution}),
+      setting<&VolumeRenderSettings::density_scale>(
+          {.key = "density_scale",
+           .label = "Volume density scale",
+           .tooltip = "Density scale: how much light the densest voxels absorb per unit of length (higher: thicker, "
+                      "darker shadows)",
+           .min = kMinVolumeDensityScale,
+           .max = kMaxVolumeDensityScale,
+           .sliderMin = 0.5,
+           .sliderMax = 500.0,
+           .format = "density %.3g",
+           .logarithmic = true}),
+      setting<&VolumeRenderSettings::display>(
+          {.key = "display",
+           .label = "Volume display",
+           .tooltip = "Lit (emission and absorption, shadowed) or X-ray (summed density)",
+           .choices = &kVolumeDisplays}),
+  }}};
+  return table;
+}
+
+const SettingTableOf<TransferStop>& transferStopTable() {
+  static const SettingTableOf<TransferStop> table{{{
+      setting<&TransferStop::density>({.key = "density", .label = "Density", .min = 0.0, .max = 1.0}),
+      setting<&TransferStop::color>({.key = "color", .label = "Color", .min = 0.0, .max = 1000.0}),
+      setting<&TransferStop::opacity>({.key = "opacity", .label = "Opacity", .min = 0.0, .max = 1.0}),
+  }}};
   return table;
 }
 

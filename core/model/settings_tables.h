@@ -1,13 +1,19 @@
 #pragma once
-// The settings groups of a project, one table each (model/settings_table.h): the camera, "render",
-// "render.flame", the parts of "render.shading", "animation" and "volume". Reading, writing, validation and the panels'
-// sliders all take their keys, ranges, labels and tooltips from here.
+// The settings groups of a project, one table each (model/settings_table.h): a function's own numbers, the camera,
+// "render", "render.flame", the parts of "render.shading", "animation" and "volume". Reading, writing, validation and
+// the panels' sliders all take their keys, ranges, labels and tooltips from here.
 //
 // Thread-safety: each table is built once (thread-safe static) and never changes.
 #include "model/project.h"
 #include "model/settings_table.h"
 
 namespace gridifs {
+
+/// The numbers every function holds, whatever its kind ("functions[i]" and "final"): its weight,
+/// its colour, its palette index and colour speed (Draves & Reckase 2003, §5), whether it is
+/// muted, and the sampling error of a map sampled onto its grid. A function's other fields (its
+/// grid, operations, matrix or set) are described by the operation table and the function's kind.
+const SettingTableOf<Function>& functionTable();
 
 /// The widest field of view of a perspective or orthographic camera, in degrees.
 inline constexpr double kMaxFlatFov = 170.0;
@@ -31,6 +37,11 @@ const SettingTableOf<AmbientOcclusionSettings>& ambientOcclusionTable();
 const SettingTableOf<FogSettings>& fogTable();
 /// "render.shading.dof".
 const SettingTableOf<DepthOfFieldSettings>& depthOfFieldTable();
+
+/// "render.volume": the volume ray march (its transfer function is a list of stops).
+const SettingTableOf<VolumeRenderSettings>& volumeRenderTable();
+/// One entry of "render.volume.transfer": a density and the colour and opacity it maps to.
+const SettingTableOf<TransferStop>& transferStopTable();
 
 /// "animation": the timeline (fps, start, end, loop) and the motion-blur shutter.
 const SettingTableOf<AnimationSettings>& animationSettingsTable();

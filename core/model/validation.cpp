@@ -34,6 +34,19 @@ void validateRenderSettings(const RenderSettings& r, const std::string& path) {
   validateSettings(renderSettingsTable(), r, path);
 }
 
+void validateVolumeRender(const VolumeRenderSettings& s, const std::string& path) {
+  validateSettings(volumeRenderTable(), s, path);
+  const std::string transfer = settingPath(path, "transfer");
+  if (s.transfer.size() > std::size_t(kMaxTransferStops))
+    fail(transfer, "more than " + std::to_string(kMaxTransferStops) + " stops");
+  for (std::size_t i = 0; i < s.transfer.size(); ++i) {
+    const std::string p = item(transfer, i);
+    validateSettings(transferStopTable(), s.transfer[i], p);
+    if (i > 0 && !(s.transfer[i].density > s.transfer[i - 1].density))
+      fail(p + ".density", "the stops must be sorted by increasing density");
+  }
+}
+
 namespace {
 
 // Condensation and median functions (Sokolov & Gentil, §3.1–3.2) and the "volume" block.
@@ -75,6 +88,7 @@ void validate(const Project& project, const Project* trusted) {
   validateRenderSettings(project.render, "render");
   validateFlameSettings(project.render.flame, "render.flame");
   validateShadingSettings(project.render.shading, "render.shading");
+  if (project.render.volume) validateVolumeRender(*project.render.volume, "render.volume");
   if (project.functions.empty()) fail("functions", "the IFS needs at least one function");
   if (project.functions.size() > std::size_t(limits::kMaxFunctions))
     fail("functions", "more than " + std::to_string(limits::kMaxFunctions) + " functions");
@@ -85,7 +99,7 @@ void validate(const Project& project, const Project* trusted) {
       if (fn.resolution[d] < limits::kMinResolution || fn.resolution[d] > limits::kMaxResolution)
         fail(item(join(path, "resolution"), d), "expected an integer between 2 and 128");
     totalNodes += std::int64_t(fn.resolution[0]) * fn.resolution[1] * fn.resolution[2];
-    if (!(fn.weight >= 0.0) || !std::isfinite(fn.weight)) fail(join(path, "weight"), "expected a non-negative weight");
+    validateSettings(functionTable(), fn, path);
     if (fn.hasVariationStage() && fn.kind != FunctionKind::Grid)
       fail(join(path, "variations"), "flame variations apply to grid functions only");
     try {

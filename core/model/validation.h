@@ -19,6 +19,8 @@ void validateFlameSettings(const FlameSettings& settings, const std::string& pat
 /// The camera's and the render settings' ranges, the same the project reader accepts.
 void validateCamera(const Camera& camera, const std::string& path);
 void validateRenderSettings(const RenderSettings& settings, const std::string& path);
+/// "render.volume": its fields' ranges, at most kMaxTransferStops stops, sorted by density.
+void validateVolumeRender(const VolumeRenderSettings& settings, const std::string& path);
 
 /// Checks limits and the semantic rules. Throws ModelError with a JSON path
 /// (`functions[2].ops[0].k`).

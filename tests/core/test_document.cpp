@@ -30,7 +30,7 @@ TEST(Document, RandomEditSequencesUndoAndRedoExactly) {
       } else if (action < 6) {
         const double w = sampler.real(0.1, 2);
         doc.beginGesture("weight drag");
-        for (int k = 0; k < 5; ++k) doc.updateGesture(SetFunctionWeight{FunctionRef(0), w + k});
+        for (int k = 0; k < 5; ++k) doc.updateGesture(SetParameter{"functions[0].weight", w + k});
         doc.endGesture();  // one undo step for the whole drag
         states.resize(cursor + 1);
         states.push_back(doc.project());
@@ -117,7 +117,7 @@ TEST(Document, UndoHistoryStaysUnderItsMemoryCapByDroppingTheOldestSteps) {
   ASSERT_LT(edits, int(Document::kMaxUndoSteps)) << "the memory cap, not the step cap, must bind";
 
   Document doc(big);
-  for (int e = 1; e <= edits; ++e) doc.apply(SetFunctionWeight{FunctionRef(0), 1.0 + e});
+  for (int e = 1; e <= edits; ++e) doc.apply(SetParameter{"functions[0].weight", 1.0 + e});
   EXPECT_LE(doc.historyBytes(), Document::kMaxHistoryBytes);
   EXPECT_GT(doc.historyBytes(), Document::kMaxHistoryBytes - 2 * snapshot);
   int undone = 0;

@@ -112,3 +112,49 @@ TEST(ParameterPaths, ListsEveryNumberOfTheFileThatIsAParameter) {
 
 }  // namespace
 }  // namespace gridifs
+
+namespace gridifs {
+namespace {
+
+// The numbers a file leaves out while they keep their defaults are set by an edit as a panel
+// sets them: a variation's parameter, a setting written only when changed, the shading of a
+// project that is not shaded, the volume render of a project without one. Keyframe tracks do not
+// see them until the file holds them.
+TEST(SetParameter, ReachesTheDefaultsTheFileLeavesOut) {
+  Project p = twisted();
+  p.functions[0].variations["julian"] = 1.0;
+  const std::string power = "functions[0].variation_params.julian_power";
+  EXPECT_EQ(parameterValue(p, power), 1.0);  // flam3's default
+  EXPECT_EQ(findParameter(p, *TrackPath::parse(power)).lookup, ParameterLookup::Missing);
+  applyEdit(p, SetParameter{power, 3.0});
+  EXPECT_EQ(p.functions[0].variation_params.at("julian_power"), 3.0);
+  EXPECT_EQ(findParameter(p, *TrackPath::parse(power)).lookup, ParameterLookup::Number);
+  applyEdit(p, SetParameter{"functions[0].variations.julian", 0.25});
+  EXPECT_EQ(p.functions[0].variations.at("julian"), 0.25);
+  EXPECT_EQ(editMessage(p, "functions[0].variation_params.no_such_parameter", 1.0),
+            "functions[0].variation_params.no_such_parameter: names nothing this project holds");
+
+  EXPECT_FALSE(p.render.volume);
+  EXPECT_EQ(parameterValue(p, "render.volume.density_scale"), VolumeRenderSettings{}.density_scale);
+  applyEdit(p, SetParameter{"render.volume.density_scale", 5.0});
+  ASSERT_TRUE(p.render.volume);
+  EXPECT_EQ(p.render.volume->density_scale, 5.0);
+  EXPECT_EQ(editMessage(p, "render.volume.resolution", 8.0), readerMessage(p, "/render/volume/resolution", 8.0));
+
+  applyEdit(p, SetParameter{"render.flame.hue", 0.5});  // written only when changed
+  EXPECT_EQ(p.render.flame.hue, 0.5);
+  applyEdit(p, SetParameter{"render.shading.fog.density", 0.3});
+  EXPECT_EQ(p.render.shading.fog.density, 0.3);
+}
+
+// The timeline's rule across its fields holds for an edit of one of them, as reading does.
+TEST(SetParameter, KeepsTheTimelinesRule) {
+  Project p = twisted();
+  p.animation = AnimationSettings{};
+  EXPECT_EQ(editMessage(p, "animation.start", 10.0), readerMessage(p, "/animation/start", 10.0));
+  EXPECT_NE(editMessage(p, "animation.start", 10.0), "accepted");
+  EXPECT_EQ(editMessage(p, "animation.start", 1.0), "accepted");
+}
+
+}  // namespace
+}  // namespace gridifs

@@ -110,10 +110,10 @@ TEST(ProjectEdits, FunctionFieldEditsSetWhatTheyName) {
   EXPECT_EQ(moved.functions[1].placement.scale, Vec3(0.5));  // only the translation
   EXPECT_EQ(applied(p, SetInterpolation{last, LatticeInterpolation::Bezier}).final_function->interpolation,
             LatticeInterpolation::Bezier);
-  EXPECT_DOUBLE_EQ(applied(p, SetFunctionWeight{f2, 2.5}).functions[1].weight, 2.5);
+  EXPECT_DOUBLE_EQ(applied(p, SetParameter{f2.path() + ".weight", 2.5}).functions[1].weight, 2.5);
   EXPECT_EQ(applied(p, SetFunctionColor{f2, Vec3(0.1)}).functions[1].color, Vec3(0.1));
-  EXPECT_DOUBLE_EQ(applied(p, SetPaletteIndex{f2, 0.75}).functions[1].palette_index, 0.75);
-  EXPECT_DOUBLE_EQ(applied(p, SetColorSpeed{f2, 0.125}).functions[1].color_speed, 0.125);
+  EXPECT_DOUBLE_EQ(applied(p, SetParameter{f2.path() + ".palette_index", 0.75}).functions[1].palette_index, 0.75);
+  EXPECT_DOUBLE_EQ(applied(p, SetParameter{f2.path() + ".color_speed", 0.125}).functions[1].color_speed, 0.125);
   EXPECT_EQ(applied(p, AddSymmetry{3}).functions.size(), 4u);  // two rotations by 120° and 240°
 
   // The labels are the modeller's undo steps.
@@ -202,16 +202,18 @@ TEST(ProjectEdits, MoveNodesExtendsOneTrailingNodesOperation) {
 
 TEST(ProjectEdits, SettingEditsGoThroughTheTables) {
   const Project p = defaultNewProject();
-  EXPECT_DOUBLE_EQ(applied(p, SetSettingNumber{SettingGroup::Flame, "gamma", 3.5}).render.flame.gamma, 3.5);
-  EXPECT_EQ((SetSettingNumber{SettingGroup::Flame, "gamma", 3.5}).label(), flameSettingsTable().field("gamma").label);
-  EXPECT_DOUBLE_EQ(applied(p, SetSettingNumber{SettingGroup::Render, "depth_cue", 0.25}).render.depth_cue, 0.25);
+  // A number of a settings table is set by its path, even while the file leaves it out: the
+  // shading of a project that is not shaded yet, a focus distance not set yet.
+  EXPECT_DOUBLE_EQ(applied(p, SetParameter{"render.flame.gamma", 3.5}).render.flame.gamma, 3.5);
+  EXPECT_EQ((SetParameter{"render.flame.gamma", 3.5, flameSettingsTable().field("gamma").label}).label(),
+            flameSettingsTable().field("gamma").label);
+  EXPECT_DOUBLE_EQ(applied(p, SetParameter{"render.depth_cue", 0.25}).render.depth_cue, 0.25);
   EXPECT_DOUBLE_EQ(
-      applied(p, SetSettingNumber{SettingGroup::Light, "intensity", 0.7, 0}).render.shading.lights[0].intensity, 0.7);
-  EXPECT_EQ(
-      applied(p, SetSettingNumber{SettingGroup::AmbientOcclusion, "directions", 5.6}).render.shading.ao.directions,
-      6);  // integers are rounded
-  EXPECT_DOUBLE_EQ(*applied(p, SetSettingNumber{SettingGroup::DepthOfField, "focus", 3.0}).render.shading.dof.focus,
-                   3.0);
+      applied(p, SetParameter{"render.shading.lights[0].intensity", 0.7}).render.shading.lights[0].intensity, 0.7);
+  EXPECT_EQ(applied(p, SetParameter{"render.shading.ao.directions", 6}).render.shading.ao.directions, 6);
+  EXPECT_THROW(applied(p, SetParameter{"render.shading.ao.directions", 5.6}), ModelError);  // a whole number
+  EXPECT_DOUBLE_EQ(*applied(p, SetParameter{"render.shading.dof.focus", 3.0}).render.shading.dof.focus, 3.0);
+  EXPECT_EQ(applied(p, SetParameter{"render.volume.resolution", 64}).render.volume->resolution, 64);
 
   EXPECT_EQ(applied(p, SetDisplayMode{DisplayMode::Shaded}).render.mode, DisplayMode::Shaded);
   EXPECT_EQ((SetDisplayMode{DisplayMode::Flame}).label(), "Flame display");
@@ -223,7 +225,7 @@ TEST(ProjectEdits, SettingEditsGoThroughTheTables) {
       applied(applied(p, SetDensityEstimation{false}), SetDensityEstimation{true}).render.flame.estimator_radius,
       FlameSettings{}.estimator_radius);
 
-  Project toned = applied(applied(p, SetPalette{"flam3:3"}), SetSettingNumber{SettingGroup::Flame, "gamma", 2.0});
+  Project toned = applied(applied(p, SetPalette{"flam3:3"}), SetParameter{"render.flame.gamma", 2.0});
   applyEdit(toned, ResetFlameSettings{});
   EXPECT_EQ(toned.render.flame.palette, "flam3:3");  // the palette stays
   EXPECT_DOUBLE_EQ(toned.render.flame.gamma, FlameSettings{}.gamma);
@@ -231,7 +233,7 @@ TEST(ProjectEdits, SettingEditsGoThroughTheTables) {
   Camera cam;
   cam.yaw = 90.0;
   EXPECT_EQ(applied(p, SetCamera{cam}).camera, cam);
-  EXPECT_DOUBLE_EQ(applied(p, SetCameraDistance{7.0}).camera.distance, 7.0);
+  EXPECT_DOUBLE_EQ(applied(p, SetParameter{"camera.distance", 7.0}).camera.distance, 7.0);
   EXPECT_DOUBLE_EQ(applied(p, SetTime{1.5}).time, 1.5);
   AnimationSettings backwards;
   backwards.start = 3.0;
@@ -278,7 +280,7 @@ TEST(ProjectEdits, MatrixAndSetEdits) {
   Project p = twoFunctions();
   applyEdit(p, SetTransitionPreset{TransitionPreset::NoRepeats});
   EXPECT_EQ(p.transitions, (std::vector<std::vector<double>>{{0, 1}, {1, 0}}));
-  EXPECT_DOUBLE_EQ(applied(p, SetTransitionWeight{0, 0, 0.5}).transitions[0][0], 0.5);
+  EXPECT_DOUBLE_EQ(applied(p, SetParameter{"transitions[0][0]", 0.5}).transitions[0][0], 0.5);
   EXPECT_TRUE(applied(p, RemoveTransitions{}).transitions.empty());
 
   Project freeForm = applied(applied(p, AddFinalFunction{}), ApplyFreeFormPreset{FreeFormPreset::BezierCurve, {}});
@@ -305,14 +307,13 @@ TEST(ProjectEdits, MatrixAndSetEdits) {
   EXPECT_EQ(applied(mesh, SetSetFill{s, SetFill::Surface}).functions[1].set.fill, SetFill::Surface);
   EXPECT_EQ((SetSetFill{s, SetFill::Surface}).label(), "Fill surface");
   EXPECT_EQ(applied(mesh, SetSetGrid{s, "density"}).functions[1].set.grid, "density");
-  EXPECT_DOUBLE_EQ(applied(sets, SetMedianRotation{s, 15.0, std::nullopt}).functions[1].rotate, 15.0);
-  EXPECT_EQ(applied(sets, SetMedianRotation{s, 15.0, Vec3{1.0, 0.0, 0.0}}).functions[1].rotate_axis,
-            (Vec3{1.0, 0.0, 0.0}));
+  EXPECT_DOUBLE_EQ(applied(sets, SetParameter{s.path() + ".rotate", 15.0}).functions[1].rotate, 15.0);
+  EXPECT_EQ(applied(sets, SetMedianAxis{s, Vec3{1.0, 0.0, 0.0}}).functions[1].rotate_axis, (Vec3{1.0, 0.0, 0.0}));
 }
 
 TEST(ProjectEdits, InvalidReferencesThrowAndLeaveTheDocumentUntouched) {
   const std::vector<ProjectEdit> invalid = {
-      SetFunctionWeight{FunctionRef(5), 1.0},
+      SetParameter{"functions[5].weight", 1.0},
       RemoveFunction{-1},
       MoveFunction{0, 2},
       DuplicateFunction{7},
@@ -324,15 +325,15 @@ TEST(ProjectEdits, InvalidReferencesThrowAndLeaveTheDocumentUntouched) {
       MoveOperation{FunctionRef(0), 1, 2},
       SetLightColor{4, Vec3(1.0)},
       RemoveLight{1},
-      SetSettingNumber{SettingGroup::Flame, "no_such_key", 1.0},
-      SetSettingNumber{SettingGroup::Flame, "palette", 1.0},  // not a number
-      SetTransitionWeight{0, 1, 0.5},                         // no matrix
-      SetMatrixEntry{0, 0, 0, 0.5},                           // not a matrix function
-      MoveControlPoint{0, Vec3(0.0)},                         // no free-form space
+      SetParameter{"render.flame.no_such_key", 1.0},
+      SetParameter{"render.flame.palette", 1.0},  // not a number
+      SetParameter{"transitions[0][1]", 0.5},     // no matrix
+      SetMatrixEntry{0, 0, 0, 0.5},               // not a matrix function
+      MoveControlPoint{0, Vec3(0.0)},             // no free-form space
       SetSetShape{FunctionRef(9), SetShape::Box, std::nullopt},
   };
   Document doc(twoFunctions());
-  doc.apply(SetFunctionWeight{FunctionRef(0), 2.0});
+  doc.apply(SetParameter{"functions[0].weight", 2.0});
   const Project before = doc.project();
   const auto revision = doc.revision();
   for (const ProjectEdit& edit : invalid) {
@@ -341,7 +342,7 @@ TEST(ProjectEdits, InvalidReferencesThrowAndLeaveTheDocumentUntouched) {
     EXPECT_THROW(doc.apply("invalid", edit), ModelError);
     EXPECT_EQ(doc.project(), before);
     EXPECT_EQ(doc.revision(), revision);
-    EXPECT_EQ(doc.undoLabel(), "Function weight");
+    EXPECT_EQ(doc.undoLabel(), "Set functions[0].weight");
   }
   // The error names what is missing.
   try {
@@ -388,7 +389,7 @@ TEST(ProjectEdits, AGestureOfNamedEditsIsOneUndoStep) {
   const Project original = doc.project();
   EditQueue edits;
   edits.begin("Function weight");
-  for (double w : {1.5, 2.0, 2.5}) edits.update(SetFunctionWeight{FunctionRef(1), w});
+  for (double w : {1.5, 2.0, 2.5}) edits.update(SetParameter{"functions[1].weight", w});
   edits.end();
   EXPECT_EQ(edits.apply(doc), "");
   EXPECT_DOUBLE_EQ(doc.project().functions[1].weight, 2.5);

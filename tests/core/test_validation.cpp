@@ -79,5 +79,5 @@ TEST(Validation, DocumentChecksAProjectFromOutsideInFull) {
   Project invalid = twoCalculators();
   std::get<CalculatorOp>(invalid.functions[1].ops[0].params).z = "z +";
   Document document(invalid);
-  EXPECT_THROW(document.apply(SetFunctionWeight{FunctionRef(0), 2.0}), ModelError);
+  EXPECT_THROW(document.apply(SetParameter{"functions[0].weight", 2.0}), ModelError);
 }

@@ -10,6 +10,7 @@
 #include "edit/document.h"
 #include "edit/project_edit.h"
 #include "io/project_io.h"
+#include "model/settings_tables.h"
 #include "render/camera.h"
 #include "render/volume_raymarch.h"
 
@@ -142,7 +143,8 @@ TEST(VolumeRenderEdits, TransferFunctionDisplayAndScaleAreUndoSteps) {
   Document document(defaultNewProject());
   document.apply(SetTransferFunction{defaultTransferStops()});
   document.apply(SetVolumeDisplay{VolumeDisplay::Xray});
-  document.apply(SetVolumeDensityScale{5.0});
+  // The slider names its undo step by the table's label.
+  document.apply(SetParameter{"render.volume.density_scale", 5.0, volumeRenderTable().field("density_scale").label});
   ASSERT_TRUE(document.project().render.volume);
   EXPECT_EQ(document.project().render.volume->transfer.size(), 2u);
   EXPECT_EQ(document.project().render.volume->display, VolumeDisplay::Xray);

@@ -264,7 +264,7 @@ void CondensationSetPanel::draw(ModellerState& state, EditQueue& edits) {
     double rotate = f.rotate;
     const bool changed = dragDouble("Rotate", rotate, 0.5, -3600.0, 3600.0, "%.1f°");
     state.probe.frame("set.rotate");
-    gestureItem(edits, "Median rotation", changed, SetMedianRotation{ref, rotate, std::nullopt});
+    gestureItem(edits, "Median rotation", changed, SetParameter{ref.path() + ".rotate", rotate, "Median rotation"});
     contextHelp(state,
                 "The rotated median (Sokolov & Gentil, §4.1): degrees about the axis per unit of distance between the "
                 "sets' centres; 0 is the plain median");
@@ -273,7 +273,7 @@ void CondensationSetPanel::draw(ModellerState& state, EditQueue& edits) {
     bool axisChanged = dragVec3("Axis", axis, 0.01, -1.0, 1.0);
     if (glm::length(axis) < 1e-6) axisChanged = false;  // a zero axis turns nothing
     state.probe.frame("set.rotate_axis");
-    gestureItem(edits, "Median rotation axis", axisChanged, SetMedianRotation{ref, f.rotate, axis});
+    gestureItem(edits, "Median rotation axis", axisChanged, SetMedianAxis{ref, axis});
     contextHelp(state, "The axis the median turns about (any length; z by default)");
   }
   ImGui::PopItemWidth();

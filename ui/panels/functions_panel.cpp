@@ -10,9 +10,11 @@
 #include "model/contractivity.h"
 #include "model/final_function.h"
 #include "model/free_form.h"
+#include "model/settings_tables.h"
 #include "ui/base/widgets.h"
 #include "ui/panels/key_button.h"
 #include "ui/panels/panels.h"
+#include "ui/panels/setting_slider.h"
 
 namespace gridifs::ui {
 namespace {
@@ -363,7 +365,7 @@ void drawActiveFunction(ModellerState& state, EditQueue& edits, FunctionsPanelSt
   const int active = activeRef.index();  // meaningless while the final function is active
   const Function& f = state.function();
   ImGui::Spacing();
-  ImGui::PushItemWidth(-ImGui::CalcTextSize(finalActive ? "Interpolation" : "Palette idx").x -
+  ImGui::PushItemWidth(-ImGui::CalcTextSize(finalActive ? "Interpolation" : "Palette index").x -
                        ImGui::GetStyle().ItemInnerSpacing.x * 2);
   drawName(state, edits, activeRef, f);
   if (finalActive) {
@@ -377,27 +379,23 @@ void drawActiveFunction(ModellerState& state, EditQueue& edits, FunctionsPanelSt
   const int fi = active;
   const std::string fpath = activeRef.path();
 
+  // The function's own numbers: ranges, labels and help from its table (model/settings_tables.h).
+  const SettingTableOf<Function>& fields = functionTable();
   double weight = f.weight;
   keyButton(state, edits, fpath + ".weight", &weight);
-  bool changed = dragDouble("Weight", weight, 0.01, 0.0, 1000.0, "%.3f");
-  gestureItem(edits, "Function weight", changed, SetFunctionWeight{activeRef, weight});
-  contextHelp(state, "Probability of choosing this function is proportional to its weight");
+  settingSlider(state, edits, fields.field("weight"), weight, fpath, {.probe = "function"});
 
+  const SettingSpec& colorSpec = fields.field("color");
   float color[3] = {float(f.color.x), float(f.color.y), float(f.color.z)};
-  changed = ImGui::ColorEdit3("Color", color, ImGuiColorEditFlags_Float);
+  bool changed = ImGui::ColorEdit3(colorSpec.label, color, ImGuiColorEditFlags_Float);
   gestureItem(edits, "Function color", changed, SetFunctionColor{activeRef, Vec3(color[0], color[1], color[2])});
+  contextHelp(state, colorSpec.tooltip);
 
-  double paletteIndex = f.palette_index;
-  changed = sliderDouble("Palette idx", paletteIndex, 0.0, 1.0);
-  gestureItem(edits, "Palette index", changed, SetPaletteIndex{activeRef, paletteIndex});
-  contextHelp(state, "Structural color coordinate c_i for flame-style coloring (Draves & Reckase 2003, §5)");
+  settingSlider(state, edits, fields, fpath, "palette_index", f, {.probe = "function"});
 
   if (isSetKind(f.kind)) {
     // A set function has no grid: its set is edited in the set editor (the Operations panel's place).
-    double colorSpeed = f.color_speed;
-    changed = sliderDouble("Color speed", colorSpeed, 0.0, 1.0);
-    gestureItem(edits, "Color speed", changed, SetColorSpeed{activeRef, colorSpeed});
-    contextHelp(state, "How far each point's colour moves towards this function's palette index");
+    settingSlider(state, edits, fields, fpath, "color_speed", f, {.probe = "function"});
     ImGui::PopItemWidth();
     ImGui::TextWrapped("%s: its set is edited in the set editor below (in place of the operations).",
                        f.kind == FunctionKind::Median ? "A median function" : "A condensation function");

@@ -85,7 +85,8 @@ void drawTransitions(ModellerState& state, EditQueue& edits) {
         ImGui::PushID(int(i * n + j));
         ImGui::SetNextItemWidth(cell);
         matrixCell(edits, "##t", project.transitions[i][j], 0.0, true, "transition weight", [i, j](double v) {
-          return SetTransitionWeight{i, j, v};
+          return SetParameter{"transitions[" + std::to_string(i) + "][" + std::to_string(j) + "]", v,
+                              "Transition weight"};
         });
         state.probe.item("matrices.transition." + std::to_string(i) + "." + std::to_string(j));
         ImGui::PopID();

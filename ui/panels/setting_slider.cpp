@@ -2,11 +2,18 @@
 
 #include <imgui.h>
 
+#include "edit/parameter_edit.h"
 #include "ui/base/widgets.h"
 
 namespace gridifs::ui {
 
 bool settingSliderWidget(const char* id, const SettingSpec& spec, double& value, double min, double max) {
+  if (!(min < max)) {
+    // No slider range: a drag over the field's whole valid range (a function's weight).
+    double lo = spec.min, hi = spec.max;
+    return ImGui::DragScalar(id, ImGuiDataType_Double, &value, float(spec.speed), &lo, &hi, spec.format,
+                             ImGuiSliderFlags_AlwaysClamp);
+  }
   const ImGuiSliderFlags flags = ImGuiSliderFlags_AlwaysClamp | (spec.logarithmic ? ImGuiSliderFlags_Logarithmic : 0);
   if (spec.type == SettingType::Integer || spec.type == SettingType::Count) {
     int v = int(value);
@@ -18,13 +25,13 @@ bool settingSliderWidget(const char* id, const SettingSpec& spec, double& value,
   return ImGui::SliderScalar(id, ImGuiDataType_Double, &value, &min, &max, spec.format, flags);
 }
 
-void settingSlider(ModellerState& state, EditQueue& edits, const SettingSpec& spec, double value, SettingGroup group,
-                   const SettingSliderPlace& place, std::size_t light) {
+void settingSlider(ModellerState& state, EditQueue& edits, const SettingSpec& spec, double value,
+                   const std::string& group, const SettingSliderPlace& place) {
   const bool own = place.min < place.max;
   const bool changed = settingSliderWidget(place.id ? place.id : spec.label, spec, value,
                                            own ? place.min : spec.sliderMin, own ? place.max : spec.sliderMax);
   state.probe.frame(place.probe + "." + spec.label);
-  gestureItem(edits, spec.label, changed, SetSettingNumber{group, spec.key, value, light});
+  gestureItem(edits, spec.label, changed, SetParameter{settingPath(group, spec.key), value, spec.label});
   contextHelp(state, spec.tooltip);
 }
 

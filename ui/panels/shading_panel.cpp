@@ -63,8 +63,9 @@ void drawLight(ModellerState& state, EditQueue& edits, std::size_t index, const 
   contextHelp(state, colorSpec.tooltip);
   ImGui::SameLine();
   ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.0f);
-  settingSlider(state, edits, table.field("intensity"), light.intensity, SettingGroup::Light,
-                {.id = "##intensity", .probe = "shading.light" + std::to_string(index)}, index);
+  settingSlider(state, edits, table.field("intensity"), light.intensity,
+                "render.shading.lights[" + std::to_string(index) + "]",
+                {.id = "##intensity", .probe = "shading.light" + std::to_string(index)});
   bool shadows = light.shadows;
   const SettingSpec& shadowSpec = table.field("shadows");
   if (ImGui::Checkbox(shadowSpec.label, &shadows)) edits.commit(SetLightShadows{index, shadows});
@@ -89,12 +90,12 @@ void drawShadingPanel(ModellerState& state, EditQueue& edits) {
   sectionTitle("Surface");
   for (const auto& [key, id] :
        {std::pair{"ambient", "##ambient"}, {"specular", "##specular"}, {"shininess", "##shininess"}})
-    settingSlider(state, edits, SettingGroup::Shading, key, s, fullWidth(id));
+    settingSlider(state, edits, shadingSettingsTable(), "render.shading", key, s, fullWidth(id));
 
   sectionTitle("Ambient occlusion");
   for (const auto& [key, id] :
        {std::pair{"radius", "##aoradius"}, {"strength", "##aostrength"}, {"directions", "##aodirs"}})
-    settingSlider(state, edits, SettingGroup::AmbientOcclusion, key, s.ao, fullWidth(id));
+    settingSlider(state, edits, ambientOcclusionTable(), "render.shading.ao", key, s.ao, fullWidth(id));
 
   sectionTitle("Fog");
   const SettingSpec& fogColor = fogTable().field("color");
@@ -103,7 +104,7 @@ void drawShadingPanel(ModellerState& state, EditQueue& edits) {
   gestureItem(edits, fogColor.label, fogChanged, SetFogColor{Vec3(fog[0], fog[1], fog[2])});
   contextHelp(state, fogColor.tooltip);
   ImGui::SameLine();
-  settingSlider(state, edits, SettingGroup::Fog, "density", s.fog, fullWidth("##fogdensity"));
+  settingSlider(state, edits, fogTable(), "render.shading.fog", "density", s.fog, fullWidth("##fogdensity"));
 
   sectionTitle("Depth of field");
   // An aperture needs a focus distance; the first one is the camera's distance to its target.
@@ -117,7 +118,7 @@ void drawShadingPanel(ModellerState& state, EditQueue& edits) {
   gestureItem(edits, apertureSpec.label, changed, SetAperture{aperture, focus});
   contextHelp(state, apertureSpec.tooltip);
   ImGui::SetNextItemWidth(-ImGui::GetFontSize() * 0.5f);
-  settingSlider(state, edits, depthOfFieldTable().field("focus"), focus, SettingGroup::DepthOfField,
+  settingSlider(state, edits, depthOfFieldTable().field("focus"), focus, "render.shading.dof",
                 {.id = "##focus", .probe = "shading"});
 }
 

@@ -33,7 +33,8 @@ void drawVariation(ModellerState& state, EditQueue& edits, FunctionRef ref, cons
   keyButton(state, edits, path + ".variations." + name, &weight);
   const bool changed = dragDouble(name.c_str(), weight, 0.005, -10.0, 10.0, "%.3f");
   state.probe.frame("variations.weight." + name);
-  gestureItem(edits, "Variation weight", changed, SetVariationWeight{ref, name, weight});
+  gestureItem(edits, "Variation weight", changed,
+              SetParameter{path + ".variations." + name, weight, "Variation weight"});
   contextHelp(state, "Blend weight w of this variation in f(p) = post(Σ w V(g(p)))");
   ImGui::SameLine();
   if (ImGui::SmallButton("x")) edits.commit(RemoveVariation{ref, name});
@@ -48,7 +49,8 @@ void drawVariation(ModellerState& state, EditQueue& edits, FunctionRef ref, cons
       if (it != f.variation_params.end()) keyButton(state, edits, path + ".variation_params." + attribute, &value);
       const bool moved = dragDouble(attribute, value, 0.01, -1000.0, 1000.0, "%.3f");
       state.probe.frame(std::string("variations.param.") + attribute);
-      gestureItem(edits, "Variation parameter", moved, SetVariationParameter{ref, attribute, value});
+      gestureItem(edits, "Variation parameter", moved,
+                  SetParameter{path + ".variation_params." + attribute, value, "Variation parameter"});
     }
     ImGui::Unindent();
   }

@@ -42,7 +42,7 @@ void flameSlider(ModellerState& state, EditQueue& edits, const FlameSettings& f,
   const SettingSpec& spec = flameSettingsTable().field(key);
   double value = spec.number(&f);
   keyButton(state, edits, std::string("render.flame.") + key, &value);
-  settingSlider(state, edits, spec, value, SettingGroup::Flame, {.probe = "flame", .min = min, .max = max});
+  settingSlider(state, edits, spec, value, "render.flame", {.probe = "flame", .min = min, .max = max});
 }
 
 /// "log" / "linear" / "binary": Draves & Reckase 2003, figure 3 c, b and a.
@@ -75,8 +75,7 @@ void qualityControl(ModellerState& state, EditQueue& edits) {
   if (!useQuality) return;
   ImGui::SameLine();
   const SettingSpec& spec = renderSettingsTable().field("quality");
-  settingSlider(state, edits, spec, r.quality.value_or(50.0), SettingGroup::Render,
-                {.id = "##quality", .probe = "flame"});
+  settingSlider(state, edits, spec, r.quality.value_or(50.0), "render", {.id = "##quality", .probe = "flame"});
 }
 
 /// Draves & Reckase 2003, figure 4: pixels by density on log–log axes (power-of-two bins), with the

@@ -46,7 +46,7 @@ Camera OrbitController::zoomed(Camera camera, float wheel, double minDistance) {
 void OrbitController::zoomProject(const Camera& current, EditQueue& edits, float wheel, double now) {
   if (wheelUntil_ < 0.0) edits.begin("Zoom preview camera");
   const double distance = zoomed(current, wheel, 0.05).distance;
-  edits.update(SetCameraDistance{distance});
+  edits.update(SetParameter{"camera.distance", distance, "Zoom preview camera"});
   wheelUntil_ = now + kWheelRest;
 }
 

@@ -73,7 +73,8 @@ void PreviewView::buildToolbar(ModellerState& state, EditQueue& edits) {
   contextHelp(state, "Sample budget: how many chaos-game points the preview renders before it stops");
   ImGui::SameLine();
   ImGui::SetNextItemWidth(ImGui::GetFontSize() * 7.0f);
-  settingSlider(state, edits, SettingGroup::Render, "depth_cue", project.render, {.id = "##cue", .probe = "preview"});
+  settingSlider(state, edits, renderSettingsTable(), "render", "depth_cue", project.render,
+                {.id = "##cue", .probe = "preview"});
   ImGui::SameLine();
   const SettingSpec& background = renderSettingsTable().field("background");
   float bg[3] = {float(project.render.background.x), float(project.render.background.y),

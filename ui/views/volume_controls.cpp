@@ -6,7 +6,10 @@
 #include <cmath>
 #include <cstdio>
 
+#include "edit/parameter_edit.h"
+#include "model/settings_tables.h"
 #include "ui/base/widgets.h"
+#include "ui/panels/setting_slider.h"
 #include "ui/views/preview_modes.h"
 
 namespace gridifs::ui {
@@ -38,14 +41,14 @@ void PreviewModes::drawVolumeControls(ModellerState& state, EditQueue& edits) {
   contextHelp(state, help);
   ImGui::SameLine();
   ImGui::SetNextItemWidth(em * 8.0f);
-  float scale = float(settings.density_scale);
+  const SettingSpec& densityScale = volumeRenderTable().field("density_scale");
+  double scale = settings.density_scale;
   const bool scaled =
-      ImGui::SliderFloat("##volumedensity", &scale, 0.5f, 500.0f, "density %.3g", ImGuiSliderFlags_Logarithmic);
-  gestureItem(edits, "Volume density scale", scaled, SetVolumeDensityScale{std::clamp(double(scale), 0.5, 500.0)});
+      settingSliderWidget("##volumedensity", densityScale, scale, densityScale.sliderMin, densityScale.sliderMax);
+  gestureItem(edits, densityScale.label, scaled,
+              SetParameter{"render.volume.density_scale", scale, densityScale.label});
   state.probe.item("preview.volume.density");
-  contextHelp(state,
-              "Density scale: how much light the densest voxels absorb per unit of length (higher: thicker, "
-              "darker shadows); only the picture changes, not the volume");
+  contextHelp(state, (std::string(densityScale.tooltip) + "; only the picture changes, not the volume").c_str());
   ImGui::SameLine();
   int display = settings.display == VolumeDisplay::Xray ? 1 : 0;
   static const char* displays[] = {"Lit", "X-ray"};
