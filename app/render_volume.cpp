@@ -8,11 +8,11 @@
 #include "app/progress_bar.h"
 #include "base/color_space.h"
 #include "base/text_format.h"
-#include "flame/palette.h"
 #include "io/volume_render_io.h"
 #include "render/camera.h"
 #include "render/image_file.h"
 #include "render/volume_raymarch.h"
+#include "tone/palette.h"
 #include "volume/measure_attractor.h"
 
 namespace gridifs::cli {

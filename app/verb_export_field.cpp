@@ -7,12 +7,12 @@
 
 #include "app/cli.h"
 #include "app/render_setup.h"
-#include "flame/palette.h"
 #include "mesh/field_heightfield.h"
 #include "mesh/field_layer_mesh.h"
 #include "mesh/mesh_io.h"
 #include "model/field_layer.h"
 #include "render/field_image.h"
+#include "tone/palette.h"
 
 namespace gridifs::cli {
 namespace {

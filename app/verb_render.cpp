@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cctype>
 #include <cmath>
 #include <csignal>
 #include <cstdio>
@@ -478,8 +479,10 @@ namespace {
 /// tooltip and range.
 std::string flameOptionHelp(const char* key) {
   const SettingSpec& field = flameSettingsTable().field(key);
+  std::string tooltip = field.tooltip;
+  if (!tooltip.empty()) tooltip[0] = char(std::tolower(static_cast<unsigned char>(tooltip[0])));
   std::ostringstream help;
-  help << "flame mode: " << field.tooltip << " (" << field.min << " to " << field.max
+  help << "flame mode: " << tooltip << " (" << field.min << " to " << field.max
        << "; default: the project's render.flame." << key << ")";
   return help.str();
 }

@@ -7,12 +7,12 @@
 #include "app/cli.h"
 #include "base/atomic_file.h"
 #include "base/errors.h"
-#include "flame/palette.h"
 #include "io/flame_genome.h"
 #include "io/flame_import.h"
 #include "live/audio_envelope.h"
 #include "python/python_explore.h"
 #include "python/python_project.h"
+#include "tone/palette.h"
 
 namespace py = pybind11;
 using gridifs::python::PythonError;

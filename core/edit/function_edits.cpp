@@ -2,8 +2,8 @@
 
 #include "base/errors.h"
 #include "edit/edit_refs.h"
+#include "edit/flame_symmetry.h"
 #include "edit/new_function.h"
-#include "flame/flame_symmetry.h"
 #include "model/final_function.h"
 #include "model/transition_matrix.h"
 

@@ -113,7 +113,7 @@ struct SetFunctionColor {
 };
 
 /// Appends the functions that make the attractor symmetric about the project camera's view axis,
-/// so the symmetry is what the preview shows (Draves & Reckase 2003, §7; flame/flame_symmetry.h).
+/// so the symmetry is what the preview shows (Draves & Reckase 2003, §7; edit/flame_symmetry.h).
 struct AddSymmetry {
   int symmetry = 2;
   void apply(Project& project) const;

@@ -5,11 +5,11 @@
 #include <optional>
 #include <sstream>
 
-#include "flame/palette.h"
-#include "flame/palette_gradient.h"
 #include "io/flame_camera.h"
 #include "io/flame_import.h"
 #include "model/stack_evaluator.h"
+#include "tone/palette.h"
+#include "tone/palette_gradient.h"
 
 namespace gridifs {
 namespace {

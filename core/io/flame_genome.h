@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "flame/palette.h"
 #include "model/flame_variations.h"
+#include "tone/palette.h"
 
 namespace gridifs {
 

@@ -46,13 +46,6 @@ std::string string(const json& obj, const char* key, const std::string& path, co
   return readString(*it, join(path, key), maxLength);
 }
 
-Vec3 vec3(const json& obj, const char* key, const std::string& path, Vec3 fallback, double lo = -limits::kMaxCoordinate,
-          double hi = limits::kMaxCoordinate) {
-  auto it = obj.find(key);
-  if (it == obj.end()) return fallback;
-  return readVec3(*it, join(path, key), lo, hi);
-}
-
 Center readCenter(const json& obj, const std::string& path) {
   Center c;
   auto it = obj.find("center");
@@ -134,11 +127,7 @@ Function readFunction(const json& f, const std::string& path, std::size_t index)
   }
   readSettingFields(functionTable(), f, path, &fn);
   if (auto it = f.find("placement"); it != f.end()) {
-    const std::string p = join(path, "placement");
-    requireObject(*it, p);
-    fn.placement.translate = vec3(*it, "translate", p, Vec3{0.0});
-    fn.placement.rotate = vec3(*it, "rotate", p, Vec3{0.0});
-    fn.placement.scale = vec3(*it, "scale", p, Vec3{1.0});
+    readSettingFields(placementTable(), *it, join(path, "placement"), &fn.placement);
   }
   if (auto it = f.find("ops"); it != f.end()) {
     const std::string p = join(path, "ops");
@@ -206,9 +195,7 @@ ordered_json writeFunction(const Function& f) {
   o["name"] = f.name;
   o["resolution"] = {f.resolution[0], f.resolution[1], f.resolution[2]};
   writeSettingFields(functionTable(), &f, o);
-  o["placement"] = {{"translate", writeVec3(f.placement.translate)},
-                    {"rotate", writeVec3(f.placement.rotate)},
-                    {"scale", writeVec3(f.placement.scale)}};
+  o["placement"] = writeSettings(placementTable(), f.placement);
   ordered_json ops = ordered_json::array();
   for (const Operation& op : f.ops) ops.push_back(writeOperation(op));
   o["ops"] = ops;
@@ -313,7 +300,9 @@ Project readProjectBody(const json& root, bool withConstruction) {
       if (row.size() > std::size_t(limits::kMaxFunctions))
         fail(p, "more than " + std::to_string(limits::kMaxFunctions) + " entries");
       std::vector<double> weights;
-      for (std::size_t j = 0; j < row.size(); ++j) weights.push_back(readNumber(row[j], item(p, j), 0.0, 1e9));
+      const FieldInfo& weight = transitionWeightField();
+      for (std::size_t j = 0; j < row.size(); ++j)
+        weights.push_back(readNumber(row[j], item(p, j), weight.min, weight.max));
       project.transitions.push_back(std::move(weights));
     }
   }

@@ -4,11 +4,11 @@
 #include <map>
 #include <mutex>
 
-#include "flame/palette_gradient.h"
 #include "live/live_drive.h"
 #include "model/project_time.h"
 #include "render/flame_render.h"
 #include "render/shaded_image.h"
+#include "tone/palette_gradient.h"
 #include "volume/condensation_sampler.h"
 #include "volume/measure_attractor.h"
 #include "volume/volume_points.h"

@@ -12,10 +12,10 @@
 
 #include "base/errors.h"
 #include "edit/document.h"
-#include "flame/palette.h"
 #include "model/project.h"
 #include "render/chaos_renderer.h"
 #include "render/compiled_ifs.h"
+#include "tone/palette.h"
 #include "volume/density_volume.h"
 
 namespace gridifs {

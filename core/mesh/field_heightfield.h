@@ -1,7 +1,7 @@
 #pragma once
 // Colonna's mountains ("Animation of fractal objects", §1 and fig. 5, the earthquake): a fractal
 // field op applied to a flat sheet, written as a heightfield mesh.
-#include "anim/fractal_field.h"
+#include "field/fractal_field.h"
 #include "mesh/ifs_mesh.h"
 
 namespace gridifs {

@@ -24,7 +24,7 @@ double fieldShapeValue(const VolumeDensityField& layer, const Vec3& p);
 /// G at p and time t (double precision, point by point).
 double fieldLayerValue(const VolumeDensityField& layer, const Vec3& p, double t);
 
-/// G at every point (the fast whole-step field evaluation of anim/field_step.h: the same values
+/// G at every point (the fast whole-step field evaluation of field/field_step.h: the same values
 /// up to single-precision rounding). Uses up to `threads` workers (≤ 0: all).
 std::vector<double> fieldLayerValues(const VolumeDensityField& layer, const std::vector<Vec3>& points, double t,
                                      int threads = 0);

@@ -40,7 +40,7 @@ struct FlameSettings {
   std::string palette = "ember";  // palette reference (core/palette.h): "ember", "flam3:27", "file:x.json"
   double hue = 0.0;               // turns the palette's hue by this fraction of a circle (flam3's `hue`)
   /// A gradient being edited (the palette editor): keys "POSITION:#RRGGBB" separated by spaces,
-  /// e.g. "0:#000000 0.5:#ff8000 1:#ffffff". When not empty it replaces `palette` (flame/palette_gradient.h).
+  /// e.g. "0:#000000 0.5:#ff8000 1:#ffffff". When not empty it replaces `palette` (tone/palette_gradient.h).
   std::string palette_keys;
   double brightness = 4.0;         // Draves & Reckase 2003, §4 k1 (flam3 "brightness")
   double gamma = 4.0;              // Draves & Reckase 2003, §6

@@ -6,7 +6,7 @@
 #include <variant>
 #include <vector>
 
-#include "anim/fractal_field.h"
+#include "field/fractal_field.h"
 #include "model/selection.h"
 
 namespace gridifs {

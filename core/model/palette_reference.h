@@ -1,7 +1,7 @@
 #pragma once
 // A project names its flame palette by reference: a built-in name ("ember"), a palette of
 // flam3's file ("flam3:27", "flam3:south-sea-bather") or a palette file ("file:PATH"). The model
-// only checks the syntax; flame/palette.h resolves a reference into colors.
+// only checks the syntax; tone/palette.h resolves a reference into colors.
 //
 // Thread-safety: pure functions and immutable data.
 #include <string>
@@ -9,7 +9,7 @@
 
 namespace gridifs {
 
-/// Built-in palette names, in display order (the first is the default). flame/palette.cpp
+/// Built-in palette names, in display order (the first is the default). tone/palette.cpp
 /// holds their colors.
 const std::vector<std::string>& builtinPaletteNames();
 

@@ -195,7 +195,8 @@ class ParameterResolver {
       const int row = index(project_.transitions.size());
       if (row < 0) return Lookup::Missing;
       p_.a_ = row;
-      return component(int(project_.transitions[std::size_t(row)].size()), Where::Transition, Reader::Number, 0.0, 1e9);
+      return component(int(project_.transitions[std::size_t(row)].size()), Where::Transition, Reader::Number,
+                       transitionWeightField().min, transitionWeightField().max);
     }
     if (key == "time" && project_.time != 0.0) {  // written only when not 0
       position(6);
@@ -510,7 +511,7 @@ class ParameterResolver {
     }
     if (key == "placement") {
       position(7);
-      return placement(Where::Placement, Reader::Number, -kMaxCoordinate, kMaxCoordinate);
+      return settingsObject(placementTable(), Group::Placement, &fn.placement);
     }
     if (key == "ops") {
       position(8);
@@ -764,6 +765,9 @@ void* ProjectParameter::locate(Project& project) const {
       case Group::Function:
         group = f_ < 0 ? &*project.final_function : &project.functions[std::size_t(f_)];
         break;
+      case Group::Placement:
+        group = f_ < 0 ? &project.final_function->placement : &project.functions[std::size_t(f_)].placement;
+        break;
       case Group::Camera:
         group = &project.camera;
         break;
@@ -862,8 +866,6 @@ void* ProjectParameter::locate(Project& project) const {
   switch (where_) {
     case Where::Resolution:
       return &fn.resolution[std::size_t(c_)];
-    case Where::Placement:
-      return vectorComponent(b_ == 0 ? fn.placement.translate : b_ == 1 ? fn.placement.rotate : fn.placement.scale);
     case Where::MatrixEntry:
       return &fn.matrix[std::size_t(a_)][std::size_t(c_)];
     case Where::MedianRotate:
@@ -1041,6 +1043,9 @@ std::string ProjectParameter::path() const {
       case Group::Function:
         group = f_ < 0 ? std::string("final") : item("functions", f_);
         break;
+      case Group::Placement:
+        group = (f_ < 0 ? std::string("final") : item("functions", f_)) + ".placement";
+        break;
       case Group::Camera:
         group = "camera";
         break;
@@ -1137,8 +1142,6 @@ std::string ProjectParameter::path() const {
   switch (where_) {
     case Where::Resolution:
       return item(fn + ".resolution", c_);
-    case Where::Placement:
-      return item(fn + ".placement." + kPlacementKeys[b_], c_);
     case Where::MatrixEntry:
       return item(item(fn + ".matrix", a_), c_);
     case Where::MedianRotate:

@@ -76,7 +76,6 @@ class ProjectParameter {
     OpCenter,          // ... the center point, component `c`
     SelectionBound,    // ... selection box `a`, axis `b` (i, j, k), `c` 0 first, 1 last
     Resolution,        // function `f`: resolution `c`
-    Placement,         // function `f`: `b` 0 translate, 1 rotate, 2 scale, component `c`
     MatrixEntry,       // function `f`: row `a`, column `c`
     MedianRotate,      // function `f`
     MedianRotateAxis,  // function `f`: component `c`
@@ -104,6 +103,7 @@ class ProjectParameter {
   /// The settings groups (model/settings_tables.h).
   enum class Group : std::uint8_t {
     Function,
+    Placement,
     VolumeRender,
     TransferStop,
     Camera,

@@ -684,4 +684,31 @@ const SettingTableOf<TransferStop>& transferStopTable() {
   return table;
 }
 
+const FieldInfo& transitionWeightField() {
+  static const FieldInfo field{.key = "transitions",
+                               .label = "Transition weight",
+                               .tooltip = "How likely the column's function is to follow the row's (0 forbids it)",
+                               .min = 0.0,
+                               .max = 1e9,
+                               .speed = 0.01,
+                               .format = "%.3g"};
+  return field;
+}
+
+const SettingTableOf<Placement>& placementTable() {
+  static const SettingTableOf<Placement> table{{{
+      setting<&Placement::translate>(
+          {.key = "translate",
+           .label = "Translate",
+           .tooltip = "Where the grid sits in the common initial grid; also: drag it in the IFS view"}),
+      setting<&Placement::rotate>({.key = "rotate",
+                                   .label = "Rotate",
+                                   .tooltip = "Turns the grid about its centre",
+                                   .speed = 0.5,
+                                   .format = "%.1f°"}),
+      setting<&Placement::scale>({.key = "scale", .label = "Scale", .tooltip = "Scales the grid about its centre"}),
+  }}};
+  return table;
+}
+
 }  // namespace gridifs

@@ -15,6 +15,16 @@ namespace gridifs {
 /// grid, operations, matrix or set) are described by the operation table and the function's kind.
 const SettingTableOf<Function>& functionTable();
 
+/// A grid function's "placement": where its grid sits in the common initial grid (translate,
+/// rotate in degrees, scale). The sets' and the post maps' placements are read with their own
+/// readers' words.
+const SettingTableOf<Placement>& placementTable();
+
+/// One weight of "transitions" (row i, column j: how likely function j is to follow function i,
+/// Thollot et al. §3): its range, label and help, for the file reader, the parameter paths,
+/// validation and the Matrices window.
+const FieldInfo& transitionWeightField();
+
 /// The widest field of view of a perspective or orthographic camera, in degrees.
 inline constexpr double kMaxFlatFov = 170.0;
 /// "camera": yaw, pitch, distance, target, fov, projection. "stereo" has a table of its own.

@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <sstream>
 #include <string>
+
+#include "model/settings_tables.h"
 
 namespace gridifs {
 namespace {
@@ -38,9 +41,16 @@ void checkTransitions(const Project& project) {
     if (t[i].size() != n)
       throw ModelError(rowPath(i), "expected " + std::to_string(n) + " entries (one per function), found " +
                                        std::to_string(t[i].size()));
-    for (std::size_t j = 0; j < n; ++j)
-      if (!std::isfinite(t[i][j]) || t[i][j] < 0.0)
-        throw ModelError(entryPath(i, j), "expected a finite non-negative weight");
+    for (std::size_t j = 0; j < n; ++j) {
+      // The file reader's range and words (io/project_io).
+      const FieldInfo& weight = transitionWeightField();
+      if (!std::isfinite(t[i][j])) throw ModelError(entryPath(i, j), "expected a finite number");
+      if (!(t[i][j] >= weight.min && t[i][j] <= weight.max)) {
+        std::ostringstream message;
+        message << "expected a number between " << weight.min << " and " << weight.max << ", found " << t[i][j];
+        throw ModelError(entryPath(i, j), message.str());
+      }
+    }
   }
   for (std::size_t i = 0; i < n; ++i) {
     if (project.functions[i].muted) continue;

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "anim/fractal_field.h"
+#include "field/fractal_field.h"
 #include "model/condensation_set.h"
 
 namespace gridifs {

@@ -19,12 +19,12 @@
 #include <thread>
 #include <vector>
 
-#include "flame/palette.h"
 #include "render/camera.h"
 #include "render/compiled_ifs.h"
 #include "render/light_view.h"
 #include "render/renderer.h"
 #include "render/sample_chunks.h"
+#include "tone/palette.h"
 
 namespace gridifs {
 

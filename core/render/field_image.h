@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "flame/palette.h"
 #include "model/volume_settings.h"
+#include "tone/palette.h"
 
 namespace gridifs {
 

@@ -7,9 +7,9 @@
 #include <filesystem>
 
 #include "base/errors.h"
-#include "flame/flame_tonemap.h"
-#include "flame/palette.h"
 #include "render/chaos_renderer.h"
+#include "tone/flame_tonemap.h"
+#include "tone/palette.h"
 
 namespace gridifs {
 

@@ -10,7 +10,6 @@
 #include <optional>
 #include <thread>
 
-#include "flame/palette.h"
 #include "model/free_form_presets.h"
 #include "render/barycentric_kernel.h"
 #include "render/chaos_kernel.h"
@@ -18,6 +17,7 @@
 #include "render/compiled_ifs.h"
 #include "tests/bench/canonical_scene.h"
 #include "tests/bench/process_cpu_time.h"
+#include "tone/palette.h"
 
 namespace gridifs {
 namespace {

@@ -2,7 +2,7 @@
 // core: the cost of scrubbing the timeline over a field. Target: ≤ 5 ms cubic.
 #include <benchmark/benchmark.h>
 
-#include "anim/fractal_field.h"
+#include "field/fractal_field.h"
 #include "model/grid.h"
 
 using namespace gridifs;

@@ -31,11 +31,11 @@
 #include <vector>
 
 #include "app/render_parts.h"
-#include "flame/palette.h"
 #include "io/project_io.h"
 #include "render/chaos_renderer.h"
 #include "render/compiled_ifs.h"
 #include "render/flame_render.h"
+#include "tone/palette.h"
 
 namespace gridifs {
 namespace {

@@ -155,6 +155,8 @@ TEST(SchemaWalk, EveryFieldOfEveryTableHasAParameterPath) {
   } groups[] = {
       {functionTable(), "functions[1]"},
       {functionTable(), "final"},
+      {placementTable(), "functions[1].placement"},
+      {placementTable(), "final.placement"},
       {cameraTable(), "camera"},
       {stereoTable(), "camera.stereo"},
       {renderSettingsTable(), "render"},

@@ -6,10 +6,10 @@
 #include <cstdint>
 #include <memory>
 
-#include "flame/palette.h"
 #include "render/accumulation.h"
 #include "render/chaos_renderer.h"
 #include "render/compiled_ifs.h"
+#include "tone/palette.h"
 
 namespace gridifs::test {
 

@@ -9,13 +9,13 @@
 #include <memory>
 #include <vector>
 
-#include "flame/palette.h"
 #include "render/barycentric_kernel.h"
 #include "render/camera.h"
 #include "render/chaos_kernel.h"
 #include "render/chaos_renderer.h"
 #include "render/compiled_ifs.h"
 #include "tests/core/renderer_scenes.h"
+#include "tone/palette.h"
 
 namespace gridifs {
 namespace {

@@ -11,7 +11,7 @@
 #include <limits>
 #include <random>
 
-#include "anim/fractal_field.h"
+#include "field/fractal_field.h"
 #include "model/grid.h"
 
 using namespace gridifs;

@@ -7,12 +7,12 @@
 #include <filesystem>
 #include <fstream>
 
-#include "flame/density_histogram.h"
-#include "flame/flame_tonemap.h"
-#include "flame/palette_gradient.h"
 #include "io/project_io.h"
 #include "model/settings_tables.h"
 #include "render/motion_blur.h"
+#include "tone/density_histogram.h"
+#include "tone/flame_tonemap.h"
+#include "tone/palette_gradient.h"
 
 using namespace gridifs;
 

@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <numeric>
 
-#include "flame/density_filter.h"
+#include "tone/density_filter.h"
 
 using namespace gridifs;
 

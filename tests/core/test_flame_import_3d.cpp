@@ -8,14 +8,14 @@
 #include <cmath>
 #include <random>
 
-#include "flame/palette.h"
-#include "flame/palette_gradient.h"
 #include "io/flame_export.h"
 #include "io/flame_genome.h"
 #include "io/flame_import.h"
 #include "model/stack_evaluator.h"
 #include "render/camera.h"
 #include "render/compiled_ifs.h"
+#include "tone/palette.h"
+#include "tone/palette_gradient.h"
 
 using namespace gridifs;
 

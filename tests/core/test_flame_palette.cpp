@@ -5,7 +5,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "flame/palette.h"
+#include "tone/palette.h"
 
 using namespace gridifs;
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 
-#include "flame/flame_symmetry.h"
+#include "edit/flame_symmetry.h"
 #include "model/stack_evaluator.h"
 
 using namespace gridifs;

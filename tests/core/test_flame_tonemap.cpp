@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "flame/flame_tonemap.h"
+#include "tone/flame_tonemap.h"
 
 using namespace gridifs;
 

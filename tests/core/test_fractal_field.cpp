@@ -8,7 +8,7 @@
 #include <cmath>
 #include <random>
 
-#include "anim/fractal_field.h"
+#include "field/fractal_field.h"
 
 using namespace gridifs;
 

@@ -8,7 +8,6 @@
 #include <nlohmann/json.hpp>
 #include <random>
 
-#include "flame/palette.h"
 #include "flame_seed_checks.h"
 #include "io/flame_genome.h"
 #include "io/flame_import.h"
@@ -20,6 +19,7 @@
 #include "render/chaos_kernel.h"
 #include "render/chaos_renderer.h"
 #include "render/compiled_ifs.h"
+#include "tone/palette.h"
 
 using namespace gridifs;
 

@@ -15,7 +15,6 @@
 #include <string>
 #include <vector>
 
-#include "flame/palette.h"
 #include "io/project_io.h"
 #include "io/render_part_file.h"
 #include "render/accumulation.h"
@@ -23,6 +22,7 @@
 #include "render/compiled_ifs.h"
 #include "render/sample_chunks.h"
 #include "render/shaded_image.h"
+#include "tone/palette.h"
 
 namespace gridifs {
 namespace {

@@ -10,7 +10,6 @@
 #include <random>
 #include <vector>
 
-#include "flame/palette.h"
 #include "flame_seed_checks.h"
 #include "io/flame_genome.h"
 #include "io/flame_import.h"
@@ -20,6 +19,7 @@
 #include "render/accumulation.h"
 #include "render/chaos_renderer.h"
 #include "render/compiled_ifs.h"
+#include "tone/palette.h"
 
 using namespace gridifs;
 using lane_math::v4f;

@@ -13,10 +13,10 @@
 #include <random>
 #include <vector>
 
-#include "flame/palette.h"
 #include "model/project.h"
 #include "render/camera.h"
 #include "render/chaos_kernel.h"
+#include "tone/palette.h"
 
 namespace gridifs {
 namespace {

@@ -8,7 +8,6 @@
 #include <filesystem>
 
 #include "cli/run_command.h"
-#include "flame/palette.h"
 #include "gpu/chaos_compute.h"
 #include "gpu/gpu_chaos_renderer.h"
 #include "gpu/render_device.h"
@@ -16,6 +15,7 @@
 #include "io/render_part_file.h"
 #include "render/accumulation.h"
 #include "render/compiled_ifs.h"
+#include "tone/palette.h"
 
 namespace gridifs {
 namespace {

@@ -106,20 +106,26 @@ void drawResolution(ModellerState& state, EditQueue& edits, FunctionRef ref, con
 void drawPlacement(ModellerState& state, EditQueue& edits, FunctionRef ref, const Function& f) {
   if (!ImGui::CollapsingHeader("Placement", ImGuiTreeNodeFlags_DefaultOpen)) return;
   const std::string path = ref.path();
+  // Labels, drag speeds, formats and help from the placement's table (model/settings_tables.h);
+  // the drags of the rotation and the scale stop at a turn and at 4, which a hand needs.
+  const SettingTableOf<Placement>& table = placementTable();
+  const SettingSpec &translate = table.field("translate"), &rotate = table.field("rotate"),
+                    &scale = table.field("scale");
   Placement pl = f.placement;
   keyButton(state, edits, path + ".placement.translate", &pl.translate.x, 3);
-  bool changed = dragVec3("Translate", pl.translate, 0.005);
+  bool changed = dragVec3(translate.label, pl.translate, translate.speed, 0.0, 0.0, translate.format);
   state.probe.frame("function.translate");
   gestureItem(edits, "Move placement", changed, SetPlacement{ref, pl});
-  contextHelp(state, ref.isFinal() ? "Where the final lattice sits: it moves the whole picture"
-                                   : "Where the grid sits in the common initial grid; also: drag it in the IFS view");
+  contextHelp(state, ref.isFinal() ? "Where the final lattice sits: it moves the whole picture" : translate.tooltip);
   keyButton(state, edits, path + ".placement.rotate", &pl.rotate.x, 3);
-  changed = dragVec3("Rotate", pl.rotate, 0.5, -360.0, 360.0, "%.1f°");
+  changed = dragVec3(rotate.label, pl.rotate, rotate.speed, -360.0, 360.0, rotate.format);
   gestureItem(edits, "Rotate placement", changed, SetPlacement{ref, pl});
+  contextHelp(state, rotate.tooltip);
   keyButton(state, edits, path + ".placement.scale", &pl.scale.x, 3);
-  changed = dragVec3("Scale", pl.scale, 0.005, -4.0, 4.0);
+  changed = dragVec3(scale.label, pl.scale, scale.speed, -4.0, 4.0, scale.format);
   state.probe.frame("function.scale");
   gestureItem(edits, "Scale placement", changed, SetPlacement{ref, pl});
+  contextHelp(state, scale.tooltip);
 }
 
 /// The final function's own settings: how its lattice maps points, and its colour blend.

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "flame/flame_symmetry.h"
+#include "edit/flame_symmetry.h"
 
 namespace gridifs::ui {
 

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <cstdio>
 
-#include "flame/palette.h"
-#include "flame/palette_gradient.h"
 #include "model/settings_tables.h"
+#include "tone/palette.h"
+#include "tone/palette_gradient.h"
 #include "ui/base/widgets.h"
 #include "ui/panels/key_button.h"
 #include "ui/panels/setting_slider.h"

@@ -4,8 +4,8 @@
 #include <chrono>
 #include <memory>
 
-#include "flame/palette.h"
 #include "render/flame_render.h"
+#include "tone/palette.h"
 
 namespace gridifs::ui {
 

@@ -9,9 +9,9 @@
 
 #include "base/background_job.h"
 #include "edit/document.h"
-#include "flame/density_histogram.h"
 #include "model/flame_settings.h"
 #include "render/chaos_renderer.h"
+#include "tone/density_histogram.h"
 
 namespace gridifs::ui {
 

@@ -7,7 +7,7 @@
 #include <cmath>
 #include <filesystem>
 
-#include "flame/palette_gradient.h"
+#include "tone/palette_gradient.h"
 #include "ui/base/widgets.h"
 #include "ui/views/preview_modes.h"
 

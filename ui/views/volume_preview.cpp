@@ -5,8 +5,8 @@
 #include <cmath>
 
 #include "base/system_memory.h"
-#include "flame/palette.h"
 #include "model/palette_reference.h"
+#include "tone/palette.h"
 #include "volume/measure_attractor.h"
 
 namespace gridifs::ui {

@@ -1,4 +1,4 @@
-#include "flame/palette.h"
+#include "tone/palette.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,11 +1,11 @@
-#include "anim/fractal_field.h"
+#include "field/fractal_field.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "anim/field_lattice.h"
-#include "anim/field_step.h"
 #include "base/hash.h"
+#include "field/field_lattice.h"
+#include "field/field_step.h"
 
 namespace gridifs {
 

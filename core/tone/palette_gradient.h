@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "flame/palette.h"
 #include "model/flame_settings.h"
+#include "tone/palette.h"
 
 namespace gridifs {
 

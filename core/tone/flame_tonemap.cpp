@@ -1,4 +1,4 @@
-#include "flame/flame_tonemap.h"
+#include "tone/flame_tonemap.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "base/parallel.h"
-#include "flame/density_filter.h"
+#include "tone/density_filter.h"
 
 namespace gridifs {
 namespace {

@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "flame/flame_tonemap.h"
+#include "tone/flame_tonemap.h"
 
 namespace gridifs {
 

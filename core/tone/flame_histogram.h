@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "flame/palette.h"
+#include "tone/palette.h"
 
 namespace gridifs {
 

@@ -1,4 +1,4 @@
-#include "flame/palette_gradient.h"
+#include "tone/palette_gradient.h"
 
 #include <algorithm>
 #include <cctype>

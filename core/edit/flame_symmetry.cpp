@@ -1,4 +1,4 @@
-#include "flame/flame_symmetry.h"
+#include "edit/flame_symmetry.h"
 
 #include <algorithm>
 #include <cmath>

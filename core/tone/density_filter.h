@@ -10,8 +10,8 @@
 // std::invalid_argument for settings that cannot make a kernel.
 #include <vector>
 
-#include "flame/flame_histogram.h"
-#include "flame/flame_tonemap.h"
+#include "tone/flame_histogram.h"
+#include "tone/flame_tonemap.h"
 
 namespace gridifs {
 

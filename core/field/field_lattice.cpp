@@ -1,4 +1,4 @@
-#include "anim/field_lattice.h"
+#include "field/field_lattice.h"
 
 namespace gridifs::field_lattice {
 

@@ -1,4 +1,4 @@
-#include "flame/density_histogram.h"
+#include "tone/density_histogram.h"
 
 #include <algorithm>
 #include <bit>

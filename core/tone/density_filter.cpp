@@ -1,4 +1,4 @@
-#include "flame/density_filter.h"
+#include "tone/density_filter.h"
 
 #include "base/parallel.h"
 

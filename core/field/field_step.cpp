@@ -1,4 +1,4 @@
-#include "anim/field_step.h"
+#include "field/field_step.h"
 
 #include <algorithm>
 #include <array>
@@ -8,9 +8,9 @@
 #include <limits>
 #include <numeric>
 
-#include "anim/field_lattice.h"
-#include "anim/fractal_field.h"
 #include "base/parallel.h"
+#include "field/field_lattice.h"
+#include "field/fractal_field.h"
 
 namespace gridifs {
 

@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "base/types.h"
-#include "flame/flame_histogram.h"
 #include "model/flame_settings.h"
+#include "tone/flame_histogram.h"
 
 namespace gridifs {
 
