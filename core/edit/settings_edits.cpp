@@ -2,8 +2,6 @@
 
 #include <algorithm>
 
-#include "base/errors.h"
-#include "edit/edit_refs.h"
 #include "model/settings_tables.h"
 
 namespace gridifs {
