@@ -10,8 +10,8 @@
 #include "edit/project_edit.h"
 #include "io/project_io.h"
 #include "job/prepared_render.h"
-#include "model/project_time.h"
-#include "model/validation.h"
+#include "schema/project_time.h"
+#include "schema/validation.h"
 
 namespace gridifs::cli {
 namespace {

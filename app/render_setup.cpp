@@ -8,9 +8,9 @@
 #include <cstdio>
 
 #include "app/cli.h"
+#include "freeform/free_form.h"
 #include "job/prepared_render.h"
 #include "model/contractivity.h"
-#include "model/free_form.h"
 #include "volume/measure_attractor.h"
 #include "volume/volume_points.h"
 

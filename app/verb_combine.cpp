@@ -1,9 +1,9 @@
 // gridifs combine A.gridifs B.gridifs --op union|concat|product|shuffle|intersection|composition|matrix-union -o
-// C.gridifs: two projects as one (core/model/ifs_combination.h says what each operation builds).
+// C.gridifs: two projects as one (core/construction/ifs_combination.h says what each operation builds).
 #include "app/cli.h"
 #include "app/render_setup.h"
+#include "construction/ifs_combination.h"
 #include "io/project_io.h"
-#include "model/ifs_combination.h"
 
 namespace gridifs::cli {
 namespace {

@@ -10,8 +10,8 @@
 #include "mesh/field_heightfield.h"
 #include "mesh/field_layer_mesh.h"
 #include "mesh/mesh_io.h"
-#include "model/field_layer.h"
 #include "render/field_image.h"
+#include "schema/field_layer.h"
 #include "tone/palette.h"
 
 namespace gridifs::cli {

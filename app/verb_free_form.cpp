@@ -1,16 +1,16 @@
 // gridifs free-form -o OUT.gridifs (--preset NAME | --from GRID.gridifs): a free-form project
 // (Thollot, Zair, Tosan & Vandorpe 1997, §5), either a preset (Bézier or B-spline curve or patch
 // of a degree, the Sierpinski gasket) or F̂ of a grid project: its functions as matrices on a
-// control net, flat or one of the paper's quadratic deformations (model/free_form_deformation.h).
+// control net, flat or one of the paper's quadratic deformations (freeform/free_form_deformation.h).
 #include <cstdio>
 #include <optional>
 
 #include "app/cli.h"
 #include "app/render_setup.h"
+#include "freeform/free_form_deformation.h"
+#include "freeform/free_form_presets.h"
 #include "io/project_io.h"
 #include "model/final_function.h"
-#include "model/free_form_deformation.h"
-#include "model/free_form_presets.h"
 
 namespace gridifs::cli {
 namespace {

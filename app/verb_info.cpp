@@ -6,12 +6,12 @@
 #include "anim/track_path.h"
 #include "app/cli.h"
 #include "app/render_device_option.h"
+#include "freeform/free_form.h"
+#include "freeform/state_expansion.h"
+#include "freeform/transition_matrix.h"
 #include "io/parameter_paths.h"
 #include "model/contractivity.h"
-#include "model/free_form.h"
-#include "model/project_parameter.h"
-#include "model/state_expansion.h"
-#include "model/transition_matrix.h"
+#include "schema/project_parameter.h"
 
 namespace gridifs::cli {
 namespace {

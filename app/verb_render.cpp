@@ -24,10 +24,10 @@
 #include "app/render_volume.h"
 #include "io/project_io.h"
 #include "job/frame_output.h"
-#include "model/settings_tables.h"
 #include "render/flame_render.h"
 #include "render/image_file.h"
 #include "render/motion_blur.h"
+#include "schema/settings_tables.h"
 
 namespace gridifs::cli {
 namespace {

@@ -10,7 +10,7 @@
 #include "app/render_setup.h"
 #include "app/set_iterate_output.h"
 #include "io/project_io.h"
-#include "model/validation.h"
+#include "schema/validation.h"
 #include "volume/measure_attractor.h"
 #include "volume/vdb_volume_file.h"
 

@@ -1,6 +1,6 @@
 // The flame variations on the GPU (Draves & Reckase 2003, §3 and the appendix's catalogue; flam3
 // 3.1's variations.c for the later ones), in float: the formulas, 3D forms and parameter orders of
-// core/model/flame_variations.cpp, which stays the reference. Prepended to chaos_game.comp.glsl
+// core/variations/flame_variations.cpp, which stays the reference. Prepended to chaos_game.comp.glsl
 // when the IFS has variations, after the host's defines:
 //   V_<name>    each variation's index in flameVariations() (the C++ table is the one numbering);
 //   USE_<name>  1 for the variations this IFS uses, else 0: the program is specialised to them, so

@@ -54,7 +54,7 @@ using KeyframeTracks = std::map<std::string, KeyframeTrack>;
 void remapTrackIndices(KeyframeTracks& tracks, const std::string& listPath, const std::function<int(int)>& newIndex);
 
 /// The project's timeline: "animation": {"fps", "start", "end", "loop"} (seconds). Its ranges,
-/// file reading and validation are the table model/settings_tables.h animationSettingsTable().
+/// file reading and validation are the table schema/settings_tables.h animationSettingsTable().
 struct AnimationSettings {
   double fps = 24.0;  // in (0, 1000]
   double start = 0.0;

@@ -2,7 +2,7 @@
 // The address of a keyframed number: its path in the project file ("functions[0].ops[1].k",
 // "render.flame.gamma", "camera.target[2]"). Parsing checks the syntax alone — names joined by
 // dots, each followed by any number of [index] — and splits the path into tokens, one per level
-// of the file's JSON, as a JSON pointer does; model/project_parameter.h looks them up in a
+// of the file's JSON, as a JSON pointer does; schema/project_parameter.h looks them up in a
 // project. Tracks were first resolved through JSON pointers, and saved files may rely on what
 // those read, so a name also splits at '/' and "~0" and "~1" stand for '~' and '/'
 // ("camera/yaw" is camera.yaw), and a name of digits indexes a list ("functions.0.weight").

@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "base/errors.h"
-#include "model/live_binding.h"
+#include "schema/live_binding.h"
 
 namespace gridifs {
 

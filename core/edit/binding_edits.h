@@ -1,5 +1,5 @@
 #pragma once
-// Edits of a project's bindings (model/live_binding.h) and of what live input recorded.
+// Edits of a project's bindings (schema/live_binding.h) and of what live input recorded.
 #include <map>
 #include <string>
 #include <vector>

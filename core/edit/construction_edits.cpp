@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "base/errors.h"
+#include "construction/construction_evaluation.h"
 
 namespace gridifs {
 namespace {

@@ -1,9 +1,9 @@
 #include "edit/document.h"
 
 #include "base/errors.h"
-#include "model/live_binding.h"
 #include "model/stack_evaluator.h"
-#include "model/validation.h"
+#include "schema/live_binding.h"
+#include "schema/validation.h"
 
 namespace gridifs {
 

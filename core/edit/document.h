@@ -58,12 +58,12 @@ class Document {
   /// A named edit like apply(), validated, but without an undo step (the modeller's playhead,
   /// SetTime: artists scrub and play without filling the history). Undo and redo keep it.
   void applyUnrecorded(const ProjectEdit& edit);
-  /// A value from live input or sound (model/live_binding.h): like applyUnrecorded(), but outside
+  /// A value from live input or sound (schema/live_binding.h): like applyUnrecorded(), but outside
   /// the keyframing rule, so a bound number moves over its track without being keyed.
   void applyLiveValue(const ProjectEdit& edit);
 
   /// A rule applied to every change after it is made and before it is validated, given the
-  /// project before and after (the modeller's keyframing: model/project_time.h
+  /// project before and after (the modeller's keyframing: schema/project_time.h
   /// keyEditedParameters). Undo and redo apply it with `before` equal to the restored project
   /// whose time is set to the current one, so unrecorded time changes survive them.
   using Rule = std::function<Project(const Project& before, Project next)>;

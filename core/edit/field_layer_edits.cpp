@@ -1,7 +1,7 @@
 #include "edit/field_layer_edits.h"
 
 #include "base/errors.h"
-#include "model/field_layer.h"
+#include "schema/field_layer.h"
 
 namespace gridifs {
 namespace {

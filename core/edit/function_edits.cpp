@@ -4,8 +4,8 @@
 #include "edit/edit_refs.h"
 #include "edit/flame_symmetry.h"
 #include "edit/new_function.h"
+#include "freeform/transition_matrix.h"
 #include "model/final_function.h"
-#include "model/transition_matrix.h"
 
 namespace gridifs {
 

@@ -5,7 +5,7 @@
 //
 // Thread-safety: plain values; apply() touches only the project given. They never throw: a key on
 // a path that names no number of the project is refused where tracks are evaluated or saved
-// (model/project_time.h checkTrackPaths), as a track read from a file would be.
+// (schema/project_time.h checkTrackPaths), as a track read from a file would be.
 #include <string>
 #include <vector>
 

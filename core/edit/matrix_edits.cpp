@@ -2,8 +2,8 @@
 
 #include "base/errors.h"
 #include "edit/edit_refs.h"
+#include "freeform/free_form_resize.h"
 #include "model/final_function.h"
-#include "model/free_form_resize.h"
 
 namespace gridifs {
 

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "model/free_form_deformation.h"
-#include "model/free_form_presets.h"
+#include "freeform/free_form_deformation.h"
+#include "freeform/free_form_presets.h"
 #include "model/project.h"
 
 namespace gridifs {
@@ -68,7 +68,7 @@ struct ApplyFreeFormPreset {
   std::string label() const;
 };
 
-/// Adds a control point; every matrix grows with it (model/free_form_resize.h says how: a
+/// Adds a control point; every matrix grows with it (freeform/free_form_resize.h says how: a
 /// Bézier curve is degree-elevated, anything else gets a zero column and a mean row).
 struct AddControlPoint {
   std::optional<Vec3> point;  // default: the centroid of the others
@@ -76,7 +76,7 @@ struct AddControlPoint {
   std::string label() const { return "Add control point"; }
 };
 
-/// Removes control point `index`; every matrix shrinks with it (model/free_form_resize.h).
+/// Removes control point `index`; every matrix shrinks with it (freeform/free_form_resize.h).
 struct RemoveControlPoint {
   std::size_t index = 0;
   void apply(Project& project) const;
@@ -84,7 +84,7 @@ struct RemoveControlPoint {
 };
 
 /// F̂: replaces a grid project by the free-form one whose matrices are its functions on a
-/// control net (model/free_form_deformation.h); the final function is kept.
+/// control net (freeform/free_form_deformation.h); the final function is kept.
 struct MapOntoControlNet {
   ControlNetOptions options;
   void apply(Project& project) const;

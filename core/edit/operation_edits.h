@@ -12,8 +12,8 @@
 
 #include "model/function_ref.h"
 #include "model/grid.h"
-#include "model/operation_table.h"
 #include "model/project.h"
+#include "schema/operation_table.h"
 
 namespace gridifs {
 

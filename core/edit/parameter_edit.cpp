@@ -2,8 +2,8 @@
 
 #include "anim/track_path.h"
 #include "base/errors.h"
-#include "model/project_parameter.h"
-#include "model/settings_tables.h"
+#include "schema/project_parameter.h"
+#include "schema/settings_tables.h"
 
 namespace gridifs {
 namespace {

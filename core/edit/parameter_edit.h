@@ -1,6 +1,6 @@
 #pragma once
 // The one edit that sets any number of a project by its parameter path ("functions[0].ops[1].k",
-// "render.flame.gamma", "camera.target[2]": the paths of keyframe tracks, model/project_parameter.h).
+// "render.flame.gamma", "camera.target[2]": the paths of keyframe tracks, schema/project_parameter.h).
 // Panels, scripts and live control set numbers through it, so a value is accepted exactly when a
 // project file holding it would be, with the file reader's words and path.
 //

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "model/settings_tables.h"
+#include "schema/settings_tables.h"
 
 namespace gridifs {
 

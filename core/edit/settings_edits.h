@@ -11,7 +11,7 @@
 #include <string>
 
 #include "model/project.h"
-#include "model/settings_table.h"
+#include "schema/settings_table.h"
 
 namespace gridifs {
 

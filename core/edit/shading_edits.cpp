@@ -1,7 +1,7 @@
 #include "edit/shading_edits.h"
 
 #include "edit/edit_refs.h"
-#include "model/settings_tables.h"
+#include "schema/settings_tables.h"
 
 namespace gridifs {
 

@@ -1,7 +1,7 @@
 #include "edit/variation_edits.h"
 
 #include "base/errors.h"
-#include "model/flame_variations.h"
+#include "variations/flame_variations.h"
 
 namespace gridifs {
 namespace {

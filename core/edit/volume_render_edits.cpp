@@ -4,7 +4,7 @@
 
 #include "base/errors.h"
 #include "model/function_kind.h"
-#include "model/validation.h"
+#include "schema/validation.h"
 
 namespace gridifs {
 namespace {

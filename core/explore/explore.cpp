@@ -11,15 +11,15 @@
 #include "edit/parameter_edit.h"
 #include "edit/project_edit.h"
 #include "explore/explore_stream.h"
+#include "freeform/free_form_presets.h"
 #include "io/parameter_paths.h"
-#include "model/flame_variations.h"
-#include "model/free_form_presets.h"
-#include "model/live_binding.h"
-#include "model/operation_table.h"
-#include "model/palette_reference.h"
-#include "model/project_parameter.h"
-#include "model/project_time.h"
-#include "model/validation.h"
+#include "schema/live_binding.h"
+#include "schema/operation_table.h"
+#include "schema/palette_reference.h"
+#include "schema/project_parameter.h"
+#include "schema/project_time.h"
+#include "schema/validation.h"
+#include "variations/flame_variations.h"
 
 namespace gridifs {
 namespace {

@@ -3,7 +3,7 @@
 // Apophysis's mutation window, Chaotica's random worlds and JWildfire's MutaGen let artists find
 // forms. Every draw comes from the project's own description: the operation table's parameters
 // and ranges, flam3's variation list, the free-form presets, the parameter paths and their spans
-// (model/project_parameter.h), so a new operation or variation joins without new code here. One
+// (schema/project_parameter.h), so a new operation or variation joins without new code here. One
 // seeded stream (explore/explore_stream.h) makes every result reproducible byte for byte, and
 // every result passes the same test the modeller uses (explore/attractor_verdict.h) or is drawn
 // again, a bounded number of times.

@@ -47,7 +47,7 @@ struct FractalFieldParams {
   Vec3 wind{0.0, 0.0, 0.0};                          // shift of the sample point per unit time
   std::array<double, 4> period{0.0, 0.0, 0.0, 0.0};  // Lx, Ly, Lz, Lt; 0 = not periodic
   /// Not a file field: the wind's displacement ∫₀ᵗ wind(τ) dτ at the project's time when the
-  /// wind is keyed (set with the project at a moment, model/wind_drift.h); none: wind·t.
+  /// wind is keyed (set with the project at a moment, schema/wind_drift.h); none: wind·t.
   std::optional<Vec3> drift;
 
   /// The shift of the sample point at time t: the integral of the wind from 0 to t.

@@ -5,7 +5,7 @@
 #include "anim/track_path.h"
 #include "base/errors.h"
 #include "io/settings_json.h"
-#include "model/settings_tables.h"
+#include "schema/settings_tables.h"
 
 namespace gridifs {
 namespace {

@@ -5,8 +5,8 @@
 #include <glm/geometric.hpp>
 
 #include "io/flame_genome.h"
-#include "model/settings_tables.h"
 #include "render/camera.h"
+#include "schema/settings_tables.h"
 
 namespace gridifs {
 namespace {

@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
-#include "model/flame_variations.h"
 #include "model/grid.h"
 #include "model/grid_affine_fit.h"
 #include "model/project.h"
+#include "variations/flame_variations.h"
 
 namespace gridifs {
 

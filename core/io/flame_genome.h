@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "model/flame_variations.h"
 #include "tone/palette.h"
+#include "variations/flame_variations.h"
 
 namespace gridifs {
 

@@ -7,10 +7,10 @@
 #include <random>
 #include <set>
 
+#include "freeform/transition_matrix.h"
 #include "io/flame_camera.h"
 #include "io/project_io.h"
 #include "model/stack_evaluator.h"
-#include "model/transition_matrix.h"
 
 namespace gridifs {
 namespace {

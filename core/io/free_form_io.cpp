@@ -2,9 +2,9 @@
 
 #include <cmath>
 
+#include "freeform/free_form.h"
 #include "io/settings_json.h"
-#include "model/free_form.h"
-#include "model/settings_tables.h"
+#include "schema/settings_tables.h"
 
 namespace gridifs::free_form_io {
 namespace {

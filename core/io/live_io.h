@@ -1,6 +1,6 @@
 #pragma once
 // Reading and writing a project's "audio" and "bindings" (internal to io/; docs/LIVE.md,
-// model/live_binding.h). Throws ModelError with a JSON path.
+// schema/live_binding.h). Throws ModelError with a JSON path.
 #include <nlohmann/json.hpp>
 
 #include "model/project.h"

@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "model/operation_table.h"
+#include "schema/operation_table.h"
 
 namespace gridifs::operation_json {
 

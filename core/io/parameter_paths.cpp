@@ -4,7 +4,7 @@
 
 #include "anim/track_path.h"
 #include "io/project_io.h"
-#include "model/project_parameter.h"
+#include "schema/project_parameter.h"
 
 namespace gridifs {
 namespace {

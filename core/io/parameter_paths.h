@@ -1,7 +1,7 @@
 #pragma once
 // Every number a project's file holds, by its parameter path ("functions[0].ops[1].k",
 // "camera.target[2]"): the paths keyframe tracks, scripts and live bindings address
-// (model/project_parameter.h).
+// (schema/project_parameter.h).
 #include <string>
 #include <vector>
 

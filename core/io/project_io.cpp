@@ -7,6 +7,8 @@
 
 #include "base/atomic_file.h"
 #include "base/bounded_read.h"
+#include "construction/construction_evaluation.h"
+#include "freeform/transition_matrix.h"
 #include "io/animation_json.h"
 #include "io/construction_io.h"
 #include "io/free_form_io.h"
@@ -19,12 +21,11 @@
 #include "io/variation_io.h"
 #include "io/volume_io.h"
 #include "io/volume_render_io.h"
-#include "model/live_binding.h"
-#include "model/operation_table.h"
-#include "model/project_time.h"
-#include "model/settings_tables.h"
-#include "model/transition_matrix.h"
-#include "model/validation.h"
+#include "schema/live_binding.h"
+#include "schema/operation_table.h"
+#include "schema/project_time.h"
+#include "schema/settings_tables.h"
+#include "schema/validation.h"
 
 namespace gridifs {
 namespace {

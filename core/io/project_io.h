@@ -6,7 +6,7 @@
 
 #include "base/errors.h"
 #include "model/project.h"
-#include "model/validation.h"
+#include "schema/validation.h"
 
 namespace gridifs {
 

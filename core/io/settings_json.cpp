@@ -53,7 +53,14 @@ std::uint64_t readSeedInRange(const SettingSpec& s, const json& j, const std::st
 
 double readSettingNumber(SettingWords words, const SettingSpec& s, const json& j, const std::string& path) {
   if (words == SettingWords::FiniteOnly) return readAnyFinite(j, path);
-  return s.noun ? readFinite(j, path) : readNumber(j, path, s.min, s.max);
+  if (s.noun) return readFinite(j, path);
+  if (s.invalid) {
+    // A field with a message of its own says it for any value out of its range, as validation does.
+    const double v = readFinite(j, path);
+    if (!(std::isfinite(v) && (s.openMin ? v > s.min : v >= s.min) && v <= s.max)) fail(path, s.invalid);
+    return v;
+  }
+  return readNumber(j, path, s.min, s.max);
 }
 
 double readSettingInteger(SettingWords words, const SettingSpec& s, const json& j, const std::string& path) {
@@ -172,7 +179,7 @@ void writeSettingFields(const SettingTable& table, const void* group, ordered_js
   // changed them saves as it always has and one that did keeps them at the end.
   for (bool optional : {false, true})
     for (const SettingSpec& s : table.fields)
-      if (s.omitDefault == optional && !(optional && s.isDefault(group))) writeSettingField(s, group, object);
+      if (s.omitDefault == optional && settingWritten(s, group)) writeSettingField(s, group, object);
 }
 
 }  // namespace gridifs

@@ -1,12 +1,12 @@
 #pragma once
-// A settings group (model/settings_table.h) in the project file: reading loops over the group's
+// A settings group (schema/settings_table.h) in the project file: reading loops over the group's
 // table with JSON-path errors, writing emits its fields in table order.
 //
 // Thread-safety: pure functions.
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "model/settings_table.h"
+#include "schema/settings_table.h"
 
 namespace gridifs {
 

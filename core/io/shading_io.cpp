@@ -2,7 +2,8 @@
 
 #include "io/json_read.h"
 #include "io/settings_json.h"
-#include "model/settings_tables.h"
+#include "schema/settings_tables.h"
+#include "schema/validation.h"
 
 namespace gridifs {
 

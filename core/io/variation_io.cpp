@@ -1,7 +1,13 @@
 #include "io/variation_io.h"
 
+#include <algorithm>
+#include <string_view>
+#include <vector>
+
 #include "io/json_read.h"
-#include "model/validation.h"
+#include "io/settings_json.h"
+#include "schema/settings_tables.h"
+#include "schema/validation.h"
 
 namespace gridifs::variation_io {
 
@@ -44,12 +50,7 @@ void readFunctionFields(const json& f, const std::string& path, Function& fn) {
       }
       post.matrix = rows;
     } else {
-      if (auto v = it->find("translate"); v != it->end())
-        post.placement.translate = readVec3(*v, join(p, "translate"), -limits::kMaxCoordinate, limits::kMaxCoordinate);
-      if (auto v = it->find("rotate"); v != it->end())
-        post.placement.rotate = readVec3(*v, join(p, "rotate"), -limits::kMaxCoordinate, limits::kMaxCoordinate);
-      if (auto v = it->find("scale"); v != it->end())
-        post.placement.scale = readVec3(*v, join(p, "scale"), -limits::kMaxCoordinate, limits::kMaxCoordinate);
+      readSettingFields(placementTable(), *it, p, &post.placement);
     }
     fn.post = post;
   }
@@ -65,10 +66,12 @@ void writeFunctionFields(const Function& fn, ordered_json& out) {
       for (const auto& row : *fn.post->matrix) rows.push_back({row[0], row[1], row[2], row[3]});
       post["matrix"] = rows;
     } else {
-      const Placement& pl = fn.post->placement;
-      post["rotate"] = {pl.rotate.x, pl.rotate.y, pl.rotate.z};
-      post["scale"] = {pl.scale.x, pl.scale.y, pl.scale.z};
-      post["translate"] = {pl.translate.x, pl.translate.y, pl.translate.z};
+      // The post map's keys have always been written in alphabetical order.
+      std::vector<const SettingSpec*> fields;
+      for (const SettingSpec& field : placementTable().fields) fields.push_back(&field);
+      std::sort(fields.begin(), fields.end(),
+                [](const SettingSpec* a, const SettingSpec* b) { return std::string_view(a->key) < b->key; });
+      for (const SettingSpec* field : fields) writeSettingField(*field, &fn.post->placement, post);
     }
     out["post"] = post;
   }

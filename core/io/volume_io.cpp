@@ -5,9 +5,9 @@
 #include "io/json_read.h"
 #include "io/operation_json.h"
 #include "io/settings_json.h"
-#include "model/field_layer.h"
-#include "model/operation_table.h"
-#include "model/settings_tables.h"
+#include "schema/field_layer.h"
+#include "schema/operation_table.h"
+#include "schema/settings_tables.h"
 
 namespace gridifs::volume_io {
 namespace {
@@ -221,53 +221,40 @@ namespace {
 // The field operation's parameters that a density field carries: all but the amplitude.
 bool isDensityFieldParam(const ParamSpec& spec) { return std::string_view(spec.key) != "amplitude"; }
 
-// A layer's role and placement in the scene, and the shape it is blended with (Colonna's
-// figures 3 and 6); each is written only when it differs from the single field's default, so a
-// file with one plain field saves as before.
+// A layer's role in the scene and the shape it is blended with (Colonna's figures 3 and 6), with
+// its numbers from fieldLayerTable(); each is written only when it differs from the single
+// field's default or matters for the layer, so a file with one plain field saves as before.
 void readLayerFields(const json& object, const std::string& path, VolumeDensityField& field) {
   if (auto it = object.find("role"); it != object.end()) {
     const std::string word = readText(*it, path + ".role");
     if (!parseFieldRole(word, field.role))
       fail(path + ".role", "expected \"density\", \"cloud\" or \"terrain\", found \"" + word.substr(0, 32) + "\"");
   }
-  if (auto it = object.find("height"); it != object.end())
-    field.height = json_read::readNumber(*it, path + ".height", -kMaxFieldLayerExtent, kMaxFieldLayerExtent);
-  if (auto it = object.find("thickness"); it != object.end())
-    field.thickness = json_read::readNumber(*it, path + ".thickness", 0.0, kMaxFieldLayerExtent);
   if (auto it = object.find("shape"); it != object.end() && !it->is_null()) {
     field.shape = readSet(*it, path + ".shape");
     if (field.shape->shape == SetShape::Mesh || field.shape->shape == SetShape::Vdb ||
         field.shape->shape == SetShape::Image)
       fail(path + ".shape", "a field's shape must be a sphere, a box or a torus");
   }
-  if (auto it = object.find("blend"); it != object.end())
-    field.blend = json_read::readNumber(*it, path + ".blend", 0.0, 1.0);
-  if (auto it = object.find("softness"); it != object.end()) {
-    field.softness = json_read::readNumber(*it, path + ".softness", 0.0, kMaxFieldLayerExtent);
-    if (field.softness <= 0.0) fail(path + ".softness", "expected a positive number of at most 1000");
-  }
 }
 
 void writeLayerFields(const VolumeDensityField& field, ordered_json& o) {
-  const VolumeDensityField defaults;
-  if (field.role != defaults.role) o["role"] = toString(field.role);
-  if (field.role != FieldRole::Density || field.height != defaults.height) o["height"] = field.height;
-  if (field.role == FieldRole::Cloud || field.thickness != defaults.thickness) o["thickness"] = field.thickness;
-  if (field.shape) {
-    o["shape"] = writeSet(*field.shape);
-    o["blend"] = field.blend;
-    o["softness"] = field.softness;
-  } else {
-    if (field.blend != defaults.blend) o["blend"] = field.blend;
-    if (field.softness != defaults.softness) o["softness"] = field.softness;
-  }
+  const SettingTableOf<VolumeDensityField>& table = fieldLayerTable();
+  auto write = [&](const char* key) {
+    if (settingWritten(table.field(key), &field)) writeSettingField(table.field(key), &field, o);
+  };
+  if (field.role != VolumeDensityField{}.role) o["role"] = toString(field.role);
+  write("height");
+  write("thickness");
+  if (field.shape) o["shape"] = writeSet(*field.shape);
+  write("blend");
+  write("softness");
 }
 
 VolumeDensityField readDensityField(const json& object, const std::string& path) {
   json_read::requireObject(object, path);
   VolumeDensityField field;
-  if (auto it = object.find("strength"); it != object.end())
-    field.strength = json_read::readNumber(*it, path + ".strength", 0.0, kMaxDensityFieldStrength);
+  readSettingFields(fieldLayerTable(), object, path, &field);
   OpParams params = field.field;
   for (const ParamSpec& spec : findOperation("field")->params)
     if (isDensityFieldParam(spec)) operation_json::readParam(spec, object, path, params);
@@ -278,7 +265,7 @@ VolumeDensityField readDensityField(const json& object, const std::string& path)
 
 ordered_json writeDensityField(const VolumeDensityField& field) {
   ordered_json o;
-  o["strength"] = field.strength;
+  writeSettingField(fieldLayerTable().field("strength"), &field, o);
   const OpParams params = field.field;
   for (const ParamSpec& spec : findOperation("field")->params)
     if (isDensityFieldParam(spec)) o[spec.key] = operation_json::writeParam(spec, params);

@@ -2,9 +2,9 @@
 
 #include "io/json_read.h"
 #include "io/settings_json.h"
-#include "model/settings_tables.h"
-#include "model/validation.h"
 #include "model/volume_settings.h"
+#include "schema/settings_tables.h"
+#include "schema/validation.h"
 
 namespace gridifs::volume_render_io {
 

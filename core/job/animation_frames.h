@@ -2,7 +2,7 @@
 // Frames of an animation as image files: the numbered file names of a sequence and the render of
 // one frame, as File › Render animation… runs them on its worker thread (headless: it lives in
 // core so that it is tested, and used, without a window). One frame is the project
-// at t = frame / fps (every keyframe track evaluated, model/project_time.h) rendered in its display
+// at t = frame / fps (every keyframe track evaluated, schema/project_time.h) rendered in its display
 // mode (z-buffer, flame or shaded) with its render settings.
 #include <cstdint>
 #include <filesystem>

@@ -5,9 +5,9 @@
 #include <mutex>
 
 #include "live/live_drive.h"
-#include "model/project_time.h"
 #include "render/flame_render.h"
 #include "render/shaded_image.h"
+#include "schema/project_time.h"
 #include "tone/palette_gradient.h"
 #include "volume/condensation_sampler.h"
 #include "volume/measure_attractor.h"

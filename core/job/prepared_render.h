@@ -72,7 +72,7 @@ struct PreparedRender {
   std::string device;
 };
 
-/// The project at `time` as every render sees it: its tracks evaluated (model/project_time.h), and
+/// The project at `time` as every render sees it: its tracks evaluated (schema/project_time.h), and
 /// the numbers bound to its sound (live/live_drive.h) at their value then, the sound read from
 /// `folder` (empty: the working folder) and analysed once per process. Live sources (OSC, MIDI)
 /// have no value outside the modeller: their numbers keep their tracks' values. Throws

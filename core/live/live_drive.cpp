@@ -1,7 +1,7 @@
 #include "live/live_drive.h"
 
 #include "base/errors.h"
-#include "model/validation.h"
+#include "schema/validation.h"
 
 namespace gridifs {
 

@@ -1,5 +1,5 @@
 #pragma once
-// What drives a project's bound numbers at a moment (model/live_binding.h): the audio bindings'
+// What drives a project's bound numbers at a moment (schema/live_binding.h): the audio bindings'
 // curves, analysed once from the project's sound, and the last values live input (OSC, MIDI)
 // sent. applyBindings writes them over what the tracks say.
 //
@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "live/audio_envelope.h"
-#include "model/live_binding.h"
 #include "model/project.h"
+#include "schema/live_binding.h"
 
 namespace gridifs {
 

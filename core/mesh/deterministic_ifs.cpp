@@ -10,10 +10,10 @@
 
 #include "base/parallel.h"
 #include "base/text_format.h"
-#include "model/bezier_lattice.h"
+#include "freeform/bezier_lattice.h"
+#include "freeform/state_expansion.h"
+#include "freeform/transition_matrix.h"
 #include "model/stack_evaluator.h"
-#include "model/state_expansion.h"
-#include "model/transition_matrix.h"
 
 namespace gridifs {
 namespace {

@@ -52,7 +52,7 @@ struct DeterministicIfs {
   /// The transition matrix over `maps`: follows[a][b] when map b may be applied right after map a
   /// (Thollot et al. §3.2: only the allowed words are built). Empty: every word.
   std::vector<std::vector<char>> follows;
-  /// With an IFS matrix with states (model/state_expansion.h, the maps being its virtual
+  /// With an IFS matrix with states (freeform/state_expansion.h, the maps being its virtual
   /// functions): last[b] when map b may be applied last, i.e. its word starts in an initial state.
   /// Empty: every map.
   std::vector<char> last;

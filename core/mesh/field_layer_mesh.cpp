@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <limits>
 
-#include "model/field_layer.h"
+#include "schema/field_layer.h"
 
 namespace gridifs {
 namespace {

@@ -2,9 +2,10 @@
 // The construction tree of a project (Thollot, Zair, Tosan & Vandorpe 1997, §4.3 and their
 // figure 4.2): complex attractors built "step by step" from simple IFSs by the matrix operations
 // of §4. Leaves are other projects (files, paths relative to this project's file) or named parts
-// kept inside this project; inner nodes are operations looked up by name in one table
-// (constructionOps()), each a combination of model/ifs_combination.h. The project's functions,
-// transitions and free-form space are the evaluation of the tree (adoptEvaluation).
+// kept inside this project; inner nodes are operations named in one table. This header holds
+// the tree as the project keeps it; construction/construction_evaluation.h holds the operations
+// and the evaluation, whose result gives the project its functions, transitions and free-form
+// space (adoptEvaluation).
 //
 // A file leaf keeps the project it was read from (`loaded`, not saved): evaluation is a pure
 // function of the tree, and an edit or undo step holds everything it needs. io/construction_io.h
@@ -19,23 +20,6 @@
 namespace gridifs {
 
 struct Project;
-enum class CombineOp;  // model/ifs_combination.h (which includes this header through project.h)
-
-/// One operation a node may apply, a row of constructionOps().
-struct ConstructionOpSpec {
-  const char* name;   // the JSON "op" value, the same as `gridifs combine --op`
-  const char* label;  // what the tree panel shows
-  CombineOp combine;
-  std::size_t min_children = 2, max_children = 2;  // more than two: folded from the left
-  const char* help;                                // one line for the panel's tooltip
-};
-
-/// Every operation a node may have; adding an operation is one row.
-const std::vector<ConstructionOpSpec>& constructionOps();
-/// The row named `name`, or null.
-const ConstructionOpSpec* findConstructionOp(const std::string& name);
-/// The operations' names as a list ("union, concat, … or matrix-union"), for error messages.
-std::string constructionOpList();
 
 struct ConstructionNode {
   enum class Kind { File, Part, Operation };
@@ -75,27 +59,28 @@ const ConstructionNode* findNode(const ConstructionTree& tree, const NodePath& p
 ConstructionNode* findNode(ConstructionTree& tree, const NodePath& path);
 const ConstructionPart* findPart(const ConstructionTree& tree, const std::string& name);
 
+/// The combinations of construction/ifs_combination.h, by what they do to the IFS matrices.
+enum class CombineOp { Union, Concat, Product, Shuffle, Intersection, Composition, MatrixUnion };
+
+/// One operation a node may apply, a row of constructionOps().
+struct ConstructionOpSpec {
+  const char* name;   // the JSON "op" value, the same as `gridifs combine --op`
+  const char* label;  // what the tree panel shows
+  CombineOp combine;
+  std::size_t min_children = 2, max_children = 2;  // more than two: folded from the left
+  const char* help;                                // one line for the panel's tooltip
+};
+
+/// Every operation a node may have; adding an operation is one row.
+const std::vector<ConstructionOpSpec>& constructionOps();
+/// The row named `name`, or null.
+const ConstructionOpSpec* findConstructionOp(const std::string& name);
+/// The operations' names as a list ("union, concat, … or matrix-union"), for error messages.
+std::string constructionOpList();
+
 /// Checks the tree's shape: known operations with their number of children, parts that
 /// exist, non-empty names, at most limits::kMaxFunctions nodes. Throws ModelError at the
 /// offending node's JSON path.
 void checkConstructionTree(const ConstructionTree& tree);
-
-/// The tree's value: the project of its root (functions, transitions, space; the rest is the
-/// first leaf's). Throws ModelError at the JSON path of the node that fails: an unloaded file
-/// leaf, or an operation whose operands cannot be combined (the sentence says why).
-Project evaluateConstructionTree(const ConstructionTree& tree);
-
-/// Makes `project`'s functions, transitions and space those of `evaluated` (the camera,
-/// render settings, final function, time and tracks stay the project's).
-void adoptEvaluation(Project& project, const Project& evaluated);
-
-/// Re-evaluates `project`'s tree (when it has one) and adopts the result. Throws as
-/// evaluateConstructionTree.
-void reevaluateConstruction(Project& project);
-
-/// The function set a part made of `project`'s functions `indices` holds (their transitions
-/// restricted to them, the free-form space kept). Throws ModelError when `indices` is empty or
-/// names a function the project lacks.
-Project partOfFunctions(const Project& project, const std::vector<std::size_t>& indices);
 
 }  // namespace gridifs

@@ -4,8 +4,8 @@
 
 #include "base/errors.h"
 #include "base/types.h"
-#include "model/flame_variations.h"
 #include "model/stack_evaluator.h"
+#include "variations/flame_variations.h"
 
 namespace gridifs {
 

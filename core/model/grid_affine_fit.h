@@ -2,8 +2,8 @@
 // The least-squares affine map of a grid's nodes in the plane: what a flame xform's pre-affine
 // coefficients are for a grid (the dependent variations read them; export-flame writes them).
 // Pure function: thread-safe.
-#include "model/flame_variations.h"
 #include "model/grid.h"
+#include "variations/flame_variations.h"
 
 namespace gridifs {
 

@@ -3,7 +3,7 @@
 // §3.2). n states; matrix[i][j] lists the functions (indices in Project::functions) of H̃_ij, the
 // set of maps that may be read going from state i to state j; the attractor is
 // ⋃_{i∈Q_I, j∈Q_F} Ã(H̃)_ij, the limit of the words T_σ1…T_σk that label a path from an initial to
-// a final state (model/state_expansion.h compiles it for the renderers). Plain data.
+// a final state (freeform/state_expansion.h compiles it for the renderers). Plain data.
 #include <cstdint>
 #include <vector>
 

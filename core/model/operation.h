@@ -98,9 +98,6 @@ using FieldOp = FractalFieldParams;
 using OpParams = std::variant<TranslateOp, RotateOp, ScaleOp, TaperOp, TwistOp, BendOp, MagnetOp, MorphOp, CalculatorOp,
                               NodesOp, FieldOp>;
 
-/// The file-format name of each alternative, in variant order ("translate", ...).
-const char* opTypeName(const OpParams& params);
-
 struct Operation {
   OpParams params;
   Center center;

@@ -104,7 +104,7 @@ struct AudioSettings {
   bool operator==(const AudioSettings&) const = default;
 };
 
-/// One of "bindings": live input or sound driving a number of the project (model/live_binding.h).
+/// One of "bindings": live input or sound driving a number of the project (schema/live_binding.h).
 struct Binding {
   std::string path;    // a parameter path, as tracks name them
   std::string source;  // "audio:B", "osc:/ADDRESS", "midi:cc:N" or "midi:CH:cc:N"
@@ -121,7 +121,7 @@ struct Project {
   /// "transitions": N×N weights, after function i the next is j with probability
   /// ∝ weight_j · transitions[i][j] (core/transition_matrix.h). Empty: unrestricted.
   std::vector<std::vector<double>> transitions;
-  /// "states": an IFS matrix with states and initial/final state sets (model/state_expansion.h);
+  /// "states": an IFS matrix with states and initial/final state sets (freeform/state_expansion.h);
   /// a project has either this or `transitions`.
   std::optional<IfsStates> states;
   /// "time": the current time in seconds; fractal fields and the calculator's `t` read it.
@@ -130,7 +130,7 @@ struct Project {
   std::optional<AnimationSettings> animation;
   /// "tracks": keyframed parameters by JSON path. A track overrides the stored value.
   KeyframeTracks tracks;
-  /// "space": control points of a free-form IFS (model/free_form.h); its functions are Matrix ones.
+  /// "space": control points of a free-form IFS (freeform/free_form.h); its functions are Matrix ones.
   std::optional<FreeFormSpace> space;
   /// "volume": the density volume's settings (Sokolov & Gentil, §3.4); absent until first set.
   std::optional<VolumeSettings> volume;

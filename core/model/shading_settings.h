@@ -68,9 +68,4 @@ struct ShadingSettings {
   bool anyShadows() const;
 };
 
-/// Checks counts and ranges: at most 3 lights, non-zero finite light directions, colours in
-/// [0, 1], non-negative intensities, radii and strengths, an aperture only with a focus distance.
-/// Throws ModelError whose path is `path` + "." + the field (e.g. "render.shading.lights[3]").
-void validateShadingSettings(const ShadingSettings& settings, const std::string& path);
-
 }  // namespace gridifs

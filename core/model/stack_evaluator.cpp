@@ -274,8 +274,7 @@ Grid evaluateFunction(const Function& function, std::size_t upToOp, bool applyPl
     for (const Vec3& p : grid.nodes())
       if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z) || std::abs(p.x) > limits::kMaxCoordinate ||
           std::abs(p.y) > limits::kMaxCoordinate || std::abs(p.z) > limits::kMaxCoordinate)
-        throw ModelError(
-            path, std::string(opTypeName(op.params)) + " moves a node to a non-finite or absurdly distant position");
+        throw ModelError(path, "the operation moves a node to a non-finite or absurdly distant position");
   }
   if (applyPlacementToo) {
     const EulerRotation rotation(function.placement.rotate);

@@ -20,7 +20,7 @@ namespace gridifs {
 /// its `role` says what it adds. G below is the layer's field value: F_seed, or with a `shape`
 /// Colonna's interpolation between the field and a geometric shape (§1.2, fig. 3),
 /// G = (1 − blend)·F + blend·S with S = clamp(−d/softness, −1, 1), d the shape's signed distance
-/// (model/field_layer.h).
+/// (schema/field_layer.h).
 enum class FieldRole {
   Density,  // weights the visits: max(0, 1 + strength·G(p)) (the single field's meaning)
   Cloud,    // a cloud of its own: c = clamp(strength·G(x, y, height), 0, 1) fills the voxels within

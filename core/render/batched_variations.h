@@ -1,9 +1,9 @@
 #pragma once
 // The variation stages of a compiled IFS's functions as one BatchedVariations
-// (model/variation_lanes.h), which runs them for the chaos kernel's four chains at once.
+// (variations/variation_lanes.h), which runs them for the chaos kernel's four chains at once.
 #include <memory>
 
-#include "model/variation_lanes.h"
+#include "variations/variation_lanes.h"
 
 namespace gridifs {
 

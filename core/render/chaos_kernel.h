@@ -18,10 +18,10 @@
 #include <type_traits>
 
 #include "base/hash.h"
-#include "model/lane_math.h"
 #include "render/batched_variations.h"
 #include "render/camera.h"
 #include "render/compiled_ifs.h"
+#include "variations/lane_math.h"
 
 #if defined(__SSE2__)
 #include <emmintrin.h>
@@ -361,7 +361,7 @@ template <bool kRestricted, class Plot>
 [[gnu::always_inline]] inline int advanceAndPlot(ChainState& st, int lane, const HotIfs& ifs, Plot& plot,
                                                  std::int64_t& bad, v4f p, v4f col, std::uint32_t nextRow) {
   if constexpr (kRestricted) {
-    // An IFS matrix with states (model/state_expansion.h): a peek plots its image and leaves the
+    // An IFS matrix with states (freeform/state_expansion.h): a peek plots its image and leaves the
     // lane as it was (its point is not yet on the attractor while skipping); a hidden step moves
     // the lane without plotting.
     if (nextRow & kTransitionFlags) [[unlikely]] {

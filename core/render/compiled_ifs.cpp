@@ -7,11 +7,11 @@
 #include <string>
 
 #include "base/hash.h"
-#include "model/bezier_lattice.h"
+#include "freeform/bezier_lattice.h"
+#include "freeform/state_expansion.h"
+#include "freeform/transition_matrix.h"
 #include "model/grid_affine_fit.h"
 #include "model/stack_evaluator.h"
-#include "model/state_expansion.h"
-#include "model/transition_matrix.h"
 #include "render/batched_variations.h"
 
 namespace gridifs {
@@ -351,7 +351,7 @@ void buildTransitionWalk(CompiledIfs& ifs, const std::vector<std::vector<double>
 }
 
 /// An IFS matrix with states: the compiled functions become its virtual functions
-/// (model/state_expansion.h), each a copy of its function, and `weights` theirs. The walk has the
+/// (freeform/state_expansion.h), each a copy of its function, and `weights` theirs. The walk has the
 /// skip phase's rows 0 … n (inside strongly connected parts) then the plotting rows n + 1 … 2n + 1.
 void compileStates(const Project& project, CompiledIfs& ifs, std::vector<double>& weights) {
   std::vector<std::size_t> present, position;

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "model/evaluation_cache.h"
-#include "model/flame_variations.h"
 #include "model/project.h"
+#include "variations/flame_variations.h"
 
 namespace gridifs {
 
@@ -139,7 +139,7 @@ struct TransitionStep {
 };
 
 /// Flags on TransitionStep::keepRow and aliasRow for an IFS matrix with states
-/// (model/state_expansion.h): the function moves the point without plotting it (its word does not
+/// (freeform/state_expansion.h): the function moves the point without plotting it (its word does not
 /// start in an initial state), or plots its image of the point and leaves the chain as it was (its
 /// word can go no further). The row offset is the rest of the bits.
 /// While a chain skips its first points it stays inside one strongly connected part with a cycle
@@ -164,7 +164,7 @@ struct CompiledIfs {
   std::vector<AliasEntry> transitionAlias;
   /// transitionAlias as the kernel walks it: row 0 picks a chain's first function, row i + 1 the
   /// function after function i (offset (i + 1)·n); empty without a matrix. With states, `functions`
-  /// are the virtual functions of model/state_expansion.h and the row offsets carry their flags.
+  /// are the virtual functions of freeform/state_expansion.h and the row offsets carry their flags.
   std::vector<TransitionStep> transitionWalk;
   /// With transitions whose graph is not strongly connected, a chain never leaves the closed part
   /// it falls into (a union's half, a concatenation's second IFS) and never revisits transient

@@ -19,7 +19,7 @@
 namespace gridifs {
 
 struct FieldPlane {
-  std::vector<double> values;  // size², row-major, row 0 at y = −1 (model/field_layer.h's plane)
+  std::vector<double> values;  // size², row-major, row 0 at y = −1 (schema/field_layer.h's plane)
   FieldRole role = FieldRole::Density;
   double strength = 1.0;
   std::string name;  // the EXR channel's name

@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "base/types.h"
-#include "model/palette_reference.h"
+#include "schema/palette_reference.h"
 
 namespace gridifs {
 

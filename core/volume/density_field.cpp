@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "model/field_layer.h"
+#include "schema/field_layer.h"
 
 namespace gridifs {
 namespace {

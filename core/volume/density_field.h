@@ -6,7 +6,7 @@
 // [0, 1] with max 1; unvisited voxels stay empty (it shapes the measure attractor's cloud, it does
 // not add density outside it). `cloud` and `terrain` layers add density of their own where the
 // attractor has none (model/volume_settings.h says where), each voxel keeping the larger value.
-// G is the layer's field value (model/field_layer.h).
+// G is the layer's field value (schema/field_layer.h).
 #include "model/volume_settings.h"
 #include "volume/density_volume.h"
 

@@ -10,7 +10,7 @@
 #include <optional>
 #include <thread>
 
-#include "model/free_form_presets.h"
+#include "freeform/free_form_presets.h"
 #include "render/barycentric_kernel.h"
 #include "render/chaos_kernel.h"
 #include "render/chaos_renderer.h"

@@ -15,7 +15,7 @@
 #include "edit/document.h"
 #include "edit/project_edit.h"
 #include "io/project_io.h"
-#include "model/validation.h"
+#include "schema/validation.h"
 
 using namespace gridifs;
 

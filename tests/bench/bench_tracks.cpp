@@ -22,7 +22,7 @@
 
 #include "base/errors.h"
 #include "io/project_io.h"
-#include "model/project_time.h"
+#include "schema/project_time.h"
 #include "tests/core/json_track_route.h"
 
 using namespace gridifs;

@@ -8,8 +8,8 @@
 #include <nlohmann/json.hpp>
 
 #include "exported_points.h"
+#include "freeform/free_form_presets.h"
 #include "io/project_io.h"
-#include "model/free_form_presets.h"
 #include "run_command.h"
 
 using namespace gridifs;

@@ -7,9 +7,9 @@
 #include <glm/geometric.hpp>
 
 #include "exported_points.h"
+#include "freeform/free_form_presets.h"
+#include "freeform/state_expansion.h"
 #include "io/project_io.h"
-#include "model/free_form_presets.h"
-#include "model/state_expansion.h"
 #include "run_command.h"
 
 using namespace gridifs;

@@ -8,7 +8,7 @@
 #include <fstream>
 
 #include "io/project_io.h"
-#include "model/field_layer.h"
+#include "schema/field_layer.h"
 #include "tests/cli/image_file_read.h"
 #include "tests/cli/run_command.h"
 

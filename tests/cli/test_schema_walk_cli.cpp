@@ -19,10 +19,10 @@
 #include "edit/project_edit.h"
 #include "io/parameter_paths.h"
 #include "io/project_io.h"
-#include "model/operation_table.h"
-#include "model/project_parameter.h"
-#include "model/settings_tables.h"
 #include "run_command.h"
+#include "schema/operation_table.h"
+#include "schema/project_parameter.h"
+#include "schema/settings_tables.h"
 
 namespace gridifs {
 namespace {

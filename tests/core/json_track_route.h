@@ -10,8 +10,8 @@
 #include "anim/track_path.h"
 #include "base/errors.h"
 #include "io/project_io.h"
-#include "model/project_time.h"
-#include "model/wind_drift.h"
+#include "schema/project_time.h"
+#include "schema/wind_drift.h"
 
 namespace gridifs::json_track_route {
 
@@ -63,13 +63,8 @@ inline void checkTrackPaths(const Project& project) {
 
 inline Project projectAtTime(const Project& project, double t) {
   if (!std::isfinite(t)) throw ModelError("time", "expected a finite number");
-  // The wind's drift is no number of the file: the same function derives it from the tracks.
-  if (project.tracks.empty()) {
-    Project at = project;
-    at.time = t;
-    applyWindDrift(at);
-    return at;
-  }
+  // Without tracks there is no route to compare: the project at t is the one under test's.
+  if (project.tracks.empty()) return gridifs::projectAtTime(project, t);
   json document = json::parse(serializeProject(project));
   for (const auto& [path, track] : project.tracks) document[resolve(document, path)] = track.valueAt(t);
   document["time"] = t;

@@ -8,7 +8,7 @@
 
 #include "base/errors.h"
 #include "io/project_io.h"
-#include "model/project_time.h"
+#include "schema/project_time.h"
 
 using namespace gridifs;
 namespace fs = std::filesystem;

@@ -2,8 +2,8 @@
 // undistorted lattice is the identity in the model, in the renderer and in the file.
 #include <gtest/gtest.h>
 
+#include "freeform/bezier_lattice.h"
 #include "io/project_io.h"
-#include "model/bezier_lattice.h"
 #include "model/stack_evaluator.h"
 #include "render/chaos_renderer.h"
 #include "render/compiled_ifs.h"

@@ -14,12 +14,12 @@
 #include "core/renderer_scenes.h"
 #include "io/project_io.h"
 #include "model/project.h"
-#include "model/validation.h"
 #include "render/accumulation.h"
 #include "render/camera.h"
 #include "render/chaos_kernel.h"
 #include "render/chaos_renderer.h"
 #include "render/compiled_ifs.h"
+#include "schema/validation.h"
 
 namespace gridifs {
 namespace {

@@ -7,10 +7,11 @@
 #include <filesystem>
 #include <fstream>
 
+#include "construction/construction_evaluation.h"
+#include "construction/ifs_combination.h"
 #include "edit/document.h"
 #include "io/project_io.h"
 #include "model/construction_tree.h"
-#include "model/ifs_combination.h"
 #include "model_error_text.h"
 
 using namespace gridifs;

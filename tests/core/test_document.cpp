@@ -6,8 +6,8 @@
 #include "edit/document.h"
 #include "edit/project_edit.h"
 #include "io/project_io.h"
-#include "model/project_time.h"
 #include "project_samples.h"
+#include "schema/project_time.h"
 
 using namespace gridifs;
 

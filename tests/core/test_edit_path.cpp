@@ -5,7 +5,7 @@
 
 #include "edit/document.h"
 #include "edit/edit_queue.h"
-#include "model/free_form_presets.h"
+#include "freeform/free_form_presets.h"
 #include "render/chaos_renderer.h"
 #include "render/compiled_ifs.h"
 #include "tests/core/renderer_scenes.h"

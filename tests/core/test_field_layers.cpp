@@ -10,9 +10,9 @@
 #include "base/errors.h"
 #include "edit/project_edit.h"
 #include "io/project_io.h"
-#include "model/field_layer.h"
-#include "model/project_time.h"
 #include "model/stack_evaluator.h"
+#include "schema/field_layer.h"
+#include "schema/project_time.h"
 #include "volume/density_field.h"
 
 using namespace gridifs;

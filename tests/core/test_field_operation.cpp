@@ -7,10 +7,10 @@
 
 #include "io/project_io.h"
 #include "model/evaluation_cache.h"
-#include "model/project_time.h"
 #include "model/stack_evaluator.h"
 #include "model_error_text.h"
 #include "op_test_support.h"
+#include "schema/project_time.h"
 
 using namespace gridifs;
 using namespace gridifs::test_support;

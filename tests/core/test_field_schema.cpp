@@ -4,9 +4,9 @@
 
 #include <type_traits>
 
-#include "model/field_schema.h"
-#include "model/operation_table.h"
-#include "model/settings_tables.h"
+#include "schema/field_schema.h"
+#include "schema/operation_table.h"
+#include "schema/settings_tables.h"
 
 using namespace gridifs;
 

@@ -9,10 +9,10 @@
 #include "io/project_io.h"
 #include "model/final_function.h"
 #include "model/function_ref.h"
-#include "model/project_time.h"
-#include "model/validation.h"
 #include "render/chaos_renderer.h"
 #include "render/compiled_ifs.h"
+#include "schema/project_time.h"
+#include "schema/validation.h"
 #include "tests/core/renderer_scenes.h"
 
 namespace gridifs {

@@ -8,8 +8,8 @@
 #include <fstream>
 
 #include "io/project_io.h"
-#include "model/settings_tables.h"
 #include "render/motion_blur.h"
+#include "schema/settings_tables.h"
 #include "tone/density_histogram.h"
 #include "tone/flame_tonemap.h"
 #include "tone/palette_gradient.h"

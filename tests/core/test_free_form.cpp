@@ -6,9 +6,9 @@
 #include <cmath>
 #include <set>
 
+#include "freeform/free_form.h"
+#include "freeform/free_form_presets.h"
 #include "io/project_io.h"
-#include "model/free_form.h"
-#include "model/free_form_presets.h"
 #include "render/chaos_renderer.h"
 #include "render/compiled_ifs.h"
 #include "volume/measure_attractor.h"

@@ -7,15 +7,15 @@
 #include <glm/geometric.hpp>
 
 #include "edit/project_edit.h"
-#include "model/free_form.h"
-#include "model/free_form_basis.h"
-#include "model/free_form_deformation.h"
-#include "model/free_form_joints.h"
-#include "model/free_form_presets.h"
-#include "model/free_form_resize.h"
-#include "model/validation.h"
+#include "freeform/free_form.h"
+#include "freeform/free_form_basis.h"
+#include "freeform/free_form_deformation.h"
+#include "freeform/free_form_joints.h"
+#include "freeform/free_form_presets.h"
+#include "freeform/free_form_resize.h"
 #include "render/chaos_renderer.h"
 #include "render/compiled_ifs.h"
+#include "schema/validation.h"
 
 using namespace gridifs;
 

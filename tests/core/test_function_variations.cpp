@@ -13,12 +13,12 @@
 #include "io/flame_import.h"
 #include "io/project_io.h"
 #include "model/stack_evaluator.h"
-#include "model/validation.h"
 #include "render/accumulation.h"
 #include "render/camera.h"
 #include "render/chaos_kernel.h"
 #include "render/chaos_renderer.h"
 #include "render/compiled_ifs.h"
+#include "schema/validation.h"
 #include "tone/palette.h"
 
 using namespace gridifs;

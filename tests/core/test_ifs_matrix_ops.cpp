@@ -7,7 +7,7 @@
 #include <functional>
 #include <random>
 
-#include "model/ifs_matrix_ops.h"
+#include "freeform/ifs_matrix_ops.h"
 #include "model_error_text.h"
 
 using namespace gridifs;

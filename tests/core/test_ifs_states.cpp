@@ -11,14 +11,14 @@
 #include <set>
 
 #include "deterministic_samples.h"
+#include "freeform/state_expansion.h"
+#include "freeform/transition_matrix.h"
 #include "io/project_io.h"
 #include "mesh/deterministic_ifs.h"
-#include "model/state_expansion.h"
-#include "model/transition_matrix.h"
-#include "model/validation.h"
 #include "model_error_text.h"
 #include "render/chaos_renderer.h"
 #include "render/compiled_ifs.h"
+#include "schema/validation.h"
 
 using namespace gridifs;
 using namespace gridifs::test_support;

@@ -1,5 +1,5 @@
 // The chaos kernel's variation path (evaluateKernelVariations: inline dispatch, sin, cos and atan2
-// from model/kernel_math.h) against the reference path (evaluateVariations, std:: math) for every
+// from variations/kernel_math.h) against the reference path (evaluateVariations, std:: math) for every
 // variation of the table, at a tolerance far below the renderer's float points, and with the same
 // random draws.
 #include <gtest/gtest.h>
@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "model/flame_variations.h"
-#include "model/kernel_math.h"
+#include "variations/flame_variations.h"
+#include "variations/kernel_math.h"
 
 using namespace gridifs;
 

@@ -6,7 +6,7 @@
 
 #include "anim/keyframe_track.h"
 #include "base/errors.h"
-#include "model/settings_tables.h"
+#include "schema/settings_tables.h"
 
 using namespace gridifs;
 

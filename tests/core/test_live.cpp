@@ -21,8 +21,8 @@
 #include "live/audio_envelope.h"
 #include "live/live_drive.h"
 #include "live/osc_listener.h"
-#include "model/live_binding.h"
-#include "model/project_parameter.h"
+#include "schema/live_binding.h"
+#include "schema/project_parameter.h"
 #include "tests/support/osc_packet.h"
 #include "tests/support/sound_file.h"
 

@@ -5,8 +5,8 @@
 // the next one grown by a pixel.
 #include <gtest/gtest.h>
 
+#include "construction/ifs_combination.h"
 #include "io/project_io.h"
-#include "model/ifs_combination.h"
 #include "render/chaos_renderer.h"
 #include "render/compiled_ifs.h"
 

@@ -6,8 +6,8 @@
 #include <set>
 
 #include "io/project_io.h"
-#include "model/operation_table.h"
 #include "model_error_text.h"
+#include "schema/operation_table.h"
 
 using namespace gridifs;
 

@@ -10,7 +10,7 @@
 #include "edit/project_edit.h"
 #include "io/parameter_paths.h"
 #include "io/project_io.h"
-#include "model/project_parameter.h"
+#include "schema/project_parameter.h"
 
 namespace gridifs {
 namespace {

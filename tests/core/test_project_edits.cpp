@@ -9,8 +9,8 @@
 #include "edit/edit_queue.h"
 #include "edit/new_function.h"
 #include "edit/project_edit.h"
-#include "model/operation_table.h"
-#include "model/settings_tables.h"
+#include "schema/operation_table.h"
+#include "schema/settings_tables.h"
 
 using namespace gridifs;
 

@@ -1,4 +1,4 @@
-// Keyframe tracks reach their parameters through typed accessors (model/project_parameter.h).
+// Keyframe tracks reach their parameters through typed accessors (schema/project_parameter.h).
 // The project file is the contract: a path names exactly the numbers the file holds, and the
 // project at a moment is what writing every keyed value into the file and reading it back
 // gives. These tests hold the accessors to a reference that does just that, through the JSON,
@@ -13,8 +13,8 @@
 #include "anim/track_path.h"
 #include "base/errors.h"
 #include "io/project_io.h"
-#include "model/project_parameter.h"
-#include "model/project_time.h"
+#include "schema/project_parameter.h"
+#include "schema/project_time.h"
 #include "tests/core/json_track_route.h"
 
 namespace gridifs {

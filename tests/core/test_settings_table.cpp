@@ -9,8 +9,8 @@
 
 #include "io/project_io.h"
 #include "io/settings_json.h"
-#include "model/settings_tables.h"
 #include "model_error_text.h"
+#include "schema/settings_tables.h"
 
 using namespace gridifs;
 

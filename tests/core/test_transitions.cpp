@@ -7,9 +7,9 @@
 #include <set>
 
 #include "deterministic_samples.h"
+#include "freeform/transition_matrix.h"
 #include "io/project_io.h"
 #include "mesh/deterministic_ifs.h"
-#include "model/transition_matrix.h"
 #include "model_error_text.h"
 #include "render/chaos_renderer.h"
 #include "render/compiled_ifs.h"

@@ -6,7 +6,7 @@
 
 #include "edit/document.h"
 #include "edit/project_edit.h"
-#include "model/validation.h"
+#include "schema/validation.h"
 
 using namespace gridifs;
 

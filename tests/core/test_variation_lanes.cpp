@@ -1,4 +1,4 @@
-// The variation stage of four chains at once (model/variation_lanes.h, model/lane_math.h): the
+// The variation stage of four chains at once (variations/variation_lanes.h, variations/lane_math.h): the
 // four-lane sin, cos, atan2 and pow against the library's; every four-lane variation against its
 // reference body (Draves & Reckase, appendix) with the same random draws; a whole IFS's batched
 // stage against each function's own; which IFSs batch; and renders that stay a function of the seed.
@@ -13,13 +13,13 @@
 #include "flame_seed_checks.h"
 #include "io/flame_genome.h"
 #include "io/flame_import.h"
-#include "model/flame_variations.h"
-#include "model/lane_math.h"
-#include "model/variation_lanes.h"
 #include "render/accumulation.h"
 #include "render/chaos_renderer.h"
 #include "render/compiled_ifs.h"
 #include "tone/palette.h"
+#include "variations/flame_variations.h"
+#include "variations/lane_math.h"
+#include "variations/variation_lanes.h"
 
 using namespace gridifs;
 using lane_math::v4f;

@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "model/flame_variations.h"
+#include "variations/flame_variations.h"
 
 using namespace gridifs;
 

@@ -10,9 +10,9 @@
 #include "edit/document.h"
 #include "edit/project_edit.h"
 #include "io/project_io.h"
-#include "model/settings_tables.h"
 #include "render/camera.h"
 #include "render/volume_raymarch.h"
+#include "schema/settings_tables.h"
 
 namespace gridifs {
 namespace {

@@ -11,7 +11,7 @@
 #include "io/flame_genome.h"
 #include "io/flame_import.h"
 #include "io/project_io.h"
-#include "model/validation.h"
+#include "schema/validation.h"
 
 namespace {
 

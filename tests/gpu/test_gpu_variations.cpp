@@ -20,8 +20,8 @@
 #include "gpu/headless_gl_context.h"
 #include "gpu/render_device.h"
 #include "gpu_test_support.h"
-#include "model/flame_variations.h"
 #include "render/compiled_ifs.h"
+#include "variations/flame_variations.h"
 #include "volume/measure_attractor.h"
 
 namespace gridifs {

@@ -4,7 +4,7 @@
 // render in one place, core/job/prepared_render.h, and write frames in one,
 // core/job/frame_output.h).
 #include "gui/gui_harness.h"
-#include "model/project_time.h"
+#include "schema/project_time.h"
 
 using namespace gridifs::gui_test;
 

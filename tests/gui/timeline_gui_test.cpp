@@ -1,7 +1,7 @@
 // GUI tier: the timeline under the preview, key buttons beside parameters, and File › Render
 // animation, in the real modeller window under Xvfb with real input (gui/gui_harness.h).
 #include "gui/gui_harness.h"
-#include "model/project_time.h"
+#include "schema/project_time.h"
 
 using namespace gridifs::gui_test;
 

@@ -4,8 +4,8 @@
 
 #include "edit/node_picking.h"
 #include "edit/volume_render_edits.h"
-#include "model/project_time.h"
 #include "model/stack_evaluator.h"
+#include "schema/project_time.h"
 
 namespace gridifs::ui {
 

@@ -1,7 +1,7 @@
 #pragma once
 // File › Combine…: the open project combined with a second project file by one of the IFS matrix
 // operations (Thollot, Zair, Tosan & Vandorpe 1997, §4: union, concatenation, product, shuffle;
-// model/ifs_combination.h). The operations the two projects do not allow are greyed out with the
+// construction/ifs_combination.h). The operations the two projects do not allow are greyed out with the
 // reason; the result replaces the document as one undo step. The second file is read again
 // whenever its path or its modification time changes, so a bad file shows its error inline.
 #include <array>
@@ -11,7 +11,7 @@
 #include <optional>
 #include <string>
 
-#include "model/ifs_combination.h"
+#include "construction/ifs_combination.h"
 #include "ui/base/edit_queue.h"
 #include "ui/base/file_browser.h"
 #include "ui/base/modeller_state.h"

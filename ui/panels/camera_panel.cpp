@@ -8,7 +8,7 @@
 #include <string_view>
 
 #include "edit/settings_edits.h"
-#include "model/settings_tables.h"
+#include "schema/settings_tables.h"
 #include "ui/base/widgets.h"
 #include "ui/panels/key_button.h"
 #include "ui/panels/panels.h"

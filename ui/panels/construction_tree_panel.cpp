@@ -8,8 +8,9 @@
 
 #include <algorithm>
 
+#include "construction/construction_evaluation.h"
 #include "io/project_io.h"
-#include "model/validation.h"
+#include "schema/validation.h"
 #include "ui/base/widgets.h"
 
 namespace gridifs::ui {

@@ -12,11 +12,13 @@
 
 #include "base/text_format.h"
 #include "edit/field_layer_edits.h"
-#include "model/field_layer.h"
+#include "schema/field_layer.h"
+#include "schema/settings_tables.h"
 #include "ui/base/widgets.h"
 #include "ui/panels/key_button.h"
 #include "ui/panels/operation_editor.h"
 #include "ui/panels/panels.h"
+#include "ui/panels/setting_slider.h"
 
 namespace gridifs::ui {
 namespace {
@@ -36,10 +38,21 @@ struct LayerEditor {
   void commit(const std::string& label) { edits.commit(label, SetFieldLayer{index, value}); }
   bool list = false;  // several layers: tracks name them volume.field[i]
 
-  /// The key button of the layer's number `key` (volume.field.KEY, or volume.field[i].KEY in a list).
+  /// The layer's path: volume.field, or volume.field[i] in a list.
+  std::string path() const {
+    return list ? "volume.field[" + std::to_string(index) + "]" : std::string("volume.field");
+  }
+  /// The key button of the layer's number `key`.
   void key(const std::string& key, const double* values, int components) {
-    const std::string layer = list ? "volume.field[" + std::to_string(index) + "]" : std::string("volume.field");
-    keyButton(state, edits, layer + "." + key, values, components);
+    keyButton(state, edits, path() + "." + key, values, components);
+  }
+  /// The key button and slider of one of the layer's own numbers (fieldLayerTable()): one
+  /// SetParameter a gesture, named by the table's label.
+  void number(const char* key) {
+    const SettingSpec& spec = fieldLayerTable().field(key);
+    const double current = spec.number(&value);
+    this->key(key, &current, 1);
+    settingSlider(state, edits, spec, current, path(), {.probe = "fieldlayer" + std::to_string(index)});
   }
 };
 
@@ -54,23 +67,11 @@ void drawRole(LayerEditor& e) {
   contextHelp(e.state,
               "density: weights the attractor's density; cloud: a cloud of its own about its height, as thick as it "
               "is dense; terrain: a mountain, solid below height + strength·field");
-  double strength = e.value.strength;
-  e.key("strength", &strength, 1);
-  bool changed = sliderDouble("Strength", e.value.strength, 0.0, 10.0, "%.3f");
-  e.item("Field strength", changed, "strength");
-  contextHelp(e.state,
-              "How much the field counts: the density's weight 1 + strength·field, the cloud's density "
-              "strength·field, the mountain's height strength·field");
+  e.number("strength");
   if (e.value.role == FieldRole::Density) return;
-  e.key("height", &e.value.height, 1);
-  changed = sliderDouble("Height", e.value.height, -1.0, 1.0, "%.3f");
-  e.item("Field layer height", changed, "height");
-  contextHelp(e.state, "The layer's plane z = height (the cloud's middle, the mountain's base)");
+  e.number("height");
   if (e.value.role != FieldRole::Cloud) return;
-  e.key("thickness", &e.value.thickness, 1);
-  changed = sliderDouble("Thickness", e.value.thickness, 0.0, 1.0, "%.3f");
-  e.item("Cloud thickness", changed, "thickness");
-  contextHelp(e.state, "The cloud's full thickness where it is densest");
+  e.number("thickness");
 }
 
 void drawFieldParams(LayerEditor& e) {
@@ -127,14 +128,8 @@ void drawShape(LayerEditor& e) {
     changed = sliderDouble("Minor", set.minor, 0.01, 1.0, "%.3f");
     e.item("Field shape minor radius", changed, "shape.minor");
   }
-  e.key("blend", &e.value.blend, 1);
-  changed = sliderDouble("Blend", e.value.blend, 0.0, 1.0, "%.3f");
-  e.item("Field blend", changed, "blend");
-  contextHelp(e.state, "0: the field alone; 1: the shape alone");
-  e.key("softness", &e.value.softness, 1);
-  changed = sliderDouble("Softness", e.value.softness, 0.01, 1.0, "%.3f");
-  e.item("Field shape softness", changed, "softness");
-  contextHelp(e.state, "The distance over which the shape goes from inside (1) to outside (−1)");
+  e.number("blend");
+  e.number("softness");
 }
 
 void drawLayer(ModellerState& state, EditQueue& edits, std::size_t index, const VolumeDensityField& layer) {

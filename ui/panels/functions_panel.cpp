@@ -7,10 +7,10 @@
 #include <cstdio>
 
 #include "edit/new_function.h"
+#include "freeform/free_form.h"
 #include "model/contractivity.h"
 #include "model/final_function.h"
-#include "model/free_form.h"
-#include "model/settings_tables.h"
+#include "schema/settings_tables.h"
 #include "ui/base/widgets.h"
 #include "ui/panels/key_button.h"
 #include "ui/panels/panels.h"
@@ -106,7 +106,7 @@ void drawResolution(ModellerState& state, EditQueue& edits, FunctionRef ref, con
 void drawPlacement(ModellerState& state, EditQueue& edits, FunctionRef ref, const Function& f) {
   if (!ImGui::CollapsingHeader("Placement", ImGuiTreeNodeFlags_DefaultOpen)) return;
   const std::string path = ref.path();
-  // Labels, drag speeds, formats and help from the placement's table (model/settings_tables.h);
+  // Labels, drag speeds, formats and help from the placement's table (schema/settings_tables.h);
   // the drags of the rotation and the scale stop at a turn and at 4, which a hand needs.
   const SettingTableOf<Placement>& table = placementTable();
   const SettingSpec &translate = table.field("translate"), &rotate = table.field("rotate"),
@@ -385,7 +385,7 @@ void drawActiveFunction(ModellerState& state, EditQueue& edits, FunctionsPanelSt
   const int fi = active;
   const std::string fpath = activeRef.path();
 
-  // The function's own numbers: ranges, labels and help from its table (model/settings_tables.h).
+  // The function's own numbers: ranges, labels and help from its table (schema/settings_tables.h).
   const SettingTableOf<Function>& fields = functionTable();
   double weight = f.weight;
   keyButton(state, edits, fpath + ".weight", &weight);

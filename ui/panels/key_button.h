@@ -20,7 +20,7 @@ KeyState keyStateOf(const Project& project, const std::vector<KeyedNumber>& numb
 /// A small diamond drawn before the parameter's widget (call it, then the widget): filled on a
 /// key, hollow when animated between keys, faint when not animated. A click sets a key at the
 /// current time holding `values` (one per component), or removes the key there; one undo step.
-/// Editing an animated parameter also keys it (the Document's rule, model/project_time.h).
+/// Editing an animated parameter also keys it (the Document's rule, schema/project_time.h).
 void keyButton(ModellerState& state, EditQueue& edits, const std::string& path, const double* values,
                int components = 1);
 

@@ -9,8 +9,8 @@
 #include "base/errors.h"
 #include "edit/binding_edits.h"
 #include "edit/parameter_edit.h"
-#include "model/live_binding.h"
-#include "model/validation.h"
+#include "schema/live_binding.h"
+#include "schema/validation.h"
 
 namespace gridifs::ui {
 

@@ -9,12 +9,13 @@
 #include <cmath>
 #include <cstdio>
 
+#include "freeform/free_form.h"
+#include "freeform/free_form_deformation.h"
+#include "freeform/free_form_joints.h"
+#include "freeform/free_form_presets.h"
+#include "freeform/transition_matrix.h"
 #include "model/final_function.h"
-#include "model/free_form.h"
-#include "model/free_form_deformation.h"
-#include "model/free_form_joints.h"
-#include "model/free_form_presets.h"
-#include "model/transition_matrix.h"
+#include "schema/settings_tables.h"
 #include "ui/base/widgets.h"
 #include "ui/panels/panels.h"
 
@@ -24,12 +25,13 @@ namespace {
 /// One cell of a matrix: drag sets the value (one gesture), a click without a drag toggles
 /// between 0 and 1 when `toggles`. `set` makes the named edit that sets the cell to a value.
 template <class SetCell>
-void matrixCell(EditQueue& edits, const char* id, double value, double minimum, bool toggles, const char* what,
-                const SetCell& set) {
+void matrixCell(EditQueue& edits, const char* id, double value, double minimum, double maximum, bool toggles,
+                const char* what, const SetCell& set) {
   float v = float(value);
   const bool zero = value == 0.0;
   if (zero) ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-  const bool changed = ImGui::DragFloat(id, &v, 0.01f, float(minimum), 1e6f, "%.3g", ImGuiSliderFlags_AlwaysClamp);
+  const bool changed =
+      ImGui::DragFloat(id, &v, 0.01f, float(minimum), float(maximum), "%.3g", ImGuiSliderFlags_AlwaysClamp);
   if (zero) ImGui::PopStyleColor();
   const bool clicked = toggles && ImGui::IsItemDeactivated() && !ImGui::IsItemDeactivatedAfterEdit() &&
                        ImGui::GetIO().MouseDragMaxDistanceSqr[0] < 4.0f;
@@ -84,10 +86,13 @@ void drawTransitions(ModellerState& state, EditQueue& edits) {
         ImGui::TableNextColumn();
         ImGui::PushID(int(i * n + j));
         ImGui::SetNextItemWidth(cell);
-        matrixCell(edits, "##t", project.transitions[i][j], 0.0, true, "transition weight", [i, j](double v) {
-          return SetParameter{"transitions[" + std::to_string(i) + "][" + std::to_string(j) + "]", v,
-                              "Transition weight"};
-        });
+        // The range the file reader and validation use (one description of a transition weight).
+        const FieldInfo& weight = transitionWeightField();
+        matrixCell(
+            edits, "##t", project.transitions[i][j], weight.min, weight.max, true, "transition weight",
+            [i, j, &weight](double v) {
+              return SetParameter{"transitions[" + std::to_string(i) + "][" + std::to_string(j) + "]", v, weight.label};
+            });
         state.probe.item("matrices.transition." + std::to_string(i) + "." + std::to_string(j));
         ImGui::PopID();
       }
@@ -290,9 +295,10 @@ void drawFunctionMatrix(ModellerState& state, EditQueue& edits, MatricesWindowSt
         ImGui::SetNextItemWidth(cell);
         // The edited entry is balanced by the row's diagonal (or last) entry, so the row keeps
         // summing to 1 and every intermediate state of a drag is valid.
-        matrixCell(edits, "##m", f.matrix[i][j], -1e6, false, "matrix entry", [fi = int(fi), i, j](double v) {
-          return SetMatrixEntry{fi, i, j, v};
-        });
+        matrixCell(edits, "##m", f.matrix[i][j], -limits::kMaxCoordinate, limits::kMaxCoordinate, false, "matrix entry",
+                   [fi = int(fi), i, j](double v) {
+                     return SetMatrixEntry{fi, i, j, v};
+                   });
         if (ImGui::IsItemActivated()) startMatrixEdit(project, window);
         state.probe.item("matrices.entry." + std::to_string(i) + "." + std::to_string(j));
         ImGui::PopID();

@@ -6,7 +6,7 @@
 // variables, morph vectors, node moves).
 #include <string>
 
-#include "model/operation_table.h"
+#include "schema/operation_table.h"
 #include "ui/base/edit_queue.h"
 #include "ui/base/modeller_state.h"
 #include "ui/panels/panels.h"

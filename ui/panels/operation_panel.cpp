@@ -1,5 +1,5 @@
 // Every parameter of the active operation, edited live, drawn from the operation table
-// (model/operation_table.h): one widget per parameter with the table's label, range, format and
+// (schema/operation_table.h): one widget per parameter with the table's label, range, format and
 // tooltip (Gröller & Wegenkittl 1994, §2 and §4.3). Each slider drag is one undo step: the
 // Document gesture begins on IsItemActivated and commits on deactivation; while dragging, the
 // preview restarts every frame.

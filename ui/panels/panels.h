@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "model/operation_table.h"
+#include "schema/operation_table.h"
 #include "ui/base/edit_queue.h"
 #include "ui/base/modeller_state.h"
 

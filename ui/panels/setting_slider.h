@@ -1,10 +1,10 @@
 #pragma once
-// The slider of one number in a settings table (model/settings_tables.h): its range, format,
+// The slider of one number in a settings table (schema/settings_tables.h): its range, format,
 // logarithmic flag, label (the undo step and the probe id) and tooltip all come from the table,
 // so the Tone popup and the Shading panel draw what reading and validation accept.
 #include <string>
 
-#include "model/settings_table.h"
+#include "schema/settings_table.h"
 #include "ui/base/edit_queue.h"
 #include "ui/base/modeller_state.h"
 

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "model/settings_tables.h"
+#include "schema/settings_tables.h"
 #include "ui/base/widgets.h"
 #include "ui/panels/panels.h"
 #include "ui/panels/setting_slider.h"

@@ -8,7 +8,7 @@
 #include <set>
 
 #include "base/errors.h"
-#include "model/settings_tables.h"
+#include "schema/settings_tables.h"
 #include "ui/base/widgets.h"
 #include "ui/panels/key_button.h"
 

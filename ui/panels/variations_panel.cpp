@@ -7,10 +7,10 @@
 #include <algorithm>
 #include <cctype>
 
-#include "model/flame_variations.h"
 #include "ui/base/widgets.h"
 #include "ui/panels/key_button.h"
 #include "ui/panels/panels.h"
+#include "variations/flame_variations.h"
 
 namespace gridifs::ui {
 namespace {

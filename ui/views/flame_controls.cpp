@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "model/settings_tables.h"
+#include "schema/settings_tables.h"
 #include "tone/palette.h"
 #include "tone/palette_gradient.h"
 #include "ui/base/widgets.h"

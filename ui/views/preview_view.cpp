@@ -8,8 +8,8 @@
 #include <cstdio>
 
 #include "edit/view_camera.h"
-#include "model/settings_tables.h"
 #include "render/camera.h"
+#include "schema/settings_tables.h"
 #include "ui/base/widgets.h"
 #include "ui/panels/setting_slider.h"
 #include "ui/panels/timeline_panel.h"

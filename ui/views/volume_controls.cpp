@@ -7,7 +7,7 @@
 #include <cstdio>
 
 #include "edit/parameter_edit.h"
-#include "model/settings_tables.h"
+#include "schema/settings_tables.h"
 #include "ui/base/widgets.h"
 #include "ui/panels/setting_slider.h"
 #include "ui/views/preview_modes.h"

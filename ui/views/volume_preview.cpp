@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "base/system_memory.h"
-#include "model/palette_reference.h"
+#include "schema/palette_reference.h"
 #include "tone/palette.h"
 #include "volume/measure_attractor.h"
 

@@ -3,7 +3,7 @@
 
 Every formula below is written from flam3 3.1's variations.c and Draves & Reckase, "The Fractal
 Flame Algorithm" (appendix), not from GridIFS's C++; the 3D forms follow the documented 3D forms of
-core/model/flame_variations.h (planar variations carry w·z; linear, linear3D, spherical, bubble and
+core/variations/flame_variations.h (planar variations carry w·z; linear, linear3D, spherical, bubble and
 eyefish act on the whole point; zscale, ztranslate, zcone and flatten are Apophysis 7X's z
 variations). Standard library only.
 
@@ -563,7 +563,7 @@ def v_mobius(x, y, w, p, c):
 
 
 # ---------------------------------------------------------------------------------------------
-# 3D forms (core/model/flame_variations.h): f3(x, y, z, w, params, coefs) -> (x, y, z)
+# 3D forms (core/variations/flame_variations.h): f3(x, y, z, w, params, coefs) -> (x, y, z)
 # ---------------------------------------------------------------------------------------------
 
 def f3_linear(x, y, z, w, p, c):
