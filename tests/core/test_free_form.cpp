@@ -9,11 +9,11 @@
 #include "freeform/free_form.h"
 #include "freeform/free_form_presets.h"
 #include "io/project_io.h"
-#include "render/chaos_renderer.h"
-#include "render/compiled_ifs.h"
+#include "tests/core/chaos_points.h"
 #include "volume/measure_attractor.h"
 
 using namespace gridifs;
+using test_support::chaosPoints;
 
 namespace {
 
@@ -23,17 +23,6 @@ Project preset(FreeFormPreset which, double roughness = 0.0) {
   options.roughness = roughness;
   applyFreeFormPreset(p, which, options);
   return p;
-}
-
-std::vector<Vec3> chaosPoints(const Project& p, std::int64_t samples) {
-  RenderJob job = RenderJob::fromProject(p, 2);
-  job.samples = samples;
-  std::vector<Vec3> out;
-  generatePoints(*compileIfs(p), job, [&](const PointBatch& b, const RenderStats&) {
-    for (std::size_t i = 0; i < b.count; ++i) out.emplace_back(b.xyz[3 * i], b.xyz[3 * i + 1], b.xyz[3 * i + 2]);
-    return true;
-  });
-  return out;
 }
 
 Vec3 bezier(const std::vector<Vec3>& points, double t) {

@@ -77,6 +77,30 @@ std::string triple(double x, double y, double z) {
   return buffer;
 }
 
+/// A deterministic variation's reference cases and the table's variation of that name (null when
+/// the table has none, which each test asserts against).
+struct DeterministicEntry {
+  std::string name;
+  const FlameVariation* variation;
+  const json& cases;
+};
+
+std::vector<DeterministicEntry> deterministicEntries() {
+  std::vector<DeterministicEntry> out;
+  for (const json& entry : reference()["deterministic"]) {
+    const std::string name = entry["name"];
+    out.push_back({name, findFlameVariation(name), entry["cases"]});
+  }
+  return out;
+}
+
+/// evaluateVariations with `v` as its one term, from the stream state 1.
+FlamePoint evaluateOneTerm(const FlameVariation* v, const Case& c) {
+  std::uint64_t random = 1;
+  const VariationTerm term{v, c.weight, c.params.data()};
+  return evaluateVariations(&term, 1, c.p, c.coefs, &random);
+}
+
 }  // namespace
 
 TEST(VariationReference, EveryDeterministicVariationHasReferenceCases) {
@@ -109,11 +133,9 @@ TEST(VariationReference, EveryDeterministicVariationHasReferenceCases) {
 }
 
 TEST(VariationReference, ApplyMatchesTheReference) {
-  for (const json& entry : reference()["deterministic"]) {
-    const std::string name = entry["name"];
-    const FlameVariation* v = findFlameVariation(name);
+  for (const auto& [name, v, cases] : deterministicEntries()) {
     ASSERT_NE(v, nullptr) << name;
-    for (const json& jc : entry["cases"]) {
+    for (const json& jc : cases) {
       const Case c = readCase(jc);
       std::uint64_t random = 1;
       const VariationInput in{c.p.x, c.p.y, c.p.z, &c.coefs, c.params.data(), &random};
@@ -127,15 +149,11 @@ TEST(VariationReference, ApplyMatchesTheReference) {
 }
 
 TEST(VariationReference, EvaluateVariationsMatchesForOneTerm) {
-  for (const json& entry : reference()["deterministic"]) {
-    const std::string name = entry["name"];
-    const FlameVariation* v = findFlameVariation(name);
+  for (const auto& [name, v, cases] : deterministicEntries()) {
     ASSERT_NE(v, nullptr) << name;
-    for (const json& jc : entry["cases"]) {
+    for (const json& jc : cases) {
       const Case c = readCase(jc);
-      std::uint64_t random = 1;
-      const VariationTerm term{v, c.weight, c.params.data()};
-      const FlamePoint got = evaluateVariations(&term, 1, c.p, c.coefs, &random);
+      const FlamePoint got = evaluateOneTerm(v, c);
       const double ex = jc["expected"][0], ey = jc["expected"][1], ez = jc["expected"][2];
       EXPECT_TRUE(near(got.x, ex) && near(got.y, ey) && near(got.z, ez))
           << describe(name, c) << ": evaluateVariations gives " << triple(got.x, got.y, got.z) << ", reference "
@@ -146,18 +164,14 @@ TEST(VariationReference, EvaluateVariationsMatchesForOneTerm) {
 
 TEST(VariationReference, OnTheZ0PlaneEveryVariationIsFlam3s) {
   std::size_t checked = 0;
-  for (const json& entry : reference()["deterministic"]) {
-    const std::string name = entry["name"];
-    const FlameVariation* v = findFlameVariation(name);
+  for (const auto& [name, v, cases] : deterministicEntries()) {
     ASSERT_NE(v, nullptr) << name;
     std::size_t onPlane = 0;
-    for (const json& jc : entry["cases"]) {
+    for (const json& jc : cases) {
       if (!jc.contains("flam3_xy")) continue;
       const Case c = readCase(jc);
       ASSERT_EQ(c.p.z, 0.0);
-      std::uint64_t random = 1;
-      const VariationTerm term{v, c.weight, c.params.data()};
-      const FlamePoint got = evaluateVariations(&term, 1, c.p, c.coefs, &random);
+      const FlamePoint got = evaluateOneTerm(v, c);
       const double fx = jc["flam3_xy"][0], fy = jc["flam3_xy"][1];
       EXPECT_TRUE(near(got.x, fx) && near(got.y, fy)) << describe(name, c) << ": (" << got.x << ", " << got.y
                                                       << ") but flam3's 2D formula gives (" << fx << ", " << fy << ")";
