@@ -54,6 +54,21 @@ inline CommandResult runGridifs(const std::string& args, const std::string& inpu
   return r;
 }
 
+/// What ffprobe says of `file`: the `entries` asked for ("-select_streams v:0 -show_entries
+/// stream=width,height"), as comma-separated values without their names or the final line end; ""
+/// when ffprobe cannot run.
+inline std::string ffprobe(const std::filesystem::path& file, const std::string& entries) {
+  const std::string cmd = "ffprobe -v error " + entries + " -of csv=p=0 " + quote(file.string()) + " 2>/dev/null";
+  std::string out;
+  if (FILE* pipe = ::popen(cmd.c_str(), "r")) {
+    char buffer[256];
+    while (std::fgets(buffer, sizeof buffer, pipe)) out += buffer;
+    ::pclose(pipe);
+  }
+  while (!out.empty() && (out.back() == '\n' || out.back() == '\r')) out.pop_back();
+  return out;
+}
+
 /// Starts `gridifs args...` as a child process (stdout and stderr to /dev/null).
 inline pid_t spawnGridifs(const std::vector<std::string>& args) {
   const pid_t pid = ::fork();

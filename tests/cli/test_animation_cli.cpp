@@ -2,7 +2,6 @@
 // input of sequences (nothing is written then).
 #include <gtest/gtest.h>
 
-#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 
@@ -139,18 +138,8 @@ TEST(AnimationCli, BadSequencesWriteNothing) {
 
 /// What ffprobe says of a video's first stream: "width,height,frames", or "" when it cannot run.
 std::string probeVideo(const fs::path& video) {
-  const std::string cmd =
-      "ffprobe -v error -select_streams v:0 -count_frames -show_entries "
-      "stream=width,height,nb_read_frames -of csv=p=0 " +
-      quote(video.string()) + " 2>/dev/null";
-  std::string out;
-  if (FILE* pipe = ::popen(cmd.c_str(), "r")) {
-    char buffer[256];
-    while (std::fgets(buffer, sizeof buffer, pipe)) out += buffer;
-    ::pclose(pipe);
-  }
-  while (!out.empty() && (out.back() == '\n' || out.back() == '\r')) out.pop_back();
-  return out;
+  return test_support::ffprobe(video,
+                               "-select_streams v:0 -count_frames -show_entries stream=width,height,nb_read_frames");
 }
 
 TEST(AnimationCli, VideoAssemblesTheFrames) {

@@ -18,10 +18,6 @@ namespace {
 using namespace test_support;
 namespace fs = std::filesystem;
 
-using Image = ImageFile;
-
-Image readImage(const fs::path& file) { return readImageFile(file); }
-
 const char* kScene = R"({
   "format": "gridifs", "version": 1,
   "functions": [
@@ -54,7 +50,7 @@ TEST(ExportFieldImage, AFieldOperationBecomesAColourMappedImage) {
   const auto r = runGridifs(exportField(
       project, "--op 'functions[0].ops[0]' --image " + quote(png.string()) + " --size 40 --palette ember --time 0.5"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  const Image image = readImage(png);
+  const ImageFile image = readImageFile(png);
   ASSERT_EQ(image.width, 40);
   ASSERT_EQ(image.height, 40);
   ASSERT_EQ(image.channels, 3);
@@ -86,7 +82,7 @@ TEST(ExportFieldImage, ExrKeepsTheRawValuesOfEveryLayer) {
   const fs::path exr = dir.path / "layers.exr";
   const auto r = runGridifs(exportField(project, "--op volume.field --image " + quote(exr.string()) + " --size 16"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  const Image image = readImage(exr);
+  const ImageFile image = readImageFile(exr);
   ASSERT_EQ(image.channels, 3);
   EXPECT_EQ(image.names, (std::vector<std::string>{"layer00_terrain", "layer01_cloud", "layer02_density"}));
   // Pixel (i, j) of the top row is y = 1 − 1/16: the layer's value there, as the core computes it.
@@ -102,7 +98,7 @@ TEST(ExportFieldImage, ExrKeepsTheRawValuesOfEveryLayer) {
   ASSERT_EQ(
       runGridifs(exportField(project, "--op 'volume.field[2]' --image " + quote(one.string()) + " --size 8")).exitCode,
       0);
-  EXPECT_EQ(readImage(one).names, std::vector<std::string>{"Y"});
+  EXPECT_EQ(readImageFile(one).names, std::vector<std::string>{"Y"});
 }
 
 TEST(ExportFieldImage, LayersWriteAMeshAndAnImageTogether) {
@@ -116,7 +112,7 @@ TEST(ExportFieldImage, LayersWriteAMeshAndAnImageTogether) {
   const std::string mesh = slurp(ply);
   EXPECT_NE(mesh.find("element vertex 243"), std::string::npos);  // three sheets of 9×9
   EXPECT_NE(mesh.find("element face 192"), std::string::npos);
-  EXPECT_EQ(readImage(png).width, 9);
+  EXPECT_EQ(readImageFile(png).width, 9);
 }
 
 TEST(ExportFieldImage, BadInputExitsTwoAndWritesNothing) {

@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 
@@ -16,6 +15,7 @@
 namespace gridifs {
 namespace {
 
+using test_support::ffprobe;
 using test_support::quote;
 using test_support::runGridifs;
 using test_support::ScratchDir;
@@ -45,18 +45,6 @@ fs::path writeBound(const fs::path& folder, const Project& p) {
   const fs::path file = folder / "bound.gridifs";
   saveProject(p, file);
   return file;
-}
-
-std::string probe(const fs::path& file, const std::string& entries) {
-  const std::string cmd = "ffprobe -v error " + entries + " -of csv=p=0 " + quote(file.string()) + " 2>/dev/null";
-  std::string out;
-  if (FILE* pipe = ::popen(cmd.c_str(), "r")) {
-    char buffer[256];
-    while (std::fgets(buffer, sizeof buffer, pipe)) out += buffer;
-    ::pclose(pipe);
-  }
-  while (!out.empty() && (out.back() == '\n' || out.back() == '\r')) out.pop_back();
-  return out;
 }
 
 TEST(LiveCli, FramesFollowTheSound) {
@@ -96,10 +84,10 @@ TEST(LiveCli, VideoCarriesTheSound) {
       runGridifs("render " + quote(project.string()) + " -q --threads 1 --device cpu -o " +
                  quote((dir.path / "f_%02d.png").string()) + " --frames 12:35 --video " + quote(video.string()));
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  EXPECT_EQ(probe(video, "-select_streams a:0 -show_entries stream=codec_type,codec_name"), "aac,audio");
-  EXPECT_EQ(probe(video, "-select_streams v:0 -count_frames -show_entries stream=nb_read_frames"), "24");
+  EXPECT_EQ(ffprobe(video, "-select_streams a:0 -show_entries stream=codec_type,codec_name"), "aac,audio");
+  EXPECT_EQ(ffprobe(video, "-select_streams v:0 -count_frames -show_entries stream=nb_read_frames"), "24");
   // The sound starts at the first frame's time and ends with the frames: one second.
-  const double seconds = std::atof(probe(video, "-select_streams a:0 -show_entries stream=duration").c_str());
+  const double seconds = std::atof(ffprobe(video, "-select_streams a:0 -show_entries stream=duration").c_str());
   EXPECT_NEAR(seconds, 1.0, 0.06);
 }
 

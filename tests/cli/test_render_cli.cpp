@@ -19,10 +19,6 @@ namespace {
 using namespace test_support;
 namespace fs = std::filesystem;
 
-using Image = ImageFile;
-
-Image readImage(const fs::path& file) { return readImageFile(file); }
-
 /// Parses a binary little-endian PLY with x y z float + red green blue uchar.
 std::vector<Vec3> readPly(const fs::path& file, std::vector<std::array<unsigned char, 3>>* colors = nullptr) {
   const std::string data = test_support::slurp(file);
@@ -68,7 +64,7 @@ TEST(RenderCli, WritesPngTiffAndExrWithDepth) {
                               " --width 96 --height 72 --samples 100000 --threads 2 --device cpu");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(r.err, "") << "no progress bar when stderr is not a terminal";
-    const Image image = readImage(out);
+    const ImageFile image = readImageFile(out);
     ASSERT_EQ(image.width, 96);
     ASSERT_EQ(image.height, 72);
     int lit = 0;
@@ -102,7 +98,7 @@ TEST(RenderCli, SameSeedSamePixelsOtherSeedDiffers) {
     const auto r = runGridifs("render " + quote(project.string()) + " -o " + quote(out.string()) +
                               " --width 80 --height 60 --samples 50000 --threads 2 --seed " + std::to_string(seed));
     EXPECT_EQ(r.exitCode, 0) << r.err;
-    return readImage(out).pixels;
+    return readImageFile(out).pixels;
   };
   const auto a = render("a.png", 3), b = render("b.png", 3), c = render("c.png", 4);
   ASSERT_FALSE(a.empty());
