@@ -8,13 +8,6 @@ using namespace gridifs::gui_test;
 
 namespace {
 
-void keepShot(const TempFolder& home, const std::string& name) {
-  if (const char* keep = std::getenv("GRIDIFS_GUI_SHOTS")) {  // for a person to look at
-    run("import -window root '" + (home.path / name).string() + "'");
-    fs::copy_file(home.path / name, fs::path(keep) / name, fs::copy_options::overwrite_existing);
-  }
-}
-
 /// Opens the Add set popup and picks `kind` ("median" or "condensation").
 void addSetFunction(App& app, const std::string& kind) {
   const std::optional<Rect> add = app.waitForStableRect("functions.add_set");
@@ -23,6 +16,15 @@ void addSetFunction(App& app, const std::string& kind) {
   const std::optional<Rect> item = app.waitForStableRect("functions.add_set." + kind);
   ASSERT_TRUE(item) << "the set function menu did not open";
   clickRect(*item);
+}
+
+/// Waits for the preview, adds a `kind` set function and waits for its undo step ("Add `kind`
+/// function"); returns the last probe.
+nlohmann::json addSetFunctionAndWait(App& app, const std::string& kind) {
+  app.waitForPreview();
+  addSetFunction(app, kind);
+  const std::string undo = "Add " + kind + " function";
+  return app.waitFor([&](const nlohmann::json& j) { return j["undo"] == undo; });
 }
 
 /// Picks `shape` in the set editor's Set combo.
@@ -66,10 +68,7 @@ TEST(CondensationSetGui, AddAMedianFunctionMakeItABoxSaveAndUndoBackToTheOrigina
   const std::string original = fileText(project);
   const std::size_t before = gridifs::loadProject(project).functions.size();
   App app(home, {project.string()});
-  nlohmann::json probe = app.waitForPreview();
-
-  addSetFunction(app, "median");
-  probe = app.waitFor([](const nlohmann::json& j) { return j["undo"] == "Add median function"; });
+  nlohmann::json probe = addSetFunctionAndWait(app, "median");
   ASSERT_EQ(probe["undo"], "Add median function");
   EXPECT_EQ(probe["active_function"], int(before));
   EXPECT_EQ(probe["set_message"], "") << "the default set is not usable";
@@ -124,10 +123,7 @@ TEST(CondensationSetGui, AMeshThatCannotBeReadIsToldInTheSetEditor) {
     cube << "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n";
   }
   App app(home, {project.string()});
-  nlohmann::json probe = app.waitForPreview();
-
-  addSetFunction(app, "condensation");
-  probe = app.waitFor([](const nlohmann::json& j) { return j["undo"] == "Add condensation function"; });
+  nlohmann::json probe = addSetFunctionAndWait(app, "condensation");
   ASSERT_EQ(probe["undo"], "Add condensation function");
 
   // A mesh set starts with its file: the browser opens, and the mesh chosen there is the set.
@@ -165,9 +161,7 @@ TEST(CondensationSetGui, KeyButtonsBesideTheSetsNumbersKeyThemAndUndoRemovesTheK
   const fs::path project = exampleCopy(home, "sierpinski_tetrahedron.gridifs");
   const std::size_t before = gridifs::loadProject(project).functions.size();
   App app(home, {project.string()});
-  nlohmann::json probe = app.waitForPreview();
-  addSetFunction(app, "median");
-  probe = app.waitFor([](const nlohmann::json& j) { return j["undo"] == "Add median function"; });
+  nlohmann::json probe = addSetFunctionAndWait(app, "median");
   ASSERT_EQ(probe["undo"], "Add median function");
 
   // The new median's sphere radius and its rotation each have a key button.

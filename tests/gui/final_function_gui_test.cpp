@@ -10,17 +10,6 @@
 
 using namespace gridifs::gui_test;
 
-namespace {
-
-void keepShot(const TempFolder& home, const std::string& name) {
-  if (const char* keep = std::getenv("GRIDIFS_GUI_SHOTS")) {  // for a person to look at
-    run("import -window root '" + (home.path / name).string() + "'");
-    fs::copy_file(home.path / name, fs::path(keep) / name, fs::copy_options::overwrite_existing);
-  }
-}
-
-}  // namespace
-
 TEST(FinalFunctionGui, AddDragANodeSaveAndUndoBackToTheOriginalFile) {
   if (!haveDisplay()) GTEST_SKIP() << "no X display (run under xvfb-run)";
   TempFolder home;

@@ -21,11 +21,7 @@ TEST(FreeFormGui, DraggingAControlPointIsOneUndoStepAndIsSaved) {
   dragFrom(x, y, x + 40, y - 30);
   probe = app.waitForPreview(restarts);  // the preview restarted on the moved point
   EXPECT_EQ(probe["undo"], "Move control point");
-  if (const char* keep = std::getenv("GRIDIFS_GUI_SHOTS")) {  // for a person to look at
-    run("import -window root '" + (home.path / "control_point_drag.png").string() + "'");
-    fs::copy_file(home.path / "control_point_drag.png", fs::path(keep) / "control_point_drag.png",
-                  fs::copy_options::overwrite_existing);
-  }
+  keepShot(home, "control_point_drag.png");
 
   pressKeys("ctrl+s");
   app.waitFor([](const nlohmann::json& j) { return !j["dirty"].get<bool>(); });
@@ -110,21 +106,14 @@ TEST(FreeFormGui, CombineDialogExplainsWhatItCannotDoAndCombinesAsOneUndoStep) {
   clickRect(*app.waitForStableRect("combine.op.product"));
   probe = app.waitFor([](const nlohmann::json& j) { return j["combine"]["op"] == "product"; });
   ASSERT_EQ(probe["combine"]["op"], "product");
-  if (const char* keep = std::getenv("GRIDIFS_GUI_SHOTS")) {  // for a person to look at
-    run("import -window root '" + (home.path / "combine_dialog.png").string() + "'");
-    fs::copy_file(home.path / "combine_dialog.png", fs::path(keep) / "combine_dialog.png",
-                  fs::copy_options::overwrite_existing);
-  }
+  keepShot(home, "combine_dialog.png");
   const std::uint64_t restarts = probe["preview"]["restarts"];
   clickRect(*app.waitForStableRect("combine.run"));
   probe = app.waitForPreview(restarts);
   EXPECT_EQ(probe["undo"], "Combine (product)");
   EXPECT_EQ(probe["functions"].get<std::size_t>(), 4u);  // every pair of the two curves' halves
   EXPECT_FALSE(probe["combine"]["open"].get<bool>());
-  if (const char* keep = std::getenv("GRIDIFS_GUI_SHOTS")) {
-    run("import -window root '" + (home.path / "combined.png").string() + "'");
-    fs::copy_file(home.path / "combined.png", fs::path(keep) / "combined.png", fs::copy_options::overwrite_existing);
-  }
+  keepShot(home, "combined.png");
 
   // One undo step back to the open project.
   pressKeys("ctrl+z");

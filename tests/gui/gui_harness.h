@@ -259,6 +259,15 @@ inline void saveAndWait(App& app) {
   app.waitFor([](const nlohmann::json& j) { return !j["dirty"].get<bool>(); });
 }
 
+/// With GRIDIFS_GUI_SHOTS set to a folder, the screen as `name` in it, for a person to look at (the
+/// tests do not read it); nothing otherwise.
+inline void keepShot(const TempFolder& home, const std::string& name) {
+  if (const char* keep = std::getenv("GRIDIFS_GUI_SHOTS")) {
+    run("import -window root '" + (home.path / name).string() + "'");
+    fs::copy_file(home.path / name, fs::path(keep) / name, fs::copy_options::overwrite_existing);
+  }
+}
+
 inline std::vector<float> grabScreen(const TempFolder& home, const Rect& r) {
   const fs::path file = home.path / "grab.png";
   EXPECT_EQ(run("import -window root '" + file.string() + "'"), 0);
@@ -317,6 +326,19 @@ inline double litFraction(const std::vector<float>& px) {
   for (std::size_t i = 0; i < px.size(); i += 3)
     if (px[i] + px[i + 1] + px[i + 2] > 0.3f) ++lit;
   return px.empty() ? 0.0 : double(lit) / double(px.size() / 3);
+}
+
+/// Reads the rendered frame `file` of `width` × `height` into `px` (RGB floats) and checks that it
+/// is not empty (more than 1% of its pixels lit). Its failure to read the file is fatal: callers
+/// wrap it in ASSERT_NO_FATAL_FAILURE.
+inline void readLitFrame(const fs::path& file, int width, int height, std::vector<float>& px) {
+  OIIO::ImageBuf image(file.string());
+  ASSERT_TRUE(image.init_spec(file.string(), 0, 0)) << image.geterror();
+  EXPECT_EQ(image.spec().width, width);
+  EXPECT_EQ(image.spec().height, height);
+  px.assign(std::size_t(width) * height * 3, 0.0f);
+  image.get_pixels(OIIO::ROI(0, width, 0, height, 0, 1, 0, 3), OIIO::TypeDesc::FLOAT, px.data());
+  EXPECT_GT(litFraction(px), 0.01) << file.filename().string() << " is empty";
 }
 
 /// A copy of an example with a small sample budget, so previews finish quickly.

@@ -15,15 +15,19 @@ using namespace gridifs::gui_test;
 using gridifs::test_support::OscPacket;
 using gridifs::test_support::sendUdp;
 
+/// The default example, small, with the camera's yaw bound to OSC /knob1 (-180 to 180), in `home`.
+fs::path knobBoundCopy(const TempFolder& home) {
+  const fs::path project = exampleCopy(home, "default.gridifs", 300'000);
+  gridifs::Project p = gridifs::loadProject(project);
+  p.bindings.push_back(gridifs::Binding{"camera.yaw", "osc:/knob1", -180.0, 180.0, 0.0});
+  gridifs::saveProject(p, project);
+  return project;
+}
+
 TEST(LiveGui, OscMovesBoundParametersAndSetsAnyWithinItsRange) {
   if (!haveDisplay()) GTEST_SKIP() << "no X display (run under xvfb-run)";
   TempFolder home;
-  const fs::path project = exampleCopy(home, "default.gridifs", 300'000);
-  {
-    gridifs::Project p = gridifs::loadProject(project);
-    p.bindings.push_back(gridifs::Binding{"camera.yaw", "osc:/knob1", -180.0, 180.0, 0.0});
-    gridifs::saveProject(p, project);
-  }
+  const fs::path project = knobBoundCopy(home);
   const int port = gridifs::test_support::freeUdpPort();
   App app(home, {project.string(), "--osc-port", std::to_string(port)});
   nlohmann::json probe = app.waitForPreview();
@@ -103,14 +107,8 @@ TEST(LiveGui, SoundBoundNumbersFollowThePlayheadWithoutUndoSteps) {
 TEST(LiveGui, ATakeTurnsLiveInputIntoKeysAsOneUndoStep) {
   if (!haveDisplay()) GTEST_SKIP() << "no X display (run under xvfb-run)";
   TempFolder home;
-  const fs::path project = exampleCopy(home, "default.gridifs", 300'000);
-  {
-    gridifs::Project p = gridifs::loadProject(project);
-    p.bindings.push_back(gridifs::Binding{"camera.yaw", "osc:/knob1", -180.0, 180.0, 0.0});
-    gridifs::saveProject(p, project);
-  }
   const int port = gridifs::test_support::freeUdpPort();
-  App app(home, {project.string(), "--osc-port", std::to_string(port)});
+  App app(home, {knobBoundCopy(home).string(), "--osc-port", std::to_string(port)});
   nlohmann::json probe = app.waitForPreview();
   focusWindow();
   clickRect(rectOf(probe, "menu.view"));

@@ -4,17 +4,26 @@
 
 using namespace gridifs::gui_test;
 
+namespace {
+
+/// Waits for the preview, then opens the Matrices window (key M).
+void openMatricesWindow(const App& app) {
+  app.waitForPreview();
+  pressKeys("m");
+}
+
+}  // namespace
+
 TEST(MatricesGui, TransitionAndFreeFormPresetsAreUndoableEdits) {
   if (!haveDisplay()) GTEST_SKIP() << "no X display (run under xvfb-run)";
   TempFolder home;
   const fs::path project = exampleCopy(home, "sierpinski_tetrahedron.gridifs");
   App app(home, {project.string()});
-  nlohmann::json probe = app.waitForPreview();
-  pressKeys("m");
+  openMatricesWindow(app);
   const std::optional<Rect> noRepeats = app.waitForStableRect("matrices.transitions.No repeats");
   ASSERT_TRUE(noRepeats) << "the Matrices window did not open";
   clickRect(*noRepeats);
-  probe = app.waitFor([](const nlohmann::json& j) { return j["undo"] == "Transitions: No repeats"; });
+  nlohmann::json probe = app.waitFor([](const nlohmann::json& j) { return j["undo"] == "Transitions: No repeats"; });
   EXPECT_EQ(probe["undo"], "Transitions: No repeats");
   pressKeys("ctrl+s");
   app.waitFor([](const nlohmann::json& j) { return !j["dirty"].get<bool>(); });
@@ -57,13 +66,12 @@ TEST(MatricesGui, MapsAGridIfsOntoAControlNetAndAddsAPoint) {
   TempFolder home;
   const fs::path project = exampleCopy(home, "sierpinski_tetrahedron.gridifs");
   App app(home, {project.string()});
-  nlohmann::json probe = app.waitForPreview();
-  pressKeys("m");
+  openMatricesWindow(app);
   const std::optional<Rect> map = app.waitForStableRect("matrices.map_onto_net");
   ASSERT_TRUE(map) << "the Matrices window has no control-net button for a grid project";
   std::uint64_t restarts = app.probe()["preview"]["restarts"];
   clickRect(*map);
-  probe = app.waitForPreview(restarts);
+  nlohmann::json probe = app.waitForPreview(restarts);
   EXPECT_EQ(probe["undo"], "Map onto a control net");
   EXPECT_EQ(probe["functions"].get<std::size_t>(), 4u);
   const std::optional<Rect> add = app.waitForStableRect("matrices.add_point");
