@@ -8,6 +8,7 @@
 #include "schema/field_layer.h"
 #include "schema/operation_table.h"
 #include "schema/settings_tables.h"
+#include "schema/validation.h"
 
 namespace gridifs::volume_io {
 namespace {
@@ -51,13 +52,8 @@ std::string readText(const json& j, const std::string& path) {
 ordered_json vec(const Vec3& v) { return ordered_json::array({v.x, v.y, v.z}); }
 
 void readPlacement(const json& s, const std::string& path, CondensationSet& set) {
-  if (auto pl = s.find("placement"); pl != s.end()) {
-    const std::string p = path + ".placement";
-    if (!pl->is_object()) fail(p, "expected an object with translate, rotate and scale");
-    set.placement.translate = readVec3(*pl, "translate", p, Vec3{0.0});
-    set.placement.rotate = readVec3(*pl, "rotate", p, Vec3{0.0});
-    set.placement.scale = readVec3(*pl, "scale", p, Vec3{1.0});
-  }
+  if (auto pl = s.find("placement"); pl != s.end())
+    readSettingFields(placementTable(), *pl, path + ".placement", &set.placement);
 }
 
 CondensationSet readSet(const json& s, const std::string& path) {
@@ -75,21 +71,15 @@ CondensationSet readSet(const json& s, const std::string& path) {
   };
   if (auto it = s.find("primitive"); it != s.end()) {
     const std::string name = readText(*it, path + ".primitive");
-    set.center = readVec3(s, "center", path, Vec3{0.0});
     if (name == "sphere") {
       set.shape = SetShape::Sphere;
       allowOnly({"primitive", "center", "radius"});
-      set.radius = readFinite(s, "radius", path, set.radius);
     } else if (name == "box") {
       set.shape = SetShape::Box;
       allowOnly({"primitive", "center", "size"});
-      set.size = readVec3(s, "size", path, set.size);
     } else if (name == "torus") {
       set.shape = SetShape::Torus;
       allowOnly({"primitive", "center", "major", "minor", "axis"});
-      set.major = readFinite(s, "major", path, set.major);
-      set.minor = readFinite(s, "minor", path, set.minor);
-      set.axis = readVec3(s, "axis", path, set.axis);
     } else {
       fail(path + ".primitive", "expected \"sphere\", \"box\" or \"torus\", found \"" + name.substr(0, 32) + "\"");
     }
@@ -98,12 +88,6 @@ CondensationSet readSet(const json& s, const std::string& path) {
     set.shape = SetShape::Image;
     allowOnly({"image", "threshold", "thickness", "invert", "placement"});
     set.path = readText(*image, path + ".image");
-    set.threshold = readFinite(s, "threshold", path, set.threshold);
-    set.thickness = readFinite(s, "thickness", path, set.thickness);
-    if (auto inv = s.find("invert"); inv != s.end()) {
-      if (!inv->is_boolean()) fail(path + ".invert", "expected true or false");
-      set.invert = inv->get<bool>();
-    }
     readPlacement(s, path, set);
   } else if (auto mesh = s.find("mesh"); mesh != s.end()) {
     set.shape = SetShape::Mesh;
@@ -124,8 +108,9 @@ CondensationSet readSet(const json& s, const std::string& path) {
     allowOnly({"vdb", "grid", "threshold"});
     set.path = readText(s["vdb"], path + ".vdb");
     if (auto g = s.find("grid"); g != s.end()) set.grid = readText(*g, path + ".grid");
-    set.threshold = readFinite(s, "threshold", path, set.threshold);
   }
+  // The shape's numbers (condensationSetTable), read with the words validation uses.
+  readSettingFields(condensationSetTable(set.shape), s, path, &set);
   checkCondensationSet(set, path);
   return set;
 }
@@ -134,44 +119,25 @@ ordered_json writeSet(const CondensationSet& set) {
   ordered_json o;
   switch (set.shape) {
     case SetShape::Sphere:
-      o["primitive"] = "sphere";
-      o["center"] = vec(set.center);
-      o["radius"] = set.radius;
-      break;
     case SetShape::Box:
-      o["primitive"] = "box";
-      o["center"] = vec(set.center);
-      o["size"] = vec(set.size);
-      break;
     case SetShape::Torus:
-      o["primitive"] = "torus";
-      o["center"] = vec(set.center);
-      o["major"] = set.major;
-      o["minor"] = set.minor;
-      o["axis"] = vec(set.axis);
+      o["primitive"] = setShapeName(set.shape);
       break;
     case SetShape::Mesh:
       o["mesh"] = set.path;
       o["fill"] = setFillName(set.fill);
-      o["placement"] = {{"translate", vec(set.placement.translate)},
-                        {"rotate", vec(set.placement.rotate)},
-                        {"scale", vec(set.placement.scale)}};
       break;
     case SetShape::Vdb:
       o["vdb"] = set.path;
       o["grid"] = set.grid;
-      o["threshold"] = set.threshold;
       break;
     case SetShape::Image:
       o["image"] = set.path;
-      o["threshold"] = set.threshold;
-      o["thickness"] = set.thickness;
-      o["invert"] = set.invert;
-      o["placement"] = {{"translate", vec(set.placement.translate)},
-                        {"rotate", vec(set.placement.rotate)},
-                        {"scale", vec(set.placement.scale)}};
       break;
   }
+  writeSettingFields(condensationSetTable(set.shape), &set, o);
+  if (set.shape == SetShape::Mesh || set.shape == SetShape::Image)
+    o["placement"] = writeSettings(placementTable(), set.placement);
   return o;
 }
 

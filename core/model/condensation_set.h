@@ -37,10 +37,6 @@ struct CondensationSet {
 const char* setShapeName(SetShape shape);
 const char* setFillName(SetFill fill);
 
-/// Checks the set's numbers (finite, positive sizes, a non-zero torus axis, a path for file
-/// sets). Throws ModelError with a path below `path`.
-void checkCondensationSet(const CondensationSet& set, const std::string& path);
-
 /// Half the edge lengths of the primitive set's bounding box about its centre (a torus's is a
 /// cube: its axis may point anywhere). Zero for file sets.
 Vec3 primitiveHalfExtent(const CondensationSet& set);

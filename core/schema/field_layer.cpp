@@ -9,6 +9,7 @@
 #include "base/errors.h"
 #include "schema/operation_table.h"
 #include "schema/settings_tables.h"
+#include "schema/validation.h"
 
 namespace gridifs {
 

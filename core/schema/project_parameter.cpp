@@ -547,70 +547,16 @@ class ParameterResolver {
   Lookup set(const CondensationSet& set) {
     if (end()) return Lookup::NotANumber;
     const std::string_view key = token();
-    // Positions follow io/volume_io's readSet: the centre first.
-    switch (set.shape) {
-      case SetShape::Sphere:
-      case SetShape::Box:
-      case SetShape::Torus:
-        if (key == "primitive") return text();
-        if (key == "center") {
-          position(0);
-          return component(3, Where::SetCenter, Reader::SetNumber, 0.0, 0.0);
-        }
-        break;
-      case SetShape::Mesh:
-        if (key == "mesh" || key == "fill") return text();
-        if (key == "placement") {
-          position(1);
-          return placement(Where::SetPlacement, Reader::SetNumber, 0.0, 0.0);
-        }
-        return Lookup::Missing;
-      case SetShape::Vdb:
-        if (key == "vdb" || key == "grid") return text();
-        if (key == "threshold") {
-          position(1);
-          return number(Where::SetThreshold, Reader::SetNumber, Storage::Double);
-        }
-        return Lookup::Missing;
-      case SetShape::Image:
-        if (key == "image" || key == "invert") return text();
-        if (key == "placement") {
-          position(3);
-          return placement(Where::SetPlacement, Reader::SetNumber, 0.0, 0.0);
-        }
-        if (key == "threshold") {
-          position(1);
-          return number(Where::SetThreshold, Reader::SetNumber, Storage::Double);
-        }
-        if (key == "thickness") {
-          position(2);
-          return number(Where::SetThickness, Reader::SetNumber, Storage::Double);
-        }
-        return Lookup::Missing;
+    // Positions follow io/volume_io's writeSet: the source's name, the shape's numbers
+    // (condensationSetTable), the placement.
+    static constexpr const char* kNames[] = {"primitive", "mesh", "fill", "vdb", "grid", "image"};
+    for (const char* name : kNames)
+      if (key == name) return text();
+    if (key == "placement" && (set.shape == SetShape::Mesh || set.shape == SetShape::Image)) {
+      position(int(condensationSetTable(set.shape).fields.size()) + 1);
+      return settingsObject(placementTable(), Group::SetPlacement, &set.placement);
     }
-    if (set.shape == SetShape::Sphere && key == "radius") {
-      position(1);
-      return number(Where::SetRadius, Reader::SetNumber, Storage::Double);
-    }
-    if (set.shape == SetShape::Box && key == "size") {
-      position(1);
-      return component(3, Where::SetSize, Reader::SetNumber, 0.0, 0.0);
-    }
-    if (set.shape == SetShape::Torus) {
-      if (key == "major") {
-        position(1);
-        return number(Where::SetMajor, Reader::SetNumber, Storage::Double);
-      }
-      if (key == "minor") {
-        position(2);
-        return number(Where::SetMinor, Reader::SetNumber, Storage::Double);
-      }
-      if (key == "axis") {
-        position(3);
-        return component(3, Where::SetAxis, Reader::SetNumber, 0.0, 0.0);
-      }
-    }
-    return Lookup::Missing;
+    return settingField(condensationSetTable(set.shape), Group::Set, &set, key, 1);
   }
 
   // ---- operations (schema/operation_table.h, written by io/operation_json) ----
@@ -737,6 +683,18 @@ FoundParameter findParameter(const Project& project, const TrackPath& path, Para
 
 // ---- access ----------------------------------------------------------------------------------
 
+CondensationSet& ProjectParameter::setOf(Project& project) const {
+  if (f_ == kStartSet) return *project.volume->start;
+  if (layerShape_) return *fieldLayerOf(project, a_).shape;
+  return (f_ < 0 ? *project.final_function : project.functions[std::size_t(f_)]).set;
+}
+
+std::string ProjectParameter::setPath() const {
+  if (f_ == kStartSet) return "volume.start";
+  if (layerShape_) return layerPathOf(layerList_, a_) + ".shape";
+  return (f_ < 0 ? std::string("final") : item("functions", f_)) + ".set";
+}
+
 void* ProjectParameter::locate(Project& project) const {
   auto vectorComponent = [&](Vec3& v) -> void* { return &v[c_]; };
   if (where_ == Where::Setting) {
@@ -754,6 +712,12 @@ void* ProjectParameter::locate(Project& project) const {
         break;
       case Group::FieldLayer:
         group = &fieldLayerOf(project, a_);
+        break;
+      case Group::Set:
+        group = &setOf(project);
+        break;
+      case Group::SetPlacement:
+        group = &setOf(project).placement;
         break;
       case Group::Camera:
         group = &project.camera;
@@ -814,36 +778,7 @@ void* ProjectParameter::locate(Project& project) const {
     default:
       break;
   }
-  auto setField = [&](CondensationSet& set) -> void* {
-    switch (where_) {
-      case Where::SetCenter:
-        return vectorComponent(set.center);
-      case Where::SetRadius:
-        return &set.radius;
-      case Where::SetSize:
-        return vectorComponent(set.size);
-      case Where::SetMajor:
-        return &set.major;
-      case Where::SetMinor:
-        return &set.minor;
-      case Where::SetAxis:
-        return vectorComponent(set.axis);
-      case Where::SetPlacement: {
-        Placement& p = set.placement;
-        return vectorComponent(b_ == 0 ? p.translate : b_ == 1 ? p.rotate : p.scale);
-      }
-      case Where::SetThreshold:
-        return &set.threshold;
-      case Where::SetThickness:
-        return &set.thickness;
-      default:
-        return nullptr;
-    }
-  };
-  if (f_ == kStartSet) return setField(*project.volume->start);
-  if (layerShape_) return setField(*fieldLayerOf(project, a_).shape);
   Function& fn = f_ < 0 ? *project.final_function : project.functions[std::size_t(f_)];
-  if (void* field = setField(fn.set)) return field;
   switch (where_) {
     case Where::Resolution:
       return &fn.resolution[std::size_t(c_)];
@@ -1029,6 +964,12 @@ std::string ProjectParameter::path() const {
       case Group::FieldLayer:
         group = layerPathOf(layerList_, a_);
         break;
+      case Group::Set:
+        group = setPath();
+        break;
+      case Group::SetPlacement:
+        group = setPath() + ".placement";
+        break;
       case Group::Camera:
         group = "camera";
         break;
@@ -1088,34 +1029,7 @@ std::string ProjectParameter::path() const {
     default:
       break;
   }
-  auto setPath = [&](const std::string& set) -> std::string {
-    switch (where_) {
-      case Where::SetCenter:
-        return item(set + ".center", c_);
-      case Where::SetRadius:
-        return set + ".radius";
-      case Where::SetSize:
-        return item(set + ".size", c_);
-      case Where::SetMajor:
-        return set + ".major";
-      case Where::SetMinor:
-        return set + ".minor";
-      case Where::SetAxis:
-        return item(set + ".axis", c_);
-      case Where::SetPlacement:
-        return item(set + ".placement." + kPlacementKeys[b_], c_);
-      case Where::SetThreshold:
-        return set + ".threshold";
-      case Where::SetThickness:
-        return set + ".thickness";
-      default:
-        return {};
-    }
-  };
-  if (f_ == kStartSet) return setPath("volume.start");
-  if (layerShape_) return setPath(layerPathOf(layerList_, a_) + ".shape");
   const std::string fn = f_ < 0 ? std::string("final") : item("functions", f_);
-  if (std::string p = setPath(fn + ".set"); !p.empty()) return p;
   switch (where_) {
     case Where::Resolution:
       return item(fn + ".resolution", c_);

@@ -82,15 +82,6 @@ class ProjectParameter {
     VariationWeight,   // function `f`: the weight of variation `key`
     VariationParam,    // function `f`: variation parameter `key`
     PostMatrix,        // function `f`'s post matrix: row `a`, column `c`
-    SetCenter,         // function `f`'s set: component `c`
-    SetRadius,         // ...
-    SetSize,           // ... component `c`
-    SetMajor,          // ...
-    SetMinor,          // ...
-    SetAxis,           // ... component `c`
-    SetPlacement,      // ... `b` 0 translate, 1 rotate, 2 scale, component `c`
-    SetThreshold,      // ...
-    SetThickness,      // ... (a drawing)
     Transition,        // row `a`, column `c`
     ControlPoint,      // point `a`, component `c`
     DensityParam,      // volume.field (layer `a`): `param`, component `c`
@@ -103,6 +94,8 @@ class ProjectParameter {
     Placement,
     PostPlacement,
     FieldLayer,
+    Set,           // a condensation set: functions[f].set, volume.start or a field layer's shape
+    SetPlacement,  // that set's placement
     VolumeRender,
     TransferStop,
     Camera,
@@ -136,6 +129,9 @@ class ProjectParameter {
 
   /// Where the number lives in `project` (null for Version).
   void* locate(Project& project) const;
+  /// The condensation set a Group::Set or Group::SetPlacement number lies in, and its path.
+  CondensationSet& setOf(Project& project) const;
+  std::string setPath() const;
   /// Component c_ of field_ at `field` when it is a vector, else `field`.
   void* fieldComponent(void* field) const;
   void check(double value) const;

@@ -57,6 +57,11 @@ void checkInteger(const SettingSpec& s, double v, const std::string& path) {
 }
 
 void checkVector(const SettingSpec& s, const Vec3& v, const std::string& path) {
+  if (s.invalid) {
+    for (int d = 0; d < 3; ++d)
+      if (!inRange(s, v[d])) fail(path + "[" + std::to_string(d) + "]", s.invalid);
+    return;
+  }
   if (s.noun && !(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z)))
     fail(path, std::string("the ") + s.noun + " must be finite");
   for (int d = 0; d < 3; ++d) {

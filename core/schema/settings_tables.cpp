@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <limits>
 
+#include <glm/geometric.hpp>
+
 #include "schema/field_layer.h"
 #include "schema/palette_reference.h"
 
@@ -602,6 +604,124 @@ const SettingTableOf<VolumeSettings>& volumeSettingsTable() {
        nullptr,
        SettingWords::IntegerRange}};
   return table;
+}
+
+const SettingTableOf<CondensationSet>& condensationSetTable(SetShape shape) {
+  static const SettingSpec center =
+      setting<&CondensationSet::center>({.key = "center",
+                                         .label = "Center",
+                                         .tooltip = "Where the set's centre sits in X = [-1, 1]³",
+                                         .sliderMin = -2.0,
+                                         .sliderMax = 2.0,
+                                         .invalid = "expected finite coordinates"});
+  static constexpr auto nonZeroAxis = [](const void* owner, const std::string& path) {
+    if (glm::length(static_cast<const CondensationSet*>(owner)->axis) < 1e-9)
+      throw ModelError(path, "expected a non-zero axis");
+  };
+  static const SettingTableOf<CondensationSet> sphere{{{
+      center,
+      setting<&CondensationSet::radius>({.key = "radius",
+                                         .label = "Radius",
+                                         .tooltip = "The ball's radius",
+                                         .min = 0.0,
+                                         .max = 10.0,
+                                         .sliderMin = 0.001,
+                                         .sliderMax = 10.0,
+                                         .speed = 0.002,
+                                         .invalid = "expected a radius between 0 and 10",
+                                         .openMin = true}),
+  }}};
+  static const SettingTableOf<CondensationSet> box{{{
+      center,
+      setting<&CondensationSet::size>({.key = "size",
+                                       .label = "Size",
+                                       .tooltip = "The box's full edge lengths along x, y and z",
+                                       .min = 0.0,
+                                       .max = 20.0,
+                                       .sliderMin = 0.001,
+                                       .sliderMax = 20.0,
+                                       .speed = 0.004,
+                                       .invalid = "expected an edge length between 0 and 20",
+                                       .openMin = true}),
+  }}};
+  static const SettingTableOf<CondensationSet> torus{{{
+      center,
+      setting<&CondensationSet::major>({.key = "major",
+                                        .label = "Major",
+                                        .tooltip = "Distance from the centre to the tube's centre line",
+                                        .min = 0.0,
+                                        .max = 10.0,
+                                        .sliderMin = 0.001,
+                                        .sliderMax = 10.0,
+                                        .speed = 0.002,
+                                        .invalid = "expected a radius between 0 and 10",
+                                        .openMin = true}),
+      setting<&CondensationSet::minor>({.key = "minor",
+                                        .label = "Minor",
+                                        .tooltip = "The tube's radius",
+                                        .min = 0.0,
+                                        .max = 10.0,
+                                        .sliderMin = 0.001,
+                                        .sliderMax = 10.0,
+                                        .speed = 0.002,
+                                        .invalid = "expected a radius between 0 and 10",
+                                        .openMin = true}),
+      setting<&CondensationSet::axis>({.key = "axis",
+                                       .label = "Axis",
+                                       .tooltip = "The axis the ring turns about (any length; it is normalized)",
+                                       .sliderMin = -1.0,
+                                       .sliderMax = 1.0,
+                                       .speed = 0.01,
+                                       .invalid = "expected a non-zero axis",
+                                       .rule = nonZeroAxis}),
+  }}};
+  static const SettingTableOf<CondensationSet> image{{{
+      setting<&CondensationSet::threshold>(
+          {.key = "threshold",
+           .label = "Threshold",
+           .tooltip = "Pixels darker than this grey level (0 black, 1 white) belong to the set",
+           .min = 0.0,
+           .max = 1.0,
+           .sliderMin = 0.0,
+           .sliderMax = 1.0,
+           .invalid = "expected a number between 0 and 1"}),
+      setting<&CondensationSet::thickness>({.key = "thickness",
+                                            .label = "Thickness",
+                                            .tooltip = "The slab's thickness along z, before the placement",
+                                            .min = 0.0,
+                                            .max = 2.0,
+                                            .sliderMin = 0.001,
+                                            .sliderMax = 2.0,
+                                            .speed = 0.001,
+                                            .invalid = "expected a thickness between 0 and 2",
+                                            .openMin = true}),
+      setting<&CondensationSet::invert>(
+          {.key = "invert", .label = "Invert", .tooltip = "Light pixels belong to the set instead of dark ones"}),
+  }}};
+  static const SettingTableOf<CondensationSet> vdb{{{
+      setting<&CondensationSet::threshold>({.key = "threshold",
+                                            .label = "Threshold",
+                                            .tooltip = "Voxels whose value is at least this belong to the set",
+                                            .sliderMin = -limits::kMaxCoordinate,
+                                            .sliderMax = limits::kMaxCoordinate,
+                                            .invalid = "expected a finite number"}),
+  }}};
+  static const SettingTableOf<CondensationSet> mesh{};
+  switch (shape) {
+    case SetShape::Sphere:
+      return sphere;
+    case SetShape::Box:
+      return box;
+    case SetShape::Torus:
+      return torus;
+    case SetShape::Image:
+      return image;
+    case SetShape::Vdb:
+      return vdb;
+    case SetShape::Mesh:
+      break;
+  }
+  return mesh;
 }
 
 const SettingTableOf<VolumeDensityField>& fieldLayerTable() {

@@ -20,6 +20,13 @@ const SettingTableOf<Function>& functionTable();
 /// placements are read with their own reader's words.
 const SettingTableOf<Placement>& placementTable();
 
+/// A condensation set's numbers, one table per shape in the order its file lists them
+/// ("functions[i].set", "volume.start", a field layer's "shape"; Sokolov & Gentil §3.1–3.2): a
+/// sphere's centre and radius, a box's centre and full edge lengths, a torus's centre, radii and
+/// axis, a drawing's threshold, thickness and inversion, a VDB grid's threshold; a mesh has none of
+/// its own. A mesh's or a drawing's "placement" is placementTable()'s, with no zero scale.
+const SettingTableOf<CondensationSet>& condensationSetTable(SetShape shape);
+
 /// One weight of "transitions" (row i, column j: how likely function j is to follow function i,
 /// Thollot et al. §3): its range, label and help, for the file reader, the parameter paths,
 /// validation and the Matrices window.

@@ -85,6 +85,21 @@ void validateShadingSettings(const ShadingSettings& s, const std::string& path) 
   validateSettings(depthOfFieldTable(), s.dof, settingPath(path, "dof"));
 }
 
+void checkCondensationSet(const CondensationSet& set, const std::string& path) {
+  const bool placed = set.shape == SetShape::Mesh || set.shape == SetShape::Image;
+  if (set.shape == SetShape::Image && set.path.empty()) fail(join(path, "image"), "expected a file name");
+  validateSettings(condensationSetTable(set.shape), set, path);
+  if (set.shape == SetShape::Mesh && set.path.empty()) fail(join(path, "mesh"), "expected a file name");
+  if (set.shape == SetShape::Vdb) {
+    if (set.path.empty()) fail(join(path, "vdb"), "expected a file name");
+    if (set.grid.empty()) fail(join(path, "grid"), "expected a grid name");
+  }
+  if (!placed) return;
+  validateSettings(placementTable(), set.placement, join(path, "placement"));
+  for (int d = 0; d < 3; ++d)
+    if (set.placement.scale[d] == 0.0) fail(join(path, "placement.scale"), "a zero scale flattens the mesh");
+}
+
 void validateVolumeRender(const VolumeRenderSettings& s, const std::string& path) {
   validateSettings(volumeRenderTable(), s, path);
   const std::string transfer = settingPath(path, "transfer");

@@ -23,6 +23,11 @@ void validateRenderSettings(const RenderSettings& settings, const std::string& p
 /// [0, 1], non-negative intensities, radii and strengths, an aperture only with a focus distance.
 /// Throws ModelError whose path is `path` + "." + the field (e.g. "render.shading.lights[3]").
 void validateShadingSettings(const ShadingSettings& settings, const std::string& path);
+/// Checks a condensation set's numbers against its shape's table (condensationSetTable), a file
+/// set's path, a VDB set's grid name and a placed set's placement (no zero scale). Throws
+/// ModelError with a path below `path`.
+void checkCondensationSet(const CondensationSet& set, const std::string& path);
+
 /// "render.volume": its fields' ranges, at most kMaxTransferStops stops, sorted by density.
 void validateVolumeRender(const VolumeRenderSettings& settings, const std::string& path);
 

@@ -6,6 +6,7 @@
 #include "mesh/base_mesh.h"
 #include "mesh/mesh_io.h"
 #include "model/stack_evaluator.h"
+#include "schema/validation.h"
 #include "volume/set_voxelizer.h"
 #include "volume/vdb_io.h"
 #include "volume/voxel_set_mesh.h"

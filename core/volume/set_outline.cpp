@@ -7,6 +7,7 @@
 
 #include "mesh/mesh_io.h"
 #include "model/stack_evaluator.h"
+#include "schema/validation.h"
 #include "volume/set_voxelizer.h"
 
 namespace gridifs {

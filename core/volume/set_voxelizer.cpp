@@ -12,6 +12,7 @@
 #include "mesh/mesh_io.h"
 #include "model/stack_evaluator.h"
 #include "render/image_file.h"
+#include "schema/validation.h"
 #include "volume/vdb_io.h"
 
 namespace gridifs {

@@ -9,8 +9,10 @@
 
 #include <algorithm>
 
+#include "schema/settings_tables.h"
 #include "ui/base/widgets.h"
 #include "ui/panels/key_button.h"
+#include "ui/panels/setting_slider.h"
 
 namespace gridifs::ui {
 namespace {
@@ -49,6 +51,17 @@ void setKey(ModellerState& state, EditQueue& edits, FunctionRef ref, const std::
   keyButton(state, edits, ref.path() + ".set." + key, values, components);
 }
 
+/// The drag of the set's number `key` on `set`, a copy of the project's, from the shape's table
+/// (condensationSetTable), so it offers what reading and validation accept.
+bool setDrag(CondensationSet& set, const char* key) {
+  return settingDrag(condensationSetTable(set.shape).field(key), &set);
+}
+
+/// The table's help for the set's number `key`.
+const char* setHelp(const CondensationSet& set, const char* key) {
+  return condensationSetTable(set.shape).field(key).tooltip;
+}
+
 /// `chosen` as the project will store it: relative to the project's folder where the project
 /// has a file, else as chosen.
 std::string storedPath(const ModellerState& state, const fs::path& chosen) {
@@ -62,40 +75,41 @@ std::string storedPath(const ModellerState& state, const fs::path& chosen) {
 void drawPrimitive(ModellerState& state, EditQueue& edits, FunctionRef ref, const CondensationSet& current) {
   CondensationSet set = current;
   setKey(state, edits, ref, "center", &current.center.x, 3);
-  bool changed = dragVec3("Center", set.center, 0.005, -2.0, 2.0);
+  bool changed = setDrag(set, "center");
   state.probe.frame("set.center");
   setGesture(edits, "Move set", changed, ref, set);
-  contextHelp(state, "Where the set's centre sits in X = [-1, 1]³");
+  contextHelp(state, setHelp(set, "center"));
   switch (set.shape) {
     case SetShape::Sphere:
       setKey(state, edits, ref, "radius", &current.radius);
-      changed = dragDouble("Radius", set.radius, 0.002, 0.001, 10.0);
+      changed = setDrag(set, "radius");
       state.probe.frame("set.radius");
       setGesture(edits, "Sphere radius", changed, ref, set);
+      contextHelp(state, setHelp(set, "radius"));
       break;
     case SetShape::Box:
       setKey(state, edits, ref, "size", &current.size.x, 3);
-      changed = dragVec3("Size", set.size, 0.004, 0.001, 20.0);
+      changed = setDrag(set, "size");
       state.probe.frame("set.size");
       setGesture(edits, "Box size", changed, ref, set);
-      contextHelp(state, "The box's full edge lengths along x, y and z");
+      contextHelp(state, setHelp(set, "size"));
       break;
     case SetShape::Torus:
       setKey(state, edits, ref, "major", &current.major);
-      changed = dragDouble("Major", set.major, 0.002, 0.001, 10.0);
+      changed = setDrag(set, "major");
       state.probe.frame("set.major");
       setGesture(edits, "Torus major radius", changed, ref, set);
-      contextHelp(state, "Distance from the centre to the tube's centre line");
+      contextHelp(state, setHelp(set, "major"));
       setKey(state, edits, ref, "minor", &current.minor);
-      changed = dragDouble("Minor", set.minor, 0.002, 0.001, 10.0);
+      changed = setDrag(set, "minor");
       state.probe.frame("set.minor");
       setGesture(edits, "Torus minor radius", changed, ref, set);
-      contextHelp(state, "The tube's radius");
+      contextHelp(state, setHelp(set, "minor"));
       setKey(state, edits, ref, "axis", &current.axis.x, 3);
-      changed = dragVec3("Axis", set.axis, 0.01, -1.0, 1.0);
+      changed = setDrag(set, "axis");
       if (glm::length(set.axis) < 1e-6) set.axis = current.axis;  // a zero axis has no plane of revolution
       setGesture(edits, "Torus axis", changed, ref, set);
-      contextHelp(state, "The axis the ring turns about (any length; it is normalized)");
+      contextHelp(state, setHelp(set, "axis"));
       break;
     case SetShape::Mesh:
     case SetShape::Vdb:
@@ -108,20 +122,20 @@ void drawPrimitive(ModellerState& state, EditQueue& edits, FunctionRef ref, cons
 void drawImageFields(ModellerState& state, EditQueue& edits, FunctionRef ref, const CondensationSet& current) {
   CondensationSet set = current;
   setKey(state, edits, ref, "threshold", &current.threshold);
-  bool changed = dragDouble("Threshold", set.threshold, 0.005, 0.0, 1.0);
+  bool changed = setDrag(set, "threshold");
   state.probe.frame("set.threshold");
   setGesture(edits, "Drawing threshold", changed, ref, set);
-  contextHelp(state, "Pixels darker than this grey level (0 black, 1 white) belong to the set");
+  contextHelp(state, setHelp(set, "threshold"));
   setKey(state, edits, ref, "thickness", &current.thickness);
-  changed = dragDouble("Thickness", set.thickness, 0.001, 0.001, 2.0);
+  changed = setDrag(set, "thickness");
   state.probe.frame("set.thickness");
   setGesture(edits, "Drawing thickness", changed, ref, set);
-  contextHelp(state, "The slab's thickness along z, before the placement");
+  contextHelp(state, setHelp(set, "thickness"));
   set = current;
   if (ImGui::Checkbox("Invert", &set.invert))
     edits.commit(set.invert ? "Invert drawing" : "Drawing not inverted", SetCondensationSet{ref, set});
   state.probe.frame("set.invert");
-  contextHelp(state, "Light pixels belong to the set instead of dark ones");
+  contextHelp(state, setHelp(set, "invert"));
 }
 
 }  // namespace
@@ -179,10 +193,10 @@ void CondensationSetPanel::drawFile(ModellerState& state, EditQueue& edits, Func
     gestureItem(edits, "VDB grid name", typed && !grid.empty(), SetSetGrid{ref, grid});
     contextHelp(state, "The name of the float grid in the file");
     setKey(state, edits, ref, "threshold", &current.threshold);
-    const bool changed = dragDouble("Threshold", set.threshold, 0.005, -1e6, 1e6);
+    const bool changed = setDrag(set, "threshold");
     state.probe.frame("set.threshold");
     setGesture(edits, "VDB threshold", changed, ref, set);
-    contextHelp(state, "Voxels whose value is at least this belong to the set");
+    contextHelp(state, setHelp(set, "threshold"));
   }
 }
 

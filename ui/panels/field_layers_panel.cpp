@@ -114,19 +114,12 @@ void drawShape(LayerEditor& e) {
     set.shape = SetShape(shape);
     e.commit(std::string("Field shape: ") + shapes[shape]);
   }
-  bool changed = dragVec3("Center", set.center, 0.005, -1e3, 1e3);
-  e.item("Field shape center", changed, "shape.center");
-  if (set.shape == SetShape::Sphere) {
-    changed = sliderDouble("Radius", set.radius, 0.01, 2.0, "%.3f");
-    e.item("Field shape radius", changed, "shape.radius");
-  } else if (set.shape == SetShape::Box) {
-    changed = dragVec3("Size", set.size, 0.005, 0.01, 4.0);
-    e.item("Field shape size", changed, "shape.size");
-  } else {
-    changed = sliderDouble("Major", set.major, 0.01, 2.0, "%.3f");
-    e.item("Field shape major radius", changed, "shape.major");
-    changed = sliderDouble("Minor", set.minor, 0.01, 1.0, "%.3f");
-    e.item("Field shape minor radius", changed, "shape.minor");
+  // The shape's numbers from the sets' table: the same ranges a function's set has.
+  const SettingTableOf<CondensationSet>& table = condensationSetTable(set.shape);
+  for (const SettingSpec& spec : table.fields) {
+    const bool changed = settingDrag(spec, &set);
+    e.item(std::string("Field shape ") + lowercase(spec.label), changed, std::string("shape.") + spec.key);
+    contextHelp(e.state, spec.tooltip);
   }
   e.number("blend");
   e.number("softness");

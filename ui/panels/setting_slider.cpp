@@ -25,6 +25,14 @@ bool settingSliderWidget(const char* id, const SettingSpec& spec, double& value,
   return ImGui::SliderScalar(id, ImGuiDataType_Double, &value, &min, &max, spec.format, flags);
 }
 
+bool settingDrag(const SettingSpec& spec, void* owner) {
+  const bool ranged = spec.sliderMin < spec.sliderMax;
+  const double lo = ranged ? spec.sliderMin : spec.min, hi = ranged ? spec.sliderMax : spec.max;
+  if (spec.type == SettingType::Vector)
+    return dragVec3(spec.label, spec.value<Vec3>(owner), spec.speed, lo, hi, spec.format);
+  return dragDouble(spec.label, spec.value<double>(owner), spec.speed, lo, hi, spec.format);
+}
+
 void settingSlider(ModellerState& state, EditQueue& edits, const SettingSpec& spec, double value,
                    const std::string& group, const SettingSliderPlace& place) {
   const bool own = place.min < place.max;

@@ -15,6 +15,11 @@ namespace gridifs::ui {
 /// hide it). Returns whether `value` changed.
 bool settingSliderWidget(const char* id, const SettingSpec& spec, double& value, double min, double max);
 
+/// A drag of `spec`'s field of `owner` (a Number or a Vector) over the table's slider range, or
+/// its valid range when the table gives none, with the table's label, speed and format; for
+/// panels that edit a local copy and commit it whole. Returns whether the value changed.
+bool settingDrag(const SettingSpec& spec, void* owner);
+
 /// Where the slider stands and what it edits.
 struct SettingSliderPlace {
   const char* id = nullptr;     // the widget's label; nullptr: the table's label, shown beside it
