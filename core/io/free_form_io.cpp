@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "freeform/free_form.h"
+#include "io/json_read.h"
 #include "io/settings_json.h"
 #include "schema/settings_tables.h"
 
@@ -15,12 +16,9 @@ using ordered_json = nlohmann::ordered_json;
 [[noreturn]] void fail(const std::string& path, const std::string& message) { throw ModelError(path, message); }
 std::string item(const std::string& path, std::size_t index) { return path + "[" + std::to_string(index) + "]"; }
 
-double readFinite(const json& j, const std::string& path) {
-  if (!j.is_number()) fail(path, "expected a number");
-  const double v = j.get<double>();
-  if (!std::isfinite(v) || std::abs(v) > limits::kMaxCoordinate)
-    fail(path, "expected a finite number of magnitude at most 1e6");
-  return v;
+/// A number of `field`'s range, in the words the parameter paths use for it.
+double readInRange(const json& j, const std::string& path, const FieldInfo& field) {
+  return json_read::readNumber(j, path, field.min, field.max);
 }
 
 std::string readWord(const json& j, const std::string& path) {
@@ -43,12 +41,14 @@ std::optional<FreeFormSpace> readSpace(const json& root) {
                                      std::to_string(limits::kMaxControlPoints) + " control points, found " +
                                      std::to_string(points->size()));
   FreeFormSpace space;
+  const FieldInfo& point = controlPointField();
   for (std::size_t j = 0; j < points->size(); ++j) {
     const json& p = (*points)[j];
     const std::string path = item("space.control_points", j);
     if (!p.is_array() || p.size() != 3) fail(path, "expected an array of 3 numbers");
-    space.control_points.push_back(
-        Vec3{readFinite(p[0], item(path, 0)), readFinite(p[1], item(path, 1)), readFinite(p[2], item(path, 2))});
+    space.control_points.push_back(Vec3{readInRange(p[0], item(path, 0), point),
+                                        readInRange(p[1], item(path, 1), point),
+                                        readInRange(p[2], item(path, 2), point)});
   }
   return space;
 }
@@ -93,7 +93,8 @@ void readFunctionFields(const json& f, const std::string& path, Function& fn) {
       if (row.size() > std::size_t(limits::kMaxControlPoints))
         fail(rp, "more than " + std::to_string(limits::kMaxControlPoints) + " entries");
       std::vector<double> values;
-      for (std::size_t j = 0; j < row.size(); ++j) values.push_back(readFinite(row[j], item(rp, j)));
+      for (std::size_t j = 0; j < row.size(); ++j)
+        values.push_back(readInRange(row[j], item(rp, j), barycentricEntryField()));
       fn.matrix.push_back(std::move(values));
     }
   } else if (f.contains("matrix")) {

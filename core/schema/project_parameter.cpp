@@ -220,7 +220,7 @@ class ParameterResolver {
       const int point = index(project_.space->control_points.size());
       if (point < 0) return Lookup::Missing;
       p_.a_ = point;
-      return component(3, Where::ControlPoint, Reader::Bounded, 0.0, 0.0);
+      return component(3, Where::ControlPoint, Reader::Number, controlPointField().min, controlPointField().max);
     }
     if (key == "volume" && project_.volume) {
       position(9);
@@ -462,7 +462,8 @@ class ParameterResolver {
           const int row = index(fn.matrix.size());
           if (row < 0) return Lookup::Missing;
           p_.a_ = row;
-          return component(int(fn.matrix[std::size_t(row)].size()), Where::MatrixEntry, Reader::Bounded, 0.0, 0.0);
+          return component(int(fn.matrix[std::size_t(row)].size()), Where::MatrixEntry, Reader::Number,
+                           barycentricEntryField().min, barycentricEntryField().max);
         }
         return Lookup::Missing;
       case FunctionKind::Condensation:

@@ -871,6 +871,31 @@ const SettingTableOf<TransferStop>& transferStopTable() {
   return table;
 }
 
+const FieldInfo& controlPointField() {
+  static const FieldInfo field{.key = "control_points",
+                               .label = "Control point",
+                               .tooltip = "A point of the control net the barycentric maps combine",
+                               .min = -limits::kMaxCoordinate,
+                               .max = limits::kMaxCoordinate,
+                               .sliderMin = -1e3,
+                               .sliderMax = 1e3,
+                               .speed = 0.005,
+                               .format = "%.3f"};
+  return field;
+}
+
+const FieldInfo& barycentricEntryField() {
+  static const FieldInfo field{
+      .key = "matrix",
+      .label = "Matrix entry",
+      .tooltip = "How much of the column's control point the row's image takes (rows sum to 1)",
+      .min = -limits::kMaxCoordinate,
+      .max = limits::kMaxCoordinate,
+      .speed = 0.01,
+      .format = "%.3g"};
+  return field;
+}
+
 const FieldInfo& transitionWeightField() {
   static const FieldInfo field{.key = "transitions",
                                .label = "Transition weight",

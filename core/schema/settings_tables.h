@@ -1,6 +1,7 @@
 #pragma once
-// The settings groups of a project, one table each (schema/settings_table.h): a function's own numbers, the camera,
-// "render", "render.flame", the parts of "render.shading", "animation" and "volume". Reading, writing, validation and
+// The settings groups of a project, one table each (schema/settings_table.h): a function's own numbers and placement,
+// the camera, "render", "render.flame", the parts of "render.shading", "render.volume", "animation", "volume", a field
+// layer and a condensation set. Reading, writing, validation and
 // the panels' sliders all take their keys, ranges, labels and tooltips from here.
 //
 // Thread-safety: each table is built once (thread-safe static) and never changes.
@@ -31,6 +32,13 @@ const SettingTableOf<CondensationSet>& condensationSetTable(SetShape shape);
 /// Thollot et al. §3): its range, label and help, for the file reader, the parameter paths,
 /// validation and the Matrices window.
 const FieldInfo& transitionWeightField();
+
+/// One coordinate of a free-form project's control point ("space.control_points[j][c]", Thollot,
+/// Zair, Tosan & Vandorpe 1997 §5) and one entry of a matrix function's barycentric matrix
+/// ("functions[i].matrix[r][c]"): their ranges, labels and help, for the file reader, the
+/// parameter paths and the Matrices window.
+const FieldInfo& controlPointField();
+const FieldInfo& barycentricEntryField();
 
 /// The widest field of view of a perspective or orthographic camera, in degrees.
 inline constexpr double kMaxFlatFov = 170.0;

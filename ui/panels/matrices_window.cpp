@@ -229,7 +229,9 @@ void drawControlPoints(ModellerState& state, EditQueue& edits) {
       float v[3] = {float(points[j].x), float(points[j].y), float(points[j].z)};
       char label[32];
       std::snprintf(label, sizeof label, "p%zu", j);
-      const bool changed = ImGui::DragFloat3(label, v, 0.005f, -1e3f, 1e3f, "%.3f");
+      const FieldInfo& point = controlPointField();
+      const bool changed =
+          ImGui::DragFloat3(label, v, float(point.speed), float(point.sliderMin), float(point.sliderMax), point.format);
       gestureItem(edits, "Move control point", changed, MoveControlPoint{j, Vec3{v[0], v[1], v[2]}});
       state.probe.item("matrices.point." + std::to_string(j));
       ImGui::SameLine();
@@ -295,8 +297,8 @@ void drawFunctionMatrix(ModellerState& state, EditQueue& edits, MatricesWindowSt
         ImGui::SetNextItemWidth(cell);
         // The edited entry is balanced by the row's diagonal (or last) entry, so the row keeps
         // summing to 1 and every intermediate state of a drag is valid.
-        matrixCell(edits, "##m", f.matrix[i][j], -limits::kMaxCoordinate, limits::kMaxCoordinate, false, "matrix entry",
-                   [fi = int(fi), i, j](double v) {
+        matrixCell(edits, "##m", f.matrix[i][j], barycentricEntryField().min, barycentricEntryField().max, false,
+                   "matrix entry", [fi = int(fi), i, j](double v) {
                      return SetMatrixEntry{fi, i, j, v};
                    });
         if (ImGui::IsItemActivated()) startMatrixEdit(project, window);
