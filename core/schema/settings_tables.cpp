@@ -614,22 +614,26 @@ const SettingTableOf<CondensationSet>& condensationSetTable(SetShape shape) {
                                          .sliderMin = -2.0,
                                          .sliderMax = 2.0,
                                          .invalid = "expected finite coordinates"});
+  // A ball's and a torus's radii: positive, at most 10.
+  static constexpr auto radius = [](const char* key, const char* label, const char* tooltip) {
+    return SettingInfo{.key = key,
+                       .label = label,
+                       .tooltip = tooltip,
+                       .min = 0.0,
+                       .max = 10.0,
+                       .sliderMin = 0.001,
+                       .sliderMax = 10.0,
+                       .speed = 0.002,
+                       .invalid = "expected a radius between 0 and 10",
+                       .openMin = true};
+  };
   static constexpr auto nonZeroAxis = [](const void* owner, const std::string& path) {
     if (glm::length(static_cast<const CondensationSet*>(owner)->axis) < 1e-9)
       throw ModelError(path, "expected a non-zero axis");
   };
   static const SettingTableOf<CondensationSet> sphere{{{
       center,
-      setting<&CondensationSet::radius>({.key = "radius",
-                                         .label = "Radius",
-                                         .tooltip = "The ball's radius",
-                                         .min = 0.0,
-                                         .max = 10.0,
-                                         .sliderMin = 0.001,
-                                         .sliderMax = 10.0,
-                                         .speed = 0.002,
-                                         .invalid = "expected a radius between 0 and 10",
-                                         .openMin = true}),
+      setting<&CondensationSet::radius>(radius("radius", "Radius", "The ball's radius")),
   }}};
   static const SettingTableOf<CondensationSet> box{{{
       center,
@@ -646,26 +650,8 @@ const SettingTableOf<CondensationSet>& condensationSetTable(SetShape shape) {
   }}};
   static const SettingTableOf<CondensationSet> torus{{{
       center,
-      setting<&CondensationSet::major>({.key = "major",
-                                        .label = "Major",
-                                        .tooltip = "Distance from the centre to the tube's centre line",
-                                        .min = 0.0,
-                                        .max = 10.0,
-                                        .sliderMin = 0.001,
-                                        .sliderMax = 10.0,
-                                        .speed = 0.002,
-                                        .invalid = "expected a radius between 0 and 10",
-                                        .openMin = true}),
-      setting<&CondensationSet::minor>({.key = "minor",
-                                        .label = "Minor",
-                                        .tooltip = "The tube's radius",
-                                        .min = 0.0,
-                                        .max = 10.0,
-                                        .sliderMin = 0.001,
-                                        .sliderMax = 10.0,
-                                        .speed = 0.002,
-                                        .invalid = "expected a radius between 0 and 10",
-                                        .openMin = true}),
+      setting<&CondensationSet::major>(radius("major", "Major", "Distance from the centre to the tube's centre line")),
+      setting<&CondensationSet::minor>(radius("minor", "Minor", "The tube's radius")),
       setting<&CondensationSet::axis>({.key = "axis",
                                        .label = "Axis",
                                        .tooltip = "The axis the ring turns about (any length; it is normalized)",
