@@ -57,7 +57,7 @@ double readSettingNumber(SettingWords words, const SettingSpec& s, const json& j
   if (s.invalid) {
     // A field with a message of its own says it for any value out of its range, as validation does.
     const double v = readFinite(j, path);
-    if (!(std::isfinite(v) && (s.openMin ? v > s.min : v >= s.min) && v <= s.max)) fail(path, s.invalid);
+    if (!settingInRange(s, v)) fail(path, s.invalid);
     return v;
   }
   return readNumber(j, path, s.min, s.max);

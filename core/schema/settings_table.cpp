@@ -19,16 +19,11 @@ std::string integerRange(const SettingSpec& s) {
   return std::to_string(std::int64_t(s.min)) + " and " + std::to_string(std::int64_t(s.max));
 }
 
-/// Whether `v` is finite and in the field's range (above `min` when the range is open there).
-bool inRange(const SettingSpec& s, double v) {
-  return std::isfinite(v) && (s.openMin ? v > s.min : v >= s.min) && v <= s.max;
-}
-
 /// A number against its range: the field's own message, "expected a number between 0 and 1,
 /// found 2", or with a noun "the fog density must not be negative, found -1".
 void checkNumber(const SettingSpec& s, double v, const std::string& path) {
   if (s.invalid) {
-    if (!inRange(s, v)) fail(path, s.invalid);
+    if (!settingInRange(s, v)) fail(path, s.invalid);
     return;
   }
   if (!s.noun) {
@@ -48,7 +43,7 @@ void checkNumber(const SettingSpec& s, double v, const std::string& path) {
 
 void checkInteger(const SettingSpec& s, double v, const std::string& path) {
   if (s.invalid) {
-    if (!inRange(s, v)) fail(path, s.invalid);
+    if (!settingInRange(s, v)) fail(path, s.invalid);
     return;
   }
   if (v >= s.min && v <= s.max) return;
@@ -59,7 +54,7 @@ void checkInteger(const SettingSpec& s, double v, const std::string& path) {
 void checkVector(const SettingSpec& s, const Vec3& v, const std::string& path) {
   if (s.invalid) {
     for (int d = 0; d < 3; ++d)
-      if (!inRange(s, v[d])) fail(path + "[" + std::to_string(d) + "]", s.invalid);
+      if (!settingInRange(s, v[d])) fail(path + "[" + std::to_string(d) + "]", s.invalid);
     return;
   }
   if (s.noun && !(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z)))
@@ -73,6 +68,10 @@ void checkVector(const SettingSpec& s, const Vec3& v, const std::string& path) {
 }
 
 }  // namespace
+
+bool settingInRange(const SettingSpec& s, double v) {
+  return std::isfinite(v) && (s.openMin ? v > s.min : v >= s.min) && v <= s.max;
+}
 
 bool settingWritten(const SettingSpec& field, const void* group) {
   if (!field.omitDefault || !field.isDefault(group)) return true;

@@ -72,6 +72,9 @@ void validateSettings(const SettingTableOf<Group>& table, const Group& group, co
   validateSettingFields(table, &group, path);
 }
 
+/// Whether `v` is finite and in `field`'s valid range (above `min` when the range is open there).
+bool settingInRange(const SettingSpec& field, double v);
+
 /// Whether a writer puts `field` of `group` in the file: always, unless it is omitDefault and at
 /// its default (and its writtenAtDefault rule, if any, does not hold).
 bool settingWritten(const SettingSpec& field, const void* group);
