@@ -10,6 +10,8 @@
 #include <unistd.h>
 
 #include <cstdlib>
+#include <filesystem>
+#include <fstream>
 
 #include "tests/gui/gui_harness.h"
 
@@ -20,7 +22,9 @@ namespace {
 /// A JACK server of its own name with the dummy driver, for as long as this object lives.
 class JackDummyServer {
  public:
-  JackDummyServer() : name_("gridifs-test-" + std::to_string(::getpid())) {
+  JackDummyServer()
+      : name_("gridifs-test-" + std::to_string(::getpid())),
+        log_((std::filesystem::temp_directory_path() / (name_ + ".log")).string()) {
     if (run("command -v jackd >/dev/null") != 0) {
       problem_ = "jackd is not installed (scripts/deps.sh installs jackd2)";
       return;
@@ -29,11 +33,14 @@ class JackDummyServer {
     ::setenv("JACK_NO_AUDIO_RESERVATION", "1", 1);
     pid_ = ::fork();
     if (pid_ == 0) {
-      const int null = ::open("/dev/null", O_WRONLY);
-      ::dup2(null, 1);
-      ::dup2(null, 2);
-      ::execlp("jackd", "jackd", "--no-realtime", "-n", name_.c_str(), "-d", "dummy", "-r", "48000", "-p", "256",
-               static_cast<char*>(nullptr));
+      const int log = ::open(log_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+      ::dup2(log, 1);
+      ::dup2(log, 2);
+      // A loaded test machine (two GUI shards on two cores) can stall a client's process thread
+      // past JACK's default 500 ms client timeout; give clients 5 s, and wake them a quarter as
+      // often as a 256-frame period would.
+      ::execlp("jackd", "jackd", "--no-realtime", "--timeout", "5000", "-n", name_.c_str(), "-d", "dummy", "-r",
+               "48000", "-p", "1024", static_cast<char*>(nullptr));
       ::_exit(127);
     }
     for (int i = 0; i < 100; ++i) {
@@ -54,11 +61,17 @@ class JackDummyServer {
       ::waitpid(pid_, nullptr, 0);
     }
     ::unsetenv("JACK_DEFAULT_SERVER");
+    std::filesystem::remove(log_);
   }
   const std::string& problem() const { return problem_; }
+  /// What the server printed, for a failure's message (a client it dropped shows here).
+  std::string log() const {
+    std::ifstream in(log_);
+    return "jackd printed:\n" + std::string(std::istreambuf_iterator<char>(in), {});
+  }
 
  private:
-  std::string name_, problem_;
+  std::string name_, log_, problem_;
   pid_t pid_ = -1;
 };
 
@@ -109,10 +122,10 @@ TEST(MidiGui, ALearntControllerDrivesTheFieldOfView) {
   // The controller's ends are the slider's ends; no undo steps for the moves.
   sendControl(out, 7, 127);
   probe = app.waitFor([&](const nlohmann::json& j) { return j["camera"]["fov"] == hi; });
-  EXPECT_EQ(probe["camera"]["fov"], hi);
+  EXPECT_EQ(probe["camera"]["fov"], hi) << probe["live"].dump() << "\n" << jack.log();
   sendControl(out, 7, 0);
   probe = app.waitFor([&](const nlohmann::json& j) { return j["camera"]["fov"] == lo; });
-  EXPECT_EQ(probe["camera"]["fov"], lo);
+  EXPECT_EQ(probe["camera"]["fov"], lo) << probe["live"].dump() << "\n" << jack.log();
   EXPECT_EQ(probe["undo"], "Bind camera.fov");
   // Another controller moves nothing bound.
   sendControl(out, 8, 100);
