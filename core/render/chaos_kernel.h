@@ -1049,6 +1049,30 @@ struct ZBufferPlot {
     high = V8u(depth);
   }
 
+  /// Projects a chunk's n points (a multiple of kGroup) eight at a time and hands each group to
+  /// body(i, pixel, depth, inside). A panoramic camera's groups are projected first, all of them,
+  /// and handed over after: its projection is a long chain of dependent operations (a square
+  /// root, a division, the arctangents' polynomials), and with nothing but projections between
+  /// them the CPU overlaps the chains of consecutive groups (equirectangular 0.71 → 0.80 of
+  /// perspective's samples per second). A flat camera's short projection gains nothing from it
+  /// and stays in one loop.
+  template <class V8u, class V8i, class Body>
+  [[gnu::always_inline]] static void forEachProjectedGroup(const ProjectionLanes& pr, const v4f* points, int n,
+                                                           Body&& body) {
+    PanoramicGroups<V8u, V8i> panoramic;
+    if (pr.kind != HotCamera::Flat) panoramic.project(pr, points, n);
+    for (int i = 0; i < n; i += kGroup) {
+      V8u pixel;
+      v8f depth;
+      V8i inside;
+      if (pr.kind == HotCamera::Flat)
+        projectEight(pr, points + i, pixel, depth, inside);
+      else
+        panoramic.take(i, pixel, depth, inside);
+      body(i, pixel, depth, inside);
+    }
+  }
+
   /// Projects the collected chunk into the staged entries and prefetches their cells (z-buffer).
   /// Out of line (once per chunk), compiled for the CPU like the chaos game's kernel.
   [[gnu::noinline]] GRIDIFS_KERNEL_CLONES void stage() {
@@ -1066,21 +1090,8 @@ struct ZBufferPlot {
     const v4u64 cellBase = v4u64{} + std::uint64_t(reinterpret_cast<std::uintptr_t>(cells));
     const v4u64 scratchCell = v4u64{} + std::uint64_t(reinterpret_cast<std::uintptr_t>(&scratch));
     v8i landed{};
-    // A panoramic camera's groups are projected first, all of them, and staged after: its
-    // projection is a long chain of dependent operations (a square root, a division, the
-    // arctangents' polynomials), and with nothing but projections between them the CPU overlaps
-    // the chains of consecutive groups (equirectangular 0.71 → 0.80 of perspective's samples per
-    // second). A flat camera's short projection gains nothing from it and stays in one loop.
-    PanoramicGroups<v8u, v8i> panoramic;
-    if (pr.kind != HotCamera::Flat) panoramic.project(pr, points, n);
-    for (int i = 0; i < n; i += kGroup) {
-      v8u pixel;
-      v8f depth;
-      v8i inside;
-      if (pr.kind == HotCamera::Flat)
-        projectEight(pr, points + i, pixel, depth, inside);
-      else
-        panoramic.take(i, pixel, depth, inside);
+    const auto stageGroup = [&](int i, const v8u& pixel, const v8f& depth, const v8i& inside)
+        __attribute__((always_inline)) {
       // Every sample keeps its place, so there is no branch per sample (which mispredicted
       // wherever a fifth of the samples fall outside, as spherical flames' do) and no list to
       // build: one outside, the NaN padding too, writes the scratch cell.
@@ -1105,7 +1116,8 @@ struct ZBufferPlot {
         std::memcpy(stagedKey + i + 4, &second, sizeof second);
       }
       landed -= inside;  // -1 where a sample lands
-    }
+    };
+    forEachProjectedGroup<v8u, v8i>(pr, points, n, stageGroup);
     for (int j = n; j < kChunk; ++j) {
       stagedCell[j] = reinterpret_cast<std::uintptr_t>(&scratch);
       stagedKey[j] = kEmptyKey;
@@ -1132,16 +1144,8 @@ struct ZBufferPlot {
     std::uint16_t landed[kChunk];
     int landedCount = 0;
     const ProjectionLanes pr = projectionLanes(cam);
-    PanoramicGroups<v8u, v8i> panoramic;  // as in stage()
-    if (pr.kind != HotCamera::Flat) panoramic.project(pr, points, n);
-    for (int i = 0; i < n; i += kGroup) {
-      v8u pixel;
-      v8f depth;
-      v8i inside;
-      if (pr.kind == HotCamera::Flat)
-        projectEight(pr, points + i, pixel, depth, inside);
-      else
-        panoramic.take(i, pixel, depth, inside);
+    const auto listGroup = [&](int i, const v8u& pixel, const v8f& depth, const v8i& inside)
+        __attribute__((always_inline)) {
       std::memcpy(pixels + i, &pixel, sizeof pixel);
       if (keys) {
         v8u high, low;
@@ -1155,7 +1159,8 @@ struct ZBufferPlot {
         landed[landedCount] = std::uint16_t(i + k);
         landedCount += inside[k] != 0;  // the NaN padding is outside
       }
-    }
+    };
+    forEachProjectedGroup<v8u, v8i>(pr, points, n, listGroup);
     // The buffers' addresses in locals: the compiler cannot tell that the cells' stores leave
     // these members alone, and reloaded them for every sample.
     PixelCell* const cellBase = cells;
