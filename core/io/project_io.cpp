@@ -123,8 +123,10 @@ Function readFunction(const json& f, const std::string& path, std::size_t index)
   if (auto it = f.find("resolution"); it != f.end()) {
     const std::string p = join(path, "resolution");
     if (!it->is_array() || it->size() != 3) fail(p, "expected an array of 3 integers");
+    const FieldInfo& resolution = gridResolutionField();
     for (int d = 0; d < 3; ++d)
-      fn.resolution[d] = int(readInteger((*it)[d], item(p, d), limits::kMinResolution, limits::kMaxResolution));
+      fn.resolution[d] =
+          int(readInteger((*it)[d], item(p, d), std::int64_t(resolution.min), std::int64_t(resolution.max)));
   }
   readSettingFields(functionTable(), f, path, &fn);
   if (auto it = f.find("placement"); it != f.end()) {

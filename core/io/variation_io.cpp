@@ -46,7 +46,8 @@ void readFunctionFields(const json& f, const std::string& path, Function& fn) {
       for (std::size_t r = 0; r < 3; ++r) {
         const json& row = (*m)[r];
         if (!row.is_array() || row.size() != 4) fail(item(mp, r), "expected a row of 4 numbers");
-        for (std::size_t c = 0; c < 4; ++c) rows[r][c] = readFinite(row[c], item(item(mp, r), c));
+        const FieldInfo& entry = postMatrixEntryField();
+        for (std::size_t c = 0; c < 4; ++c) rows[r][c] = readNumber(row[c], item(item(mp, r), c), entry.min, entry.max);
       }
       post.matrix = rows;
     } else {

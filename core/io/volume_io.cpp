@@ -18,32 +18,6 @@ using ordered_json = nlohmann::ordered_json;
 
 [[noreturn]] void fail(const std::string& path, const std::string& message) { throw ModelError(path, message); }
 
-double readFinite(const json& obj, const char* key, const std::string& path, double fallback) {
-  auto it = obj.find(key);
-  if (it == obj.end()) return fallback;
-  const std::string p = path + "." + key;
-  if (!it->is_number()) fail(p, "expected a number");
-  const double v = it->get<double>();
-  if (!std::isfinite(v) || std::abs(v) > limits::kMaxCoordinate)
-    fail(p, "expected a finite number of magnitude at most 1e6");
-  return v;
-}
-
-Vec3 readVec3(const json& obj, const char* key, const std::string& path, Vec3 fallback) {
-  auto it = obj.find(key);
-  if (it == obj.end()) return fallback;
-  const std::string p = path + "." + key;
-  if (!it->is_array() || it->size() != 3) fail(p, "expected an array of 3 numbers");
-  Vec3 v;
-  for (int d = 0; d < 3; ++d) {
-    const json& c = (*it)[std::size_t(d)];
-    if (!c.is_number() || !std::isfinite(c.get<double>()) || std::abs(c.get<double>()) > limits::kMaxCoordinate)
-      fail(p + "[" + std::to_string(d) + "]", "expected a finite number of magnitude at most 1e6");
-    v[d] = c.get<double>();
-  }
-  return v;
-}
-
 std::string readText(const json& j, const std::string& path) {
   if (!j.is_string() || j.get_ref<const std::string&>().size() > 4096) fail(path, "expected a string");
   return j.get<std::string>();
@@ -159,8 +133,12 @@ void readSetFunctionFields(const json& f, const std::string& path, Function& fn)
   if (it == f.end()) fail(path + ".set", "a \"" + std::string(functionKindName(fn.kind)) + "\" function needs its set");
   fn.set = readSet(*it, path + ".set");
   if (fn.kind == FunctionKind::Median) {
-    fn.rotate = readFinite(f, "rotate", path, 0.0);
-    fn.rotate_axis = readVec3(f, "rotate_axis", path, Vec3{0.0, 0.0, 1.0});
+    const FieldInfo& rotate = medianRotateField();
+    if (auto r = f.find(rotate.key); r != f.end())
+      fn.rotate = json_read::readNumber(*r, path + "." + rotate.key, rotate.min, rotate.max);
+    const FieldInfo& axis = medianRotateAxisField();
+    if (auto a = f.find(axis.key); a != f.end())
+      fn.rotate_axis = json_read::readVec3(*a, path + "." + axis.key, axis.min, axis.max);
   } else {
     for (const char* key : {"rotate", "rotate_axis"})
       if (f.contains(key)) fail(path + "." + key, "only a \"median\" function is rotated");

@@ -475,12 +475,14 @@ class ParameterResolver {
         }
         if (key == "rotate" && fn.kind == FunctionKind::Median) {
           position(13);
-          return number(Where::MedianRotate, Reader::SetNumber, Storage::Double);
+          return number(Where::MedianRotate, Reader::Number, Storage::Double, medianRotateField().min,
+                        medianRotateField().max);
         }
         if (key == "rotate_axis" && fn.kind == FunctionKind::Median &&
             (fn.rotate_axis != Vec3{0.0, 0.0, 1.0} || editing_)) {
           position(14);
-          return component(3, Where::MedianRotateAxis, Reader::SetNumber, 0.0, 0.0);
+          return component(3, Where::MedianRotateAxis, Reader::Number, medianRotateAxisField().min,
+                           medianRotateAxisField().max);
         }
         return Lookup::Missing;
       case FunctionKind::Grid:
@@ -488,7 +490,7 @@ class ParameterResolver {
     }
     if (key == "resolution") {
       position(0);
-      return component(3, Where::Resolution, Reader::Integer, limits::kMinResolution, limits::kMaxResolution,
+      return component(3, Where::Resolution, Reader::Integer, gridResolutionField().min, gridResolutionField().max,
                        Storage::Int);
     }
     if (key == "placement") {
@@ -521,7 +523,7 @@ class ParameterResolver {
       const int row = index(3);
       if (row < 0) return Lookup::Missing;
       p_.a_ = row;
-      return component(4, Where::PostMatrix, Reader::Bounded, 0.0, 0.0);
+      return component(4, Where::PostMatrix, Reader::Number, postMatrixEntryField().min, postMatrixEntryField().max);
     }
     return Lookup::Missing;
   }
@@ -931,13 +933,6 @@ void ProjectParameter::check(double v) const {
       if (!finite || v != std::floor(v) || v < double(lo) || v > double(hi)) fail(path(), integerRange(lo, hi));
       return;
     }
-    case Reader::Bounded:
-      if (!finite) fail(path(), "expected a number");
-      if (std::abs(v) > kMaxCoordinate) fail(path(), "expected a finite number of magnitude at most 1e6");
-      return;
-    case Reader::SetNumber:
-      if (!finite || std::abs(v) > kMaxCoordinate) fail(path(), "expected a finite number of magnitude at most 1e6");
-      return;
     case Reader::Version: {
       std::string found = versionText(v);
       if (found.size() > 20) found = found.substr(0, 20) + "…";

@@ -119,8 +119,6 @@ class ProjectParameter {
     NounInteger,   // settings with a noun: Finite, then a whole number in [lo, hi]
     AnyFinite,     // settings read with SettingWords::FiniteOnly
     IntegerRange,  // settings read with SettingWords::IntegerRange: a whole number in [lo, hi]
-    Bounded,       // a post map's matrix: magnitude at most 1e6
-    SetNumber,     // condensation sets and the median's rotation: magnitude at most 1e6
     Time,          // finite
     Version,       // never: the format version is no parameter
   };

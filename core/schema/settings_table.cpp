@@ -27,8 +27,7 @@ void checkNumber(const SettingSpec& s, double v, const std::string& path) {
     return;
   }
   if (!s.noun) {
-    if (!(v >= s.min && v <= s.max))
-      fail(path, "expected a number between " + show(s.min) + " and " + show(s.max) + ", found " + show(v));
+    if (!(v >= s.min && v <= s.max)) fail(path, numberRangeMessage(s, v));
     return;
   }
   const std::string what = std::string("the ") + s.noun;
@@ -69,7 +68,11 @@ void checkVector(const SettingSpec& s, const Vec3& v, const std::string& path) {
 
 }  // namespace
 
-bool settingInRange(const SettingSpec& s, double v) {
+std::string numberRangeMessage(const FieldInfo& field, double v) {
+  return "expected a number between " + show(field.min) + " and " + show(field.max) + ", found " + show(v);
+}
+
+bool settingInRange(const FieldInfo& s, double v) {
   return std::isfinite(v) && (s.openMin ? v > s.min : v >= s.min) && v <= s.max;
 }
 

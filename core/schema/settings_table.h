@@ -73,7 +73,11 @@ void validateSettings(const SettingTableOf<Group>& table, const Group& group, co
 }
 
 /// Whether `v` is finite and in `field`'s valid range (above `min` when the range is open there).
-bool settingInRange(const SettingSpec& field, double v);
+bool settingInRange(const FieldInfo& field, double v);
+
+/// "expected a number between MIN and MAX, found V": what the file readers, the parameter paths
+/// and validation say of a number outside a field's range.
+std::string numberRangeMessage(const FieldInfo& field, double v);
 
 /// Whether a writer puts `field` of `group` in the file: always, unless it is omitDefault and at
 /// its default (and its writtenAtDefault rule, if any, does not hold).

@@ -882,6 +882,50 @@ const FieldInfo& barycentricEntryField() {
   return field;
 }
 
+const FieldInfo& gridResolutionField() {
+  static const FieldInfo field{.key = "resolution",
+                               .label = "Resolution",
+                               .tooltip = "Nodes of the grid along x, y and z",
+                               .min = double(limits::kMinResolution),
+                               .max = double(limits::kMaxResolution),
+                               .speed = 0.1,
+                               .format = "%.0f"};
+  return field;
+}
+
+const FieldInfo& postMatrixEntryField() {
+  static const FieldInfo field{.key = "matrix",
+                               .label = "Post matrix entry",
+                               .tooltip = "An entry of the post map's 3x4 matrix (the last column moves)",
+                               .min = -limits::kMaxCoordinate,
+                               .max = limits::kMaxCoordinate,
+                               .format = "%.4g"};
+  return field;
+}
+
+const FieldInfo& medianRotateField() {
+  static const FieldInfo field{.key = "rotate",
+                               .label = "Rotate",
+                               .tooltip =
+                                   "The rotated median (Sokolov & Gentil, §4.1): degrees about the axis per unit "
+                                   "of distance between the sets' centres; 0 is the plain median",
+                               .min = -1e5,
+                               .max = 1e5,
+                               .speed = 0.5,
+                               .format = "%.1f°"};
+  return field;
+}
+
+const FieldInfo& medianRotateAxisField() {
+  static const FieldInfo field{.key = "rotate_axis",
+                               .label = "Axis",
+                               .tooltip = "The axis the median turns about (any length; z by default)",
+                               .min = -limits::kMaxCoordinate,
+                               .max = limits::kMaxCoordinate,
+                               .speed = 0.01};
+  return field;
+}
+
 const FieldInfo& transitionWeightField() {
   static const FieldInfo field{.key = "transitions",
                                .label = "Transition weight",

@@ -40,6 +40,21 @@ const FieldInfo& transitionWeightField();
 const FieldInfo& controlPointField();
 const FieldInfo& barycentricEntryField();
 
+/// A grid function's resolution, nodes per axis ("functions[i].resolution[d]"; InterIFS's lattice,
+/// Sokolov, Gentil & Ploss §2): its range, label and help, for the file reader, the parameter
+/// paths, validation and the Functions panel.
+const FieldInfo& gridResolutionField();
+
+/// One entry of a post map given as a 3×4 matrix ("functions[i].post.matrix[r][c]"): rows x, y, z,
+/// the last column the translation.
+const FieldInfo& postMatrixEntryField();
+
+/// A median function's rotation, degrees about its axis per unit of distance between the sets'
+/// centres ("functions[i].rotate"), and that axis ("rotate_axis", any length but not zero):
+/// Sokolov & Gentil §4.1's rotated median.
+const FieldInfo& medianRotateField();
+const FieldInfo& medianRotateAxisField();
+
 /// The widest field of view of a perspective or orthographic camera, in degrees.
 inline constexpr double kMaxFlatFov = 170.0;
 /// "camera": yaw, pitch, distance, target, fov, projection. "stereo" has a table of its own.

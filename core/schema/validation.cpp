@@ -125,12 +125,16 @@ void checkCondensationFunctions(const Project& project) {
     if (!fn.ops.empty())
       fail(join(path, "ops"), "a function with a condensation set has no grid, so no grid operations");
     checkCondensationSet(fn.set, join(path, "set"));
-    if (!std::isfinite(fn.rotate) || std::abs(fn.rotate) > 1e5)
-      fail(join(path, "rotate"), "expected degrees per unit distance between -100000 and 100000");
+    if (fn.kind != FunctionKind::Median) continue;
+    const FieldInfo& rotate = medianRotateField();
+    if (!settingInRange(rotate, fn.rotate)) fail(join(path, rotate.key), numberRangeMessage(rotate, fn.rotate));
+    const FieldInfo& axisField = medianRotateAxisField();
     const Vec3& axis = fn.rotate_axis;
-    if (!std::isfinite(axis.x) || !std::isfinite(axis.y) || !std::isfinite(axis.z) ||
-        !(std::abs(axis.x) + std::abs(axis.y) + std::abs(axis.z) > 1e-9))
-      fail(join(path, "rotate_axis"), "expected a non-zero axis");
+    for (int d = 0; d < 3; ++d)
+      if (!settingInRange(axisField, axis[d]))
+        fail(item(join(path, axisField.key), d), numberRangeMessage(axisField, axis[d]));
+    if (!(std::abs(axis.x) + std::abs(axis.y) + std::abs(axis.z) > 1e-9))
+      fail(join(path, axisField.key), "expected a non-zero axis");
   }
   if (project.final_function && isSetKind(project.final_function->kind))
     fail("final.kind", "the final function must be a grid (a lattice)");
@@ -161,9 +165,11 @@ void validate(const Project& project, const Project* trusted) {
   std::int64_t totalNodes = 0;
   double totalWeight = 0.0;
   auto checkFunction = [&](const Function& fn, const std::string& path, const Function* before) {
+    const FieldInfo& resolution = gridResolutionField();
     for (int d = 0; d < 3; ++d)
-      if (fn.resolution[d] < limits::kMinResolution || fn.resolution[d] > limits::kMaxResolution)
-        fail(item(join(path, "resolution"), d), "expected an integer between 2 and 128");
+      if (fn.resolution[d] < resolution.min || fn.resolution[d] > resolution.max)
+        fail(item(join(path, "resolution"), d), "expected an integer between " + std::to_string(int(resolution.min)) +
+                                                    " and " + std::to_string(int(resolution.max)));
     totalNodes += std::int64_t(fn.resolution[0]) * fn.resolution[1] * fn.resolution[2];
     validateSettings(functionTable(), fn, path);
     validateSettings(placementTable(), fn.placement, join(path, "placement"));

@@ -33,7 +33,8 @@ using test_support::runGridifs;
 
 /// A project that holds every optional block the format has: a stereo pair, a shaded render with
 /// its lights, a volume render with a transfer function, a timeline, a density volume with a field
-/// layer, restricted transitions, a final function, and one operation of every type.
+/// layer, restricted transitions, post maps of both kinds, a final function, and one operation of
+/// every type.
 Project everyBlock() {
   Project p = defaultNewProject();
   p.camera.stereo = StereoSettings{};
@@ -47,7 +48,12 @@ Project everyBlock() {
   p.volume->field = VolumeDensityField{};
   p.functions.push_back(p.functions[0]);
   p.functions[1].sampling_error = 0.01;
-  p.transitions = {{1.0, 0.5}, {0.5, 1.0}};
+  p.functions[1].post = PostTransform{};  // a post map by placement
+  p.functions[1].post->placement.scale = Vec3(0.9);
+  p.functions.push_back(p.functions[0]);  // and one by its 3×4 matrix
+  p.functions[2].post = PostTransform{};
+  p.functions[2].post->matrix = {{{0.9, 0.0, 0.0, 0.1}, {0.0, 0.9, 0.0, 0.0}, {0.0, 0.0, 0.9, 0.0}}};
+  p.transitions = {{1.0, 0.5, 0.5}, {0.5, 1.0, 0.5}, {0.5, 0.5, 1.0}};
   p.final_function = p.functions[0];
   p.functions[0].ops.clear();
   for (const OperationSpec& spec : operationTable()) {

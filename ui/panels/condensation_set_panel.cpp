@@ -274,21 +274,24 @@ void CondensationSetPanel::draw(ModellerState& state, EditQueue& edits) {
     drawPrimitive(state, edits, ref, set);
 
   if (median) {
-    keyButton(state, edits, ref.path() + ".rotate", &f.rotate);
+    const FieldInfo& rotateField = medianRotateField();
+    const std::string rotatePath = ref.path() + "." + rotateField.key;
+    keyButton(state, edits, rotatePath, &f.rotate);
     double rotate = f.rotate;
-    const bool changed = dragDouble("Rotate", rotate, 0.5, -3600.0, 3600.0, "%.1f°");
+    const bool changed =
+        dragDouble(rotateField.label, rotate, rotateField.speed, rotateField.min, rotateField.max, rotateField.format);
     state.probe.frame("set.rotate");
-    gestureItem(edits, "Median rotation", changed, SetParameter{ref.path() + ".rotate", rotate, "Median rotation"});
-    contextHelp(state,
-                "The rotated median (Sokolov & Gentil, §4.1): degrees about the axis per unit of distance between the "
-                "sets' centres; 0 is the plain median");
-    keyButton(state, edits, ref.path() + ".rotate_axis", &f.rotate_axis.x, 3);
+    gestureItem(edits, "Median rotation", changed, SetParameter{rotatePath, rotate, "Median rotation"});
+    contextHelp(state, rotateField.tooltip);
+    const FieldInfo& axisField = medianRotateAxisField();
+    keyButton(state, edits, ref.path() + "." + axisField.key, &f.rotate_axis.x, 3);
     Vec3 axis = f.rotate_axis;
-    bool axisChanged = dragVec3("Axis", axis, 0.01, -1.0, 1.0);
+    // The drag stays within a unit's reach; the axis's length does not matter.
+    bool axisChanged = dragVec3(axisField.label, axis, axisField.speed, -1.0, 1.0);
     if (glm::length(axis) < 1e-6) axisChanged = false;  // a zero axis turns nothing
     state.probe.frame("set.rotate_axis");
     gestureItem(edits, "Median rotation axis", axisChanged, SetMedianAxis{ref, axis});
-    contextHelp(state, "The axis the median turns about (any length; z by default)");
+    contextHelp(state, axisField.tooltip);
   }
   ImGui::PopItemWidth();
 

@@ -81,14 +81,15 @@ void drawResolution(ModellerState& state, EditQueue& edits, FunctionRef ref, con
   // A Bézier lattice's nodes are the control points of a tensor-product Bézier volume of degree
   // nodes − 1 per axis (Sederberg & Parry 1986, §2): at most 8 keeps the polynomial well behaved.
   const bool bezier = ref.isFinal() && f.interpolation == LatticeInterpolation::Bezier;
-  const int most = bezier ? kMaxBezierLatticeNodes : limits::kMaxResolution;
+  const FieldInfo& field = gridResolutionField();
+  const int fewest = int(field.min), most = bezier ? kMaxBezierLatticeNodes : int(field.max);
   int resolution[3] = {f.resolution[0], f.resolution[1], f.resolution[2]};
-  const bool changed = ImGui::DragInt3("Resolution", resolution, 0.1f, limits::kMinResolution, most);
+  const bool changed = ImGui::DragInt3(field.label, resolution, float(field.speed), fewest, most);
   state.probe.frame(ref.isFinal() ? "final.resolution" : "function.resolution");
   bool refused = false;
   for (int& r : resolution) {
     refused |= r > most;
-    r = std::clamp(r, limits::kMinResolution, most);
+    r = std::clamp(r, fewest, most);
   }
   if (refused && bezier) {
     state.finalFunctionMessage = "A Bézier lattice has at most " + std::to_string(kMaxBezierLatticeNodes) +
