@@ -89,7 +89,7 @@ Accumulation accumulateOnDevice(const std::string& device, std::shared_ptr<const
   used = choice.renderer->deviceName();
   if (!choice.renderer->waitUntilDone(progress)) throw RenderCancelled();
   Accumulation acc;
-  choice.renderer->accumulation(acc);
+  choice.renderer->takeAccumulation(acc);
   return acc;
 }
 

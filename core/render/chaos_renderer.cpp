@@ -641,7 +641,21 @@ RenderStats ChaosRenderer::stats() const {
   return s;
 }
 
-void ChaosRenderer::accumulation(Accumulation& out) const {
+void ChaosRenderer::accumulation(Accumulation& out) const { mergeBuffers(out, nullptr); }
+
+void ChaosRenderer::takeAccumulation(Accumulation& out) {
+  const std::uint64_t generation = shared_->generation.load();
+  Worker* giver = nullptr;
+  if (shared_->job && shared_->job->job.accumulateColor && stats().done)
+    for (const auto& w : workers_)
+      if (w->bufferGeneration.load(std::memory_order_acquire) == generation) {
+        giver = w.get();
+        break;
+      }
+  mergeBuffers(out, giver);
+}
+
+void ChaosRenderer::mergeBuffers(Accumulation& out, Worker* giver) const {
   const std::uint64_t generation = shared_->generation.load();
   const PreparedJob* job = shared_->job.get();
   const RenderStats s = stats();
@@ -675,11 +689,21 @@ void ChaosRenderer::accumulation(Accumulation& out) const {
     for (std::size_t i = 0; i < n; ++i)
       out.density[i] = std::uint32_t(std::min<std::uint64_t>(out.density[i] + countOf(cells[i]), 0xFFFFFFFFu));
   }
+  // The giver's sums become the total's start: no second 32 MB at 1024², and no pass to copy it.
+  Worker* const from = job->job.accumulateColor && giver && giver->colorSums.size() == n * 4 &&
+                               std::find(ready.begin(), ready.end(), giver) != ready.end()
+                           ? giver
+                           : nullptr;
   if (job->job.accumulateColor) {
-    out.colorSums.assign(n * 4, 0);
-    for (const Worker* w : ready)
+    if (from)
+      out.colorSums = std::move(from->colorSums);
+    else
+      out.colorSums.assign(n * 4, 0);
+    for (const Worker* w : ready) {
+      if (w == from) continue;
       for (std::size_t i = 0; i < n * 4; ++i)
         out.colorSums[i] += std::atomic_ref<const std::uint64_t>(w->colorSums[i]).load(std::memory_order_relaxed);
+    }
   }
   // The light depth buffers: the nearest sample per texel over all workers.
   out.lightViews = job->job.shadowLights;
@@ -697,6 +721,8 @@ void ChaosRenderer::accumulation(Accumulation& out) const {
   out.samples = s.samples;
   out.badSamples = s.badSamples;
   out.plotted = s.plotted;
+  // Its colour sums are gone: a later accumulation() or snapshot() leaves the giver out.
+  if (from) from->bufferGeneration.store(0, std::memory_order_release);
 }
 
 void ChaosRenderer::snapshot(RenderImage& out, const DisplaySettings& display) const {
@@ -774,7 +800,7 @@ Accumulation accumulateToCompletion(std::shared_ptr<const CompiledIfs> ifs, cons
   renderer.restart(std::move(ifs), job);
   if (!renderer.waitUntilDone(progress)) throw RenderCancelled();
   Accumulation acc;
-  renderer.accumulation(acc);
+  renderer.takeAccumulation(acc);
   return acc;
 }
 

@@ -184,6 +184,11 @@ class ChaosRenderer : public Renderer {
   /// The current generation's buffers, undeveloped (render/accumulation.h): what snapshot()
   /// develops, and what a render part stores. Same rules as snapshot().
   void accumulation(Accumulation& out) const override;
+  /// accumulation() of a finished render whose renderer is then restarted or dropped, never read:
+  /// the first worker's colour sums, the biggest buffer (32 bytes a pixel), move into `out`
+  /// instead of being copied. That worker's buffers then count as empty. Before the budget is
+  /// done it is accumulation().
+  void takeAccumulation(Accumulation& out) override;
 
   /// Blocks until the current generation's budget is done (returns at once for unlimited jobs).
   /// `progress` is called about every `intervalSeconds` on this thread; returning false stops the
@@ -196,6 +201,9 @@ class ChaosRenderer : public Renderer {
   struct Shared;  // internal
 
  private:
+  /// accumulation()'s merge; `giver`, one of the current generation's workers, hands over its
+  /// colour sums (takeAccumulation).
+  void mergeBuffers(Accumulation& out, Worker* giver) const;
   void startThreads(int count);
   void joinThreads();
 

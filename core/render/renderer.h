@@ -38,6 +38,9 @@ class Renderer {
   /// The same buffers undeveloped (render/accumulation.h): what snapshot() develops, and what a
   /// render part stores.
   virtual void accumulation(Accumulation& out) const = 0;
+  /// accumulation() of a finished render whose renderer is then restarted or dropped, never read:
+  /// a renderer may hand over its own buffers instead of copying them.
+  virtual void takeAccumulation(Accumulation& out) { accumulation(out); }
   /// Blocks until the budget is done; `progress` as in ChaosRenderer::waitUntilDone.
   virtual bool waitUntilDone(const std::function<bool(const RenderStats&)>& progress = {},
                              double intervalSeconds = 0.1) = 0;

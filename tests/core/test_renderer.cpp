@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "model/stack_evaluator.h"
+#include "render/accumulation.h"
 #include "render/camera.h"
 #include "render/chaos_renderer.h"
 #include "render/compiled_ifs.h"
@@ -166,6 +167,42 @@ TEST(Renderer, SameSeedGivesIdenticalBytesOtherSeedDiffers) {
   EXPECT_NE(a.density, c.density);
   EXPECT_EQ(exportPoints(p, 50'000, 2, 7), exportPoints(p, 50'000, 2, 7));
   EXPECT_NE(exportPoints(p, 50'000, 2, 7), exportPoints(p, 50'000, 2, 8));
+}
+
+TEST(Renderer, TakingTheAccumulationGivesTheSameSumsAndLeavesTheGiverOut) {
+  const Project p = test::sierpinskiTetrahedron();
+  const auto ifs = compileIfs(p);
+  for (int threads : {1, 2, 3}) {
+    SCOPED_TRACE(threads);
+    RenderJob job = RenderJob::fromProject(p, threads);
+    job.accumulateColor = true;
+    job.samples = 400'000;
+    ChaosRenderer renderer;
+    renderer.restart(ifs, job);
+    ASSERT_TRUE(renderer.waitUntilDone());
+    Accumulation copied, taken;
+    renderer.accumulation(copied);
+    renderer.takeAccumulation(taken);
+    EXPECT_EQ(taken.colorSums, copied.colorSums);
+    EXPECT_EQ(taken.density, copied.density);
+    EXPECT_EQ(taken.samples, copied.samples);
+    EXPECT_EQ(taken.samples, job.samples);
+    // The giver's sums left with `taken`: a later read leaves that worker out instead of reading
+    // an empty buffer, so with one thread nothing is left.
+    Accumulation after;
+    renderer.accumulation(after);
+    EXPECT_LT(after.samples, taken.samples);
+    if (threads == 1) {
+      EXPECT_EQ(after.samples, 0);
+    }
+    ASSERT_EQ(after.colorSums.size(), taken.colorSums.size());
+    // And the renderer starts over as before.
+    renderer.restart(ifs, job);
+    ASSERT_TRUE(renderer.waitUntilDone());
+    Accumulation again;
+    renderer.takeAccumulation(again);
+    EXPECT_EQ(again.colorSums, copied.colorSums);
+  }
 }
 
 TEST(Renderer, ZTestKeepsTheNearestPoint) {
