@@ -201,7 +201,7 @@ std::optional<RenderImage> renderWithProgress(const std::vector<TimeSample>& sam
   }
   // Draves & Reckase 2003, §9: the time samples add into one histogram; with a motion fade the
   // earlier ones are drawn dimmer (directional motion blur, core/render/motion_blur.h).
-  const RenderImage image = mergeTimeSamples(source.merged ? *source.merged : accumulations, frame.display, motionFade);
+  RenderImage image = mergeTimeSamples(source.merged ? *source.merged : accumulations, frame.display, motionFade);
   if (!progress.bar) bar.finish();
   const RenderStats& s = image.stats;
   if (s.badFraction() >= 0.5)

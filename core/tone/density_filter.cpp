@@ -158,7 +158,7 @@ std::vector<double> spatialFilterTaps(int supersample, double radius) {
   return taps;
 }
 
-AccumBuffer spatialFilterDown(const AccumBuffer& accum, int supersample, double radius, int outWidth, int outHeight,
+AccumBuffer spatialFilterDown(AccumBuffer accum, int supersample, double radius, int outWidth, int outHeight,
                               int threads) {
   if (accum.width != outWidth * supersample || accum.height != outHeight * supersample)
     throw std::invalid_argument("spatial filter: the buffer is not supersample× the output size");
@@ -183,6 +183,8 @@ AccumBuffer spatialFilterDown(const AccumBuffer& accum, int supersample, double 
         for (int k = 0; k < 4; ++k) o[k] = float(t[k]);
       }
   });
+  // The full-size buffer is done with: let it go before the output is allocated.
+  std::vector<float>().swap(accum.data);
   AccumBuffer out(outWidth, outHeight);
   forRows(outHeight, threads, [&](int begin, int end) {
     for (int y = begin; y < end; ++y) {

@@ -68,8 +68,9 @@ std::vector<double> spatialFilterTaps(int supersample, double radius);
 
 /// Filters `accum` (outWidth·ss × outHeight·ss) down to outWidth × outHeight with the separable
 /// spatial filter centred on each output pixel's ss×ss block; taps outside the buffer count
-/// as empty. `threads` ≥ 1 splits rows.
-AccumBuffer spatialFilterDown(const AccumBuffer& accum, int supersample, double radius, int outWidth, int outHeight,
+/// as empty. `threads` ≥ 1 splits rows. `accum` is freed once the first (horizontal) pass has
+/// read it, so a caller that moves it in holds one full-size buffer fewer while the output fills.
+AccumBuffer spatialFilterDown(AccumBuffer accum, int supersample, double radius, int outWidth, int outHeight,
                               int threads = 1);
 
 }  // namespace gridifs

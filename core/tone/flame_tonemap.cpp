@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <memory>
 #include <stdexcept>
 
@@ -188,17 +189,23 @@ FlameImage developFlame(const FlameHistogram& histogram, const FlameSettings& se
   if (settings.estimator_radius > 0.0)
     estimator = std::make_unique<DensityEstimator>(settings.estimator_radius, settings.estimator_minimum,
                                                    settings.estimator_curve, ss);
-  const AccumBuffer accum = logScaleAndEstimate(histogram, scale, estimator.get());
-  const AccumBuffer filtered = spatialFilterDown(accum, ss, settings.filter_radius, width, height, threads);
+  // The log-scaled buffer moves into the filter, which frees it once its first pass has read it.
+  AccumBuffer filtered = spatialFilterDown(logScaleAndEstimate(histogram, scale, estimator.get()), ss,
+                                           settings.filter_radius, width, height, threads);
   FlameImage image;
   image.width = width;
   image.height = height;
-  image.rgba.assign(std::size_t(width) * std::size_t(height) * 4, 0.f);
+  // Tone-mapped in place: the filtered buffer becomes the image, one full buffer fewer.
+  image.rgba = std::move(filtered.data);
   const ToneMapParams params = ToneMapParams::from(settings, background, transparent);
   const std::size_t pixels = std::size_t(width) * std::size_t(height);
   constexpr std::size_t kPixelsPerChunk = 4096;
   parallelFor(pixels, std::clamp(threads, 1, 64), kPixelsPerChunk, [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) toneMapPixel(&filtered.data[i * 4], params, &image.rgba[i * 4]);
+    for (std::size_t i = begin; i < end; ++i) {
+      float in[4];
+      std::memcpy(in, &image.rgba[i * 4], sizeof in);
+      toneMapPixel(in, params, &image.rgba[i * 4]);
+    }
   });
   return image;
 }
