@@ -47,7 +47,7 @@ void checkInteger(const SettingSpec& s, double v, const std::string& path) {
   }
   if (v >= s.min && v <= s.max) return;
   if (s.noun) fail(path, "expected between " + integerRange(s) + " " + s.noun + ", found " + show(v));
-  fail(path, "expected an integer between " + integerRange(s));
+  fail(path, integerRangeMessage(s));
 }
 
 void checkVector(const SettingSpec& s, const Vec3& v, const std::string& path) {
@@ -70,6 +70,11 @@ void checkVector(const SettingSpec& s, const Vec3& v, const std::string& path) {
 
 std::string numberRangeMessage(const FieldInfo& field, double v) {
   return "expected a number between " + show(field.min) + " and " + show(field.max) + ", found " + show(v);
+}
+
+std::string integerRangeMessage(const FieldInfo& field) {
+  return "expected an integer between " + std::to_string(std::int64_t(field.min)) + " and " +
+         std::to_string(std::int64_t(field.max));
 }
 
 bool settingInRange(const FieldInfo& s, double v) {

@@ -78,6 +78,8 @@ bool settingInRange(const FieldInfo& field, double v);
 /// "expected a number between MIN and MAX, found V": what the file readers, the parameter paths
 /// and validation say of a number outside a field's range.
 std::string numberRangeMessage(const FieldInfo& field, double v);
+/// "expected an integer between MIN and MAX": the same for a whole number.
+std::string integerRangeMessage(const FieldInfo& field);
 
 /// Whether a writer puts `field` of `group` in the file: always, unless it is omitDefault and at
 /// its default (and its writtenAtDefault rule, if any, does not hold).

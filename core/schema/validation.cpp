@@ -168,8 +168,7 @@ void validate(const Project& project, const Project* trusted) {
     const FieldInfo& resolution = gridResolutionField();
     for (int d = 0; d < 3; ++d)
       if (fn.resolution[d] < resolution.min || fn.resolution[d] > resolution.max)
-        fail(item(join(path, "resolution"), d), "expected an integer between " + std::to_string(int(resolution.min)) +
-                                                    " and " + std::to_string(int(resolution.max)));
+        fail(item(join(path, resolution.key), d), integerRangeMessage(resolution));
     totalNodes += std::int64_t(fn.resolution[0]) * fn.resolution[1] * fn.resolution[2];
     validateSettings(functionTable(), fn, path);
     validateSettings(placementTable(), fn.placement, join(path, "placement"));
