@@ -8,7 +8,9 @@
 # probes the GPU first; r_gcpu: wall with --device cpu). With BASELINE=/path/to/older/gridifs that binary runs in the same
 # rounds (before/after from one run). Then the canonical 3D grid scene (tests/bench/canonical_scene.h)
 # against flam3's 3-function Sierpinski at the same samples, as scripts/bench-whole-process measures
-# it, when the build has bench_gpu (which writes the scene). Not run by ctest: timings need a quiet machine.
+# it, when the build has bench_gpu (which writes the scene). Every row draws SAMPLES samples (default
+# 10^8, where a render's fixed costs no longer dominate; each genome's quality is scaled to give it);
+# SAMPLES=genome keeps the genomes' own quality. Not run by ctest: timings need a quiet machine.
 # usage: tests/bench/bench_flam3_ratio.sh [BUILD_DIR]   (default: build)
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/../.." && pwd)"
@@ -16,6 +18,7 @@ BUILD="$(cd "${1:-$ROOT/build}" && pwd)"
 G="${GRIDIFS:-$BUILD/app/gridifs}"
 REPEAT="${REPEAT:-3}"
 BASELINE="${BASELINE:-}"
+SAMPLES="${SAMPLES:-100000000}"
 WORK="$(mktemp -d "${TMPDIR:-/tmp}/gridifs-flam3ratio.XXXXXX")"
 trap 'rm -rf "$WORK"' EXIT
 
@@ -52,7 +55,7 @@ run_case() {
   printf "\n"
 }
 
-echo "one thread, whole process, median of $REPEAT alternating rounds; load $(cut -d' ' -f1-3 /proc/loadavg), $(nproc) cores"
+echo "one thread, whole process, $SAMPLES samples a row, median of $REPEAT alternating rounds; load $(cut -d' ' -f1-3 /proc/loadavg), $(nproc) cores"
 echo "CPU: $(lscpu | sed -n 's/^Model name: *//p' | head -1) ($(grep -o -m1 'avx512f' /proc/cpuinfo || echo 'no AVX-512'))"
 printf "%-18s %11s %11s %11s %9s %6s %7s %7s %7s" genome samples "flam3 w/cpu" "gridifs w/c" "MB f/g" "g_cpu" \
   "r_wall" "r_cpu" "r_gcpu"
@@ -63,13 +66,25 @@ GENOMES="${GENOMES:-$(ls "$ROOT"/tests/data/flame/bench/*.flame)}"
 [[ "$GENOMES" == none ]] && GENOMES=""
 for flame in $GENOMES; do
   name="$(basename "$flame" .flame)"
+  if [[ "$SAMPLES" != genome ]]; then
+    # flam3 draws quality × width × height samples: scale the quality to SAMPLES in a copy.
+    python3 - "$flame" "$WORK/$name.flame" "$SAMPLES" <<'PY'
+import re, sys
+text = open(sys.argv[1]).read()
+w, h = map(int, re.search(r'size="(\d+) (\d+)"', text).group(1, 2))
+open(sys.argv[2], "w").write(re.sub(r'quality="[^"]*"', 'quality="%.6f"' % (int(sys.argv[3]) / (w * h)), text, count=1))
+PY
+    flame="$WORK/$name.flame"
+  fi
   "$G" import-flame "$flame" -o "$WORK/$name.gridifs" >/dev/null
   samples=$(python3 -c "import json; print(json.load(open('$WORK/$name.gridifs'))['render']['samples'])")
   run_case "$name" "$flame" "$WORK/$name.gridifs" "$samples"
 done
 
 if [[ -x "$BUILD/tests/bench_gpu" ]]; then
-  QUALITY="${QUALITY:-20}"
+  # The canonical row: QUALITY (samples per pixel of 1024²) overrides SAMPLES.
+  [[ "$SAMPLES" == genome ]] && QUALITY="${QUALITY:-20}"
+  QUALITY="${QUALITY:-$(python3 -c "print(round($SAMPLES / (1024 * 1024)))")}"
   "$BUILD/tests/bench_gpu" --write-scene "$WORK/canonical.gridifs"
   cat > "$WORK/sierpinski.flame" <<FLAME
 <flame name="sierpinski" version="3.1.1" size="1024 1024" center="0 0" scale="400" quality="$QUALITY"
