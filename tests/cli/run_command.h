@@ -25,6 +25,11 @@ inline std::string slurp(const std::filesystem::path& p) {
   return s.str();
 }
 
+/// Writes `text` to `file` byte for byte (the tests' inputs, good and bad); slurp's inverse.
+inline void writeText(const std::filesystem::path& file, const std::string& text) {
+  std::ofstream(file, std::ios::binary) << text;
+}
+
 inline std::string quote(const std::string& s) {
   std::string q = "'";
   for (char c : s) q += (c == '\'') ? std::string("'\\''") : std::string(1, c);

@@ -8,15 +8,12 @@
 #include <sstream>
 
 #include "run_command.h"
+#include "tests/cli/example_projects.h"
 
 using namespace gridifs::test_support;
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string asset(const std::string& name) { return std::string(GRIDIFS_ASSETS) + "/" + name; }
-
-void writeText(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
 
 std::vector<std::vector<double>> parseRows(const std::string& text) {
   std::vector<std::vector<double>> rows;

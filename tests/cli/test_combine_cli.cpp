@@ -11,13 +11,12 @@
 #include "freeform/free_form_presets.h"
 #include "io/project_io.h"
 #include "run_command.h"
+#include "tests/cli/example_projects.h"
 
 using namespace gridifs;
 using namespace gridifs::test_support;
 
 namespace {
-
-const std::string kSierpinski = std::string(GRIDIFS_ASSETS) + "/sierpinski_tetrahedron.gridifs";
 
 double nearest(const std::vector<Vec3>& cloud, Vec3 p) {
   double best = 1e9;

@@ -11,13 +11,12 @@
 #include "freeform/state_expansion.h"
 #include "io/project_io.h"
 #include "run_command.h"
+#include "tests/cli/example_projects.h"
 
 using namespace gridifs;
 using namespace gridifs::test_support;
 
 namespace {
-
-const std::string kSierpinski = std::string(GRIDIFS_ASSETS) + "/sierpinski_tetrahedron.gridifs";
 
 CommandResult combine(const std::filesystem::path& a, const std::filesystem::path& b, const std::string& op,
                       const std::filesystem::path& out) {

@@ -18,8 +18,6 @@ namespace {
 
 const fs::path kExample = fs::path(GRIDIFS_ASSETS) / "matrices" / "construction_tree.gridifs";
 
-void writeText(const fs::path& file, const std::string& text) { std::ofstream(file) << text; }
-
 }  // namespace
 
 TEST(ConstructionCli, FigureExampleRendersItsTree) {

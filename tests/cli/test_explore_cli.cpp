@@ -8,11 +8,13 @@
 #include <nlohmann/json.hpp>
 
 #include "io/project_io.h"
+#include "tests/cli/example_projects.h"
 #include "tests/cli/run_command.h"
 
 namespace gridifs {
 namespace {
 
+using test_support::asset;
 using test_support::quote;
 using test_support::runGridifs;
 using test_support::slurp;
@@ -28,8 +30,6 @@ struct ExploreFolder {
   ~ExploreFolder() { fs::remove_all(dir); }
   std::string operator/(const std::string& name) const { return (dir / name).string(); }
 };
-
-std::string asset(const std::string& name) { return std::string(GRIDIFS_ASSETS) + "/" + name; }
 
 TEST(ExploreCli, RandomWritesWorldsThatLoadRenderAndSave) {
   ExploreFolder tmp;

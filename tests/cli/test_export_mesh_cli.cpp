@@ -8,14 +8,13 @@
 
 #include "mesh/ifs_mesh.h"
 #include "run_command.h"
+#include "tests/cli/example_projects.h"
 
 using namespace gridifs;
 using namespace gridifs::test_support;
 namespace fs = std::filesystem;
 
 namespace {
-
-const std::string kSierpinski = std::string(GRIDIFS_ASSETS) + "/sierpinski_tetrahedron.gridifs";
 
 struct Loaded {
   bool ok = false;
@@ -38,8 +37,6 @@ std::vector<std::string> entries(const fs::path& folder) {
   std::sort(names.begin(), names.end());
   return names;
 }
-
-void writeText(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
 
 std::size_t lineCount(const std::string& text) { return std::size_t(std::count(text.begin(), text.end(), '\n')); }
 

@@ -9,16 +9,13 @@
 
 #include "mesh/ifs_mesh.h"
 #include "run_command.h"
+#include "tests/cli/example_projects.h"
 
 using namespace gridifs;
 using namespace gridifs::test_support;
 namespace fs = std::filesystem;
 
 namespace {
-
-const std::string kPineTrees = std::string(GRIDIFS_ASSETS) + "/volumes/pine_trees.gridifs";
-
-void writeText(const fs::path& p, const std::string& text) { std::ofstream(p, std::ios::binary) << text; }
 
 std::string project(const std::string& secondFunction) {
   return R"({"format": "gridifs", "version": 1, "functions": [

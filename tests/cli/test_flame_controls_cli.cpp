@@ -7,16 +7,14 @@
 
 #include "io/project_io.h"
 #include "run_command.h"
+#include "tests/cli/example_projects.h"
 
 using namespace gridifs;
 using namespace gridifs::test_support;
 
 namespace {
 
-const std::string kTwisted = std::string(GRIDIFS_ASSETS) + "/twisted_functions.gridifs";
-const std::string kAnimated = std::string(GRIDIFS_ASSETS) + "/animation/breathing_twist.gridifs";
-
-std::string render(const std::string& project, const std::filesystem::path& out, const std::string& extra) {
+std::string renderArgs(const std::string& project, const std::filesystem::path& out, const std::string& extra) {
   return "render " + quote(project) + " -o " + quote(out.string()) + " --width 96 --height 72 --threads 2 -q " + extra;
 }
 
@@ -35,15 +33,15 @@ std::string variant(const std::string& source, const std::filesystem::path& dir,
 TEST(FlameControlsCli, QualityIsSamplesPerPixelFromTheOptionOrTheProject) {
   const ScratchDir dir("flame-controls-quality");
   const auto q = dir.path / "q.png", s = dir.path / "s.png", p = dir.path / "p.png";
-  ASSERT_EQ(runGridifs(render(kTwisted, q, "--mode flame --quality 20")).exitCode, 0);
-  ASSERT_EQ(runGridifs(render(kTwisted, s, "--mode flame --samples 138240")).exitCode, 0);  // 20 × 96 × 72
+  ASSERT_EQ(runGridifs(renderArgs(kTwisted, q, "--mode flame --quality 20")).exitCode, 0);
+  ASSERT_EQ(runGridifs(renderArgs(kTwisted, s, "--mode flame --samples 138240")).exitCode, 0);  // 20 × 96 × 72
   EXPECT_EQ(slurp(q), slurp(s));
   // The project's quality follows the size asked for on the command line.
   const std::string withQuality =
       variant(kTwisted, dir.path, "quality.gridifs", [](Project& x) { x.render.quality = 20; });
-  ASSERT_EQ(runGridifs(render(withQuality, p, "--mode flame")).exitCode, 0);
+  ASSERT_EQ(runGridifs(renderArgs(withQuality, p, "--mode flame")).exitCode, 0);
   EXPECT_EQ(slurp(p), slurp(s));
-  const CommandResult both = runGridifs(render(kTwisted, dir.path / "x.png", "--quality 20 --samples 1000"));
+  const CommandResult both = runGridifs(renderArgs(kTwisted, dir.path / "x.png", "--quality 20 --samples 1000"));
   EXPECT_EQ(both.exitCode, 2) << both.err;
   EXPECT_FALSE(std::filesystem::exists(dir.path / "x.png"));
 }
@@ -51,7 +49,7 @@ TEST(FlameControlsCli, QualityIsSamplesPerPixelFromTheOptionOrTheProject) {
 TEST(FlameControlsCli, HueDisplayFilterAndEstimatorOptionsChangeThePicture) {
   const ScratchDir dir("flame-controls-options");
   const auto base = dir.path / "base.png";
-  ASSERT_EQ(runGridifs(render(kTwisted, base, "--mode flame --samples 300000")).exitCode, 0);
+  ASSERT_EQ(runGridifs(renderArgs(kTwisted, base, "--mode flame --samples 300000")).exitCode, 0);
   const std::string plain = slurp(base);
   int n = 0;
   for (const std::string& options :
@@ -59,7 +57,7 @@ TEST(FlameControlsCli, HueDisplayFilterAndEstimatorOptionsChangeThePicture) {
         std::string("--supersample 2"), std::string("--filter-radius 1.5"), std::string("--estimator-radius 0"),
         std::string("--estimator-radius 4 --estimator-minimum 1 --estimator-curve 0.8")}) {
     const auto out = dir.path / ("o" + std::to_string(n++) + ".png");
-    const CommandResult r = runGridifs(render(kTwisted, out, "--mode flame --samples 300000 " + options));
+    const CommandResult r = runGridifs(renderArgs(kTwisted, out, "--mode flame --samples 300000 " + options));
     ASSERT_EQ(r.exitCode, 0) << options << ": " << r.err;
     EXPECT_NE(slurp(out), plain) << options << " changed nothing";
   }
@@ -69,9 +67,10 @@ TEST(FlameControlsCli, HueDisplayFilterAndEstimatorOptionsChangeThePicture) {
     x.render.flame.density_display = "linear";
   });
   const auto a = dir.path / "a.png", b = dir.path / "b.png";
-  ASSERT_EQ(runGridifs(render(hued, a, "--mode flame --samples 300000")).exitCode, 0);
+  ASSERT_EQ(runGridifs(renderArgs(hued, a, "--mode flame --samples 300000")).exitCode, 0);
   ASSERT_EQ(
-      runGridifs(render(kTwisted, b, "--mode flame --samples 300000 --hue 0.5 --density-display linear")).exitCode, 0);
+      runGridifs(renderArgs(kTwisted, b, "--mode flame --samples 300000 --hue 0.5 --density-display linear")).exitCode,
+      0);
   EXPECT_EQ(slurp(a), slurp(b));
 }
 
@@ -83,7 +82,7 @@ TEST(FlameControlsCli, BadValuesAreBadInputAndWriteNothing) {
         std::string("--mode flame --supersample 9"), std::string("--mode flame --estimator-curve 0"),
         std::string("--mode flame --filter-radius -1"), std::string("--mode zbuffer --hue 0.3"),
         std::string("--mode flame --quality 0"), std::string("--motion-blur 2 --motion-fade -1")}) {
-    const CommandResult r = runGridifs(render(kTwisted, out, options + " --samples 1000"));
+    const CommandResult r = runGridifs(renderArgs(kTwisted, out, options + " --samples 1000"));
     EXPECT_EQ(r.exitCode, 2) << options << ": " << r.err;
     EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << options << ": one line expected: " << r.err;
     EXPECT_FALSE(std::filesystem::exists(out)) << options;
@@ -94,8 +93,8 @@ TEST(FlameControlsCli, DirectionalMotionBlurFromTheOptionOrTheProject) {
   const ScratchDir dir("flame-controls-motion");
   const auto uniform = dir.path / "u.png", faded = dir.path / "f.png", project = dir.path / "p.png";
   const std::string common = "--mode flame --samples 400000 --time 1 --motion-blur 4 ";
-  ASSERT_EQ(runGridifs(render(kAnimated, uniform, common + "--motion-fade 0")).exitCode, 0);
-  const CommandResult r = runGridifs(render(kAnimated, faded, common + "--motion-fade 3"));
+  ASSERT_EQ(runGridifs(renderArgs(kAnimated, uniform, common + "--motion-fade 0")).exitCode, 0);
+  const CommandResult r = runGridifs(renderArgs(kAnimated, faded, common + "--motion-fade 3"));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(slurp(uniform), slurp(faded));
   // animation.motion_blur and motion_fade in the project do what the options do.
@@ -105,6 +104,6 @@ TEST(FlameControlsCli, DirectionalMotionBlurFromTheOptionOrTheProject) {
     a.motion_fade = 3.0;
     x.animation = a;
   });
-  ASSERT_EQ(runGridifs(render(blurred, project, "--mode flame --samples 400000 --time 1")).exitCode, 0);
+  ASSERT_EQ(runGridifs(renderArgs(blurred, project, "--mode flame --samples 400000 --time 1")).exitCode, 0);
   EXPECT_EQ(slurp(project), slurp(faded));
 }

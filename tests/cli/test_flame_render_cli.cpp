@@ -7,13 +7,13 @@
 #include <filesystem>
 
 #include "run_command.h"
+#include "tests/cli/example_projects.h"
 
 using namespace gridifs::test_support;
 
 namespace {
 
-const std::string kSierpinski = std::string(GRIDIFS_TEST_DATA) + "/flame/sierpinski2d.gridifs";  // mode flame
-const std::string kTwisted = std::string(GRIDIFS_ASSETS) + "/twisted_functions.gridifs";         // mode zbuffer
+const std::string kSierpinski2dFlame = std::string(GRIDIFS_TEST_DATA) + "/flame/sierpinski2d.gridifs";  // mode flame
 
 struct Info {
   int width = 0, channels = 0;
@@ -35,7 +35,7 @@ Info inspect(const std::filesystem::path& file) {
   return info;
 }
 
-std::string render(const std::string& project, const std::filesystem::path& out, const std::string& extra) {
+std::string smallRenderArgs(const std::string& project, const std::filesystem::path& out, const std::string& extra) {
   return "render " + quote(project) + " -o " + quote(out.string()) +
          " --width 96 --height 72 --samples 300000 --threads 2 -q " + extra;
 }
@@ -56,7 +56,7 @@ TEST(FlameRenderCli, WritesPng8And16AndExrWithAlpha) {
                         Case{"d.exr", "--mode flame", 4, OIIO::TypeDesc::FLOAT},
                         Case{"e.exr", "--mode flame --bit-depth 16 --palette flam3:27", 4, OIIO::TypeDesc::HALF}}) {
     const auto out = dir.path / c.name;
-    const CommandResult r = runGridifs(render(kTwisted, out, c.options));
+    const CommandResult r = runGridifs(smallRenderArgs(kTwisted, out, c.options));
     ASSERT_EQ(r.exitCode, 0) << c.name << ": " << r.err;
     const Info info = inspect(out);
     EXPECT_EQ(info.width, 96) << c.name;
@@ -69,9 +69,9 @@ TEST(FlameRenderCli, WritesPng8And16AndExrWithAlpha) {
 TEST(FlameRenderCli, FollowsTheProjectsModeAndIsDeterministic) {
   const ScratchDir dir("flame-cli-mode");
   const auto a = dir.path / "a.png", b = dir.path / "b.png", z = dir.path / "z.png";
-  ASSERT_EQ(runGridifs(render(kSierpinski, a, "")).exitCode, 0);  // render.mode = flame in the file
-  ASSERT_EQ(runGridifs(render(kSierpinski, b, "--mode flame")).exitCode, 0);
-  ASSERT_EQ(runGridifs(render(kSierpinski, z, "--mode zbuffer")).exitCode, 0);
+  ASSERT_EQ(runGridifs(smallRenderArgs(kSierpinski2dFlame, a, "")).exitCode, 0);  // render.mode = flame in the file
+  ASSERT_EQ(runGridifs(smallRenderArgs(kSierpinski2dFlame, b, "--mode flame")).exitCode, 0);
+  ASSERT_EQ(runGridifs(smallRenderArgs(kSierpinski2dFlame, z, "--mode zbuffer")).exitCode, 0);
   EXPECT_EQ(slurp(a), slurp(b));  // same seed, samples and threads → the same bytes
   EXPECT_NE(slurp(a), slurp(z));
 }
@@ -83,12 +83,12 @@ TEST(FlameRenderCli, BadFlameOptionsAreBadInputAndWriteNothing) {
        {std::string("--mode density"), std::string("--mode flame --bit-depth 12"),
         std::string("--mode flame --palette no-such-palette"), std::string("--mode flame --palette flam3:999999"),
         std::string("--mode flame --palette file:/no/such.json"), std::string("--mode zbuffer --bit-depth 16")}) {
-    const CommandResult r = runGridifs(render(kTwisted, out, options));
+    const CommandResult r = runGridifs(smallRenderArgs(kTwisted, out, options));
     EXPECT_EQ(r.exitCode, 2) << options << ": " << r.err;
     EXPECT_FALSE(r.err.empty()) << options;
     EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << options << ": one line expected: " << r.err;
     EXPECT_FALSE(std::filesystem::exists(out)) << options;
   }
-  const CommandResult exr = runGridifs(render(kTwisted, dir.path / "x.exr", "--mode flame --bit-depth 8"));
+  const CommandResult exr = runGridifs(smallRenderArgs(kTwisted, dir.path / "x.exr", "--mode flame --bit-depth 8"));
   EXPECT_EQ(exr.exitCode, 2) << exr.err;
 }

@@ -26,13 +26,13 @@ using namespace gridifs::test_support;
 
 namespace {
 
-const fs::path kAssets = GRIDIFS_ASSETS;
+const fs::path kAssetFolder = GRIDIFS_ASSETS;
 
 void writeBytes(const fs::path& file, const std::string& bytes) {
   std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
 }
 
-std::vector<std::string> entriesOf(const fs::path& folder) {
+std::vector<std::string> folderEntries(const fs::path& folder) {
   std::vector<std::string> names;
   for (const auto& e : fs::directory_iterator(folder)) names.push_back(e.path().filename().string());
   return names;
@@ -75,7 +75,7 @@ void killWhileWriting(const std::string& name, const std::function<std::vector<s
       ASSERT_TRUE(now == complete) << name << ": kill " << k << " left a file that is neither the old nor the new one";
       ++replaced;
     }
-    for (const std::string& entry : entriesOf(work))
+    for (const std::string& entry : folderEntries(work))
       EXPECT_TRUE(entry == target.filename().string() || entry.front() == '.')
           << name << ": a temporary file is not hidden: " << entry;
   }
@@ -88,14 +88,14 @@ void killWhileWriting(const std::string& name, const std::function<std::vector<s
   // The next complete run removes what the killed ones left behind.
   ASSERT_EQ(waitFor(spawnGridifs(args(target))), 0) << name;
   EXPECT_EQ(slurp(target), complete) << name;
-  EXPECT_EQ(entriesOf(work), std::vector<std::string>{target.filename().string()})
+  EXPECT_EQ(folderEntries(work), std::vector<std::string>{target.filename().string()})
       << name << ": stale temporary files were not removed by the next run";
 }
 
 }  // namespace
 
 TEST(KillDuringWrite, RenderLeavesTheOldImageOrTheNewOne) {
-  const std::string project = (kAssets / "twisted_functions.gridifs").string();
+  const std::string project = (kAssetFolder / "twisted_functions.gridifs").string();
   killWhileWriting(
       "render.png",
       [&](const fs::path& out) {
@@ -106,7 +106,7 @@ TEST(KillDuringWrite, RenderLeavesTheOldImageOrTheNewOne) {
 }
 
 TEST(KillDuringWrite, ExportPointsLeavesTheOldCloudOrTheNewOne) {
-  const std::string project = (kAssets / "sierpinski_tetrahedron.gridifs").string();
+  const std::string project = (kAssetFolder / "sierpinski_tetrahedron.gridifs").string();
   killWhileWriting(
       "points.ply",
       [&](const fs::path& out) {
@@ -117,7 +117,7 @@ TEST(KillDuringWrite, ExportPointsLeavesTheOldCloudOrTheNewOne) {
 }
 
 TEST(KillDuringWrite, ExportMeshLeavesTheOldMeshOrTheNewOne) {
-  const std::string project = (kAssets / "sierpinski_tetrahedron.gridifs").string();
+  const std::string project = (kAssetFolder / "sierpinski_tetrahedron.gridifs").string();
   killWhileWriting(
       "mesh.ply",
       [&](const fs::path& out) {
@@ -131,7 +131,7 @@ TEST(KillDuringWrite, ExportMeshLeavesTheOldMeshOrTheNewOne) {
 TEST(KillDuringWrite, ProjectSaveLeavesTheOldProjectOrTheNewOne) {
   ScratchDir dir("kill-save");
   const fs::path file = dir.path / "plate.gridifs";
-  gridifs::Project a = gridifs::loadProject(kAssets / "universal_calculator.gridifs");
+  gridifs::Project a = gridifs::loadProject(kAssetFolder / "universal_calculator.gridifs");
   gridifs::Project b = a;
   b.functions[0].name = "renamed";
   b.render.seed = a.render.seed + 1;
@@ -149,11 +149,11 @@ TEST(KillDuringWrite, ProjectSaveLeavesTheOldProjectOrTheNewOne) {
     waitFor(pid);
     const std::string text = gridifs::serializeProject(gridifs::loadProject(file));
     EXPECT_TRUE(text == textA || text == textB) << "kill " << k << " left a project that is neither version";
-    for (const std::string& entry : entriesOf(dir.path))
+    for (const std::string& entry : folderEntries(dir.path))
       EXPECT_TRUE(entry == "plate.gridifs" || entry == "plate.gridifs~" || entry.front() == '.')
           << "a temporary file is not hidden: " << entry;
   }
   gridifs::saveProject(a, file);  // the next save removes the stale temporaries
-  for (const std::string& entry : entriesOf(dir.path))
+  for (const std::string& entry : folderEntries(dir.path))
     EXPECT_TRUE(entry == "plate.gridifs" || entry == "plate.gridifs~") << "stale temporary left: " << entry;
 }

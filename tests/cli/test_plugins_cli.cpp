@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <string>
 
+#include "tests/cli/example_projects.h"
 #include "tests/cli/run_command.h"
 
 namespace gridifs {
@@ -14,8 +15,6 @@ namespace {
 
 using namespace test_support;
 namespace fs = std::filesystem;
-
-std::string asset(const std::string& name) { return (fs::path(GRIDIFS_ASSETS) / name).string(); }
 
 /// gridifs's dynamic section (objdump -p), for its NEEDED libraries.
 std::string dynamicSection(const std::string& scratchName) {

@@ -17,8 +17,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-void writeText(const fs::path& file, const std::string& text) { std::ofstream(file) << text; }
-
 /// A small 2D project: medians onto a comma and a letter drawn in PNGs (copied from the assets),
 /// looking down z, with the render settings of a thumbnail.
 std::string drawingProject(const std::string& extraFunction = "", const std::string& start = "") {

@@ -6,13 +6,12 @@
 
 #include "io/project_io.h"
 #include "run_command.h"
+#include "tests/cli/example_projects.h"
 
 using namespace gridifs;
 using namespace gridifs::test_support;
 
 namespace {
-
-const std::string kSierpinski = std::string(GRIDIFS_ASSETS) + "/sierpinski_tetrahedron.gridifs";
 
 std::filesystem::path withTransitions(const ScratchDir& dir, const std::string& name, const std::string& matrix) {
   nlohmann::json j = nlohmann::json::parse(slurp(kSierpinski));

@@ -21,8 +21,6 @@ const char* kMedians = R"({"format": "gridifs", "version": 1, "functions": [
    "set": {"mesh": "cube.obj", "fill": "solid", "placement": {"translate": [0.45, 0, 0], "scale": [0.3, 0.3, 0.3]}}}],
   "volume": {"resolution": 64, "iterations": 100, "skip": 10, "seed": 1, "samples": 100000}})";
 
-void writeText(const fs::path& file, const std::string& text) { std::ofstream(file) << text; }
-
 void writeCube(const fs::path& file) {
   std::ofstream out(file);
   for (int v = 0; v < 8; ++v)

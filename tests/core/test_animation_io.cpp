@@ -24,7 +24,7 @@ std::string readText(const fs::path& file) {
 
 Project sierpinski() { return loadProject(fs::path(GRIDIFS_ASSETS) / "sierpinski_tetrahedron.gridifs"); }
 
-std::string errorOf(const std::function<void()>& f) {
+std::string animationErrorOf(const std::function<void()>& f) {
   try {
     f();
   } catch (const ModelError& e) {
@@ -88,23 +88,25 @@ TEST(AnimationIo, BadTracksAreErrorsWithTheirPath) {
     text.insert(text.rfind('}'), ",\n  \"tracks\": " + tracks + "\n");
     return text;
   };
-  EXPECT_EQ(errorOf([&] { parseProject(withTracks(R"({"functions[9].weight": [{"t": 0, "v": 1}]})")); }),
+  EXPECT_EQ(animationErrorOf([&] { parseProject(withTracks(R"({"functions[9].weight": [{"t": 0, "v": 1}]})")); }),
             "tracks[\"functions[9].weight\"]: names no parameter of this project (was it deleted?)");
-  EXPECT_EQ(errorOf([&] { parseProject(withTracks(R"({"functions[0].name": [{"t": 0, "v": 1}]})")); }),
+  EXPECT_EQ(animationErrorOf([&] { parseProject(withTracks(R"({"functions[0].name": [{"t": 0, "v": 1}]})")); }),
             "tracks[\"functions[0].name\"]: names a parameter that is not a number, so it cannot be keyframed");
-  EXPECT_EQ(errorOf([&] { parseProject(withTracks(R"({"camera..yaw": [{"t": 0, "v": 1}]})")); }),
+  EXPECT_EQ(animationErrorOf([&] { parseProject(withTracks(R"({"camera..yaw": [{"t": 0, "v": 1}]})")); }),
             "tracks[\"camera..yaw\"]: is not a parameter path like functions[0].ops[1].k");
-  EXPECT_EQ(errorOf([&] { parseProject(withTracks(R"({"camera.yaw": [{"t": 1, "v": 1}, {"t": 0, "v": 2}]})")); }),
-            "tracks[\"camera.yaw\"][1].t: keys must be in increasing time order");
-  EXPECT_EQ(errorOf([&] { parseProject(withTracks(R"({"camera.yaw": [{"t": 1, "v": 1, "interp": "cubic"}]})")); }),
-            "tracks[\"camera.yaw\"][0].interp: expected \"step\", \"linear\" or \"smooth\"");
-  EXPECT_EQ(errorOf([&] { parseProject(withTracks(R"({"camera.yaw": [{"v": 1}]})")); }),
+  EXPECT_EQ(
+      animationErrorOf([&] { parseProject(withTracks(R"({"camera.yaw": [{"t": 1, "v": 1}, {"t": 0, "v": 2}]})")); }),
+      "tracks[\"camera.yaw\"][1].t: keys must be in increasing time order");
+  EXPECT_EQ(
+      animationErrorOf([&] { parseProject(withTracks(R"({"camera.yaw": [{"t": 1, "v": 1, "interp": "cubic"}]})")); }),
+      "tracks[\"camera.yaw\"][0].interp: expected \"step\", \"linear\" or \"smooth\"");
+  EXPECT_EQ(animationErrorOf([&] { parseProject(withTracks(R"({"camera.yaw": [{"v": 1}]})")); }),
             "tracks[\"camera.yaw\"][0].t: the key has no time");
   // A key value the parameter does not accept is reported when the time reaches it.
   Project p = sierpinski();
   p.tracks["camera.pitch"].keys = {{0.0, 0.0}, {1.0, 500.0}};
   EXPECT_NO_THROW(projectAtTime(p, 0.0));
-  const std::string late = errorOf([&] { projectAtTime(p, 1.0); });
+  const std::string late = animationErrorOf([&] { projectAtTime(p, 1.0); });
   EXPECT_NE(late.find("camera.pitch"), std::string::npos) << late;
   EXPECT_NE(late.find("at time 1"), std::string::npos) << late;
 }
@@ -113,7 +115,7 @@ TEST(AnimationIo, BadTimelineIsAnError) {
   const std::string base = readText(fs::path(GRIDIFS_ASSETS) / "sierpinski_tetrahedron.gridifs");
   std::string text = base;
   text.insert(text.rfind('}'), ",\n  \"animation\": {\"fps\": 0}\n");
-  EXPECT_EQ(errorOf([&] { parseProject(text); }), "animation.fps: frames per second must be in (0, 1000]");
+  EXPECT_EQ(animationErrorOf([&] { parseProject(text); }), "animation.fps: frames per second must be in (0, 1000]");
 }
 
 TEST(AnimationIo, EditingAnAnimatedParameterKeysItAtTheCurrentTime) {

@@ -60,11 +60,11 @@ ConstructionPart part(const std::string& name, const Project& content) {
   return {name, std::make_shared<const Project>(content)};
 }
 
-struct TempDir {
+struct TreeTempDir {
   fs::path path =
       fs::temp_directory_path() / ("gridifs-tree-" + std::to_string(::getpid()) + "-" + std::to_string(std::rand()));
-  TempDir() { fs::create_directories(path); }
-  ~TempDir() {
+  TreeTempDir() { fs::create_directories(path); }
+  ~TreeTempDir() {
     std::error_code ec;
     fs::remove_all(path, ec);
   }
@@ -136,7 +136,7 @@ TEST(ConstructionTree, ProjectsWithoutATreeSaveAsBefore) {
 }
 
 TEST(ConstructionTree, FileLeavesAreReadBesideTheProjectAndFollowTheirFile) {
-  TempDir dir;
+  TreeTempDir dir;
   fs::create_directories(dir.path / "leaves");
   saveProject(ring(3, 0.5, "t"), dir.path / "leaves" / "triangle.gridifs");
   saveProject(ring(4, 0.4, "s"), dir.path / "leaves" / "square.gridifs");
@@ -158,7 +158,7 @@ TEST(ConstructionTree, FileLeavesAreReadBesideTheProjectAndFollowTheirFile) {
 }
 
 TEST(ConstructionTree, BadTreesNameTheirJsonPath) {
-  TempDir dir;
+  TreeTempDir dir;
   saveProject(ring(3, 0.5, "t"), dir.path / "t.gridifs");
   saveProject(ring(4, 0.4, "s"), dir.path / "s.gridifs");
   const std::string head = R"({"format": "gridifs", "version": 1, "functions": [{"name": "f"}], "construction": )";
@@ -190,7 +190,7 @@ TEST(ConstructionTree, BadTreesNameTheirJsonPath) {
 }
 
 TEST(ConstructionTree, CyclesThroughFilesAreRefused) {
-  TempDir dir;
+  TreeTempDir dir;
   const std::string head = R"({"format": "gridifs", "version": 1, "functions": [{"name": "f"}], "construction": )";
   writeText(dir.path / "self.gridifs", head + R"({"root": {"file": "self.gridifs"}}})");
   EXPECT_EQ(modelErrorText([&] { loadProject(dir.path / "self.gridifs"); }),

@@ -28,7 +28,7 @@ bool closed(const IfsMesh& mesh) {
   return true;
 }
 
-std::string errorOf(const BaseMeshSpec& spec) {
+std::string baseMeshErrorOf(const BaseMeshSpec& spec) {
   return test_support::modelErrorText([&] { loadCoarseBase(spec); });
 }
 
@@ -212,11 +212,11 @@ TEST(BaseMesh, BadFilesAreRefusedNamingTheFile) {
         Case{"vertices_only.obj", "no faces"}, Case{"fin.obj", "not a manifold"}, Case{"bowtie.obj", "not a manifold"},
         Case{"truncated.ply", ""}, Case{"hostile.off", "header declares"}, Case{"hostile.ply", "header declares"},
         Case{"hostile.stl", "header declares"}, Case{"notes.txt", "not a mesh file"}, Case{"folder.obj", "folder"}}) {
-    const std::string message = errorOf(fileSpec(path(c.name)));
+    const std::string message = baseMeshErrorOf(fileSpec(path(c.name)));
     EXPECT_NE(message.find(path(c.name)), std::string::npos) << c.name << ": " << message;
     EXPECT_NE(message.find(c.expect), std::string::npos) << c.name << ": " << message;
   }
-  EXPECT_EQ(errorOf(fileSpec("")), "base: no base mesh file given");
+  EXPECT_EQ(baseMeshErrorOf(fileSpec("")), "base: no base mesh file given");
 }
 
 TEST(BaseMesh, FitScalesIntoTheCubeAndLooseVerticesGo) {

@@ -16,7 +16,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-DeterministicMesh sierpinski(int depth, bool triangulate = false) {
+DeterministicMesh sierpinskiMesh(int depth, bool triangulate = false) {
   BaseMeshSpec spec;
   spec.subdivision = 1;
   spec.triangulate = triangulate;
@@ -62,8 +62,8 @@ TEST(MeshIo, FormatsFromExtensions) {
 
 TEST(MeshIo, EveryFormatLoadsBackWithItsColors) {
   TempFolder folder("mesh-io-formats");
-  const DeterministicMesh quads = sierpinski(2);
-  const DeterministicMesh triangles = sierpinski(2, true);
+  const DeterministicMesh quads = sierpinskiMesh(2);
+  const DeterministicMesh triangles = sierpinskiMesh(2, true);
   struct Case {
     const char* name;
     bool binary, colors, exactPositions;
@@ -105,7 +105,7 @@ TEST(MeshIo, EveryFormatLoadsBackWithItsColors) {
 
 TEST(MeshIo, PlyCarriesTheFaceAddress) {
   TempFolder folder("mesh-io-address");
-  const DeterministicMesh out = sierpinski(2);
+  const DeterministicMesh out = sierpinskiMesh(2);
   writeMeshFile(out.mesh, folder / "binary.ply");
   const std::string header = slurpFile(folder / "binary.ply").substr(0, 400);
   EXPECT_NE(header.find("format binary_little_endian"), std::string::npos) << header;
@@ -125,8 +125,8 @@ TEST(MeshIo, PlyCarriesTheFaceAddress) {
 
 TEST(MeshIo, ReplacesAtomicallyAndFailsCleanly) {
   TempFolder folder("mesh-io-atomic");
-  const DeterministicMesh small = sierpinski(1);
-  const DeterministicMesh large = sierpinski(3);
+  const DeterministicMesh small = sierpinskiMesh(1);
+  const DeterministicMesh large = sierpinskiMesh(3);
   writeMeshFile(small.mesh, folder / "a.ply");
   writeMeshFile(large.mesh, folder / "a.ply");  // replaces
   OpenMesh::IO::Options got;

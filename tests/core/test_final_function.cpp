@@ -19,7 +19,7 @@ namespace gridifs {
 namespace {
 
 /// The first points of the chaos game, positions then colours.
-std::pair<std::vector<float>, std::vector<float>> chaosPoints(const Document& document) {
+std::pair<std::vector<float>, std::vector<float>> finalChaosPoints(const Document& document) {
   RenderJob job = RenderJob::fromProject(document.project(), 1);
   job.samples = 4000;
   std::vector<float> xyz, rgb;
@@ -52,7 +52,7 @@ TEST(FinalFunction, ARefAddressesAFunctionOrTheFinalFunction) {
 TEST(FinalFunction, AddingItLeavesEveryPointAndColourWhereItWas) {
   for (const LatticeInterpolation interpolation : {LatticeInterpolation::Trilinear, LatticeInterpolation::Bezier}) {
     Document document(test::sierpinskiTetrahedron());
-    const auto before = chaosPoints(document);
+    const auto before = finalChaosPoints(document);
     const Revisions r0 = document.revisions();
     EditQueue edits;
     edits.commit(AddFinalFunction{});
@@ -65,7 +65,7 @@ TEST(FinalFunction, AddingItLeavesEveryPointAndColourWhereItWas) {
     EXPECT_EQ(document.undoLabel(),
               interpolation == LatticeInterpolation::Trilinear ? "Add final function" : bezier.label());
     EXPECT_GT(document.revisions().geometry, r0.geometry);
-    const auto after = chaosPoints(document);
+    const auto after = finalChaosPoints(document);
     ASSERT_EQ(after.first.size(), before.first.size());
     ASSERT_GT(after.first.size(), 1000u);
     for (std::size_t i = 0; i < before.first.size(); ++i) {
@@ -81,7 +81,7 @@ TEST(FinalFunction, EditingItsLatticeIsGeometryAndUndoRestoresIt) {
   edits.commit(AddFinalFunction{});
   edits.apply(document);
   const Project added = document.project();
-  const auto identity = chaosPoints(document);
+  const auto identity = finalChaosPoints(document);
   const std::uint64_t geometry = document.revisions().geometry;
 
   // A node drag as the grid views make it: one gesture through the FunctionRef, one undo step.
@@ -99,7 +99,7 @@ TEST(FinalFunction, EditingItsLatticeIsGeometryAndUndoRestoresIt) {
   EXPECT_EQ(document.undoLabel(), "Move nodes");
   const Grid& lattice = *document.evaluatedFinal();
   EXPECT_NEAR(lattice.node(5, 5, 5).x, 1.4, 1e-12);
-  const auto bent = chaosPoints(document);
+  const auto bent = finalChaosPoints(document);
   double moved = 0.0;
   for (std::size_t i = 0; i < bent.first.size(); ++i)
     moved = std::max(moved, double(std::abs(bent.first[i] - identity.first[i])));

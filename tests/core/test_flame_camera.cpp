@@ -15,7 +15,7 @@
 namespace gridifs {
 namespace {
 
-constexpr int kWidth = 320, kHeight = 240;
+constexpr int kCameraWidth = 320, kCameraHeight = 240;
 
 /// The flame camera's picture of `p` (flame space), pixels with y down.
 glm::dvec2 flamePixel(const FlameCamera& f, const glm::dvec3& p) {
@@ -27,8 +27,8 @@ glm::dvec2 flamePixel(const FlameCamera& f, const glm::dvec3& p) {
   const double zr = 1.0 - f.perspective * c[2];
   const double x = c[0] / zr - f.centerX, y = c[1] / zr - f.centerY;
   const double t = f.rotate * M_PI / 180.0;
-  return {0.5 * kWidth + (std::cos(t) * x - std::sin(t) * y) * f.pixelsPerUnit,
-          0.5 * kHeight + (std::sin(t) * x + std::cos(t) * y) * f.pixelsPerUnit};
+  return {0.5 * kCameraWidth + (std::cos(t) * x - std::sin(t) * y) * f.pixelsPerUnit,
+          0.5 * kCameraHeight + (std::sin(t) * x + std::cos(t) * y) * f.pixelsPerUnit};
 }
 
 FlameCamera randomFlameCamera(std::mt19937& rng, bool perspective) {
@@ -50,7 +50,7 @@ TEST(FlameCamera, TheProjectCameraDrawsWhatTheFlameCameraDraws) {
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   for (int trial = 0; trial < 40; ++trial) {
     const FlameCamera f = randomFlameCamera(rng, trial % 2 == 0);
-    const OrbitCamera camera(cameraFromFlame(f, kHeight, 2.0), kWidth, kHeight);
+    const OrbitCamera camera(cameraFromFlame(f, kCameraHeight, 2.0), kCameraWidth, kCameraHeight);
     for (int i = 0; i < 20; ++i) {
       const glm::dvec3 p(unit(rng), unit(rng), 0.5 * unit(rng));
       const glm::dvec2 want = flamePixel(f, p);
@@ -72,7 +72,7 @@ TEST(FlameCamera, ALevelCameraAndOneLookingStraightAtThePlaneWork) {
       f.perspective = perspective;
       f.centerX = 0.2;
       f.pixelsPerUnit = 90.0;
-      const OrbitCamera camera(cameraFromFlame(f, kHeight, 2.0), kWidth, kHeight);
+      const OrbitCamera camera(cameraFromFlame(f, kCameraHeight, 2.0), kCameraWidth, kCameraHeight);
       for (const glm::dvec3 p : {glm::dvec3(0.3, -0.2, 0.1), glm::dvec3(-0.5, 0.4, -0.2)}) {
         const glm::dvec2 want = flamePixel(f, p);
         const ProjectedPoint got = camera.project({p.x, p.y, -p.z});
@@ -86,7 +86,7 @@ TEST(FlameCamera, TurningTheProjectCameraBackGivesTheGenomesCamera) {
   std::mt19937 rng(8);
   for (int trial = 0; trial < 40; ++trial) {
     const FlameCamera f = randomFlameCamera(rng, trial % 2 == 0);
-    const FlameCameraExport back = flameCameraFromProject(cameraFromFlame(f, kHeight, 2.0), kHeight);
+    const FlameCameraExport back = flameCameraFromProject(cameraFromFlame(f, kCameraHeight, 2.0), kCameraHeight);
     const FlameCamera& g = back.camera;
     // The same picture: every point lands where it did (the angles may be another triple for
     // the same turn, and an orthographic camera's pivot may slide along its axis).
@@ -110,20 +110,20 @@ TEST(FlameCamera, TurningTheProjectCameraBackGivesTheGenomesCamera) {
 TEST(FlameCamera, AnEyeOffTheAxisMovesTheGenomeAndPanoramicCamerasAreRefused) {
   Camera c;
   c.target = Vec3(0.3, -0.2, 0.1);
-  const FlameCameraExport e = flameCameraFromProject(c, kHeight);
+  const FlameCameraExport e = flameCameraFromProject(c, kCameraHeight);
   EXPECT_NEAR(e.moveX, -0.3, 1e-12);
   EXPECT_NEAR(e.moveY, 0.2, 1e-12);
-  const OrbitCamera camera(c, kWidth, kHeight);
+  const OrbitCamera camera(c, kCameraWidth, kCameraHeight);
   const glm::dvec3 p(0.2, 0.5, -0.3);  // X
   const ProjectedPoint want = camera.project(p);
   const glm::dvec2 got = flamePixel(e.camera, {p.x + e.moveX, p.y + e.moveY, -p.z});
   EXPECT_NEAR(got.x, want.x, 1e-7);
   EXPECT_NEAR(got.y, want.y, 1e-7);
   c.projection = CameraProjection::Fisheye;
-  EXPECT_THROW(flameCameraFromProject(c, kHeight), FlameError);
+  EXPECT_THROW(flameCameraFromProject(c, kCameraHeight), FlameError);
   FlameCamera behind;
   behind.perspective = -0.2;
-  EXPECT_THROW(cameraFromFlame(behind, kHeight, 1.0), FlameError);
+  EXPECT_THROW(cameraFromFlame(behind, kCameraHeight, 1.0), FlameError);
 }
 
 }  // namespace

@@ -28,7 +28,7 @@ const std::filesystem::path kData = std::filesystem::path(GRIDIFS_TEST_DATA) / "
 struct FlamePixel {
   double x, y, depth;
 };
-FlamePixel flamePixel(const FlameGenome& g, FlamePoint p) {
+FlamePixel genomePixel(const FlameGenome& g, FlamePoint p) {
   const double yaw = -g.camYaw, pitch = g.camPitch;
   const double z = p.z - g.camZpos;
   const double cx = std::cos(yaw) * p.x - std::sin(yaw) * p.y;
@@ -147,7 +147,7 @@ TEST(FlameImport3D, GenomesThatLeaveThePlaneKeepTheirVariationsNatively) {
   const OrbitCamera orbit(p.camera, g.width, g.height);
   for (int n = 0; n < 200; ++n) {
     const FlamePoint q{u(rng) * 0.5, u(rng) * 0.5, u(rng) * 0.5};
-    const FlamePixel want = flamePixel(g, q);
+    const FlamePixel want = genomePixel(g, q);
     const ProjectedPoint got = orbit.project(glm::dvec3(q.x, q.y, -q.z));
     ASSERT_TRUE(got.inFront);
     EXPECT_NEAR(got.x, want.x, 1e-6);
@@ -242,7 +242,7 @@ TEST(FlameImport3D, TheCameraSeesWhatTheFlameCameraSees) {
     std::vector<std::pair<double, double>> depths;
     for (int n = 0; n < 200; ++n) {
       const FlamePoint p{u(rng), u(rng), u(rng)};
-      const FlamePixel want = flamePixel(g, p);
+      const FlamePixel want = genomePixel(g, p);
       const FlamePoint x = imported.frame.toX(p);
       const ProjectedPoint got = orbit.project(glm::dvec3(x.x, x.y, x.z));
       ASSERT_TRUE(got.inFront);

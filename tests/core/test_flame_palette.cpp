@@ -11,7 +11,7 @@ using namespace gridifs;
 
 namespace {
 bool haveFlam3() { return std::filesystem::exists(kFlam3PaletteFile); }
-std::string readFile(const std::filesystem::path& p) {
+std::string readPaletteFile(const std::filesystem::path& p) {
   std::ifstream in(p);
   std::stringstream s;
   s << in.rdbuf();
@@ -83,7 +83,7 @@ TEST(FlamePalette, ShippedPaletteFilesMatchTheBuiltIns) {
   for (const std::string& name : builtinPaletteNames()) {
     const std::filesystem::path file = std::filesystem::path(GRIDIFS_ASSETS) / "palettes" / (name + ".json");
     ASSERT_TRUE(std::filesystem::exists(file)) << file;
-    const Palette fromFile = parsePaletteJson(readFile(file));
+    const Palette fromFile = parsePaletteJson(readPaletteFile(file));
     const Palette builtIn = builtinPalette(name);
     EXPECT_EQ(fromFile.name, name);
     for (int i = 0; i < 256; ++i) {

@@ -14,7 +14,7 @@ using namespace gridifs;
 
 namespace {
 /// The Sierpinski triangle in the z = 0 plane, seen from straight above with an ortho camera.
-Project sierpinski(int size) {
+Project sierpinskiFlame(int size) {
   Project p;
   p.functions.clear();
   const Vec3 corners[3] = {{-0.5, -0.5, 0}, {0.5, -0.5, 0}, {0.0, 0.5, 0}};
@@ -47,7 +47,7 @@ TEST(FlameRender, PixelsPerUnitFollowTheOrbitCamera) {
 }
 
 TEST(FlameRender, RendererSumsThePaletteColorOfEverySample) {
-  const Project p = sierpinski(64);
+  const Project p = sierpinskiFlame(64);
   auto palette = std::make_shared<Palette>();
   for (int i = 0; i < 256; ++i) palette->colors[i] = {0.2f, 0.4f, i < 128 ? 0.6f : 1.0f};
   const RenderJob job = flameRenderJob(p, palette, 2);
@@ -82,7 +82,7 @@ TEST(FlameRender, RendererSumsThePaletteColorOfEverySample) {
 }
 
 TEST(FlameRender, DevelopsASupersampledSnapshotAndWritesImages) {
-  Project p = sierpinski(48);
+  Project p = sierpinskiFlame(48);
   p.render.flame.supersample = 2;
   const auto palette = std::make_shared<const Palette>(builtinPalette("ember"));
   const RenderJob job = flameRenderJob(p, palette, 1);

@@ -21,7 +21,7 @@ using test_support::chaosPoints;
 
 namespace {
 
-Project preset(FreeFormPreset which, int degree = 3, double roughness = 0.0) {
+Project completePreset(FreeFormPreset which, int degree = 3, double roughness = 0.0) {
   Project p = defaultNewProject();
   FreeFormPresetOptions options;
   options.degree = degree;
@@ -91,12 +91,12 @@ TEST(FreeFormPresets, BezierMatricesOfEveryDegreeSubdivideTheBernsteinBasis) {
 TEST(FreeFormPresets, EveryDegreeGivesAValidCurveAndPatch) {
   for (int n = kMinPresetDegree; n <= kMaxPresetDegree; ++n) {
     for (FreeFormPreset which : {FreeFormPreset::BezierCurve, FreeFormPreset::BSplineCurve}) {
-      const Project p = preset(which, n);
+      const Project p = completePreset(which, n);
       EXPECT_EQ(p.space->control_points.size(), std::size_t(n + 1));
       EXPECT_NO_THROW(validateProject(p)) << freeFormPresetName(which) << " " << n;
     }
     for (FreeFormPreset which : {FreeFormPreset::BezierPatch, FreeFormPreset::BSplinePatch}) {
-      const Project p = preset(which, n);
+      const Project p = completePreset(which, n);
       EXPECT_EQ(p.space->control_points.size(), std::size_t((n + 1) * (n + 1)));
       EXPECT_EQ(p.functions.size(), 4u);
       EXPECT_NO_THROW(validateProject(p)) << freeFormPresetName(which) << " " << n;
@@ -114,7 +114,7 @@ TEST(FreeFormPresets, EveryDegreeGivesAValidCurveAndPatch) {
 }
 
 TEST(FreeFormPresets, QuinticBezierAttractorIsTheCurveOfItsPoints) {
-  const Project p = preset(FreeFormPreset::BezierCurve, 5);
+  const Project p = completePreset(FreeFormPreset::BezierCurve, 5);
   const auto& cp = p.space->control_points;
   std::vector<Vec3> curve;
   for (int i = 0; i <= 4000; ++i) curve.push_back(deCasteljau(cp, i / 4000.0));
@@ -156,15 +156,15 @@ TEST(FreeFormJoints, PresetsMeetAndAHandEditNamesThePairItBreaks) {
   for (FreeFormPreset which : {FreeFormPreset::BezierCurve, FreeFormPreset::BSplineCurve, FreeFormPreset::BezierPatch,
                                FreeFormPreset::BSplinePatch})
     for (int n : {2, 3, 5}) {
-      const Project p = preset(which, n);
+      const Project p = completePreset(which, n);
       EXPECT_FALSE(freeFormJoints(p).empty());
       EXPECT_TRUE(failingJoints(p).empty()) << freeFormPresetName(which) << " " << n;
     }
   // Zair & Tosan's fractal curves keep their joint (§5.3.2).
-  EXPECT_TRUE(failingJoints(preset(FreeFormPreset::BezierCurve, 4, 0.3)).empty());
-  EXPECT_TRUE(failingJoints(preset(FreeFormPreset::BezierPatch, 3, 0.3)).empty());
+  EXPECT_TRUE(failingJoints(completePreset(FreeFormPreset::BezierCurve, 4, 0.3)).empty());
+  EXPECT_TRUE(failingJoints(completePreset(FreeFormPreset::BezierPatch, 3, 0.3)).empty());
 
-  const Project curve = preset(FreeFormPreset::BezierCurve, 3);
+  const Project curve = completePreset(FreeFormPreset::BezierCurve, 3);
   Project edited = curve;
   applyEdit(edited, SetMatrixEntry{0, 3, 2, 0.2});  // the left half's last row: its end moves
   const auto broken = brokenJoints(curve, edited);
@@ -178,7 +178,7 @@ TEST(FreeFormJoints, PresetsMeetAndAHandEditNamesThePairItBreaks) {
   applyEdit(inner, SetMatrixEntry{0, 1, 2, 0.1});
   EXPECT_TRUE(brokenJoints(curve, inner).empty());
 
-  const Project patch = preset(FreeFormPreset::BezierPatch, 2);
+  const Project patch = completePreset(FreeFormPreset::BezierPatch, 2);
   Project bent = patch;
   applyEdit(bent, SetMatrixEntry{0, 8, 4, 0.3});  // q00's far corner row
   const auto edges = brokenJoints(patch, bent);
@@ -188,14 +188,14 @@ TEST(FreeFormJoints, PresetsMeetAndAHandEditNamesThePairItBreaks) {
     EXPECT_TRUE(j.first == 0 || j.second == 0) << describeJoint(bent, j);
   }
   // The gasket's pieces never met end to start: an edit breaks nothing.
-  const Project gasket = preset(FreeFormPreset::Sierpinski);
+  const Project gasket = completePreset(FreeFormPreset::Sierpinski);
   Project g2 = gasket;
   applyEdit(g2, SetMatrixEntry{0, 1, 2, 0.1});
   EXPECT_TRUE(brokenJoints(gasket, g2).empty());
 }
 
 TEST(FreeFormResize, ABezierCurveIsDegreeElevatedAndReducedAndStaysBezier) {
-  const Project cubic = preset(FreeFormPreset::BezierCurve, 3);
+  const Project cubic = completePreset(FreeFormPreset::BezierCurve, 3);
   Project p = cubic;
   applyEdit(p, AddControlPoint{});
   ASSERT_EQ(p.space->control_points.size(), 5u);
@@ -214,7 +214,7 @@ TEST(FreeFormResize, ABezierCurveIsDegreeElevatedAndReducedAndStaysBezier) {
 }
 
 TEST(FreeFormResize, AnyOtherIfsGetsAZeroColumnAndKeepsItsAttractor) {
-  const Project gasket = preset(FreeFormPreset::Sierpinski);
+  const Project gasket = completePreset(FreeFormPreset::Sierpinski);
   Project p = gasket;
   applyEdit(p, AddControlPoint{Vec3{0.0, 0.0, 1.0}});
   ASSERT_EQ(p.space->control_points.size(), 4u);
@@ -231,10 +231,10 @@ TEST(FreeFormResize, AnyOtherIfsGetsAZeroColumnAndKeepsItsAttractor) {
   applyEdit(p, RemoveControlPoint{3});
   EXPECT_EQ(p, gasket);
   // Never fewer than two points.
-  Project two = preset(FreeFormPreset::BezierCurve, 1);
+  Project two = completePreset(FreeFormPreset::BezierCurve, 1);
   EXPECT_THROW(applyEdit(two, RemoveControlPoint{0}), ModelError);
   // Removing a point of a patch shares its coordinate among the others.
-  Project patch = preset(FreeFormPreset::BezierPatch, 2);
+  Project patch = completePreset(FreeFormPreset::BezierPatch, 2);
   applyEdit(patch, RemoveControlPoint{4});
   EXPECT_NO_THROW(validateProject(patch));
   for (const Function& f : patch.functions) expectRowsSumToOne(f.matrix);
@@ -320,7 +320,7 @@ TEST(ControlNet, RefusesWhatItCannotMapAndNotesWhatIsOnlyNearlyAffine) {
   o.degree = 1;
   o.shape = ControlNetShape::EllipticParaboloid;
   EXPECT_EQ(pathOf(grid, o), "degree");
-  EXPECT_EQ(pathOf(preset(FreeFormPreset::Sierpinski), {}), "space");
+  EXPECT_EQ(pathOf(completePreset(FreeFormPreset::Sierpinski), {}), "space");
   Project flame = grid;
   flame.functions[1].variations["sinusoidal"] = 1.0;
   EXPECT_EQ(pathOf(flame, {}), "functions[1].variations");

@@ -25,7 +25,7 @@ using namespace gridifs;
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
+constexpr double kPiFunctions = 3.14159265358979323846;
 
 /// A genome with deterministic, dependent and parametric variations and a post map.
 const char* kGenome =
@@ -118,7 +118,7 @@ TEST(FunctionVariations, TheCameraOfANativeImportPlacesPointsWhereFlam3Does) {
   const FlameGenome genome = parseFlameFile(kGenome)[0];
   const Project p = importFlameGenome(genome, {}).project;
   const OrbitCamera camera(p.camera, p.render.width, p.render.height);
-  const double t = genome.rotate * kPi / 180.0, ppu = genome.pixelsPerUnit();
+  const double t = genome.rotate * kPiFunctions / 180.0, ppu = genome.pixelsPerUnit();
   for (const FlamePoint q : {FlamePoint{0.3, -0.2}, FlamePoint{1.0, 0.5}, FlamePoint{-0.7, 0.9}}) {
     // flam3 plots R(rotate)·(p − centre) with x to the right and y down, ppu pixels per unit.
     const double dx = q.x - genome.centerX, dy = q.y - genome.centerY;
@@ -153,8 +153,8 @@ TEST(FunctionVariations, FilesRoundTripAndTheFieldsAreOptional) {
   EXPECT_EQ(serializeProject(plain).find("variation"), std::string::npos);
   // The post map in placement form is T + R·(S·q).
   const auto m = p.functions[0].post->affine();
-  EXPECT_NEAR(m[0][0], std::cos(15 * kPi / 180), 1e-12);
-  EXPECT_NEAR(m[1][0], std::sin(15 * kPi / 180), 1e-12);
+  EXPECT_NEAR(m[0][0], std::cos(15 * kPiFunctions / 180), 1e-12);
+  EXPECT_NEAR(m[1][0], std::sin(15 * kPiFunctions / 180), 1e-12);
   EXPECT_NEAR(m[0][3], 0.1, 1e-15);
 }
 

@@ -90,7 +90,7 @@ Project withStates(IfsStates s) {
   return p;
 }
 
-std::string loadError(const std::string& statesJson, bool transitions = false) {
+std::string statesLoadError(const std::string& statesJson, bool transitions = false) {
   std::string text = serializeProject(sierpinskiProject());
   text.insert(text.rfind('}'), std::string(",\"states\": ") + statesJson +
                                    (transitions ? ",\"transitions\": [[1,1,1,1],[1,1,1,1],[1,1,1,1],[1,1,1,1]]" : "") +
@@ -115,30 +115,30 @@ TEST(IfsStates, JsonRoundTripWithIndicesAndNames) {
 }
 
 TEST(IfsStates, BadInputNamesTheJsonPath) {
-  EXPECT_NE(loadError(R"({"matrix": [[[0], [1]], [[2]]], "initial": [0], "final": [1]})")
+  EXPECT_NE(statesLoadError(R"({"matrix": [[[0], [1]], [[2]]], "initial": [0], "final": [1]})")
                 .find("states.matrix[1]: expected 2 entries"),
             std::string::npos);
-  EXPECT_NE(loadError(R"({"matrix": [[[0], [1]], [[2, 1, 7], [3]]], "initial": [0], "final": [1]})")
+  EXPECT_NE(statesLoadError(R"({"matrix": [[[0], [1]], [[2, 1, 7], [3]]], "initial": [0], "final": [1]})")
                 .find("states.matrix[1][0][2]: function 7 does not exist"),
             std::string::npos);
-  EXPECT_NE(loadError(R"({"matrix": [[["nope"]]], "initial": [0], "final": [0]})")
+  EXPECT_NE(statesLoadError(R"({"matrix": [[["nope"]]], "initial": [0], "final": [0]})")
                 .find("states.matrix[0][0][0]: no function is named \"nope\""),
             std::string::npos);
-  EXPECT_NE(loadError(R"({"matrix": [[[0]]], "initial": [], "final": [0]})").find("states.initial: the initial"),
+  EXPECT_NE(statesLoadError(R"({"matrix": [[[0]]], "initial": [], "final": [0]})").find("states.initial: the initial"),
             std::string::npos);
-  EXPECT_NE(
-      loadError(R"({"matrix": [[[0]]], "initial": [0], "final": [3]})").find("states.final[0]: state 3 does not exist"),
-      std::string::npos);
-  EXPECT_NE(loadError(R"({"matrix": [[[0]]], "initial": [0], "final": [0]})", true)
+  EXPECT_NE(statesLoadError(R"({"matrix": [[[0]]], "initial": [0], "final": [3]})")
+                .find("states.final[0]: state 3 does not exist"),
+            std::string::npos);
+  EXPECT_NE(statesLoadError(R"({"matrix": [[[0]]], "initial": [0], "final": [0]})", true)
                 .find("states: a project has either states or transitions"),
             std::string::npos);
-  EXPECT_NE(loadError(R"({"matrix": [[[], []], [[], []]], "initial": [0], "final": [1]})")
+  EXPECT_NE(statesLoadError(R"({"matrix": [[[], []], [[], []]], "initial": [0], "final": [1]})")
                 .find("states: the state matrix has no path"),
             std::string::npos);
-  EXPECT_NE(
-      loadError(R"({"matrix": [[[], [0]], [[], []]], "initial": [0], "final": [1]})").find("only finitely many words"),
-      std::string::npos);
-  EXPECT_NE(loadError(R"({"matrix": [], "initial": [0], "final": [0]})").find("states.matrix: the matrix needs"),
+  EXPECT_NE(statesLoadError(R"({"matrix": [[[], [0]], [[], []]], "initial": [0], "final": [1]})")
+                .find("only finitely many words"),
+            std::string::npos);
+  EXPECT_NE(statesLoadError(R"({"matrix": [], "initial": [0], "final": [0]})").find("states.matrix: the matrix needs"),
             std::string::npos);
 }
 

@@ -27,7 +27,7 @@ std::vector<LightView> views() {
 
 /// Points mostly inside the bounding sphere, some beyond it (outside the map, or past its depth
 /// range), and a few that are not numbers, as a diverging chain can produce.
-std::vector<kernel::v4f> samplePoints(int count) {
+std::vector<kernel::v4f> lightSamplePoints(int count) {
   std::mt19937 rng(7);
   std::uniform_real_distribution<float> coordinate(-1.2f, 1.2f), far(-4.0f, 4.0f);
   std::vector<kernel::v4f> points;
@@ -85,7 +85,7 @@ int filled(const Map& map) {
 
 TEST(LightPlot, EveryLightCountGivesTheMapsOfPlottingSampleBySample) {
   // Not a multiple of the chunk or of the eight samples projected at once: the last chunk is partial.
-  const std::vector<kernel::v4f> points = samplePoints(3 * kernel::LightPlot::kChunk + 37);
+  const std::vector<kernel::v4f> points = lightSamplePoints(3 * kernel::LightPlot::kChunk + 37);
   const Map reference[3] = {plotOneByOne(0, points), plotOneByOne(1, points), plotOneByOne(2, points)};
   for (const Map& map : reference) {
     ASSERT_GT(filled(map), 200) << "the samples should cover a good part of every map";
@@ -99,7 +99,7 @@ TEST(LightPlot, EveryLightCountGivesTheMapsOfPlottingSampleBySample) {
 }
 
 TEST(LightPlot, TheMapsDoNotDependOnTheSampleOrderOrTheChunkBoundaries) {
-  std::vector<kernel::v4f> points = samplePoints(2000);
+  std::vector<kernel::v4f> points = lightSamplePoints(2000);
   const std::vector<Map> forward = plotChunked({0, 1, 2}, points);
   std::reverse(points.begin(), points.end());
   EXPECT_TRUE(plotChunked({0, 1, 2}, points) == forward);

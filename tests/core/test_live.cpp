@@ -77,7 +77,7 @@ TEST(LiveBinding, TheFileHoldsAudioAndBindings) {
 }
 
 /// The sentence reading `p` gives, or "" when it reads.
-std::string refusal(const Project& p) {
+std::string liveRefusal(const Project& p) {
   try {
     parseProject(serializeProject(p));
   } catch (const ModelError& e) {
@@ -89,16 +89,16 @@ std::string refusal(const Project& p) {
 TEST(LiveBinding, BadBindingsAreRefusedOnLoadWithOneSentence) {
   Project p = boundProject();
   p.bindings[0].path = "functions[7].weight";
-  EXPECT_EQ(refusal(p), "bindings[0].path: names no parameter of this project (functions[7].weight)");
+  EXPECT_EQ(liveRefusal(p), "bindings[0].path: names no parameter of this project (functions[7].weight)");
   p = boundProject();
   p.bindings[1].source = "keyboard:a";
-  EXPECT_NE(refusal(p).find("bindings[1].source: expected a source like"), std::string::npos) << refusal(p);
+  EXPECT_NE(liveRefusal(p).find("bindings[1].source: expected a source like"), std::string::npos) << liveRefusal(p);
   p = boundProject();
   p.bindings[0].source = "audio:3";
-  EXPECT_EQ(refusal(p), "bindings[0].source: audio:3 names band 3, but \"audio\" has 3 bands");
+  EXPECT_EQ(liveRefusal(p), "bindings[0].source: audio:3 names band 3, but \"audio\" has 3 bands");
   p = boundProject();
   p.audio.reset();
-  EXPECT_EQ(refusal(p), "bindings[0].source: audio:1 needs the project's \"audio\", and it has none");
+  EXPECT_EQ(liveRefusal(p), "bindings[0].source: audio:1 needs the project's \"audio\", and it has none");
   // A range end the parameter does not take gets the parameter's own words.
   p = boundProject();
   p.bindings[0].min = -1.0;
@@ -110,10 +110,10 @@ TEST(LiveBinding, BadBindingsAreRefusedOnLoadWithOneSentence) {
     own = e.message();
   }
   ASSERT_FALSE(own.empty());
-  EXPECT_EQ(refusal(p), "bindings[0].min: " + own + " (the range of functions[0].weight)");
+  EXPECT_EQ(liveRefusal(p), "bindings[0].min: " + own + " (the range of functions[0].weight)");
   p = boundProject();
   p.bindings[2].smooth = 61;
-  EXPECT_NE(refusal(p).find("bindings[2].smooth"), std::string::npos) << refusal(p);
+  EXPECT_NE(liveRefusal(p).find("bindings[2].smooth"), std::string::npos) << liveRefusal(p);
 }
 
 TEST(LiveBinding, AnEditThatRemovesTheNumberDropsItsBindingAndUndoBringsItBack) {

@@ -21,7 +21,7 @@ Project projectWith(const OpParams& params) {
   return p;
 }
 
-std::string errorOf(const Project& p) {
+std::string validationErrorOf(const Project& p) {
   return test_support::modelErrorText([&] { validateProject(p); });
 }
 
@@ -60,7 +60,7 @@ TEST(OperationTable, DescribesEveryOperationOnceInVariantOrder) {
       }
       EXPECT_LE(param.min, param.max);
     }
-    EXPECT_EQ(errorOf(projectWith(spec.defaults)), "") << "the defaults must be valid";
+    EXPECT_EQ(validationErrorOf(projectWith(spec.defaults)), "") << "the defaults must be valid";
   }
   EXPECT_EQ(findOperation("warp"), nullptr);
   EXPECT_EQ(operationTypeList(),
@@ -105,7 +105,7 @@ TEST(OperationTable, RangesApplyToFilesAndEditsAlike) {
         OpParams params = spec.defaults;
         param.setNumber(params, 0, bad);
         const std::string path = std::string(param.key) + (param.type == ParamType::Vector ? "[0]" : "");
-        const std::string edit = errorOf(projectWith(params));
+        const std::string edit = validationErrorOf(projectWith(params));
         EXPECT_EQ(edit.rfind("functions[0].ops[0]." + path + ": expected a number between ", 0), 0u) << edit;
         const std::string file = parseErrorOf(withOpJson(spec.defaults, [&](nlohmann::json& op) {
           if (param.type == ParamType::Vector)
@@ -132,15 +132,15 @@ TEST(OperationTable, ChoicesAreReadByNameAndRefusedWithTheList) {
 
 TEST(OperationTable, RulesRunForFilesAndEdits) {
   const std::string message = "functions[0].ops[0].toward: the bend must go toward an axis other than its own";
-  EXPECT_EQ(errorOf(projectWith(BendOp{Axis::Y, Axis::Y, 1.0})), message);
+  EXPECT_EQ(validationErrorOf(projectWith(BendOp{Axis::Y, Axis::Y, 1.0})), message);
   EXPECT_EQ(parseErrorOf(withOpJson(BendOp{}, [](nlohmann::json& op) { op["toward"] = "z"; })), message);
   CalculatorOp calc;
   calc.vars[1].min = 2.0;  // above its maximum of 1
-  EXPECT_EQ(errorOf(projectWith(calc)),
+  EXPECT_EQ(validationErrorOf(projectWith(calc)),
             "functions[0].ops[0].vars.v2.min: the slider minimum is larger than its maximum");
   calc = CalculatorOp{};
   calc.y = "y +";
-  EXPECT_EQ(errorOf(projectWith(calc)).rfind("functions[0].ops[0].y: ", 0), 0u);
+  EXPECT_EQ(validationErrorOf(projectWith(calc)).rfind("functions[0].ops[0].y: ", 0), 0u);
 }
 
 TEST(OperationTable, SummariesNameTheMainParameters) {

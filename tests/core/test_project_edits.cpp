@@ -17,7 +17,7 @@ using namespace gridifs;
 namespace {
 
 /// Two grid functions; the first has a twist and a magnet.
-Project twoFunctions() {
+Project twoFunctionProject() {
   Project p = defaultNewProject();
   p.functions.push_back(newGridFunction(p));
   p.functions[0].ops.resize(2);
@@ -65,7 +65,7 @@ TEST(ProjectEdits, NewFunctionsFollowTheModellersDefaults) {
 }
 
 TEST(ProjectEdits, FunctionListEditsKeepTheTransitionMatrixSquare) {
-  Project p = twoFunctions();
+  Project p = twoFunctionProject();
   applyEdit(p, SetTransitionPreset{TransitionPreset::Cycle});
   ASSERT_EQ(p.transitions, (std::vector<std::vector<double>>{{0, 1}, {1, 0}}));
 
@@ -97,7 +97,7 @@ TEST(ProjectEdits, FunctionListEditsKeepTheTransitionMatrixSquare) {
 }
 
 TEST(ProjectEdits, FunctionFieldEditsSetWhatTheyName) {
-  const Project p = applied(twoFunctions(), AddFinalFunction{});
+  const Project p = applied(twoFunctionProject(), AddFinalFunction{});
   const FunctionRef f2(1), last = FunctionRef::finalFunction();
   EXPECT_EQ(applied(p, RenameFunction{f2, "leaf"}).functions[1].name, "leaf");
   EXPECT_TRUE(applied(p, SetFunctionMuted{last, true}).final_function->muted);
@@ -123,7 +123,7 @@ TEST(ProjectEdits, FunctionFieldEditsSetWhatTheyName) {
 }
 
 TEST(ProjectEdits, OperationEditsMoveTheirKeyframeTracksAlong) {
-  Project p = twoFunctions();
+  Project p = twoFunctionProject();
   const FunctionRef f(0);
   p.tracks["functions[0].ops[1].strength"].setKey({0.0, 0.5, KeyInterpolation::Linear});
 
@@ -277,7 +277,7 @@ TEST(ProjectEdits, KeysAreSetAndRemovedAtTheCurrentTime) {
 }
 
 TEST(ProjectEdits, MatrixAndSetEdits) {
-  Project p = twoFunctions();
+  Project p = twoFunctionProject();
   applyEdit(p, SetTransitionPreset{TransitionPreset::NoRepeats});
   EXPECT_EQ(p.transitions, (std::vector<std::vector<double>>{{0, 1}, {1, 0}}));
   EXPECT_DOUBLE_EQ(applied(p, SetParameter{"transitions[0][0]", 0.5}).transitions[0][0], 0.5);
@@ -332,7 +332,7 @@ TEST(ProjectEdits, InvalidReferencesThrowAndLeaveTheDocumentUntouched) {
       MoveControlPoint{0, Vec3(0.0)},             // no free-form space
       SetSetShape{FunctionRef(9), SetShape::Box, std::nullopt},
   };
-  Document doc(twoFunctions());
+  Document doc(twoFunctionProject());
   doc.apply(SetParameter{"functions[0].weight", 2.0});
   const Project before = doc.project();
   const auto revision = doc.revision();
@@ -357,7 +357,7 @@ TEST(ProjectEdits, InvalidReferencesThrowAndLeaveTheDocumentUntouched) {
 }
 
 TEST(ProjectEdits, TheDocumentUndoesAndRedoesANamedEdit) {
-  Document doc(twoFunctions());
+  Document doc(twoFunctionProject());
   const Project original = doc.project();
   doc.apply(RenameFunction{FunctionRef(1), "leaf"});
   EXPECT_EQ(doc.undoLabel(), "Rename function");
@@ -385,7 +385,7 @@ TEST(ProjectEdits, TheDocumentUndoesAndRedoesANamedEdit) {
 }
 
 TEST(ProjectEdits, AGestureOfNamedEditsIsOneUndoStep) {
-  Document doc(twoFunctions());
+  Document doc(twoFunctionProject());
   const Project original = doc.project();
   EditQueue edits;
   edits.begin("Function weight");

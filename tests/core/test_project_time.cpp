@@ -24,7 +24,7 @@ namespace fs = std::filesystem;
 using json = nlohmann::json;
 
 // The reference: tracks written into the project's JSON and read back (json_track_route.h).
-namespace reference = json_track_route;
+namespace trackRoute = json_track_route;
 
 // ---- helpers ---------------------------------------------------------------------------------
 
@@ -209,13 +209,13 @@ TEST(ProjectTime, KeyingAnyNumberGivesWhatTheFileWouldHold) {
     const std::size_t stride = std::max<std::size_t>(1, numbers.size() / 16);
     for (std::size_t n = 0; n < numbers.size(); n += stride) {
       const std::string& path = numbers[n];
-      const double from = document.at(*reference::pointerFor(path)).get<double>();
+      const double from = document.at(*trackRoute::pointerFor(path)).get<double>();
       for (int pass = 0; pass < 2; ++pass) {
         Project keyed = project;
         keyed.tracks[path] = ramp(from, candidates[candidate++ % std::size(candidates)]);
         for (double t : {1.0, 0.5}) {
           const std::string context = name + ": " + path + " at " + std::to_string(t);
-          expectSame(outcome([&] { return reference::projectAtTime(keyed, t); }),
+          expectSame(outcome([&] { return trackRoute::projectAtTime(keyed, t); }),
                      outcome([&] { return projectAtTime(keyed, t); }), context);
           ++compared;
         }
@@ -242,12 +242,12 @@ TEST(ProjectTime, ManyTracksTogetherAndEdits) {
     const std::size_t stride = std::max<std::size_t>(1, numbers.size() / 200);
     std::vector<std::string> tracked;
     for (std::size_t n = 0; n < numbers.size(); n += stride) {
-      const double value = document.at(*reference::pointerFor(numbers[n])).get<double>();
+      const double value = document.at(*trackRoute::pointerFor(numbers[n])).get<double>();
       keyed.tracks[numbers[n]] = ramp(value, value);
       tracked.push_back(numbers[n]);
     }
     numbers = tracked;
-    expectSame(outcome([&] { return reference::projectAtTime(keyed, 0.75); }),
+    expectSame(outcome([&] { return trackRoute::projectAtTime(keyed, 0.75); }),
                outcome([&] { return projectAtTime(keyed, 0.75); }), name + ": all keyed");
     // An edit of a keyed number keys it; an edit of a number that is not keyed does not.
     const Project at = projectAtTime(keyed, 0.75);
@@ -259,11 +259,11 @@ TEST(ProjectTime, ManyTracksTogetherAndEdits) {
       } catch (const ModelError&) {
         continue;  // not a value the file allows
       }
-      expectSame(outcome([&] { return reference::keyEditedParameters(at, edited); }),
+      expectSame(outcome([&] { return trackRoute::keyEditedParameters(at, edited); }),
                  outcome([&] { return keyEditedParameters(at, edited); }), name + ": edit " + numbers[n]);
       Project untracked = edited;
       untracked.tracks.erase(numbers[n]);
-      expectSame(outcome([&] { return reference::keyEditedParameters(at, untracked); }),
+      expectSame(outcome([&] { return trackRoute::keyEditedParameters(at, untracked); }),
                  outcome([&] { return keyEditedParameters(at, untracked); }), name + ": untracked " + numbers[n]);
     }
   }

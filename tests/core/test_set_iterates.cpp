@@ -53,14 +53,14 @@ SetSystem twoMedians(const VoxelLattice& lattice) {
   return system;
 }
 
-struct TempFolder {
+struct SetIterateFolder {
   fs::path path;
-  explicit TempFolder(const std::string& name) {
+  explicit SetIterateFolder(const std::string& name) {
     path = fs::temp_directory_path() / ("gridifs-setiter-" + name + "-" + std::to_string(::getpid()));
     fs::remove_all(path);
     fs::create_directories(path);
   }
-  ~TempFolder() { fs::remove_all(path); }
+  ~SetIterateFolder() { fs::remove_all(path); }
 };
 
 }  // namespace
@@ -181,7 +181,7 @@ TEST(SetIterates, RotatedMedianAboutAnAxis) {
 }
 
 TEST(SetIterates, DrawingIsASlabOfItsDarkPixels) {
-  TempFolder dir("drawing");
+  SetIterateFolder dir("drawing");
   // 20 × 10: black on the left half, white on the right; fitted into [-1, 1] × [-0.5, 0.5].
   std::vector<std::uint8_t> pixels(20 * 10 * 3, 255);
   for (int y = 0; y < 10; ++y)

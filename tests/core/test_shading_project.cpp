@@ -6,12 +6,12 @@
 using namespace gridifs;
 
 namespace {
-std::string withRender(const std::string& render) {
+std::string withShadedRender(const std::string& render) {
   return R"({"format": "gridifs", "version": 1, "render": )" + render + R"(, "functions": [{"name": "f1"}]})";
 }
 std::string errorFor(const std::string& render, const std::string& path) {
   try {
-    parseProject(withRender(render));
+    parseProject(withShadedRender(render));
     ADD_FAILURE() << "no error for " << render;
   } catch (const ModelError& e) {
     EXPECT_EQ(e.path(), path) << e.what();
@@ -22,7 +22,7 @@ std::string errorFor(const std::string& render, const std::string& path) {
 }  // namespace
 
 TEST(ShadingProject, OldFilesLoadWithDefaults) {
-  const Project p = parseProject(withRender(R"({"width": 64, "height": 48})"));
+  const Project p = parseProject(withShadedRender(R"({"width": 64, "height": 48})"));
   EXPECT_EQ(p.render.shading, ShadingSettings{});
   ASSERT_EQ(p.render.shading.lights.size(), 1u);
   EXPECT_TRUE(p.render.shading.lights[0].shadows);
@@ -30,7 +30,7 @@ TEST(ShadingProject, OldFilesLoadWithDefaults) {
 }
 
 TEST(ShadingProject, ParsesTheDocumentedExampleAndRoundTrips) {
-  const Project p = parseProject(withRender(R"({"mode": "shaded", "shading": {
+  const Project p = parseProject(withShadedRender(R"({"mode": "shaded", "shading": {
       "lights": [{"direction": [0.3, -0.5, 1], "color": [1, 0.9, 0.8], "intensity": 1.2, "shadows": true},
                  {"direction": [-1, 0, 0.2], "color": [0.2, 0.3, 1], "intensity": 0.4, "shadows": false}],
       "ambient": 0.2, "specular": 0.4, "shininess": 48,
@@ -57,7 +57,7 @@ TEST(ShadingProject, ParsesTheDocumentedExampleAndRoundTrips) {
   EXPECT_EQ(s.dof.focus, 3.5);
   EXPECT_EQ(parseProject(serializeProject(p)), p);
   // Partial objects keep the other defaults; no lights at all is allowed (ambient only).
-  const Project q = parseProject(withRender(R"({"shading": {"lights": [], "ao": {"strength": 0}}})"));
+  const Project q = parseProject(withShadedRender(R"({"shading": {"lights": [], "ao": {"strength": 0}}})"));
   EXPECT_TRUE(q.render.shading.lights.empty());
   EXPECT_EQ(q.render.shading.ao.radius, AmbientOcclusionSettings{}.radius);
   EXPECT_EQ(parseProject(serializeProject(q)), q);

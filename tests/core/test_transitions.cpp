@@ -34,14 +34,14 @@ std::array<double, 4> barycentric(Vec3 p) {
 }
 
 /// The level-1 cell f_a(T) holding p when p is clearly inside one (λ_a > 1/2 + margin), else −1.
-int cellOf(Vec3 p, double margin) {
+int cellWithMargin(Vec3 p, double margin) {
   const auto l = barycentric(p);
   for (int i = 0; i < 4; ++i)
     if (l[std::size_t(i)] > 0.5 + margin) return i;
   return -1;
 }
 
-std::string expectError(const std::string& text) {
+std::string transitionsError(const std::string& text) {
   return test_support::modelErrorText([&] { parseProject(text); });
 }
 
@@ -64,7 +64,7 @@ TEST(Transitions, BadMatricesAreRefusedWithAJsonPath) {
   auto with = [&](const std::string& matrix) {
     std::string text = base;
     text.insert(text.rfind('}'), ",\"transitions\": " + matrix + "\n");
-    return expectError(text);
+    return transitionsError(text);
   };
   EXPECT_NE(with("[[1,1,1,1],[1,1,1,1],[1,1,1,1]]").find("transitions: expected 4 rows"), std::string::npos);
   EXPECT_NE(with("[[1,1,1,1],[1,1,1],[1,1,1,1],[1,1,1,1]]").find("transitions[1]: expected 4 entries"),
@@ -110,9 +110,9 @@ TEST(Transitions, ChaosGameVisitsOnlyAllowedLevelTwoCells) {
   generatePoints(*ifs, job, [&](const PointBatch& b, const RenderStats&) {
     for (std::size_t i = 0; i < b.count; ++i) {
       const Vec3 q(b.xyz[3 * i], b.xyz[3 * i + 1], b.xyz[3 * i + 2]);
-      const int a = cellOf(q, 1e-4);  // last applied
+      const int a = cellWithMargin(q, 1e-4);  // last applied
       if (a < 0) continue;
-      const int c = cellOf(2.0 * q - tetrahedronCorners()[std::size_t(a)], 1e-4);  // applied before
+      const int c = cellWithMargin(2.0 * q - tetrahedronCorners()[std::size_t(a)], 1e-4);  // applied before
       if (c < 0) continue;
       ++cells[{c, a}];
       ++classified;

@@ -28,7 +28,7 @@ namespace {
 
 /// Float lanes: a few float ulps of the magnitude, plus what float rounding of the angle-like
 /// arguments (sin of r², of r·θ, …) does.
-bool close(double got, double expected, double tolerance = 2e-5) {
+bool laneClose(double got, double expected, double tolerance = 2e-5) {
   if (!std::isfinite(expected)) return true;  // a pole: the chain leaves the escape bound either way
   return std::fabs(got - expected) <= tolerance * (1.0 + std::fabs(expected));
 }
@@ -111,7 +111,7 @@ TEST(VariationLanes, EveryFourLaneBodyIsItsReferenceBodyWithTheSameDraws) {
         if (!(active >> l & 1)) continue;
         const FlamePoint want =
             v.apply(VariationInput{x[l], y[l], z[l], nullptr, params[l].data(), &referenceStream}, w[l]);
-        EXPECT_TRUE(close(gx[l], want.x) && close(gy[l], want.y) && (!v.writesZ || close(gz[l], want.z)))
+        EXPECT_TRUE(laneClose(gx[l], want.x) && laneClose(gy[l], want.y) && (!v.writesZ || laneClose(gz[l], want.z)))
             << v.name << " lane " << l << " at (" << x[l] << ", " << y[l] << ", " << z[l] << "): lanes (" << gx[l]
             << ", " << gy[l] << ", " << gz[l] << "), reference (" << want.x << ", " << want.y << ", " << want.z << ")";
       }
@@ -127,7 +127,7 @@ namespace {
 
 /// Deterministic, dependent (popcorn, waves: no four-lane form), parametric and 3D variations, the
 /// same variation in several functions with different weights, a post map and flatten.
-const char* kGenome = R"(<flame name="batch" size="160 120" scale="40" palette="5">
+const char* kBatchGenome = R"(<flame name="batch" size="160 120" scale="40" palette="5">
   <xform weight="1" color="0" swirl="0.6" spherical="0.4" coefs="0.6 0.25 -0.25 0.6 0.3 0.1"/>
   <xform weight="0.8" color="0.5" popcorn="0.5" linear="0.5" handkerchief="0.2" coefs="0.5 -0.1 0.2 0.55 -0.4 0.2" post="0.9 0.1 -0.1 0.9 0.05 0"/>
   <xform weight="0.6" color="1" rings2="0.7" rings2_val="0.4" heart="0.3" swirl="0.1" coefs="0.7 0 0 0.7 0 -0.3"/>
@@ -138,7 +138,7 @@ const char* kGenome = R"(<flame name="batch" size="160 120" scale="40" palette="
 /// genome would import sampled onto grids), and a grid function without variations (as a flame's
 /// symmetry xforms import).
 Project batchProject() {
-  Project project = importFlameGenome(parseFlameFile(kGenome)[0], {}).project;
+  Project project = importFlameGenome(parseFlameFile(kBatchGenome)[0], {}).project;
   project.functions[3].variations["bubble"] = 0.5;
   project.functions[3].variations["flatten"] = 1.0;
   Function plain = project.functions[0];
@@ -181,7 +181,7 @@ TEST(BatchedVariations, AWholeIfsBatchedIsEachFunctionsOwnStage) {
       const CompiledFunction& f = ifs->functions[fn[l]];
       const auto want = f.variations ? f.variations->apply(grid[l], unused) : grid[l];
       for (int d = 0; d < 3; ++d)
-        EXPECT_TRUE(close(q[l][d], want[std::size_t(d)], 5e-5))
+        EXPECT_TRUE(laneClose(q[l][d], want[std::size_t(d)], 5e-5))
             << "function " << fn[l] << " axis " << d << ": batched " << q[l][d] << ", own " << want[std::size_t(d)];
       EXPECT_EQ(q[l][3], 0.0f);
     }

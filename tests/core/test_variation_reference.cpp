@@ -53,7 +53,7 @@ Case readCase(const json& c) {
   return out;
 }
 
-std::string describe(const std::string& name, const Case& c) {
+std::string describeCase(const std::string& name, const Case& c) {
   std::string s = name + " at (" + std::to_string(c.p.x) + ", " + std::to_string(c.p.y) + ", " + std::to_string(c.p.z) +
                   "), w = " + std::to_string(c.weight);
   if (!c.params.empty()) {
@@ -142,7 +142,7 @@ TEST(VariationReference, ApplyMatchesTheReference) {
       const FlamePoint got = v->apply(in, c.weight);
       const double ex = jc["expected"][0], ey = jc["expected"][1], ez = jc["expected"][2];
       const bool ok = near(got.x, ex) && near(got.y, ey) && (!v->writesZ || near(got.z, ez));
-      EXPECT_TRUE(ok) << describe(name, c) << ": apply gives " << triple(got.x, got.y, got.z) << ", reference "
+      EXPECT_TRUE(ok) << describeCase(name, c) << ": apply gives " << triple(got.x, got.y, got.z) << ", reference "
                       << triple(ex, ey, ez) << (v->writesZ ? "" : " (z not written)");
     }
   }
@@ -156,7 +156,7 @@ TEST(VariationReference, EvaluateVariationsMatchesForOneTerm) {
       const FlamePoint got = evaluateOneTerm(v, c);
       const double ex = jc["expected"][0], ey = jc["expected"][1], ez = jc["expected"][2];
       EXPECT_TRUE(near(got.x, ex) && near(got.y, ey) && near(got.z, ez))
-          << describe(name, c) << ": evaluateVariations gives " << triple(got.x, got.y, got.z) << ", reference "
+          << describeCase(name, c) << ": evaluateVariations gives " << triple(got.x, got.y, got.z) << ", reference "
           << triple(ex, ey, ez);
     }
   }
@@ -173,7 +173,7 @@ TEST(VariationReference, OnTheZ0PlaneEveryVariationIsFlam3s) {
       ASSERT_EQ(c.p.z, 0.0);
       const FlamePoint got = evaluateOneTerm(v, c);
       const double fx = jc["flam3_xy"][0], fy = jc["flam3_xy"][1];
-      EXPECT_TRUE(near(got.x, fx) && near(got.y, fy)) << describe(name, c) << ": (" << got.x << ", " << got.y
+      EXPECT_TRUE(near(got.x, fx) && near(got.y, fy)) << describeCase(name, c) << ": (" << got.x << ", " << got.y
                                                       << ") but flam3's 2D formula gives (" << fx << ", " << fy << ")";
       ++onPlane;
     }
@@ -239,7 +239,7 @@ TEST(VariationReference, RandomVariationsMatchTheirDistributions) {
       if (!found) ++offBranch;
     }
 
-    const std::string where = describe(name, c) + ", " + std::to_string(kDraws) + " draws";
+    const std::string where = describeCase(name, c) + ", " + std::to_string(kDraws) + " draws";
     for (int a = 0; a < 2; ++a) {
       const char* axis = a == 0 ? "x" : "y";
       const double mean = entry["mean"][a], var = entry["var"][a], m4 = entry["m4"][a];

@@ -37,18 +37,18 @@ const char* kTwoMedians = R"({
   "volume": {"resolution": 32, "iterations": 200, "skip": 20, "seed": 3, "samples": 100000}
 })";
 
-struct TempFolder {
+struct VolumeFolder {
   fs::path path;
-  explicit TempFolder(const std::string& name) {
+  explicit VolumeFolder(const std::string& name) {
     path = fs::temp_directory_path() / ("gridifs-volume-" + name + "-" + std::to_string(::getpid()));
     fs::remove_all(path);
     fs::create_directories(path);
   }
-  ~TempFolder() { fs::remove_all(path); }
+  ~VolumeFolder() { fs::remove_all(path); }
 };
 
 /// A closed cube [-h, h]³ as an OBJ, optionally without its top face (open).
-void writeCube(const fs::path& file, double h, bool open = false) {
+void writeCubeOfSize(const fs::path& file, double h, bool open = false) {
   std::ofstream out(file);
   for (int v = 0; v < 8; ++v)
     out << "v " << ((v & 1) ? h : -h) << " " << ((v & 2) ? h : -h) << " " << ((v & 4) ? h : -h) << "\n";
@@ -164,9 +164,9 @@ TEST(VolumeSets, PrimitivesKeepTheVoxelsWhoseCentresLieInside) {
 }
 
 TEST(VolumeSets, MeshesAreVoxelizedSolidOrSurface) {
-  TempFolder folder("mesh");
-  writeCube(folder.path / "cube.obj", 0.5);
-  writeCube(folder.path / "open.obj", 0.5, true);
+  VolumeFolder folder("mesh");
+  writeCubeOfSize(folder.path / "cube.obj", 0.5);
+  writeCubeOfSize(folder.path / "open.obj", 0.5, true);
   const VoxelLattice lattice{32};
   CondensationSet set;
   set.shape = SetShape::Mesh;
@@ -204,7 +204,7 @@ TEST(VolumeSets, MeshesAreVoxelizedSolidOrSurface) {
 }
 
 TEST(VolumeSets, VdbGridsAreThresholded) {
-  TempFolder folder("vdbset");
+  VolumeFolder folder("vdbset");
   DensityVolume v{VoxelLattice{16}, std::vector<float>(16 * 16 * 16, 0.0f), {}, 0.0};
   for (int k = 4; k < 8; ++k)
     for (int j = 4; j < 8; ++j)
@@ -418,7 +418,7 @@ TEST(MeasureAttractor, SierpinskiDensityIsZeroAwayFromTheAttractor) {
 }
 
 TEST(VdbVolumeFile, HasTheDensityAndColourGridsAndTheLatticeTransform) {
-  TempFolder folder("vdbfile");
+  VolumeFolder folder("vdbfile");
   const Project p = parseProject(kTwoMedians);
   VolumeJob job;
   job.settings = *p.volume;

@@ -12,7 +12,7 @@
 namespace gridifs {
 namespace {
 
-std::size_t at(int n, int i, int j, int k) {
+std::size_t voxelIndex(int n, int i, int j, int k) {
   return std::size_t(i) + std::size_t(n) * (std::size_t(j) + std::size_t(n) * std::size_t(k));
 }
 
@@ -23,12 +23,12 @@ TEST(VolumeLight, UniformDensityGivesThePathLengthToTheBoundary) {
   for (int i = 0; i < n; ++i) {
     // Density 1 up to the last voxel centre, then a linear fall to 0 over one voxel (half a voxel of mass).
     const double expected = (double(n - 1 - i) + 0.5) * 2.0 / n;
-    EXPECT_NEAR(depth[at(n, i, 5, 7)], expected, 1e-4) << "voxel " << i;
+    EXPECT_NEAR(depth[voxelIndex(n, i, 5, 7)], expected, 1e-4) << "voxel " << i;
   }
   // Towards -x the same from the other side; the light's length does not matter.
   const std::vector<float> back = lightOpticalDepth(density, n, Vec3(-3.0, 0.0, 0.0), 1);
-  EXPECT_NEAR(back[at(n, 0, 5, 7)], 0.5 * 2.0 / n, 1e-4);
-  EXPECT_NEAR(back[at(n, n - 1, 5, 7)], (double(n - 1) + 0.5) * 2.0 / n, 1e-4);
+  EXPECT_NEAR(back[voxelIndex(n, 0, 5, 7)], 0.5 * 2.0 / n, 1e-4);
+  EXPECT_NEAR(back[voxelIndex(n, n - 1, 5, 7)], (double(n - 1) + 0.5) * 2.0 / n, 1e-4);
 }
 
 TEST(VolumeLight, ABlockerShadowsWhatLiesBehindIt) {
@@ -36,20 +36,20 @@ TEST(VolumeLight, ABlockerShadowsWhatLiesBehindIt) {
   std::vector<float> density(std::size_t(n * n * n), 0.0f);
   for (int k = 0; k < n; ++k)
     for (int j = 0; j < n; ++j)
-      for (int i = 14; i < 18; ++i) density[at(n, i, j, k)] = 1.0f;  // a slab across x
-  density[at(n, 4, 12, 12)] = 0.5f;   // a speck behind the slab (the light comes from +x)
-  density[at(n, 20, 12, 12)] = 0.5f;  // a speck in front of it
+      for (int i = 14; i < 18; ++i) density[voxelIndex(n, i, j, k)] = 1.0f;  // a slab across x
+  density[voxelIndex(n, 4, 12, 12)] = 0.5f;   // a speck behind the slab (the light comes from +x)
+  density[voxelIndex(n, 20, 12, 12)] = 0.5f;  // a speck in front of it
   const std::vector<float> depth = lightOpticalDepth(density, n, Vec3(1.0, 0.0, 0.0), 2);
   // Behind: the whole slab, 3 voxels between its outer centres plus half a voxel of ramp at each
   // face, the speck's own ramp towards its neighbour (a quarter voxel) and the speck in front of
   // the slab (a tent of height 0.5 and base 2: half a voxel).
-  EXPECT_NEAR(depth[at(n, 4, 12, 12)], 4.75 * 2.0 / n, 1e-4);
-  EXPECT_LT(depth[at(n, 20, 12, 12)], 0.5 * 2.0 / n);  // only its own half voxel
+  EXPECT_NEAR(depth[voxelIndex(n, 4, 12, 12)], 4.75 * 2.0 / n, 1e-4);
+  EXPECT_LT(depth[voxelIndex(n, 20, 12, 12)], 0.5 * 2.0 / n);  // only its own half voxel
   // A light along +y misses the slab (it spans all y, but the speck lies beside it in x): lit.
   const std::vector<float> sideways = lightOpticalDepth(density, n, Vec3(0.0, 1.0, 0.0), 2);
-  EXPECT_LT(sideways[at(n, 4, 12, 12)], 0.5 * 2.0 / n);
+  EXPECT_LT(sideways[voxelIndex(n, 4, 12, 12)], 0.5 * 2.0 / n);
   // Far from any density nothing is computed (the ray march never weighs it).
-  EXPECT_EQ(depth[at(n, 2, 2, 2)], 0.0f);
+  EXPECT_EQ(depth[voxelIndex(n, 2, 2, 2)], 0.0f);
 }
 
 /// The optical depth by brute force: a fine midpoint march of the trilinear field towards the light.
@@ -57,7 +57,7 @@ double marchedDepth(const std::vector<float>& d, int n, int i, int j, int k, Vec
   l /= std::sqrt(l.x * l.x + l.y * l.y + l.z * l.z);
   auto at3 = [&](int a, int b, int c) -> double {
     if (a < 0 || b < 0 || c < 0 || a >= n || b >= n || c >= n) return 0.0;
-    return d[at(n, a, b, c)];
+    return d[voxelIndex(n, a, b, c)];
   };
   const double h = 0.02;
   double sum = 0.0;
@@ -84,13 +84,14 @@ TEST(VolumeLight, AnObliqueLightMatchesAMarchOfTheInterpolatedField) {
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) {
         const double x = (i - 15.5) / 8.0, y = (j - 15.5) / 8.0, z = (k - 15.5) / 8.0;
-        density[at(n, i, j, k)] = float(std::exp(-(x * x + y * y + z * z)));
+        density[voxelIndex(n, i, j, k)] = float(std::exp(-(x * x + y * y + z * z)));
       }
   const Vec3 light(0.8, -0.5, 0.35);
   const std::vector<float> depth = lightOpticalDepth(density, n, light, 2);
   for (const auto& v : {std::array<int, 3>{16, 16, 16}, {8, 20, 12}, {20, 10, 22}, {4, 28, 6}}) {
     const double expected = marchedDepth(density, n, v[0], v[1], v[2], light);
-    EXPECT_NEAR(depth[at(n, v[0], v[1], v[2])], expected, 0.07 * expected + 1e-3) << v[0] << " " << v[1] << " " << v[2];
+    EXPECT_NEAR(depth[voxelIndex(n, v[0], v[1], v[2])], expected, 0.07 * expected + 1e-3)
+        << v[0] << " " << v[1] << " " << v[2];
   }
 }
 

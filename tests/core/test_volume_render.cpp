@@ -18,7 +18,7 @@ namespace gridifs {
 namespace {
 
 /// A ball of density 1 (radius r around c) in an n³ volume.
-VolumeSource ball(int n, const Vec3& c, double r) {
+VolumeSource ballSource(int n, const Vec3& c, double r) {
   VolumeSource s;
   s.n = n;
   s.density.assign(std::size_t(n) * n * n, 0.0f);
@@ -50,7 +50,7 @@ float redAt(const VolumeImage& image, int x, int y) {
 
 TEST(VolumeRaymarch, ABallIsOpaqueInTheMiddleAndEmptyAtTheCorners) {
   VolumeLook look;
-  const VolumeImage image = renderVolumeImage(ball(32, Vec3(0.0), 0.5), look, frontCamera(), 64, 48, 2);
+  const VolumeImage image = renderVolumeImage(ballSource(32, Vec3(0.0), 0.5), look, frontCamera(), 64, 48, 2);
   ASSERT_EQ(image.rgba.size(), std::size_t(64 * 48 * 4));
   EXPECT_GT(alphaAt(image, 32, 24), 0.99f);
   EXPECT_EQ(alphaAt(image, 0, 0), 0.0f);
@@ -65,7 +65,7 @@ TEST(VolumeRaymarch, TheSideTowardsTheLightIsBrighterThanTheShadowedSide) {
   look.towardLight = Vec3(0.0, 1.0, 0.0);  // light from +y
   look.ambient = 0.05;
   const Camera camera = frontCamera();
-  const VolumeImage image = renderVolumeImage(ball(48, Vec3(0.0), 0.6), look, camera, 96, 64, 2);
+  const VolumeImage image = renderVolumeImage(ballSource(48, Vec3(0.0), 0.6), look, camera, 96, 64, 2);
   const OrbitCamera cam(camera, 96, 64);
   const auto lit = cam.project(glm::dvec3(0.0, 0.45, 0.0)), dark = cam.project(glm::dvec3(0.0, -0.45, 0.0));
   EXPECT_GT(redAt(image, int(lit.x), int(lit.y)), 2.0f * redAt(image, int(dark.x), int(dark.y)) + 0.05f);
@@ -74,7 +74,7 @@ TEST(VolumeRaymarch, TheSideTowardsTheLightIsBrighterThanTheShadowedSide) {
 TEST(VolumeRaymarch, TheImageDoesNotDependOnTheThreadCountAndTheStagesAreTheWhole) {
   VolumeLook look;
   look.settings.transfer = {{0.0, Vec3(0.2, 0.4, 1.0), 0.0}, {1.0, Vec3(1.0, 0.5, 0.1), 0.8}};
-  const VolumeSource source = ball(32, Vec3(0.2, -0.1, 0.0), 0.5);
+  const VolumeSource source = ballSource(32, Vec3(0.2, -0.1, 0.0), 0.5);
   const VolumeImage one = renderVolumeImage(source, look, frontCamera(), 50, 40, 1);
   const VolumeImage two = renderVolumeImage(source, look, frontCamera(), 50, 40, 2);
   EXPECT_EQ(one.rgba, two.rgba);
@@ -88,7 +88,7 @@ TEST(VolumeRaymarch, XrayIsGreySummedDensityAndATransparentTransferShowsNothing)
   VolumeLook look;
   look.settings.display = VolumeDisplay::Xray;
   look.settings.density_scale = 2.0;
-  const VolumeImage x = renderVolumeImage(ball(32, Vec3(0.0), 0.5), look, frontCamera(), 40, 40, 2);
+  const VolumeImage x = renderVolumeImage(ballSource(32, Vec3(0.0), 0.5), look, frontCamera(), 40, 40, 2);
   double sum = 0.0;
   for (std::size_t p = 0; p < x.rgba.size() / 4; ++p) {
     EXPECT_NEAR(x.rgba[4 * p], x.rgba[4 * p + 3], 1e-5);  // grey: white weighted by the opacity
@@ -101,7 +101,7 @@ TEST(VolumeRaymarch, XrayIsGreySummedDensityAndATransparentTransferShowsNothing)
   EXPECT_GT(alphaAt(x, 20, 20), alphaAt(x, 26, 20));
 
   look.settings.transfer = {{0.0, Vec3(1.0), 0.0}, {1.0, Vec3(1.0), 0.0}};
-  const VolumeImage none = renderVolumeImage(ball(32, Vec3(0.0), 0.5), look, frontCamera(), 40, 40, 2);
+  const VolumeImage none = renderVolumeImage(ballSource(32, Vec3(0.0), 0.5), look, frontCamera(), 40, 40, 2);
   EXPECT_EQ(*std::max_element(none.rgba.begin(), none.rgba.end()), 0.0f);
 }
 

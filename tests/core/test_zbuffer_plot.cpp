@@ -23,10 +23,10 @@ namespace {
 
 using kernel::v4f;
 
-constexpr int kWidth = 96, kHeight = 64;
+constexpr int kPlotWidth = 96, kPlotHeight = 64;
 
 /// Points around the origin, some behind the camera or outside the frame, a few not numbers.
-std::vector<v4f> samplePoints(int count, unsigned seed) {
+std::vector<v4f> plotSamplePoints(int count, unsigned seed) {
   std::mt19937 rng(seed);
   std::uniform_real_distribution<float> near(-1.0f, 1.0f), far(-12.0f, 12.0f);
   std::vector<v4f> points;
@@ -63,12 +63,13 @@ struct Buffers {
 };
 
 Buffers emptyBuffers() {
-  return {std::vector<kernel::PixelCell>(kWidth * kHeight), std::vector<std::uint64_t>(kWidth * kHeight * 4), 0};
+  return {std::vector<kernel::PixelCell>(kPlotWidth * kPlotHeight),
+          std::vector<std::uint64_t>(kPlotWidth * kPlotHeight * 4), 0};
 }
 
 /// One sample at a time: the projection and packing of the plotter, written out plainly.
-Buffers reference(const kernel::HotCamera& cam, const std::vector<v4f>& points, const std::vector<v4f>& colors,
-                  const v4f* palette) {
+Buffers referencePlot(const kernel::HotCamera& cam, const std::vector<v4f>& points, const std::vector<v4f>& colors,
+                      const v4f* palette) {
   Buffers b = emptyBuffers();
   for (std::size_t i = 0; i < points.size(); ++i) {
     const v4f q = points[i];
@@ -115,7 +116,7 @@ Buffers chunked(const kernel::HotCamera& cam, const std::vector<v4f>& points, co
   return b;
 }
 
-void expectSame(const Buffers& expected, const Buffers& actual, bool sums) {
+void expectSamePlots(const Buffers& expected, const Buffers& actual, bool sums) {
   ASSERT_EQ(expected.cells.size(), actual.cells.size());
   EXPECT_EQ(expected.plotted, actual.plotted);
   int differing = 0;
@@ -134,22 +135,22 @@ kernel::HotCamera camera(bool ortho) {
   c.pitch = 25.0;
   c.distance = 3.5;
   c.projection = ortho ? CameraProjection::Orthographic : CameraProjection::Perspective;
-  return kernel::makeHotCamera(OrbitCamera(c, kWidth, kHeight));
+  return kernel::makeHotCamera(OrbitCamera(c, kPlotWidth, kPlotHeight));
 }
 
 TEST(ZBufferPlot, ChunksPlotExactlyAsOneSampleAtATime) {
-  const auto points = samplePoints(5000, 3);
+  const auto points = plotSamplePoints(5000, 3);
   const auto colors = sampleColors(5000, 4);
   for (bool ortho : {false, true}) {
     const kernel::HotCamera cam = camera(ortho);
-    const Buffers expected = reference(cam, points, colors, nullptr);
+    const Buffers expected = referencePlot(cam, points, colors, nullptr);
     EXPECT_GT(expected.plotted, 3000) << "most samples land in the frame";
     EXPECT_LT(expected.plotted, 5000) << "some fall outside";
     // Whole chunks, a partial last one, and flushes at odd places (runChain flushes per batch).
     for (std::size_t flushEvery : {std::size_t(1000000), std::size_t(1), std::size_t(7), std::size_t(300)}) {
       SCOPED_TRACE(testing::Message() << "ortho " << ortho << ", flush every " << flushEvery);
-      expectSame(expected, chunked<false>(cam, points, colors, nullptr, flushEvery), false);
-      expectSame(expected, chunked<true>(cam, points, colors, nullptr, flushEvery), true);
+      expectSamePlots(expected, chunked<false>(cam, points, colors, nullptr, flushEvery), false);
+      expectSamePlots(expected, chunked<true>(cam, points, colors, nullptr, flushEvery), true);
     }
   }
 }
@@ -158,11 +159,11 @@ TEST(ZBufferPlot, PaletteColourSumsMatchOneSampleAtATime) {
   std::vector<v4f> palette;
   for (const Rgb& c : builtinPalette("ember").colors) palette.push_back(v4f{c.r, c.g, c.b, 0.0f});
   palette.push_back(palette.back());
-  const auto points = samplePoints(3000, 5);
+  const auto points = plotSamplePoints(3000, 5);
   const auto colors = sampleColors(3000, 6);
   const kernel::HotCamera cam = camera(false);
-  expectSame(reference(cam, points, colors, palette.data()),
-             chunked<true>(cam, points, colors, palette.data(), 1000000), true);
+  expectSamePlots(referencePlot(cam, points, colors, palette.data()),
+                  chunked<true>(cam, points, colors, palette.data(), 1000000), true);
 }
 
 TEST(ZBufferPlot, PointsThatAreNotNumbersLandNowhere) {

@@ -210,7 +210,8 @@ Project variationScene() {
   return p;
 }
 
-RenderImage renderGpu(gpu::GpuChaosRenderer& renderer, std::shared_ptr<const CompiledIfs> ifs, const RenderJob& job) {
+RenderImage renderGenomeGpu(gpu::GpuChaosRenderer& renderer, std::shared_ptr<const CompiledIfs> ifs,
+                            const RenderJob& job) {
   renderer.restart(std::move(ifs), job);
   EXPECT_TRUE(renderer.waitUntilDone());
   RenderImage image;
@@ -235,7 +236,7 @@ TEST(GpuVariations, RenderMatchesTheCpuPicture) {
   const RenderImage cpu = renderToCompletion(ifs, job, DisplaySettings{});
   gpu::GpuChaosRenderer renderer;
   const auto start = std::chrono::steady_clock::now();
-  const RenderImage g = renderGpu(renderer, ifs, job);
+  const RenderImage g = renderGenomeGpu(renderer, ifs, job);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_EQ(g.stats.samples, job.samples);
   EXPECT_TRUE(g.stats.done);
@@ -263,13 +264,13 @@ TEST(GpuVariations, SameSeedSameBytesOtherSeedOtherImage) {
   gpu::GpuChaosRenderer::Options other;
   other.sliceSeconds = 0.0005;  // other slices: the image must not depend on them
   gpu::GpuChaosRenderer two(other);
-  const RenderImage a = renderGpu(one, ifs, job);
-  const RenderImage b = renderGpu(two, ifs, job);
+  const RenderImage a = renderGenomeGpu(one, ifs, job);
+  const RenderImage b = renderGenomeGpu(two, ifs, job);
   EXPECT_EQ(a.rgba, b.rgba);
   EXPECT_EQ(a.density, b.density);
   EXPECT_EQ(a.colorSums, b.colorSums);
   job.seed = 6;
-  const RenderImage c = renderGpu(one, ifs, job);
+  const RenderImage c = renderGenomeGpu(one, ifs, job);
   EXPECT_NE(a.density, c.density);
 }
 

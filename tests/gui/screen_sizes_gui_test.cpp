@@ -85,7 +85,7 @@ Rect local(const nlohmann::json& probe, const std::string& name) {
           int(std::lround(r[2].get<double>())), int(std::lround(r[3].get<double>()))};
 }
 
-bool inside(const Rect& inner, const Rect& outer, int slack = 1) {
+bool insideScreen(const Rect& inner, const Rect& outer, int slack = 1) {
   return inner.x >= outer.x - slack && inner.y >= outer.y - slack && inner.x + inner.w <= outer.x + outer.w + slack &&
          inner.y + inner.h <= outer.y + outer.h + slack;
 }
@@ -121,11 +121,12 @@ nlohmann::json settledProbe(const App& app) {
 void expectUsableLayout(const nlohmann::json& probe, int screenW, int screenH, float scale) {
   const auto& win = probe["window"];
   const Rect window{win["x"].get<int>(), win["y"].get<int>(), win["width"].get<int>(), win["height"].get<int>()};
-  EXPECT_TRUE(inside(window, Rect{0, 0, screenW, screenH}, 0)) << "window " << str(window) << " is off the screen";
+  EXPECT_TRUE(insideScreen(window, Rect{0, 0, screenW, screenH}, 0))
+      << "window " << str(window) << " is off the screen";
   const Rect client{0, 0, window.w, window.h};
   for (std::size_t a = 0; a < kPanels.size(); ++a) {
     const Rect r = local(probe, kPanels[a]);
-    EXPECT_TRUE(inside(r, client)) << kPanels[a] << " " << str(r) << " is outside the window " << str(client);
+    EXPECT_TRUE(insideScreen(r, client)) << kPanels[a] << " " << str(r) << " is outside the window " << str(client);
     const bool status = std::string(kPanels[a]) == "panel.status";
     EXPECT_GE(r.w, int(180 * scale)) << kPanels[a] << " is too narrow: " << str(r);
     EXPECT_GE(r.h, int((status ? 18 : 120) * scale)) << kPanels[a] << " is too short: " << str(r);
@@ -142,24 +143,24 @@ void expectUsableLayout(const nlohmann::json& probe, int screenW, int screenH, f
   // The operation stack: its list is inside the panel, holds three rows or more, and its first
   // row is in sight (not scrolled or clipped away).
   const Rect ops = local(probe, "panel.operations"), stack = local(probe, "ops.stack"), row = local(probe, "ops.row.0");
-  EXPECT_TRUE(inside(stack, ops)) << "the stack " << str(stack) << " is outside its panel " << str(ops);
+  EXPECT_TRUE(insideScreen(stack, ops)) << "the stack " << str(stack) << " is outside its panel " << str(ops);
   // (A selectable row reaches half an item spacing past the list's sides.)
   EXPECT_TRUE(row.y >= stack.y && row.y + row.h <= stack.y + stack.h && row.x >= stack.x && row.x < stack.x + stack.w)
       << "the first operation " << str(row) << " is not in the stack list " << str(stack);
   EXPECT_GE(stack.h, 3 * row.h) << "the stack list shows fewer than three rows";
-  EXPECT_TRUE(inside(local(probe, "functions.row.0"), local(probe, "panel.functions")));
+  EXPECT_TRUE(insideScreen(local(probe, "functions.row.0"), local(probe, "panel.functions")));
 
   const Rect preview = local(probe, "preview.image");
-  EXPECT_TRUE(inside(preview, local(probe, "panel.preview")));
+  EXPECT_TRUE(insideScreen(preview, local(probe, "panel.preview")));
   EXPECT_GE(preview.w, int(320 * scale)) << "preview " << str(preview);
   EXPECT_GE(preview.h, int(200 * scale)) << "preview " << str(preview);
   const Rect ifs = local(probe, "view.ifs");
-  EXPECT_TRUE(inside(ifs, local(probe, "panel.ifs")));
+  EXPECT_TRUE(insideScreen(ifs, local(probe, "panel.ifs")));
   EXPECT_GE(ifs.w, int(240 * scale)) << "IFS view " << str(ifs);
   EXPECT_GE(ifs.h, int(140 * scale)) << "IFS view " << str(ifs);
   for (const char* view : {"view.Top", "view.Side", "view.Front", "view.User"}) {
     const Rect v = local(probe, view);
-    EXPECT_TRUE(inside(v, local(probe, "panel.grids"))) << view;
+    EXPECT_TRUE(insideScreen(v, local(probe, "panel.grids"))) << view;
     EXPECT_GE(v.w, int(150 * scale)) << view << " " << str(v);
     EXPECT_GE(v.h, int(120 * scale)) << view << " " << str(v);
   }
@@ -282,7 +283,7 @@ TEST(ScreenSizesGui, OffScreenWindowGeometryIsCorrected) {
   const nlohmann::json probe = firstFrame(*app);
   ASSERT_FALSE(probe.is_null());
   const Rect w = windowOf(probe);
-  EXPECT_TRUE(inside(w, Rect{0, 0, 1600, 1000}, 0)) << "reopened off-screen: " << str(w);
+  EXPECT_TRUE(insideScreen(w, Rect{0, 0, 1600, 1000}, 0)) << "reopened off-screen: " << str(w);
   EXPECT_EQ(w.w, 1600);
   EXPECT_EQ(w.h, 1000);
   expectUsableLayout(settledProbe(*app), 1600, 1000, 1.0f);
