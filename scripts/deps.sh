@@ -16,9 +16,15 @@ GRIDIFS_RUN_PACKAGES=(
   # flam3's palettes, which flame projects and imported .flame files name by number.
   flam3-palette
 )
-# Only the tests, benchmarks and CI need these.
-GRIDIFS_TEST_PACKAGES=(
+# Only the tests, benchmarks and CI need these. The build of the tests needs the first set (its
+# headers and libraries); the tiers need the rest only when they run, so scripts/test installs
+# them while it builds.
+GRIDIFS_TEST_BUILD_PACKAGES=(
   libgtest-dev libbenchmark-dev
+  # The Python module: pybind11 against the system Python 3.11 that Debian's Blender runs.
+  pybind11-dev python3-dev
+)
+GRIDIFS_TEST_PACKAGES=(
   # The gui tier: a real X server with Mesa's llvmpipe, real input, screenshots.
   xvfb xauth xdotool x11-utils imagemagick mesa-utils
   # flam3-render to compare against, oiiotool for scripts/figures, ffmpeg for --video (optional
@@ -30,14 +36,18 @@ GRIDIFS_TEST_PACKAGES=(
   slurm-wlm munge iproute2 procps
   # MIDI through a real transport: JACK's server with its dummy driver (no sound hardware).
   jackd2
-  # The Python module (pybind11 against the system Python 3.11 that Debian's Blender runs), its
-  # python tier, the examples' plots, and the blender tier's Blender.
-  pybind11-dev python3-dev python3-numpy python3-pytest python3-matplotlib blender
+  # The python tier, the examples' plots, and the blender tier's Blender.
+  python3-numpy python3-pytest python3-matplotlib blender
 )
-# gridifs_install_deps run|test
+# gridifs_install_deps run|test-build|test: the modeller's packages; and those the tests' build
+# needs; or every package. The package lists are updated once (GRIDIFS_APT_UPDATED) when any is missing.
 gridifs_install_deps() {
   local wanted=("${GRIDIFS_RUN_PACKAGES[@]}")
-  [ "${1:-test}" = "test" ] && wanted+=("${GRIDIFS_TEST_PACKAGES[@]}")
+  case "${1:-test}" in
+    run) ;;
+    test-build) wanted+=("${GRIDIFS_TEST_BUILD_PACKAGES[@]}") ;;
+    *) wanted+=("${GRIDIFS_TEST_BUILD_PACKAGES[@]}" "${GRIDIFS_TEST_PACKAGES[@]}") ;;
+  esac
   local missing=()
   for p in "${wanted[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -46,7 +56,10 @@ gridifs_install_deps() {
     echo "Installing Debian packages: ${missing[*]}"
     local sudo=""
     [ "$(id -u)" -ne 0 ] && sudo="sudo"
-    $sudo apt-get update -qq
+    if [ "${GRIDIFS_APT_UPDATED:-0}" != 1 ]; then
+      $sudo apt-get update -qq
+      GRIDIFS_APT_UPDATED=1
+    fi
     DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
   fi
 }
