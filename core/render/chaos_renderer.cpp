@@ -645,13 +645,14 @@ void ChaosRenderer::accumulation(Accumulation& out) const { mergeBuffers(out, nu
 
 void ChaosRenderer::takeAccumulation(Accumulation& out) {
   const std::uint64_t generation = shared_->generation.load();
+  // The giver is the worker that played the most samples: one that found every chunk taken
+  // before it started holds an empty buffer, and giving that would leave all the work to copy.
   Worker* giver = nullptr;
   if (shared_->job && shared_->job->job.accumulateColor && stats().done)
     for (const auto& w : workers_)
-      if (w->bufferGeneration.load(std::memory_order_acquire) == generation) {
+      if (w->bufferGeneration.load(std::memory_order_acquire) == generation &&
+          (!giver || w->samples.load(std::memory_order_relaxed) > giver->samples.load(std::memory_order_relaxed)))
         giver = w.get();
-        break;
-      }
   mergeBuffers(out, giver);
 }
 
