@@ -1,6 +1,7 @@
 #include "base/parallel.h"
 
 #include <tbb/blocked_range.h>
+#include <tbb/info.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 
@@ -65,7 +66,9 @@ void parallelFor(std::size_t count, int threads, std::size_t grain,
 #else
   // An arena caps the concurrency at what the caller asked for; the pool's threads are shared
   // with every other arena, so nested or concurrent loops do not oversubscribe the machine.
-  tbb::task_arena arena(threads);
+  // No more than the machine's cores: oneTBB cannot give an arena more workers than that, and
+  // warned on stderr ("The request for 2 workers is ignored") when asked to.
+  tbb::task_arena arena(std::max(1, std::min(threads, tbb::info::default_concurrency())));
   arena.execute([&] {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, grain),
                       [&](const tbb::blocked_range<std::size_t>& r) { body(r.begin(), r.end()); });
