@@ -1,10 +1,7 @@
 // Condensation sets, median functions and the measure attractor (Sokolov & Gentil): the file
 // format, voxelization, the median's fixed point, the set iteration's mass, the chaos game with a
-// constant condensation, point binning and the OpenVDB file.
+// constant condensation and point binning (the OpenVDB file: files/).
 #include <gtest/gtest.h>
-#include <openvdb/io/File.h>
-#include <openvdb/openvdb.h>
-#include <openvdb/tools/Count.h>
 
 #include <algorithm>
 #include <cmath>
@@ -15,6 +12,7 @@
 #include "model/project.h"
 #include "render/chaos_renderer.h"
 #include "render/compiled_ifs.h"
+#include "tests/core/volume_scenes.h"
 #include "volume/measure_attractor.h"
 #include "volume/set_function.h"
 #include "volume/set_orbit_memo.h"
@@ -22,20 +20,10 @@
 #include "volume/vdb_volume_file.h"
 
 using namespace gridifs;
+using test_support::kTwoMedians;
 namespace fs = std::filesystem;
 
 namespace {
-
-const char* kTwoMedians = R"({
-  "format": "gridifs", "version": 1,
-  "functions": [
-    {"name": "A", "kind": "median", "weight": 2,
-     "set": {"primitive": "sphere", "center": [-0.45, 0, 0], "radius": 0.3}},
-    {"name": "B", "kind": "median", "weight": 1, "rotate": 0.0, "color": [0.2, 0.4, 1],
-     "set": {"primitive": "box", "center": [0.45, 0, 0], "size": [0.4, 0.4, 0.4]}}
-  ],
-  "volume": {"resolution": 32, "iterations": 200, "skip": 20, "seed": 3, "samples": 100000}
-})";
 
 struct VolumeFolder {
   fs::path path;
@@ -415,39 +403,4 @@ TEST(MeasureAttractor, SierpinskiDensityIsZeroAwayFromTheAttractor) {
   }
   EXPECT_GT(nonZero, 500);
   EXPECT_GT(v.at(63, 63, 63), 0.0f);
-}
-
-TEST(VdbVolumeFile, HasTheDensityAndColourGridsAndTheLatticeTransform) {
-  VolumeFolder folder("vdbfile");
-  const Project p = parseProject(kTwoMedians);
-  VolumeJob job;
-  job.settings = *p.volume;
-  job.settings.iterations = 60;
-  const DensityVolume v = computeDensityVolume(p, job);
-  const fs::path file = folder.path / "out.vdb";
-  writeVdbVolume(v, file);
-  openvdb::initialize();
-  openvdb::io::File vdb(file.string());
-  vdb.open();
-  ASSERT_TRUE(vdb.hasGrid("density"));
-  ASSERT_TRUE(vdb.hasGrid("color"));
-  auto density = openvdb::gridPtrCast<openvdb::FloatGrid>(vdb.readGrid("density"));
-  auto color = openvdb::gridPtrCast<openvdb::Vec3SGrid>(vdb.readGrid("color"));
-  vdb.close();
-  ASSERT_TRUE(density);
-  ASSERT_TRUE(color);
-  EXPECT_EQ(density->getGridClass(), openvdb::GRID_FOG_VOLUME);
-  EXPECT_EQ(density->background(), 0.0f);
-  EXPECT_TRUE(density->transform().isLinear());
-  EXPECT_NEAR(density->voxelSize().x(), 2.0 / 32, 1e-12);
-  const openvdb::Vec3d origin = density->transform().indexToWorld(openvdb::Vec3d(0, 0, 0));
-  EXPECT_NEAR(origin.x(), -1.0 + 1.0 / 32, 1e-12);
-  EXPECT_NEAR(origin.z(), -1.0 + 1.0 / 32, 1e-12);
-  const auto range = openvdb::tools::minMax(density->tree());
-  EXPECT_FLOAT_EQ(range.max(), 1.0f);
-  EXPECT_GE(range.min(), 0.0f);
-  const auto accessor = density->getConstAccessor();
-  for (int k = 0; k < 32; ++k)
-    for (int j = 0; j < 32; ++j)
-      for (int i = 0; i < 32; ++i) ASSERT_FLOAT_EQ(accessor.getValue(openvdb::Coord(i, j, k)), v.at(i, j, k));
 }
