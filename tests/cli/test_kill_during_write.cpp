@@ -19,14 +19,13 @@
 #include <vector>
 
 #include "io/project_io.h"
+#include "tests/cli/example_projects.h"
 #include "tests/cli/run_command.h"
 
 namespace fs = std::filesystem;
 using namespace gridifs::test_support;
 
 namespace {
-
-const fs::path kAssetFolder = GRIDIFS_ASSETS;
 
 void writeBytes(const fs::path& file, const std::string& bytes) {
   std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
@@ -95,7 +94,7 @@ void killWhileWriting(const std::string& name, const std::function<std::vector<s
 }  // namespace
 
 TEST(KillDuringWrite, RenderLeavesTheOldImageOrTheNewOne) {
-  const std::string project = (kAssetFolder / "twisted_functions.gridifs").string();
+  const std::string project = kTwisted;
   killWhileWriting(
       "render.png",
       [&](const fs::path& out) {
@@ -106,7 +105,7 @@ TEST(KillDuringWrite, RenderLeavesTheOldImageOrTheNewOne) {
 }
 
 TEST(KillDuringWrite, ExportPointsLeavesTheOldCloudOrTheNewOne) {
-  const std::string project = (kAssetFolder / "sierpinski_tetrahedron.gridifs").string();
+  const std::string project = kSierpinski;
   killWhileWriting(
       "points.ply",
       [&](const fs::path& out) {
@@ -117,7 +116,7 @@ TEST(KillDuringWrite, ExportPointsLeavesTheOldCloudOrTheNewOne) {
 }
 
 TEST(KillDuringWrite, ExportMeshLeavesTheOldMeshOrTheNewOne) {
-  const std::string project = (kAssetFolder / "sierpinski_tetrahedron.gridifs").string();
+  const std::string project = kSierpinski;
   killWhileWriting(
       "mesh.ply",
       [&](const fs::path& out) {
@@ -131,7 +130,7 @@ TEST(KillDuringWrite, ExportMeshLeavesTheOldMeshOrTheNewOne) {
 TEST(KillDuringWrite, ProjectSaveLeavesTheOldProjectOrTheNewOne) {
   ScratchDir dir("kill-save");
   const fs::path file = dir.path / "plate.gridifs";
-  gridifs::Project a = gridifs::loadProject(kAssetFolder / "universal_calculator.gridifs");
+  gridifs::Project a = gridifs::loadProject(asset("universal_calculator.gridifs"));
   gridifs::Project b = a;
   b.functions[0].name = "renamed";
   b.render.seed = a.render.seed + 1;

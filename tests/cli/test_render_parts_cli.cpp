@@ -33,8 +33,7 @@ namespace {
 using namespace test_support;
 namespace fs = std::filesystem;
 
-const std::string kAssetPrefix = GRIDIFS_ASSETS;
-const std::string kShaded = kAssetPrefix + "/shaded_tetrahedron.gridifs";  // render.mode "shaded", shadows
+const std::string kShaded = asset("shaded_tetrahedron.gridifs");  // render.mode "shaded", shadows
 
 /// What is rendered: a project, the output's extension and the options beyond the common ones
 /// (small size, 10^6 samples: 16 chunks, --device cpu).
@@ -261,7 +260,7 @@ class MergeRefusals : public ::testing::Test {
     for (int k = 0; k < 3; ++k)
       parts_.push_back(render(kTwisted, std::to_string(k) + "/3", "p" + std::to_string(k) + ".gpart"));
     otherSeed_ = render(kTwisted, "1/3", "other_seed.gpart", "--width 160 --seed 7");
-    otherProject_ = render(kAssetPrefix + "/sierpinski_tetrahedron.gridifs", "1/3", "other_project.gpart");
+    otherProject_ = render(kSierpinski, "1/3", "other_project.gpart");
     otherCount_ = render(kTwisted, "1/4", "other_count.gpart");
     otherSize_ = render(kTwisted, "1/3", "other_size.gpart", "--width 161");
     const fs::path volumePart = dir_->path / "volume.gpart";
@@ -465,7 +464,7 @@ TEST(RenderPartOption, APartIsWrittenOnlyAsGpart) {
 // A chaos-game volume splits; a volume of median functions is a set iteration and does not.
 TEST(RenderPartOption, MedianVolumesDoNotSplit) {
   ScratchDir dir("parts-median");
-  const CommandResult r = runGridifs("volume " + quote(kAssetPrefix + "/volumes/two_sets.gridifs") + " -o " +
+  const CommandResult r = runGridifs("volume " + quote(asset("volumes/two_sets.gridifs")) + " -o " +
                                      quote((dir.path / "v.gpart").string()) + " -q --part 0/2");
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.err.find("median"), std::string::npos) << r.err;
