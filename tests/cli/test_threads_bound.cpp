@@ -9,6 +9,7 @@
 #include <sys/wait.h>
 
 #include <chrono>
+#include <thread>
 
 #include "run_command.h"
 
@@ -50,4 +51,17 @@ TEST(ThreadsBound, OneThreadMeansOneCoreInEveryMode) {
     // The kernel accounts CPU time in ticks: allow one of them and a hair.
     EXPECT_LE(c.cpu, c.wall * 1.02 + 0.02) << mode << ": more than one thread ran at once";
   }
+}
+
+TEST(ThreadsBound, MoreThreadsThanCoresRenderWithoutTheThreadPoolsWarning) {
+  // The flame develop's parallel loops run in a oneTBB arena; one larger than the machine's cores
+  // made oneTBB print "TBB Warning: ... The request for N workers is ignored" on stderr.
+  const ScratchDir dir("threads-more-than-cores");
+  const int threads = int(std::thread::hardware_concurrency()) + 1;
+  const CommandResult r =
+      runGridifs("render " + quote(std::string(GRIDIFS_ASSETS) + "/default.gridifs") + " -o " +
+                 quote((dir.path / "flame.png").string()) +
+                 " --mode flame --samples 200000 -q --device cpu --threads " + std::to_string(threads));
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.err.find("TBB"), std::string::npos) << r.err;
 }
