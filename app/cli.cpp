@@ -171,6 +171,12 @@ std::shared_ptr<const Grid> evaluateForVerb(const Document& document, std::size_
 
 bool isVerb(const char* word) { return word && verbs().count(word) > 0; }
 
+bool verbWantsHugePageHeap(const char* word) {
+  if (!word) return false;
+  const auto it = verbs().find(word);
+  return it != verbs().end() && it->second.hugePageHeap;
+}
+
 int run(int argc, char** argv, ModellerOpener openModeller) {
   try {
     if (argc >= 2) {

@@ -29,6 +29,10 @@ struct Verb {
   const char* name;
   const char* summary;
   std::function<std::function<int()>(CLI::App&)> setup;
+  /// Runs with glibc's heap on huge pages (app/huge_page_heap.h): the verbs that render, or write
+  /// images, volumes and meshes, whose buffers and image library cost their process most of its
+  /// system time in page faults. Off for the quick verbs, where starting again would cost more.
+  bool hugePageHeap = false;
 };
 
 /// Registers a verb at static-initialisation time (each verb_*.cpp registers itself).
@@ -45,6 +49,9 @@ int run(int argc, char** argv, ModellerOpener openModeller);
 
 /// Whether `word` names a verb (the first argument of a command, not of the modeller).
 bool isVerb(const char* word);
+
+/// Whether `word` names a verb that runs with the huge-page heap (Verb::hugePageHeap).
+bool verbWantsHugePageHeap(const char* word);
 
 /// Loads a project for a verb; bad content → CliError(2), unreadable → CliError(2) too
 /// (an unreadable input file is bad input), each naming the file. The numbers given with --set

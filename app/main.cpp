@@ -5,8 +5,11 @@
 #include <iostream>
 
 #include "app/cli.h"
+#include "app/huge_page_heap.h"
 
 int main(int argc, char** argv) {
+  // A render is a short process whose system time is mostly page faults (app/huge_page_heap.h).
+  if (argc >= 2 && gridifs::cli::verbWantsHugePageHeap(argv[1])) gridifs::cli::restartWithHugePageHeap(argv);
   const int code = gridifs::cli::run(argc, argv, gridifs::cli::openModeller);
 #if !defined(__SANITIZE_ADDRESS__) && !defined(__SANITIZE_THREAD__)
   if (argc >= 2 && gridifs::cli::isVerb(argv[1])) {

@@ -224,7 +224,8 @@ const VerbRegistration kExportField{
        addSetOption(app);
        app.add_flag("--ascii", a->ascii, "ASCII PLY or STL instead of binary");
        return [=] { return runExportField(*a); };
-     }}};
+     },
+     /*hugePageHeap=*/true}};
 
 }  // namespace
 }  // namespace gridifs::cli

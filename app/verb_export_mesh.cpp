@@ -175,7 +175,8 @@ const VerbRegistration kExportMesh{
            ->capture_default_str()
            ->check(CLI::PositiveNumber);
        return [a] { return runExportMesh(*a); };
-     }}};
+     },
+     /*hugePageHeap=*/true}};
 
 }  // namespace
 }  // namespace gridifs::cli

@@ -46,7 +46,8 @@ const VerbRegistration kExportPoints{
                                           "chaos-game iterations, e.g. 1e6 (default 1000000)",
                                           "number of worker streams to reproduce (default: all cores, like render)");
        return [=] { return runExportPoints(a->file, a->out, a->overrides, a->quiet); };
-     }}};
+     },
+     /*hugePageHeap=*/true}};
 
 }  // namespace
 }  // namespace gridifs::cli

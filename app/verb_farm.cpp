@@ -187,7 +187,8 @@ const VerbRegistration kFarm{
        app.add_option("--bit-depth", a->bitDepth, "flame mode: bits of the merged images (as render)");
        app.add_flag("--transparent", a->transparent, "flame mode: merged PNG/TIFF with alpha (as render)");
        return [a] { return runFarm(*a); };
-     }}};
+     },
+     /*hugePageHeap=*/true}};
 
 }  // namespace
 }  // namespace gridifs::cli

@@ -230,7 +230,8 @@ const VerbRegistration kMerge{
        app.add_option("--bit-depth", a->bitDepth, "flame parts: 8 or 16 bits for PNG/TIFF, 16 or 32 for EXR");
        app.add_flag("--transparent", a->transparent, "flame parts: PNG/TIFF with alpha instead of the background");
        return [a] { return runMerge(*a); };
-     }}};
+     },
+     /*hugePageHeap=*/true}};
 
 }  // namespace
 }  // namespace gridifs::cli

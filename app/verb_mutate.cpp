@@ -80,7 +80,8 @@ const VerbRegistration kMutate{
                       "palette, camera, tracks");
        app.add_option("--mate", a->mate, "a second parent: the children draw their functions from both");
        return [a] { return runMutate(*a); };
-     }}};
+     },
+     /*hugePageHeap=*/true}};
 
 }  // namespace
 }  // namespace gridifs::cli

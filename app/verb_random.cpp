@@ -58,7 +58,8 @@ const VerbRegistration kRandom{
        app.add_option("--functions", a->functions, "number of functions (default: 3 to 5, drawn)");
        app.add_option("--count", a->count, "how many projects to write (default 1)");
        return [a] { return runRandom(*a); };
-     }}};
+     },
+     /*hugePageHeap=*/true}};
 
 }  // namespace
 }  // namespace gridifs::cli

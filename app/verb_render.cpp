@@ -553,7 +553,8 @@ const VerbRegistration kRender{
        return [=] {
          return runRender(a->file, a->out, a->overrides, a->quiet, *flame, *sequence, *part, *volumeResolution);
        };
-     }}};
+     },
+     /*hugePageHeap=*/true}};
 
 }  // namespace
 }  // namespace gridifs::cli

@@ -184,7 +184,8 @@ const VerbRegistration kVolume{
                     "page_%03d.png numbered by the address s1...sD in base N (at most 4096 pages)");
        app.add_flag("-q,--quiet", a->quiet, "no progress bar");
        return [a] { return runVolume(*a); };
-     }}};
+     },
+     /*hugePageHeap=*/true}};
 
 }  // namespace
 }  // namespace gridifs::cli

@@ -91,8 +91,11 @@ def test_every_parameter_path_of_every_example_round_trips():
         p = gridifs.Project.load(path)
         paths = p.paths()
         assert paths, path
+        # The paths are a function of the project's content: listed again only when it changed
+        # (a project of thousands of numbers would otherwise list them thousands of times).
+        listed_for, present = p.to_json(), set(paths)
         for name in paths:
-            if name not in p.paths():
+            if name not in present:
                 continue  # gone with an earlier value (a shutter without motion blur)
             value = p.get(name)
             p.set(name, value)  # the same value
@@ -100,6 +103,8 @@ def test_every_parameter_path_of_every_example_round_trips():
             # Setting one number of an animated project also puts every keyed number at its
             # track's value (the modeller's rule), so compare with the project just before.
             original = p.to_json()
+            if original != listed_for:
+                listed_for, present = original, set(p.paths())
             try:
                 p.set(name, perturbed(value))
             except gridifs.Error as e:
@@ -108,8 +113,11 @@ def test_every_parameter_path_of_every_example_round_trips():
                 assert re.fullmatch(r".+\.gridifs: [a-z_]+[a-z_\[\]0-9.]*: .+\.", str(e)), str(e)
                 assert p.to_json() == original, f"{path}: a refused {name} changed the project"
                 continue
-            if name in p.paths():  # a number written only while it differs from its default may go
+            try:
                 got = p.get(name)
+            except gridifs.Error:
+                got = None  # a number written only while it differs from its default may go
+            if got is not None:
                 assert got == pytest.approx(perturbed(value), abs=0.51), f"{path}: {name}"
             assert p.undo()
             assert p.to_json() == original, f"{path}: undo after {name} left a difference"
