@@ -135,8 +135,9 @@ TEST(Farm, StillInSixteenPartsEqualsTheLocalRenderAndADamagedPartIsRenderedAgain
 TEST(Farm, ACancelledTaskKeepsItsMergeWaitingAndTheSameCommandFinishesWithTheSameBytes) {
   ScratchDir dir("farm-cancel");
   // Enough samples that the tasks run for seconds, so one can be cancelled while it runs (a task of
-  // 10^8 samples took 0.8 s, and the cancel sometimes came after it had written its part).
-  const std::string options = " --samples 2e9 --width 160 --height 120";
+  // 10^8 samples took 0.8 s, and the cancel sometimes came after it had written its part; one of
+  // 2.5·10^8 takes about 2 s, and the cancel comes within a tenth of a second of its start).
+  const std::string options = " --samples 1e9 --width 160 --height 120";
   const std::string project = asset("default.gridifs");
   const std::string job = quote((dir.path / "job").string());
   const std::string farmCommand = "farm " + project + " --parts 4 --dir " + job + " -o " +
