@@ -4,9 +4,9 @@
 // tens of megabytes the image library's static initializers allocate in small blocks when it
 // loads (OpenImageIO's string table alone touches about 6,000 pages). glibc serves its heaps
 // from transparent huge pages when its `glibc.malloc.hugetlb` tunable asks for it: one fault per
-// 2 MiB instead of per 4 KiB, which took a small render from 21,000 faults to 7,300 and from 0.61
-// to 0.38 CPU-seconds. glibc reads its tunables only when a process starts, so the process
-// starts itself again with the tunable set.
+// 2 MiB instead of per 4 KiB, which took a small render from 21,000 faults to 8,300 and from 0.52
+// to 0.37 CPU-seconds (docs/RENDERER.md, "Fixed costs"). glibc reads its tunables only when a
+// process starts, so the process starts itself again with the tunable set.
 
 namespace gridifs::cli {
 
