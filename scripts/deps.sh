@@ -11,8 +11,9 @@ GRIDIFS_RUN_PACKAGES=(
   libtbb-dev libpugixml-dev libopenvdb-dev libboost-iostreams-dev libnanoflann-dev zlib1g-dev
   fonts-dejavu-core
   # Sound that animations follow (libsndfile reads it, FFTW splits it into bands, SDL plays it),
-  # OSC and MIDI input.
-  libsndfile1-dev libfftw3-dev liblo-dev librtmidi-dev libsdl2-dev
+  # OSC and MIDI input. RtMidi's JACK headers are named as JACK 2's: left to choose, apt takes
+  # JACK 1's, and the tests' jackd2 then removes them and RtMidi with them, mid-build.
+  libsndfile1-dev libfftw3-dev liblo-dev libjack-jackd2-dev librtmidi-dev libsdl2-dev
   # flam3's palettes, which flame projects and imported .flame files name by number.
   flam3-palette
 )
