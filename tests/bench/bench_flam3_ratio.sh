@@ -8,7 +8,8 @@
 # probes the GPU first; r_gcpu: wall with --device cpu). With BASELINE=/path/to/older/gridifs that binary runs in the same
 # rounds (before/after from one run). Then the canonical 3D grid scene (tests/bench/canonical_scene.h)
 # against flam3's 3-function Sierpinski at the same samples, as scripts/bench-whole-process measures
-# it, when the build has bench_gpu (which writes the scene). Every row draws SAMPLES samples (default
+# it, when the build has bench_gpu (which writes the scene), and the default project (whose maps
+# leave X) against the same genome. Every row draws SAMPLES samples (default
 # 10^8, where a render's fixed costs no longer dominate; each genome's quality is scaled to give it);
 # SAMPLES=genome keeps the genomes' own quality. Not run by ctest: timings need a quiet machine.
 # usage: tests/bench/bench_flam3_ratio.sh [BUILD_DIR]   (default: build)
@@ -61,7 +62,7 @@ printf "%-18s %11s %11s %11s %9s %6s %7s %7s %7s" genome samples "flam3 w/cpu" "
   "r_wall" "r_cpu" "r_gcpu"
 [[ -n "$BASELINE" ]] && printf "   %11s %7s %7s" "base w/cpu" "rb_wall" "rb_cpu"
 printf "\n"
-# GENOMES: the genomes to time (default all of tests/data/flame/bench/; "none" for the canonical row only).
+# GENOMES: the genomes to time (default all of tests/data/flame/bench/; "none" for the 3D rows only).
 GENOMES="${GENOMES:-$(ls "$ROOT"/tests/data/flame/bench/*.flame)}"
 [[ "$GENOMES" == none ]] && GENOMES=""
 for flame in $GENOMES; do
@@ -81,12 +82,12 @@ PY
   run_case "$name" "$flame" "$WORK/$name.gridifs" "$samples"
 done
 
-if [[ -x "$BUILD/tests/bench_gpu" ]]; then
-  # The canonical row: QUALITY (samples per pixel of 1024²) overrides SAMPLES.
-  [[ "$SAMPLES" == genome ]] && QUALITY="${QUALITY:-20}"
-  QUALITY="${QUALITY:-$(python3 -c "print(round($SAMPLES / (1024 * 1024)))")}"
-  "$BUILD/tests/bench_gpu" --write-scene "$WORK/canonical.gridifs"
-  cat > "$WORK/sierpinski.flame" <<FLAME
+# The 3D rows: QUALITY (samples per pixel of 1024²) overrides SAMPLES; flam3's 3-function linear
+# Sierpinski genome draws the same samples.
+[[ "$SAMPLES" == genome ]] && QUALITY="${QUALITY:-20}"
+QUALITY="${QUALITY:-$(python3 -c "print(round($SAMPLES / (1024 * 1024)))")}"
+samples=$((QUALITY * 1024 * 1024))
+cat > "$WORK/sierpinski.flame" <<FLAME
 <flame name="sierpinski" version="3.1.1" size="1024 1024" center="0 0" scale="400" quality="$QUALITY"
  supersample="1" filter="0" temporal_samples="1" background="0 0 0" brightness="4" gamma="4" vibrancy="1"
  estimator_radius="0" estimator_minimum="0" estimator_curve="0.4" palette="0">
@@ -95,15 +96,22 @@ if [[ -x "$BUILD/tests/bench_gpu" ]]; then
    <xform weight="0.333333" color="1" linear="1" coefs="0.5 0 0 0.5 0 0.5"/>
 </flame>
 FLAME
-  # The canonical scene at 1024² (its own mode), flam3's Sierpinski genome at the same samples.
-  samples=$((QUALITY * 1024 * 1024))
-  cp "$WORK/canonical.gridifs" "$WORK/canonical_1024.gridifs"
-  python3 - "$WORK/canonical_1024.gridifs" <<'PY'
+at_1024() {  # copies project $1 to $2 with a 1024×1024 image
+  python3 - "$1" "$2" <<'PY'
 import json, sys
-p = sys.argv[1]; d = json.load(open(p)); d["render"]["width"] = 1024; d["render"]["height"] = 1024
-json.dump(d, open(p, "w"))
+d = json.load(open(sys.argv[1])); d["render"]["width"] = 1024; d["render"]["height"] = 1024
+json.dump(d, open(sys.argv[2], "w"))
 PY
+}
+if [[ -x "$BUILD/tests/bench_gpu" ]]; then
+  # The canonical scene at 1024² (its own mode).
+  "$BUILD/tests/bench_gpu" --write-scene "$WORK/canonical.gridifs"
+  at_1024 "$WORK/canonical.gridifs" "$WORK/canonical_1024.gridifs"
   run_case "canonical-3d-grid" "$WORK/sierpinski.flame" "$WORK/canonical_1024.gridifs" "$samples"
 else
   echo "(no $BUILD/tests/bench_gpu: build it for the canonical 3D grid scene row)"
 fi
+# A scene whose maps leave X: the default project's four twisted functions reach 1.18 from the
+# centre, so the chaos game clamps points back into X (z-buffer, 1024²).
+at_1024 "$ROOT/assets/default.gridifs" "$WORK/default_1024.gridifs"
+run_case "default-leaves-X" "$WORK/sierpinski.flame" "$WORK/default_1024.gridifs" "$samples"
