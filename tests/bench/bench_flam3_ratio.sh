@@ -2,7 +2,7 @@
 # The variation kernel against flam3-render, whole process, one thread, same genome, same samples
 # (quality × width × height): each genome of tests/data/flame/bench/ is imported with
 # `gridifs import-flame`, then flam3-render (nthreads=1) and `gridifs render --threads 1` run in
-# alternation REPEAT times (default 3); the table gives median wall and CPU (user + system) seconds
+# alternation REPEAT times (default 3), each round starting with the next of them; the table gives median wall and CPU (user + system) seconds
 # and peak memory (maximum resident set, MB), and the medians of the per-round ratios flam3 /
 # gridifs (r_wall, r_cpu: the default device, which
 # probes the GPU first; r_gcpu: wall with --device cpu). With BASELINE=/path/to/older/gridifs that binary runs in the same
@@ -36,15 +36,24 @@ ratio() { python3 -c "print($1 / $2)"; }
 run_case() {
   local name="$1" flame="$2" project="$3" samples="$4"
   local fw=() fc=() fm=() gw=() gc=() gm=() cw=() bw=() bc=() rw=() rc=() rcw=() rbw=() rbc=()
+  local programs=(f g c)
+  [[ -n "$BASELINE" ]] && programs+=(b)
   for ((i = 0; i < REPEAT; ++i)); do
     local f g c b
-    read -r -a f <<<"$(measure env nthreads=1 seed=1 out="$WORK/flam3.png" sh -c "flam3-render < '$flame'")"
-    read -r -a g <<<"$(measure "$G" render "$project" -o "$WORK/g.png" --samples "$samples" --threads 1 -q)"
-    read -r -a c <<<"$(measure "$G" render "$project" -o "$WORK/c.png" --samples "$samples" --threads 1 -q --device cpu)"
+    # Each round starts with the next program: a process that runs after another or after a pause
+    # spends more system time (on these VMs, refaulting memory the host took back) than one that
+    # follows itself, and a fixed order would charge that to whichever program comes first.
+    for ((k = 0; k < ${#programs[@]}; ++k)); do
+      case "${programs[$(((i + k) % ${#programs[@]}))]}" in
+        f) read -r -a f <<<"$(measure env nthreads=1 seed=1 out="$WORK/flam3.png" sh -c "flam3-render < '$flame'")" ;;
+        g) read -r -a g <<<"$(measure "$G" render "$project" -o "$WORK/g.png" --samples "$samples" --threads 1 -q)" ;;
+        c) read -r -a c <<<"$(measure "$G" render "$project" -o "$WORK/c.png" --samples "$samples" --threads 1 -q --device cpu)" ;;
+        b) read -r -a b <<<"$(measure "$BASELINE" render "$project" -o "$WORK/b.png" --samples "$samples" --threads 1 -q)" ;;
+      esac
+    done
     fw+=("${f[0]}") fc+=("${f[1]}") fm+=("${f[2]}") gw+=("${g[0]}") gc+=("${g[1]}") gm+=("${g[2]}") cw+=("${c[0]}")
     rw+=("$(ratio "${f[0]}" "${g[0]}")") rc+=("$(ratio "${f[1]}" "${g[1]}")") rcw+=("$(ratio "${f[0]}" "${c[0]}")")
     if [[ -n "$BASELINE" ]]; then
-      read -r -a b <<<"$(measure "$BASELINE" render "$project" -o "$WORK/b.png" --samples "$samples" --threads 1 -q)"
       bw+=("${b[0]}") bc+=("${b[1]}") rbw+=("$(ratio "${f[0]}" "${b[0]}")") rbc+=("$(ratio "${f[1]}" "${b[1]}")")
     fi
   done
@@ -57,7 +66,9 @@ run_case() {
 }
 
 echo "one thread, whole process, $SAMPLES samples a row, median of $REPEAT alternating rounds; load $(cut -d' ' -f1-3 /proc/loadavg), $(nproc) cores"
-echo "CPU: $(lscpu | sed -n 's/^Model name: *//p' | head -1) ($(grep -o -m1 'avx512f' /proc/cpuinfo || echo 'no AVX-512'))"
+# The model name with /proc/cpuinfo's family and model: a hypervisor may show every generation of
+# a vendor's server CPUs under one name ("AMD EPYC"), and they differ in speed.
+echo "CPU: $(lscpu | sed -n 's/^Model name: *//p' | head -1) (family $(sed -n 's/^cpu family[[:space:]]*: //p' /proc/cpuinfo | head -1) model $(sed -n 's/^model[[:space:]]*: //p' /proc/cpuinfo | head -1)) ($(grep -o -m1 'avx512f' /proc/cpuinfo || echo 'no AVX-512'))"
 printf "%-18s %11s %11s %11s %9s %6s %7s %7s %7s" genome samples "flam3 w/cpu" "gridifs w/c" "MB f/g" "g_cpu" \
   "r_wall" "r_cpu" "r_gcpu"
 [[ -n "$BASELINE" ]] && printf "   %11s %7s %7s" "base w/cpu" "rb_wall" "rb_cpu"

@@ -36,10 +36,21 @@ JOBS = [
 
 
 def cpu_model():
+    """lscpu's model name, with /proc/cpuinfo's family and model numbers: a hypervisor may show
+    every generation of a vendor's server CPUs under one name, and they differ in speed."""
+    name = "unknown CPU"
     for line in subprocess.run(["lscpu"], capture_output=True, text=True).stdout.splitlines():
         if line.startswith("Model name"):
-            return line.split(":", 1)[1].strip()
-    return "unknown CPU"
+            name = line.split(":", 1)[1].strip()
+            break
+    info = {}
+    with open("/proc/cpuinfo") as cpuinfo:
+        for line in cpuinfo:
+            key, _, value = line.partition(":")
+            info.setdefault(key.strip(), value.strip())
+    if "cpu family" in info and "model" in info:
+        name += " (family %s model %s)" % (info["cpu family"], info["model"])
+    return name
 
 
 def time_module(path, options):

@@ -11,15 +11,29 @@
 
 namespace {
 
-std::string cpuModel() {
+// The value of /proc/cpuinfo's first line whose key is `key` ("" when there is none).
+std::string cpuinfoValue(const std::string& key) {
   std::ifstream in("/proc/cpuinfo");
   std::string line;
-  while (std::getline(in, line))
-    if (line.rfind("model name", 0) == 0) {
-      const std::size_t colon = line.find(':');
-      return colon == std::string::npos ? line : line.substr(colon + 2);
-    }
-  return "unknown";
+  while (std::getline(in, line)) {
+    const std::size_t colon = line.find(':');
+    if (colon == std::string::npos) continue;
+    std::string name = line.substr(0, colon);
+    while (!name.empty() && (name.back() == ' ' || name.back() == '\t')) name.pop_back();
+    if (name == key) return colon + 2 <= line.size() ? line.substr(colon + 2) : std::string();
+  }
+  return "";
+}
+
+// The model name, and its family and model numbers: a hypervisor may show every generation of a
+// vendor's server CPUs under one name ("AMD EPYC"), and they differ in speed.
+std::string cpuModel() {
+  const std::string name = cpuinfoValue("model name");
+  const std::string family = cpuinfoValue("cpu family");
+  const std::string model = cpuinfoValue("model");
+  std::string described = name.empty() ? "unknown" : name;
+  if (!family.empty() && !model.empty()) described += " (family " + family + " model " + model + ")";
+  return described;
 }
 
 bool hasAvx512() {
