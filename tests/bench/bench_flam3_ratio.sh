@@ -2,16 +2,18 @@
 # The variation kernel against flam3-render, whole process, one thread, same genome, same samples
 # (quality × width × height): each genome of tests/data/flame/bench/ is imported with
 # `gridifs import-flame`, then flam3-render (nthreads=1) and `gridifs render --threads 1` run in
-# alternation REPEAT times (default 3), each round starting with the next of them; the table gives median wall and CPU (user + system) seconds
+# alternation REPEAT times (default 3); the table gives median wall and CPU (user + system) seconds
 # and peak memory (maximum resident set, MB), and the medians of the per-round ratios flam3 /
-# gridifs (r_wall, r_cpu: the default device, which
-# probes the GPU first; r_gcpu: wall with --device cpu). With BASELINE=/path/to/older/gridifs that binary runs in the same
-# rounds (before/after from one run). Then the canonical 3D grid scene (tests/bench/canonical_scene.h)
-# against flam3's 3-function Sierpinski at the same samples, as scripts/bench-whole-process measures
-# it, when the build has bench_gpu (which writes the scene), and the default project (whose maps
-# leave X) against the same genome. Every row draws SAMPLES samples (default
-# 10^8, where a render's fixed costs no longer dominate; each genome's quality is scaled to give it);
-# SAMPLES=genome keeps the genomes' own quality. Not run by ctest: timings need a quiet machine.
+# gridifs (r_wall, r_cpu: the default device, which probes the GPU first, run right after flam3;
+# r_gcpu: CPU with --device cpu, run right after that, whose wall/CPU is the column "dev cpu").
+# With BASELINE=/path/to/older/gridifs that binary runs in the same rounds, last (before/after
+# from one run: compare rb_cpu with r_gcpu, both GridIFS after GridIFS). Then the canonical 3D grid
+# scene (tests/bench/canonical_scene.h) against flam3's 3-function Sierpinski at the same samples,
+# as scripts/bench-whole-process measures it, when the build has bench_gpu (which writes the
+# scene), and the default project (whose maps leave X) against the same genome. Every row draws
+# SAMPLES samples (default 10^8, where a render's fixed costs no longer dominate; each genome's
+# quality is scaled to give it); SAMPLES=genome keeps the genomes' own quality. Not run by ctest:
+# timings need a quiet machine.
 # usage: tests/bench/bench_flam3_ratio.sh [BUILD_DIR]   (default: build)
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/../.." && pwd)"
@@ -35,31 +37,32 @@ ratio() { python3 -c "print($1 / $2)"; }
 # per-round ratios flam3 / gridifs, wall and CPU.
 run_case() {
   local name="$1" flame="$2" project="$3" samples="$4"
-  local fw=() fc=() fm=() gw=() gc=() gm=() cw=() bw=() bc=() rw=() rc=() rcw=() rbw=() rbc=()
+  local fw=() fc=() fm=() gw=() gc=() gm=() cw=() cc=() bw=() bc=() rw=() rc=() rcw=() rbw=() rbc=()
   local programs=(f g c)
   [[ -n "$BASELINE" ]] && programs+=(b)
   for ((i = 0; i < REPEAT; ++i)); do
     local f g c b
-    # Each round starts with the next program: a process that runs after another or after a pause
-    # spends more system time (on these VMs, refaulting memory the host took back) than one that
-    # follows itself, and a fixed order would charge that to whichever program comes first.
+    # Always in this order: on these VMs a process that follows another program or a pause spends
+    # up to 0.1 s more system time (faulting in memory the host took back) than one that follows
+    # a render like itself, so the default device's run (r_cpu) is GridIFS right after flam3, a
+    # single render's cost, and --device cpu's (r_gcpu) GridIFS after GridIFS, a batch's.
     for ((k = 0; k < ${#programs[@]}; ++k)); do
-      case "${programs[$(((i + k) % ${#programs[@]}))]}" in
+      case "${programs[$k]}" in
         f) read -r -a f <<<"$(measure env nthreads=1 seed=1 out="$WORK/flam3.png" sh -c "flam3-render < '$flame'")" ;;
         g) read -r -a g <<<"$(measure "$G" render "$project" -o "$WORK/g.png" --samples "$samples" --threads 1 -q)" ;;
         c) read -r -a c <<<"$(measure "$G" render "$project" -o "$WORK/c.png" --samples "$samples" --threads 1 -q --device cpu)" ;;
         b) read -r -a b <<<"$(measure "$BASELINE" render "$project" -o "$WORK/b.png" --samples "$samples" --threads 1 -q)" ;;
       esac
     done
-    fw+=("${f[0]}") fc+=("${f[1]}") fm+=("${f[2]}") gw+=("${g[0]}") gc+=("${g[1]}") gm+=("${g[2]}") cw+=("${c[0]}")
-    rw+=("$(ratio "${f[0]}" "${g[0]}")") rc+=("$(ratio "${f[1]}" "${g[1]}")") rcw+=("$(ratio "${f[0]}" "${c[0]}")")
+    fw+=("${f[0]}") fc+=("${f[1]}") fm+=("${f[2]}") gw+=("${g[0]}") gc+=("${g[1]}") gm+=("${g[2]}") cw+=("${c[0]}") cc+=("${c[1]}")
+    rw+=("$(ratio "${f[0]}" "${g[0]}")") rc+=("$(ratio "${f[1]}" "${g[1]}")") rcw+=("$(ratio "${f[1]}" "${c[1]}")")
     if [[ -n "$BASELINE" ]]; then
       bw+=("${b[0]}") bc+=("${b[1]}") rbw+=("$(ratio "${f[0]}" "${b[0]}")") rbc+=("$(ratio "${f[1]}" "${b[1]}")")
     fi
   done
-  printf "%-18s %11s %5s/%-5s %5s/%-5s %4.0f/%-4.0f %6s %6sx %6sx %6sx" "$name" "$samples" "$(median "${fw[@]}")" \
+  printf "%-18s %11s %5s/%-5s %5s/%-5s %4.0f/%-4.0f %5s/%-5s %6sx %6sx %6sx" "$name" "$samples" "$(median "${fw[@]}")" \
     "$(median "${fc[@]}")" "$(median "${gw[@]}")" "$(median "${gc[@]}")" "$(median "${fm[@]}")" \
-    "$(median "${gm[@]}")" "$(median "${cw[@]}")" "$(median "${rw[@]}")" "$(median "${rc[@]}")" "$(median "${rcw[@]}")"
+    "$(median "${gm[@]}")" "$(median "${cw[@]}")" "$(median "${cc[@]}")" "$(median "${rw[@]}")" "$(median "${rc[@]}")" "$(median "${rcw[@]}")"
   [[ -n "$BASELINE" ]] && printf "   %5s/%-5s %6sx %6sx" "$(median "${bw[@]}")" "$(median "${bc[@]}")" \
     "$(median "${rbw[@]}")" "$(median "${rbc[@]}")"
   printf "\n"
@@ -69,7 +72,7 @@ echo "one thread, whole process, $SAMPLES samples a row, median of $REPEAT alter
 # The model name with /proc/cpuinfo's family and model: a hypervisor may show every generation of
 # a vendor's server CPUs under one name ("AMD EPYC"), and they differ in speed.
 echo "CPU: $(lscpu | sed -n 's/^Model name: *//p' | head -1) (family $(sed -n 's/^cpu family[[:space:]]*: //p' /proc/cpuinfo | head -1) model $(sed -n 's/^model[[:space:]]*: //p' /proc/cpuinfo | head -1)) ($(grep -o -m1 'avx512f' /proc/cpuinfo || echo 'no AVX-512'))"
-printf "%-18s %11s %11s %11s %9s %6s %7s %7s %7s" genome samples "flam3 w/cpu" "gridifs w/c" "MB f/g" "g_cpu" \
+printf "%-18s %11s %11s %11s %9s %11s %7s %7s %7s" genome samples "flam3 w/cpu" "gridifs w/c" "MB f/g" "dev cpu w/c" \
   "r_wall" "r_cpu" "r_gcpu"
 [[ -n "$BASELINE" ]] && printf "   %11s %7s %7s" "base w/cpu" "rb_wall" "rb_cpu"
 printf "\n"
