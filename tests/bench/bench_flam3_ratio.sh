@@ -17,6 +17,7 @@
 # usage: tests/bench/bench_flam3_ratio.sh [BUILD_DIR]   (default: build)
 set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/../.." && pwd)"
+source "$ROOT/tests/bench/bench_common.sh"
 BUILD="$(cd "${1:-$ROOT/build}" && pwd)"
 G="${GRIDIFS:-$BUILD/app/gridifs}"
 REPEAT="${REPEAT:-3}"
@@ -38,22 +39,18 @@ ratio() { python3 -c "print($1 / $2)"; }
 run_case() {
   local name="$1" flame="$2" project="$3" samples="$4"
   local fw=() fc=() fm=() gw=() gc=() gm=() cw=() cc=() bw=() bc=() rw=() rc=() rcw=() rbw=() rbc=()
-  local programs=(f g c)
-  [[ -n "$BASELINE" ]] && programs+=(b)
   for ((i = 0; i < REPEAT; ++i)); do
     local f g c b
     # Always in this order: on these VMs a process that follows another program or a pause spends
     # up to 0.1 s more system time (faulting in memory the host took back) than one that follows
     # a render like itself, so the default device's run (r_cpu) is GridIFS right after flam3, a
     # single render's cost, and --device cpu's (r_gcpu) GridIFS after GridIFS, a batch's.
-    for ((k = 0; k < ${#programs[@]}; ++k)); do
-      case "${programs[$k]}" in
-        f) read -r -a f <<<"$(measure env nthreads=1 seed=1 out="$WORK/flam3.png" sh -c "flam3-render < '$flame'")" ;;
-        g) read -r -a g <<<"$(measure "$G" render "$project" -o "$WORK/g.png" --samples "$samples" --threads 1 -q)" ;;
-        c) read -r -a c <<<"$(measure "$G" render "$project" -o "$WORK/c.png" --samples "$samples" --threads 1 -q --device cpu)" ;;
-        b) read -r -a b <<<"$(measure "$BASELINE" render "$project" -o "$WORK/b.png" --samples "$samples" --threads 1 -q)" ;;
-      esac
-    done
+    read -r -a f <<<"$(measure env nthreads=1 seed=1 out="$WORK/flam3.png" sh -c "flam3-render < '$flame'")"
+    read -r -a g <<<"$(measure "$G" render "$project" -o "$WORK/g.png" --samples "$samples" --threads 1 -q)"
+    read -r -a c <<<"$(measure "$G" render "$project" -o "$WORK/c.png" --samples "$samples" --threads 1 -q --device cpu)"
+    if [[ -n "$BASELINE" ]]; then
+      read -r -a b <<<"$(measure "$BASELINE" render "$project" -o "$WORK/b.png" --samples "$samples" --threads 1 -q)"
+    fi
     fw+=("${f[0]}") fc+=("${f[1]}") fm+=("${f[2]}") gw+=("${g[0]}") gc+=("${g[1]}") gm+=("${g[2]}") cw+=("${c[0]}") cc+=("${c[1]}")
     rw+=("$(ratio "${f[0]}" "${g[0]}")") rc+=("$(ratio "${f[1]}" "${g[1]}")") rcw+=("$(ratio "${f[1]}" "${c[1]}")")
     if [[ -n "$BASELINE" ]]; then
@@ -69,9 +66,7 @@ run_case() {
 }
 
 echo "one thread, whole process, $SAMPLES samples a row, median of $REPEAT alternating rounds; load $(cut -d' ' -f1-3 /proc/loadavg), $(nproc) cores"
-# The model name with /proc/cpuinfo's family and model: a hypervisor may show every generation of
-# a vendor's server CPUs under one name ("AMD EPYC"), and they differ in speed.
-echo "CPU: $(lscpu | sed -n 's/^Model name: *//p' | head -1) (family $(sed -n 's/^cpu family[[:space:]]*: //p' /proc/cpuinfo | head -1) model $(sed -n 's/^model[[:space:]]*: //p' /proc/cpuinfo | head -1)) ($(grep -o -m1 'avx512f' /proc/cpuinfo || echo 'no AVX-512'))"
+echo "CPU: $(cpu_description)"
 printf "%-18s %11s %11s %11s %9s %11s %7s %7s %7s" genome samples "flam3 w/cpu" "gridifs w/c" "MB f/g" "dev cpu w/c" \
   "r_wall" "r_cpu" "r_gcpu"
 [[ -n "$BASELINE" ]] && printf "   %11s %7s %7s" "base w/cpu" "rb_wall" "rb_cpu"
@@ -96,20 +91,12 @@ PY
   run_case "$name" "$flame" "$WORK/$name.gridifs" "$samples"
 done
 
-# The 3D rows: QUALITY (samples per pixel of 1024²) overrides SAMPLES; flam3's 3-function linear
-# Sierpinski genome draws the same samples.
+# The 3D rows: QUALITY (samples per pixel of 1024²) overrides SAMPLES; flam3's Sierpinski genome
+# draws the same samples.
 [[ "$SAMPLES" == genome ]] && QUALITY="${QUALITY:-20}"
 QUALITY="${QUALITY:-$(python3 -c "print(round($SAMPLES / (1024 * 1024)))")}"
 samples=$((QUALITY * 1024 * 1024))
-cat > "$WORK/sierpinski.flame" <<FLAME
-<flame name="sierpinski" version="3.1.1" size="1024 1024" center="0 0" scale="400" quality="$QUALITY"
- supersample="1" filter="0" temporal_samples="1" background="0 0 0" brightness="4" gamma="4" vibrancy="1"
- estimator_radius="0" estimator_minimum="0" estimator_curve="0.4" palette="0">
-   <xform weight="0.333333" color="0" linear="1" coefs="0.5 0 0 0.5 -0.5 -0.5"/>
-   <xform weight="0.333333" color="0.5" linear="1" coefs="0.5 0 0 0.5 0.5 -0.5"/>
-   <xform weight="0.333333" color="1" linear="1" coefs="0.5 0 0 0.5 0 0.5"/>
-</flame>
-FLAME
+write_sierpinski_flame "$WORK/sierpinski.flame" "$QUALITY"
 at_1024() {  # copies project $1 to $2 with a 1024×1024 image
   python3 - "$1" "$2" <<'PY'
 import json, sys

@@ -36,13 +36,7 @@ std::string cpuModel() {
   return described;
 }
 
-bool hasAvx512() {
-  std::ifstream in("/proc/cpuinfo");
-  std::string line;
-  while (std::getline(in, line))
-    if (line.rfind("flags", 0) == 0) return line.find(" avx512f") != std::string::npos;
-  return false;
-}
+bool hasAvx512() { return (" " + cpuinfoValue("flags") + " ").find(" avx512f ") != std::string::npos; }
 
 void reportResources() {
   rusage usage{};
