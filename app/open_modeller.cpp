@@ -1,4 +1,12 @@
-// Opening the modeller: the GUI build hands off to ui/; without it, say so clearly.
+// Opening the modeller. gridifs-modeller hands off to ui/. gridifs, the command line, links no
+// window library (app/CMakeLists.txt): it execs gridifs-modeller beside it with the same
+// arguments, so the process, its id and its exit code stay the ones the caller started. Without a
+// GUI build, say so clearly.
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
 #include <iostream>
 
 #include "app/cli.h"
@@ -10,8 +18,21 @@
 namespace gridifs::cli {
 
 int openModeller(const std::string& file, int argc, char** argv) {
-#ifdef GRIDIFS_HAVE_GUI
+#if defined(GRIDIFS_HAVE_GUI)
   return ui::runModeller(file, argc, argv);
+#elif defined(GRIDIFS_MODELLER_EXECUTABLE)
+  (void)file;
+  (void)argc;
+  std::error_code ec;
+  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  const std::filesystem::path modeller =
+      (ec ? std::filesystem::path() : self.parent_path()) / GRIDIFS_MODELLER_EXECUTABLE;
+  std::cout.flush();
+  std::cerr.flush();
+  execv(modeller.c_str(), argv);
+  std::cerr << "gridifs: cannot start the modeller window (" << modeller.string() << "): " << std::strerror(errno)
+            << ".\n";
+  return kFailure;
 #else
   (void)argc;
   (void)argv;

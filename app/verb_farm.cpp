@@ -12,6 +12,7 @@
 #include "app/render_parts.h"
 #include "app/render_sequence.h"
 #include "app/render_setup.h"
+#include "base/command_line_executable.h"
 #include "farm/farm_job.h"
 #include "model/flame_settings.h"
 
@@ -34,7 +35,7 @@ struct FarmArgs {
 
 std::filesystem::path thisExecutable() {
   std::error_code ec;
-  const auto self = std::filesystem::read_symlink("/proc/self/exe", ec);
+  const auto self = commandLineExecutable(ec);
   if (ec) throw CliError(kFailure, "cannot find the gridifs executable for the batch scripts: " + ec.message());
   return self;
 }

@@ -1,10 +1,14 @@
 // The image writer and OpenVDB are plugins (image_io/, vdb_io/): gridifs itself links neither
 // OpenImageIO nor OpenVDB, so verbs that write no image or volume start without loading their
-// libraries; a missing plugin is one sentence.
+// libraries; a missing plugin is one sentence. Nor does the command line link the window's or the
+// live inputs' libraries: the modeller is gridifs-modeller beside it, which gridifs execs.
 #include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "tests/cli/example_projects.h"
@@ -70,6 +74,44 @@ TEST(VdbPlugin, GridifsDoesNotLinkOpenVdb) {
 TEST(VdbPlugin, AMissingPluginIsOneSentenceAndWritesNothing) {
   expectMissingPluginFails("volume", asset("volumes/two_sets.gridifs"), "out.vdb", "--resolution 16 --device cpu -q",
                            "GRIDIFS_VDB_IO");
+}
+
+TEST(CommandLine, GridifsLinksNoWindowOrLiveInputLibrary) {
+  const std::string dynamic = dynamicSection("command-line-needed");
+  for (const char* library : {"libglfw", "libSDL2", "librtmidi", "liblo.so", "libX11"})
+    EXPECT_EQ(dynamic.find(library), std::string::npos)
+        << "gridifs links " << library << " again: every image the plugin loads pays for a longer symbol scope";
+}
+
+TEST(CommandLine, OpeningAWindowWithoutTheModellerBesideItIsOneSentence) {
+  ScratchDir dir("command-line-alone");
+  const fs::path alone = dir.path / "gridifs";
+  fs::copy_file(GRIDIFS_EXE, alone);
+  const std::string err = (dir.path / "err.txt").string();
+  const std::string command =
+      quote(alone.string()) + " " + quote(asset("default.gridifs")) + " < /dev/null > /dev/null 2> " + quote(err);
+  const int status = std::system(command.c_str());
+  const std::string text = test_support::slurp(err);
+  EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) != 0) << text;
+  EXPECT_NE(text.find("modeller window"), std::string::npos) << text;
+  EXPECT_EQ(std::count(text.begin(), text.end(), '\n'), 1) << text;
+}
+
+TEST(CommandLine, TheModellersFarmJobsRunTheCommandLine) {
+  const fs::path commandLine = fs::canonical(GRIDIFS_EXE);
+  const fs::path modeller = commandLine.parent_path() / "gridifs-modeller";
+  if (!fs::exists(modeller)) GTEST_SKIP() << "a build without the modeller";
+  ScratchDir dir("command-line-farm");
+  const fs::path job = dir.path / "job";
+  const std::string command = quote(modeller.string()) + " farm " + quote(asset("sierpinski_tetrahedron.gridifs")) +
+                              " --parts 2 --dir " + quote(job.string()) + " -o " +
+                              quote((dir.path / "out.png").string()) + " > /dev/null 2>&1";
+  ASSERT_EQ(std::system(command.c_str()), 0);
+  std::ifstream in(job / "farm.json");
+  const nlohmann::json written = nlohmann::json::parse(in, nullptr, false);
+  ASSERT_TRUE(written.is_object() && written.contains("executable"));
+  EXPECT_EQ(fs::path(written["executable"].get<std::string>()), commandLine)
+      << "the batch scripts would load the window's libraries for every part";
 }
 
 }  // namespace

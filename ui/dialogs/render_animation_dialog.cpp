@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "base/command_line_executable.h"
 #include "base/errors.h"
 #include "base/text_format.h"
 #include "farm/farm_job.h"
@@ -313,7 +314,7 @@ bool RenderAnimationDialog::writeFarm(ModellerState& state, bool submit) {
   std::istringstream words(farmSbatch_);
   for (std::string w; words >> w;) request.sbatchOptions.push_back(w);
   std::error_code ec;
-  request.executable = fs::read_symlink("/proc/self/exe", ec);
+  request.executable = commandLineExecutable(ec);
   const fs::path outputs = fs::path(frameFileName(pattern_, first_)).parent_path();
   if (!outputs.empty()) fs::create_directories(outputs, ec);
   try {
