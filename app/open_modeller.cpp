@@ -10,6 +10,7 @@
 #include <iostream>
 
 #include "app/cli.h"
+#include "base/command_line_executable.h"
 
 #ifdef GRIDIFS_HAVE_GUI
 #include "ui/shell/modeller_app.h"
@@ -20,18 +21,17 @@ namespace gridifs::cli {
 int openModeller(const std::string& file, int argc, char** argv) {
 #if defined(GRIDIFS_HAVE_GUI)
   return ui::runModeller(file, argc, argv);
-#elif defined(GRIDIFS_MODELLER_EXECUTABLE)
+#elif defined(GRIDIFS_EXEC_MODELLER)
   (void)file;
   (void)argc;
   std::error_code ec;
-  const std::filesystem::path self = std::filesystem::read_symlink("/proc/self/exe", ec);
-  const std::filesystem::path modeller =
-      (ec ? std::filesystem::path() : self.parent_path()) / GRIDIFS_MODELLER_EXECUTABLE;
+  const std::filesystem::path modeller = besideThisExecutable(kModellerFileName, ec);
   std::cout.flush();
   std::cerr.flush();
-  execv(modeller.c_str(), argv);
-  std::cerr << "gridifs: cannot start the modeller window (" << modeller.string() << "): " << std::strerror(errno)
-            << ".\n";
+  if (!ec) execv(modeller.c_str(), argv);
+  std::cerr << "gridifs: cannot start the modeller window ("
+            << (ec ? std::string(kModellerFileName) : modeller.string())
+            << "): " << (ec ? ec.message() : std::strerror(errno)) << ".\n";
   return kFailure;
 #else
   (void)argc;
